@@ -1,0 +1,278 @@
+//! The kinematic and sensor model of `METHOD.md`.
+//!
+//! A reading is `convention(Rᵀ·ẑ) + bias`, with `R` the sensor's orientation in a level
+//! world frame. For stage 2, `R = Rbase · F0·E3(θ3) · F1·E4(θ4) · F2·E5(θ5) · F3·E6(θ6) · F4`
+//! where `Ek` turns about joint k's axis and the `Fk` are fixed link rotations
+//! (identity for the paper's robot; `F4` is the sensor's mounting on the flange).
+
+mod sensor;
+
+pub use sensor::{Convention, SensorBias, SensorModel, Tilt, TiltAxis};
+
+use crate::real::{deg_to_rad, Real};
+use nalgebra::{Rotation3, Vector3};
+
+/// The axis a revolute joint turns about, in the frame of the link before it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointAxis {
+    /// +x
+    X,
+    /// +y
+    Y,
+    /// +z
+    Z,
+    /// −x
+    NegX,
+    /// −y
+    NegY,
+    /// −z
+    NegZ,
+}
+
+impl JointAxis {
+    /// The axis as a unit vector.
+    pub fn unit<T: Real>(self) -> Vector3<T> {
+        let (o, z) = (T::one(), T::zero());
+        match self {
+            JointAxis::X => Vector3::new(o, z, z),
+            JointAxis::Y => Vector3::new(z, o, z),
+            JointAxis::Z => Vector3::new(z, z, o),
+            JointAxis::NegX => Vector3::new(-o, z, z),
+            JointAxis::NegY => Vector3::new(z, -o, z),
+            JointAxis::NegZ => Vector3::new(z, z, -o),
+        }
+    }
+
+    /// Right-handed rotation by `angle_rad` about this axis.
+    pub fn rotation<T: Real>(self, angle_rad: T) -> Rotation3<T> {
+        let (s, c) = angle_rad.sin_cos();
+        let (o, z) = (T::one(), T::zero());
+        // Elementary rotations written out: exact zeros and ones keep a joint at 0
+        // bit-identical to the identity, and they are cheaper than axis-angle.
+        let (axis, s) = match self {
+            JointAxis::X => (0, s),
+            JointAxis::NegX => (0, -s),
+            JointAxis::Y => (1, s),
+            JointAxis::NegY => (1, -s),
+            JointAxis::Z => (2, s),
+            JointAxis::NegZ => (2, -s),
+        };
+        #[rustfmt::skip]
+        let m = match axis {
+            0 => nalgebra::Matrix3::new(
+                o, z, z,
+                z, c, -s,
+                z, s, c),
+            1 => nalgebra::Matrix3::new(
+                c, z, s,
+                z, o, z,
+                -s, z, c),
+            _ => nalgebra::Matrix3::new(
+                c, -s, z,
+                s, c, z,
+                z, z, o),
+        };
+        Rotation3::from_matrix_unchecked(m)
+    }
+
+    /// Parses `x`, `y`, `z`, `-x`, `-y`, `-z` (case-insensitive).
+    pub fn parse(s: &str) -> Option<Self> {
+        let t = s.trim();
+        let (neg, name) = match t.strip_prefix('-') {
+            Some(rest) => (true, rest),
+            None => (false, t.strip_prefix('+').unwrap_or(t)),
+        };
+        let axis = match name {
+            "x" | "X" => JointAxis::X,
+            "y" | "Y" => JointAxis::Y,
+            "z" | "Z" => JointAxis::Z,
+            _ => return None,
+        };
+        Some(if neg { axis.negated() } else { axis })
+    }
+
+    /// The same line, the other way round.
+    pub fn negated(self) -> Self {
+        match self {
+            JointAxis::X => JointAxis::NegX,
+            JointAxis::NegX => JointAxis::X,
+            JointAxis::Y => JointAxis::NegY,
+            JointAxis::NegY => JointAxis::Y,
+            JointAxis::Z => JointAxis::NegZ,
+            JointAxis::NegZ => JointAxis::Z,
+        }
+    }
+}
+
+/// Elementary right-handed rotation about x.
+pub fn rot_x<T: Real>(a_rad: T) -> Rotation3<T> {
+    JointAxis::X.rotation(a_rad)
+}
+
+/// Elementary right-handed rotation about y.
+pub fn rot_y<T: Real>(a_rad: T) -> Rotation3<T> {
+    JointAxis::Y.rotation(a_rad)
+}
+
+/// Elementary right-handed rotation about z.
+pub fn rot_z<T: Real>(a_rad: T) -> Rotation3<T> {
+    JointAxis::Z.rotation(a_rad)
+}
+
+/// A fixed rotation given as the `rpy` angles of METHOD.md: `Rz(yaw)·Ry(pitch)·Rx(roll)`.
+pub fn rotation_from_rpy_deg<T: Real>(roll_deg: T, pitch_deg: T, yaw_deg: T) -> Rotation3<T> {
+    rot_z(deg_to_rad(yaw_deg)) * rot_y(deg_to_rad(pitch_deg)) * rot_x(deg_to_rad(roll_deg))
+}
+
+/// The tilt of the robot's base: `Rbase = Ry(β)·Rx(α)`, the rotation whose `rpy`
+/// reading is (α, β). α is about the joint-2 direction (the paper's λ = 2α).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct BaseTilt<T> {
+    /// Tilt about the joint-2 direction (rad).
+    pub alpha_rad: T,
+    /// Tilt about the other horizontal axis (rad).
+    pub beta_rad: T,
+}
+
+impl<T: Real> BaseTilt<T> {
+    /// A level base.
+    pub fn level() -> Self {
+        BaseTilt {
+            alpha_rad: T::zero(),
+            beta_rad: T::zero(),
+        }
+    }
+
+    /// From degrees.
+    pub fn from_deg(alpha_deg: T, beta_deg: T) -> Self {
+        BaseTilt {
+            alpha_rad: deg_to_rad(alpha_deg),
+            beta_rad: deg_to_rad(beta_deg),
+        }
+    }
+
+    /// `Ry(β)·Rx(α)`, composed as a rotation (never subtracted as a reading: METHOD.md).
+    pub fn rotation(&self) -> Rotation3<T> {
+        rot_y(self.beta_rad) * rot_x(self.alpha_rad)
+    }
+}
+
+/// Number of joints identified in stage 2 (axes 3-6).
+pub const WRIST_JOINTS: usize = 4;
+
+/// The chain from the base (after joints 1 and 2 at their zeros) to the sensor on the
+/// flange: four joints with configurable axes and fixed rotations between them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WristChain<T: Real> {
+    /// Axis of joints 3, 4, 5, 6.
+    pub axes: [JointAxis; WRIST_JOINTS],
+    /// `fixed[k]` stands before joint k+3; `fixed[4]` is the sensor's mounting on the
+    /// flange.
+    pub fixed: [Rotation3<T>; WRIST_JOINTS + 1],
+}
+
+impl<T: Real> Default for WristChain<T> {
+    /// The paper's robot (eq. 2): x, y, x, y with no fixed rotations.
+    fn default() -> Self {
+        Self::paper()
+    }
+}
+
+/// Orientation of the sensor and the axes of the joints as seen from the sensor.
+#[derive(Clone, Copy, Debug)]
+pub struct ChainPose<T: Real> {
+    /// Sensor orientation in the level world frame.
+    pub orientation: Rotation3<T>,
+    /// Unit axis of each joint expressed in sensor coordinates: turning joint k by dq
+    /// turns the sensor by `axes_in_sensor[k]·dq` in its own frame.
+    pub axes_in_sensor: [Vector3<T>; WRIST_JOINTS],
+}
+
+impl<T: Real> WristChain<T> {
+    /// The paper's robot: joints 3-6 about x, y, x, y (eq. 2), no fixed rotations.
+    pub fn paper() -> Self {
+        WristChain {
+            axes: [JointAxis::X, JointAxis::Y, JointAxis::X, JointAxis::Y],
+            fixed: [Rotation3::identity(); WRIST_JOINTS + 1],
+        }
+    }
+
+    /// Sensor orientation at true joint angles `joints_rad` (θ3..θ6 plus offsets).
+    pub fn orientation(&self, base: &BaseTilt<T>, joints_rad: &[T; WRIST_JOINTS]) -> Rotation3<T> {
+        let mut r = base.rotation();
+        for (k, &q) in joints_rad.iter().enumerate() {
+            r = r * self.fixed[k] * self.axes[k].rotation(q);
+        }
+        r * self.fixed[WRIST_JOINTS]
+    }
+
+    /// Orientation and the joint axes in sensor coordinates, for the analytic Jacobian.
+    pub fn pose(&self, base: &BaseTilt<T>, joints_rad: &[T; WRIST_JOINTS]) -> ChainPose<T> {
+        // Walk back from the sensor: `suffix` maps the frame after joint k to the sensor
+        // frame's parent chain, so joint k's axis in sensor coordinates is suffixᵀ·a_k.
+        let mut suffix = self.fixed[WRIST_JOINTS];
+        let mut axes_in_sensor = [Vector3::zeros(); WRIST_JOINTS];
+        for k in (0..WRIST_JOINTS).rev() {
+            axes_in_sensor[k] = suffix.inverse() * self.axes[k].unit::<T>();
+            suffix = self.fixed[k] * self.axes[k].rotation(joints_rad[k]) * suffix;
+        }
+        ChainPose {
+            orientation: base.rotation() * suffix,
+            axes_in_sensor,
+        }
+    }
+}
+
+/// The "up" vector `u = Rᵀ·ẑ` in sensor coordinates.
+pub fn up_in_sensor<T: Real>(orientation: &Rotation3<T>) -> Vector3<T> {
+    orientation.inverse() * Vector3::z()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn elementary_rotations_are_right_handed() {
+        let r = rot_z(core::f64::consts::FRAC_PI_2);
+        let v = r * Vector3::x();
+        assert!((v - Vector3::y()).norm() < 1e-15);
+        let r = rot_x(core::f64::consts::FRAC_PI_2);
+        assert!((r * Vector3::y() - Vector3::z()).norm() < 1e-15);
+        let r = rot_y(core::f64::consts::FRAC_PI_2);
+        assert!((r * Vector3::z() - Vector3::x()).norm() < 1e-15);
+    }
+
+    #[test]
+    fn negative_axis_turns_backwards() {
+        let a = 0.3_f64;
+        let d = JointAxis::NegY.rotation(a).matrix() - rot_y(-a).matrix();
+        assert!(d.norm() < 1e-15);
+    }
+
+    #[test]
+    fn pose_matches_orientation_and_finite_differences() {
+        let mut chain = WristChain::<f64>::paper();
+        chain.fixed[2] = rotation_from_rpy_deg(3.0, -20.0, 40.0);
+        chain.fixed[4] = rotation_from_rpy_deg(1.0, 2.0, 90.0);
+        chain.axes[1] = JointAxis::NegZ;
+        let base = BaseTilt::from_deg(0.3, -0.5);
+        let q = [0.4, -1.1, 2.0, 0.7];
+        let p = chain.pose(&base, &q);
+        let r = chain.orientation(&base, &q);
+        assert!((p.orientation.matrix() - r.matrix()).norm() < 1e-14);
+        // Joint k's body axis: R(q + h e_k) ≈ R(q)·exp([w_k]× h).
+        for k in 0..4 {
+            let h = 1e-6;
+            let mut qp = q;
+            qp[k] += h;
+            let mut qm = q;
+            qm[k] -= h;
+            let d = (r.inverse() * chain.orientation(&base, &qp)).matrix()
+                - (r.inverse() * chain.orientation(&base, &qm)).matrix();
+            // d/2h ≈ [w]×: read w off the skew-symmetric part.
+            let w = Vector3::new(d[(2, 1)], d[(0, 2)], d[(1, 0)]) / (2.0 * h);
+            assert!((w - p.axes_in_sensor[k]).norm() < 1e-8, "joint {k}");
+        }
+    }
+}

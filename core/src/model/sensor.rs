@@ -1,0 +1,250 @@
+//! The inclinometer: how an orientation becomes the two angles it reports.
+
+use crate::real::{deg_to_rad, rad_to_deg, wrap_pi, Real};
+use nalgebra::{Rotation3, Vector3};
+
+/// One of the inclinometer's two readings.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TiltAxis {
+    /// The x reading.
+    X,
+    /// The y reading.
+    Y,
+}
+
+impl core::fmt::Display for TiltAxis {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            TiltAxis::X => "x",
+            TiltAxis::Y => "y",
+        })
+    }
+}
+
+/// The two angles an inclinometer reports.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Tilt<T> {
+    /// x reading (rad).
+    pub x_rad: T,
+    /// y reading (rad).
+    pub y_rad: T,
+}
+
+impl<T: Real> Tilt<T> {
+    /// From radians.
+    pub fn new(x_rad: T, y_rad: T) -> Self {
+        Tilt { x_rad, y_rad }
+    }
+
+    /// From degrees.
+    pub fn from_deg(x_deg: T, y_deg: T) -> Self {
+        Tilt::new(deg_to_rad(x_deg), deg_to_rad(y_deg))
+    }
+
+    /// (x, y) in degrees.
+    pub fn to_deg(&self) -> (T, T) {
+        (rad_to_deg(self.x_rad), rad_to_deg(self.y_rad))
+    }
+
+    /// Both readings are finite numbers.
+    pub fn is_finite(&self) -> bool {
+        self.x_rad.is_finite() && self.y_rad.is_finite()
+    }
+
+    /// The reading on one axis.
+    pub fn get(&self, axis: TiltAxis) -> T {
+        match axis {
+            TiltAxis::X => self.x_rad,
+            TiltAxis::Y => self.y_rad,
+        }
+    }
+
+    /// The first axis whose magnitude exceeds `limit_rad`, if any.
+    pub fn axis_beyond(&self, limit_rad: T) -> Option<TiltAxis> {
+        [TiltAxis::X, TiltAxis::Y]
+            .into_iter()
+            .find(|&a| self.get(a).abs() > limit_rad)
+    }
+
+    /// `self − other` per axis, wrapped into (−π, π].
+    pub fn minus(&self, other: &Tilt<T>) -> Tilt<T> {
+        Tilt::new(
+            wrap_pi(self.x_rad - other.x_rad),
+            wrap_pi(self.y_rad - other.y_rad),
+        )
+    }
+}
+
+/// How the two angles derive from the up vector `u = Rᵀ·ẑ` (METHOD.md, Conventions).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Convention {
+    /// The paper's eq. 5, `R = Rz(α)Ry(β)Rx(γ)`, x = γ, y = β:
+    /// `x = atan2(u_y, u_z)`, `y = atan2(−u_x, hypot(u_y, u_z))`.
+    #[default]
+    Rpy,
+    /// Per-axis elevation, as MEMS inclinometers (Murata SCL3300) report:
+    /// `x = atan2(u_y, hypot(u_x, u_z))`, `y = atan2(−u_x, hypot(u_y, u_z))`.
+    Axis,
+}
+
+impl Convention {
+    /// The noiseless, bias-free reading of up vector `u` (need not be unit length).
+    pub fn read<T: Real>(self, u: &Vector3<T>) -> Tilt<T> {
+        let y = (-u.x).atan2(u.y.hypot(u.z));
+        let x = match self {
+            Convention::Rpy => u.y.atan2(u.z),
+            Convention::Axis => u.y.atan2(u.x.hypot(u.z)),
+        };
+        Tilt::new(x, y)
+    }
+
+    /// The reading and its derivative with respect to a unit `u`: rows x and y.
+    pub fn read_with_gradient<T: Real>(self, u: &Vector3<T>) -> (Tilt<T>, [Vector3<T>; 2]) {
+        let (ux, uy, uz) = (u.x, u.y, u.z);
+        let h = uy.hypot(uz);
+        // d/du of atan2(−u_x, h) with |u| = 1: (−h·du_x + u_x·dh), dh = (u_y du_y + u_z du_z)/h.
+        let n2 = ux * ux + h * h;
+        let gy = if h > T::zero() {
+            Vector3::new(-h, ux * uy / h, ux * uz / h) / n2
+        } else {
+            // Straight up or down the x axis: the reading is ±90°, its slope undefined;
+            // far outside any sensor window, so a zero gradient is harmless.
+            Vector3::zeros()
+        };
+        let gx = match self {
+            Convention::Rpy => {
+                let d = uy * uy + uz * uz;
+                if d > T::zero() {
+                    Vector3::new(T::zero(), uz / d, -uy / d)
+                } else {
+                    Vector3::zeros()
+                }
+            }
+            Convention::Axis => {
+                let g = ux.hypot(uz);
+                let d = uy * uy + g * g;
+                if g > T::zero() {
+                    Vector3::new(-uy * ux / (g * d), g / d, -uy * uz / (g * d))
+                } else {
+                    Vector3::zeros()
+                }
+            }
+        };
+        (self.read(u), [gx, gy])
+    }
+
+    /// The unit up vector that gives a bias-free reading, for a sensor facing up
+    /// (`u_z > 0`). `None` if no such vector exists (the two angles are inconsistent,
+    /// which only the `axis` convention allows: sin²x + sin²y > 1).
+    pub fn up_from_reading<T: Real>(self, t: &Tilt<T>) -> Option<Vector3<T>> {
+        let ux = -t.y_rad.sin();
+        match self {
+            Convention::Rpy => {
+                // y = atan2(−u_x, hypot(u_y,u_z)) and x = atan2(u_y, u_z).
+                let h = t.y_rad.cos();
+                Some(Vector3::new(ux, h * t.x_rad.sin(), h * t.x_rad.cos()))
+            }
+            Convention::Axis => {
+                let uy = t.x_rad.sin();
+                let uz2 = T::one() - ux * ux - uy * uy;
+                if uz2 < T::zero() {
+                    return None;
+                }
+                Some(Vector3::new(ux, uy, uz2.sqrt()))
+            }
+        }
+    }
+
+    /// Parses `rpy` or `axis`.
+    pub fn parse(s: &str) -> Option<Self> {
+        match s.trim() {
+            "rpy" | "RPY" => Some(Convention::Rpy),
+            "axis" | "AXIS" => Some(Convention::Axis),
+            _ => None,
+        }
+    }
+
+    /// The name used on the command line and in files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Convention::Rpy => "rpy",
+            Convention::Axis => "axis",
+        }
+    }
+}
+
+/// The sensor's zero error: a reading is `convention(u) + bias`.
+pub type SensorBias<T> = Tilt<T>;
+
+/// A sensor: its convention and its bias.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct SensorModel<T> {
+    /// Reading convention.
+    pub convention: Convention,
+    /// Zero error added to every reading.
+    pub bias: SensorBias<T>,
+}
+
+impl<T: Real> SensorModel<T> {
+    /// What this sensor reads at `orientation`.
+    pub fn reading(&self, orientation: &Rotation3<T>) -> Tilt<T> {
+        let u = super::up_in_sensor(orientation);
+        let t = self.convention.read(&u);
+        Tilt::new(t.x_rad + self.bias.x_rad, t.y_rad + self.bias.y_rad)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{rot_x, rot_y, rot_z};
+
+    #[test]
+    fn rpy_reads_back_the_angles_of_its_rotation() {
+        // R = Rz(α)Ry(β)Rx(γ) reads x = γ, y = β whatever the yaw α.
+        for &(a, b, g) in &[(0.0_f64, 0.1_f64, -0.2_f64), (1.3, -0.15, 0.05), (-2.9, 0.17, 0.17)] {
+            let r = rot_z(a) * rot_y(b) * rot_x(g);
+            let t = Convention::Rpy.read(&(r.inverse() * Vector3::z()));
+            assert!((t.x_rad - g).abs() < 1e-14 && (t.y_rad - b).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn conventions_differ_by_about_a_sixth_of_a_degree_at_ten_degrees() {
+        // METHOD.md: "differ by up to ~0.15° at 10° tilt".
+        let r = rot_y(0.1745_f64) * rot_x(0.1745);
+        let u = r.inverse() * Vector3::z();
+        let d = rad_to_deg(Convention::Rpy.read(&u).x_rad - Convention::Axis.read(&u).x_rad);
+        assert!(d.abs() > 0.1 && d.abs() < 0.2, "{d}");
+    }
+
+    #[test]
+    fn gradient_matches_central_differences() {
+        for conv in [Convention::Rpy, Convention::Axis] {
+            let u = (rot_x(0.13_f64) * rot_y(-0.07) * Vector3::z()).normalize();
+            let (_, g) = conv.read_with_gradient(&u);
+            // Perturb along directions tangent to the sphere (|u| stays 1).
+            for dir in [Vector3::x(), Vector3::y(), Vector3::z()] {
+                let t = (dir - u * u.dot(&dir)).normalize();
+                let h = 1e-6;
+                let p = conv.read(&(u + t * h).normalize());
+                let m = conv.read(&(u - t * h).normalize());
+                let fx = (p.x_rad - m.x_rad) / (2.0 * h);
+                let fy = (p.y_rad - m.y_rad) / (2.0 * h);
+                assert!((fx - g[0].dot(&t)).abs() < 1e-8, "{conv:?} x");
+                assert!((fy - g[1].dot(&t)).abs() < 1e-8, "{conv:?} y");
+            }
+        }
+    }
+
+    #[test]
+    fn up_from_reading_inverts_read() {
+        for conv in [Convention::Rpy, Convention::Axis] {
+            let u = (rot_x(-0.15_f64) * rot_y(0.12) * Vector3::z()).normalize();
+            let back = conv.up_from_reading(&conv.read(&u)).map(|b| (b - u).norm());
+            assert!(matches!(back, Some(e) if e < 1e-14), "{conv:?}");
+        }
+        let impossible = Tilt::from_deg(60.0_f64, 60.0);
+        assert_eq!(Convention::Axis.up_from_reading(&impossible), None);
+    }
+}

@@ -1,0 +1,150 @@
+//! The calibration result as the pendant shows it and the CLI prints it: degrees,
+//! 1σ beside every number, and a verdict that says what to distrust.
+
+use crate::fit::{FitConfig, FitResult, SigmaSource};
+use crate::model::WRIST_JOINTS;
+use crate::real::{rad_to_deg, Real};
+use crate::stage1::Stage1Result;
+use core::fmt::{self, Write};
+
+/// A residual RMS this many times the sensor's noise means the data do not fit the
+/// model: the robot moved, a pose was entered wrong, or the convention is wrong.
+pub const RESIDUAL_WARN_FACTOR: f64 = 3.0;
+
+/// Something the operator should know before trusting the numbers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Warning {
+    /// Residual RMS far above the sensor's noise.
+    ResidualHigh {
+        /// Residual RMS (deg).
+        residual_rms_deg: f64,
+        /// Sensor noise 1σ (deg).
+        sensor_noise_deg: f64,
+    },
+    /// No stage-0 bias: Δθ2 includes the sensor's x bias.
+    BiasXUnknown,
+    /// Too few poses to estimate σ: the 1σ are from the sensor's noise figure.
+    SigmaFromSensorFigure,
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Warning::ResidualHigh {
+                residual_rms_deg,
+                sensor_noise_deg,
+            } => write!(
+                f,
+                "residual RMS {residual_rms_deg:.5} deg is {:.1}x the sensor noise ({sensor_noise_deg:.5} deg): robot moved, wrong pose or wrong convention?",
+                residual_rms_deg / sensor_noise_deg
+            ),
+            Warning::BiasXUnknown => f.write_str(
+                "no stage-0 reversal: the joint-2 offset includes the sensor's x bias",
+            ),
+            Warning::SigmaFromSensorFigure => {
+                f.write_str("few poses: 1-sigma taken from the sensor's noise figure")
+            }
+        }
+    }
+}
+
+/// At most this many warnings apply at once.
+pub const MAX_WARNINGS: usize = 3;
+
+/// Pass, or the warnings that apply.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Verdict {
+    /// What to distrust; empty means pass.
+    pub warnings: heapless::Vec<Warning, MAX_WARNINGS>,
+}
+
+impl Verdict {
+    /// No warnings.
+    pub fn is_pass(&self) -> bool {
+        self.warnings.is_empty()
+    }
+
+    /// Judges a stage-2 result (and the stage-1 result, when there is one).
+    pub fn judge<T: Real>(
+        fit: &FitResult<T>,
+        config: &FitConfig<T>,
+        stage1: Option<&Stage1Result<T>>,
+    ) -> Self {
+        let mut v = Verdict::default();
+        let rms = fit.residual_rms_rad.to_f64();
+        let noise = config.sensor_noise_rad.to_f64();
+        // Capacity is MAX_WARNINGS and each variant is pushed at most once.
+        if rms > RESIDUAL_WARN_FACTOR * noise {
+            let _ = v.warnings.push(Warning::ResidualHigh {
+                residual_rms_deg: rms.to_degrees(),
+                sensor_noise_deg: noise.to_degrees(),
+            });
+        }
+        if stage1.is_some_and(|s| !s.bias_x_known) {
+            let _ = v.warnings.push(Warning::BiasXUnknown);
+        }
+        if fit.sigma_source == SigmaSource::SensorNoise {
+            let _ = v.warnings.push(Warning::SigmaFromSensorFigure);
+        }
+        v
+    }
+}
+
+/// Writes the report: Δθ2 (if stage 1 ran) and Δθ3..Δθ6 with 1σ, fit statistics and
+/// the verdict. Plain ASCII, one item a line, so it reads the same on a terminal, in a
+/// log and over the pendant's serial link.
+///
+/// # Errors
+/// Only those of the writer.
+pub fn write_report<T: Real, W: Write>(
+    w: &mut W,
+    stage1: Option<&Stage1Result<T>>,
+    fit: &FitResult<T>,
+    verdict: &Verdict,
+) -> fmt::Result {
+    writeln!(w, "joint  offset_deg    1sigma_deg")?;
+    if let Some(s1) = stage1 {
+        writeln!(w, "j2     {:+.5}    (stage 1)", deg(s1.delta_theta2_rad))?;
+    }
+    for k in 0..WRIST_JOINTS {
+        writeln!(
+            w,
+            "j{}     {:+.5}    {:.5}",
+            k + 3,
+            deg(fit.offsets_rad[k]),
+            deg(fit.sigma_rad[k])
+        )?;
+    }
+    if let Some(s1) = stage1 {
+        writeln!(
+            w,
+            "base tilt alpha {:+.5} deg, beta {:+.5} deg",
+            deg(s1.base_tilt.alpha_rad),
+            deg(s1.base_tilt.beta_rad)
+        )?;
+    }
+    writeln!(
+        w,
+        "poses {}, residual RMS {:.5} deg, iterations {}, condition number {:.1}",
+        fit.poses,
+        deg(fit.residual_rms_rad),
+        fit.iterations,
+        fit.condition_number.to_f64()
+    )?;
+    writeln!(
+        w,
+        "enter on the controller: minus each offset (offset = true - commanded)"
+    )?;
+    if verdict.is_pass() {
+        writeln!(w, "verdict: PASS")
+    } else {
+        for warning in &verdict.warnings {
+            writeln!(w, "verdict: WARN {warning}")?;
+        }
+        Ok(())
+    }
+}
+
+fn deg<T: Real>(rad: T) -> f64 {
+    rad_to_deg(rad).to_f64()
+}

@@ -1,0 +1,156 @@
+//! Stage 1: base tilt and the axis-2 zero from a 180° turn of axis 1 (the paper's λ/2).
+//!
+//! Sensor on the upper arm, its x axis parallel to joint 2. With axis 1 at its mark the
+//! sensor sits at `Rbase·Rx(φ)`; after the half turn at `Rbase·Rz(π)·Rx(φ)`
+//! `= Ry(β)·Rx(α−φ)·Rz(π)`. In the `rpy` convention the two readings are therefore
+//! `(α+φ+bx, β+by)` and `(φ−α+bx, −β+by)` exactly, and the half-sums and half-differences
+//! below are exact, not small-angle. The `y` formula is the same in both conventions;
+//! an `axis` reading is turned into its `rpy` equivalent through the up vector first.
+
+use crate::error::StageError;
+use crate::model::{BaseTilt, Convention, SensorBias, Tilt};
+use crate::real::{rad_to_deg, Real};
+
+/// Checks that a reading is finite and inside the sensor's range.
+pub(crate) fn check_reading<T: Real>(t: &Tilt<T>, range_rad: T) -> Result<(), StageError> {
+    if !t.is_finite() {
+        return Err(StageError::NonFiniteReading);
+    }
+    match t.axis_beyond(range_rad) {
+        Some(axis) => Err(StageError::ReadingOutOfRange {
+            axis,
+            value_deg: rad_to_deg(t.get(axis)).to_f64() as f32,
+            range_deg: rad_to_deg(range_rad).to_f64() as f32,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// The stage-1 measurement.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AxisOneTurn<T> {
+    /// Reading with axis 1 at its mark.
+    pub before: Tilt<T>,
+    /// Reading after turning axis 1 by 180°, all else locked.
+    pub after: Tilt<T>,
+    /// Commanded joint-2 angle c2 during both readings (rad).
+    pub commanded_j2_rad: T,
+    /// s2 = +1 if positive joint-2 motion increases the x reading, −1 otherwise.
+    pub j2_direction: i8,
+}
+
+/// What stage 1 finds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stage1Result<T> {
+    /// Base tilt (α about the joint-2 direction, β about the other horizontal).
+    pub base_tilt: BaseTilt<T>,
+    /// Sensor y bias, measured for free by the half turn (rad).
+    pub bias_y_rad: T,
+    /// Arm angle from the true axis-2 zero, as seen by the sensor (rad). Includes the
+    /// sensor's x bias when none was known (`bias_x_known == false`).
+    pub arm_angle_rad: T,
+    /// Zero offset of joint 2: true − commanded (rad).
+    pub delta_theta2_rad: T,
+    /// Whether a sensor x bias (from stage 0) was removed. If not, Δθ2 includes it.
+    pub bias_x_known: bool,
+}
+
+impl<T: Real> AxisOneTurn<T> {
+    /// Solves stage 1.
+    ///
+    /// `bias` is the stage-0 bias if there was one; only its x part is used (y comes
+    /// out of the half turn itself).
+    ///
+    /// # Errors
+    /// Non-finite or out-of-range readings, an `axis`-convention reading that no
+    /// orientation can produce, `j2_direction` other than ±1, a non-finite c2.
+    pub fn solve(
+        &self,
+        convention: Convention,
+        bias: Option<&SensorBias<T>>,
+        range_rad: T,
+    ) -> Result<Stage1Result<T>, StageError> {
+        check_reading(&self.before, range_rad)?;
+        check_reading(&self.after, range_rad)?;
+        if self.j2_direction != 1 && self.j2_direction != -1 {
+            return Err(StageError::BadDirectionSign);
+        }
+        if !self.commanded_j2_rad.is_finite() {
+            return Err(StageError::NonFiniteCommand);
+        }
+        let half = T::lit(0.5);
+        let (y1, y2) = (self.before.y_rad, self.after.y_rad);
+        let beta = (y1 - y2) * half;
+        let by = (y1 + y2) * half;
+        let bx = bias.map_or(T::zero(), |b| b.x_rad);
+
+        let x1 = rpy_x(convention, &self.before, bx, by)?;
+        let x2 = rpy_x(convention, &self.after, bx, by)?;
+        let alpha = (x1 - x2) * half;
+        let arm = (x1 + x2) * half;
+        let s2 = if self.j2_direction > 0 {
+            T::one()
+        } else {
+            -T::one()
+        };
+        Ok(Stage1Result {
+            base_tilt: BaseTilt {
+                alpha_rad: alpha,
+                beta_rad: beta,
+            },
+            bias_y_rad: by,
+            arm_angle_rad: arm,
+            delta_theta2_rad: s2 * arm - self.commanded_j2_rad,
+            bias_x_known: bias.is_some(),
+        })
+    }
+}
+
+/// The bias-free `rpy` x angle of a reading.
+fn rpy_x<T: Real>(convention: Convention, t: &Tilt<T>, bx: T, by: T) -> Result<T, StageError> {
+    let clean = Tilt::new(t.x_rad - bx, t.y_rad - by);
+    match convention {
+        Convention::Rpy => Ok(clean.x_rad),
+        Convention::Axis => {
+            let u = convention
+                .up_from_reading(&clean)
+                .ok_or(StageError::InconsistentReading)?;
+            Ok(u.y.atan2(u.z))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::TiltAxis;
+
+    #[test]
+    fn rejects_bad_sign_and_out_of_range() {
+        let t = Tilt::from_deg(1.0_f64, 2.0);
+        let mut s = AxisOneTurn {
+            before: t,
+            after: t,
+            commanded_j2_rad: 0.0,
+            j2_direction: 0,
+        };
+        assert_eq!(
+            s.solve(Convention::Rpy, None, 0.2),
+            Err(StageError::BadDirectionSign)
+        );
+        s.j2_direction = 1;
+        s.after = Tilt::from_deg(1.0, 15.0);
+        assert!(matches!(
+            s.solve(Convention::Rpy, None, 0.2),
+            Err(StageError::ReadingOutOfRange {
+                axis: TiltAxis::Y,
+                ..
+            })
+        ));
+        s.after = Tilt::new(f64::NAN, 0.0);
+        assert_eq!(
+            s.solve(Convention::Rpy, None, 0.2),
+            Err(StageError::NonFiniteReading)
+        );
+    }
+}
