@@ -20,7 +20,9 @@ impl ParamSet {
 
     /// Robot joint numbers (3..=6) in the set.
     pub fn joints(self) -> impl Iterator<Item = u8> {
-        (0..4u8).filter(move |&k| self.contains(k as usize)).map(|k| k + 3)
+        (0..4u8)
+            .filter(move |&k| self.contains(k as usize))
+            .map(|k| k + 3)
     }
 }
 

@@ -154,3 +154,57 @@ mod tests {
         );
     }
 }
+
+#[cfg(test)]
+mod properties {
+    //! Exactness of stages 0 and 1 for any tilt, bias and heading (METHOD.md: the
+    //! formulas are exact, not small-angle).
+    use super::*;
+    use crate::model::{rot_x, rot_y, rot_z, SensorModel};
+    use crate::stage0::Reversal;
+    use proptest::prelude::*;
+
+    fn conv() -> impl Strategy<Value = Convention> {
+        prop_oneof![Just(Convention::Rpy), Just(Convention::Axis)]
+    }
+
+    proptest! {
+        #[test]
+        fn reversal_returns_the_bias(
+            c in conv(), bx in -0.01..0.01f64, by in -0.01..0.01f64,
+            tx in -0.15..0.15f64, ty in -0.15..0.15f64, yaw in -3.1..3.1f64,
+        ) {
+            let sensor = SensorModel { convention: c, bias: Tilt::new(bx, by) };
+            let surface = rot_y(ty) * rot_x(tx) * rot_z(yaw);
+            let rev = Reversal {
+                first: sensor.reading(&surface),
+                second: sensor.reading(&(surface * rot_z(core::f64::consts::PI))),
+            };
+            let b = rev.bias(0.5).unwrap();
+            prop_assert!((b.x_rad - bx).abs() < 1e-14 && (b.y_rad - by).abs() < 1e-14);
+        }
+
+        #[test]
+        fn half_turn_returns_tilt_and_joint2_zero(
+            c in conv(), bx in -0.01..0.01f64, by in -0.01..0.01f64,
+            alpha in -0.02..0.02f64, beta in -0.02..0.02f64,
+            dt2 in -0.05..0.05f64, c2 in -0.1..0.1f64, up in any::<bool>(),
+        ) {
+            let s2: i8 = if up { 1 } else { -1 };
+            let sensor = SensorModel { convention: c, bias: Tilt::new(bx, by) };
+            let base = BaseTilt { alpha_rad: alpha, beta_rad: beta }.rotation();
+            let arm = rot_x(f64::from(s2) * (c2 + dt2));
+            let turn = AxisOneTurn {
+                before: sensor.reading(&(base * arm)),
+                after: sensor.reading(&(base * rot_z(core::f64::consts::PI) * arm)),
+                commanded_j2_rad: c2,
+                j2_direction: s2,
+            };
+            let r = turn.solve(c, Some(&Tilt::new(bx, by)), 0.5).unwrap();
+            prop_assert!((r.base_tilt.alpha_rad - alpha).abs() < 1e-14);
+            prop_assert!((r.base_tilt.beta_rad - beta).abs() < 1e-14);
+            prop_assert!((r.bias_y_rad - by).abs() < 1e-14);
+            prop_assert!((r.delta_theta2_rad - dt2).abs() < 1e-14);
+        }
+    }
+}

@@ -202,7 +202,11 @@ mod tests {
     #[test]
     fn rpy_reads_back_the_angles_of_its_rotation() {
         // R = Rz(α)Ry(β)Rx(γ) reads x = γ, y = β whatever the yaw α.
-        for &(a, b, g) in &[(0.0_f64, 0.1_f64, -0.2_f64), (1.3, -0.15, 0.05), (-2.9, 0.17, 0.17)] {
+        for &(a, b, g) in &[
+            (0.0_f64, 0.1_f64, -0.2_f64),
+            (1.3, -0.15, 0.05),
+            (-2.9, 0.17, 0.17),
+        ] {
             let r = rot_z(a) * rot_y(b) * rot_x(g);
             let t = Convention::Rpy.read(&(r.inverse() * Vector3::z()));
             assert!((t.x_rad - g).abs() < 1e-14 && (t.y_rad - b).abs() < 1e-14);

@@ -1,0 +1,240 @@
+//! A whole simulated calibration: stage 0 on a tilted bench, stage 1 on the upper arm,
+//! stage 2 on the flange, each reading taken by the simulated sensor from the
+//! simulated robot. The pendant's side (core) sees only the readings.
+
+use crate::sim::{Noise, PoseSampler, SamplerError, SimInclinometer, SimRobot};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use zerocal_core::fit::{PoseReading, Stage2Model};
+use zerocal_core::model::{rot_x, rot_y, rot_z, Convention, Tilt, WristChain, WRIST_JOINTS};
+use zerocal_core::real::deg_to_rad;
+use zerocal_core::stage0::Reversal;
+use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
+use zerocal_core::{FitConfig, FitError, FitResult, StageError};
+
+/// The paper's Table 4 setup (METHOD.md, Reference figures).
+pub struct Table4;
+
+impl Table4 {
+    /// Δθ3..Δθ6 (deg).
+    pub const OFFSETS_DEG: [f64; WRIST_JOINTS] = [0.050, 0.060, -0.040, 0.070];
+    /// Poses per identification.
+    pub const POSES: usize = 30;
+    /// Uniform noise half-width per reading (deg).
+    pub const NOISE_HALF_WIDTH_DEG: f64 = 0.002;
+    /// Sensor window (± deg).
+    pub const WINDOW_DEG: f64 = 10.0;
+
+    /// The noise as a [`Noise`].
+    pub fn noise() -> Noise {
+        Noise::Uniform {
+            half_width_rad: deg_to_rad(Self::NOISE_HALF_WIDTH_DEG),
+        }
+    }
+}
+
+/// What to simulate.
+#[derive(Clone, Debug)]
+pub struct SessionConfig {
+    /// Seed of everything random (truth, poses, noise).
+    pub seed: u64,
+    /// Stage-2 poses.
+    pub poses: usize,
+    /// Reading noise.
+    pub noise: Noise,
+    /// Sensor convention (the simulated sensor's and the model's).
+    pub convention: Convention,
+    /// Joints 3-6 within ±this (deg).
+    pub joint_range_deg: f64,
+    /// Sensor window (± deg).
+    pub window_deg: f64,
+    /// Hidden offsets j2..j6 drawn within ±this (deg).
+    pub max_offset_deg: f64,
+    /// Hidden base tilt drawn within ±this per axis (deg).
+    pub max_base_tilt_deg: f64,
+    /// Hidden sensor bias drawn within ±this per axis (deg).
+    pub max_bias_deg: f64,
+    /// Whether stage 0 runs (else stage 2 assumes no x bias, as the paper does).
+    pub with_stage0: bool,
+}
+
+impl Default for SessionConfig {
+    fn default() -> Self {
+        SessionConfig {
+            seed: 1,
+            poses: Table4::POSES,
+            noise: Table4::noise(),
+            convention: Convention::Rpy,
+            joint_range_deg: 180.0,
+            window_deg: Table4::WINDOW_DEG,
+            max_offset_deg: 0.5,
+            max_base_tilt_deg: 0.5,
+            max_bias_deg: 0.05,
+            with_stage0: true,
+        }
+    }
+}
+
+/// Everything a simulated session produced: the hidden truth and the readings.
+#[derive(Clone, Debug)]
+pub struct SimSession {
+    /// The robot (truth).
+    pub robot: SimRobot,
+    /// The sensor (true bias, noise).
+    pub sensor: SimInclinometer,
+    /// Stage-0 readings, if run.
+    pub stage0: Option<Reversal<f64>>,
+    /// Stage-1 readings.
+    pub stage1: AxisOneTurn<f64>,
+    /// Stage-2 readings.
+    pub poses: Vec<PoseReading<f64>>,
+}
+
+/// What the pendant computes from a session.
+#[derive(Clone, Debug)]
+pub struct SessionResult {
+    /// Stage-0 bias, if run.
+    pub bias: Option<Tilt<f64>>,
+    /// Stage 1.
+    pub stage1: Stage1Result<f64>,
+    /// The stage-2 model built from stages 0-1.
+    pub model: Stage2Model<f64>,
+    /// Stage 2.
+    pub fit: FitResult<f64>,
+}
+
+/// Why a simulated session gave no result.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SessionError {
+    /// No poses fit the window.
+    Sampler(SamplerError),
+    /// Stage 0 or 1 refused.
+    Stage(StageError),
+    /// Stage 2 refused.
+    Fit(FitError),
+}
+
+fn uniform(rng: &mut ChaCha8Rng, half: f64) -> f64 {
+    if half > 0.0 {
+        rng.gen_range(-half..=half)
+    } else {
+        0.0
+    }
+}
+
+impl SimSession {
+    /// Simulates a session.
+    ///
+    /// # Errors
+    /// The pose window cannot be reached.
+    pub fn simulate(cfg: &SessionConfig) -> Result<Self, SessionError> {
+        let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed);
+        let off = cfg.max_offset_deg;
+        let robot = SimRobot {
+            chain: WristChain::paper(),
+            base_tilt: zerocal_core::BaseTilt::from_deg(
+                uniform(&mut rng, cfg.max_base_tilt_deg),
+                uniform(&mut rng, cfg.max_base_tilt_deg),
+            ),
+            offsets_rad: [0; WRIST_JOINTS].map(|_| deg_to_rad(uniform(&mut rng, off))),
+            delta_theta2_rad: deg_to_rad(uniform(&mut rng, off)),
+            j2_direction: if rng.gen_bool(0.5) { 1 } else { -1 },
+        };
+        let bias = Tilt::from_deg(
+            uniform(&mut rng, cfg.max_bias_deg),
+            uniform(&mut rng, cfg.max_bias_deg),
+        );
+        let mut sensor = SimInclinometer::new(cfg.convention, bias, cfg.noise, rng.gen());
+        Self::from_parts(robot, &mut sensor, cfg, &mut rng)
+    }
+
+    /// Simulates a session on a given robot and sensor.
+    ///
+    /// # Errors
+    /// The pose window cannot be reached.
+    pub fn from_parts(
+        robot: SimRobot,
+        sensor: &mut SimInclinometer,
+        cfg: &SessionConfig,
+        rng: &mut ChaCha8Rng,
+    ) -> Result<Self, SessionError> {
+        let stage0 = cfg.with_stage0.then(|| {
+            // A bench tilted by up to 2°, the pendant at any heading on it.
+            let surface = rot_y(deg_to_rad(uniform(rng, 2.0)))
+                * rot_x(deg_to_rad(uniform(rng, 2.0)))
+                * rot_z(uniform(rng, std::f64::consts::PI));
+            Reversal {
+                first: sensor.read(&surface),
+                second: sensor.read(&(surface * rot_z(std::f64::consts::PI))),
+            }
+        });
+        // Joint 2 commanded a little away from 0 so the readings are not at 0.
+        let c2 = deg_to_rad(uniform(rng, 3.0));
+        let stage1 = AxisOneTurn {
+            before: sensor.read(&robot.upper_arm_orientation(0.0, c2)),
+            after: sensor.read(&robot.upper_arm_orientation(std::f64::consts::PI, c2)),
+            commanded_j2_rad: c2,
+            j2_direction: robot.j2_direction,
+        };
+        let mut sampler = PoseSampler::symmetric(cfg.joint_range_deg, cfg.window_deg, rng.gen());
+        let joints = sampler
+            .sample(&robot, sensor, cfg.poses)
+            .map_err(SessionError::Sampler)?;
+        let poses = joints
+            .iter()
+            .map(|q| PoseReading {
+                joints_rad: *q,
+                reading: sensor.read(&robot.flange_orientation(q)),
+            })
+            .collect();
+        Ok(SimSession {
+            robot,
+            sensor: sensor.clone(),
+            stage0,
+            stage1,
+            poses,
+        })
+    }
+
+    /// Runs stages 0-2 as the pendant does.
+    ///
+    /// # Errors
+    /// Whatever stage refuses.
+    pub fn identify(&self, config: &FitConfig<f64>) -> Result<SessionResult, SessionError> {
+        let range = config.sensor_range_rad;
+        let bias = match &self.stage0 {
+            Some(r) => Some(r.bias(range).map_err(SessionError::Stage)?),
+            None => None,
+        };
+        let convention = self.sensor.model.convention;
+        let stage1 = self
+            .stage1
+            .solve(convention, bias.as_ref(), range)
+            .map_err(SessionError::Stage)?;
+        // Stage 1 measures y bias for free; x bias only stage 0 knows.
+        let model = Stage2Model {
+            chain: self.robot.chain,
+            base_tilt: stage1.base_tilt,
+            sensor: zerocal_core::SensorModel {
+                convention,
+                bias: Tilt::new(bias.map_or(0.0, |b| b.x_rad), stage1.bias_y_rad),
+            },
+        };
+        let fit = zerocal_core::fit(&model, &self.poses, config).map_err(SessionError::Fit)?;
+        Ok(SessionResult {
+            bias,
+            stage1,
+            model,
+            fit,
+        })
+    }
+}
+
+/// The noise σ a fit config should assume for a simulated noise model.
+pub fn fit_config_for(noise: Noise) -> FitConfig<f64> {
+    let mut c = FitConfig::default();
+    if noise.sigma_rad() > 0.0 {
+        c.sensor_noise_rad = noise.sigma_rad();
+    }
+    c
+}

@@ -1,0 +1,51 @@
+//! Helpers shared by the scenario tests.
+#![allow(dead_code)] // each test binary uses its own subset
+
+use zerocal_core::fit::{PoseReading, Stage2Model};
+use zerocal_core::model::{Convention, SensorModel, Tilt, WRIST_JOINTS};
+use zerocal_host_tests::sim::{Noise, PoseSampler, SimInclinometer, SimRobot};
+
+/// Draws `n` poses and reads them.
+pub fn read_poses(
+    robot: &SimRobot,
+    sensor: &mut SimInclinometer,
+    sampler: &mut PoseSampler,
+    n: usize,
+) -> Vec<PoseReading<f64>> {
+    let joints = sampler.sample(robot, sensor, n).expect("window reachable");
+    joints
+        .iter()
+        .map(|q| PoseReading {
+            joints_rad: *q,
+            reading: sensor.read(&robot.flange_orientation(q)),
+        })
+        .collect()
+}
+
+/// The stage-2 model that knows the truth's base tilt and bias.
+pub fn true_model(robot: &SimRobot, convention: Convention, bias: Tilt<f64>) -> Stage2Model<f64> {
+    Stage2Model {
+        chain: robot.chain,
+        base_tilt: robot.base_tilt,
+        sensor: SensorModel { convention, bias },
+    }
+}
+
+pub fn sensor(convention: Convention, noise: Noise, seed: u64) -> SimInclinometer {
+    SimInclinometer::new(convention, Tilt::default(), noise, seed)
+}
+
+pub fn errors_deg(found: &[f64; WRIST_JOINTS], truth: &[f64; WRIST_JOINTS]) -> [f64; WRIST_JOINTS] {
+    let mut e = [0.0; WRIST_JOINTS];
+    for k in 0..WRIST_JOINTS {
+        e[k] = (found[k] - truth[k]).to_degrees();
+    }
+    e
+}
+
+pub fn to_f32(p: &PoseReading<f64>) -> PoseReading<f32> {
+    PoseReading {
+        joints_rad: p.joints_rad.map(|q| q as f32),
+        reading: Tilt::new(p.reading.x_rad as f32, p.reading.y_rad as f32),
+    }
+}
