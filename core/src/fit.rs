@@ -17,6 +17,11 @@ use nalgebra::{Matrix4, Vector3, Vector4};
 /// Fewest poses the fit accepts: 2N readings must exceed the 4 unknowns with room for σ.
 pub const MIN_POSES: usize = 4;
 
+/// Above this condition number of J a pose set is treated as rank deficient. An exactly
+/// singular set computes to ≳ 1e6 even in `f32` (1/ε ≈ 8e6), and a real one at 1e5
+/// would leave its weakest combination ~1e4× less determined than the sensor noise.
+pub const RANK_DEFICIENT_CONDITION: f64 = 1e5;
+
 /// Steps smaller than this (rad, ≈ 0.006°) are taken without the cost test of
 /// Levenberg-Marquardt: see [`fit`].
 const LOCAL_STEP_RAD: f64 = 1e-4;
@@ -380,7 +385,7 @@ fn out_of_range<T: Real>(pose: usize, axis: TiltAxis, value_rad: T, range_rad: T
 /// Refuses a pose set that cannot separate the parameters.
 fn check_conditioning<T: Real>(info: &Information<T>, max_condition: T) -> Result<T, FitError> {
     let c = info.conditioning();
-    if !c.condition_number.is_finite() || c.condition_number > T::RANK_DEFICIENT_CONDITION {
+    if !c.condition_number.is_finite() || c.condition_number > T::lit(RANK_DEFICIENT_CONDITION) {
         return Err(FitError::RankDeficient { params: c.weakest });
     }
     if c.condition_number > max_condition {
@@ -544,7 +549,7 @@ pub fn covariance_bound<'p, T: Real + 'p>(
         });
     }
     let info = model.information(joints_rad, offsets_rad);
-    let condition_number = check_conditioning(&info, T::RANK_DEFICIENT_CONDITION)?;
+    let condition_number = check_conditioning(&info, T::lit(RANK_DEFICIENT_CONDITION))?;
     let unit = info.unit_sigma().ok_or(FitError::NonFiniteResult)?;
     let mut sigma_rad = [T::zero(); WRIST_JOINTS];
     for (s, u) in sigma_rad.iter_mut().zip(unit) {
@@ -663,8 +668,8 @@ mod properties {
             // Random joints in ±0.6 rad can, rarely, give a weak set: then a named error
             // is the right answer and numbers are not.
             if let Ok(r) = r {
-                for k in 0..4 {
-                    prop_assert!((r.offsets_rad[k] - offsets[k]).abs() < 1e-11, "{r:?}");
+                for (found, truth) in r.offsets_rad.iter().zip(offsets) {
+                    prop_assert!((found - truth).abs() < 1e-11, "{r:?}");
                 }
                 prop_assert!(r.residual_rms_rad < 1e-12);
             } else {

@@ -12,10 +12,6 @@ pub trait Real: RealField + Copy + Default + core::fmt::Display {
     /// A fit has converged when no parameter moves by more than this (rad).
     /// Set a few ulps above the precision of an angle of ~0.2 rad.
     const STEP_TOLERANCE_RAD: Self;
-    /// Above this condition number of J the pose set is numerically rank deficient
-    /// in this precision (≈ 1/√ε: beyond it the solution has no correct digits left
-    /// for a unit-scale problem after squaring in the covariance).
-    const RANK_DEFICIENT_CONDITION: Self;
 
     /// Converts an `f64` literal or value.
     fn lit(x: f64) -> Self;
@@ -26,7 +22,6 @@ pub trait Real: RealField + Copy + Default + core::fmt::Display {
 impl Real for f64 {
     const EPSILON: Self = f64::EPSILON;
     const STEP_TOLERANCE_RAD: Self = 1e-13;
-    const RANK_DEFICIENT_CONDITION: Self = 1e7;
 
     fn lit(x: f64) -> Self {
         x
@@ -39,7 +34,6 @@ impl Real for f64 {
 impl Real for f32 {
     const EPSILON: Self = f32::EPSILON;
     const STEP_TOLERANCE_RAD: Self = 2e-7;
-    const RANK_DEFICIENT_CONDITION: Self = 2e3;
 
     fn lit(x: f64) -> Self {
         x as f32

@@ -104,7 +104,13 @@ pub fn write_report<T: Real, W: Write>(
 ) -> fmt::Result {
     writeln!(w, "joint  offset_deg    1sigma_deg")?;
     if let Some(s1) = stage1 {
-        writeln!(w, "j2     {:+.5}    (stage 1)", deg(s1.delta_theta2_rad))?;
+        // Stage 1 uses the same sensor: its readings carry the σ the fit found.
+        writeln!(
+            w,
+            "j2     {:+.5}    {:.5}  (stage 1)",
+            deg(s1.delta_theta2_rad),
+            deg(s1.delta_theta2_sigma_rad(fit.noise_sigma_rad))
+        )?;
     }
     for k in 0..WRIST_JOINTS {
         writeln!(

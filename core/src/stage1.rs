@@ -55,6 +55,22 @@ pub struct Stage1Result<T> {
     pub bias_x_known: bool,
 }
 
+impl<T: Real> Stage1Result<T> {
+    /// 1σ of Δθ2 for per-reading noise `noise_sigma_rad`: a half-sum of two readings
+    /// (σ/√2), less the stage-0 half-sum when there was one (another σ/√2). First order,
+    /// which is exact for `rpy` and within 1 % for `axis` inside a ±10° window.
+    pub fn delta_theta2_sigma_rad(&self, noise_sigma_rad: T) -> T {
+        let half = T::lit(0.5);
+        let var = if self.bias_x_known { T::one() } else { half };
+        noise_sigma_rad * var.sqrt()
+    }
+
+    /// 1σ of α and β: half-differences of two readings.
+    pub fn base_tilt_sigma_rad(&self, noise_sigma_rad: T) -> T {
+        noise_sigma_rad * T::lit(0.5).sqrt()
+    }
+}
+
 impl<T: Real> AxisOneTurn<T> {
     /// Solves stage 1.
     ///

@@ -1,0 +1,46 @@
+//! One 30-pose stage-2 solve on the paper's Table 4 setup, in f64 (desktop) and f32
+//! (the pendant's precision, here on the host CPU).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use std::hint::black_box;
+use zerocal_core::fit::{fit, FitConfig, PoseReading, Stage2Model};
+use zerocal_core::model::{Convention, Tilt};
+use zerocal_host_tests::sim::{PoseSampler, SimInclinometer, SimRobot, Table4};
+
+fn table4_poses() -> Vec<PoseReading<f64>> {
+    let robot = SimRobot::paper(Table4::OFFSETS_DEG, (0.0, 0.0));
+    let mut sensor = SimInclinometer::new(Convention::Rpy, Tilt::default(), Table4::noise(), 42);
+    let mut sampler = PoseSampler::symmetric(180.0, Table4::WINDOW_DEG, 42);
+    match sampler.sample(&robot, &sensor, Table4::POSES) {
+        Ok(joints) => joints
+            .iter()
+            .map(|q| PoseReading {
+                joints_rad: *q,
+                reading: sensor.read(&robot.flange_orientation(q)),
+            })
+            .collect(),
+        Err(e) => panic!("bench setup: {e:?}"),
+    }
+}
+
+fn bench(c: &mut Criterion) {
+    let poses = table4_poses();
+    let p32: Vec<PoseReading<f32>> = poses
+        .iter()
+        .map(|p| PoseReading {
+            joints_rad: p.joints_rad.map(|q| q as f32),
+            reading: Tilt::new(p.reading.x_rad as f32, p.reading.y_rad as f32),
+        })
+        .collect();
+    let (m64, c64) = (Stage2Model::<f64>::default(), FitConfig::<f64>::default());
+    let (m32, c32) = (Stage2Model::<f32>::default(), FitConfig::<f32>::default());
+    c.bench_function("solve_30_poses_f64", |b| {
+        b.iter(|| fit(black_box(&m64), black_box(&poses), &c64))
+    });
+    c.bench_function("solve_30_poses_f32", |b| {
+        b.iter(|| fit(black_box(&m32), black_box(&p32), &c32))
+    });
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,175 @@
+//! `zerocal identify LOG.csv`: stage 2 on a recorded log.
+
+use crate::chain::parse_chain;
+use crate::error::{parse_pair_deg, CliError};
+use crate::log::{read_log, Log};
+use clap::Args;
+use serde::Serialize;
+use std::path::PathBuf;
+use zerocal_core::fit::{fit, FitConfig, FitResult, SigmaSource, Stage2Model};
+use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, WristChain};
+use zerocal_core::real::deg_to_rad;
+use zerocal_core::report::{write_report, Verdict};
+use zerocal_core::FitError;
+
+/// Arguments of `zerocal identify`.
+#[derive(Args, Debug, Clone)]
+pub struct IdentifyArgs {
+    /// The log: `j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg`, one pose a row, `#` comments.
+    pub log: PathBuf,
+    /// How the sensor's angles derive from gravity (METHOD.md): rpy or axis.
+    #[arg(long, default_value = "rpy", value_parser = parse_convention)]
+    pub convention: Convention,
+    /// Base tilt α,β in degrees, as measured by stage 1.
+    #[arg(long, value_name = "X,Y", value_parser = parse_pair_deg, allow_hyphen_values = true)]
+    pub base_tilt_deg: Option<(f64, f64)>,
+    /// Sensor bias x,y in degrees, as measured by stage 0 (and stage 1 for y).
+    #[arg(long, value_name = "X,Y", value_parser = parse_pair_deg, allow_hyphen_values = true)]
+    pub bias_deg: Option<(f64, f64)>,
+    /// The sensor's noise as the half-width of uniform noise ±A (deg): used for 1σ
+    /// when a log has too few poses to estimate it, and to judge the residual.
+    #[arg(long, default_value_t = 0.002, value_name = "A")]
+    pub noise_deg: f64,
+    /// Readings beyond ±this (deg) are refused as saturated or mis-recorded.
+    #[arg(long, default_value_t = 30.0)]
+    pub range_deg: f64,
+    /// Refuse pose sets whose Jacobian condition number exceeds this.
+    #[arg(long, default_value_t = 1000.0)]
+    pub max_condition: f64,
+    /// The robot's wrist (JSON; see `chain.rs`); default the paper's x, y, x, y.
+    #[arg(long, value_name = "FILE")]
+    pub chain: Option<PathBuf>,
+    /// Print one JSON object instead of the report.
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn parse_convention(s: &str) -> Result<Convention, String> {
+    Convention::parse(s).ok_or_else(|| format!("'{s}' is not a convention: use rpy or axis"))
+}
+
+/// The `--json` output.
+#[derive(Serialize, Debug)]
+pub struct IdentifyJson {
+    /// Δθ3..Δθ6 (deg).
+    pub offsets_deg: [f64; 4],
+    /// 1σ of each (deg).
+    pub sigma_deg: [f64; 4],
+    /// RMS of the residuals (deg).
+    pub residual_rms_deg: f64,
+    /// Iterations of the fit.
+    pub iterations: u32,
+    /// Condition number of the Jacobian.
+    pub condition_number: f64,
+    /// Poses fitted.
+    pub poses: usize,
+    /// Convention used.
+    pub convention: &'static str,
+    /// `residuals` or `sensor_noise`.
+    pub sigma_source: &'static str,
+    /// Empty when the verdict is pass.
+    pub warnings: Vec<String>,
+}
+
+/// The model and config the flags describe.
+pub fn model_and_config(
+    args: &IdentifyArgs,
+) -> Result<(Stage2Model<f64>, FitConfig<f64>), CliError> {
+    let chain = match &args.chain {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+            parse_chain(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?
+        }
+        None => WristChain::paper(),
+    };
+    let (a, b) = args.base_tilt_deg.unwrap_or((0.0, 0.0));
+    let (bx, by) = args.bias_deg.unwrap_or((0.0, 0.0));
+    for (name, v) in [
+        ("--noise-deg", args.noise_deg),
+        ("--range-deg", args.range_deg),
+        ("--max-condition", args.max_condition),
+    ] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(CliError::Input(format!(
+                "{name} must be a positive number, got {v}"
+            )));
+        }
+    }
+    let model = Stage2Model {
+        chain,
+        base_tilt: BaseTilt::from_deg(a, b),
+        sensor: SensorModel {
+            convention: args.convention,
+            bias: Tilt::from_deg(bx, by),
+        },
+    };
+    let config = FitConfig {
+        sensor_range_rad: deg_to_rad(args.range_deg),
+        sensor_noise_rad: deg_to_rad(args.noise_deg / 3f64.sqrt()),
+        max_condition_number: args.max_condition,
+        ..FitConfig::default()
+    };
+    Ok((model, config))
+}
+
+/// Names the log line of a pose-indexed error.
+fn refusal(e: FitError, log: &Log) -> CliError {
+    let line = |pose: usize| log.lines.get(pose).copied().unwrap_or(0);
+    let msg = match e {
+        FitError::NonFiniteJoint { pose }
+        | FitError::NonFiniteReading { pose }
+        | FitError::ReadingOutOfRange { pose, .. } => format!("line {}: {e}", line(pose)),
+        _ => e.to_string(),
+    };
+    CliError::Refused(msg)
+}
+
+/// Runs the identification and returns what to print.
+pub fn run(args: &IdentifyArgs) -> Result<String, CliError> {
+    let file = std::fs::File::open(&args.log)
+        .map_err(|e| CliError::Input(format!("{}: {e}", args.log.display())))?;
+    let log =
+        read_log(file).map_err(|e| CliError::Input(format!("{}: {e}", args.log.display())))?;
+    let (model, config) = model_and_config(args)?;
+    let result = fit(&model, &log.poses, &config).map_err(|e| refusal(e, &log))?;
+    let verdict = Verdict::judge(&result, &config, None);
+    if args.json {
+        let json = to_json(&result, args.convention, &verdict);
+        serde_json::to_string_pretty(&json).map_err(|e| CliError::Input(e.to_string()))
+    } else {
+        let mut out = format!(
+            "zerocal identify: {} poses from {} ({} convention)\n",
+            log.poses.len(),
+            args.log.display(),
+            args.convention.name()
+        );
+        if args.bias_deg.is_none() {
+            out.push_str("note: no --bias-deg given: sensor bias taken as zero\n");
+        }
+        if args.base_tilt_deg.is_none() {
+            out.push_str("note: no --base-tilt-deg given: base taken as level\n");
+        }
+        write_report(&mut out, None, &result, &verdict)
+            .map_err(|e| CliError::Input(e.to_string()))?;
+        Ok(out)
+    }
+}
+
+/// The JSON object of a result.
+pub fn to_json(r: &FitResult<f64>, convention: Convention, verdict: &Verdict) -> IdentifyJson {
+    IdentifyJson {
+        offsets_deg: r.offsets_rad.map(f64::to_degrees),
+        sigma_deg: r.sigma_rad.map(f64::to_degrees),
+        residual_rms_deg: r.residual_rms_rad.to_degrees(),
+        iterations: r.iterations,
+        condition_number: r.condition_number,
+        poses: r.poses,
+        convention: convention.name(),
+        sigma_source: match r.sigma_source {
+            SigmaSource::Residuals => "residuals",
+            SigmaSource::SensorNoise => "sensor_noise",
+        },
+        warnings: verdict.warnings.iter().map(|w| w.to_string()).collect(),
+    }
+}

@@ -1,0 +1,50 @@
+//! `zerocal`: the desktop side of the zerocal pendant.
+//!
+//! - `zerocal simulate`: a whole calibration on a simulated robot, report beside truth.
+//! - `zerocal identify LOG.csv`: stage 2 on a recorded log.
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+use zerocal_cli::error::CliError;
+use zerocal_cli::identify::{self, IdentifyArgs};
+use zerocal_cli::simulate::{self, SimulateArgs};
+
+/// Joint-zero identification of industrial robots from a dual-axis inclinometer.
+#[derive(Parser, Debug)]
+#[command(name = "zerocal", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run stages 0-2 on a simulated robot and print the report beside the truth.
+    Simulate(SimulateArgs),
+    /// Identify the zero offsets of joints 3-6 from a recorded log (stage 2).
+    Identify(IdentifyArgs),
+}
+
+fn run(cli: &Cli) -> Result<String, CliError> {
+    match &cli.command {
+        Command::Simulate(args) => {
+            let (session, result) = simulate::simulate(args)?;
+            simulate::render(args, &session, &result)
+        }
+        Command::Identify(args) => identify::run(args),
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(&cli) {
+        Ok(out) => {
+            println!("{}", out.trim_end());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("zerocal: {e}");
+            ExitCode::from(e.exit_code() as u8)
+        }
+    }
+}

@@ -1,0 +1,168 @@
+//! `zerocal simulate`: the main job on an embedded default. A simulated robot with
+//! hidden offsets, base tilt and sensor bias goes through stages 0-2 exactly as the
+//! pendant would take it, and the pendant's report is printed beside the hidden truth.
+
+use crate::error::CliError;
+use clap::Args;
+use std::fmt::Write;
+use zerocal_core::model::Convention;
+use zerocal_core::real::deg_to_rad;
+use zerocal_core::report::{write_report, Verdict};
+use zerocal_host_tests::sim::session::{
+    fit_config_for, SessionConfig, SessionError, SessionResult,
+};
+use zerocal_host_tests::sim::{Noise, SimSession};
+
+/// Arguments of `zerocal simulate`.
+#[derive(Args, Debug, Clone)]
+pub struct SimulateArgs {
+    /// Seed of the hidden truth, the poses and the noise.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Stage-2 poses.
+    #[arg(long, default_value_t = 30)]
+    pub poses: usize,
+    /// Reading noise: uniform in ±A degrees (the paper's Table 4: 0.002).
+    #[arg(long, default_value_t = 0.002, value_name = "A")]
+    pub noise_deg: f64,
+    /// Sensor convention of the simulated sensor and of the model.
+    #[arg(long, default_value = "rpy", value_parser = parse_convention)]
+    pub convention: Convention,
+    /// Joints 3-6 are drawn within ±this (deg).
+    #[arg(long, default_value_t = 180.0)]
+    pub joint_range_deg: f64,
+    /// Hidden offsets of joints 2-6 are drawn within ±this (deg).
+    #[arg(long, default_value_t = 0.5)]
+    pub max_offset_deg: f64,
+    /// Skip stage 0: Δθ2 then includes the sensor's x bias, as in the paper.
+    #[arg(long)]
+    pub no_stage0: bool,
+}
+
+fn parse_convention(s: &str) -> Result<Convention, String> {
+    Convention::parse(s).ok_or_else(|| format!("'{s}' is not a convention: use rpy or axis"))
+}
+
+impl SimulateArgs {
+    /// The session the flags describe.
+    pub fn session_config(&self) -> Result<SessionConfig, CliError> {
+        if !(self.noise_deg.is_finite() && self.noise_deg >= 0.0) {
+            return Err(CliError::Input(format!(
+                "--noise-deg must be >= 0, got {}",
+                self.noise_deg
+            )));
+        }
+        if !(self.joint_range_deg.is_finite() && self.joint_range_deg > 0.0) {
+            return Err(CliError::Input("--joint-range-deg must be > 0".into()));
+        }
+        if !(self.max_offset_deg.is_finite() && self.max_offset_deg >= 0.0) {
+            return Err(CliError::Input("--max-offset-deg must be >= 0".into()));
+        }
+        if self.poses > 10_000 {
+            return Err(CliError::Input("--poses: at most 10000".into()));
+        }
+        Ok(SessionConfig {
+            seed: self.seed,
+            poses: self.poses,
+            noise: if self.noise_deg > 0.0 {
+                Noise::Uniform {
+                    half_width_rad: deg_to_rad(self.noise_deg),
+                }
+            } else {
+                Noise::None
+            },
+            convention: self.convention,
+            joint_range_deg: self.joint_range_deg,
+            max_offset_deg: self.max_offset_deg,
+            with_stage0: !self.no_stage0,
+            ..SessionConfig::default()
+        })
+    }
+}
+
+/// Simulates and identifies.
+pub fn simulate(args: &SimulateArgs) -> Result<(SimSession, SessionResult), CliError> {
+    let cfg = args.session_config()?;
+    let session = SimSession::simulate(&cfg).map_err(|e| CliError::Refused(describe(&e)))?;
+    let result = session
+        .identify(&fit_config_for(cfg.noise))
+        .map_err(|e| CliError::Refused(describe(&e)))?;
+    Ok((session, result))
+}
+
+fn describe(e: &SessionError) -> String {
+    match e {
+        SessionError::Sampler(s) => format!("no pose set fits the sensor window: {s:?}"),
+        SessionError::Stage(s) => format!("stage 0/1: {s}"),
+        SessionError::Fit(f) => format!("stage 2: {f}"),
+    }
+}
+
+/// The report: the pendant's view, then the hidden truth beside it.
+pub fn render(
+    args: &SimulateArgs,
+    session: &SimSession,
+    result: &SessionResult,
+) -> Result<String, CliError> {
+    let cfg = fit_config_for(args.session_config()?.noise);
+    let verdict = Verdict::judge(&result.fit, &cfg, Some(&result.stage1));
+    let mut out = String::new();
+    let fmt_err = |e: std::fmt::Error| CliError::Input(e.to_string());
+    writeln!(
+        out,
+        "zerocal simulate: seed {}, {} poses, noise +/-{} deg, {} convention, joints within +/-{} deg",
+        args.seed,
+        args.poses,
+        args.noise_deg,
+        args.convention.name(),
+        args.joint_range_deg
+    )
+    .map_err(fmt_err)?;
+    if let Some(b) = result.bias {
+        let (x, y) = b.to_deg();
+        writeln!(out, "stage 0: sensor bias x {x:+.5} deg, y {y:+.5} deg").map_err(fmt_err)?;
+    } else {
+        writeln!(out, "stage 0: skipped").map_err(fmt_err)?;
+    }
+    writeln!(out, "\n-- pendant report --").map_err(fmt_err)?;
+    write_report(&mut out, Some(&result.stage1), &result.fit, &verdict).map_err(fmt_err)?;
+
+    writeln!(out, "\n-- against the hidden truth --").map_err(fmt_err)?;
+    writeln!(
+        out,
+        "joint  identified_deg  truth_deg   error_deg   error/1sigma"
+    )
+    .map_err(fmt_err)?;
+    let dt2 = result.stage1.delta_theta2_rad.to_degrees();
+    let t2 = session.robot.delta_theta2_rad.to_degrees();
+    writeln!(
+        out,
+        "j2     {dt2:+.5}        {t2:+.5}    {:+.6}   (stage 1)",
+        dt2 - t2
+    )
+    .map_err(fmt_err)?;
+    for k in 0..4 {
+        let found = result.fit.offsets_rad[k].to_degrees();
+        let truth = session.robot.offsets_rad[k].to_degrees();
+        let sigma = result.fit.sigma_rad[k].to_degrees();
+        writeln!(
+            out,
+            "j{}     {found:+.5}        {truth:+.5}    {:+.6}   {:+.2}",
+            k + 3,
+            found - truth,
+            (found - truth) / sigma
+        )
+        .map_err(fmt_err)?;
+    }
+    let tb = session.robot.base_tilt;
+    writeln!(
+        out,
+        "base tilt truth alpha {:+.5} deg, beta {:+.5} deg; sensor bias truth x {:+.5} deg, y {:+.5} deg",
+        tb.alpha_rad.to_degrees(),
+        tb.beta_rad.to_degrees(),
+        session.sensor.model.bias.x_rad.to_degrees(),
+        session.sensor.model.bias.y_rad.to_degrees()
+    )
+    .map_err(fmt_err)?;
+    Ok(out)
+}
