@@ -76,6 +76,12 @@ pub struct FitConfig<T> {
     pub min_residual_dof: usize,
     /// Starting point of the iteration (rad).
     pub initial_offsets_rad: [T; WRIST_JOINTS],
+    /// Uncertainty of what stages 0-1 handed to the model, as variances of
+    /// (α, β, bias x, bias y) in units of one reading's noise variance: stage 1's
+    /// half-sums and half-differences of two readings give ½ each. Zero (the default)
+    /// takes the model as exact. Propagated into the reported 1σ, since an error in α,
+    /// for one, passes straight into Δθ3.
+    pub model_variance_factors: [T; 4],
 }
 
 impl<T: Real> Default for FitConfig<T> {
@@ -90,6 +96,7 @@ impl<T: Real> Default for FitConfig<T> {
             max_condition_number: T::lit(1000.0),
             min_residual_dof: 8,
             initial_offsets_rad: [T::zero(); WRIST_JOINTS],
+            model_variance_factors: [T::zero(); 4],
         }
     }
 }
@@ -108,8 +115,11 @@ pub enum SigmaSource {
 pub struct FitResult<T> {
     /// Δθ3..Δθ6 = true − commanded (rad).
     pub offsets_rad: [T; WRIST_JOINTS],
-    /// 1σ of each offset (rad).
+    /// 1σ of each offset (rad), including the propagated uncertainty of the base tilt
+    /// and bias (see [`FitConfig::model_variance_factors`]).
     pub sigma_rad: [T; WRIST_JOINTS],
+    /// 1σ of each offset from the stage-2 readings alone (rad).
+    pub sigma_stage2_rad: [T; WRIST_JOINTS],
     /// RMS of the residuals over all 2N readings (rad).
     pub residual_rms_rad: T,
     /// Per-reading noise σ used for `sigma_rad` (rad).
@@ -331,6 +341,36 @@ impl<T: Real> Stage2Model<T> {
         (info, ssr)
     }
 
+    /// `(Jᵀ·J_m, J_mᵀ·J_m)`, with J_m the readings' derivatives with respect to the
+    /// model parameters (α, β, bias x, bias y): how an error in those moves the
+    /// solution, and how much of it is left in the residuals.
+    fn model_coupling(
+        &self,
+        poses: &[PoseReading<T>],
+        offsets_rad: &[T; WRIST_JOINTS],
+    ) -> (Matrix4<T>, Matrix4<T>) {
+        let base_up = self.base_tilt.up_in_base();
+        let base_d = self.base_tilt.up_in_base_partials();
+        let offset_trig = offsets_rad.map(|d| d.sin_cos());
+        let mut coupling = Matrix4::zeros();
+        let mut model_info = Matrix4::zeros();
+        for p in poses {
+            let trig = joint_trig(&p.joints_rad, &offset_trig);
+            let (u, du) = self.chain.up_and_partials(&base_up, &trig);
+            let (_, grad) = self.sensor.convention.read_with_gradient(&u);
+            let du_alpha = self.chain.to_sensor(&base_d[0], &trig);
+            let du_beta = self.chain.to_sensor(&base_d[1], &trig);
+            for (axis, g) in grad.iter().enumerate() {
+                let j = Vector4::new(g.dot(&du[0]), g.dot(&du[1]), g.dot(&du[2]), g.dot(&du[3]));
+                let mut jm = Vector4::new(g.dot(&du_alpha), g.dot(&du_beta), T::zero(), T::zero());
+                jm[2 + axis] = T::one();
+                coupling += j * jm.transpose();
+                model_info += jm * jm.transpose();
+            }
+        }
+        (coupling, model_info)
+    }
+
     /// JᵀJ of a pose set at `offsets_rad` (for pose planning).
     pub fn information<'p>(
         &self,
@@ -472,20 +512,47 @@ pub fn fit<T: Real>(
     }
 
     let condition_number = check_conditioning(&info, config.max_condition_number)?;
+    let offsets_rad: [T; WRIST_JOINTS] = p.into();
+    let r_inv = info.r_inverse().ok_or(FitError::NonFiniteResult)?;
+    // (JᵀJ)⁻¹ = R⁻¹R⁻ᵀ.
+    let inv = r_inv * r_inv.transpose();
+
+    // Errors δm in the model parameters (variance σ²·D) move the solution by S·δm,
+    // S = −(JᵀJ)⁻¹·JᵀJ_m, and leave J_mᵀ(I−P)J_m of themselves in the residuals, so
+    // E[cost] = σ²·(2N − 4 + tr(D·J_mᵀ(I−P)J_m)): without that term σ from the
+    // residuals would come out ~20 % high in a real session.
+    let factors = config.model_variance_factors;
+    let (sensitivity, extra_dof) = if factors.iter().any(|f| *f > T::zero()) {
+        let (coupling, model_info) = model.model_coupling(poses, &offsets_rad);
+        let s = inv * coupling;
+        let left = model_info - coupling.transpose() * s;
+        let extra = (0..4).fold(T::zero(), |acc, j| acc + factors[j] * left[(j, j)]);
+        (Some(s), extra)
+    } else {
+        (None, T::zero())
+    };
+
     let n_readings = 2 * poses.len();
     let residual_rms_rad = (cost / T::lit(n_readings as f64)).sqrt();
     let dof = n_readings - WRIST_JOINTS;
     let (noise_sigma_rad, sigma_source) = if dof >= config.min_residual_dof {
-        ((cost / T::lit(dof as f64)).sqrt(), SigmaSource::Residuals)
+        (
+            (cost / (T::lit(dof as f64) + extra_dof)).sqrt(),
+            SigmaSource::Residuals,
+        )
     } else {
         (config.sensor_noise_rad, SigmaSource::SensorNoise)
     };
-    let unit = info.unit_sigma().ok_or(FitError::NonFiniteResult)?;
     let mut sigma_rad = [T::zero(); WRIST_JOINTS];
-    for (s, u) in sigma_rad.iter_mut().zip(unit) {
-        *s = u * noise_sigma_rad;
+    let mut sigma_stage2_rad = [T::zero(); WRIST_JOINTS];
+    for k in 0..WRIST_JOINTS {
+        let own = inv[(k, k)];
+        let propagated = sensitivity.map_or(T::zero(), |s| {
+            (0..4).fold(T::zero(), |acc, j| acc + s[(k, j)] * s[(k, j)] * factors[j])
+        });
+        sigma_stage2_rad[k] = own.sqrt() * noise_sigma_rad;
+        sigma_rad[k] = (own + propagated).sqrt() * noise_sigma_rad;
     }
-    let offsets_rad: [T; WRIST_JOINTS] = p.into();
     let all_finite =
         offsets_rad.iter().chain(&sigma_rad).all(|v| v.is_finite()) && residual_rms_rad.is_finite();
     if !all_finite {
@@ -494,6 +561,7 @@ pub fn fit<T: Real>(
     Ok(FitResult {
         offsets_rad,
         sigma_rad,
+        sigma_stage2_rad,
         residual_rms_rad,
         noise_sigma_rad,
         sigma_source,

@@ -293,7 +293,37 @@ impl<T: Real> WristChain<T> {
     }
 }
 
+impl<T: Real> WristChain<T> {
+    /// Takes a vector from the base frame to the sensor frame (`Mᵀ·v` for the chain's
+    /// rotation M at the joints' (sin, cos)). The up vector is linear in the base's up
+    /// vector, so this also carries derivatives with respect to the base tilt.
+    pub fn to_sensor(&self, v: &Vector3<T>, trig: &[(T, T); WRIST_JOINTS]) -> Vector3<T> {
+        let identity = Rotation3::identity();
+        let mut v = *v;
+        for (k, &(s, c)) in trig.iter().enumerate() {
+            if self.fixed[k] != identity {
+                v = self.fixed[k].inverse() * v;
+            }
+            v = self.axes[k].rotate_transposed(&v, s, c);
+        }
+        if self.fixed[WRIST_JOINTS] != identity {
+            v = self.fixed[WRIST_JOINTS].inverse() * v;
+        }
+        v
+    }
+}
+
 impl<T: Real> BaseTilt<T> {
+    /// Derivatives of [`up_in_base`](Self::up_in_base) with respect to α and β.
+    pub fn up_in_base_partials(&self) -> [Vector3<T>; 2] {
+        let (sa, ca) = self.alpha_rad.sin_cos();
+        let (sb, cb) = self.beta_rad.sin_cos();
+        [
+            Vector3::new(T::zero(), ca * cb, -sa * cb),
+            Vector3::new(-cb, -sa * sb, -ca * sb),
+        ]
+    }
+
     /// `Rbaseᵀ·ẑ`: the up vector in the base frame.
     pub fn up_in_base(&self) -> Vector3<T> {
         let (sa, ca) = self.alpha_rad.sin_cos();
@@ -341,10 +371,7 @@ mod tests {
         let u_ref = up_in_sensor(&p.orientation);
         assert!((u - u_ref).norm() < 1e-14);
         for (k, (du, w)) in partials.iter().zip(&p.axes_in_sensor).enumerate() {
-            assert!(
-                (du - u_ref.cross(w)).norm() < 1e-14,
-                "{k}"
-            );
+            assert!((du - u_ref.cross(w)).norm() < 1e-14, "{k}");
         }
     }
 

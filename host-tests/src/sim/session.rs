@@ -220,7 +220,15 @@ impl SimSession {
                 bias: Tilt::new(bias.map_or(0.0, |b| b.x_rad), stage1.bias_y_rad),
             },
         };
-        let fit = zerocal_core::fit(&model, &self.poses, config).map_err(SessionError::Fit)?;
+        // α, β (stage 1), bias y (stage 1) and bias x (stage 0) are each a half-sum or
+        // half-difference of two readings: variance ½ of one reading's. Without stage 0
+        // the x bias is unknown, not uncertain: the report says so instead.
+        let half = 0.5;
+        let config = FitConfig {
+            model_variance_factors: [half, half, if bias.is_some() { half } else { 0.0 }, half],
+            ..*config
+        };
+        let fit = zerocal_core::fit(&model, &self.poses, &config).map_err(SessionError::Fit)?;
         Ok(SessionResult {
             bias,
             stage1,
