@@ -12,7 +12,10 @@
 //! - [`report`]: the numbers as the pendant and the CLI print them.
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 // Input-dependent paths must return errors; tests may unwrap.
-#![cfg_attr(not(test), deny(clippy::unwrap_used, clippy::expect_used, clippy::panic))]
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
 #![warn(missing_docs)]
 
 pub mod error;
@@ -20,6 +23,7 @@ pub mod fit;
 pub mod model;
 pub mod real;
 pub mod report;
+pub mod scl3300;
 pub mod stage0;
 pub mod stage1;
 

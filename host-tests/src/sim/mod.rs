@@ -4,9 +4,11 @@
 pub mod inclinometer;
 pub mod poses;
 pub mod robot;
+pub mod scl3300_device;
 pub mod session;
 
 pub use inclinometer::{Noise, SimInclinometer};
 pub use poses::{PoseSampler, SamplerError};
 pub use robot::SimRobot;
 pub use session::{SimSession, Table4};
+
