@@ -2,11 +2,13 @@
 //!
 //! - `zerocal simulate`: a whole calibration on a simulated robot, report beside truth.
 //! - `zerocal identify LOG.csv`: stage 2 on a recorded log.
+//! - `zerocal plan --poses N`: the stage-2 poses that minimise the predicted 1σ.
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 use zerocal_cli::error::CliError;
 use zerocal_cli::identify::{self, IdentifyArgs};
+use zerocal_cli::plan::{self, PlanArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
 
 /// Joint-zero identification of industrial robots from a dual-axis inclinometer.
@@ -23,15 +25,29 @@ enum Command {
     Simulate(SimulateArgs),
     /// Identify the zero offsets of joints 3-6 from a recorded log (stage 2).
     Identify(IdentifyArgs),
+    /// Plan the stage-2 poses and print the 1-sigma they promise.
+    Plan(PlanArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
     match &cli.command {
         Command::Simulate(args) => {
             let (session, result) = simulate::simulate(args)?;
-            simulate::render(args, &session, &result)
+            let mut out = simulate::render(args, &session, &result)?;
+            let report = simulate::accuracy(args, &session, &result)?;
+            out.push_str(
+                "\n-- positioning accuracy, ISO 9283-style, 6-axis arm (KR 6 R900 class) --\n",
+            );
+            out.push_str(&zerocal_cli::accuracy::format_table(&report));
+            if let Some(dir) = &args.plot {
+                for f in simulate::plots(dir, &session, &result, &report)? {
+                    out.push_str(&format!("wrote {}\n", f.display()));
+                }
+            }
+            Ok(out)
         }
         Command::Identify(args) => identify::run(args),
+        Command::Plan(args) => plan::run(args),
     }
 }
 

@@ -8,6 +8,7 @@ use std::fmt::Write;
 use zerocal_core::model::Convention;
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::report::{write_report, Verdict};
+use zerocal_host_tests::arm6::{self, AccuracyReport, Arm6};
 use zerocal_host_tests::sim::session::{
     fit_config_for, SessionConfig, SessionError, SessionResult,
 };
@@ -37,6 +38,13 @@ pub struct SimulateArgs {
     /// Skip stage 0: Δθ2 then includes the sensor's x bias, as in the paper.
     #[arg(long)]
     pub no_stage0: bool,
+    /// Write SVG plots (TCP error per test point before/after along X, Y, Z, and the
+    /// identification residuals) into this directory.
+    #[arg(long, value_name = "DIR")]
+    pub plot: Option<std::path::PathBuf>,
+    /// Test points of the ISO 9283-style accuracy test on the 6-axis arm.
+    #[arg(long, default_value_t = 200)]
+    pub accuracy_points: usize,
 }
 
 fn parse_convention(s: &str) -> Result<Convention, String> {
@@ -57,6 +65,9 @@ impl SimulateArgs {
         }
         if !(self.max_offset_deg.is_finite() && self.max_offset_deg >= 0.0) {
             return Err(CliError::Input("--max-offset-deg must be >= 0".into()));
+        }
+        if self.accuracy_points == 0 || self.accuracy_points > 100_000 {
+            return Err(CliError::Input("--accuracy-points: 1 to 100000".into()));
         }
         if self.poses > 10_000 {
             return Err(CliError::Input("--poses: at most 10000".into()));
@@ -165,4 +176,31 @@ pub fn render(
     )
     .map_err(fmt_err)?;
     Ok(out)
+}
+
+/// The ISO 9283-style test on the 6-axis arm (KUKA KR 6 R900 class, `data/arm6_kr6.json`):
+/// TCP error at seeded random poses with the hidden offsets, and after entering the
+/// identified ones.
+pub fn accuracy(
+    args: &SimulateArgs,
+    session: &SimSession,
+    result: &SessionResult,
+) -> Result<AccuracyReport, CliError> {
+    let arm = Arm6::kr6_r900().map_err(|e| CliError::Input(format!("arm model: {e}")))?;
+    let truth = arm6::arm_offsets(session.robot.delta_theta2_rad, &session.robot.offsets_rad);
+    let found = arm6::arm_offsets(result.stage1.delta_theta2_rad, &result.fit.offsets_rad);
+    arm6::accuracy_test(&arm, &truth, &found, args.accuracy_points, args.seed)
+        .map_err(|e| CliError::Refused(format!("accuracy test: {e}")))
+}
+
+/// Writes the plots of `--plot DIR`; returns the files written.
+pub fn plots(
+    dir: &std::path::Path,
+    session: &SimSession,
+    result: &SessionResult,
+    report: &AccuracyReport,
+) -> Result<Vec<std::path::PathBuf>, CliError> {
+    let res = crate::plots::residuals(&result.model, &session.poses, &result.fit.offsets_rad);
+    crate::plots::write_plots(dir, report, &res)
+        .map_err(|e| CliError::Input(format!("{}: {e}", dir.display())))
 }

@@ -10,6 +10,7 @@
 //! - [`fit`]: axes 3-6 by an iterated least-squares fit, with 1σ, conditioning
 //!   and identifiability checks, and the covariance bound of a pose set.
 //! - [`report`]: the numbers as the pendant and the CLI print them.
+//! - [`scl3300`]: the inclinometer's SPI protocol and driver.
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 // Input-dependent paths must return errors; tests may unwrap.
 #![cfg_attr(
@@ -21,6 +22,7 @@
 pub mod error;
 pub mod fit;
 pub mod model;
+pub mod plan;
 pub mod real;
 pub mod report;
 pub mod scl3300;

@@ -1,0 +1,428 @@
+//! `zerocal plan`: the stage-2 poses to send the robot to, planned before it moves
+//! (`zerocal_core::plan`), with the 1σ per axis they promise.
+//!
+//! Output: a table (default), `--csv` (header `j3_deg,j4_deg,j5_deg,j6_deg`, one row
+//! per pose, nothing else on stdout) or `--json` (one object: `poses_deg`,
+//! `predicted_sigma_deg`, `condition_number`, `max_reading_deg`, settings).
+//!
+//! `--limits FILE` gives the joint limits as CSV, one joint per line, degrees:
+//!
+//! ```text
+//! # joint,min_deg,max_deg     (a header line and '#' comments are allowed)
+//! joint,min_deg,max_deg
+//! 3,-170,170
+//! 4,-185,185
+//! 5,-120,120
+//! 6,-350,350
+//! ```
+//! Joints not listed keep ±180°. A bad line is named by its number and field.
+//!
+//! `--noise-deg A` is the half-width of uniform reading noise ±A, as for `simulate`
+//! (the paper's Table 4: 0.002): the predicted 1σ uses σ = A/√3 per reading.
+
+use crate::error::CliError;
+use clap::{Args, ValueEnum};
+use serde::Serialize;
+use std::fmt::Write;
+use std::path::PathBuf;
+use zerocal_core::fit::Stage2Model;
+use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, WristChain, WRIST_JOINTS};
+use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError};
+use zerocal_core::real::{deg_to_rad, rad_to_deg};
+
+/// What the plan optimises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum CriterionArg {
+    /// A-optimal: least sum of the four predicted variances.
+    A,
+    /// D-optimal: greatest log det JᵀJ.
+    D,
+}
+
+/// Arguments of `zerocal plan`.
+#[derive(Args, Debug, Clone)]
+pub struct PlanArgs {
+    /// Poses to plan (4-64, `zerocal_core::plan::MAX_PLAN_POSES`).
+    #[arg(long, default_value_t = 8)]
+    pub poses: usize,
+    /// Sensor window: readings must stay within ±W degrees.
+    #[arg(long, default_value_t = 10.0, value_name = "W")]
+    pub window_deg: f64,
+    /// Planned readings stay within ±(W − margin) at zero offsets, leaving room for
+    /// the offsets not yet known (deg).
+    #[arg(long, default_value_t = 1.0)]
+    pub margin_deg: f64,
+    /// Joint limits of joints 3-6: CSV lines `joint,min_deg,max_deg` (default ±180).
+    #[arg(long, value_name = "FILE")]
+    pub limits: Option<PathBuf>,
+    /// Reading noise: uniform in ±A degrees, as for `simulate` (σ = A/√3).
+    #[arg(long, default_value_t = 0.002, value_name = "A")]
+    pub noise_deg: f64,
+    /// Seed of the candidate draw: the same seed gives the same plan.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Feasible candidate poses to choose from.
+    #[arg(long, default_value_t = 256)]
+    pub candidates: usize,
+    /// Optimality criterion.
+    #[arg(long, value_enum, default_value = "a")]
+    pub criterion: CriterionArg,
+    /// Sensor convention (rpy or axis).
+    #[arg(long, default_value = "rpy", value_parser = parse_convention)]
+    pub convention: Convention,
+    /// Base tilt α,β from stage 1 (deg), so the plan's readings are those the robot
+    /// will show.
+    #[arg(long, value_name = "A,B", value_parser = crate::error::parse_pair_deg, allow_hyphen_values = true)]
+    pub base_tilt_deg: Option<(f64, f64)>,
+    /// Robot wrist description (JSON, see `zerocal identify --help`); default: the
+    /// paper's x, y, x, y.
+    #[arg(long, value_name = "FILE")]
+    pub chain: Option<PathBuf>,
+    /// Print one JSON object.
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print CSV rows j3_deg,j4_deg,j5_deg,j6_deg.
+    #[arg(long)]
+    pub csv: bool,
+}
+
+fn parse_convention(s: &str) -> Result<Convention, String> {
+    Convention::parse(s).ok_or_else(|| format!("'{s}' is not a convention: use rpy or axis"))
+}
+
+/// Per-joint (min, max) limits of joints 3-6 (deg).
+pub type LimitsDeg = [(f64, f64); WRIST_JOINTS];
+
+/// Parses a limits file (format in the module doc). Errors name the line and field.
+pub fn parse_limits(text: &str) -> Result<LimitsDeg, String> {
+    let mut limits = [(-180.0, 180.0); WRIST_JOINTS];
+    let mut seen = [false; WRIST_JOINTS];
+    for (i, raw) in text.lines().enumerate() {
+        let line_no = i + 1;
+        let line = raw.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        if fields
+            .first()
+            .is_some_and(|f| f.eq_ignore_ascii_case("joint"))
+        {
+            continue; // header
+        }
+        if fields.len() != 3 {
+            return Err(format!(
+                "limits line {line_no}: expected 3 fields joint,min_deg,max_deg, got {}",
+                fields.len()
+            ));
+        }
+        let joint: usize = fields[0]
+            .parse()
+            .ok()
+            .filter(|j| (3..=6).contains(j))
+            .ok_or_else(|| {
+                format!(
+                    "limits line {line_no}: field joint: '{}' is not a joint 3-6",
+                    fields[0]
+                )
+            })?;
+        let num = |k: usize, name: &str| -> Result<f64, String> {
+            fields[k]
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| {
+                    format!(
+                        "limits line {line_no}: field {name}: '{}' is not a finite number",
+                        fields[k]
+                    )
+                })
+        };
+        let (lo, hi) = (num(1, "min_deg")?, num(2, "max_deg")?);
+        if lo > hi {
+            return Err(format!(
+                "limits line {line_no}: min_deg {lo} is above max_deg {hi}"
+            ));
+        }
+        let k = joint - 3;
+        if seen[k] {
+            return Err(format!(
+                "limits line {line_no}: joint {joint} is listed twice"
+            ));
+        }
+        seen[k] = true;
+        limits[k] = (lo, hi);
+    }
+    Ok(limits)
+}
+
+/// The `--json` output.
+#[derive(Serialize, Debug)]
+pub struct PlanJson {
+    /// θ3..θ6 per pose (deg).
+    pub poses_deg: Vec<[f64; WRIST_JOINTS]>,
+    /// Predicted 1σ of Δθ3..Δθ6 (deg).
+    pub predicted_sigma_deg: [f64; WRIST_JOINTS],
+    /// Condition number of the plan's Jacobian.
+    pub condition_number: f64,
+    /// Largest |reading| at zero offsets (deg).
+    pub max_reading_deg: f64,
+    /// Window (± deg).
+    pub window_deg: f64,
+    /// Margin (deg).
+    pub margin_deg: f64,
+    /// Limits used (deg).
+    pub limits_deg: LimitsDeg,
+    /// Uniform noise half-width (deg).
+    pub noise_deg: f64,
+    /// Criterion ("a" or "d").
+    pub criterion: &'static str,
+    /// Seed.
+    pub seed: u64,
+}
+
+impl PlanArgs {
+    /// The limits the flags give (the file's, or ±180°).
+    pub fn limits_deg(&self) -> Result<LimitsDeg, CliError> {
+        match &self.limits {
+            None => Ok([(-180.0, 180.0); WRIST_JOINTS]),
+            Some(path) => {
+                let text = std::fs::read_to_string(path)
+                    .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
+                parse_limits(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+            }
+        }
+    }
+
+    fn model(&self) -> Result<Stage2Model<f64>, CliError> {
+        let chain = match &self.chain {
+            None => WristChain::paper(),
+            Some(path) => {
+                let text = std::fs::read_to_string(path)
+                    .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
+                crate::chain::parse_chain(&text)
+                    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?
+            }
+        };
+        let (a, b) = self.base_tilt_deg.unwrap_or((0.0, 0.0));
+        Ok(Stage2Model {
+            chain,
+            base_tilt: BaseTilt::from_deg(a, b),
+            sensor: SensorModel {
+                convention: self.convention,
+                bias: Tilt::default(),
+            },
+        })
+    }
+
+    /// The planner settings the flags give.
+    pub fn config(&self) -> Result<PlanConfig<f64>, CliError> {
+        if !(self.noise_deg.is_finite() && self.noise_deg > 0.0) {
+            return Err(CliError::Input(format!(
+                "--noise-deg must be > 0, got {}",
+                self.noise_deg
+            )));
+        }
+        let limits = self.limits_deg()?;
+        Ok(PlanConfig {
+            poses: self.poses,
+            window_rad: deg_to_rad(self.window_deg),
+            margin_rad: deg_to_rad(self.margin_deg),
+            limits_rad: limits.map(|(lo, hi)| (deg_to_rad(lo), deg_to_rad(hi))),
+            seed: self.seed,
+            candidates: self.candidates,
+            noise_sigma_rad: deg_to_rad(self.noise_deg / 3f64.sqrt()),
+            criterion: match self.criterion {
+                CriterionArg::A => Criterion::AOptimal,
+                CriterionArg::D => Criterion::DOptimal,
+            },
+            ..PlanConfig::default()
+        })
+    }
+}
+
+/// Maps a planner error to the CLI's: bad settings are input errors (status 2), an
+/// unobservable or unreachable plan is refused (status 3).
+fn cli_error(e: PlanError) -> CliError {
+    match e {
+        PlanError::InvalidSetting(_)
+        | PlanError::TooFewPoses { .. }
+        | PlanError::TooManyPoses { .. }
+        | PlanError::PoolTooSmall { .. } => CliError::Input(e.to_string()),
+        PlanError::WindowUnreachable { .. } | PlanError::Unobservable(_) => {
+            CliError::Refused(e.to_string())
+        }
+    }
+}
+
+/// Plans the poses the flags ask for.
+///
+/// # Errors
+/// Bad flags or limits file (status 2); a plan that cannot separate the parameters or
+/// reach the window inside the limits (status 3).
+pub fn make_plan(args: &PlanArgs) -> Result<(PlanConfig<f64>, Plan<f64>), CliError> {
+    let config = args.config()?;
+    let model = args.model()?;
+    if args.candidates > 65_535 {
+        return Err(CliError::Input(format!(
+            "--candidates must be at most 65535, got {}",
+            args.candidates
+        )));
+    }
+    let mut pool = vec![Candidate::default(); args.candidates.max(1)];
+    let p = plan(&model, &config, &mut pool).map_err(cli_error)?;
+    Ok((config, p))
+}
+
+/// Runs `zerocal plan`: the text to print on stdout.
+///
+/// # Errors
+/// As [`make_plan`].
+pub fn run(args: &PlanArgs) -> Result<String, CliError> {
+    let (config, p) = make_plan(args)?;
+    let poses_deg: Vec<[f64; WRIST_JOINTS]> =
+        p.poses_rad.iter().map(|q| q.map(rad_to_deg)).collect();
+    let sigma_deg = p.predicted_sigma_deg();
+    if args.csv {
+        let mut out = String::from("j3_deg,j4_deg,j5_deg,j6_deg\n");
+        for q in &poses_deg {
+            let _ = writeln!(out, "{:.4},{:.4},{:.4},{:.4}", q[0], q[1], q[2], q[3]);
+        }
+        return Ok(out);
+    }
+    if args.json {
+        let j = PlanJson {
+            poses_deg,
+            predicted_sigma_deg: sigma_deg,
+            condition_number: p.condition_number,
+            max_reading_deg: rad_to_deg(p.max_reading_rad),
+            window_deg: args.window_deg,
+            margin_deg: args.margin_deg,
+            limits_deg: config
+                .limits_rad
+                .map(|(lo, hi)| (rad_to_deg(lo), rad_to_deg(hi))),
+            noise_deg: args.noise_deg,
+            criterion: match args.criterion {
+                CriterionArg::A => "a",
+                CriterionArg::D => "d",
+            },
+            seed: args.seed,
+        };
+        return serde_json::to_string_pretty(&j)
+            .map_err(|e| CliError::Input(format!("cannot write JSON: {e}")));
+    }
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{} planned poses (readings within +/-{:.2} deg at zero offsets, window +/-{} deg; {} candidates from {} draws, {} exchanges)",
+        p.poses_rad.len(),
+        rad_to_deg(config.window_rad - config.margin_rad),
+        args.window_deg,
+        p.candidates,
+        p.draws,
+        p.exchanges
+    );
+    let _ = writeln!(out, "pose    j3_deg     j4_deg     j5_deg     j6_deg");
+    for (i, q) in poses_deg.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "{:>4}  {:>9.4}  {:>9.4}  {:>9.4}  {:>9.4}",
+            i + 1,
+            q[0],
+            q[1],
+            q[2],
+            q[3]
+        );
+    }
+    let _ = writeln!(
+        out,
+        "predicted 1-sigma (deg), noise uniform +/-{} deg: j3 {:.6}  j4 {:.6}  j5 {:.6}  j6 {:.6}",
+        args.noise_deg, sigma_deg[0], sigma_deg[1], sigma_deg[2], sigma_deg[3]
+    );
+    let _ = writeln!(
+        out,
+        "condition number {:.2}, largest reading {:.3} deg",
+        p.condition_number,
+        rad_to_deg(p.max_reading_rad)
+    );
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Wrap {
+        #[command(flatten)]
+        args: PlanArgs,
+    }
+
+    fn args(flags: &[&str]) -> PlanArgs {
+        let mut v = vec!["plan"];
+        v.extend_from_slice(flags);
+        match Wrap::try_parse_from(v) {
+            Ok(w) => w.args,
+            Err(e) => panic!("{e}"),
+        }
+    }
+
+    #[test]
+    fn limits_file_parses_and_names_bad_lines() {
+        let ok = parse_limits("# KR 6\njoint,min_deg,max_deg\n3,-170,170\n4, -30 , 30\n");
+        assert_eq!(
+            ok,
+            Ok([
+                (-170.0, 170.0),
+                (-30.0, 30.0),
+                (-180.0, 180.0),
+                (-180.0, 180.0)
+            ])
+        );
+        let e = parse_limits("3,-170,170\n5,-10,abc\n").unwrap_err();
+        assert!(e.contains("line 2") && e.contains("max_deg"), "{e}");
+        let e = parse_limits("7,0,1\n").unwrap_err();
+        assert!(e.contains("line 1") && e.contains("joint"), "{e}");
+        let e = parse_limits("3,1,0\n").unwrap_err();
+        assert!(e.contains("above"), "{e}");
+        let e = parse_limits("3,0,1\n3,0,1\n").unwrap_err();
+        assert!(e.contains("twice"), "{e}");
+        let e = parse_limits("3,0\n").unwrap_err();
+        assert!(e.contains("3 fields"), "{e}");
+    }
+
+    #[test]
+    fn csv_and_json_outputs() {
+        let csv = run(&args(&["--poses", "6", "--csv"])).unwrap_or_else(|e| panic!("{e}"));
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(lines[0], "j3_deg,j4_deg,j5_deg,j6_deg");
+        assert_eq!(lines.len(), 7);
+        let json = run(&args(&["--poses", "6", "--json"])).unwrap_or_else(|e| panic!("{e}"));
+        let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_default();
+        assert_eq!(v["poses_deg"].as_array().map(Vec::len), Some(6));
+        assert_eq!(v["predicted_sigma_deg"].as_array().map(Vec::len), Some(4));
+        let text = run(&args(&[])).unwrap_or_else(|e| panic!("{e}"));
+        println!("{text}");
+        assert!(text.contains("predicted 1-sigma"), "{text}");
+    }
+
+    #[test]
+    fn exit_statuses() {
+        // Bad input: status 2.
+        let e = run(&args(&["--poses", "2"])).unwrap_err();
+        assert_eq!(e.exit_code(), 2, "{e}");
+        let e = run(&args(&["--noise-deg", "0"])).unwrap_err();
+        assert_eq!(e.exit_code(), 2, "{e}");
+        // θ4 pinned: j3 and j5 inseparable, refused with status 3 naming them.
+        let dir = std::env::temp_dir().join(format!("zerocal-plan-{}", std::process::id()));
+        let _ = std::fs::create_dir_all(&dir);
+        let f = dir.join("limits.csv");
+        let _ = std::fs::write(&f, "4,0,0\n");
+        let path = f.to_string_lossy().into_owned();
+        let e = run(&args(&["--limits", &path])).unwrap_err();
+        assert_eq!(e.exit_code(), 3, "{e}");
+        assert!(e.to_string().contains("j3+j5"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
