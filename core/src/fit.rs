@@ -175,7 +175,7 @@ impl<T: Real> Information<T> {
             let rkk = self.r[(k, k)];
             // |u| ≤ a few, so sqrt(x² + y²) cannot overflow; it is cheaper than hypot
             // on the Cortex-M4F.
-            let rho = (rkk * rkk + a[k] * a[k]).sqrt();
+            let rho = (rkk * rkk + a[k] * a[k]).fast_sqrt();
             let (c, s) = (rkk / rho, a[k] / rho);
             for j in k..WRIST_JOINTS {
                 let (rkj, aj) = (self.r[(k, j)], a[j]);
@@ -301,12 +301,15 @@ impl<T: Real> Stage2Model<T> {
     /// Predicted reading and its 2×4 Jacobian with respect to the offsets.
     fn predict_with_jacobian(
         &self,
+        fixed_in_use: &[bool; WRIST_JOINTS + 1],
         base_up: &Vector3<T>,
         joints_rad: &[T; WRIST_JOINTS],
         offset_trig: &[(T, T); WRIST_JOINTS],
     ) -> (Tilt<T>, [Vector4<T>; 2]) {
         let trig = joint_trig(joints_rad, offset_trig);
-        let (u, du) = self.chain.up_and_partials(base_up, &trig);
+        let (u, du) = self
+            .chain
+            .up_and_partials_with(fixed_in_use, base_up, &trig);
         let (t, grad) = self.sensor.convention.read_with_gradient(&u);
         let mut rows = [Vector4::zeros(); 2];
         for (k, duk) in du.iter().enumerate() {
@@ -330,9 +333,11 @@ impl<T: Real> Stage2Model<T> {
         let mut info = Information::default();
         let mut ssr = T::zero();
         let base_up = self.base_tilt.up_in_base();
-        let offset_trig = offsets_rad.map(|d| d.sin_cos());
+        let offset_trig = offsets_rad.map(|d| d.fast_sin_cos());
+        let fixed_in_use = self.chain.fixed_in_use();
         for (joints, measured) in poses {
-            let (pred, rows) = self.predict_with_jacobian(&base_up, joints, &offset_trig);
+            let (pred, rows) =
+                self.predict_with_jacobian(&fixed_in_use, &base_up, joints, &offset_trig);
             let r = measured.map_or(Tilt::default(), |m| m.minus(&pred));
             ssr += r.x_rad * r.x_rad + r.y_rad * r.y_rad;
             info.add_row(rows[0], r.x_rad);
@@ -351,15 +356,16 @@ impl<T: Real> Stage2Model<T> {
     ) -> (Matrix4<T>, Matrix4<T>) {
         let base_up = self.base_tilt.up_in_base();
         let base_d = self.base_tilt.up_in_base_partials();
-        let offset_trig = offsets_rad.map(|d| d.sin_cos());
+        let offset_trig = offsets_rad.map(|d| d.fast_sin_cos());
         let mut coupling = Matrix4::zeros();
         let mut model_info = Matrix4::zeros();
+        let fixed = self.chain.fixed_in_use();
         for p in poses {
             let trig = joint_trig(&p.joints_rad, &offset_trig);
-            let (u, du) = self.chain.up_and_partials(&base_up, &trig);
+            let (u, du) = self.chain.up_and_partials_with(&fixed, &base_up, &trig);
             let (_, grad) = self.sensor.convention.read_with_gradient(&u);
-            let du_alpha = self.chain.to_sensor(&base_d[0], &trig);
-            let du_beta = self.chain.to_sensor(&base_d[1], &trig);
+            let du_alpha = self.chain.to_sensor(&fixed, &base_d[0], &trig);
+            let du_beta = self.chain.to_sensor(&fixed, &base_d[1], &trig);
             for (axis, g) in grad.iter().enumerate() {
                 let j = Vector4::new(g.dot(&du[0]), g.dot(&du[1]), g.dot(&du[2]), g.dot(&du[3]));
                 let mut jm = Vector4::new(g.dot(&du_alpha), g.dot(&du_beta), T::zero(), T::zero());
@@ -655,6 +661,7 @@ mod tests {
             let q = [0.3, -0.2, 0.5, 1.1];
             let off = [0.01, -0.02, 0.03, 0.04];
             let (_, rows) = m.predict_with_jacobian(
+                &m.chain.fixed_in_use(),
                 &m.base_tilt.up_in_base(),
                 &q,
                 &off.map(|d: f64| d.sin_cos()),

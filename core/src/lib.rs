@@ -10,6 +10,9 @@
 //! - [`fit`]: axes 3-6 by an iterated least-squares fit, with 1σ, conditioning
 //!   and identifiability checks, and the covariance bound of a pose set.
 //! - [`report`]: the numbers as the pendant and the CLI print them.
+//! - [`stillness`], [`procedure`]: the operator's procedure as a state machine with
+//!   automatic capture, and the records that make it survive a power cut.
+//! - [`link`]: the USB line protocol (commands, plan upload, lossless export).
 //! - [`scl3300`]: the inclinometer's SPI protocol and driver.
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 // Input-dependent paths must return errors; tests may unwrap.
@@ -21,13 +24,16 @@
 
 pub mod error;
 pub mod fit;
+pub mod link;
 pub mod model;
 pub mod plan;
+pub mod procedure;
 pub mod real;
 pub mod report;
 pub mod scl3300;
 pub mod stage0;
 pub mod stage1;
+pub mod stillness;
 
 pub use error::{FitError, ParamSet, StageError};
 pub use fit::{covariance_bound, fit, FitConfig, FitResult, PoseReading, SigmaSource, Stage2Model};

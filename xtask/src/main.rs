@@ -5,7 +5,13 @@
 //! or Debian's rustc with `-Zbuild-std=core`, installed with apt-get when missing.
 
 mod size;
+mod target_test;
 mod toolchain;
+
+/// The on-target check's session pipeline, shared with the test program so the host's
+/// `f64` reference and the target's `f32` run are the same steps.
+#[path = "../../target-test/src/pipeline.rs"]
+mod pipeline;
 
 use std::path::{Path, PathBuf};
 
@@ -29,12 +35,18 @@ enum Command {
     /// Build zerocal-core alone for thumbv7em-none-eabihf with its default features:
     /// proves it is no_std (a host build cannot, std being always there).
     CoreThumb,
+    /// Run zerocal-core on the pendant's CPU in QEMU (target-test/, netduinoplus2):
+    /// stages 0-2 in f32 on seeded simulated sessions, compared with the host's f64
+    /// solution within 2e-5 deg; then the instructions and peak stack of one 30-pose
+    /// fit and the release firmware's flash and static RAM, against their budgets.
+    TargetTest,
 }
 
 fn main() -> Result<()> {
     match Cli::parse().command {
         Command::Firmware => firmware(),
         Command::CoreThumb => core_thumb(),
+        Command::TargetTest => target_test::run(&repo_root()),
     }
 }
 
@@ -47,7 +59,16 @@ fn repo_root() -> PathBuf {
 }
 
 fn firmware() -> Result<()> {
-    let root = repo_root();
+    let (usage, capacity) = build_firmware(&repo_root())?;
+    println!("{}", usage.report(&capacity));
+    Ok(())
+}
+
+/// Builds the release firmware and measures it against the capacities of `memory.x`.
+///
+/// # Errors
+/// No toolchain, a failed build, an unreadable ELF or `memory.x`.
+fn build_firmware(root: &Path) -> Result<(size::MemoryUsage, size::MemoryCapacity)> {
     let firmware_dir = root.join("firmware");
     let toolchain = toolchain::ThumbToolchain::find_or_install()?;
     // The firmware's own .cargo/config.toml selects the target; its own [workspace]
@@ -60,8 +81,7 @@ fn firmware() -> Result<()> {
         .join("zerocal-firmware");
     let capacity = size::MemoryCapacity::from_memory_x(&root.join("memory.x"))?;
     let usage = size::MemoryUsage::of_elf(&elf)?;
-    println!("{}", usage.report(&capacity));
-    Ok(())
+    Ok((usage, capacity))
 }
 
 fn core_thumb() -> Result<()> {

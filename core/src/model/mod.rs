@@ -249,7 +249,7 @@ pub fn joint_trig<T: Real>(
 ) -> [(T, T); WRIST_JOINTS] {
     let mut out = [(T::zero(), T::one()); WRIST_JOINTS];
     for ((o, &q), &(sd, cd)) in out.iter_mut().zip(joints_rad).zip(offset_trig) {
-        let (sq, cq) = q.sin_cos();
+        let (sq, cq) = q.fast_sin_cos();
         *o = (sq * cd + cq * sd, cq * cd - sq * sd);
     }
     out
@@ -266,12 +266,42 @@ impl<T: Real> WristChain<T> {
         base_up: &Vector3<T>,
         trig: &[(T, T); WRIST_JOINTS],
     ) -> (Vector3<T>, [Vector3<T>; WRIST_JOINTS]) {
-        let identity = Rotation3::identity();
+        self.up_and_partials_with(&self.fixed_in_use(), base_up, trig)
+    }
+
+    /// Which fixed rotations are not the identity. Computed once per pass over the
+    /// poses: comparing 3×3 matrices for every pose cost a third of a fit on the
+    /// pendant.
+    pub fn fixed_in_use(&self) -> [bool; WRIST_JOINTS + 1] {
+        let (o, z) = (T::one(), T::zero());
+        self.fixed.map(|r| {
+            let m = r.matrix();
+            let diagonal = m[(0, 0)] == o && m[(1, 1)] == o && m[(2, 2)] == o;
+            let off = [
+                m[(0, 1)],
+                m[(0, 2)],
+                m[(1, 0)],
+                m[(1, 2)],
+                m[(2, 0)],
+                m[(2, 1)],
+            ];
+            !(diagonal && off.iter().all(|v| *v == z))
+        })
+    }
+
+    /// [`up_and_partials`](Self::up_and_partials) with [`fixed_in_use`](Self::fixed_in_use)
+    /// computed by the caller.
+    pub fn up_and_partials_with(
+        &self,
+        fixed_in_use: &[bool; WRIST_JOINTS + 1],
+        base_up: &Vector3<T>,
+        trig: &[(T, T); WRIST_JOINTS],
+    ) -> (Vector3<T>, [Vector3<T>; WRIST_JOINTS]) {
         let through_fixed = |k: usize, v: Vector3<T>| {
-            if self.fixed[k] == identity {
-                v
-            } else {
+            if fixed_in_use[k] {
                 self.fixed[k].inverse() * v
+            } else {
+                v
             }
         };
         let mut u = *base_up;
@@ -297,16 +327,20 @@ impl<T: Real> WristChain<T> {
     /// Takes a vector from the base frame to the sensor frame (`Mᵀ·v` for the chain's
     /// rotation M at the joints' (sin, cos)). The up vector is linear in the base's up
     /// vector, so this also carries derivatives with respect to the base tilt.
-    pub fn to_sensor(&self, v: &Vector3<T>, trig: &[(T, T); WRIST_JOINTS]) -> Vector3<T> {
-        let identity = Rotation3::identity();
+    pub fn to_sensor(
+        &self,
+        fixed_in_use: &[bool; WRIST_JOINTS + 1],
+        v: &Vector3<T>,
+        trig: &[(T, T); WRIST_JOINTS],
+    ) -> Vector3<T> {
         let mut v = *v;
         for (k, &(s, c)) in trig.iter().enumerate() {
-            if self.fixed[k] != identity {
+            if fixed_in_use[k] {
                 v = self.fixed[k].inverse() * v;
             }
             v = self.axes[k].rotate_transposed(&v, s, c);
         }
-        if self.fixed[WRIST_JOINTS] != identity {
+        if fixed_in_use[WRIST_JOINTS] {
             v = self.fixed[WRIST_JOINTS].inverse() * v;
         }
         v

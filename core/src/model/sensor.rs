@@ -90,10 +90,11 @@ pub enum Convention {
 impl Convention {
     /// The noiseless, bias-free reading of up vector `u` (need not be unit length).
     pub fn read<T: Real>(self, u: &Vector3<T>) -> Tilt<T> {
-        let y = (-u.x).atan2(u.y.hypot(u.z));
+        // |u| ≈ 1: sqrt of the sum of squares cannot overflow, and is cheaper than hypot.
+        let y = (-u.x).atan2((u.y * u.y + u.z * u.z).fast_sqrt());
         let x = match self {
             Convention::Rpy => u.y.atan2(u.z),
-            Convention::Axis => u.y.atan2(u.x.hypot(u.z)),
+            Convention::Axis => u.y.atan2((u.x * u.x + u.z * u.z).fast_sqrt()),
         };
         Tilt::new(x, y)
     }
@@ -101,7 +102,7 @@ impl Convention {
     /// The reading and its derivative with respect to a unit `u`: rows x and y.
     pub fn read_with_gradient<T: Real>(self, u: &Vector3<T>) -> (Tilt<T>, [Vector3<T>; 2]) {
         let (ux, uy, uz) = (u.x, u.y, u.z);
-        let h = uy.hypot(uz);
+        let h = (uy * uy + uz * uz).fast_sqrt();
         // d/du of atan2(−u_x, h) with |u| = 1: (−h·du_x + u_x·dh), dh = (u_y du_y + u_z du_z)/h.
         let n2 = ux * ux + h * h;
         let gy = if h > T::zero() {
@@ -121,7 +122,7 @@ impl Convention {
                 }
             }
             Convention::Axis => {
-                let g = ux.hypot(uz);
+                let g = (ux * ux + uz * uz).fast_sqrt();
                 let d = uy * uy + g * g;
                 if g > T::zero() {
                     Vector3::new(-uy * ux / (g * d), g / d, -uy * uz / (g * d))

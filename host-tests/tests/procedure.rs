@@ -1,0 +1,317 @@
+//! The operator's procedure through whole simulated sessions: the simulated SCL3300 on
+//! a simulated robot, read by core's driver, driving core's state machine, with records
+//! persisted as the firmware does. Scenarios: a clean session in f32 and f64, BACK,
+//! a power cut at any moment, sensor dropouts and faults, a pose out of range, a
+//! robot that never settles.
+
+use zerocal_core::model::Tilt;
+use zerocal_core::procedure::{Event, Notice, Phase};
+use zerocal_core::real::deg_to_rad;
+use zerocal_core::{FitResult, Real};
+use zerocal_host_tests::sim::pendant::{Mount, SimPendant};
+use zerocal_host_tests::sim::scenario::{self, pendant, HOLD_MS};
+use zerocal_host_tests::sim::scl3300_device::Fault;
+
+/// Errors against the truth, in units of the reported 1σ: (j2, [j3..j6]).
+fn z_scores<T: Real>(p: &SimPendant<T>) -> (f64, [f64; 4], FitResult<T>) {
+    let outcome = p.session.outcome().expect("an outcome in phase Done");
+    let fit = outcome.fit.unwrap_or_else(|e| panic!("fit refused: {e}"));
+    let s1 = outcome.stage1.expect("stage 1");
+    let z2 = (s1.delta_theta2_rad.to_f64() - p.robot.delta_theta2_rad)
+        / s1.delta_theta2_sigma_rad(fit.noise_sigma_rad).to_f64();
+    let z = core::array::from_fn(|k| {
+        (fit.offsets_rad[k].to_f64() - p.robot.offsets_rad[k]) / fit.sigma_rad[k].to_f64()
+    });
+    (z2, z, fit)
+}
+
+fn check_session<T: Real>(label: &str, p: &SimPendant<T>, poses: usize) {
+    assert_eq!(p.session.phase(), Phase::Done, "{label}");
+    assert_eq!(p.session.captures().len(), poses, "{label}");
+    let (z2, z, fit) = z_scores(p);
+    println!(
+        "{label}: offsets_deg {:?} sigma_deg {:?} residual_rms_deg {:.5}; error/sigma j2 {z2:+.2} j3..j6 {:+.2?}",
+        fit.offsets_rad.map(|v| v.to_f64().to_degrees()),
+        fit.sigma_rad.map(|v| v.to_f64().to_degrees()),
+        fit.residual_rms_rad.to_f64().to_degrees(),
+        z
+    );
+    // 4σ: a correct fit fails this for one offset in ~16,000.
+    assert!(z2.abs() < 4.0 && z.iter().all(|v| v.abs() < 4.0), "{label}");
+    let verdict = &p.session.outcome().expect("outcome").verdict;
+    assert!(verdict.is_pass(), "{label}: {verdict:?}");
+}
+
+#[test]
+fn whole_session_f32_and_f64() {
+    let mut p32 = pendant::<f32>(12, 1);
+    scenario::whole_session(&mut p32);
+    check_session("f32 session", &p32, 12);
+    let mut p64 = pendant::<f64>(12, 1);
+    scenario::whole_session(&mut p64);
+    check_session("f64 session", &p64, 12);
+    assert_eq!(p32.sensor_errors, 0);
+}
+
+#[test]
+fn back_undoes_the_last_capture_at_every_stage() {
+    let mut p = pendant::<f32>(8, 2);
+    scenario::stage0(&mut p);
+    assert_eq!(p.session.phase(), Phase::Stage1Before);
+    // BACK: redo the second reversal reading.
+    p.event(Event::Back);
+    assert_eq!(p.session.phase(), Phase::Stage0Second);
+    p.event(Event::Ok);
+    p.hold(HOLD_MS);
+    assert_eq!(p.session.phase(), Phase::Stage1Before);
+    scenario::stage1(&mut p);
+    assert_eq!(p.session.phase(), Phase::Stage2);
+    // Three poses, BACK, the third again.
+    for _ in 0..3 {
+        let (_, _, q) = p.session.view().pose.expect("pose");
+        p.move_to(
+            Mount::Flange {
+                joints_rad: q.map(f64::from),
+            },
+            2500,
+        );
+        p.hold(HOLD_MS);
+    }
+    assert_eq!(p.session.captures().len(), 3);
+    p.event(Event::Back);
+    assert_eq!(p.session.captures().len(), 2);
+    assert_eq!(
+        p.session.view().pose.map(|v| v.0),
+        Some(2),
+        "back to the third pose"
+    );
+    // Holding still where the undone pose was does not capture it again unarmed...
+    p.hold(HOLD_MS);
+    assert_eq!(p.session.captures().len(), 2);
+    // ...until OK re-arms it.
+    p.event(Event::Ok);
+    p.hold(HOLD_MS);
+    assert_eq!(p.session.captures().len(), 3);
+    scenario::stage2(&mut p);
+    check_session("after BACKs", &p, 8);
+    // BACK on the result returns to the last pose with its capture undone.
+    p.event(Event::Back);
+    assert_eq!(p.session.phase(), Phase::Stage2);
+    assert_eq!(p.session.captures().len(), 7);
+}
+
+#[test]
+fn power_cut_at_any_moment_loses_nothing() {
+    // A reference session without cuts, then the same script with a reset every 53
+    // samples: every capture must survive, and the session must finish.
+    let mut cuts = 0;
+    let mut p = pendant::<f32>(8, 3);
+    let mut steps = 0u32;
+    scenario::stage0(&mut p);
+    let bias = p.session.bias();
+    p.power_cycle();
+    assert_eq!(p.session.bias(), bias, "stage-0 bias survives");
+    assert_eq!(p.session.phase(), Phase::Stage1Before);
+    scenario::stage1(&mut p);
+    let before = (p.session.phase(), p.session.stage1_readings());
+    p.power_cycle();
+    assert_eq!(
+        (p.session.phase(), p.session.stage1_readings()),
+        before,
+        "stage 1 survives"
+    );
+    let mut visits = 20;
+    while p.session.phase() == Phase::Stage2 && visits > 0 {
+        visits -= 1;
+        let (_, _, q) = p.session.view().pose.expect("pose");
+        p.move_to(
+            Mount::Flange {
+                joints_rad: q.map(f64::from),
+            },
+            2500,
+        );
+        // Hold in short stretches, cutting power between them.
+        for _ in 0..(HOLD_MS / 250) {
+            p.hold(250);
+            steps += 1;
+            if steps.is_multiple_of(7) {
+                let captured = p.session.captures().to_vec();
+                let phase = p.session.phase();
+                p.power_cycle();
+                cuts += 1;
+                assert_eq!(
+                    p.session.captures(),
+                    &captured[..],
+                    "captures survive a cut"
+                );
+                assert_eq!(p.session.phase(), phase);
+                // After a reset the pendant may have been moved: OK re-arms (on the
+                // result screen OK would start a new session instead).
+                if p.session.phase() == Phase::Stage2 {
+                    p.event(Event::Ok);
+                }
+            }
+        }
+    }
+    println!("{cuts} power cuts during stage 2");
+    assert!(cuts >= 5);
+    check_session("with power cuts", &p, 8);
+    // The result itself survives too.
+    let result = p.session.outcome().and_then(|o| o.fit.ok());
+    p.power_cycle();
+    assert_eq!(p.session.phase(), Phase::Done);
+    assert_eq!(p.session.outcome().and_then(|o| o.fit.ok()), result);
+}
+
+#[test]
+fn sensor_dropouts_and_faults_never_reach_a_result() {
+    let mut p = pendant::<f32>(8, 4);
+    scenario::stage0(&mut p);
+    scenario::stage1(&mut p);
+    let (_, _, q) = p.session.view().pose.expect("pose");
+    p.move_to(
+        Mount::Flange {
+            joints_rad: q.map(f64::from),
+        },
+        2500,
+    );
+    for fault in [
+        Fault::BadCrc,
+        Fault::SelfTestRunning,
+        Fault::ErrorStatus(0x0001),
+        Fault::WrongEcho,
+        Fault::StuckHigh,
+        Fault::StuckLow,
+    ] {
+        let before = p.session.captures().len();
+        let errors = p.sensor_errors;
+        p.set_fault(Some(fault));
+        p.hold(HOLD_MS);
+        assert!(
+            p.sensor_errors > errors,
+            "{fault:?} is refused by the driver"
+        );
+        assert_eq!(
+            p.session.captures().len(),
+            before,
+            "{fault:?}: nothing captured"
+        );
+        assert_eq!(
+            p.session.view().notice,
+            Some(Notice::SensorFault),
+            "{fault:?} shown"
+        );
+        p.set_fault(None);
+        // The driver resynchronises; readings flow again.
+        p.hold(200);
+    }
+    // A dropout in the middle of a still window restarts the window.
+    p.event(Event::Ok);
+    p.hold(1500);
+    p.set_fault(Some(Fault::BadCrc));
+    p.hold(150);
+    p.set_fault(None);
+    p.hold(1000);
+    assert_eq!(
+        p.session.captures().len(),
+        0,
+        "1.5 s + 1 s around a dropout is not 2 s still"
+    );
+    p.hold(HOLD_MS);
+    assert_eq!(p.session.captures().len(), 1);
+    scenario::stage2(&mut p);
+    check_session("with dropouts", &p, 8);
+    println!("sensor errors counted and dropped: {}", p.sensor_errors);
+}
+
+#[test]
+fn a_pose_out_of_range_is_not_captured_and_can_be_skipped() {
+    let mut p = pendant::<f32>(8, 5);
+    p.config.fit.sensor_range_rad = deg_to_rad(10.0);
+    scenario::stage0(&mut p);
+    scenario::stage1(&mut p);
+    // The operator mis-jogs to a pose that tilts the pendant by ~15°.
+    p.move_to(
+        Mount::Flange {
+            joints_rad: [deg_to_rad(15.0), 0.0, 0.0, 0.0],
+        },
+        2500,
+    );
+    p.hold(HOLD_MS);
+    assert_eq!(p.session.captures().len(), 0);
+    assert!(
+        matches!(
+            p.session.view().notice,
+            Some(Notice::ReadingOutOfRange { .. })
+        ),
+        "{:?}",
+        p.session.view().notice
+    );
+    // NEXT skips the pose; the rest of the plan completes.
+    p.event(Event::Next);
+    scenario::stage2(&mut p);
+    assert_eq!(p.session.phase(), Phase::Done);
+    assert_eq!(p.session.captures().len(), 7);
+    let (z2, z, _) = z_scores(&p);
+    assert!(z2.abs() < 4.0 && z.iter().all(|v| v.abs() < 4.0));
+}
+
+#[test]
+fn a_robot_still_moving_is_never_captured() {
+    let mut p = pendant::<f32>(8, 6);
+    scenario::stage0(&mut p);
+    scenario::stage1(&mut p);
+    let (_, _, q) = p.session.view().pose.expect("pose");
+    let start: [f64; 4] = q.map(f64::from);
+    p.move_to(Mount::Flange { joints_rad: start }, 2500);
+    p.event(Event::Ok);
+    // Creeping at 0.05°/s on joint 4: 0.1° per 2 s window, twice the threshold.
+    let mut end = start;
+    end[1] += deg_to_rad(1.0);
+    p.move_to(Mount::Flange { joints_rad: end }, 20_000);
+    assert_eq!(
+        p.session.captures().len(),
+        0,
+        "a creeping robot is not still"
+    );
+    p.hold(HOLD_MS);
+    assert_eq!(p.session.captures().len(), 1, "captured once it stops");
+}
+
+#[test]
+fn a_degenerate_plan_gives_the_named_refusal_not_numbers() {
+    // A plan with θ4 = θ6 = 0 everywhere: joints 3 and 5 cannot be separated.
+    let mut plan = zerocal_core::procedure::Plan::<f32>::new();
+    for i in 0..6 {
+        let a = deg_to_rad(-30.0 + 10.0 * i as f32);
+        let _ = plan.push([a, 0.0, deg_to_rad(3.0) - a, 0.0]);
+    }
+    let mut p = pendant::<f32>(8, 7);
+    p.event(Event::SetPlan(plan));
+    scenario::stage0(&mut p);
+    scenario::stage1(&mut p);
+    // θ3 + θ5 is the same at every pose: the tilt never changes, so the operator
+    // presses OK at each (as the screen asks when a capture is not armed).
+    scenario::stage2_pressing_ok(&mut p, true);
+    assert_eq!(
+        p.session.phase(),
+        Phase::Done,
+        "{:?} {}",
+        p.session.view().notice,
+        p.session.captures().len()
+    );
+    let outcome = p.session.outcome().expect("outcome");
+    assert!(
+        matches!(
+            outcome.fit,
+            Err(zerocal_core::FitError::RankDeficient { .. })
+        ),
+        "{:?}",
+        outcome.fit
+    );
+    assert!(matches!(
+        p.session.view().notice,
+        Some(Notice::FitRefused(_))
+    ));
+    let _ = Tilt::<f32>::default();
+}
