@@ -5,6 +5,7 @@
 //! - `zerocal plan --poses N`: the stage-2 poses that minimise the predicted 1σ.
 
 use clap::{Parser, Subcommand};
+use std::io::Write;
 use std::process::ExitCode;
 use zerocal_cli::error::CliError;
 use zerocal_cli::identify::{self, IdentifyArgs};
@@ -55,8 +56,16 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(&cli) {
         Ok(out) => {
-            println!("{}", out.trim_end());
-            ExitCode::SUCCESS
+            let mut stdout = std::io::stdout().lock();
+            match writeln!(stdout, "{}", out.trim_end()).and_then(|()| stdout.flush()) {
+                // `zerocal ... | head` closes the pipe early: not an error of ours.
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("zerocal: cannot write the output: {e}");
+                    ExitCode::from(2)
+                }
+            }
         }
         Err(e) => {
             eprintln!("zerocal: {e}");
