@@ -1,7 +1,6 @@
 //! The `zerocal` desktop tool as a library, so its parsers and reports are tested
 //! directly (see `tests/`) as well as through the binary.
 
-pub mod accuracy;
 pub mod chain;
 pub mod error;
 pub mod identify;

@@ -39,7 +39,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
             out.push_str(
                 "\n-- positioning accuracy, ISO 9283-style, 6-axis arm (KR 6 R900 class) --\n",
             );
-            out.push_str(&zerocal_cli::accuracy::format_table(&report));
+            out.push_str(&report.to_string());
             if let Some(dir) = &args.plot {
                 for f in simulate::plots(dir, &session, &result, &report)? {
                     out.push_str(&format!("wrote {}\n", f.display()));

@@ -424,6 +424,55 @@ pub fn accuracy_test(
     })
 }
 
+impl std::fmt::Display for AccuracyReport {
+    /// The table as `zerocal simulate` prints it: offsets (true, identified) per joint,
+    /// then the TCP position error before and after compensation per axis and as a
+    /// distance (mm).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        writeln!(
+            f,
+            "positioning test: {}, {} random reachable poses",
+            self.arm,
+            self.points.len()
+        )?;
+        writeln!(f, "joint   true_deg   identified_deg   error_deg")?;
+        for k in 0..ARM_JOINTS {
+            let (t, found) = (self.true_offsets_deg[k], self.identified_offsets_deg[k]);
+            writeln!(
+                f,
+                "j{}    {t:+9.5}   {found:+9.5}        {:+.6}",
+                k + 1,
+                found - t
+            )?;
+        }
+        writeln!(
+            f,
+            "TCP error (mm)  mean|X|   mean|Y|   mean|Z|    max|X|    max|Y|    max|Z|  mean_dist  max_dist"
+        )?;
+        for (name, s) in [("before", &self.before), ("after", &self.after)] {
+            writeln!(
+                f,
+                "{name:<7} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>9.4} {:>10.4} {:>9.4}",
+                s.mean_abs_mm[0],
+                s.mean_abs_mm[1],
+                s.mean_abs_mm[2],
+                s.max_abs_mm[0],
+                s.max_abs_mm[1],
+                s.max_abs_mm[2],
+                s.mean_distance_mm,
+                s.max_distance_mm
+            )?;
+        }
+        writeln!(
+            f,
+            "mean distance error {:.4} mm -> {:.4} mm (factor {:.0})",
+            self.before.mean_distance_mm,
+            self.after.mean_distance_mm,
+            self.improvement_factor()
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

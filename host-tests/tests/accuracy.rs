@@ -50,31 +50,7 @@ fn calibrate(arm: &Arm6, seed: u64) -> ([f64; ARM_JOINTS], [f64; ARM_JOINTS]) {
 }
 
 fn print_report(r: &AccuracyReport) {
-    println!("{}: {} points", r.arm, r.points.len());
-    println!("joint  true_offset_deg  identified_deg  error_deg");
-    for k in 1..ARM_JOINTS {
-        println!(
-            "j{}     {:+.5}         {:+.5}        {:+.6}",
-            k + 1,
-            r.true_offsets_deg[k],
-            r.identified_offsets_deg[k],
-            r.identified_offsets_deg[k] - r.true_offsets_deg[k]
-        );
-    }
-    println!("                 mean|X|  mean|Y|  mean|Z|  max|X|   max|Y|   max|Z|   mean_dist  max_dist  (mm)");
-    for (name, s) in [("before", &r.before), ("after", &r.after)] {
-        println!(
-            "{name:<16} {:.4}   {:.4}   {:.4}   {:.4}   {:.4}   {:.4}   {:.4}     {:.4}",
-            s.mean_abs_mm[0],
-            s.mean_abs_mm[1],
-            s.mean_abs_mm[2],
-            s.max_abs_mm[0],
-            s.max_abs_mm[1],
-            s.max_abs_mm[2],
-            s.mean_distance_mm,
-            s.max_distance_mm
-        );
-    }
+    print!("{r}");
 }
 
 /// |∂p/∂θk|² at every test point, by central differences (mm²/rad²).
