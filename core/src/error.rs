@@ -1,5 +1,6 @@
 //! What can go wrong, named so that an operator can act on it.
 
+use crate::decimal::Fixed;
 use crate::model::TiltAxis;
 use core::fmt;
 
@@ -114,8 +115,10 @@ impl fmt::Display for FitError {
                 range_deg,
             } => write!(
                 f,
-                "pose {}: reading {axis} = {value_deg:.3} deg is outside the sensor range of +/-{range_deg} deg",
-                pose + 1
+                "pose {}: reading {axis} = {} deg is outside the sensor range of +/-{} deg",
+                pose + 1,
+                Fixed::new(f64::from(value_deg), 3),
+                Fixed::new(f64::from(range_deg), 1)
             ),
             FitError::RankDeficient { params } => write!(
                 f,
@@ -127,7 +130,9 @@ impl fmt::Display for FitError {
                 params,
             } => write!(
                 f,
-                "ill-conditioned pose set (condition number {condition_number:.3e} > {limit:.0}): {params} barely separable; vary those joints more"
+                "ill-conditioned pose set (condition number {} > {}): {params} barely separable; vary those joints more",
+                Fixed::new(f64::from(condition_number), 0),
+                Fixed::new(f64::from(limit), 0)
             ),
             FitError::NoConvergence { iterations } => {
                 write!(f, "no convergence after {iterations} iterations")
@@ -169,12 +174,16 @@ impl fmt::Display for StageError {
                 range_deg,
             } => write!(
                 f,
-                "reading {axis} = {value_deg:.3} deg is outside the sensor range of +/-{range_deg} deg"
+                "reading {axis} = {} deg is outside the sensor range of +/-{} deg",
+                Fixed::new(f64::from(value_deg), 3),
+                Fixed::new(f64::from(range_deg), 1)
             ),
             StageError::InconsistentReading => {
                 f.write_str("the x and y readings cannot come from one orientation")
             }
-            StageError::BadDirectionSign => f.write_str("the joint-2 direction sign must be +1 or -1"),
+            StageError::BadDirectionSign => {
+                f.write_str("the joint-2 direction sign must be +1 or -1")
+            }
             StageError::NonFiniteCommand => {
                 f.write_str("the commanded joint-2 angle is not a finite number")
             }

@@ -22,6 +22,7 @@
 )]
 #![warn(missing_docs)]
 
+pub mod decimal;
 pub mod error;
 pub mod fit;
 pub mod link;

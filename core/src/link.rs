@@ -13,6 +13,7 @@
 //! Unknown or malformed lines get an `error:` line and change nothing. Parsing and
 //! formatting live here; the firmware's link task only moves bytes.
 
+use crate::decimal::{self, Fixed};
 use crate::fit::FitResult;
 use crate::model::WRIST_JOINTS;
 use crate::procedure::{Phase, Plan, ProcedureConfig, Session, MAX_POSES};
@@ -181,13 +182,10 @@ impl<T: Real> PlanUpload<T> {
         let mut q = [T::zero(); WRIST_JOINTS];
         let mut fields = line.split(',');
         for slot in q.iter_mut() {
-            let deg: f64 = fields
+            let deg = fields
                 .next()
-                .and_then(|f| f.trim().parse().ok())
+                .and_then(decimal::parse)
                 .ok_or(LinkError::BadPlanRow { row })?;
-            if !deg.is_finite() {
-                return Err(LinkError::BadPlanRow { row });
-            }
             if deg.abs() > 360.0 {
                 return Err(LinkError::AngleOutOfRange { row });
             }
@@ -201,16 +199,26 @@ impl<T: Real> PlanUpload<T> {
     }
 }
 
-/// Writes an `f64` with every digit it has (shortest round-trip form), so that a value
-/// from the pendant reads back on the desktop as the very same number.
-fn exact<T: Real>(w: &mut Line, v: T) -> fmt::Result {
-    write!(w, "{}", v.to_f64())
-}
+/// Decimals of a degree in the export: 1e-12° is 2e-14 rad, below the resolution of
+/// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the
+/// pendant's numbers, and an `f64` session's offsets move by ~1e-12° at most.
+pub const EXPORT_DECIMALS: u8 = 12;
 
 fn deg<T: Real>(w: &mut Line, rad: T) -> fmt::Result {
-    // In f64, whatever T is: the f32 value converts exactly and the degrees lose
-    // nothing the desktop would see.
-    exact(w, rad_to_deg(rad.to_f64()))
+    // In f64, whatever T is: the f32 value converts exactly.
+    write!(
+        w,
+        "{}",
+        Fixed::new(rad_to_deg(rad.to_f64()), EXPORT_DECIMALS)
+    )
+}
+
+fn deg_fixed<T: Real>(rad: T, decimals: u8) -> Fixed {
+    Fixed::new(rad_to_deg(rad.to_f64()), decimals)
+}
+
+fn deg_signed<T: Real>(rad: T, decimals: u8) -> Fixed {
+    Fixed::signed(rad_to_deg(rad.to_f64()), decimals)
 }
 
 /// The lines of `export`, produced one at a time so the link can send each before
@@ -327,13 +335,9 @@ fn result_line<T: Real>(w: &mut Line, r: &FitResult<T>) -> fmt::Result {
         if k > 0 {
             w.write_char(',')?;
         }
-        write!(w, "{:.6}", rad_to_deg(v.to_f64()))?;
+        write!(w, "{}", deg_fixed(*v, 6))?;
     }
-    write!(
-        w,
-        " residual_rms_deg {:.6}",
-        rad_to_deg(r.residual_rms_rad.to_f64())
-    )
+    write!(w, " residual_rms_deg {}", deg_fixed(r.residual_rms_rad, 6))
 }
 
 impl<T: Real> Iterator for Export<'_, T> {
@@ -379,19 +383,19 @@ pub fn status<T: Real>(session: &Session<T>, line: usize) -> Option<Result<Line,
         1 => match session.bias() {
             Some(b) => write!(
                 w,
-                "bias x {:+.5} deg, y {:+.5} deg",
-                rad_to_deg(b.x_rad.to_f64()),
-                rad_to_deg(b.y_rad.to_f64())
+                "bias x {} deg, y {} deg",
+                deg_signed(b.x_rad, 5),
+                deg_signed(b.y_rad, 5)
             ),
             None => w.write_str("bias: none (stage 0 not run)"),
         },
         2 => match session.stage1() {
             Some(r) => write!(
                 w,
-                "stage 1: j2 offset {:+.5} deg, base tilt alpha {:+.5} beta {:+.5} deg",
-                rad_to_deg(r.delta_theta2_rad.to_f64()),
-                rad_to_deg(r.base_tilt.alpha_rad.to_f64()),
-                rad_to_deg(r.base_tilt.beta_rad.to_f64())
+                "stage 1: j2 offset {} deg, base tilt alpha {} beta {} deg",
+                deg_signed(r.delta_theta2_rad, 5),
+                deg_signed(r.base_tilt.alpha_rad, 5),
+                deg_signed(r.base_tilt.beta_rad, 5)
             ),
             None => w.write_str("stage 1: not done"),
         },
@@ -414,12 +418,12 @@ pub fn plan_line<T: Real>(plan: &Plan<T>, line: usize) -> Option<Result<Line, fm
         let q = plan.get(line - 1)?;
         write!(
             w,
-            "{},{:.3},{:.3},{:.3},{:.3}",
+            "{},{},{},{},{}",
             line,
-            rad_to_deg(q[0].to_f64()),
-            rad_to_deg(q[1].to_f64()),
-            rad_to_deg(q[2].to_f64()),
-            rad_to_deg(q[3].to_f64())
+            deg_fixed(q[0], 3),
+            deg_fixed(q[1], 3),
+            deg_fixed(q[2], 3),
+            deg_fixed(q[3], 3)
         )
     };
     Some(r.map(|()| w))

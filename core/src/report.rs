@@ -1,6 +1,7 @@
 //! The calibration result as the pendant shows it and the CLI prints it: degrees,
 //! 1σ beside every number, and a verdict that says what to distrust.
 
+use crate::decimal::Fixed;
 use crate::fit::{FitConfig, FitResult, SigmaSource};
 use crate::model::WRIST_JOINTS;
 use crate::real::{rad_to_deg, Real};
@@ -35,8 +36,10 @@ impl fmt::Display for Warning {
                 sensor_noise_deg,
             } => write!(
                 f,
-                "residual RMS {residual_rms_deg:.5} deg is {:.1}x the sensor noise ({sensor_noise_deg:.5} deg): robot moved, wrong pose or wrong convention?",
-                residual_rms_deg / sensor_noise_deg
+                "residual RMS {} deg is {}x the sensor noise ({} deg): robot moved, wrong pose or wrong convention?",
+                Fixed::new(residual_rms_deg, 5),
+                Fixed::new(residual_rms_deg / sensor_noise_deg, 1),
+                Fixed::new(sensor_noise_deg, 5)
             ),
             Warning::BiasXUnknown => f.write_str(
                 "no stage-0 reversal: the joint-2 offset includes the sensor's x bias",
@@ -107,35 +110,35 @@ pub fn write_report<T: Real, W: Write>(
         // Stage 1 uses the same sensor: its readings carry the σ the fit found.
         writeln!(
             w,
-            "j2     {:+.5}    {:.5}  (stage 1)",
-            deg(s1.delta_theta2_rad),
-            deg(s1.delta_theta2_sigma_rad(fit.noise_sigma_rad))
+            "j2     {}    {}  (stage 1)",
+            Fixed::signed(deg(s1.delta_theta2_rad), 5),
+            Fixed::new(deg(s1.delta_theta2_sigma_rad(fit.noise_sigma_rad)), 5)
         )?;
     }
     for k in 0..WRIST_JOINTS {
         writeln!(
             w,
-            "j{}     {:+.5}    {:.5}",
+            "j{}     {}    {}",
             k + 3,
-            deg(fit.offsets_rad[k]),
-            deg(fit.sigma_rad[k])
+            Fixed::signed(deg(fit.offsets_rad[k]), 5),
+            Fixed::new(deg(fit.sigma_rad[k]), 5)
         )?;
     }
     if let Some(s1) = stage1 {
         writeln!(
             w,
-            "base tilt alpha {:+.5} deg, beta {:+.5} deg",
-            deg(s1.base_tilt.alpha_rad),
-            deg(s1.base_tilt.beta_rad)
+            "base tilt alpha {} deg, beta {} deg",
+            Fixed::signed(deg(s1.base_tilt.alpha_rad), 5),
+            Fixed::signed(deg(s1.base_tilt.beta_rad), 5)
         )?;
     }
     writeln!(
         w,
-        "poses {}, residual RMS {:.5} deg, iterations {}, condition number {:.1}",
+        "poses {}, residual RMS {} deg, iterations {}, condition number {}",
         fit.poses,
-        deg(fit.residual_rms_rad),
+        Fixed::new(deg(fit.residual_rms_rad), 5),
         fit.iterations,
-        fit.condition_number.to_f64()
+        Fixed::new(fit.condition_number.to_f64(), 1)
     )?;
     writeln!(
         w,

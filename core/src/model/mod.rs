@@ -45,7 +45,7 @@ impl JointAxis {
 
     /// Right-handed rotation by `angle_rad` about this axis.
     pub fn rotation<T: Real>(self, angle_rad: T) -> Rotation3<T> {
-        let (s, c) = angle_rad.sin_cos();
+        let (s, c) = angle_rad.fast_sin_cos();
         let (o, z) = (T::one(), T::zero());
         // Elementary rotations written out: exact zeros and ones keep a joint at 0
         // bit-identical to the identity, and they are cheaper than axis-angle.
@@ -350,8 +350,8 @@ impl<T: Real> WristChain<T> {
 impl<T: Real> BaseTilt<T> {
     /// Derivatives of [`up_in_base`](Self::up_in_base) with respect to α and β.
     pub fn up_in_base_partials(&self) -> [Vector3<T>; 2] {
-        let (sa, ca) = self.alpha_rad.sin_cos();
-        let (sb, cb) = self.beta_rad.sin_cos();
+        let (sa, ca) = self.alpha_rad.fast_sin_cos();
+        let (sb, cb) = self.beta_rad.fast_sin_cos();
         [
             Vector3::new(T::zero(), ca * cb, -sa * cb),
             Vector3::new(-cb, -sa * sb, -ca * sb),
@@ -360,8 +360,8 @@ impl<T: Real> BaseTilt<T> {
 
     /// `Rbaseᵀ·ẑ`: the up vector in the base frame.
     pub fn up_in_base(&self) -> Vector3<T> {
-        let (sa, ca) = self.alpha_rad.sin_cos();
-        let (sb, cb) = self.beta_rad.sin_cos();
+        let (sa, ca) = self.alpha_rad.fast_sin_cos();
+        let (sb, cb) = self.beta_rad.fast_sin_cos();
         Vector3::new(-sb, sa * cb, ca * cb)
     }
 }

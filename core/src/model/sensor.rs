@@ -138,20 +138,18 @@ impl Convention {
     /// (`u_z > 0`). `None` if no such vector exists (the two angles are inconsistent,
     /// which only the `axis` convention allows: sin²x + sin²y > 1).
     pub fn up_from_reading<T: Real>(self, t: &Tilt<T>) -> Option<Vector3<T>> {
-        let ux = -t.y_rad.sin();
+        let (sy, cy) = t.y_rad.fast_sin_cos();
+        let (sx, cx) = t.x_rad.fast_sin_cos();
+        let ux = -sy;
         match self {
-            Convention::Rpy => {
-                // y = atan2(−u_x, hypot(u_y,u_z)) and x = atan2(u_y, u_z).
-                let h = t.y_rad.cos();
-                Some(Vector3::new(ux, h * t.x_rad.sin(), h * t.x_rad.cos()))
-            }
+            // y = atan2(−u_x, hypot(u_y,u_z)) and x = atan2(u_y, u_z).
+            Convention::Rpy => Some(Vector3::new(ux, cy * sx, cy * cx)),
             Convention::Axis => {
-                let uy = t.x_rad.sin();
-                let uz2 = T::one() - ux * ux - uy * uy;
+                let uz2 = T::one() - ux * ux - sx * sx;
                 if uz2 < T::zero() {
                     return None;
                 }
-                Some(Vector3::new(ux, uy, uz2.sqrt()))
+                Some(Vector3::new(ux, sx, uz2.fast_sqrt()))
             }
         }
     }
