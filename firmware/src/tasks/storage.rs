@@ -2,13 +2,27 @@
 //! sequential-storage key-value map in flash sectors 6-7 (see the repository's
 //! `memory.x`). Other tasks send it [`StorageRequest`]s.
 //!
+//! The store knows nothing of what it keeps: values are bytes under `u16` keys. What the
+//! keys and bytes mean is `zerocal-core`'s `procedure::record` (keys 1-7, 0x100 + slot,
+//! 0x200 + pose), encoded and decoded by the procedure task.
+//!
 //! Only fetch and store: embassy's F4 flash cannot write a word twice
 //! (no `MultiwriteNorFlash`), which sequential-storage needs to remove items. A record
 //! is changed by storing it again; the map keeps the newest.
+//!
+//! Erases: the map fills sector 6, then sector 7; when a store finds no room it first
+//! copies the newest items out of the older sector and erases it. A 128 KiB sector erase
+//! takes ~1-2 s and, on this single-bank part, stalls every flash read, so the whole
+//! CPU (display, USB, sensor) freezes that long. It can only happen inside a store, so
+//! after a capture, a BACK or a plan upload, never while idle. With ~100-byte items a
+//! sector holds ~1300 of them, and a 12-pose session writes ~40: one erase every ~30
+//! sessions. (A chip fresh from the factory is erased; no erase is needed to start.)
 
 use embassy_stm32::flash::{Async, Flash};
+use heapless::Vec;
 use sequential_storage::cache::{Cache, Uncached};
 use sequential_storage::map::{MapConfig, MapStorage};
+use zerocal_core::procedure::record::MAX_RECORD_LEN;
 
 use crate::board::{STORAGE_END, STORAGE_START};
 use crate::channels::{STORAGE_REPLIES, STORAGE_REQUESTS};
@@ -20,66 +34,44 @@ pub type StorageFlash = Flash<'static, Async>;
 /// The map over sectors 6-7, validated when the firmware is compiled.
 const MAP_CONFIG: MapConfig<StorageFlash> = MapConfig::new(STORAGE_START..STORAGE_END);
 
-/// Largest serialised key + value, rounded up to the flash word.
-const ITEM_BUFFER_BYTES: usize = 32;
+/// Serialised key (2 bytes) plus the longest value, rounded up to 16 bytes (a multiple
+/// of every flash word size).
+const ITEM_BUFFER_BYTES: usize = (2 + MAX_RECORD_LEN).div_ceil(16) * 16;
 
-/// A record of the calibration store. The discriminant is the key in flash: never
-/// renumber a variant.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, defmt::Format)]
-#[repr(u8)]
-pub enum Record {
-    /// Power-ups so far (a flash self-test at every boot).
-    BootCount = 1,
-    /// The inclinometer's zero error from a stage-0 reversal.
-    SensorBias = 2,
-}
+/// A stored value.
+pub type Value = Vec<u8, MAX_RECORD_LEN>;
 
-/// A record's value.
-#[derive(Clone, Copy, Debug, PartialEq, defmt::Format)]
-pub enum RecordValue {
-    /// See [`Record::BootCount`].
-    BootCount(u32),
-    /// See [`Record::SensorBias`].
-    SensorBias {
-        /// x bias (rad).
-        x_rad: f32,
-        /// y bias (rad).
-        y_rad: f32,
+/// A request to the storage task.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StorageRequest {
+    /// Read the newest value under a key.
+    Fetch(u16),
+    /// Write a value under a key (replaces the previous one).
+    Store {
+        /// The key.
+        key: u16,
+        /// The bytes.
+        value: Value,
     },
 }
 
-impl RecordValue {
-    /// The record this value belongs to.
-    pub fn record(&self) -> Record {
-        match self {
-            RecordValue::BootCount(_) => Record::BootCount,
-            RecordValue::SensorBias { .. } => Record::SensorBias,
-        }
-    }
-}
-
-/// A request to the storage task.
-#[derive(Clone, Copy, Debug, PartialEq, defmt::Format)]
-pub enum StorageRequest {
-    /// Read the newest value of a record.
-    Fetch(Record),
-    /// Write a record (replaces the previous value).
-    Store(RecordValue),
-}
-
 /// The storage task's answer to one request.
-#[derive(Clone, Copy, Debug, PartialEq, defmt::Format)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum StorageReply {
-    /// The record's value; `None` if it was never stored.
-    Fetched(Option<RecordValue>),
-    /// The record is in flash.
+    /// The key's value; `None` if it was never stored.
+    Fetched(Option<Value>),
+    /// The value is in flash.
     Stored,
     /// The flash or the map failed; the request had no effect (or, for a store
     /// interrupted by a power loss, sequential-storage keeps the previous value).
     Failed,
 }
 
-/// Serves requests forever.
+/// The map: `u16` keys, byte values, no cache. Uncached, a fetch scans the used pages;
+/// only the power-up restore fetches, ~135 keys once.
+type Map = MapStorage<u16, StorageFlash, Cache<Uncached, Uncached, Uncached, u16>>;
+
+/// Serves requests forever, one at a time, each answered in order.
 #[embassy_executor::task]
 pub async fn storage_task(flash: StorageFlash) -> ! {
     let mut map: Map = MapStorage::new(flash, MAP_CONFIG, Cache::new_uncached());
@@ -87,49 +79,35 @@ pub async fn storage_task(flash: StorageFlash) -> ! {
     loop {
         let request = STORAGE_REQUESTS.receive().await;
         let reply = match request {
-            StorageRequest::Fetch(record) => fetch(&mut map, &mut buffer, record).await,
-            StorageRequest::Store(value) => store(&mut map, &mut buffer, value).await,
+            StorageRequest::Fetch(key) => fetch(&mut map, &mut buffer, key).await,
+            StorageRequest::Store { key, value } => store(&mut map, &mut buffer, key, &value).await,
         };
         STORAGE_REPLIES.send(reply).await;
     }
 }
 
-/// The map: u8 keys (see [`Record`]), no cache (a handful of records, rarely read).
-type Map = MapStorage<u8, StorageFlash, Cache<Uncached, Uncached, Uncached, u8>>;
-
-async fn fetch(map: &mut Map, buffer: &mut [u8], record: Record) -> StorageReply {
-    let key = record as u8;
-    let value = match record {
-        Record::BootCount => map
-            .fetch_item::<u32>(buffer, &key)
-            .await
-            .map(|value| value.map(RecordValue::BootCount)),
-        Record::SensorBias => map
-            .fetch_item::<[f32; 2]>(buffer, &key)
-            .await
-            .map(|value| value.map(|[x_rad, y_rad]| RecordValue::SensorBias { x_rad, y_rad })),
-    };
-    match value {
-        Ok(value) => StorageReply::Fetched(value),
+async fn fetch(map: &mut Map, buffer: &mut [u8], key: u16) -> StorageReply {
+    match map.fetch_item::<&[u8]>(buffer, &key).await {
+        Ok(None) => StorageReply::Fetched(None),
+        Ok(Some(bytes)) => match Value::from_slice(bytes) {
+            Ok(value) => StorageReply::Fetched(Some(value)),
+            Err(()) => {
+                defmt::error!("storage: key {=u16:#x} holds {} bytes", key, bytes.len());
+                StorageReply::Failed
+            }
+        },
         Err(error) => {
-            defmt::error!("storage: fetch {} failed: {}", record, error);
+            defmt::error!("storage: fetch {=u16:#x} failed: {}", key, error);
             StorageReply::Failed
         }
     }
 }
 
-async fn store(map: &mut Map, buffer: &mut [u8], value: RecordValue) -> StorageReply {
-    let key = value.record() as u8;
-    let result = match value {
-        RecordValue::BootCount(count) => map.store_item(buffer, &key, &count).await,
-        RecordValue::SensorBias { x_rad, y_rad } => {
-            map.store_item(buffer, &key, &[x_rad, y_rad]).await
-        }
-    };
-    match result {
+async fn store(map: &mut Map, buffer: &mut [u8], key: u16, value: &[u8]) -> StorageReply {
+    match map.store_item(buffer, &key, &value).await {
         Ok(()) => StorageReply::Stored,
         Err(error) => {
-            defmt::error!("storage: store {} failed: {}", value.record(), error);
+            defmt::error!("storage: store {=u16:#x} failed: {}", key, error);
             StorageReply::Failed
         }
     }
