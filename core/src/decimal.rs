@@ -35,10 +35,10 @@ impl Fixed {
     }
 }
 
-impl fmt::Display for Fixed {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Fixed {
+    fn write_to(&self, w: &mut impl fmt::Write) -> fmt::Result {
         if self.value.is_nan() {
-            return f.write_str("NaN");
+            return w.write_str("NaN");
         }
         let mut scale: u64 = 1;
         for _ in 0..self.decimals {
@@ -55,30 +55,35 @@ impl fmt::Display for Fixed {
         // u64 holds 1.8e19: beyond that (a condition number of a singular set, say)
         // the digits say nothing anyway.
         if magnitude.is_infinite() || magnitude >= 1.8e19 {
-            return write!(f, "{sign}huge");
+            return write!(w, "{sign}huge");
         }
         let n = (magnitude + 0.5) as u64;
         let (int, frac) = (n / scale, n % scale);
         // "-0.000" would read as a negative number: print the sign only when a digit
         // is not zero.
-        let sign = if n == 0 && sign == "-" {
-            if self.plus {
-                "+"
-            } else {
-                ""
-            }
-        } else {
-            sign
+        let sign = match (n, sign, self.plus) {
+            (0, "-", true) => "+",
+            (0, "-", false) => "",
+            _ => sign,
         };
         if self.decimals == 0 {
-            write!(f, "{sign}{int}")
+            write!(w, "{sign}{int}")
         } else {
             write!(
-                f,
+                w,
                 "{sign}{int}.{frac:0width$}",
                 width = usize::from(self.decimals)
             )
         }
+    }
+}
+
+impl fmt::Display for Fixed {
+    /// Honours width and alignment (`{:>9}`) like any string.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let mut buf = heapless::String::<32>::new();
+        self.write_to(&mut buf)?;
+        f.pad(&buf)
     }
 }
 

@@ -653,6 +653,45 @@ impl<T: Real> Plan<T> {
     }
 }
 
+/// Poses in the pendant's default plan: three times the fit's minimum, a few minutes of
+/// jogging (`zerocal plan --poses 12` prints the 1σ it predicts).
+pub const PENDANT_PLAN_POSES: usize = 12;
+
+/// The plan the pendant uses when none was uploaded: this planner with its default
+/// settings on the pendant's wrist and convention, a level base and no bias (the real
+/// ones are not known before stages 0-1; the planner's 1° margin inside the ±10°
+/// window absorbs them), and the fit's own conditioning limit.
+///
+/// Seeded, so the same every time: the firmware computes it when it is built.
+///
+/// # Errors
+/// As [`plan`].
+pub fn pendant_default<T: Real>(
+    config: &crate::procedure::ProcedureConfig<T>,
+    pool: &mut [Candidate<T>],
+) -> Result<crate::procedure::Plan<T>, PlanError> {
+    let model = Stage2Model {
+        chain: config.chain,
+        base_tilt: crate::model::BaseTilt::level(),
+        sensor: crate::model::SensorModel {
+            convention: config.convention,
+            bias: crate::model::Tilt::default(),
+        },
+    };
+    let plan_config = PlanConfig {
+        poses: PENDANT_PLAN_POSES,
+        max_condition_number: config.fit.max_condition_number,
+        ..PlanConfig::default()
+    };
+    let planned = plan(&model, &plan_config, pool)?;
+    let mut poses = crate::procedure::Plan::new();
+    for q in &planned.poses_rad {
+        // Both hold 64 poses (MAX_PLAN_POSES = MAX_POSES).
+        let _ = poses.push(*q);
+    }
+    Ok(poses)
+}
+
 #[cfg(test)]
 // A failed test panics with the error it got: that is the report.
 #[allow(clippy::panic)]

@@ -18,7 +18,7 @@ use crate::tasks::sensor::SensorFault;
 /// A whole screen's content.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Screen {
-    /// Power-up: reading the store or planning the poses (what is going on).
+    /// Power-up: what is going on (reading the store).
     Starting(&'static str),
     /// Stages 0-2: what to do, the live reading and whether it will be captured.
     Capture(CaptureScreen),

@@ -11,11 +11,9 @@
 //! resumes with the same plan.
 
 use embassy_futures::select::{select3, Either3};
-use embassy_time::{Instant, Timer};
+use embassy_time::Instant;
 use heapless::Vec;
-use zerocal_core::fit::Stage2Model;
-use zerocal_core::model::{BaseTilt, SensorModel, Tilt};
-use zerocal_core::plan::{self, Candidate, PlanConfig, PlanError, DEFAULT_POOL};
+use zerocal_core::model::Tilt;
 use zerocal_core::procedure::record::{self, Record, RecordError, MAX_RECORD_LEN};
 use zerocal_core::procedure::{step, Event, Notice, Phase, Plan, ProcedureConfig, Session};
 
@@ -29,10 +27,8 @@ use crate::tasks::link::{LinkReply, LinkRequest};
 use crate::tasks::sensor::SensorReport;
 use crate::tasks::storage::{StorageReply, StorageRequest, Value};
 
-/// Poses of the default plan: three times the fit's minimum, a few minutes of jogging
-/// (`zerocal plan --poses 12` runs the same planner on the desktop and prints the 1σ
-/// it predicts).
-const DEFAULT_PLAN_POSES: usize = 12;
+// DEFAULT_PLAN_RAD: core's planner's default plan for the pendant, computed by build.rs.
+include!(concat!(env!("OUT_DIR"), "/default_plan.rs"));
 
 /// Keys a restore reads: the fixed records plus a capture slot and a plan pose per
 /// pose a plan can hold (`record::all_keys`).
@@ -64,12 +60,9 @@ pub async fn procedure_task() -> ! {
     restore().await;
     let mut extras = Extras::default();
     if with_procedure(|p| p.session.plan().is_empty()) == Some(true) {
-        SCREEN.signal(Screen::Starting("planning poses..."));
-        // Planning keeps the CPU busy for a second or two: let the UI draw first.
-        Timer::after_millis(100).await;
         // Through core, like an upload: it decides and lists the records to store.
         let output = with_procedure(|p| {
-            let plan = default_plan(&p.config)?;
+            let plan = Plan::from_slice(&DEFAULT_PLAN_RAD).ok()?;
             Some(step(&p.config, &mut p.session, Event::SetPlan(plan)))
         });
         if let Some(Some(output)) = output {
@@ -238,62 +231,6 @@ async fn persist(records: &[Record<f32>]) -> bool {
         }
     }
     true
-}
-
-/// The default stage-2 plan: core's planner with its default settings for the paper's
-/// wrist, a level base and no bias (the real ones are not known before stages 0-1;
-/// the planner's 1° margin inside the ±10° window absorbs them).
-///
-/// The candidate pool (56 bytes × 256 = 14 KiB) lives on the stack for this call only,
-/// once per power-up without a stored plan; the stack has ~100 KiB (memory.x: 128 KiB
-/// RAM less the statics).
-#[inline(never)]
-fn default_plan(config: &ProcedureConfig<f32>) -> Option<Plan<f32>> {
-    let model = Stage2Model {
-        chain: config.chain,
-        base_tilt: BaseTilt::level(),
-        sensor: SensorModel {
-            convention: config.convention,
-            bias: Tilt::default(),
-        },
-    };
-    let plan_config = PlanConfig {
-        poses: DEFAULT_PLAN_POSES,
-        max_condition_number: config.fit.max_condition_number,
-        ..PlanConfig::default()
-    };
-    let mut pool = [Candidate::<f32>::default(); DEFAULT_POOL];
-    let started = Instant::now();
-    match plan::plan(&model, &plan_config, &mut pool) {
-        Ok(planned) => {
-            defmt::info!(
-                "default plan: {} poses in {} ms",
-                planned.poses_rad.len(),
-                started.elapsed().as_millis()
-            );
-            let mut poses = Plan::new();
-            for q in &planned.poses_rad {
-                // Both hold 64 poses at most (MAX_PLAN_POSES = MAX_POSES).
-                if poses.push(*q).is_err() {
-                    break;
-                }
-            }
-            Some(poses)
-        }
-        Err(error) => {
-            // The full reason is `PlanError`'s Display; its text costs flash, and the
-            // desktop's `zerocal plan` with the same settings prints it.
-            let reason = match error {
-                PlanError::InvalidSetting(_) => "invalid setting",
-                PlanError::TooFewPoses { .. } | PlanError::TooManyPoses { .. } => "pose count",
-                PlanError::PoolTooSmall { .. } => "pool too small",
-                PlanError::WindowUnreachable { .. } => "window unreachable",
-                PlanError::Unobservable(_) => "unobservable",
-            };
-            defmt::error!("default plan failed: {}", reason);
-            None
-        }
-    }
 }
 
 /// A record error for the log.

@@ -6,6 +6,7 @@
 //! most 21 glyphs; a longer number is cut by its buffer, never an error.
 
 use core::fmt::Write;
+use zerocal_core::decimal::Fixed;
 
 use embassy_stm32::i2c::{I2c, Master};
 use embassy_stm32::mode::Async;
@@ -151,8 +152,8 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
                 screen.captured
             ));
             let joints = [
-                line(format_args!("j3{j3:+7.1} j4{j4:+7.1}")),
-                line(format_args!("j5{j5:+7.1} j6{j6:+7.1}")),
+                line(format_args!("j3{:>7} j4{:>7}", sgn(j3, 1), sgn(j4, 1))),
+                line(format_args!("j5{:>7} j6{:>7}", sgn(j5, 1), sgn(j6, 1))),
             ];
             let [first, second] = joints;
             return [
@@ -185,7 +186,7 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
 fn live_line(screen: &CaptureScreen) -> Text {
     match screen.live_deg {
         // Four decimals: the LSB is 0.0055°; the captured mean resolves finer.
-        Some((x, y)) => line(format_args!("x{x:+.4} y{y:+.4}")),
+        Some((x, y)) => line(format_args!("x{} y{}", sgn(x, 4), sgn(y, 4))),
         None => fixed("x ---     y ---"),
     }
 }
@@ -212,7 +213,7 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
     };
     match notice {
         Notice::ReadingOutOfRange { axis, value_deg } => {
-            line(format_args!("! {axis}={value_deg:+.2}\u{b0} > range"))
+            line(format_args!("! {axis}={}\u{b0} > range", sgn(value_deg, 2)))
         }
         Notice::SensorFault => match screen.fault {
             Some(SensorFault::NotResponding) => fixed("! sensor: no answer"),
@@ -231,7 +232,10 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
         Notice::StageRefused(error) => match error {
             StageError::ReadingOutOfRange {
                 axis, value_deg, ..
-            } => line(format_args!("! redo: {axis}={value_deg:+.1}\u{b0} out")),
+            } => line(format_args!(
+                "! redo: {axis}={}\u{b0} out",
+                sgn(value_deg, 1)
+            )),
             StageError::InconsistentReading => fixed("! redo: x/y mismatch"),
             StageError::NonFiniteReading => fixed("! redo: bad reading"),
             StageError::BadDirectionSign | StageError::NonFiniteCommand => {
@@ -274,10 +278,13 @@ fn result_lines(screen: &ResultScreen) -> [Text; 6] {
                 "poses {}  iter {}",
                 summary.poses, summary.iterations
             )),
-            line(format_args!("rms {:.5}\u{b0}", summary.residual_rms_deg)),
-            line(format_args!("cond {:.1}", summary.condition_number)),
+            line(format_args!(
+                "rms {}\u{b0}",
+                fx(summary.residual_rms_deg, 5)
+            )),
+            line(format_args!("cond {}", fx(summary.condition_number, 1))),
             match summary.base_tilt_deg {
-                Some((a, b)) => line(format_args!("tilt a{a:+.3} b{b:+.3}")),
+                Some((a, b)) => line(format_args!("tilt a{} b{}", sgn(a, 3), sgn(b, 3))),
                 None => fixed("tilt: no stage 1"),
             },
             fixed("ctrl zero: -offset"),
@@ -308,8 +315,9 @@ fn result_lines(screen: &ResultScreen) -> [Text; 6] {
 fn offset_lines(summary: &FitSummary, verdict: &str, pages: usize) -> [Text; 6] {
     let joint = |number: u8, offset: &Offset| {
         line(format_args!(
-            "j{number}{:+9.5} \u{b1}{:.5}",
-            offset.value_deg, offset.sigma_deg
+            "j{number}{:>9} \u{b1}{}",
+            sgn(offset.value_deg, 5),
+            fx(offset.sigma_deg, 5)
         ))
     };
     let [j3, j4, j5, j6] = &summary.wrist;
@@ -335,8 +343,8 @@ fn warning_lines(warning: &Warning) -> [Text; 4] {
         } => [
             fixed("residual too high:"),
             line(format_args!(
-                "{:.1}x sensor noise",
-                residual_rms_deg / sensor_noise_deg
+                "{}x sensor noise",
+                fx(residual_rms_deg / sensor_noise_deg, 1)
             )),
             fixed("robot moved, wrong"),
             fixed("pose or convention?"),
@@ -384,10 +392,14 @@ fn refusal_lines(error: &FitError) -> [Text; 4] {
             range_deg,
         } => [
             line(format_args!(
-                "pose {}: {axis}={value_deg:+.2}\u{b0}",
-                pose + 1
+                "pose {}: {axis}={}\u{b0}",
+                pose + 1,
+                sgn(value_deg, 2)
             )),
-            line(format_args!("outside \u{b1}{range_deg:.0}\u{b0} range")),
+            line(format_args!(
+                "outside \u{b1}{}\u{b0} range",
+                fx(range_deg, 0)
+            )),
             Text::new(),
             Text::new(),
         ],
@@ -404,7 +416,7 @@ fn refusal_lines(error: &FitError) -> [Text; 4] {
         } => [
             fixed("ill-conditioned:"),
             line(format_args!("{params} barely")),
-            line(format_args!("separable: cond {condition_number:.1e}")),
+            line(format_args!("separable: cond {}", fx(condition_number, 0))),
             fixed("vary those joints"),
         ],
         FitError::NoConvergence { iterations } => [
@@ -427,4 +439,15 @@ fn text(display: &mut Display, content: &str, top_left: Point, font: &MonoFont<'
     let style = MonoTextStyle::new(font, BinaryColor::On);
     // Drawing into the frame buffer cannot fail (its error type is Infallible).
     let _ = TextDrawable::with_baseline(content, top_left, style, Baseline::Top).draw(display);
+}
+
+/// A number with a fixed count of decimals, formatted by integer arithmetic: core's
+/// float formatting would add ~8 KiB of flash (see `zerocal_core::decimal`).
+fn fx(value: impl Into<f64>, decimals: u8) -> Fixed {
+    Fixed::new(value.into(), decimals)
+}
+
+/// As [`fx`], always with a sign.
+fn sgn(value: impl Into<f64>, decimals: u8) -> Fixed {
+    Fixed::signed(value.into(), decimals)
 }
