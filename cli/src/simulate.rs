@@ -146,10 +146,15 @@ pub fn render(
     .map_err(fmt_err)?;
     let dt2 = result.stage1.delta_theta2_rad.to_degrees();
     let t2 = session.robot.delta_theta2_rad.to_degrees();
+    let s2 = result
+        .stage1
+        .delta_theta2_sigma_rad(result.fit.noise_sigma_rad)
+        .to_degrees();
     writeln!(
         out,
-        "j2     {dt2:+.5}        {t2:+.5}    {:+.6}   (stage 1)",
-        dt2 - t2
+        "j2     {dt2:+.5}        {t2:+.5}    {:+.6}   {:+.2}  (stage 1)",
+        dt2 - t2,
+        (dt2 - t2) / s2
     )
     .map_err(fmt_err)?;
     for k in 0..4 {
