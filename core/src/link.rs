@@ -404,6 +404,22 @@ pub fn status<T: Real>(session: &Session<T>, line: usize) -> Option<Result<Line,
             Some(Err(e)) => write!(w, "stage 2 refused: {e}"),
             None => w.write_str("stage 2: not done"),
         },
+        4 => match session.last_result() {
+            Some(r) => (|| {
+                w.write_str("last result: j2..j6 offsets_deg ")?;
+                write!(w, "{}", deg_signed(r.delta_theta2_rad, 5))?;
+                for v in r.offsets_rad {
+                    write!(w, ",{}", deg_signed(v, 5))?;
+                }
+                w.write_str(" sigma_deg ")?;
+                for (k, v) in r.sigma_rad.iter().enumerate() {
+                    let sep = if k == 0 { "" } else { "," };
+                    write!(w, "{sep}{}", deg_fixed(*v, 5))?;
+                }
+                Ok(())
+            })(),
+            None => w.write_str("last result: none"),
+        },
         _ => return None,
     };
     Some(r.map(|()| w))

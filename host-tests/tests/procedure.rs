@@ -156,11 +156,28 @@ fn power_cut_at_any_moment_loses_nothing() {
     println!("{cuts} power cuts during stage 2");
     assert!(cuts >= 5);
     check_session("with power cuts", &p, 8);
-    // The result itself survives too.
+    // The result itself survives a cut...
     let result = p.session.outcome().and_then(|o| o.fit.ok());
     p.power_cycle();
     assert_eq!(p.session.phase(), Phase::Done);
     assert_eq!(p.session.outcome().and_then(|o| o.fit.ok()), result);
+    // ...and stays as the last result once a new session starts, across cuts too.
+    let last = *p.session.last_result().expect("last result");
+    let offsets = result.map(|r| r.offsets_rad);
+    assert_eq!(Some(last.offsets_rad), offsets);
+    p.event(Event::Ok);
+    assert_eq!(p.session.phase(), Phase::Stage0First);
+    p.power_cycle();
+    assert_eq!(p.session.last_result(), Some(&last), "last result survives");
+    let status = (0..6)
+        .filter_map(|i| zerocal_core::link::status(&p.session, i))
+        .map(|l| l.expect("fits").to_string())
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(
+        status.contains("last result: j2..j6 offsets_deg"),
+        "{status}"
+    );
 }
 
 #[test]

@@ -191,6 +191,19 @@ pub struct Outcome<T> {
     pub verdict: Verdict,
 }
 
+/// The last completed result, kept in flash across sessions and power cuts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LastResult<T> {
+    /// Δθ3..Δθ6 (rad).
+    pub offsets_rad: [T; WRIST_JOINTS],
+    /// Their 1σ (rad).
+    pub sigma_rad: [T; WRIST_JOINTS],
+    /// Δθ2 (rad).
+    pub delta_theta2_rad: T,
+    /// Residual RMS (rad).
+    pub residual_rms_rad: T,
+}
+
 /// The session: everything the procedure remembers.
 #[derive(Clone, Debug)]
 pub struct Session<T: Real> {
@@ -205,6 +218,7 @@ pub struct Session<T: Real> {
     next_pose: usize,
     captures: heapless::Vec<(u8, PoseReading<T>), MAX_POSES>,
     outcome: Option<Outcome<T>>,
+    last_result: Option<LastResult<T>>,
     // Not persisted: rebuilt from the sensor within one stillness window.
     filter: StillnessFilter<T>,
     live: Option<Tilt<T>>,
@@ -252,6 +266,7 @@ impl<T: Real> Session<T> {
             next_pose: 0,
             captures: heapless::Vec::new(),
             outcome: None,
+            last_result: None,
             filter: StillnessFilter::new(),
             live: None,
             stillness: Stillness::Moving,
@@ -272,7 +287,6 @@ impl<T: Real> Session<T> {
         let mut plan_len = 0;
         let mut slots: [Option<(u8, PoseReading<T>)>; MAX_POSES] = [None; MAX_POSES];
         let mut count = 0;
-        let mut last = None;
         for r in records {
             match r {
                 Record::Bias(b) => s.bias = Some(b),
@@ -312,7 +326,19 @@ impl<T: Real> Session<T> {
                         *x = Some(joints_rad);
                     }
                 }
-                Record::LastResult { .. } => last = Some(r),
+                Record::LastResult {
+                    offsets_rad,
+                    sigma_rad,
+                    delta_theta2_rad,
+                    residual_rms_rad,
+                } => {
+                    s.last_result = Some(LastResult {
+                        offsets_rad,
+                        sigma_rad,
+                        delta_theta2_rad,
+                        residual_rms_rad,
+                    })
+                }
             }
         }
         for p in plan.iter().take(plan_len) {
@@ -330,7 +356,6 @@ impl<T: Real> Session<T> {
         for slot in slots.iter().take(count).flatten() {
             let _ = s.captures.push(*slot);
         }
-        let _ = last;
         // Only what the phase needs survives: a stale stage-1 reading from before a
         // BACK stays ignored.
         match s.phase {
@@ -400,6 +425,19 @@ impl<T: Real> Session<T> {
     /// The result, in phase `Done`.
     pub fn outcome(&self) -> Option<&Outcome<T>> {
         self.outcome.as_ref()
+    }
+
+    /// The last completed result, whatever the current session is doing.
+    pub fn last_result(&self) -> Option<&LastResult<T>> {
+        self.last_result.as_ref()
+    }
+
+    /// A new session on the same plan, keeping the bias and the last result.
+    fn restart(&mut self) {
+        let plan = core::mem::take(&mut self.plan);
+        let (bias, last) = (self.bias, self.last_result);
+        *self = Session::new(plan, bias);
+        self.last_result = last;
     }
 
     /// The stage-2 model stages 0-1 produced (the one the fit uses).
@@ -518,8 +556,7 @@ pub fn step<T: Real>(
         }
         Event::Ok => match s.phase {
             Phase::Done => {
-                let plan = core::mem::take(&mut s.plan);
-                *s = Session::new(plan, s.bias);
+                s.restart();
                 out.push(s.progress());
             }
             _ => {
@@ -563,8 +600,7 @@ pub fn step<T: Real>(
             }
         }
         Event::Clear => {
-            let plan = core::mem::take(&mut s.plan);
-            *s = Session::new(plan, s.bias);
+            s.restart();
             out.push(s.progress());
         }
     }
@@ -706,11 +742,18 @@ fn finish_if_done<T: Real>(config: &ProcedureConfig<T>, s: &mut Session<T>, out:
     }
     let outcome = s.compute(config);
     if let Ok(r) = &outcome.fit {
-        out.push(Record::LastResult {
+        let last = LastResult {
             offsets_rad: r.offsets_rad,
             sigma_rad: r.sigma_rad,
             delta_theta2_rad: outcome.stage1.map_or(T::zero(), |s1| s1.delta_theta2_rad),
             residual_rms_rad: r.residual_rms_rad,
+        };
+        s.last_result = Some(last);
+        out.push(Record::LastResult {
+            offsets_rad: last.offsets_rad,
+            sigma_rad: last.sigma_rad,
+            delta_theta2_rad: last.delta_theta2_rad,
+            residual_rms_rad: last.residual_rms_rad,
         });
         s.notice = None;
     } else if let Err(e) = &outcome.fit {
