@@ -30,12 +30,13 @@ use embassy_stm32::peripherals::{
 };
 use embassy_stm32::{Peri, Peripherals};
 
-/// First byte of the calibration store in flash, as an offset from the flash base
-/// (sector 6: 0x0804_0000). Keep in step with the repository's `memory.x`.
-pub const STORAGE_START: u32 = 0x0004_0000;
+/// First byte of the calibration store, as an offset from the flash base
+/// (sector 1: 0x0800_4000). Keep in step with the repository's `memory.x`.
+pub const STORAGE_START: u32 = 0x0000_4000;
 
-/// End (exclusive) of the calibration store: the end of the 512 KiB flash.
-pub const STORAGE_END: u32 = 0x0008_0000;
+/// End (exclusive) of the calibration store: the end of sector 3 (0x0801_0000), where
+/// the program starts. The store is 3 sectors of 16 KiB.
+pub const STORAGE_END: u32 = 0x0001_0000;
 
 /// SCL3300 SPI clock: within the sensor's 2-4 MHz, low end for robust wiring.
 pub const SENSOR_SPI_HZ: u32 = 2_000_000;

@@ -133,7 +133,9 @@ async fn main(spawner: Spawner) {
         usb_config,
     );
 
-    let flash = Flash::new(board.flash, Irqs);
+    // The 16 KiB sectors 0-3 only (the calibration store is 1-3); the other regions
+    // are dropped, so nothing else can write the flash.
+    let flash = Flash::new(board.flash, Irqs).into_regions().bank1_region1;
 
     // Each task is spawned once: a full pool here is a programming error.
     spawner.spawn(unwrap!(storage_task(flash)));

@@ -17,7 +17,8 @@ const RAM_SECTIONS: [&str; 3] = [".data", ".bss", ".uninit"];
 /// Region sizes from the linker's memory map.
 #[derive(Debug, PartialEq, Eq)]
 pub struct MemoryCapacity {
-    /// Program flash (the `FLASH` region), bytes.
+    /// Program flash, bytes: the `FLASH` region less what lies below the end of a
+    /// `STORAGE` region inside it (the program starts after the store).
     pub flash_bytes: u64,
     /// RAM (the `RAM` region), bytes.
     pub ram_bytes: u64,
@@ -31,9 +32,18 @@ impl MemoryCapacity {
     pub fn from_memory_x(path: &Path) -> Result<MemoryCapacity> {
         let text =
             fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+        let (flash_origin, flash_length) = region(&text, "FLASH")
+            .with_context(|| format!("FLASH region in {}", path.display()))?;
+        let flash_end = flash_origin + flash_length;
+        // memory.x starts .text after the store (`_stext`): that much is not program space.
+        let program_start = match region(&text, "STORAGE") {
+            Ok((origin, length)) if origin >= flash_origin && origin + length <= flash_end => {
+                origin + length
+            }
+            _ => flash_origin,
+        };
         Ok(MemoryCapacity {
-            flash_bytes: region_length(&text, "FLASH")
-                .with_context(|| format!("FLASH region in {}", path.display()))?,
+            flash_bytes: flash_end - program_start,
             ram_bytes: region_length(&text, "RAM")
                 .with_context(|| format!("RAM region in {}", path.display()))?,
         })
@@ -41,7 +51,12 @@ impl MemoryCapacity {
 }
 
 /// `LENGTH` of `region` in a linker MEMORY block: `NAME : ORIGIN = …, LENGTH = 256K`.
-fn region_length(memory_x: &str, region: &str) -> Result<u64> {
+fn region_length(memory_x: &str, name: &str) -> Result<u64> {
+    region(memory_x, name).map(|(_, length)| length)
+}
+
+/// `(ORIGIN, LENGTH)` of `region` in a linker MEMORY block.
+fn region(memory_x: &str, region: &str) -> Result<(u64, u64)> {
     for line in memory_x.lines() {
         let line = line.trim();
         let Some((name, rest)) = line.split_once(':') else {
@@ -50,11 +65,17 @@ fn region_length(memory_x: &str, region: &str) -> Result<u64> {
         if name.trim() != region {
             continue;
         }
-        let Some((_, length)) = rest.split_once("LENGTH") else {
+        let Some((origin, length)) = rest.split_once("LENGTH") else {
             continue;
         };
+        let origin = origin
+            .trim()
+            .trim_start_matches("ORIGIN")
+            .trim_start_matches([' ', '='])
+            .trim_end_matches([' ', ','])
+            .trim();
         let length = length.trim_start_matches([' ', '=']).trim();
-        return parse_size(length);
+        return Ok((parse_size(origin)?, parse_size(length)?));
     }
     bail!("no `{region} : ORIGIN = …, LENGTH = …` line")
 }
@@ -124,11 +145,25 @@ mod tests {
     use super::*;
 
     #[test]
+    fn program_space_starts_after_the_store() {
+        let memory_x = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../memory.x");
+        let capacity = MemoryCapacity::from_memory_x(&memory_x).expect("the repository's memory.x");
+        // Sectors 4-7 of the F411CE: 512 KiB less sector 0 (vector table) and the
+        // 48 KiB store in sectors 1-3.
+        assert_eq!(capacity.flash_bytes, 448 * 1024);
+        assert_eq!(capacity.ram_bytes, 128 * 1024);
+    }
+
+    #[test]
     fn reads_region_lengths() {
         let memory_x = "MEMORY\n{\n  FLASH : ORIGIN = 0x08000000, LENGTH = 256K\n  \
                         STORAGE : ORIGIN = 0x08040000, LENGTH = 256K\n  \
                         RAM : ORIGIN = 0x20000000, LENGTH = 0x20000\n}\n";
         assert_eq!(region_length(memory_x, "FLASH").ok(), Some(262_144));
+        assert_eq!(
+            region(memory_x, "STORAGE").ok(),
+            Some((0x0804_0000, 262_144))
+        );
         assert_eq!(region_length(memory_x, "RAM").ok(), Some(131_072));
         assert!(region_length(memory_x, "CCMRAM").is_err());
     }

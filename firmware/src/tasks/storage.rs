@@ -1,6 +1,6 @@
 //! The storage task: owns the internal flash and keeps the calibration store, a
-//! sequential-storage key-value map in flash sectors 6-7 (see the repository's
-//! `memory.x`). Other tasks send it [`StorageRequest`]s.
+//! sequential-storage key-value map in flash sectors 1-3 (0x0800_4000..0x0801_0000, see
+//! the repository's `memory.x`). Other tasks send it [`StorageRequest`]s.
 //!
 //! The store knows nothing of what it keeps: values are bytes under `u16` keys. What the
 //! keys and bytes mean is `zerocal-core`'s `procedure::record` (keys 1-7, 0x100 + slot,
@@ -10,15 +10,24 @@
 //! (no `MultiwriteNorFlash`), which sequential-storage needs to remove items. A record
 //! is changed by storing it again; the map keeps the newest.
 //!
-//! Erases: the map fills sector 6, then sector 7; when a store finds no room it first
-//! copies the newest items out of the older sector and erases it. A 128 KiB sector erase
-//! takes ~1-2 s and, on this single-bank part, stalls every flash read, so the whole
-//! CPU (display, USB, sensor) freezes that long. It can only happen inside a store, so
-//! after a capture, a BACK or a plan upload, never while idle. With ~100-byte items a
-//! sector holds ~1300 of them, and a 12-pose session writes ~40: one erase every ~30
-//! sessions. (A chip fresh from the factory is erased; no erase is needed to start.)
+//! Erases: the map has 3 pages, one per 16 KiB sector. It fills one page at a time and
+//! keeps the next one empty as a buffer; when the page being written fills, a store
+//! moves on to the buffer page and, to keep an empty buffer, copies the still-current
+//! items out of the oldest page and erases it. So an erase happens only inside a store
+//! (after a capture, a BACK or a plan upload), never while idle, at most one per store,
+//! and only once a page is full. A 16 KiB sector erase takes ~250 ms typical, several
+//! times shorter than the 128 KiB sectors at the top of flash (about a second or more);
+//! on this single-bank part it stalls every flash read, so the whole CPU (display, USB,
+//! sensor) freezes that long. A record takes at most 96 bytes of flash with its key and
+//! header (8-byte header, 2-byte key, value ≤ 83 bytes, padded to 4 bytes), so a page
+//! holds ≥ 170 of them; a 12-pose session writes ~40: about one erase every 3-4
+//! sessions (the first one after two pages have filled). Even the largest possible set
+//! of current records (64-pose plan and captures, ~7 KiB) fits in one page, so the
+//! copying never runs out of room. (A chip fresh from the factory is erased; no erase is
+//! needed to start. A chip that ran a firmware with the program in sectors 1-3 must
+//! have them erased once, e.g. by a full-chip erase when flashing.)
 
-use embassy_stm32::flash::{Async, Flash};
+use embassy_stm32::flash::{Async, Bank1Region1, BANK1_REGION1};
 use heapless::Vec;
 use sequential_storage::cache::{Cache, Uncached};
 use sequential_storage::map::{MapConfig, MapStorage};
@@ -27,12 +36,22 @@ use zerocal_core::procedure::record::MAX_RECORD_LEN;
 use crate::board::{STORAGE_END, STORAGE_START};
 use crate::channels::{STORAGE_REPLIES, STORAGE_REQUESTS};
 
-/// The whole flash, async: erase size 128 KiB (the largest sector), which sectors 6-7
-/// are. The map's range is checked against it at compile time.
-pub type StorageFlash = Flash<'static, Async>;
+/// Flash sectors 0-3 (0x0800_0000..0x0801_0000), async: erase size 16 KiB. Its offsets
+/// count from the region's start, which is the flash base. The only handle on the
+/// flash: the storage task owns it.
+pub type StorageFlash = Bank1Region1<'static, Async>;
 
-/// The map over sectors 6-7, validated when the firmware is compiled.
-const MAP_CONFIG: MapConfig<StorageFlash> = MapConfig::new(STORAGE_START..STORAGE_END);
+// The store must lie inside the region the driver can reach.
+const _: () = assert!(
+    BANK1_REGION1.offset <= STORAGE_START
+        && STORAGE_END <= BANK1_REGION1.offset + BANK1_REGION1.size,
+    "the calibration store must lie in flash bank 1's first (16 KiB sector) region"
+);
+
+/// The map over sectors 1-3, in the region's own offsets, validated when the firmware
+/// is compiled (sector-aligned, at least two pages).
+const MAP_CONFIG: MapConfig<StorageFlash> =
+    MapConfig::new((STORAGE_START - BANK1_REGION1.offset)..(STORAGE_END - BANK1_REGION1.offset));
 
 /// Serialised key (2 bytes) plus the longest value, rounded up to 16 bytes (a multiple
 /// of every flash word size).
