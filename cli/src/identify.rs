@@ -150,6 +150,9 @@ pub fn run(args: &IdentifyArgs) -> Result<String, CliError> {
         if args.base_tilt_deg.is_none() {
             out.push_str("note: no --base-tilt-deg given: base taken as level\n");
         }
+        out.push_str(
+            "note: 1-sigma covers the stage-2 readings only, the base tilt and bias taken as exact (the pendant's own report adds their uncertainty)\n",
+        );
         write_report(&mut out, None, &result, &verdict)
             .map_err(|e| CliError::Input(e.to_string()))?;
         Ok(out)

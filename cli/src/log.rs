@@ -16,6 +16,9 @@ use zerocal_core::real::deg_to_rad;
 /// The columns a log must have.
 pub const COLUMNS: [&str; 6] = ["j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg"];
 
+/// Largest joint command accepted (deg): two turns either way.
+pub const MAX_JOINT_DEG: f64 = 720.0;
+
 /// A parsed log: the poses and the file line of each (for error messages).
 #[derive(Clone, Debug, Default)]
 pub struct Log {
@@ -74,6 +77,12 @@ pub fn read_log(mut input: impl Read) -> Result<Log, String> {
                     "line {line}: {name} = '{field}' is not a finite number"
                 ));
             }
+            // A joint command beyond two turns is a unit or column mistake.
+            if name.starts_with('j') && x.abs() > MAX_JOINT_DEG {
+                return Err(format!(
+                    "line {line}: {name} = {field} is beyond +/-{MAX_JOINT_DEG} deg"
+                ));
+            }
             *slot = x;
         }
         log.poses.push(PoseReading {
@@ -129,6 +138,12 @@ mod tests {
         let e = read_log("j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n1,2,3,4,NaN,0\n".as_bytes())
             .expect_err("nan");
         assert!(e.contains("line 2") && e.contains("finite"), "{e}");
+        let e = read_log(
+            "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n1,2,3,4,0.1,0.2\n1,9000,3,4,0.1,0.2\n"
+                .as_bytes(),
+        )
+        .expect_err("absurd joint");
+        assert!(e.contains("line 3") && e.contains("j4_deg"), "{e}");
         assert!(read_log("".as_bytes()).is_err());
         assert!(read_log("j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n".as_bytes()).is_err());
     }

@@ -60,8 +60,11 @@ impl SimulateArgs {
                 self.noise_deg
             )));
         }
-        if !(self.joint_range_deg.is_finite() && self.joint_range_deg > 0.0) {
-            return Err(CliError::Input("--joint-range-deg must be > 0".into()));
+        if !(self.joint_range_deg > 0.0 && self.joint_range_deg <= 180.0) {
+            return Err(CliError::Input(format!(
+                "--joint-range-deg must be in (0, 180], got {}",
+                self.joint_range_deg
+            )));
         }
         if !(self.max_offset_deg.is_finite() && self.max_offset_deg >= 0.0) {
             return Err(CliError::Input("--max-offset-deg must be >= 0".into()));

@@ -152,6 +152,13 @@ pub fn parse(text: &str) -> Option<f64> {
     if i != s.len() {
         return None;
     }
+    // Beyond these an f64 is 0 or infinite: say so now rather than loop ~1e9 times.
+    if exponent > 400 {
+        return if mantissa == 0 { Some(0.0) } else { None };
+    }
+    if exponent < -400 {
+        return Some(0.0);
+    }
     let mut value = mantissa as f64;
     // Powers of ten up to 1e22 are exact in f64: scale in such steps.
     let mut e = exponent;

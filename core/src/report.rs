@@ -42,7 +42,7 @@ impl fmt::Display for Warning {
                 Fixed::new(sensor_noise_deg, 5)
             ),
             Warning::BiasXUnknown => f.write_str(
-                "no stage-0 reversal: the joint-2 offset includes the sensor's x bias",
+                "no stage-0 reversal: the sensor's x bias is unknown; it is in the j2 offset and biases j3-j6 (run stage 0)",
             ),
             Warning::SigmaFromSensorFigure => {
                 f.write_str("few poses: 1-sigma taken from the sensor's noise figure")

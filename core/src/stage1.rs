@@ -8,7 +8,8 @@
 //! an `axis` reading is turned into its `rpy` equivalent through the up vector first.
 
 use crate::error::StageError;
-use crate::model::{BaseTilt, Convention, SensorBias, Tilt};
+use crate::fit::Stage2Model;
+use crate::model::{BaseTilt, Convention, SensorBias, SensorModel, Tilt, WristChain};
 use crate::real::{rad_to_deg, Real};
 
 /// Checks that a reading is finite and inside the sensor's range.
@@ -68,6 +69,76 @@ impl<T: Real> Stage1Result<T> {
     /// 1σ of α and β: half-differences of two readings.
     pub fn base_tilt_sigma_rad(&self, noise_sigma_rad: T) -> T {
         noise_sigma_rad * T::lit(0.5).sqrt()
+    }
+}
+
+/// What stages 0-1 hand to stage 2: the model of the frame joint 3 turns in and the
+/// sensor, and how well they are known.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Handover<T: Real> {
+    /// The stage-2 model.
+    pub model: Stage2Model<T>,
+    /// Covariance of (α, β, bias x, bias y) of `model`, in units of one reading's noise
+    /// variance (for [`crate::fit::FitConfig::model_covariance`]).
+    pub model_covariance: [[T; 4]; 4],
+}
+
+impl<T: Real> Stage1Result<T> {
+    /// The stage-2 model: stage 2 runs with axis 1 back at its mark and joint 2 where
+    /// stage 1 had it, moved by `j2_change_rad` (commanded) if at all, so joint 3 turns
+    /// in `Ry(β)·Rx(α + φ + s2·j2_change)`: the base tilt composed with joint 2's true
+    /// angle φ (both turn about the joint-2 direction). Leaving φ out would move all of
+    /// it into Δθ3, unseen.
+    ///
+    /// In `rpy`, α + φ = x1 − bx: stage 1's first reading less the stage-0 bias. Its
+    /// error, n1 − e_bx, has variance 1 + ½ (without stage 0, 1) and covariance −½ with
+    /// the bias x error; β and the y bias are half-differences and half-sums of two
+    /// readings (½ each, uncorrelated); the bias x is stage 0's half-sum (½), or 0 and
+    /// wrong when there was no stage 0 (the report warns).
+    pub fn handover(
+        &self,
+        chain: WristChain<T>,
+        convention: Convention,
+        bias: Option<&SensorBias<T>>,
+        j2_change_rad: T,
+        j2_direction: i8,
+    ) -> Handover<T> {
+        let s2 = if j2_direction < 0 {
+            -T::one()
+        } else {
+            T::one()
+        };
+        let model = Stage2Model {
+            chain,
+            base_tilt: BaseTilt {
+                alpha_rad: self.base_tilt.alpha_rad + self.arm_angle_rad + s2 * j2_change_rad,
+                beta_rad: self.base_tilt.beta_rad,
+            },
+            sensor: SensorModel {
+                convention,
+                bias: Tilt::new(bias.map_or(T::zero(), |b| b.x_rad), self.bias_y_rad),
+            },
+        };
+        let (o, h) = (T::zero(), T::lit(0.5));
+        let model_covariance = if bias.is_some() {
+            [
+                [T::lit(1.5), o, -h, o],
+                [o, h, o, o],
+                [-h, o, h, o],
+                [o, o, o, h],
+            ]
+        } else {
+            [
+                [T::one(), o, o, o],
+                [o, h, o, o],
+                [o, o, o, o],
+                [o, o, o, h],
+            ]
+        };
+        Handover {
+            model,
+            model_covariance,
+        }
     }
 }
 

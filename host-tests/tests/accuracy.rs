@@ -35,6 +35,8 @@ fn calibrate(arm: &Arm6, seed: u64) -> ([f64; ARM_JOINTS], [f64; ARM_JOINTS]) {
         offsets_rad: [0; WRIST_JOINTS].map(|_| u(0.5).to_radians()),
         delta_theta2_rad: u(0.5).to_radians(),
         j2_direction: arm.j2_direction(),
+        // from_parts sets it to stage 1's command.
+        j2_commanded_rad: 0.0,
     };
     let bias = Tilt::from_deg(u(0.05), u(0.05));
     let mut sensor = SimInclinometer::new(Convention::Rpy, bias, cfg.noise, rng.gen());

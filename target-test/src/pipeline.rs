@@ -11,7 +11,7 @@
 use core::fmt;
 
 use zerocal_core::fit::{FitConfig, PoseReading, Stage2Model};
-use zerocal_core::model::{Convention, SensorBias, SensorModel, Tilt, WristChain};
+use zerocal_core::model::{Convention, SensorBias, WristChain};
 use zerocal_core::stage0::Reversal;
 use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
 use zerocal_core::{FitError, Real, StageError};
@@ -57,29 +57,27 @@ pub fn stage1<T: Real>(
     session.stage1.solve(session.convention, bias, range)
 }
 
-/// The stage-2 model and fit settings that stages 0 and 1 hand over: the paper's
-/// chain, the measured base tilt, the x bias from stage 0 (0 without it) and the y bias
-/// from stage 1, each known to variance ½ of one reading's.
+/// The stage-2 model and fit settings that stages 0 and 1 hand over (core's
+/// `Stage1Result::handover`: the paper's chain, the tilt of the frame joint 3 turns
+/// in, the x bias from stage 0 (0 without it) and the y bias from stage 1, with their
+/// covariance), joint 2 kept where stage 1 had it.
 pub fn stage2_setup<T: Real>(
     session: &Session<'_, T>,
     bias: Option<&SensorBias<T>>,
     stage1: &Stage1Result<T>,
 ) -> (Stage2Model<T>, FitConfig<T>) {
-    let model = Stage2Model {
-        chain: WristChain::paper(),
-        base_tilt: stage1.base_tilt,
-        sensor: SensorModel {
-            convention: session.convention,
-            bias: Tilt::new(bias.map_or(T::zero(), |b| b.x_rad), stage1.bias_y_rad),
-        },
-    };
-    let half = T::lit(0.5);
-    let bias_x = if bias.is_some() { half } else { T::zero() };
+    let handover = stage1.handover(
+        WristChain::paper(),
+        session.convention,
+        bias,
+        T::zero(),
+        session.stage1.j2_direction,
+    );
     let config = FitConfig {
-        model_variance_factors: [half, half, bias_x, half],
+        model_covariance: handover.model_covariance,
         ..fit_config()
     };
-    (model, config)
+    (handover.model, config)
 }
 
 /// A fit error as the output line names it: the variant, then the parameters it

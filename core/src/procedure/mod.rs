@@ -7,7 +7,8 @@
 //! sessions run in host tests.
 //!
 //! Capture rule: a capture is *armed* by OK, or by the reading having moved by more than
-//! `rearm_motion_rad` since the last capture (the robot went to the next pose); an armed
+//! `rearm_motion_rad` since the last capture (the robot went to the next pose; not
+//! after the half turns of stages 0 and 1, which only OK arms); an armed
 //! capture fires when the stillness filter reports the window still, and stores the
 //! window's mean. So a robot still moving is never captured, and one that has not moved
 //! yet is not captured twice. BACK undoes the last capture, whatever the stage.
@@ -16,11 +17,11 @@ pub mod record;
 
 use crate::error::{FitError, StageError};
 use crate::fit::{fit, FitConfig, FitResult, PoseReading, Stage2Model};
-use crate::model::{Convention, SensorModel, Tilt, TiltAxis, WristChain, WRIST_JOINTS};
+use crate::model::{Convention, Tilt, TiltAxis, WristChain, WRIST_JOINTS};
 use crate::real::{deg_to_rad, Real};
 use crate::report::Verdict;
 use crate::stage0::Reversal;
-use crate::stage1::{AxisOneTurn, Stage1Result};
+use crate::stage1::{AxisOneTurn, Handover, Stage1Result};
 use crate::stillness::{Stillness, StillnessConfig, StillnessFilter};
 pub use record::{Record, RecordError};
 
@@ -442,15 +443,19 @@ impl<T: Real> Session<T> {
 
     /// The stage-2 model stages 0-1 produced (the one the fit uses).
     pub fn stage2_model(&self, config: &ProcedureConfig<T>) -> Option<Stage2Model<T>> {
+        self.handover(config).map(|h| h.model)
+    }
+
+    /// Stages 0-1's handover to stage 2 (joint 2 kept where stage 1 had it).
+    fn handover(&self, config: &ProcedureConfig<T>) -> Option<Handover<T>> {
         let s1 = self.stage1.as_ref()?;
-        Some(Stage2Model {
-            chain: config.chain,
-            base_tilt: s1.base_tilt,
-            sensor: SensorModel {
-                convention: config.convention,
-                bias: Tilt::new(self.bias.map_or(T::zero(), |b| b.x_rad), s1.bias_y_rad),
-            },
-        })
+        Some(s1.handover(
+            config.chain,
+            config.convention,
+            self.bias.as_ref(),
+            T::zero(),
+            config.j2_direction,
+        ))
     }
 
     /// What to draw.
@@ -505,19 +510,14 @@ impl<T: Real> Session<T> {
         for (_, p) in &self.captures {
             let _ = poses.push(*p);
         }
-        let half = T::lit(0.5);
-        let fit_config = FitConfig {
-            // α, β, bias y: stage 1's half-sums and -differences; bias x: stage 0's.
-            model_variance_factors: [
-                half,
-                half,
-                if self.bias.is_some() { half } else { T::zero() },
-                half,
-            ],
-            ..config.fit
-        };
-        let fit_result = match self.stage2_model(config) {
-            Some(model) => fit(&model, &poses, &fit_config),
+        let fit_result = match self.handover(config) {
+            Some(h) => {
+                let fit_config = FitConfig {
+                    model_covariance: h.model_covariance,
+                    ..config.fit
+                };
+                fit(&h.model, &poses, &fit_config)
+            }
             None => Err(FitError::TooFewPoses { got: 0, min: 4 }),
         };
         let verdict = match &fit_result {
@@ -585,6 +585,9 @@ pub fn step<T: Real>(
         }
         Event::SetPlan(plan) => {
             if s.captures.is_empty() && s.phase != Phase::Done {
+                // A power cut in the middle must not leave new poses mixed with old:
+                // no plan until the new length is written last.
+                out.push(Record::PlanLen(0));
                 for (i, q) in plan.iter().enumerate() {
                     out.push(Record::PlanPose {
                         index: i as u8,
@@ -625,7 +628,10 @@ fn on_sample<T: Real>(
         // No capture to measure motion from (after a reset, say): from here, then.
         s.last_capture = Some(reading);
     }
-    if let Some(last) = s.last_capture {
+    // After a half turn (stage 0's second reading, stage 1's second) the reading moves
+    // little, and a slow turn can look still near its end: only OK arms those.
+    let needs_ok = matches!(s.phase, Phase::Stage0Second | Phase::Stage1After);
+    if let (Some(last), false) = (s.last_capture, needs_ok) {
         let moved = reading.minus(&last);
         if moved.x_rad.abs() > config.rearm_motion_rad
             || moved.y_rad.abs() > config.rearm_motion_rad

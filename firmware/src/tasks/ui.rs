@@ -162,7 +162,16 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
                 second,
                 live_line(screen),
                 settle_line(screen),
-                notice_line(screen, "NEXT skip BACK undo"),
+                // Stage 2's model has axis 1 at its mark and joint 2 where stage 1
+                // left it (core's Stage1Result::handover): say so before the first pose.
+                notice_line(
+                    screen,
+                    if screen.captured == 0 {
+                        "axis1 at mark,j2 kept"
+                    } else {
+                        "NEXT skip BACK undo"
+                    },
+                ),
             ];
         }
         Prompt::NoPose => (
@@ -352,8 +361,8 @@ fn warning_lines(warning: &Warning) -> [Text; 4] {
         Warning::BiasXUnknown => [
             fixed("no stage 0 reversal:"),
             fixed("j2 offset includes"),
-            fixed("the sensor x bias"),
-            Text::new(),
+            fixed("the sensor x bias;"),
+            fixed("j3-j6 biased too"),
         ],
         Warning::SigmaFromSensorFigure => [
             fixed("few poses: 1 sigma"),

@@ -17,6 +17,9 @@ pub struct SimRobot {
     pub delta_theta2_rad: f64,
     /// +1 if positive joint-2 motion increases the upper-arm sensor's x reading.
     pub j2_direction: i8,
+    /// Joint 2's commanded angle during stage 2 (rad): where stage 1 left it. Its true
+    /// angle, this plus Δθ2, tilts the frame joint 3 turns in.
+    pub j2_commanded_rad: f64,
 }
 
 impl SimRobot {
@@ -28,16 +31,21 @@ impl SimRobot {
             offsets_rad: offsets_deg.map(deg_to_rad),
             delta_theta2_rad: 0.0,
             j2_direction: 1,
+            j2_commanded_rad: 0.0,
         }
     }
 
-    /// Orientation of the flange sensor for commanded θ3..θ6 (rad), joints 1-2 at zero.
+    /// Orientation of the flange sensor for commanded θ3..θ6 (rad), axis 1 at its mark
+    /// and joint 2 commanded to `j2_commanded_rad` (true: that plus Δθ2).
     pub fn flange_orientation(&self, commanded_rad: &[f64; WRIST_JOINTS]) -> Rotation3<f64> {
         let mut q = *commanded_rad;
         for (qk, dk) in q.iter_mut().zip(self.offsets_rad) {
             *qk += dk;
         }
-        self.chain.orientation(&self.base_tilt, &q)
+        let arm = f64::from(self.j2_direction) * (self.j2_commanded_rad + self.delta_theta2_rad);
+        // Joint 2 turns about the base's x (the joint-2 direction), before joint 3.
+        let wrist = self.chain.orientation(&BaseTilt::level(), &q);
+        self.base_tilt.rotation() * rot_x(arm) * wrist
     }
 
     /// Orientation of the upper-arm sensor (x ∥ joint 2) with axis 1 at `j1_rad` from

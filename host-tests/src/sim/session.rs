@@ -139,6 +139,7 @@ impl SimSession {
             offsets_rad: [0; WRIST_JOINTS].map(|_| deg_to_rad(uniform(&mut rng, off))),
             delta_theta2_rad: deg_to_rad(uniform(&mut rng, off)),
             j2_direction: if rng.gen_bool(0.5) { 1 } else { -1 },
+            j2_commanded_rad: 0.0,
         };
         let bias = Tilt::from_deg(
             uniform(&mut rng, cfg.max_bias_deg),
@@ -168,8 +169,13 @@ impl SimSession {
                 second: sensor.read(&(surface * rot_z(std::f64::consts::PI))),
             }
         });
-        // Joint 2 commanded a little away from 0 so the readings are not at 0.
+        // Joint 2 commanded a little away from 0 so the readings are not at 0; it stays
+        // there for stage 2 (axis 1 goes back to its mark).
         let c2 = deg_to_rad(uniform(rng, 3.0));
+        let robot = SimRobot {
+            j2_commanded_rad: c2,
+            ..robot
+        };
         let stage1 = AxisOneTurn {
             before: sensor.read(&robot.upper_arm_orientation(0.0, c2)),
             after: sensor.read(&robot.upper_arm_orientation(std::f64::consts::PI, c2)),
@@ -211,21 +217,17 @@ impl SimSession {
             .stage1
             .solve(convention, bias.as_ref(), range)
             .map_err(SessionError::Stage)?;
-        // Stage 1 measures y bias for free; x bias only stage 0 knows.
-        let model = Stage2Model {
-            chain: self.robot.chain,
-            base_tilt: stage1.base_tilt,
-            sensor: zerocal_core::SensorModel {
-                convention,
-                bias: Tilt::new(bias.map_or(0.0, |b| b.x_rad), stage1.bias_y_rad),
-            },
-        };
-        // α, β (stage 1), bias y (stage 1) and bias x (stage 0) are each a half-sum or
-        // half-difference of two readings: variance ½ of one reading's. Without stage 0
-        // the x bias is unknown, not uncertain: the report says so instead.
-        let half = 0.5;
+        // Joint 2 stays where stage 1 had it.
+        let handover = stage1.handover(
+            self.robot.chain,
+            convention,
+            bias.as_ref(),
+            0.0,
+            self.stage1.j2_direction,
+        );
+        let model = handover.model;
         let config = FitConfig {
-            model_variance_factors: [half, half, if bias.is_some() { half } else { 0.0 }, half],
+            model_covariance: handover.model_covariance,
             ..*config
         };
         let fit = zerocal_core::fit(&model, &self.poses, &config).map_err(SessionError::Fit)?;
