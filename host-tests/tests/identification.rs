@@ -74,16 +74,14 @@ fn table4_monte_carlo(range_deg: f64, trials: usize, seed: u64) -> MonteCarlo {
         let poses = read_poses(&robot, &mut s, &mut sampler, Table4::POSES);
         let r =
             fit(&model, &poses, &FitConfig::default()).expect("Table 4 pose sets are well posed");
-        let b = covariance_bound(
-            &model,
-            poses.iter().map(|p| &p.joints_rad),
-            &robot.offsets_rad,
-            noise.sigma_rad(),
-        )
-        .expect("bound");
         errs.push(errors_deg(&r.offsets_rad, &robot.offsets_rad));
         found.push(r.offsets_rad.map(f64::to_degrees));
-        bounds.push(b.sigma_rad.map(f64::to_degrees));
+        bounds.push(bound_deg(
+            &model,
+            &poses,
+            &robot.offsets_rad,
+            noise.sigma_rad(),
+        ));
     }
     let per =
         |f: &dyn Fn(&[f64]) -> f64, rows: &[[f64; 4]]| [0, 1, 2, 3].map(|k| f(&column(rows, k)));
@@ -155,16 +153,14 @@ fn single_step_breaks_with_large_offsets_iterating_does_not() {
             let poses = read_poses(&robot, &mut s, &mut sampler, Table4::POSES);
             let step = single_linearised_step(&model, &poses, &FitConfig::default()).expect("step");
             let r = fit(&model, &poses, &FitConfig::default()).expect("fit");
-            let b = covariance_bound(
-                &model,
-                poses.iter().map(|p| &p.joints_rad),
-                &robot.offsets_rad,
-                noise.sigma_rad(),
-            )
-            .expect("bound");
             one.extend(errors_deg(&step, &robot.offsets_rad));
             ours.extend(errors_deg(&r.offsets_rad, &robot.offsets_rad));
-            bound.extend(b.sigma_rad.map(f64::to_degrees));
+            bound.extend(bound_deg(
+                &model,
+                &poses,
+                &robot.offsets_rad,
+                noise.sigma_rad(),
+            ));
             iters.push(f64::from(r.iterations));
         }
         let sq: Vec<f64> = bound.iter().map(|b| b * b).collect();
@@ -376,15 +372,14 @@ fn reported_sigma_matches_the_bound() {
         let mut sampler = PoseSampler::symmetric(180.0, 10.0, rng.gen());
         let poses = read_poses(&robot, &mut s, &mut sampler, 20);
         let r = fit(&model, &poses, &FitConfig::default()).expect("fit");
-        let b = covariance_bound(
+        let b = bound_deg(
             &model,
-            poses.iter().map(|p| &p.joints_rad),
+            &poses,
             &robot.offsets_rad,
             Table4::noise().sigma_rad(),
-        )
-        .expect("bound");
-        for k in 0..4 {
-            ratios.push(r.sigma_rad[k] / b.sigma_rad[k]);
+        );
+        for (sigma, bound) in r.sigma_rad.iter().zip(b) {
+            ratios.push(sigma.to_degrees() / bound);
         }
     }
     let (lo, hi) = ratios

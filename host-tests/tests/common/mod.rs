@@ -1,7 +1,7 @@
 //! Helpers shared by the scenario tests.
 #![allow(dead_code)] // each test binary uses its own subset
 
-use zerocal_core::fit::{PoseReading, Stage2Model};
+use zerocal_core::fit::{covariance_bound, PoseReading, Stage2Model};
 use zerocal_core::model::{Convention, SensorModel, Tilt, WRIST_JOINTS};
 use zerocal_host_tests::sim::{Noise, PoseSampler, SimInclinometer, SimRobot};
 
@@ -48,4 +48,22 @@ pub fn to_f32(p: &PoseReading<f64>) -> PoseReading<f32> {
         joints_rad: p.joints_rad.map(|q| q as f32),
         reading: Tilt::new(p.reading.x_rad as f32, p.reading.y_rad as f32),
     }
+}
+
+/// The covariance bound (1σ per offset, deg) of the poses' joints at the truth.
+pub fn bound_deg(
+    model: &Stage2Model<f64>,
+    poses: &[PoseReading<f64>],
+    truth_rad: &[f64; WRIST_JOINTS],
+    sigma_rad: f64,
+) -> [f64; WRIST_JOINTS] {
+    covariance_bound(
+        model,
+        poses.iter().map(|p| &p.joints_rad),
+        truth_rad,
+        sigma_rad,
+    )
+    .expect("an informative pose set")
+    .sigma_rad
+    .map(f64::to_degrees)
 }
