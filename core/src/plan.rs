@@ -463,20 +463,9 @@ fn greedy<T: Real>(pool: &[Candidate<T>], n: usize) -> heapless::Vec<u16, MAX_PL
     // breaks ties among the first picks.
     let mut m = Matrix4::identity() * T::lit(1e-4);
     while design.len() < n {
-        let mut best: Option<(u16, Option<T>)> = None;
-        for (c, cand) in pool.iter().enumerate() {
-            let c = c as u16;
-            if design.contains(&c) {
-                continue;
-            }
-            let mut trial = m;
-            add_packed(&mut trial, &cand.info, T::one());
-            let s = score(Criterion::DOptimal, &trial);
-            if best.is_none_or(|(_, bs)| better(s, bs)) {
-                best = Some((c, s));
-            }
-        }
-        let Some((c, _)) = best else { break };
+        let Some((c, _)) = best_addition(pool, &design, &m, Criterion::DOptimal, None) else {
+            break;
+        };
         if let Some(cand) = pool.get(usize::from(c)) {
             add_packed(&mut m, &cand.info, T::one());
         }
@@ -485,6 +474,32 @@ fn greedy<T: Real>(pool: &[Candidate<T>], n: usize) -> heapless::Vec<u16, MAX_PL
         }
     }
     design
+}
+
+/// Among the pool candidates not in `design`, the one whose information added to
+/// `base` scores best under `criterion`; given a `bar`, only one that beats it.
+fn best_addition<T: Real>(
+    pool: &[Candidate<T>],
+    design: &[u16],
+    base: &Matrix4<T>,
+    criterion: Criterion,
+    bar: Option<Option<T>>,
+) -> Option<(u16, Option<T>)> {
+    let mut best: Option<(u16, Option<T>)> = None;
+    for (c, cand) in pool.iter().enumerate() {
+        let c = c as u16;
+        if design.contains(&c) {
+            continue;
+        }
+        let mut trial = *base;
+        add_packed(&mut trial, &cand.info, T::one());
+        let s = score(criterion, &trial);
+        let to_beat = best.map(|(_, bs)| bs).or(bar);
+        if to_beat.is_none_or(|b| better(s, b)) {
+            best = Some((c, s));
+        }
+    }
+    best
 }
 
 /// Fedorov-style exchange: swaps design points for pool candidates while the
@@ -506,21 +521,7 @@ fn exchange<T: Real>(
             };
             let mut without = m;
             add_packed(&mut without, &out.info, -T::one());
-            let mut best: Option<(u16, Option<T>)> = None;
-            for (c, cand) in pool.iter().enumerate() {
-                let c = c as u16;
-                if design.contains(&c) {
-                    continue;
-                }
-                let mut trial = without;
-                add_packed(&mut trial, &cand.info, T::one());
-                let s = score(criterion, &trial);
-                let incumbent = best.map_or(current, |(_, bs)| bs);
-                if better(s, incumbent) {
-                    best = Some((c, s));
-                }
-            }
-            if let Some((c, _)) = best {
+            if let Some((c, _)) = best_addition(pool, design, &without, criterion, Some(current)) {
                 design[i] = c;
                 // Recomputed, not updated, so rounding does not accumulate in f32.
                 m = information_of(pool, design);
