@@ -1,7 +1,8 @@
 //! `zerocal identify LOG.csv`: stage 2 on a recorded log.
 
+use crate::args::{RealIn, CONDITION, TILT_PAIR};
 use crate::chain::parse_chain;
-use crate::error::{parse_pair_deg, CliError};
+use crate::error::CliError;
 use crate::log::{read_log, Log};
 use clap::Args;
 use serde::Serialize;
@@ -18,23 +19,26 @@ pub struct IdentifyArgs {
     /// The log: `j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg`, one pose a row, `#` comments.
     pub log: PathBuf,
     /// How the sensor's angles derive from gravity (METHOD.md): rpy or axis.
-    #[arg(long, default_value = "rpy", value_parser = parse_convention)]
+    #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
     pub convention: Convention,
-    /// Base tilt α,β in degrees, as measured by stage 1.
-    #[arg(long, value_name = "X,Y", value_parser = parse_pair_deg, allow_hyphen_values = true)]
+    /// Base tilt α,β in degrees, as measured by stage 1. Range: each [-10, 10] deg.
+    #[arg(long, value_name = "X,Y", value_parser = TILT_PAIR, allow_hyphen_values = true)]
     pub base_tilt_deg: Option<(f64, f64)>,
     /// Sensor bias x,y in degrees, as measured by stage 0 (and stage 1 for y).
-    #[arg(long, value_name = "X,Y", value_parser = parse_pair_deg, allow_hyphen_values = true)]
+    /// Range: each [-10, 10] deg.
+    #[arg(long, value_name = "X,Y", value_parser = TILT_PAIR, allow_hyphen_values = true)]
     pub bias_deg: Option<(f64, f64)>,
     /// The sensor's noise as the half-width of uniform noise ±A (deg): used for 1σ
     /// when a log has too few poses to estimate it, and to judge the residual.
-    #[arg(long, default_value_t = 0.002, value_name = "A")]
+    /// Range: (0, 1] deg.
+    #[arg(long, default_value_t = 0.002, value_name = "A", value_parser = RealIn::above(0.0, 1.0, "deg"))]
     pub noise_deg: f64,
     /// Readings beyond ±this (deg) are refused as saturated or mis-recorded.
-    #[arg(long, default_value_t = 30.0)]
+    /// Range: (0, 90] deg.
+    #[arg(long, default_value_t = 30.0, value_parser = RealIn::above(0.0, 90.0, "deg"))]
     pub range_deg: f64,
-    /// Refuse pose sets whose Jacobian condition number exceeds this.
-    #[arg(long, default_value_t = 1000.0)]
+    /// Refuse pose sets whose Jacobian condition number exceeds this. Range: (1, 100000].
+    #[arg(long, default_value_t = 1000.0, value_parser = CONDITION)]
     pub max_condition: f64,
     /// The robot's wrist (JSON; see `chain.rs`); default the paper's x, y, x, y.
     #[arg(long, value_name = "FILE")]
@@ -42,10 +46,6 @@ pub struct IdentifyArgs {
     /// Print one JSON object instead of the report.
     #[arg(long)]
     pub json: bool,
-}
-
-fn parse_convention(s: &str) -> Result<Convention, String> {
-    Convention::parse(s).ok_or_else(|| format!("'{s}' is not a convention: use rpy or axis"))
 }
 
 /// The `--json` output.
@@ -85,17 +85,6 @@ pub fn model_and_config(
     };
     let (a, b) = args.base_tilt_deg.unwrap_or((0.0, 0.0));
     let (bx, by) = args.bias_deg.unwrap_or((0.0, 0.0));
-    for (name, v) in [
-        ("--noise-deg", args.noise_deg),
-        ("--range-deg", args.range_deg),
-        ("--max-condition", args.max_condition),
-    ] {
-        if !(v.is_finite() && v > 0.0) {
-            return Err(CliError::Input(format!(
-                "{name} must be a positive number, got {v}"
-            )));
-        }
-    }
     let model = Stage2Model {
         chain,
         base_tilt: BaseTilt::from_deg(a, b),

@@ -1,6 +1,7 @@
 //! The `zerocal` desktop tool as a library, so its parsers and reports are tested
 //! directly (see `tests/`) as well as through the binary.
 
+pub mod args;
 pub mod chain;
 pub mod error;
 pub mod identify;

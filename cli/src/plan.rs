@@ -20,6 +20,7 @@
 //! `--noise-deg A` is the half-width of uniform reading noise ±A, as for `simulate`
 //! (the paper's Table 4: 0.002): the predicted 1σ uses σ = A/√3 per reading.
 
+use crate::args::{CountIn, RealIn, SEED, TILT_PAIR};
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use serde::Serialize;
@@ -42,37 +43,40 @@ pub enum CriterionArg {
 /// Arguments of `zerocal plan`.
 #[derive(Args, Debug, Clone)]
 pub struct PlanArgs {
-    /// Poses to plan (4-64, `zerocal_core::plan::MAX_PLAN_POSES`).
-    #[arg(long, default_value_t = 8)]
+    /// Poses to plan (`zerocal_core::plan::MAX_PLAN_POSES` at most). Range: [4, 64].
+    #[arg(long, default_value_t = 8, value_parser = CountIn::<usize>::new(4, 64))]
     pub poses: usize,
-    /// Sensor window: readings must stay within ±W degrees.
-    #[arg(long, default_value_t = 10.0, value_name = "W")]
+    /// Sensor window: readings must stay within ±W degrees. Range: (0, 90] deg.
+    #[arg(long, default_value_t = 10.0, value_name = "W", value_parser = RealIn::above(0.0, 90.0, "deg"))]
     pub window_deg: f64,
     /// Planned readings stay within ±(W − margin) at zero offsets, leaving room for
-    /// the offsets not yet known (deg).
-    #[arg(long, default_value_t = 1.0)]
+    /// the offsets not yet known (deg); it must also be smaller than W.
+    /// Range: [0, 90] deg.
+    #[arg(long, default_value_t = 1.0, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
     pub margin_deg: f64,
     /// Joint limits of joints 3-6: CSV lines `joint,min_deg,max_deg` (default ±180).
     #[arg(long, value_name = "FILE")]
     pub limits: Option<PathBuf>,
     /// Reading noise: uniform in ±A degrees, as for `simulate` (σ = A/√3).
-    #[arg(long, default_value_t = 0.002, value_name = "A")]
+    /// Range: (0, 1] deg.
+    #[arg(long, default_value_t = 0.002, value_name = "A", value_parser = RealIn::above(0.0, 1.0, "deg"))]
     pub noise_deg: f64,
     /// Seed of the candidate draw: the same seed gives the same plan.
-    #[arg(long, default_value_t = 1)]
+    /// Range: [0, 18446744073709551615].
+    #[arg(long, default_value_t = 1, value_parser = SEED)]
     pub seed: u64,
-    /// Feasible candidate poses to choose from.
-    #[arg(long, default_value_t = 256)]
+    /// Feasible candidate poses to choose from (at least --poses). Range: [4, 65535].
+    #[arg(long, default_value_t = 256, value_parser = CountIn::<usize>::new(4, 65_535))]
     pub candidates: usize,
     /// Optimality criterion.
     #[arg(long, value_enum, default_value = "a")]
     pub criterion: CriterionArg,
     /// Sensor convention (rpy or axis).
-    #[arg(long, default_value = "rpy", value_parser = parse_convention)]
+    #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
     pub convention: Convention,
     /// Base tilt α,β from stage 1 (deg), so the plan's readings are those the robot
-    /// will show.
-    #[arg(long, value_name = "A,B", value_parser = crate::error::parse_pair_deg, allow_hyphen_values = true)]
+    /// will show. Range: each [-10, 10] deg.
+    #[arg(long, value_name = "A,B", value_parser = TILT_PAIR, allow_hyphen_values = true)]
     pub base_tilt_deg: Option<(f64, f64)>,
     /// Robot wrist description (JSON, see `zerocal identify --help`); default: the
     /// paper's x, y, x, y.
@@ -84,10 +88,6 @@ pub struct PlanArgs {
     /// Print CSV rows j3_deg,j4_deg,j5_deg,j6_deg.
     #[arg(long)]
     pub csv: bool,
-}
-
-fn parse_convention(s: &str) -> Result<Convention, String> {
-    Convention::parse(s).ok_or_else(|| format!("'{s}' is not a convention: use rpy or axis"))
 }
 
 /// Per-joint (min, max) limits of joints 3-6 (deg).
@@ -217,12 +217,6 @@ impl PlanArgs {
 
     /// The planner settings the flags give.
     pub fn config(&self) -> Result<PlanConfig<f64>, CliError> {
-        if !(self.noise_deg.is_finite() && self.noise_deg > 0.0) {
-            return Err(CliError::Input(format!(
-                "--noise-deg must be > 0, got {}",
-                self.noise_deg
-            )));
-        }
         let limits = self.limits_deg()?;
         Ok(PlanConfig {
             poses: self.poses,
@@ -263,12 +257,6 @@ fn cli_error(e: PlanError) -> CliError {
 pub fn make_plan(args: &PlanArgs) -> Result<(PlanConfig<f64>, Plan<f64>), CliError> {
     let config = args.config()?;
     let model = args.model()?;
-    if args.candidates > 65_535 {
-        return Err(CliError::Input(format!(
-            "--candidates must be at most 65535, got {}",
-            args.candidates
-        )));
-    }
     let mut pool = vec![Candidate::default(); args.candidates.max(1)];
     let p = plan(&model, &config, &mut pool).map_err(cli_error)?;
     Ok((config, p))
@@ -409,10 +397,19 @@ mod tests {
 
     #[test]
     fn exit_statuses() {
-        // Bad input: status 2.
-        let e = run(&args(&["--poses", "2"])).unwrap_err();
-        assert_eq!(e.exit_code(), 2, "{e}");
-        let e = run(&args(&["--noise-deg", "0"])).unwrap_err();
+        // Bad input is refused when the flags are parsed: status 2, naming the range.
+        for (flag, value, range) in [
+            ("--poses", "2", "[4, 64]"),
+            ("--noise-deg", "0", "(0, 1] deg"),
+        ] {
+            let e = Wrap::try_parse_from(["plan", flag, value])
+                .err()
+                .unwrap_or_else(|| panic!("{flag} {value} accepted"));
+            assert_eq!(e.exit_code(), 2, "{e}");
+            assert!(e.to_string().contains(range), "{e}");
+        }
+        // A margin within its own range but not below the window: status 2 as well.
+        let e = run(&args(&["--window-deg", "5", "--margin-deg", "6"])).unwrap_err();
         assert_eq!(e.exit_code(), 2, "{e}");
         // θ4 pinned: j3 and j5 inseparable, refused with status 3 naming them.
         let dir = std::env::temp_dir().join(format!("zerocal-plan-{}", std::process::id()));

@@ -2,6 +2,7 @@
 //! hidden offsets, base tilt and sensor bias goes through stages 0-2 exactly as the
 //! pendant would take it, and the pendant's report is printed beside the hidden truth.
 
+use crate::args::{CountIn, RealIn, SEED};
 use crate::error::CliError;
 use clap::Args;
 use std::fmt::Write;
@@ -17,23 +18,24 @@ use zerocal_host_tests::sim::{Noise, SimSession};
 /// Arguments of `zerocal simulate`.
 #[derive(Args, Debug, Clone)]
 pub struct SimulateArgs {
-    /// Seed of the hidden truth, the poses and the noise.
-    #[arg(long, default_value_t = 1)]
+    /// Seed of the hidden truth, the poses and the noise. Range: [0, 18446744073709551615].
+    #[arg(long, default_value_t = 1, value_parser = SEED)]
     pub seed: u64,
-    /// Stage-2 poses.
-    #[arg(long, default_value_t = 30)]
+    /// Stage-2 poses. Range: [4, 10000].
+    #[arg(long, default_value_t = 30, value_parser = CountIn::<usize>::new(4, 10_000))]
     pub poses: usize,
     /// Reading noise: uniform in ±A degrees (the paper's Table 4: 0.002).
-    #[arg(long, default_value_t = 0.002, value_name = "A")]
+    /// Range: [0, 1] deg.
+    #[arg(long, default_value_t = 0.002, value_name = "A", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
     pub noise_deg: f64,
     /// Sensor convention of the simulated sensor and of the model.
-    #[arg(long, default_value = "rpy", value_parser = parse_convention)]
+    #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
     pub convention: Convention,
-    /// Joints 3-6 are drawn within ±this (deg).
-    #[arg(long, default_value_t = 180.0)]
+    /// Joints 3-6 are drawn within ±this (deg). Range: (0, 180] deg.
+    #[arg(long, default_value_t = 180.0, value_parser = RealIn::above(0.0, 180.0, "deg"))]
     pub joint_range_deg: f64,
-    /// Hidden offsets of joints 2-6 are drawn within ±this (deg).
-    #[arg(long, default_value_t = 0.5)]
+    /// Hidden offsets of joints 2-6 are drawn within ±this (deg). Range: [0, 10] deg.
+    #[arg(long, default_value_t = 0.5, value_parser = RealIn::closed(0.0, 10.0, "deg"))]
     pub max_offset_deg: f64,
     /// Skip stage 0: Δθ2 then includes the sensor's x bias, as in the paper.
     #[arg(long)]
@@ -43,38 +45,16 @@ pub struct SimulateArgs {
     #[arg(long, value_name = "DIR")]
     pub plot: Option<std::path::PathBuf>,
     /// Test points of the ISO 9283-style accuracy test on the 6-axis arm.
-    #[arg(long, default_value_t = 200)]
+    /// Range: [1, 100000].
+    #[arg(long, default_value_t = 200, value_parser = CountIn::<usize>::new(1, 100_000))]
     pub accuracy_points: usize,
-}
-
-fn parse_convention(s: &str) -> Result<Convention, String> {
-    Convention::parse(s).ok_or_else(|| format!("'{s}' is not a convention: use rpy or axis"))
 }
 
 impl SimulateArgs {
     /// The session the flags describe.
+    ///
+    /// The ranges are checked when the flags are parsed (`crate::args`).
     pub fn session_config(&self) -> Result<SessionConfig, CliError> {
-        if !(self.noise_deg.is_finite() && self.noise_deg >= 0.0) {
-            return Err(CliError::Input(format!(
-                "--noise-deg must be >= 0, got {}",
-                self.noise_deg
-            )));
-        }
-        if !(self.joint_range_deg > 0.0 && self.joint_range_deg <= 180.0) {
-            return Err(CliError::Input(format!(
-                "--joint-range-deg must be in (0, 180], got {}",
-                self.joint_range_deg
-            )));
-        }
-        if !(self.max_offset_deg.is_finite() && self.max_offset_deg >= 0.0) {
-            return Err(CliError::Input("--max-offset-deg must be >= 0".into()));
-        }
-        if self.accuracy_points == 0 || self.accuracy_points > 100_000 {
-            return Err(CliError::Input("--accuracy-points: 1 to 100000".into()));
-        }
-        if self.poses > 10_000 {
-            return Err(CliError::Input("--poses: at most 10000".into()));
-        }
         Ok(SessionConfig {
             seed: self.seed,
             poses: self.poses,

@@ -1,8 +1,10 @@
 //! `cargo xtask`: the project's build tasks, in Rust rather than shell scripts.
 //!
 //! The firmware and the no_std check build for `thumbv7em-none-eabihf` with whichever
-//! toolchain this machine has (see [`toolchain`]): rustup's with the target installed,
-//! or Debian's rustc with `-Zbuild-std=core`, installed with apt-get when missing.
+//! toolchain this machine has, each tool named by its absolute path: rustup's with the
+//! target installed (and its own rust-lld), or Debian's rustc with `-Zbuild-std=core`
+//! linked by Debian's ld.lld, installed with apt-get when missing. [`toolchain`] is the
+//! one owner of that knowledge; `cargo xtask setup` runs it alone.
 
 mod size;
 mod target_test;
@@ -29,6 +31,10 @@ struct Cli {
 /// One task per variant. Each builds what it needs itself.
 #[derive(Subcommand)]
 enum Command {
+    /// Install and check what the thumb build and the QEMU check need (rustup's thumb
+    /// target with its own rust-lld, else Debian's rustc-web, cargo-web, rust-web-src and
+    /// lld-22; qemu-system-arm), and print which tools are used.
+    Setup,
     /// Build the release firmware (firmware/, thumbv7em-none-eabihf) and print its
     /// flash and static RAM use.
     Firmware,
@@ -44,6 +50,7 @@ enum Command {
 
 fn main() -> Result<()> {
     match Cli::parse().command {
+        Command::Setup => toolchain::setup(),
         Command::Firmware => firmware(),
         Command::CoreThumb => core_thumb(),
         Command::TargetTest => target_test::run(&repo_root()),
@@ -70,7 +77,8 @@ fn firmware() -> Result<()> {
 /// No toolchain, a failed build, an unreadable ELF or `memory.x`.
 fn build_firmware(root: &Path) -> Result<(size::MemoryUsage, size::MemoryCapacity)> {
     let firmware_dir = root.join("firmware");
-    let toolchain = toolchain::ThumbToolchain::find_or_install()?;
+    let tools = toolchain::provision(toolchain::Needs::THUMB)?;
+    let toolchain = tools.thumb()?;
     // The firmware's own .cargo/config.toml selects the target; its own [workspace]
     // keeps host features out.
     toolchain.cargo_build(&firmware_dir, &["--release"])?;
@@ -86,7 +94,8 @@ fn build_firmware(root: &Path) -> Result<(size::MemoryUsage, size::MemoryCapacit
 
 fn core_thumb() -> Result<()> {
     let root = repo_root();
-    let toolchain = toolchain::ThumbToolchain::find_or_install()?;
+    let tools = toolchain::provision(toolchain::Needs::THUMB)?;
+    let toolchain = tools.thumb()?;
     // Only zerocal-core is selected, so no other member's features (std) unify into
     // it; its own target dir keeps the host build's cache intact.
     let manifest = root.join("core").join("Cargo.toml");

@@ -16,7 +16,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 use std::fmt::Write as _;
 use std::fs;
-use std::io::{ErrorKind, Read};
+use std::io::Read;
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::thread;
@@ -34,7 +34,7 @@ use zerocal_host_tests::sim::session::SessionConfig;
 use zerocal_host_tests::sim::{PoseSampler, SimInclinometer, SimRobot, SimSession, Table4};
 
 use crate::pipeline::{self, FitErrorWords, Session, StageErrorWords};
-use crate::toolchain::{ThumbToolchain, THUMB_TARGET};
+use crate::toolchain::THUMB_TARGET;
 
 /// Largest difference allowed between the target's `f32` and the host's `f64` result,
 /// on every angle (deg): a tenth of the Table 4 noise-limited accuracy.
@@ -163,7 +163,8 @@ pub fn run(root: &Path) -> Result<()> {
     );
 
     let program_dir = root.join("target-test");
-    let toolchain = ThumbToolchain::find_or_install()?;
+    let tools = crate::toolchain::provision(crate::toolchain::Needs::ALL)?;
+    let toolchain = tools.thumb()?;
     // The child cargo (and its build script) inherit xtask's environment; xtask is
     // single-threaded here.
     std::env::set_var(VECTORS_VAR, &vectors_path);
@@ -174,8 +175,7 @@ pub fn run(root: &Path) -> Result<()> {
         .join("release")
         .join("zerocal-target-test");
 
-    ensure_qemu()?;
-    let output = run_qemu(&elf, QEMU_TIME_LIMIT)?;
+    let output = run_qemu(tools.qemu()?, &elf, QEMU_TIME_LIMIT)?;
     let report = TargetReport::parse(&output);
     if report.done != Some(cases.len()) {
         bail!(
@@ -777,50 +777,13 @@ fn worst_difference(expected: &Results, reported: &Results) -> f64 {
 
 // --- QEMU --------------------------------------------------------------------------
 
-/// Installs `qemu-system-arm` with apt-get when it is not on the PATH.
-///
-/// # Errors
-/// When apt-get fails.
-fn ensure_qemu() -> Result<()> {
-    match Command::new("qemu-system-arm")
-        .arg("--version")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .status()
-    {
-        Ok(_) => return Ok(()),
-        Err(e) if e.kind() == ErrorKind::NotFound => {}
-        Err(e) => return Err(e).context("running qemu-system-arm --version"),
-    }
-    eprintln!("xtask: qemu-system-arm missing; installing it with apt-get");
-    for args in [
-        &["update"][..],
-        &[
-            "install",
-            "-y",
-            "--no-install-recommends",
-            "qemu-system-arm",
-        ][..],
-    ] {
-        let status = Command::new("apt-get")
-            .args(args)
-            .env("DEBIAN_FRONTEND", "noninteractive")
-            .status()
-            .with_context(|| format!("cannot run apt-get {}", args.join(" ")))?;
-        if !status.success() {
-            bail!("apt-get {} failed ({status})", args.join(" "));
-        }
-    }
-    Ok(())
-}
-
 /// Runs the program in QEMU and returns its output (stdout, then stderr).
 ///
 /// # Errors
 /// QEMU cannot start, the program exits with failure, or it runs past `limit` (then it
 /// is killed).
-fn run_qemu(elf: &Path, limit: Duration) -> Result<String> {
-    let mut command = Command::new("qemu-system-arm");
+fn run_qemu(qemu: &Path, elf: &Path, limit: Duration) -> Result<String> {
+    let mut command = Command::new(qemu);
     command
         .args([
             "-machine",

@@ -1,7 +1,23 @@
-//! Finding (or installing) a toolchain that builds for the Cortex-M4F, and running
-//! cargo with it in a clean environment.
+//! Provisioning: the one place that knows which tools the thumb build and the QEMU check
+//! need, where they live, and how to install them (`cargo xtask setup`).
+//!
+//! Every xtask command that builds for the pendant's CPU or runs QEMU calls
+//! [`provision`] first; `.ci/run` calls `cargo xtask setup` and repeats no package list
+//! or path. Each tool is named by its absolute path, never looked up on `PATH`, so a
+//! tool some other installer left on this machine cannot make a build pass here and
+//! fail on a fresh one.
+//!
+//! - **rustup with the thumb target** (what the README tells users to install): its own
+//!   `cargo`/`rustc` and the `rust-lld` shipped inside the toolchain's sysroot.
+//! - **Debian's toolchain** otherwise (rustup cannot download targets offline):
+//!   `rustc-web` and `cargo-web` (rustc 1.96), `rust-web-src` (the library sources for
+//!   `-Zbuild-std=core`) and `lld-22`, whose `ld.lld-22` links. Installed without
+//!   recommends: `rustc-web` merely recommends `rust-web-llvm`, the package with a
+//!   `/usr/bin/rust-lld` symlink, so a build that relied on rustc finding `rust-lld` by
+//!   itself passed where apt had installed recommends and failed where it had not.
+//! - **QEMU** (`qemu-system-arm`) for `cargo xtask target-test`.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use anyhow::{bail, Context, Result};
@@ -9,17 +25,50 @@ use anyhow::{bail, Context, Result};
 /// The pendant's target: Cortex-M4F with hardware floating point.
 pub const THUMB_TARGET: &str = "thumbv7em-none-eabihf";
 
-/// Debian's toolchain: rustc with the standard library sources, used with
-/// `RUSTC_BOOTSTRAP=1 -Zbuild-std=core` because Debian ships no thumb std.
+/// The cargo variable that names the thumb target's linker.
+const LINKER_VARIABLE: &str = "CARGO_TARGET_THUMBV7EM_NONE_EABIHF_LINKER";
+
+/// A Debian package and the file that shows it is installed.
+struct Package {
+    name: &'static str,
+    provides: &'static str,
+}
+
+/// Debian's thumb toolchain: rustc with the standard library sources, used with
+/// `RUSTC_BOOTSTRAP=1 -Zbuild-std=core` because Debian ships no thumb std; lld links.
+const DEBIAN_TOOLCHAIN: [Package; 4] = [
+    Package {
+        name: "rustc-web",
+        provides: "/usr/bin/rustc",
+    },
+    Package {
+        name: "cargo-web",
+        provides: "/usr/bin/cargo",
+    },
+    Package {
+        name: "rust-web-src",
+        provides: "/usr/lib/rustlib/src/rust/library/core/Cargo.toml",
+    },
+    Package {
+        name: "lld-22",
+        provides: "/usr/bin/ld.lld-22",
+    },
+];
+
 const DEBIAN_RUSTC: &str = "/usr/bin/rustc";
 const DEBIAN_CARGO: &str = "/usr/bin/cargo";
-const DEBIAN_RUST_SRC: &str = "/usr/lib/rustlib/src/rust/library/core";
-const DEBIAN_PACKAGES: [&str; 4] = ["rustc-web", "cargo-web", "rust-web-src", "lld-22"];
+const DEBIAN_LINKER: &str = "/usr/bin/ld.lld-22";
+
+/// QEMU with the `netduinoplus2` (STM32F405, Cortex-M4F) machine.
+const QEMU: Package = Package {
+    name: "qemu-system-arm",
+    provides: "/usr/bin/qemu-system-arm",
+};
 
 /// Variables that cargo, rustc's wrappers and rustup set for the process running
 /// xtask. Left in place they would make the child build use the host toolchain, the
 /// host's target directory, its flags or its manifest.
-const LEAKED_VARIABLES: [&str; 14] = [
+const LEAKED_VARIABLES: [&str; 15] = [
     "RUSTUP_TOOLCHAIN",
     "RUST_RECURSION_COUNT",
     "CARGO",
@@ -34,45 +83,277 @@ const LEAKED_VARIABLES: [&str; 14] = [
     "CARGO_BUILD_TARGET",
     "CARGO_BUILD_TARGET_DIR",
     "CARGO_MANIFEST_DIR",
+    LINKER_VARIABLE,
 ];
 
-/// A toolchain that can build for [`THUMB_TARGET`].
+/// What a command needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ThumbToolchain {
+pub struct Needs {
+    /// A toolchain and linker for [`THUMB_TARGET`].
+    pub thumb: bool,
+    /// `qemu-system-arm`.
+    pub qemu: bool,
+}
+
+impl Needs {
+    /// Everything (`cargo xtask setup`, the target test).
+    pub const ALL: Needs = Needs {
+        thumb: true,
+        qemu: true,
+    };
+    /// The thumb build only.
+    pub const THUMB: Needs = Needs {
+        thumb: true,
+        qemu: false,
+    };
+}
+
+/// The tools found, each by absolute path.
+#[derive(Clone, Debug)]
+pub struct Tools {
+    /// The thumb toolchain, if asked for.
+    pub thumb: Option<ThumbToolchain>,
+    /// `qemu-system-arm`, if asked for.
+    pub qemu: Option<PathBuf>,
+}
+
+impl Tools {
+    /// The thumb toolchain.
+    ///
+    /// # Errors
+    /// When [`provision`] was not asked for it.
+    pub fn thumb(&self) -> Result<&ThumbToolchain> {
+        self.thumb
+            .as_ref()
+            .context("internal: the thumb toolchain was not provisioned")
+    }
+
+    /// `qemu-system-arm`.
+    ///
+    /// # Errors
+    /// When [`provision`] was not asked for it.
+    pub fn qemu(&self) -> Result<&Path> {
+        self.qemu
+            .as_deref()
+            .context("internal: QEMU was not provisioned")
+    }
+}
+
+/// Which toolchain builds for the thumb target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ToolchainKind {
     /// rustup's, with the target's std installed.
     Rustup,
     /// Debian's, building `core` from source.
     Debian,
 }
 
-impl ThumbToolchain {
-    /// rustup's if it has the target, else Debian's, installing it if needed.
-    ///
-    /// # Errors
-    /// When neither is present and apt-get fails.
-    pub fn find_or_install() -> Result<ThumbToolchain> {
-        if rustup_has_thumb_target() {
-            return Ok(ThumbToolchain::Rustup);
-        }
-        if !debian_toolchain_present() {
-            eprintln!(
-                "xtask: no toolchain for {THUMB_TARGET}; installing Debian's ({})",
-                DEBIAN_PACKAGES.join(" ")
-            );
-            install_debian_toolchain()?;
-        }
-        Ok(ThumbToolchain::Debian)
-    }
+/// A toolchain that can build for [`THUMB_TARGET`], with its linker.
+#[derive(Clone, Debug)]
+pub struct ThumbToolchain {
+    /// Which one.
+    pub kind: ToolchainKind,
+    /// The `cargo` to run.
+    pub cargo: PathBuf,
+    /// The `rustc` it must use (Debian's), or `None` for the rustup proxy's choice.
+    pub rustc: Option<PathBuf>,
+    /// The linker, named to cargo explicitly.
+    pub linker: PathBuf,
+}
 
-    /// `cargo build` in `dir` with `args`, for the thumb target.
+/// Finds what `needs` asks for, installing what is missing with apt-get, and checks
+/// that every file is there afterwards.
+///
+/// # Errors
+/// A tool that is missing and cannot be installed (the message names it, its package
+/// and the command that installs it).
+pub fn provision(needs: Needs) -> Result<Tools> {
+    let mut missing: Vec<&Package> = Vec::new();
+    let rustup = if needs.thumb {
+        rustup_thumb_toolchain()?
+    } else {
+        None
+    };
+    if needs.thumb && rustup.is_none() {
+        missing.extend(DEBIAN_TOOLCHAIN.iter().filter(|p| !installed(p)));
+    }
+    if needs.qemu && !installed(&QEMU) {
+        missing.push(&QEMU);
+    }
+    if !missing.is_empty() {
+        install(&missing)?;
+    }
+    let thumb = match (needs.thumb, rustup) {
+        (false, _) => None,
+        (true, Some(t)) => Some(t),
+        (true, None) => {
+            require(&DEBIAN_TOOLCHAIN)?;
+            Some(ThumbToolchain {
+                kind: ToolchainKind::Debian,
+                cargo: DEBIAN_CARGO.into(),
+                rustc: Some(DEBIAN_RUSTC.into()),
+                linker: DEBIAN_LINKER.into(),
+            })
+        }
+    };
+    let qemu = if needs.qemu {
+        require(std::slice::from_ref(&QEMU))?;
+        Some(PathBuf::from(QEMU.provides))
+    } else {
+        None
+    };
+    Ok(Tools { thumb, qemu })
+}
+
+/// `cargo xtask setup`: provisions everything and says what is used.
+///
+/// # Errors
+/// As [`provision`].
+pub fn setup() -> Result<()> {
+    let tools = provision(Needs::ALL)?;
+    let thumb = tools.thumb()?;
+    println!("thumb toolchain: {:?}", thumb.kind);
+    println!("  cargo:  {}", thumb.cargo.display());
+    if let Some(rustc) = &thumb.rustc {
+        println!("  rustc:  {}", rustc.display());
+    }
+    println!("  linker: {}", thumb.linker.display());
+    println!("qemu:     {}", tools.qemu()?.display());
+    Ok(())
+}
+
+fn installed(package: &Package) -> bool {
+    Path::new(package.provides).exists()
+}
+
+/// Fails, naming each package whose file is still missing.
+fn require(packages: &[Package]) -> Result<()> {
+    let missing: Vec<String> = packages
+        .iter()
+        .filter(|p| !installed(p))
+        .map(|p| format!("{} (package {})", p.provides, p.name))
+        .collect();
+    if !missing.is_empty() {
+        bail!(
+            "xtask: still missing after installation: {}; run `cargo xtask setup` as root",
+            missing.join(", ")
+        );
+    }
+    Ok(())
+}
+
+/// rustup's toolchain, if rustup is here and has the thumb target: its `cargo`, and the
+/// `rust-lld` in the toolchain's own sysroot.
+fn rustup_thumb_toolchain() -> Result<Option<ThumbToolchain>> {
+    let Some(targets) = output_of(
+        Command::new("rustup")
+            .args(["target", "list", "--installed"])
+            .env_remove("RUSTUP_TOOLCHAIN"),
+    ) else {
+        return Ok(None);
+    };
+    if !targets.lines().any(|line| line.trim() == THUMB_TARGET) {
+        return Ok(None);
+    }
+    let sysroot = output_of(
+        Command::new("rustc")
+            .args(["--print", "sysroot"])
+            .env_remove("RUSTUP_TOOLCHAIN")
+            .env_remove("RUSTC"),
+    )
+    .context("rustup lists the thumb target but `rustc --print sysroot` fails")?;
+    let version = output_of(
+        Command::new("rustc")
+            .arg("-vV")
+            .env_remove("RUSTUP_TOOLCHAIN")
+            .env_remove("RUSTC"),
+    )
+    .context("`rustc -vV` fails")?;
+    let host = version
+        .lines()
+        .find_map(|l| l.strip_prefix("host: "))
+        .context("`rustc -vV` names no host triple")?;
+    let linker = Path::new(sysroot.trim())
+        .join("lib/rustlib")
+        .join(host.trim())
+        .join("bin/rust-lld");
+    if !linker.exists() {
+        bail!(
+            "rustup has the {THUMB_TARGET} target but its toolchain has no linker at {}; \
+             reinstall the toolchain (`rustup toolchain install stable`)",
+            linker.display()
+        );
+    }
+    let cargo = output_of(
+        Command::new("rustup")
+            .args(["which", "cargo"])
+            .env_remove("RUSTUP_TOOLCHAIN"),
+    )
+    .context("`rustup which cargo` fails")?;
+    Ok(Some(ThumbToolchain {
+        kind: ToolchainKind::Rustup,
+        cargo: PathBuf::from(cargo.trim()),
+        rustc: None,
+        linker,
+    }))
+}
+
+/// The standard output of a command that ran and succeeded.
+fn output_of(command: &mut Command) -> Option<String> {
+    let output = command.output().ok()?;
+    output
+        .status
+        .success()
+        .then(|| String::from_utf8_lossy(&output.stdout).into_owned())
+}
+
+/// `apt-get update`, then installs `packages`. Root only: anyone else gets the command
+/// to run.
+fn install(packages: &[&Package]) -> Result<()> {
+    let names: Vec<&str> = packages.iter().map(|p| p.name).collect();
+    let command = format!("apt-get update && apt-get install -y {}", names.join(" "));
+    if !is_root() {
+        bail!(
+            "xtask: missing {} (needed: {}); install them as root: `{command}`",
+            names.join(", "),
+            packages
+                .iter()
+                .map(|p| p.provides)
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    eprintln!("xtask: installing {}", names.join(" "));
+    run(Command::new("apt-get")
+        .args(["update", "-qq"])
+        .env("DEBIAN_FRONTEND", "noninteractive"))?;
+    run(Command::new("apt-get")
+        .args(["install", "-y", "-qq", "--no-install-recommends"])
+        .args(&names)
+        .env("DEBIAN_FRONTEND", "noninteractive"))
+}
+
+fn is_root() -> bool {
+    output_of(Command::new("id").arg("-u")).is_some_and(|uid| uid.trim() == "0")
+}
+
+fn run(command: &mut Command) -> Result<()> {
+    let status = command
+        .status()
+        .with_context(|| format!("cannot run {command:?}"))?;
+    if !status.success() {
+        bail!("{command:?} failed ({status})");
+    }
+    Ok(())
+}
+
+impl ThumbToolchain {
+    /// `cargo build` in `dir` with `args`, for the thumb target, with the linker named.
     ///
     /// # Errors
     /// When cargo cannot start or the build fails.
-    pub fn cargo_build(self, dir: &Path, args: &[&str]) -> Result<()> {
-        let mut command = match self {
-            ThumbToolchain::Rustup => Command::new("cargo"),
-            ThumbToolchain::Debian => Command::new(DEBIAN_CARGO),
-        };
+    pub fn cargo_build(&self, dir: &Path, args: &[&str]) -> Result<()> {
+        let mut command = Command::new(&self.cargo);
         command.current_dir(dir).arg("build").args(args);
         for variable in LEAKED_VARIABLES {
             command.env_remove(variable);
@@ -89,14 +370,15 @@ impl ThumbToolchain {
                 command.env_remove(&variable);
             }
         }
+        command.env(LINKER_VARIABLE, &self.linker);
         // Panic locations embed source paths; cut the machine-specific prefixes, so the
         // image neither depends on where it was built nor spends ~3 KiB of flash on
         // `/root/.cargo/registry/src/index.crates.io-…/` 47 times.
         // Encoded (0x1f-separated) so that a path with spaces stays one argument.
         command.env("CARGO_ENCODED_RUSTFLAGS", remap_flags(dir));
-        if self == ThumbToolchain::Debian {
+        if let Some(rustc) = &self.rustc {
             command
-                .env("RUSTC", DEBIAN_RUSTC)
+                .env("RUSTC", rustc)
                 .env("RUSTC_BOOTSTRAP", "1")
                 .arg("-Zbuild-std=core");
         }
@@ -105,14 +387,16 @@ impl ThumbToolchain {
             .map(|arg| arg.to_string_lossy())
             .collect();
         eprintln!(
-            "xtask: in {}: {} {} ({self:?} toolchain)",
+            "xtask: in {}: {} {} ({:?} toolchain, linker {})",
             dir.display(),
             command.get_program().to_string_lossy(),
-            shown_args.join(" ")
+            shown_args.join(" "),
+            self.kind,
+            self.linker.display()
         );
         let status = command
             .status()
-            .with_context(|| format!("cannot run {:?}", command.get_program()))?;
+            .with_context(|| format!("cannot run {}", self.cargo.display()))?;
         if !status.success() {
             bail!("build failed ({status}) in {}", dir.display());
         }
@@ -120,56 +404,11 @@ impl ThumbToolchain {
     }
 }
 
-/// rustup is here and lists the thumb target as installed.
-fn rustup_has_thumb_target() -> bool {
-    let Ok(output) = Command::new("rustup")
-        .args(["target", "list", "--installed"])
-        .env_remove("RUSTUP_TOOLCHAIN")
-        .output()
-    else {
-        return false;
-    };
-    output.status.success()
-        && String::from_utf8_lossy(&output.stdout)
-            .lines()
-            .any(|line| line.trim() == THUMB_TARGET)
-}
-
-/// Debian's rustc, cargo and the core sources are installed.
-fn debian_toolchain_present() -> bool {
-    [DEBIAN_RUSTC, DEBIAN_CARGO, DEBIAN_RUST_SRC]
-        .iter()
-        .all(|path| Path::new(path).exists())
-}
-
-/// `apt-get update`, then installs [`DEBIAN_PACKAGES`].
-fn install_debian_toolchain() -> Result<()> {
-    run(Command::new("apt-get").arg("update"))?;
-    run(Command::new("apt-get")
-        .args(["install", "-y", "--no-install-recommends"])
-        .args(DEBIAN_PACKAGES)
-        .env("DEBIAN_FRONTEND", "noninteractive"))?;
-    if !debian_toolchain_present() {
-        bail!("apt-get installed {DEBIAN_PACKAGES:?}, but {DEBIAN_RUSTC}, {DEBIAN_CARGO} or {DEBIAN_RUST_SRC} is still missing");
-    }
-    Ok(())
-}
-
-fn run(command: &mut Command) -> Result<()> {
-    let status = command
-        .status()
-        .with_context(|| format!("cannot run {command:?}"))?;
-    if !status.success() {
-        bail!("{command:?} failed ({status})");
-    }
-    Ok(())
-}
-
 /// `--remap-path-prefix` flags for the registry sources and the repository, in
 /// `CARGO_ENCODED_RUSTFLAGS` form.
 fn remap_flags(dir: &Path) -> String {
     let cargo_home = std::env::var_os("CARGO_HOME")
-        .map(std::path::PathBuf::from)
+        .map(PathBuf::from)
         .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".cargo")));
     let mut flags = Vec::new();
     if let Some(home) = cargo_home {

@@ -7,7 +7,7 @@
 
 mod sensor;
 
-pub use sensor::{Convention, SensorBias, SensorModel, Tilt, TiltAxis};
+pub use sensor::{Convention, SensorBias, SensorModel, Tilt, TiltAxis, UnknownName};
 
 use crate::real::{deg_to_rad, Real};
 use nalgebra::{Rotation3, Vector3};

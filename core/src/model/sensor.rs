@@ -172,6 +172,28 @@ impl Convention {
     }
 }
 
+impl core::str::FromStr for Convention {
+    type Err = UnknownName;
+
+    /// `rpy` or `axis`, as on the command line and in files.
+    fn from_str(s: &str) -> Result<Self, UnknownName> {
+        Convention::parse(s).ok_or(UnknownName)
+    }
+}
+
+/// A name that is not one of the choices (the caller lists them).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UnknownName;
+
+impl core::fmt::Display for UnknownName {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str("not one of the accepted names")
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for UnknownName {}
+
 /// The sensor's zero error: a reading is `convention(u) + bias`.
 pub type SensorBias<T> = Tilt<T>;
 

@@ -1,0 +1,271 @@
+//! Numeric command-line values with a stated range.
+//!
+//! Every numeric option of every subcommand parses through one of these, and its help
+//! states the same interval (`Range: [0, 1] deg`), so a value outside it (0 where 0 is
+//! meaningless, a negative, 1e308, NaN, ±inf) is a named error with exit status 2 before
+//! anything runs, never a panic, a hang or a silently odd number.
+//! `tests/option_walk.rs` reads each stated range back from `--help` and walks every
+//! option through those values.
+
+use clap::builder::TypedValueParser;
+use clap::error::ErrorKind;
+use std::ffi::OsStr;
+use std::fmt;
+
+/// The sensor's reading convention: `rpy` or `axis` (METHOD.md), listed in the help.
+pub fn convention() -> impl TypedValueParser<Value = zerocal_core::model::Convention> {
+    clap::builder::PossibleValuesParser::new(["rpy", "axis"])
+        .try_map(|name| name.parse::<zerocal_core::model::Convention>())
+}
+
+/// Seeds: any `u64`.
+pub const SEED: CountIn<u64> = CountIn::new(0, u64::MAX);
+
+/// A base tilt or a sensor bias, per axis: a robot base tilted more than 10° is not
+/// standing on its foundation, and the SCL3300's offset is at most ±1.15°.
+pub const TILT_PAIR: PairIn = PairIn(RealIn::closed(-10.0, 10.0, "deg"));
+
+/// A condition-number limit: above 1e5 a pose set is rank deficient whatever the limit
+/// (`zerocal_core::fit::RANK_DEFICIENT_CONDITION`).
+pub const CONDITION: RealIn = RealIn::above(1.0, 1e5, "");
+
+/// A closed or half-open interval of finite reals, with the unit shown in messages.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RealIn {
+    lo: f64,
+    lo_open: bool,
+    hi: f64,
+    hi_open: bool,
+    unit: &'static str,
+}
+
+impl RealIn {
+    /// `[lo, hi]`.
+    pub const fn closed(lo: f64, hi: f64, unit: &'static str) -> Self {
+        RealIn {
+            lo,
+            lo_open: false,
+            hi,
+            hi_open: false,
+            unit,
+        }
+    }
+
+    /// `(lo, hi]`: for quantities that must be positive.
+    pub const fn above(lo: f64, hi: f64, unit: &'static str) -> Self {
+        RealIn {
+            lo,
+            lo_open: true,
+            hi,
+            hi_open: false,
+            unit,
+        }
+    }
+
+    /// Whether `v` lies inside (NaN never does).
+    pub fn contains(&self, v: f64) -> bool {
+        let above_lo = if self.lo_open {
+            v > self.lo
+        } else {
+            v >= self.lo
+        };
+        let below_hi = if self.hi_open {
+            v < self.hi
+        } else {
+            v <= self.hi
+        };
+        above_lo && below_hi
+    }
+
+    /// Parses and checks one number.
+    ///
+    /// # Errors
+    /// Not a number, or outside the interval: the message states the interval.
+    pub fn check(&self, text: &str) -> Result<f64, String> {
+        let v: f64 = text
+            .trim()
+            .parse()
+            .map_err(|_| format!("'{text}' is not a number; must be in {self}"))?;
+        if self.contains(v) {
+            Ok(v)
+        } else {
+            Err(format!("{v} is outside the range; must be in {self}"))
+        }
+    }
+}
+
+impl fmt::Display for RealIn {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}{}, {}{}",
+            if self.lo_open { '(' } else { '[' },
+            self.lo,
+            self.hi,
+            if self.hi_open { ')' } else { ']' }
+        )?;
+        if !self.unit.is_empty() {
+            write!(f, " {}", self.unit)?;
+        }
+        Ok(())
+    }
+}
+
+impl TypedValueParser for RealIn {
+    type Value = f64;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<f64, clap::Error> {
+        self.check(&value.to_string_lossy())
+            .map_err(|message| invalid(cmd, arg, value, &message))
+    }
+}
+
+/// An inclusive interval of integers, parsed into `T`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CountIn<T> {
+    lo: u64,
+    hi: u64,
+    _into: std::marker::PhantomData<fn() -> T>,
+}
+
+impl<T> CountIn<T> {
+    /// `[lo, hi]`.
+    pub const fn new(lo: u64, hi: u64) -> Self {
+        CountIn {
+            lo,
+            hi,
+            _into: std::marker::PhantomData,
+        }
+    }
+
+    /// Parses and checks one integer.
+    ///
+    /// # Errors
+    /// Not an integer, or outside the interval: the message states the interval.
+    pub fn check(&self, text: &str) -> Result<u64, String> {
+        let v: u64 = text
+            .trim()
+            .parse()
+            .map_err(|_| format!("'{text}' is not a whole number; must be in {self}"))?;
+        if (self.lo..=self.hi).contains(&v) {
+            Ok(v)
+        } else {
+            Err(format!("{v} is outside the range; must be in {self}"))
+        }
+    }
+}
+
+impl<T> fmt::Display for CountIn<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "[{}, {}]", self.lo, self.hi)
+    }
+}
+
+impl<T> TypedValueParser for CountIn<T>
+where
+    T: TryFrom<u64> + Clone + Send + Sync + 'static,
+{
+    type Value = T;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<T, clap::Error> {
+        let v = self
+            .check(&value.to_string_lossy())
+            .map_err(|message| invalid(cmd, arg, value, &message))?;
+        T::try_from(v).map_err(|_| invalid(cmd, arg, value, "too large for this machine"))
+    }
+}
+
+/// Two numbers `X,Y`, each in the same interval (a base tilt, a sensor bias).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PairIn(pub RealIn);
+
+impl PairIn {
+    /// Parses and checks `X,Y`.
+    ///
+    /// # Errors
+    /// Not two numbers, or either outside the interval.
+    pub fn check(&self, text: &str) -> Result<(f64, f64), String> {
+        let mut it = text.split(',');
+        match (it.next(), it.next(), it.next()) {
+            (Some(a), Some(b), None) => Ok((self.0.check(a)?, self.0.check(b)?)),
+            _ => Err(format!(
+                "expected two numbers X,Y, got '{text}'; each must be in {}",
+                self.0
+            )),
+        }
+    }
+}
+
+impl fmt::Display for PairIn {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "each {}", self.0)
+    }
+}
+
+impl TypedValueParser for PairIn {
+    type Value = (f64, f64);
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &OsStr,
+    ) -> Result<(f64, f64), clap::Error> {
+        self.check(&value.to_string_lossy())
+            .map_err(|message| invalid(cmd, arg, value, &message))
+    }
+}
+
+/// clap's "invalid value" error (exit status 2), naming the option, the value and why.
+fn invalid(cmd: &clap::Command, arg: Option<&clap::Arg>, value: &OsStr, why: &str) -> clap::Error {
+    let name = arg.map_or_else(|| "the value".to_owned(), |a| format!("'{a}'"));
+    clap::Error::raw(
+        ErrorKind::ValueValidation,
+        format!(
+            "invalid value '{}' for {name}: {why}\n",
+            value.to_string_lossy()
+        ),
+    )
+    .with_cmd(cmd)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reals_refuse_non_finite_and_out_of_range() {
+        let r = RealIn::above(0.0, 1.0, "deg");
+        assert_eq!(r.check("0.5"), Ok(0.5));
+        assert_eq!(r.check("1"), Ok(1.0));
+        for bad in ["0", "-1", "1e308", "NaN", "inf", "-inf", "x", ""] {
+            let e = r.check(bad).unwrap_err();
+            assert!(e.contains("(0, 1] deg"), "{bad}: {e}");
+        }
+        assert!(RealIn::closed(0.0, 1.0, "").check("0").is_ok());
+    }
+
+    #[test]
+    fn counts_and_pairs_state_their_range() {
+        let c = CountIn::<usize>::new(4, 64);
+        assert_eq!(c.check("4"), Ok(4));
+        for bad in ["3", "65", "-1", "1e308", "NaN", "4.5"] {
+            assert!(c.check(bad).unwrap_err().contains("[4, 64]"), "{bad}");
+        }
+        let p = PairIn(RealIn::closed(-10.0, 10.0, "deg"));
+        assert_eq!(p.check("0.3, -0.5"), Ok((0.3, -0.5)));
+        for bad in ["0.3", "1,2,3", "nan,1", "1,inf", "11,0"] {
+            assert!(p.check(bad).unwrap_err().contains("[-10, 10] deg"), "{bad}");
+        }
+    }
+}
