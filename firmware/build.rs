@@ -10,7 +10,8 @@
 use std::fmt::Write as _;
 use std::{env, fs, path::PathBuf};
 
-use zerocal_core::plan::{pendant_default, Candidate, DEFAULT_POOL};
+use zerocal_core::plan::{Candidate, DEFAULT_POOL};
+use zerocal_core::procedure::pendant_default;
 use zerocal_core::procedure::ProcedureConfig;
 
 fn main() {

@@ -1,11 +1,14 @@
 //! One 30-pose stage-2 solve on the paper's Table 4 setup, in f64 (desktop) and f32
 //! (the pendant's precision, here on the host CPU).
 
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
-use zerocal_core::fit::{fit, FitConfig, PoseReading, Stage2Model};
 use zerocal_core::model::{Convention, Tilt};
-use zerocal_host_tests::sim::{PoseSampler, SimInclinometer, SimRobot, Table4};
+use zerocal_core::stage2::{fit, FitConfig, PoseReading, Stage2Model};
+use zerocal_sim::{PoseSampler, SimInclinometer, SimRobot, Table4};
 
 fn table4_poses() -> Vec<PoseReading<f64>> {
     let robot = SimRobot::paper(Table4::OFFSETS_DEG, (0.0, 0.0));

@@ -18,6 +18,12 @@ pub fn convention() -> impl TypedValueParser<Value = zerocal_core::model::Conven
         .try_map(|name| name.parse::<zerocal_core::model::Convention>())
 }
 
+/// The planner's criterion: `a` or `d`, listed in the help.
+pub fn criterion() -> impl TypedValueParser<Value = zerocal_core::plan::Criterion> {
+    clap::builder::PossibleValuesParser::new(["a", "d"])
+        .try_map(|name| name.parse::<zerocal_core::plan::Criterion>())
+}
+
 /// Seeds: any `u64`.
 pub const SEED: CountIn<u64> = CountIn::new(0, u64::MAX);
 
@@ -26,7 +32,7 @@ pub const SEED: CountIn<u64> = CountIn::new(0, u64::MAX);
 pub const TILT_PAIR: PairIn = PairIn(RealIn::closed(-10.0, 10.0, "deg"));
 
 /// A condition-number limit: above 1e5 a pose set is rank deficient whatever the limit
-/// (`zerocal_core::fit::RANK_DEFICIENT_CONDITION`).
+/// (`zerocal_core::stage2::RANK_DEFICIENT_CONDITION`).
 pub const CONDITION: RealIn = RealIn::above(1.0, 1e5, "");
 
 /// A closed or half-open interval of finite reals, with the unit shown in messages.

@@ -7,10 +7,10 @@ use crate::log::{read_log, Log};
 use clap::Args;
 use serde::Serialize;
 use std::path::PathBuf;
-use zerocal_core::fit::{fit, FitConfig, FitResult, SigmaSource, Stage2Model};
 use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, WristChain};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::report::{write_report, Verdict};
+use zerocal_core::stage2::{fit, FitConfig, FitResult, SigmaSource, Stage2Model};
 use zerocal_core::FitError;
 
 /// Arguments of `zerocal identify`.

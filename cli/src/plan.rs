@@ -22,28 +22,19 @@
 
 use crate::args::{CountIn, RealIn, SEED, TILT_PAIR};
 use crate::error::CliError;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use serde::Serialize;
 use std::fmt::Write;
 use std::path::PathBuf;
-use zerocal_core::fit::Stage2Model;
 use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, WristChain, WRIST_JOINTS};
 use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError};
 use zerocal_core::real::{deg_to_rad, rad_to_deg};
-
-/// What the plan optimises.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum CriterionArg {
-    /// A-optimal: least sum of the four predicted variances.
-    A,
-    /// D-optimal: greatest log det JᵀJ.
-    D,
-}
+use zerocal_core::stage2::Stage2Model;
 
 /// Arguments of `zerocal plan`.
 #[derive(Args, Debug, Clone)]
 pub struct PlanArgs {
-    /// Poses to plan (`zerocal_core::plan::MAX_PLAN_POSES` at most). Range: [4, 64].
+    /// Poses to plan (`zerocal_core::plan::MAX_POSES` at most). Range: [4, 64].
     #[arg(long, default_value_t = 8, value_parser = CountIn::<usize>::new(4, 64))]
     pub poses: usize,
     /// Sensor window: readings must stay within ±W degrees. Range: (0, 90] deg.
@@ -68,9 +59,10 @@ pub struct PlanArgs {
     /// Feasible candidate poses to choose from (at least --poses). Range: [4, 65535].
     #[arg(long, default_value_t = 256, value_parser = CountIn::<usize>::new(4, 65_535))]
     pub candidates: usize,
-    /// Optimality criterion.
-    #[arg(long, value_enum, default_value = "a")]
-    pub criterion: CriterionArg,
+    /// Optimality criterion: a (A-optimal, least sum of the four predicted variances)
+    /// or d (D-optimal, greatest log det JᵀJ).
+    #[arg(long, default_value = "a", value_parser = crate::args::criterion())]
+    pub criterion: Criterion,
     /// Sensor convention (rpy or axis).
     #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
     pub convention: Convention,
@@ -226,10 +218,7 @@ impl PlanArgs {
             seed: self.seed,
             candidates: self.candidates,
             noise_sigma_rad: deg_to_rad(self.noise_deg / 3f64.sqrt()),
-            criterion: match self.criterion {
-                CriterionArg::A => Criterion::AOptimal,
-                CriterionArg::D => Criterion::DOptimal,
-            },
+            criterion: self.criterion,
             ..PlanConfig::default()
         })
     }
@@ -290,10 +279,7 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
                 .limits_rad
                 .map(|(lo, hi)| (rad_to_deg(lo), rad_to_deg(hi))),
             noise_deg: args.noise_deg,
-            criterion: match args.criterion {
-                CriterionArg::A => "a",
-                CriterionArg::D => "d",
-            },
+            criterion: args.criterion.name(),
             seed: args.seed,
         };
         return serde_json::to_string_pretty(&j)

@@ -9,9 +9,9 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::io;
 use std::path::{Path, PathBuf};
-use zerocal_core::fit::{PoseReading, Stage2Model};
 use zerocal_core::model::{Tilt, WRIST_JOINTS};
-use zerocal_host_tests::arm6::AccuracyReport;
+use zerocal_core::stage2::{PoseReading, Stage2Model};
+use zerocal_sim::arm6::AccuracyReport;
 
 const SIZE: (u32, u32) = (900, 640);
 const BEFORE: RGBColor = RGBColor(200, 40, 40);
@@ -170,7 +170,7 @@ pub fn write_plots(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use zerocal_host_tests::arm6::{accuracy_test, Arm6};
+    use zerocal_sim::arm6::{accuracy_test, Arm6};
 
     #[test]
     fn writes_four_readable_svgs() {

@@ -9,11 +9,9 @@ use std::fmt::Write;
 use zerocal_core::model::Convention;
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::report::{write_report, Verdict};
-use zerocal_host_tests::arm6::{self, AccuracyReport, Arm6};
-use zerocal_host_tests::sim::session::{
-    fit_config_for, SessionConfig, SessionError, SessionResult,
-};
-use zerocal_host_tests::sim::{Noise, SimSession};
+use zerocal_sim::arm6::{self, AccuracyReport, Arm6};
+use zerocal_sim::session::{fit_config_for, SessionConfig, SessionResult};
+use zerocal_sim::{Noise, SimSession};
 
 /// Arguments of `zerocal simulate`.
 #[derive(Args, Debug, Clone)]
@@ -77,19 +75,11 @@ impl SimulateArgs {
 /// Simulates and identifies.
 pub fn simulate(args: &SimulateArgs) -> Result<(SimSession, SessionResult), CliError> {
     let cfg = args.session_config()?;
-    let session = SimSession::simulate(&cfg).map_err(|e| CliError::Refused(describe(&e)))?;
+    let session = SimSession::simulate(&cfg).map_err(|e| CliError::Refused(e.to_string()))?;
     let result = session
         .identify(&fit_config_for(cfg.noise))
-        .map_err(|e| CliError::Refused(describe(&e)))?;
+        .map_err(|e| CliError::Refused(e.to_string()))?;
     Ok((session, result))
-}
-
-fn describe(e: &SessionError) -> String {
-    match e {
-        SessionError::Sampler(s) => format!("no pose set fits the sensor window: {s:?}"),
-        SessionError::Stage(s) => format!("stage 0/1: {s}"),
-        SessionError::Fit(f) => format!("stage 2: {f}"),
-    }
 }
 
 /// The report: the pendant's view, then the hidden truth beside it.

@@ -7,6 +7,9 @@
 //! the range; inside it, 0 (numbers) or 3 (refused, with a message). Never a panic
 //! (exit 101), a signal or a hang.
 
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 use std::io::Read;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};

@@ -2,11 +2,14 @@
 //! simulated SCL3300) exported over the link's `export`, then identified by the
 //! `zerocal` binary from that file alone: the same offsets as the session's own.
 
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 use std::process::Command;
-use zerocal_core::link::export;
+use zerocal_core::log::export;
 use zerocal_core::Real;
-use zerocal_host_tests::sim::pendant::SimPendant;
-use zerocal_host_tests::sim::scenario::{self, pendant};
+use zerocal_sim::pendant::SimPendant;
+use zerocal_sim::scenario::{self, pendant};
 
 fn export_text<T: Real>(p: &SimPendant<T>) -> String {
     let mut text = String::new();
@@ -51,13 +54,19 @@ fn identify(text: &str, name: &str) -> [f64; 4] {
 }
 
 fn session_offsets_deg<T: Real>(p: &SimPendant<T>) -> [f64; 4] {
-    let fit = p.session.outcome().expect("done").fit.expect("fit");
+    let fit = p
+        .session
+        .outcome()
+        .expect("done")
+        .result
+        .expect("offsets")
+        .fit;
     fit.offsets_rad.map(|v| v.to_f64().to_degrees())
 }
 
 #[test]
 fn export_round_trip_through_identify() {
-    let mut p32 = pendant::<f32>(12, 11);
+    let mut p32 = pendant::<f32>(12, 11).expect("the planner plans 12 poses");
     scenario::whole_session(&mut p32);
     let text = export_text(&p32);
     println!("{}", text.lines().take(9).collect::<Vec<_>>().join("\n"));
@@ -65,15 +74,17 @@ fn export_round_trip_through_identify() {
     let own = session_offsets_deg(&p32);
     let d32 = (0..4).map(|k| (host[k] - own[k]).abs()).fold(0.0, f64::max);
 
-    let mut p64 = pendant::<f64>(12, 11);
+    let mut p64 = pendant::<f64>(12, 11).expect("the planner plans 12 poses");
     scenario::whole_session(&mut p64);
     let text = export_text(&p64);
     let host = identify(&text, "f64.csv");
     let own = session_offsets_deg(&p64);
     let d64 = (0..4).map(|k| (host[k] - own[k]).abs()).fold(0.0, f64::max);
     println!("export -> zerocal identify vs the session's own result: f32 pendant {d32:.2e} deg, f64 {d64:.2e} deg");
-    // Issue 3: 2e-5° when the pendant computes in f32 (the f32/f64 solver difference),
-    // 1e-9° when both are f64 (the export loses nothing).
+    // An f32 pendant: the f32/f64 solver difference, within a tenth of the Table 4
+    // accuracy (2e-5°; 6e-7° measured). Both f64: only the export's 12 decimals of a
+    // degree (±5e-13° per number) move the fit; 1e-11° is 20× that and 1.7e-13° is
+    // measured.
     assert!(d32 < 2e-5, "{d32}");
-    assert!(d64 < 1e-9, "{d64}");
+    assert!(d64 < 1e-11, "{d64}");
 }

@@ -87,6 +87,16 @@ impl fmt::Display for Fixed {
     }
 }
 
+/// An angle in radians shown in degrees with `decimals` decimals.
+pub fn deg_fixed<T: crate::real::Real>(rad: T, decimals: u8) -> Fixed {
+    Fixed::new(crate::real::rad_to_deg(rad.to_f64()), decimals)
+}
+
+/// As [`deg_fixed`], with a `+` on positive values.
+pub fn deg_signed<T: crate::real::Real>(rad: T, decimals: u8) -> Fixed {
+    Fixed::signed(crate::real::rad_to_deg(rad.to_f64()), decimals)
+}
+
 /// Parses a decimal number: optional sign, digits with an optional point, optional
 /// exponent (`-12.5`, `+.5`, `3`, `1e-3`). Digits beyond the 19th significant are
 /// dropped (a relative change below 1e-18). `None` if it is not such a number.

@@ -4,25 +4,37 @@ use crate::decimal::Fixed;
 use crate::model::TiltAxis;
 use core::fmt;
 
-/// A set of the stage-2 parameters Δθ3..Δθ6 (bit k = joint k+3).
+/// A set of stage-2 parameters by index (bit k = parameter k; 0..=3 are Δθ3..Δθ6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub struct ParamSet(pub u8);
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct ParamSet(pub u32);
 
 impl ParamSet {
-    /// Adds joint index `k` (0 = joint 3).
+    /// How many parameters a set can name.
+    pub const CAPACITY: usize = 32;
+
+    /// Adds parameter `k` (0 = Δθ3). An index past [`CAPACITY`](Self::CAPACITY) names
+    /// no parameter and leaves the set as it is.
     pub fn with(self, k: usize) -> Self {
-        ParamSet(self.0 | (1 << k))
+        match u32::try_from(k).ok().and_then(|k| 1u32.checked_shl(k)) {
+            Some(bit) => ParamSet(self.0 | bit),
+            None => self,
+        }
     }
 
-    /// Whether joint index `k` (0 = joint 3) is in the set.
+    /// Whether parameter `k` (0 = Δθ3) is in the set.
     pub fn contains(self, k: usize) -> bool {
-        self.0 & (1 << k) != 0
+        u32::try_from(k)
+            .ok()
+            .and_then(|k| 1u32.checked_shl(k))
+            .is_some_and(|bit| self.0 & bit != 0)
     }
 
     /// Robot joint numbers (3..=6) in the set.
     pub fn joints(self) -> impl Iterator<Item = u8> {
         (0..4u8)
-            .filter(move |&k| self.contains(k as usize))
+            .filter(move |&k| self.contains(usize::from(k)))
             .map(|k| k + 3)
     }
 }
@@ -44,6 +56,8 @@ impl fmt::Display for ParamSet {
 
 /// Why stage 2 gave no numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum FitError {
     /// Fewer poses than the fit needs.
     TooFewPoses {
@@ -144,6 +158,8 @@ impl fmt::Display for FitError {
 
 /// Why stage 0 or stage 1 gave no numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum StageError {
     /// A reading is NaN or infinite.
     NonFiniteReading,
@@ -191,6 +207,39 @@ impl fmt::Display for StageError {
     }
 }
 
+/// A refusal in a few words for machine-read output (the on-target check): the
+/// variant's name, then what it names (`RankDeficient j3+j5`, `ReadingOutOfRange 4 y`).
+pub struct Terse<'a, E>(pub &'a E);
+
+impl fmt::Display for Terse<'_, FitError> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0 {
+            FitError::TooFewPoses { got, min } => write!(f, "TooFewPoses {got} {min}"),
+            FitError::NonFiniteJoint { pose } => write!(f, "NonFiniteJoint {pose}"),
+            FitError::NonFiniteReading { pose } => write!(f, "NonFiniteReading {pose}"),
+            FitError::ReadingOutOfRange { pose, axis, .. } => {
+                write!(f, "ReadingOutOfRange {pose} {axis}")
+            }
+            FitError::RankDeficient { params } => write!(f, "RankDeficient {params}"),
+            FitError::IllConditioned { params, .. } => write!(f, "IllConditioned {params}"),
+            FitError::NoConvergence { .. } => f.write_str("NoConvergence"),
+            FitError::NonFiniteResult => f.write_str("NonFiniteResult"),
+        }
+    }
+}
+
+impl fmt::Display for Terse<'_, StageError> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0 {
+            StageError::NonFiniteReading => f.write_str("NonFiniteReading"),
+            StageError::ReadingOutOfRange { axis, .. } => write!(f, "ReadingOutOfRange {axis}"),
+            StageError::InconsistentReading => f.write_str("InconsistentReading"),
+            StageError::BadDirectionSign => f.write_str("BadDirectionSign"),
+            StageError::NonFiniteCommand => f.write_str("NonFiniteCommand"),
+        }
+    }
+}
+
 #[cfg(feature = "std")]
 impl std::error::Error for FitError {}
 #[cfg(feature = "std")]
@@ -205,5 +254,20 @@ mod tests {
         let s = ParamSet::default().with(1).with(3);
         assert_eq!(format!("{s}"), "j4+j6");
         assert!(s.contains(1) && !s.contains(0));
+    }
+
+    #[test]
+    fn param_set_holds_every_index_up_to_its_capacity() {
+        // A u8 shifted by 8 or more lost the bit (or overflowed): every index counts.
+        for k in 0..ParamSet::CAPACITY {
+            let s = ParamSet::default().with(k);
+            assert!(s.contains(k), "{k}");
+            assert_eq!(s.0.count_ones(), 1, "{k}");
+        }
+        let full = ParamSet::default()
+            .with(ParamSet::CAPACITY)
+            .with(usize::MAX);
+        assert_eq!(full, ParamSet::default());
+        assert!(!full.contains(ParamSet::CAPACITY));
     }
 }

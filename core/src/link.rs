@@ -13,15 +13,16 @@
 //! Unknown or malformed lines get an `error:` line and change nothing. Parsing and
 //! formatting live here; the firmware's link task only moves bytes.
 
-use crate::decimal::{self, Fixed};
-use crate::fit::FitResult;
+use crate::decimal;
+use crate::decimal::{deg_fixed, deg_signed};
+use crate::log::result_line;
 use crate::model::WRIST_JOINTS;
-use crate::procedure::{Phase, Plan, ProcedureConfig, Session, MAX_POSES};
-use crate::real::{deg_to_rad, rad_to_deg, Real};
+use crate::plan::{PoseList, MAX_POSES};
+use crate::procedure::{Phase, ProcedureState};
+use crate::real::{deg_to_rad, Real};
 use core::fmt::{self, Write};
 
-/// A line of output: long enough for the widest export line.
-pub type Line = heapless::String<192>;
+pub use crate::log::Line;
 
 /// The text of `help`.
 pub const HELP: &[&str] = &[
@@ -37,6 +38,8 @@ pub const HELP: &[&str] = &[
 
 /// A parsed command.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Command {
     /// `help`
     Help,
@@ -56,6 +59,8 @@ pub enum Command {
 
 /// What is wrong with a line.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum LinkError {
     /// Not a command.
     UnknownCommand,
@@ -103,7 +108,7 @@ impl fmt::Display for LinkError {
             LinkError::PlanTooShort { rows } => write!(
                 f,
                 "{rows} poses: a plan needs at least {} ; plan unchanged",
-                crate::fit::MIN_POSES
+                crate::stage2::MIN_POSES
             ),
         }
     }
@@ -138,7 +143,7 @@ pub fn parse_command(line: &str) -> Result<Command, LinkError> {
 /// A `plan set` in progress: rows accumulate here and replace the plan only on `end`.
 #[derive(Clone, Debug, Default)]
 pub struct PlanUpload<T> {
-    rows: Plan<T>,
+    rows: PoseList<T>,
 }
 
 /// What a line did to an upload.
@@ -147,13 +152,15 @@ pub enum UploadStep<T> {
     /// Row taken; send more.
     More,
     /// `end`: the new plan.
-    Done(Plan<T>),
+    Done(PoseList<T>),
 }
 
 impl<T: Real> PlanUpload<T> {
     /// An empty upload.
     pub fn new() -> Self {
-        PlanUpload { rows: Plan::new() }
+        PlanUpload {
+            rows: PoseList::new(),
+        }
     }
 
     /// Feeds one line. Blank lines and `#` comments are skipped.
@@ -167,7 +174,7 @@ impl<T: Real> PlanUpload<T> {
             return Ok(UploadStep::More);
         }
         if line == "end" {
-            if self.rows.len() < crate::fit::MIN_POSES {
+            if self.rows.len() < crate::stage2::MIN_POSES {
                 return Err(LinkError::PlanTooShort {
                     rows: self.rows.len(),
                 });
@@ -199,178 +206,11 @@ impl<T: Real> PlanUpload<T> {
     }
 }
 
-/// Decimals of a degree in the export: 1e-12° is 2e-14 rad, below the resolution of
-/// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the
-/// pendant's numbers, and an `f64` session's offsets move by ~1e-12° at most.
-pub const EXPORT_DECIMALS: u8 = 12;
-
-fn deg<T: Real>(w: &mut Line, rad: T) -> fmt::Result {
-    // In f64, whatever T is: the f32 value converts exactly.
-    write!(
-        w,
-        "{}",
-        Fixed::new(rad_to_deg(rad.to_f64()), EXPORT_DECIMALS)
-    )
-}
-
-fn deg_fixed<T: Real>(rad: T, decimals: u8) -> Fixed {
-    Fixed::new(rad_to_deg(rad.to_f64()), decimals)
-}
-
-fn deg_signed<T: Real>(rad: T, decimals: u8) -> Fixed {
-    Fixed::signed(rad_to_deg(rad.to_f64()), decimals)
-}
-
-/// The lines of `export`, produced one at a time so the link can send each before
-/// formatting the next.
-pub struct Export<'a, T: Real> {
-    session: &'a Session<T>,
-    config: &'a ProcedureConfig<T>,
-    line: usize,
-}
-
-/// Starts an export.
-pub fn export<'a, T: Real>(
-    session: &'a Session<T>,
-    config: &'a ProcedureConfig<T>,
-) -> Export<'a, T> {
-    Export {
-        session,
-        config,
-        line: 0,
-    }
-}
-
-const EXPORT_HEAD: usize = 7;
-
-impl<T: Real> Export<'_, T> {
-    fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
-        let s = self.session;
-        match i {
-            0 => w.write_str("# zerocal pendant export: stage-2 log for 'zerocal identify'"),
-            1 => write!(w, "# convention {}", self.config.convention.name()),
-            2 => match s.bias() {
-                Some(b) => {
-                    w.write_str("# stage0_bias_deg ")?;
-                    deg(w, b.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, b.y_rad)
-                }
-                None => w.write_str("# stage0_bias_deg none"),
-            },
-            3 => match s.stage1_readings() {
-                (Some(a), Some(b)) => {
-                    w.write_str("# stage1_readings_deg before ")?;
-                    deg(w, a.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, a.y_rad)?;
-                    w.write_str(" after ")?;
-                    deg(w, b.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, b.y_rad)?;
-                    w.write_str(" c2_deg ")?;
-                    deg(w, self.config.j2_commanded_rad)?;
-                    write!(w, " s2 {}", self.config.j2_direction)
-                }
-                _ => w.write_str("# stage1_readings_deg none"),
-            },
-            4 => match s.stage1() {
-                Some(r) => {
-                    w.write_str("# stage1 delta_theta2_deg ")?;
-                    deg(w, r.delta_theta2_rad)?;
-                    w.write_str(" alpha_deg ")?;
-                    deg(w, r.base_tilt.alpha_rad)?;
-                    w.write_str(" beta_deg ")?;
-                    deg(w, r.base_tilt.beta_rad)?;
-                    w.write_str(" bias_y_deg ")?;
-                    deg(w, r.bias_y_rad)
-                }
-                None => w.write_str("# stage1 none"),
-            },
-            5 => match s.stage2_model(self.config) {
-                // The flags that give `zerocal identify` the pendant's own model.
-                Some(m) => {
-                    write!(
-                        w,
-                        "# identify: --convention {} --base-tilt-deg ",
-                        self.config.convention.name()
-                    )?;
-                    deg(w, m.base_tilt.alpha_rad)?;
-                    w.write_char(',')?;
-                    deg(w, m.base_tilt.beta_rad)?;
-                    w.write_str(" --bias-deg ")?;
-                    deg(w, m.sensor.bias.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, m.sensor.bias.y_rad)
-                }
-                None => write!(
-                    w,
-                    "# identify: --convention {}",
-                    self.config.convention.name()
-                ),
-            },
-            _ => w.write_str(crate::procedure::LOG_HEADER),
-        }
-    }
-
-    fn tail(&self, w: &mut Line) -> Option<fmt::Result> {
-        let outcome = self.session.outcome()?;
-        Some(match &outcome.fit {
-            Ok(r) => result_line(w, r),
-            Err(e) => write!(w, "# stage2 refused: {e}"),
-        })
-    }
-}
-
-fn result_line<T: Real>(w: &mut Line, r: &FitResult<T>) -> fmt::Result {
-    w.write_str("# stage2 offsets_deg ")?;
-    for (k, v) in r.offsets_rad.iter().enumerate() {
-        if k > 0 {
-            w.write_char(',')?;
-        }
-        deg(w, *v)?;
-    }
-    w.write_str(" sigma_deg ")?;
-    for (k, v) in r.sigma_rad.iter().enumerate() {
-        if k > 0 {
-            w.write_char(',')?;
-        }
-        write!(w, "{}", deg_fixed(*v, 6))?;
-    }
-    write!(w, " residual_rms_deg {}", deg_fixed(r.residual_rms_rad, 6))
-}
-
-impl<T: Real> Iterator for Export<'_, T> {
-    type Item = Result<Line, fmt::Error>;
-
-    fn next(&mut self) -> Option<Self::Item> {
-        let i = self.line;
-        self.line += 1;
-        let mut w = Line::new();
-        let captures = self.session.captures();
-        let r = if i < EXPORT_HEAD {
-            self.head(i, &mut w)
-        } else if let Some((_, p)) = captures.get(i - EXPORT_HEAD) {
-            (|| {
-                for q in p.joints_rad {
-                    deg(&mut w, q)?;
-                    w.write_char(',')?;
-                }
-                deg(&mut w, p.reading.x_rad)?;
-                w.write_char(',')?;
-                deg(&mut w, p.reading.y_rad)
-            })()
-        } else if i == EXPORT_HEAD + captures.len() {
-            self.tail(&mut w)?
-        } else {
-            return None;
-        };
-        Some(r.map(|()| w))
-    }
-}
-
 /// The lines of `status`.
-pub fn status<T: Real>(session: &Session<T>, line: usize) -> Option<Result<Line, fmt::Error>> {
+pub fn status<T: Real>(
+    session: &ProcedureState<T>,
+    line: usize,
+) -> Option<Result<Line, fmt::Error>> {
     let mut w = Line::new();
     let r = match line {
         0 => write!(
@@ -399,9 +239,9 @@ pub fn status<T: Real>(session: &Session<T>, line: usize) -> Option<Result<Line,
             ),
             None => w.write_str("stage 1: not done"),
         },
-        3 => match session.outcome().map(|o| &o.fit) {
-            Some(Ok(r)) => result_line(&mut w, r),
-            Some(Err(e)) => write!(w, "stage 2 refused: {e}"),
+        3 => match session.outcome().map(|o| &o.result) {
+            Some(Ok(r)) => result_line(&mut w, &r.fit),
+            Some(Err(e)) => write!(w, "refused: {e}"),
             None => w.write_str("stage 2: not done"),
         },
         4 => match session.last_result() {
@@ -426,7 +266,7 @@ pub fn status<T: Real>(session: &Session<T>, line: usize) -> Option<Result<Line,
 }
 
 /// The lines of `plan`.
-pub fn plan_line<T: Real>(plan: &Plan<T>, line: usize) -> Option<Result<Line, fmt::Error>> {
+pub fn plan_line<T: Real>(plan: &PoseList<T>, line: usize) -> Option<Result<Line, fmt::Error>> {
     let mut w = Line::new();
     let r = if line == 0 {
         w.write_str("pose,j3_deg,j4_deg,j5_deg,j6_deg")

@@ -2,10 +2,10 @@
 //! 1σ beside every number, and a verdict that says what to distrust.
 
 use crate::decimal::Fixed;
-use crate::fit::{FitConfig, FitResult, SigmaSource};
 use crate::model::WRIST_JOINTS;
 use crate::real::{rad_to_deg, Real};
 use crate::stage1::Stage1Result;
+use crate::stage2::{FitConfig, FitResult, SigmaSource};
 use core::fmt::{self, Write};
 
 /// A residual RMS this many times the sensor's noise means the data do not fit the
@@ -14,6 +14,8 @@ pub const RESIDUAL_WARN_FACTOR: f64 = 3.0;
 
 /// Something the operator should know before trusting the numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Warning {
     /// Residual RMS far above the sensor's noise.
     ResidualHigh {

@@ -62,9 +62,10 @@ pub fn temperature_celsius(raw: u16) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::isclose;
 
     fn close(a: f32, b: f32, tolerance: f32) -> bool {
-        (a - b).abs() <= tolerance
+        isclose(a, b, 0.0, tolerance)
     }
 
     #[test]

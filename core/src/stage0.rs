@@ -7,11 +7,27 @@
 
 use crate::error::StageError;
 use crate::model::{SensorBias, Tilt};
-use crate::real::Real;
-use crate::stage1::check_reading;
+use crate::real::{rad_to_deg, Real};
+
+/// Checks that a reading is finite and inside the sensor's range (stages 0 and 1).
+pub(crate) fn check_reading<T: Real>(t: &Tilt<T>, range_rad: T) -> Result<(), StageError> {
+    if !t.is_finite() {
+        return Err(StageError::NonFiniteReading);
+    }
+    match t.axis_beyond(range_rad) {
+        Some(axis) => Err(StageError::ReadingOutOfRange {
+            axis,
+            value_deg: rad_to_deg(t.get(axis)).to_f64() as f32,
+            range_deg: rad_to_deg(range_rad).to_f64() as f32,
+        }),
+        None => Ok(()),
+    }
+}
 
 /// The two readings of a reversal.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Reversal<T> {
     /// Reading before the half turn.
     pub first: Tilt<T>,

@@ -8,27 +8,14 @@
 //! an `axis` reading is turned into its `rpy` equivalent through the up vector first.
 
 use crate::error::StageError;
-use crate::fit::Stage2Model;
-use crate::model::{BaseTilt, Convention, SensorBias, SensorModel, Tilt, WristChain};
-use crate::real::{rad_to_deg, Real};
-
-/// Checks that a reading is finite and inside the sensor's range.
-pub(crate) fn check_reading<T: Real>(t: &Tilt<T>, range_rad: T) -> Result<(), StageError> {
-    if !t.is_finite() {
-        return Err(StageError::NonFiniteReading);
-    }
-    match t.axis_beyond(range_rad) {
-        Some(axis) => Err(StageError::ReadingOutOfRange {
-            axis,
-            value_deg: rad_to_deg(t.get(axis)).to_f64() as f32,
-            range_deg: rad_to_deg(range_rad).to_f64() as f32,
-        }),
-        None => Ok(()),
-    }
-}
+use crate::model::{BaseTilt, Convention, SensorBias, Tilt};
+use crate::real::Real;
+use crate::stage0::check_reading;
 
 /// The stage-1 measurement.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct AxisOneTurn<T> {
     /// Reading with axis 1 at its mark.
     pub before: Tilt<T>,
@@ -42,6 +29,8 @@ pub struct AxisOneTurn<T> {
 
 /// What stage 1 finds.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Stage1Result<T> {
     /// Base tilt (α about the joint-2 direction, β about the other horizontal).
     pub base_tilt: BaseTilt<T>,
@@ -64,81 +53,6 @@ impl<T: Real> Stage1Result<T> {
         let half = T::lit(0.5);
         let var = if self.bias_x_known { T::one() } else { half };
         noise_sigma_rad * var.sqrt()
-    }
-
-    /// 1σ of α and β: half-differences of two readings.
-    pub fn base_tilt_sigma_rad(&self, noise_sigma_rad: T) -> T {
-        noise_sigma_rad * T::lit(0.5).sqrt()
-    }
-}
-
-/// What stages 0-1 hand to stage 2: the model of the frame joint 3 turns in and the
-/// sensor, and how well they are known.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Handover<T: Real> {
-    /// The stage-2 model.
-    pub model: Stage2Model<T>,
-    /// Covariance of (α, β, bias x, bias y) of `model`, in units of one reading's noise
-    /// variance (for [`crate::fit::FitConfig::model_covariance`]).
-    pub model_covariance: [[T; 4]; 4],
-}
-
-impl<T: Real> Stage1Result<T> {
-    /// The stage-2 model: stage 2 runs with axis 1 back at its mark and joint 2 where
-    /// stage 1 had it, moved by `j2_change_rad` (commanded) if at all, so joint 3 turns
-    /// in `Ry(β)·Rx(α + φ + s2·j2_change)`: the base tilt composed with joint 2's true
-    /// angle φ (both turn about the joint-2 direction). Leaving φ out would move all of
-    /// it into Δθ3, unseen.
-    ///
-    /// In `rpy`, α + φ = x1 − bx: stage 1's first reading less the stage-0 bias. Its
-    /// error, n1 − e_bx, has variance 1 + ½ (without stage 0, 1) and covariance −½ with
-    /// the bias x error; β and the y bias are half-differences and half-sums of two
-    /// readings (½ each, uncorrelated); the bias x is stage 0's half-sum (½), or 0 and
-    /// wrong when there was no stage 0 (the report warns).
-    pub fn handover(
-        &self,
-        chain: WristChain<T>,
-        convention: Convention,
-        bias: Option<&SensorBias<T>>,
-        j2_change_rad: T,
-        j2_direction: i8,
-    ) -> Handover<T> {
-        let s2 = if j2_direction < 0 {
-            -T::one()
-        } else {
-            T::one()
-        };
-        let model = Stage2Model {
-            chain,
-            base_tilt: BaseTilt {
-                alpha_rad: self.base_tilt.alpha_rad + self.arm_angle_rad + s2 * j2_change_rad,
-                beta_rad: self.base_tilt.beta_rad,
-            },
-            sensor: SensorModel {
-                convention,
-                bias: Tilt::new(bias.map_or(T::zero(), |b| b.x_rad), self.bias_y_rad),
-            },
-        };
-        let (o, h) = (T::zero(), T::lit(0.5));
-        let model_covariance = if bias.is_some() {
-            [
-                [T::lit(1.5), o, -h, o],
-                [o, h, o, o],
-                [-h, o, h, o],
-                [o, o, o, h],
-            ]
-        } else {
-            [
-                [T::one(), o, o, o],
-                [o, h, o, o],
-                [o, o, o, o],
-                [o, o, o, h],
-            ]
-        };
-        Handover {
-            model,
-            model_covariance,
-        }
     }
 }
 

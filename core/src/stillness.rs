@@ -37,6 +37,8 @@ impl<T: Real> Default for StillnessConfig<T> {
 
 /// Where the filter stands.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Stillness<T> {
     /// The readings move more than the threshold within the window.
     Moving,

@@ -6,7 +6,16 @@
 //! A `Screen` owns its data (`View` borrows the session, which stays with the
 //! procedure task), so it can travel through a `Signal`.
 
-use zerocal_core::error::FitError;
+use zerocal_core::session::SessionError;
+
+/// Why the result screen shows no numbers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Refusal {
+    /// The session solver's refusal.
+    Session(SessionError),
+    /// Phase `Done` without an outcome (core never does this).
+    NoOutcome,
+}
 use zerocal_core::model::WRIST_JOINTS;
 use zerocal_core::procedure::{Notice, Outcome, Phase, View};
 use zerocal_core::real::rad_to_deg;
@@ -118,14 +127,14 @@ pub struct ResultScreen {
     /// Page shown, already within `0..pages()`.
     pub page: usize,
     /// The numbers, or why there are none.
-    pub fit: Result<FitSummary, FitError>,
+    pub fit: Result<FitSummary, Refusal>,
     /// The last flash write failed.
     pub store_failed: bool,
 }
 
 impl ResultScreen {
     /// Pages: offsets, details, one per warning; a refusal has one.
-    pub fn pages(fit: &Result<FitSummary, FitError>) -> usize {
+    pub fn pages(fit: &Result<FitSummary, Refusal>) -> usize {
         match fit {
             Ok(summary) => 2 + summary.warnings.len(),
             Err(_) => 1,
@@ -152,7 +161,7 @@ impl Screen {
             let fit = match view.outcome {
                 Some(outcome) => summarize(outcome),
                 // Core always has an outcome in `Done`; say so if it ever does not.
-                None => Err(FitError::TooFewPoses { got: 0, min: 4 }),
+                None => Err(Refusal::NoOutcome),
             };
             let page = extras.result_page % ResultScreen::pages(&fit);
             return Screen::Result(ResultScreen {
@@ -194,8 +203,12 @@ impl Screen {
 }
 
 /// The outcome in degrees.
-fn summarize(outcome: &Outcome<f32>) -> Result<FitSummary, FitError> {
-    let fit = outcome.fit.as_ref().map_err(|e| *e)?;
+fn summarize(outcome: &Outcome<f32>) -> Result<FitSummary, Refusal> {
+    let fit = &outcome
+        .result
+        .as_ref()
+        .map_err(|e| Refusal::Session(*e))?
+        .fit;
     let mut wrist = [Offset {
         value_deg: 0.0,
         sigma_deg: 0.0,

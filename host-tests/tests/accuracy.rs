@@ -3,14 +3,17 @@
 //! before and after entering the zero offsets that stages 0, 1 and 2 identified from
 //! simulated inclinometer readings. Prints the before/after table it asserts.
 
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 mod common;
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::{BaseTilt, Convention, Tilt, WRIST_JOINTS};
-use zerocal_host_tests::arm6::{accuracy_test, arm_offsets, AccuracyReport, Arm6, ARM_JOINTS};
-use zerocal_host_tests::sim::session::{fit_config_for, SessionConfig};
-use zerocal_host_tests::sim::{SimInclinometer, SimRobot, SimSession};
+use zerocal_sim::arm6::{accuracy_test, arm_offsets, AccuracyReport, Arm6, ARM_JOINTS};
+use zerocal_sim::session::{fit_config_for, SessionConfig};
+use zerocal_sim::{SimInclinometer, SimRobot, SimSession};
 
 /// Sessions simulated: each with its own truth, noise and identification.
 const SESSIONS: usize = 20;

@@ -4,18 +4,25 @@
 //! a power cut at any moment, sensor dropouts and faults, a pose out of range, a
 //! robot that never settles.
 
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 use zerocal_core::model::Tilt;
 use zerocal_core::procedure::{Event, Notice, Phase};
 use zerocal_core::real::deg_to_rad;
+use zerocal_core::SessionError;
 use zerocal_core::{FitResult, Real};
-use zerocal_host_tests::sim::pendant::{Mount, SimPendant};
-use zerocal_host_tests::sim::scenario::{self, pendant, HOLD_MS};
-use zerocal_host_tests::sim::scl3300_device::Fault;
+use zerocal_sim::pendant::{Mount, SimPendant};
+use zerocal_sim::scenario::{self, pendant, HOLD_MS};
+use zerocal_sim::scl3300_device::Fault;
 
 /// Errors against the truth, in units of the reported 1σ: (j2, [j3..j6]).
 fn z_scores<T: Real>(p: &SimPendant<T>) -> (f64, [f64; 4], FitResult<T>) {
     let outcome = p.session.outcome().expect("an outcome in phase Done");
-    let fit = outcome.fit.unwrap_or_else(|e| panic!("fit refused: {e}"));
+    let fit = outcome
+        .result
+        .map(|r| r.fit)
+        .unwrap_or_else(|e| panic!("session refused: {e}"));
     let s1 = outcome.stage1.expect("stage 1");
     let z2 = (s1.delta_theta2_rad.to_f64() - p.robot.delta_theta2_rad)
         / s1.delta_theta2_sigma_rad(fit.noise_sigma_rad).to_f64();
@@ -44,10 +51,10 @@ fn check_session<T: Real>(label: &str, p: &SimPendant<T>, poses: usize) {
 
 #[test]
 fn whole_session_f32_and_f64() {
-    let mut p32 = pendant::<f32>(12, 1);
+    let mut p32 = pendant::<f32>(12, 1).expect("the planner plans 12 poses");
     scenario::whole_session(&mut p32);
     check_session("f32 session", &p32, 12);
-    let mut p64 = pendant::<f64>(12, 1);
+    let mut p64 = pendant::<f64>(12, 1).expect("the planner plans 12 poses");
     scenario::whole_session(&mut p64);
     check_session("f64 session", &p64, 12);
     assert_eq!(p32.sensor_errors, 0);
@@ -55,7 +62,7 @@ fn whole_session_f32_and_f64() {
 
 #[test]
 fn back_undoes_the_last_capture_at_every_stage() {
-    let mut p = pendant::<f32>(8, 2);
+    let mut p = pendant::<f32>(8, 2).expect("the planner plans 8 poses");
     scenario::stage0(&mut p);
     assert_eq!(p.session.phase(), Phase::Stage1Before);
     // BACK: redo the second reversal reading.
@@ -105,7 +112,7 @@ fn power_cut_at_any_moment_loses_nothing() {
     // A reference session without cuts, then the same script with a reset every 53
     // samples: every capture must survive, and the session must finish.
     let mut cuts = 0;
-    let mut p = pendant::<f32>(8, 3);
+    let mut p = pendant::<f32>(8, 3).expect("the planner plans 8 poses");
     let mut steps = 0u32;
     scenario::stage0(&mut p);
     let bias = p.session.bias();
@@ -157,13 +164,13 @@ fn power_cut_at_any_moment_loses_nothing() {
     assert!(cuts >= 5);
     check_session("with power cuts", &p, 8);
     // The result itself survives a cut...
-    let result = p.session.outcome().and_then(|o| o.fit.ok());
+    let result = p.session.outcome().and_then(|o| o.result.ok());
     p.power_cycle();
     assert_eq!(p.session.phase(), Phase::Done);
-    assert_eq!(p.session.outcome().and_then(|o| o.fit.ok()), result);
+    assert_eq!(p.session.outcome().and_then(|o| o.result.ok()), result);
     // ...and stays as the last result once a new session starts, across cuts too.
     let last = *p.session.last_result().expect("last result");
-    let offsets = result.map(|r| r.offsets_rad);
+    let offsets = result.map(|r| r.fit.offsets_rad);
     assert_eq!(Some(last.offsets_rad), offsets);
     p.event(Event::Ok);
     assert_eq!(p.session.phase(), Phase::Stage0First);
@@ -182,7 +189,7 @@ fn power_cut_at_any_moment_loses_nothing() {
 
 #[test]
 fn sensor_dropouts_and_faults_never_reach_a_result() {
-    let mut p = pendant::<f32>(8, 4);
+    let mut p = pendant::<f32>(8, 4).expect("the planner plans 8 poses");
     scenario::stage0(&mut p);
     scenario::stage1(&mut p);
     let (_, _, q) = p.session.view().pose.expect("pose");
@@ -243,7 +250,7 @@ fn sensor_dropouts_and_faults_never_reach_a_result() {
 
 #[test]
 fn a_pose_out_of_range_is_not_captured_and_can_be_skipped() {
-    let mut p = pendant::<f32>(8, 5);
+    let mut p = pendant::<f32>(8, 5).expect("the planner plans 8 poses");
     p.config.fit.sensor_range_rad = deg_to_rad(10.0);
     scenario::stage0(&mut p);
     scenario::stage1(&mut p);
@@ -275,7 +282,7 @@ fn a_pose_out_of_range_is_not_captured_and_can_be_skipped() {
 
 #[test]
 fn a_robot_still_moving_is_never_captured() {
-    let mut p = pendant::<f32>(8, 6);
+    let mut p = pendant::<f32>(8, 6).expect("the planner plans 8 poses");
     scenario::stage0(&mut p);
     scenario::stage1(&mut p);
     let (_, _, q) = p.session.view().pose.expect("pose");
@@ -298,12 +305,12 @@ fn a_robot_still_moving_is_never_captured() {
 #[test]
 fn a_degenerate_plan_gives_the_named_refusal_not_numbers() {
     // A plan with θ4 = θ6 = 0 everywhere: joints 3 and 5 cannot be separated.
-    let mut plan = zerocal_core::procedure::Plan::<f32>::new();
+    let mut plan = zerocal_core::plan::PoseList::<f32>::new();
     for i in 0..6 {
         let a = deg_to_rad(-30.0 + 10.0 * i as f32);
         let _ = plan.push([a, 0.0, deg_to_rad(3.0) - a, 0.0]);
     }
-    let mut p = pendant::<f32>(8, 7);
+    let mut p = pendant::<f32>(8, 7).expect("the planner plans 8 poses");
     p.event(Event::SetPlan(plan));
     scenario::stage0(&mut p);
     scenario::stage1(&mut p);
@@ -320,15 +327,17 @@ fn a_degenerate_plan_gives_the_named_refusal_not_numbers() {
     let outcome = p.session.outcome().expect("outcome");
     assert!(
         matches!(
-            outcome.fit,
-            Err(zerocal_core::FitError::RankDeficient { .. })
+            outcome.result,
+            Err(SessionError::Stage2(
+                zerocal_core::FitError::RankDeficient { .. }
+            ))
         ),
         "{:?}",
-        outcome.fit
+        outcome.result
     );
     assert!(matches!(
         p.session.view().notice,
-        Some(Notice::FitRefused(_))
+        Some(Notice::Refused(SessionError::Stage2(_)))
     ));
     let _ = Tilt::<f32>::default();
 }

@@ -2,11 +2,14 @@
 //! `axis` convention to one count, negative angles, and every injected fault refused
 //! with its named error, never a panic and never a reading.
 
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 use core::convert::Infallible;
 
 use embedded_hal::delay::DelayNs;
 use zerocal_core::scl3300::{Error, Mode, Scl3300, StatusFlags, ANGLE_LSB_RAD};
-use zerocal_host_tests::sim::scl3300_device::{
+use zerocal_sim::scl3300_device::{
     angle_to_register, Fault, Scl3300Device, STATUS_DIGI1, STATUS_SAT,
 };
 

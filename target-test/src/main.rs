@@ -13,7 +13,7 @@
 //! case <name> stage1 <α> <β> <by> <Δθ2>   stage 1
 //! case <name> fit <Δθ3> <Δθ4> <Δθ5> <Δθ6> stage 2
 //! case <name> <stage> error <Variant> [<params>]   a stage's named refusal
-//! measure <name> ticks <n> stack <bytes>  the measured fit: SysTick ticks, peak stack
+//! measure <name> ticks <n> stack <bytes>  the measured session solve: ticks, peak stack
 //! done <cases>
 //! ```
 //!
@@ -23,17 +23,29 @@
 #![no_std]
 #![no_main]
 
-mod pipeline;
+/// One session's readings, as the pendant would have taken them.
+pub struct Case {
+    /// One word: it starts every output line of the case.
+    pub name: &'static str,
+    /// The sensor's reading convention.
+    pub convention: Convention,
+    /// Stage 0.
+    pub bias: BiasSource<f32>,
+    /// Stage 1.
+    pub stage1: AxisOneTurn<f32>,
+    /// Stage 2.
+    pub poses: &'static [PoseReading<f32>],
+}
 
 /// The generated test vectors (`cargo xtask target-test`, never committed): a static
-/// `SESSIONS: [Session<'static, f32>; N]` and the name `MEASURED` of the session whose
-/// fit is timed.
+/// `SESSIONS: [Case; N]` and the name `MEASURED` of the session whose solve is timed.
 mod vectors {
-    use crate::pipeline::Session;
-    use zerocal_core::fit::PoseReading;
+    use crate::Case;
     use zerocal_core::model::{Convention, Tilt};
+    use zerocal_core::session::BiasSource;
     use zerocal_core::stage0::Reversal;
     use zerocal_core::stage1::AxisOneTurn;
+    use zerocal_core::stage2::PoseReading;
 
     include!(concat!(env!("OUT_DIR"), "/vectors.rs"));
 }
@@ -48,11 +60,12 @@ use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m::peripheral::SYST;
 use cortex_m_rt::{entry, exception, ExceptionFrame};
 use cortex_m_semihosting::{debug, hprintln};
-use zerocal_core::fit::{FitConfig, FitResult, PoseReading, Stage2Model};
+use zerocal_core::error::Terse;
+use zerocal_core::model::{Convention, WristChain};
 use zerocal_core::real::rad_to_deg;
-use zerocal_core::FitError;
-
-use pipeline::{FitErrorWords, Session, StageErrorWords};
+use zerocal_core::session::{self, BiasSource, SessionError, SessionOutcome, SessionReadings};
+use zerocal_core::stage1::AxisOneTurn;
+use zerocal_core::stage2::{FitConfig, PoseReading};
 
 /// SysTick reload: the full 24 bits, so it wraps every 2^24 ticks.
 const SYSTICK_RELOAD: u32 = 0x00FF_FFFF;
@@ -92,8 +105,8 @@ fn main() -> ! {
         after - before
     );
 
-    for session in vectors::SESSIONS.iter() {
-        run(session);
+    for case in vectors::SESSIONS.iter() {
+        run(case);
     }
     hprintln!("done {}", vectors::SESSIONS.len());
     debug::exit(debug::EXIT_SUCCESS);
@@ -102,17 +115,25 @@ fn main() -> ! {
     }
 }
 
-/// Solves one session and prints its lines.
-fn run(session: &Session<'static, f32>) {
-    let name = session.name;
-    let bias = match pipeline::stage0(session) {
-        Ok(bias) => bias,
-        Err(e) => {
-            hprintln!("case {} stage0 error {}", name, StageErrorWords(&e));
-            return;
-        }
+/// Solves one session with core's session solver, as the pendant does, and prints its
+/// lines.
+fn run(case: &Case) {
+    let name = case.name;
+    let readings = SessionReadings {
+        convention: case.convention,
+        chain: WristChain::paper(),
+        bias: case.bias,
+        stage1: case.stage1,
+        j2_change_rad: 0.0,
+        poses: case.poses,
     };
-    if let Some(b) = &bias {
+    let config = FitConfig::default();
+    let outcome = if name == vectors::MEASURED {
+        measured_solve(name, &readings, &config)
+    } else {
+        session::solve(&readings, &config)
+    };
+    if let Some(b) = &outcome.bias {
         hprintln!(
             "case {} stage0 {:?} {:?}",
             name,
@@ -120,50 +141,40 @@ fn run(session: &Session<'static, f32>) {
             rad_to_deg(b.y_rad)
         );
     }
-    let stage1 = match pipeline::stage1(session, bias.as_ref()) {
-        Ok(s) => s,
-        Err(e) => {
-            hprintln!("case {} stage1 error {}", name, StageErrorWords(&e));
-            return;
-        }
-    };
-    hprintln!(
-        "case {} stage1 {:?} {:?} {:?} {:?}",
-        name,
-        rad_to_deg(stage1.base_tilt.alpha_rad),
-        rad_to_deg(stage1.base_tilt.beta_rad),
-        rad_to_deg(stage1.bias_y_rad),
-        rad_to_deg(stage1.delta_theta2_rad)
-    );
-    let (model, config) = pipeline::stage2_setup(session, bias.as_ref(), &stage1);
-    let result = if name == vectors::MEASURED {
-        measured_fit(name, &model, session.poses, &config)
-    } else {
-        zerocal_core::fit(&model, session.poses, &config)
-    };
-    match result {
+    if let Some(s1) = &outcome.stage1 {
+        hprintln!(
+            "case {} stage1 {:?} {:?} {:?} {:?}",
+            name,
+            rad_to_deg(s1.base_tilt.alpha_rad),
+            rad_to_deg(s1.base_tilt.beta_rad),
+            rad_to_deg(s1.bias_y_rad),
+            rad_to_deg(s1.delta_theta2_rad)
+        );
+    }
+    match outcome.result {
         Ok(r) => {
-            let [d3, d4, d5, d6] = r.offsets_rad.map(rad_to_deg);
+            let [d3, d4, d5, d6] = r.fit.offsets_rad.map(rad_to_deg);
             hprintln!("case {} fit {:?} {:?} {:?} {:?}", name, d3, d4, d5, d6);
         }
-        Err(e) => hprintln!("case {} fit error {}", name, FitErrorWords(&e)),
+        Err(SessionError::Stage0(e)) => hprintln!("case {} stage0 error {}", name, Terse(&e)),
+        Err(SessionError::Stage1(e)) => hprintln!("case {} stage1 error {}", name, Terse(&e)),
+        Err(SessionError::Stage2(e)) => hprintln!("case {} fit error {}", name, Terse(&e)),
     }
 }
 
-/// The fit, timed with SysTick and with its peak stack measured by painting, printed
-/// as a `measure` line.
+/// The session solve, timed with SysTick and with its peak stack measured by painting,
+/// printed as a `measure` line.
 ///
 /// Stack: every word between the end of the statics and [`PAINT_GUARD_BYTES`] below
-/// this function's stack pointer is set to [`STACK_PAINT`]; after the fit, the lowest
-/// word no longer holding it marks the deepest the fit's stack reached. The figure is
+/// this function's stack pointer is set to [`STACK_PAINT`]; afterwards, the lowest
+/// word no longer holding it marks the deepest the solve's stack reached. The figure is
 /// from this function's stack pointer down, so it covers `solve`'s frame and all it calls.
 #[inline(never)]
-fn measured_fit(
+fn measured_solve(
     name: &str,
-    model: &Stage2Model<f32>,
-    poses: &[PoseReading<f32>],
+    readings: &SessionReadings<'_, f32>,
     config: &FitConfig<f32>,
-) -> Result<FitResult<f32>, FitError> {
+) -> SessionOutcome<f32> {
     let sp = cortex_m::register::msp::read() as usize;
     let bottom = addr_of!(_stack_end) as usize;
     let top = sp - PAINT_GUARD_BYTES;
@@ -173,7 +184,7 @@ fn measured_fit(
     // whose frame would only make the figure larger.
     unsafe { paint(bottom, top) };
     let start = ticks();
-    let result = solve(black_box(model), black_box(poses), black_box(config));
+    let outcome = solve(black_box(readings), black_box(config));
     let end = ticks();
     // SAFETY: as for `paint`: the range is the stack region below the live frames.
     let lowest = unsafe { lowest_touched(bottom, top) };
@@ -183,17 +194,13 @@ fn measured_fit(
         end - start,
         sp - lowest
     );
-    result
+    outcome
 }
 
-/// The fit on its own frame, so the stack it takes is below the measuring function's.
+/// The solve on its own frame, so the stack it takes is below the measuring function's.
 #[inline(never)]
-fn solve(
-    model: &Stage2Model<f32>,
-    poses: &[PoseReading<f32>],
-    config: &FitConfig<f32>,
-) -> Result<FitResult<f32>, FitError> {
-    zerocal_core::fit(model, poses, config)
+fn solve(readings: &SessionReadings<'_, f32>, config: &FitConfig<f32>) -> SessionOutcome<f32> {
+    session::solve(readings, config)
 }
 
 /// Fills the words in `[bottom, top)` with [`STACK_PAINT`].

@@ -10,11 +10,6 @@ mod size;
 mod target_test;
 mod toolchain;
 
-/// The on-target check's session pipeline, shared with the test program so the host's
-/// `f64` reference and the target's `f32` run are the same steps.
-#[path = "../../target-test/src/pipeline.rs"]
-mod pipeline;
-
 use std::path::{Path, PathBuf};
 
 use anyhow::Result;
@@ -38,8 +33,8 @@ enum Command {
     /// Build the release firmware (firmware/, thumbv7em-none-eabihf) and print its
     /// flash and static RAM use.
     Firmware,
-    /// Build zerocal-core alone for thumbv7em-none-eabihf with its default features:
-    /// proves it is no_std (a host build cannot, std being always there).
+    /// Build zerocal-core alone for thumbv7em-none-eabihf, without features and with
+    /// `defmt,serde`: proves it is no_std (a host build cannot, std being always there).
     CoreThumb,
     /// Run zerocal-core on the pendant's CPU in QEMU (target-test/, netduinoplus2):
     /// stages 0-2 in f32 on seeded simulated sessions, compared with the host's f64
@@ -97,24 +92,29 @@ fn core_thumb() -> Result<()> {
     let tools = toolchain::provision(toolchain::Needs::THUMB)?;
     let toolchain = tools.thumb()?;
     // Only zerocal-core is selected, so no other member's features (std) unify into
-    // it; its own target dir keeps the host build's cache intact.
+    // it; its own target dir keeps the host build's cache intact. Built as the firmware
+    // takes it (no features) and with its optional `defmt` and `serde` derives.
     let manifest = root.join("core").join("Cargo.toml");
     let target_dir = root.join("target").join("thumb");
-    toolchain.cargo_build(
-        &root,
-        &[
+    for features in [None, Some("defmt,serde")] {
+        let mut args = vec![
             "--manifest-path",
             path_str(&manifest)?,
             "--target",
             toolchain::THUMB_TARGET,
             "--target-dir",
             path_str(&target_dir)?,
-        ],
-    )?;
-    println!(
-        "zerocal-core builds for {} (no_std)",
-        toolchain::THUMB_TARGET
-    );
+        ];
+        if let Some(f) = features {
+            args.extend(["--features", f]);
+        }
+        toolchain.cargo_build(&root, &args)?;
+        println!(
+            "zerocal-core builds for {} (no_std), features: {}",
+            toolchain::THUMB_TARGET,
+            features.unwrap_or("none")
+        );
+    }
     Ok(())
 }
 

@@ -14,6 +14,8 @@ use nalgebra::{Rotation3, Vector3};
 
 /// The axis a revolute joint turns about, in the frame of the link before it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum JointAxis {
     /// +x
     X,
@@ -145,6 +147,8 @@ pub fn rotation_from_rpy_deg<T: Real>(roll_deg: T, pitch_deg: T, yaw_deg: T) -> 
 /// The tilt of the robot's base: `Rbase = Ry(β)·Rx(α)`, the rotation whose `rpy`
 /// reading is (α, β). α is about the joint-2 direction (the paper's λ = 2α).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct BaseTilt<T> {
     /// Tilt about the joint-2 direction (rad).
     pub alpha_rad: T,

@@ -5,6 +5,8 @@ use nalgebra::{Rotation3, Vector3};
 
 /// One of the inclinometer's two readings.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum TiltAxis {
     /// The x reading.
     X,
@@ -23,6 +25,8 @@ impl core::fmt::Display for TiltAxis {
 
 /// The two angles an inclinometer reports.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Tilt<T> {
     /// x reading (rad).
     pub x_rad: T,
@@ -77,6 +81,8 @@ impl<T: Real> Tilt<T> {
 
 /// How the two angles derive from the up vector `u = Rᵀ·ẑ` (METHOD.md, Conventions).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Convention {
     /// The paper's eq. 5, `R = Rz(α)Ry(β)Rx(γ)`, x = γ, y = β:
     /// `x = atan2(u_y, u_z)`, `y = atan2(−u_x, hypot(u_y, u_z))`.
@@ -199,6 +205,8 @@ pub type SensorBias<T> = Tilt<T>;
 
 /// A sensor: its convention and its bias.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct SensorModel<T> {
     /// Reading convention.
     pub convention: Convention,

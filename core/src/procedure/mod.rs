@@ -1,9 +1,9 @@
 //! The operator's procedure as a state machine: stage 0 (optional), stage 1 and stage 2,
 //! driven by sensor samples and the three buttons, with automatic capture on stillness.
 //!
-//! `step(&config, &mut session, event)` is the whole logic: the firmware feeds it events
+//! `step(&config, &mut state, event)` is the whole logic: the firmware feeds it events
 //! and does what the returned [`Output`] says (persist records), and draws
-//! [`Session::view`]. Nothing here waits, allocates or touches hardware, so whole
+//! [`ProcedureState::view`]. The numbers come from [`crate::session`]. Nothing here waits, allocates or touches hardware, so whole
 //! sessions run in host tests.
 //!
 //! Capture rule: a capture is *armed* by OK, or by the reading having moved by more than
@@ -14,25 +14,20 @@
 //! yet is not captured twice. BACK undoes the last capture, whatever the stage.
 
 pub mod record;
+mod state;
 
-use crate::error::{FitError, StageError};
-use crate::fit::{fit, FitConfig, FitResult, PoseReading, Stage2Model};
-use crate::model::{Convention, Tilt, TiltAxis, WristChain, WRIST_JOINTS};
+use crate::error::StageError;
+use crate::model::{BaseTilt, Convention, SensorModel, Tilt, TiltAxis, WristChain, WRIST_JOINTS};
+use crate::plan::{plan, Candidate, PlanConfig, PlanError, PoseList, MAX_POSES};
 use crate::real::{deg_to_rad, Real};
 use crate::report::Verdict;
+use crate::session::{SessionError, SessionSolution};
 use crate::stage0::Reversal;
-use crate::stage1::{AxisOneTurn, Handover, Stage1Result};
-use crate::stillness::{Stillness, StillnessConfig, StillnessFilter};
+use crate::stage1::Stage1Result;
+use crate::stage2::{FitConfig, PoseReading, Stage2Model};
+use crate::stillness::{Stillness, StillnessConfig};
 pub use record::{Record, RecordError};
-
-/// The header of the stage-2 log (`zerocal identify` reads it).
-pub const LOG_HEADER: &str = "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg";
-
-/// Most poses a plan or a session holds.
-pub const MAX_POSES: usize = 64;
-
-/// Joint targets θ3..θ6 (rad), one per pose.
-pub type Plan<T> = heapless::Vec<[T; WRIST_JOINTS], MAX_POSES>;
+pub use state::{ProcedureState, View};
 
 /// What the procedure needs to know that does not change during a session.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,6 +66,8 @@ impl<T: Real> Default for ProcedureConfig<T> {
 
 /// Where the operator is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Phase {
     /// Stage 0: pendant on a stable surface, first reading.
     Stage0First,
@@ -137,13 +134,15 @@ pub enum Event<T> {
     /// NEXT: skip stage 0 (in stage 0) or skip the current pose (in stage 2).
     Next,
     /// A new plan (from the link's `plan set`); refused while stage 2 has captures.
-    SetPlan(Plan<T>),
+    SetPlan(PoseList<T>),
     /// Clear the session in progress (the stored bias and last result stay).
     Clear,
 }
 
 /// Something the operator must see.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Notice {
     /// The still reading is outside the sensor's range: not captured.
     ReadingOutOfRange {
@@ -156,8 +155,8 @@ pub enum Notice {
     SensorFault,
     /// Stage 0 or 1 refused its readings (the last capture was undone).
     StageRefused(StageError),
-    /// Stage 2 refused to give numbers.
-    FitRefused(FitError),
+    /// The session gave no numbers (stage 2's refusal, most often).
+    Refused(SessionError),
     /// Stage 2 needs a plan.
     NoPlan,
     /// A new plan was refused: stage 2 already has captures (clear first).
@@ -183,17 +182,19 @@ impl<T> Output<T> {
 
 /// The result of a session.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Outcome<T> {
+pub struct Outcome<T: Real> {
     /// Stage 1, if it ran.
     pub stage1: Option<Stage1Result<T>>,
-    /// Stage 2.
-    pub fit: Result<FitResult<T>, FitError>,
+    /// Δθ2..Δθ6 with their covariance, or why not.
+    pub result: Result<SessionSolution<T>, SessionError>,
     /// What to distrust.
     pub verdict: Verdict,
 }
 
 /// The last completed result, kept in flash across sessions and power cuts.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct LastResult<T> {
     /// Δθ3..Δθ6 (rad).
     pub offsets_rad: [T; WRIST_JOINTS],
@@ -205,344 +206,43 @@ pub struct LastResult<T> {
     pub residual_rms_rad: T,
 }
 
-/// The session: everything the procedure remembers.
-#[derive(Clone, Debug)]
-pub struct Session<T: Real> {
-    phase: Phase,
-    plan: Plan<T>,
-    bias: Option<Tilt<T>>,
-    stage0_skipped: bool,
-    stage0_first: Option<Tilt<T>>,
-    stage1_before: Option<Tilt<T>>,
-    stage1_after: Option<Tilt<T>>,
-    stage1: Option<Stage1Result<T>>,
-    next_pose: usize,
-    captures: heapless::Vec<(u8, PoseReading<T>), MAX_POSES>,
-    outcome: Option<Outcome<T>>,
-    last_result: Option<LastResult<T>>,
-    // Not persisted: rebuilt from the sensor within one stillness window.
-    filter: StillnessFilter<T>,
-    live: Option<Tilt<T>>,
-    stillness: Stillness<T>,
-    armed: bool,
-    last_capture: Option<Tilt<T>>,
-    notice: Option<Notice>,
-}
+/// Poses in the pendant's default plan: three times the fit's minimum, a few minutes of
+/// jogging (`zerocal plan --poses 12` prints the 1σ it predicts).
+pub const PENDANT_PLAN_POSES: usize = 12;
 
-/// What the display shows, as data.
-#[derive(Clone, Debug, PartialEq)]
-pub struct View<'a, T: Real> {
-    /// Phase.
-    pub phase: Phase,
-    /// Latest reading, raw.
-    pub live: Option<Tilt<T>>,
-    /// Stillness of the current window.
-    pub stillness: Stillness<T>,
-    /// Whether the next still window will be captured.
-    pub armed: bool,
-    /// In stage 2: (index, plan length, joint targets in rad) of the pose to take.
-    pub pose: Option<(usize, usize, [T; WRIST_JOINTS])>,
-    /// Stage-2 captures so far.
-    pub captured: usize,
-    /// The bias in use, if any.
-    pub bias: Option<Tilt<T>>,
-    /// Something to see.
-    pub notice: Option<Notice>,
-    /// The result, in phase `Done`.
-    pub outcome: Option<&'a Outcome<T>>,
-}
-
-impl<T: Real> Session<T> {
-    /// A new session at stage 0 with `plan` for stage 2 and the stored `bias`, if any.
-    pub fn new(plan: Plan<T>, bias: Option<Tilt<T>>) -> Self {
-        Session {
-            phase: Phase::Stage0First,
-            plan,
-            bias,
-            stage0_skipped: false,
-            stage0_first: None,
-            stage1_before: None,
-            stage1_after: None,
-            stage1: None,
-            next_pose: 0,
-            captures: heapless::Vec::new(),
-            outcome: None,
-            last_result: None,
-            filter: StillnessFilter::new(),
-            live: None,
-            stillness: Stillness::Moving,
-            armed: true,
-            last_capture: None,
-            notice: None,
-        }
-    }
-
-    /// Rebuilds a session from stored records (in any order; unknown combinations are
-    /// ignored, so a half-written update falls back to the previous state).
-    pub fn restore(
-        config: &ProcedureConfig<T>,
-        records: impl IntoIterator<Item = Record<T>>,
-    ) -> Self {
-        let mut s = Session::new(Plan::new(), None);
-        let mut plan = [None; MAX_POSES];
-        let mut plan_len = 0;
-        let mut slots: [Option<(u8, PoseReading<T>)>; MAX_POSES] = [None; MAX_POSES];
-        let mut count = 0;
-        for r in records {
-            match r {
-                Record::Bias(b) => s.bias = Some(b),
-                Record::Progress {
-                    phase,
-                    next_pose,
-                    captures,
-                    stage0_skipped,
-                } => {
-                    s.phase = phase;
-                    s.next_pose = usize::from(next_pose);
-                    count = usize::from(captures);
-                    s.stage0_skipped = stage0_skipped;
-                }
-                Record::Stage0First(t) => s.stage0_first = Some(t),
-                Record::Stage1Before(t) => s.stage1_before = Some(t),
-                Record::Stage1After(t) => s.stage1_after = Some(t),
-                Record::Capture {
-                    slot,
-                    plan_index,
-                    joints_rad,
-                    reading,
-                } => {
-                    if let Some(x) = slots.get_mut(usize::from(slot)) {
-                        *x = Some((
-                            plan_index,
-                            PoseReading {
-                                joints_rad,
-                                reading,
-                            },
-                        ));
-                    }
-                }
-                Record::PlanLen(n) => plan_len = usize::from(n),
-                Record::PlanPose { index, joints_rad } => {
-                    if let Some(x) = plan.get_mut(usize::from(index)) {
-                        *x = Some(joints_rad);
-                    }
-                }
-                Record::LastResult {
-                    offsets_rad,
-                    sigma_rad,
-                    delta_theta2_rad,
-                    residual_rms_rad,
-                } => {
-                    s.last_result = Some(LastResult {
-                        offsets_rad,
-                        sigma_rad,
-                        delta_theta2_rad,
-                        residual_rms_rad,
-                    })
-                }
-            }
-        }
-        for p in plan.iter().take(plan_len) {
-            match p {
-                Some(q) => {
-                    let _ = s.plan.push(*q);
-                }
-                // A plan with a hole is not the plan that was set: drop it whole.
-                None => {
-                    s.plan.clear();
-                    break;
-                }
-            }
-        }
-        for slot in slots.iter().take(count).flatten() {
-            let _ = s.captures.push(*slot);
-        }
-        // Only what the phase needs survives: a stale stage-1 reading from before a
-        // BACK stays ignored.
-        match s.phase {
-            Phase::Stage0First => {
-                s.stage0_first = None;
-                s.stage1_before = None;
-                s.stage1_after = None;
-            }
-            Phase::Stage0Second | Phase::Stage1Before => {
-                s.stage1_before = None;
-                s.stage1_after = None;
-            }
-            Phase::Stage1After => s.stage1_after = None,
-            Phase::Stage2 | Phase::Done => {}
-        }
-        if s.phase == Phase::Stage0Second && s.stage0_first.is_none() {
-            s.phase = Phase::Stage0First;
-        }
-        if matches!(s.phase, Phase::Stage2 | Phase::Done) {
-            s.stage1 = s.solve_stage1(config).ok();
-            if s.stage1.is_none() {
-                s.phase = Phase::Stage1Before;
-                s.captures.clear();
-                s.next_pose = 0;
-            }
-        }
-        if s.phase == Phase::Done {
-            s.outcome = Some(s.compute(config));
-        }
-        // After a reset the pendant may have been moved: re-arm only on motion (from
-        // the first reading after power-up) or OK.
-        s.armed = s.phase == Phase::Stage0First;
-        s.last_capture = None;
-        s
-    }
-
-    /// The current phase.
-    pub fn phase(&self) -> Phase {
-        self.phase
-    }
-
-    /// The plan.
-    pub fn plan(&self) -> &Plan<T> {
-        &self.plan
-    }
-
-    /// Stage-2 captures: (plan index, pose).
-    pub fn captures(&self) -> &[(u8, PoseReading<T>)] {
-        &self.captures
-    }
-
-    /// The bias in use: this session's stage 0, or the stored one.
-    pub fn bias(&self) -> Option<Tilt<T>> {
-        self.bias
-    }
-
-    /// Stage-1 readings (before, after), once taken.
-    pub fn stage1_readings(&self) -> (Option<Tilt<T>>, Option<Tilt<T>>) {
-        (self.stage1_before, self.stage1_after)
-    }
-
-    /// Stage-1 result, once solved.
-    pub fn stage1(&self) -> Option<&Stage1Result<T>> {
-        self.stage1.as_ref()
-    }
-
-    /// The result, in phase `Done`.
-    pub fn outcome(&self) -> Option<&Outcome<T>> {
-        self.outcome.as_ref()
-    }
-
-    /// The last completed result, whatever the current session is doing.
-    pub fn last_result(&self) -> Option<&LastResult<T>> {
-        self.last_result.as_ref()
-    }
-
-    /// A new session on the same plan, keeping the bias and the last result.
-    fn restart(&mut self) {
-        let plan = core::mem::take(&mut self.plan);
-        let (bias, last) = (self.bias, self.last_result);
-        *self = Session::new(plan, bias);
-        self.last_result = last;
-    }
-
-    /// The stage-2 model stages 0-1 produced (the one the fit uses).
-    pub fn stage2_model(&self, config: &ProcedureConfig<T>) -> Option<Stage2Model<T>> {
-        self.handover(config).map(|h| h.model)
-    }
-
-    /// Stages 0-1's handover to stage 2 (joint 2 kept where stage 1 had it).
-    fn handover(&self, config: &ProcedureConfig<T>) -> Option<Handover<T>> {
-        let s1 = self.stage1.as_ref()?;
-        Some(s1.handover(
-            config.chain,
-            config.convention,
-            self.bias.as_ref(),
-            T::zero(),
-            config.j2_direction,
-        ))
-    }
-
-    /// What to draw.
-    pub fn view(&self) -> View<'_, T> {
-        View {
-            phase: self.phase,
-            live: self.live,
-            stillness: self.stillness,
-            armed: self.armed,
-            pose: (self.phase == Phase::Stage2)
-                .then(|| {
-                    self.plan
-                        .get(self.next_pose)
-                        .map(|q| (self.next_pose, self.plan.len(), *q))
-                })
-                .flatten(),
-            captured: self.captures.len(),
-            bias: self.bias,
-            notice: self.notice,
-            outcome: self.outcome.as_ref(),
-        }
-    }
-
-    fn progress(&self) -> Record<T> {
-        Record::Progress {
-            phase: self.phase,
-            next_pose: self.next_pose as u8,
-            captures: self.captures.len() as u8,
-            stage0_skipped: self.stage0_skipped,
-        }
-    }
-
-    fn solve_stage1(&self, config: &ProcedureConfig<T>) -> Result<Stage1Result<T>, StageError> {
-        let (Some(before), Some(after)) = (self.stage1_before, self.stage1_after) else {
-            return Err(StageError::NonFiniteReading);
-        };
-        AxisOneTurn {
-            before,
-            after,
-            commanded_j2_rad: config.j2_commanded_rad,
-            j2_direction: config.j2_direction,
-        }
-        .solve(
-            config.convention,
-            self.bias.as_ref(),
-            config.fit.sensor_range_rad,
-        )
-    }
-
-    fn compute(&self, config: &ProcedureConfig<T>) -> Outcome<T> {
-        let mut poses: heapless::Vec<PoseReading<T>, MAX_POSES> = heapless::Vec::new();
-        for (_, p) in &self.captures {
-            let _ = poses.push(*p);
-        }
-        let fit_result = match self.handover(config) {
-            Some(h) => {
-                let fit_config = FitConfig {
-                    model_covariance: h.model_covariance,
-                    ..config.fit
-                };
-                fit(&h.model, &poses, &fit_config)
-            }
-            None => Err(FitError::TooFewPoses { got: 0, min: 4 }),
-        };
-        let verdict = match &fit_result {
-            Ok(r) => Verdict::judge(r, &config.fit, self.stage1.as_ref()),
-            Err(_) => Verdict::default(),
-        };
-        Outcome {
-            stage1: self.stage1,
-            fit: fit_result,
-            verdict,
-        }
-    }
-
-    fn enter(&mut self, phase: Phase, armed: bool) {
-        self.phase = phase;
-        self.armed = armed;
-        self.filter.reset();
-        self.stillness = Stillness::Moving;
-    }
+/// The plan the pendant uses when none was uploaded: this planner with its default
+/// settings on the pendant's wrist and convention, a level base and no bias (the real
+/// ones are not known before stages 0-1; the planner's 1° margin inside the ±10°
+/// window absorbs them), and the fit's own conditioning limit.
+///
+/// Seeded, so the same every time: the firmware computes it when it is built.
+///
+/// # Errors
+/// As [`plan`].
+pub fn pendant_default<T: Real>(
+    config: &ProcedureConfig<T>,
+    pool: &mut [Candidate<T>],
+) -> Result<PoseList<T>, PlanError> {
+    let model = Stage2Model {
+        chain: config.chain,
+        base_tilt: BaseTilt::level(),
+        sensor: SensorModel {
+            convention: config.convention,
+            bias: Tilt::default(),
+        },
+    };
+    let plan_config = PlanConfig {
+        poses: PENDANT_PLAN_POSES,
+        max_condition_number: config.fit.max_condition_number,
+        ..PlanConfig::default()
+    };
+    Ok(plan(&model, &plan_config, pool)?.poses_rad)
 }
 
 /// Advances the procedure by one event.
 pub fn step<T: Real>(
     config: &ProcedureConfig<T>,
-    s: &mut Session<T>,
+    s: &mut ProcedureState<T>,
     event: Event<T>,
 ) -> Output<T> {
     let mut out = Output::default();
@@ -612,7 +312,7 @@ pub fn step<T: Real>(
 
 fn on_sample<T: Real>(
     config: &ProcedureConfig<T>,
-    s: &mut Session<T>,
+    s: &mut ProcedureState<T>,
     t_ms: u32,
     reading: Tilt<T>,
     out: &mut Output<T>,
@@ -658,7 +358,7 @@ fn on_sample<T: Real>(
 
 fn capture<T: Real>(
     config: &ProcedureConfig<T>,
-    s: &mut Session<T>,
+    s: &mut ProcedureState<T>,
     mean: Tilt<T>,
     out: &mut Output<T>,
 ) {
@@ -698,7 +398,7 @@ fn capture<T: Real>(
         Phase::Stage1After => {
             s.stage1_after = Some(mean);
             match s.solve_stage1(config) {
-                Ok(r) => {
+                Some(Ok(r)) => {
                     s.stage1 = Some(r);
                     out.push(Record::Stage1After(mean));
                     s.next_pose = 0;
@@ -707,9 +407,16 @@ fn capture<T: Real>(
                         s.notice = Some(Notice::NoPlan);
                     }
                 }
-                Err(e) => {
+                refused => {
                     s.stage1_after = None;
-                    s.notice = Some(Notice::StageRefused(e));
+                    s.notice = Some(match refused {
+                        Some(Err(SessionError::Stage0(e) | SessionError::Stage1(e))) => {
+                            Notice::StageRefused(e)
+                        }
+                        Some(Err(e)) => Notice::Refused(e),
+                        // Both readings are in: cannot happen.
+                        _ => Notice::StageRefused(StageError::NonFiniteReading),
+                    });
                     return;
                 }
             }
@@ -742,17 +449,21 @@ fn capture<T: Real>(
     out.push(s.progress());
 }
 
-fn finish_if_done<T: Real>(config: &ProcedureConfig<T>, s: &mut Session<T>, out: &mut Output<T>) {
+fn finish_if_done<T: Real>(
+    config: &ProcedureConfig<T>,
+    s: &mut ProcedureState<T>,
+    out: &mut Output<T>,
+) {
     if s.next_pose < s.plan.len() {
         return;
     }
     let outcome = s.compute(config);
-    if let Ok(r) = &outcome.fit {
+    if let Ok(r) = &outcome.result {
         let last = LastResult {
-            offsets_rad: r.offsets_rad,
-            sigma_rad: r.sigma_rad,
-            delta_theta2_rad: outcome.stage1.map_or(T::zero(), |s1| s1.delta_theta2_rad),
-            residual_rms_rad: r.residual_rms_rad,
+            offsets_rad: r.fit.offsets_rad,
+            sigma_rad: r.fit.sigma_rad,
+            delta_theta2_rad: r.offsets_rad[0],
+            residual_rms_rad: r.fit.residual_rms_rad,
         };
         s.last_result = Some(last);
         out.push(Record::LastResult {
@@ -762,14 +473,14 @@ fn finish_if_done<T: Real>(config: &ProcedureConfig<T>, s: &mut Session<T>, out:
             residual_rms_rad: last.residual_rms_rad,
         });
         s.notice = None;
-    } else if let Err(e) = &outcome.fit {
-        s.notice = Some(Notice::FitRefused(*e));
+    } else if let Err(e) = &outcome.result {
+        s.notice = Some(Notice::Refused(*e));
     }
     s.outcome = Some(outcome);
     s.enter(Phase::Done, false);
 }
 
-fn back<T: Real>(s: &mut Session<T>) {
+fn back<T: Real>(s: &mut ProcedureState<T>) {
     s.notice = None;
     s.outcome = None;
     // The undone reading becomes the motion reference: the pendant is most likely

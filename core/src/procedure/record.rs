@@ -6,8 +6,9 @@
 //! Encoding: a format byte, then little-endian fields; every angle as an `f64` of
 //! radians (exact for the pendant's `f32`).
 
-use super::{Phase, MAX_POSES};
+use super::Phase;
 use crate::model::{Tilt, WRIST_JOINTS};
+use crate::plan::MAX_POSES;
 use crate::real::Real;
 
 /// Largest encoded record (bytes).
@@ -72,6 +73,8 @@ pub enum Record<T> {
 
 /// Why a stored record could not be read back.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum RecordError {
     /// The key is not one of ours.
     UnknownKey(u16),

@@ -20,9 +20,10 @@ use embassy_usb::{Builder, Config};
 use heapless::Vec;
 use static_cell::StaticCell;
 use zerocal_core::link::{
-    export, parse_command, plan_line, status, Command, Line, PlanUpload, UploadStep, HELP,
+    parse_command, plan_line, status, Command, Line, PlanUpload, UploadStep, HELP,
 };
-use zerocal_core::procedure::Plan;
+use zerocal_core::log::export;
+use zerocal_core::plan::PoseList;
 
 use crate::channels::{with_procedure, LINK_REPLIES, LINK_REQUESTS};
 
@@ -48,7 +49,7 @@ const LIVE_PERIOD: Duration = Duration::from_millis(100);
 /// A change the host asks for, to the procedure task.
 pub enum LinkRequest {
     /// `plan set` … `end`: the new plan.
-    SetPlan(Plan<f32>),
+    SetPlan(PoseList<f32>),
     /// `clear`.
     Clear,
 }

@@ -14,8 +14,9 @@ use embassy_futures::select::{select3, Either3};
 use embassy_time::Instant;
 use heapless::Vec;
 use zerocal_core::model::Tilt;
+use zerocal_core::plan::PoseList;
 use zerocal_core::procedure::record::{self, Record, RecordError, MAX_RECORD_LEN};
-use zerocal_core::procedure::{step, Event, Notice, Phase, Plan, ProcedureConfig, Session};
+use zerocal_core::procedure::{step, Event, Notice, Phase, ProcedureConfig, ProcedureState};
 
 use crate::channels::{
     with_procedure, BUTTON_PRESSES, LINK_REPLIES, LINK_REQUESTS, PROCEDURE, PROCEDURE_STATE,
@@ -32,7 +33,7 @@ include!(concat!(env!("OUT_DIR"), "/default_plan.rs"));
 
 /// Keys a restore reads: the fixed records plus a capture slot and a plan pose per
 /// pose a plan can hold (`record::all_keys`).
-const STORED_KEYS: usize = 7 + 2 * zerocal_core::procedure::MAX_POSES;
+const STORED_KEYS: usize = 7 + 2 * zerocal_core::plan::MAX_POSES;
 
 /// The procedure's configuration and session, shared with the link task through
 /// [`PROCEDURE`](crate::channels::PROCEDURE).
@@ -40,7 +41,7 @@ pub struct Procedure {
     /// Fixed for the pendant: the SCL3300's `axis` convention, the paper's wrist.
     pub config: ProcedureConfig<f32>,
     /// Everything the procedure remembers.
-    pub session: Session<f32>,
+    pub session: ProcedureState<f32>,
     /// Bumped whenever a step changed what is stored, so that the link can tell that
     /// a multi-line `export` straddled a change.
     pub generation: u32,
@@ -62,7 +63,7 @@ pub async fn procedure_task() -> ! {
     if with_procedure(|p| p.session.plan().is_empty()) == Some(true) {
         // Through core, like an upload: it decides and lists the records to store.
         let output = with_procedure(|p| {
-            let plan = Plan::from_slice(&DEFAULT_PLAN_RAD).ok()?;
+            let plan = PoseList::from_slice(&DEFAULT_PLAN_RAD).ok()?;
             Some(step(&p.config, &mut p.session, Event::SetPlan(plan)))
         });
         if let Some(Some(output)) = output {
@@ -162,7 +163,7 @@ async fn restore() {
     let records = restore_records().await;
     let procedure = PROCEDURE_STATE.init_with(|| {
         let config = ProcedureConfig::default();
-        let session = Session::restore(&config, records);
+        let session = ProcedureState::restore(&config, records);
         Procedure {
             config,
             session,

@@ -24,8 +24,11 @@ use ssd1306::{I2CDisplayInterface, Ssd1306Async};
 use crate::channels::SCREEN;
 use zerocal_core::error::FitError;
 use zerocal_core::report::Warning;
+use zerocal_core::session::SessionError;
 
-use crate::screen::{CaptureScreen, FitSummary, Offset, Prompt, ResultScreen, Screen, Settle};
+use crate::screen::{
+    CaptureScreen, FitSummary, Offset, Prompt, Refusal, ResultScreen, Screen, Settle,
+};
 use crate::tasks::sensor::SensorFault;
 
 /// The display's bus.
@@ -252,7 +255,7 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
             }
         },
         // Shown in full on the result screen.
-        Notice::FitRefused(_) => fixed("! fit refused"),
+        Notice::Refused(_) => fixed("! refused"),
         Notice::NoPlan => fixed("! no plan: 'plan set'"),
         Notice::PlanLocked => fixed("! plan locked: clear"),
         Notice::Captured => fixed("captured"),
@@ -374,7 +377,34 @@ fn warning_lines(warning: &Warning) -> [Text; 4] {
 }
 
 /// Why stage 2 gave no numbers, in four lines.
-fn refusal_lines(error: &FitError) -> [Text; 4] {
+fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
+    let error = match refusal {
+        Refusal::Session(SessionError::Stage2(e)) => e,
+        Refusal::Session(SessionError::Stage0(_)) => {
+            return [
+                fixed("stage 0 refused"),
+                fixed("BACK, redo it"),
+                Text::new(),
+                Text::new(),
+            ]
+        }
+        Refusal::Session(SessionError::Stage1(_)) => {
+            return [
+                fixed("stage 1 refused"),
+                fixed("BACK, redo it"),
+                Text::new(),
+                Text::new(),
+            ]
+        }
+        Refusal::NoOutcome => {
+            return [
+                fixed("no outcome"),
+                fixed("OK: new session"),
+                Text::new(),
+                Text::new(),
+            ]
+        }
+    };
     match *error {
         FitError::TooFewPoses { got, min } => [
             fixed("too few poses:"),

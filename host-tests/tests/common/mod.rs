@@ -1,9 +1,9 @@
 //! Helpers shared by the scenario tests.
 #![allow(dead_code)] // each test binary uses its own subset
 
-use zerocal_core::fit::{covariance_bound, PoseReading, Stage2Model};
 use zerocal_core::model::{Convention, SensorModel, Tilt, WRIST_JOINTS};
-use zerocal_host_tests::sim::{Noise, PoseSampler, SimInclinometer, SimRobot};
+use zerocal_core::stage2::{covariance_bound, PoseReading, Stage2Model};
+use zerocal_sim::{Noise, PoseSampler, SimInclinometer, SimRobot};
 
 /// Draws `n` poses and reads them.
 pub fn read_poses(

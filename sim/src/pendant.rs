@@ -5,8 +5,8 @@
 //!
 //! Only the world is simulated: what the pendant computes is core's code.
 
-use crate::sim::scl3300_device::{Fault, Scl3300Device};
-use crate::sim::SimRobot;
+use crate::scl3300_device::{Fault, Scl3300Device};
+use crate::SimRobot;
 use embedded_hal::delay::DelayNs;
 use nalgebra::Rotation3;
 use rand::SeedableRng;
@@ -14,7 +14,10 @@ use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
 use std::collections::BTreeMap;
 use zerocal_core::model::{rot_z, Convention, Tilt, WRIST_JOINTS};
-use zerocal_core::procedure::{self, record, Event, Output, ProcedureConfig, Record, Session};
+use zerocal_core::plan::PoseList;
+use zerocal_core::procedure::{
+    self, record, Event, Output, ProcedureConfig, ProcedureState, Record,
+};
 use zerocal_core::scl3300::{Mode, Scl3300};
 use zerocal_core::Real;
 
@@ -66,7 +69,7 @@ pub struct SimPendant<T: Real> {
     /// The procedure's configuration.
     pub config: ProcedureConfig<T>,
     /// The procedure's state.
-    pub session: Session<T>,
+    pub session: ProcedureState<T>,
     /// The flash.
     pub store: RecordStore,
     /// Milliseconds since power-up (wrapping, as the firmware's clock).
@@ -86,7 +89,7 @@ impl<T: Real> SimPendant<T> {
         bias: Tilt<f64>,
         noise_sigma_rad: f64,
         config: ProcedureConfig<T>,
-        plan: procedure::Plan<T>,
+        plan: PoseList<T>,
         seed: u64,
     ) -> Self {
         let mut driver = Scl3300::new(Scl3300Device::new(), NoDelay, Mode::InclinationLowNoise);
@@ -101,7 +104,7 @@ impl<T: Real> SimPendant<T> {
                 heading_rad: 0.0,
             },
             config,
-            session: Session::new(plan.clone(), None),
+            session: ProcedureState::new(plan.clone(), None),
             store: RecordStore::new(),
             t_ms: 0,
             period_ms: 50,
@@ -242,7 +245,7 @@ impl<T: Real> SimPendant<T> {
             .iter()
             .filter_map(|(k, v)| Record::decode(*k, v).ok())
             .collect();
-        self.session = Session::restore(&self.config, records);
+        self.session = ProcedureState::restore(&self.config, records);
         self.t_ms = self.t_ms.wrapping_add(5000);
     }
 }

@@ -1,13 +1,13 @@
 //! Operator scripts for the simulated pendant: the moves and button presses of a
 //! calibration, as a technician would make them.
 
-use crate::sim::pendant::{Mount, SimPendant};
-use crate::sim::SimRobot;
-use zerocal_core::fit::Stage2Model;
+use crate::pendant::{Mount, SimPendant};
+use crate::SimRobot;
 use zerocal_core::model::{rot_x, rot_y, Convention, SensorModel, Tilt};
-use zerocal_core::plan::{plan, Candidate, PlanConfig};
-use zerocal_core::procedure::{Event, Phase, Plan, ProcedureConfig};
+use zerocal_core::plan::{plan, Candidate, PlanConfig, PlanError, PoseList};
+use zerocal_core::procedure::{Event, Phase, ProcedureConfig};
 use zerocal_core::real::deg_to_rad;
+use zerocal_core::stage2::Stage2Model;
 use zerocal_core::Real;
 
 /// Per-sample noise of the simulated SCL3300 (deg, 1σ): ~0.001°/√Hz over its 10 Hz
@@ -16,7 +16,10 @@ pub const SCL3300_NOISE_DEG: f64 = 0.003;
 
 /// The pendant's default plan: `n` poses from core's planner (axis convention, level
 /// base, zero offsets: all the pendant knows before stage 2).
-pub fn default_plan<T: Real>(n: usize) -> Plan<T> {
+///
+/// # Errors
+/// The planner's refusal (too many poses, an unobservable plan).
+pub fn default_plan<T: Real>(n: usize) -> Result<PoseList<T>, PlanError> {
     let model = Stage2Model {
         sensor: SensorModel {
             convention: Convention::Axis,
@@ -29,13 +32,7 @@ pub fn default_plan<T: Real>(n: usize) -> Plan<T> {
         ..PlanConfig::default()
     };
     let mut pool = vec![Candidate::default(); config.candidates];
-    let mut out = Plan::new();
-    if let Ok(p) = plan(&model, &config, &mut pool) {
-        for q in p.poses_rad {
-            let _ = out.push(q);
-        }
-    }
-    out
+    Ok(plan(&model, &config, &mut pool)?.poses_rad)
 }
 
 /// A robot and sensor truth for the scenarios (deg): offsets to ±0.3°, base tilt,
@@ -48,20 +45,23 @@ pub fn truth_robot() -> (SimRobot, Tilt<f64>) {
 }
 
 /// A pendant on the truth robot with the default plan of `n` poses.
-pub fn pendant<T: Real>(n: usize, seed: u64) -> SimPendant<T> {
+///
+/// # Errors
+/// The planner's refusal of `n` poses.
+pub fn pendant<T: Real>(n: usize, seed: u64) -> Result<SimPendant<T>, PlanError> {
     let (robot, bias) = truth_robot();
     let config = ProcedureConfig {
         j2_direction: robot.j2_direction,
         ..ProcedureConfig::default()
     };
-    SimPendant::new(
+    Ok(SimPendant::new(
         robot,
         bias,
         deg_to_rad(SCL3300_NOISE_DEG),
         config,
-        default_plan(n),
+        default_plan(n)?,
         seed,
-    )
+    ))
 }
 
 /// How long the operator holds still at each capture (ms): the stillness window and

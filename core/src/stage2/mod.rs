@@ -1,15 +1,18 @@
 //! Stage 2: zero offsets of axes 3-6 by an iterated least-squares fit over many poses.
 //!
 //! The fit is Levenberg-Marquardt on the exact model of [`crate::model`] with an analytic
-//! Jacobian. It never stores J: each residual row is folded into a 4×4 upper-triangular
-//! factor by Givens rotations as it is computed (a streaming QR), so any number of poses
-//! fits in a few hundred bytes of stack, and the conditioning is that of J, not of JᵀJ,
-//! which is what keeps `f32` on the pendant within 2e-5° of `f64` on the desktop.
-//!
-//! Before any number is reported the factor is checked: a rank-deficient or
-//! ill-conditioned pose set is refused and the inseparable parameters are named.
+//! Jacobian, each residual row folded into a triangular factor as it is computed
+//! ([`information`]). Before any number is reported the factor is checked: a
+//! rank-deficient or ill-conditioned pose set is refused and the inseparable parameters
+//! are named. [`bound`] gives the covariance bound of a pose set for planning.
 
-use crate::error::{FitError, ParamSet};
+mod bound;
+mod information;
+
+pub use bound::{covariance_bound, CovarianceBound};
+pub use information::{weakest_of_gram, Information, WEAK_DIRECTION_SHARE};
+
+use crate::error::FitError;
 use crate::model::{joint_trig, BaseTilt, SensorModel, Tilt, TiltAxis, WristChain, WRIST_JOINTS};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
 use nalgebra::{Matrix4, Vector3, Vector4};
@@ -28,6 +31,8 @@ const LOCAL_STEP_RAD: f64 = 1e-4;
 
 /// One stage-2 pose: what the robot was commanded to and what the sensor read.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct PoseReading<T> {
     /// Commanded θ3..θ6 (rad).
     pub joints_rad: [T; WRIST_JOINTS],
@@ -78,7 +83,7 @@ pub struct FitConfig<T> {
     pub initial_offsets_rad: [T; WRIST_JOINTS],
     /// Uncertainty of what stages 0-1 handed to the model: the covariance of
     /// (α, β, bias x, bias y) in units of one reading's noise variance (see
-    /// [`crate::stage1::Handover`]). Zero (the default) takes the model as exact.
+    /// [`crate::session::Handover`]). Zero (the default) takes the model as exact.
     /// Propagated into the reported 1σ, since an error in α, for one, passes straight
     /// into Δθ3.
     pub model_covariance: [[T; 4]; 4],
@@ -103,6 +108,8 @@ impl<T: Real> Default for FitConfig<T> {
 
 /// Where the reported 1σ comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum SigmaSource {
     /// σ estimated from the residuals.
     Residuals,
@@ -112,6 +119,8 @@ pub enum SigmaSource {
 
 /// What stage 2 finds.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct FitResult<T> {
     /// Δθ3..Δθ6 = true − commanded (rad).
     pub offsets_rad: [T; WRIST_JOINTS],
@@ -120,6 +129,13 @@ pub struct FitResult<T> {
     pub sigma_rad: [T; WRIST_JOINTS],
     /// 1σ of each offset from the stage-2 readings alone (rad).
     pub sigma_stage2_rad: [T; WRIST_JOINTS],
+    /// Covariance of Δθ3..Δθ6 (rad²), including the propagated uncertainty of the model
+    /// (`sigma_rad` is the square root of its diagonal).
+    pub covariance_rad2: [[T; WRIST_JOINTS]; WRIST_JOINTS],
+    /// How the offsets move with an error in the model parameters (α, β, bias x,
+    /// bias y) of [`FitConfig::model_covariance`]: rad per rad, row k = Δθ(k+3). Zero
+    /// when that covariance is zero.
+    pub model_sensitivity: [[T; 4]; WRIST_JOINTS],
     /// RMS of the residuals over all 2N readings (rad).
     pub residual_rms_rad: T,
     /// Per-reading noise σ used for `sigma_rad` (rad).
@@ -132,158 +148,6 @@ pub struct FitResult<T> {
     pub condition_number: T,
     /// Number of poses fitted.
     pub poses: usize,
-}
-
-/// The predicted 1σ of a pose set (the Cramér-Rao bound for Gaussian noise).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CovarianceBound<T> {
-    /// σ·sqrt(diag((JᵀJ)⁻¹)) per offset (rad).
-    pub sigma_rad: [T; WRIST_JOINTS],
-    /// Condition number of J.
-    pub condition_number: T,
-}
-
-/// J folded into an upper-triangular factor R (JᵀJ = RᵀR) together with Qᵀ·r.
-#[derive(Clone, Copy, Debug)]
-pub struct Information<T: Real> {
-    r: Matrix4<T>,
-    qtb: Vector4<T>,
-}
-
-impl<T: Real> Default for Information<T> {
-    fn default() -> Self {
-        Information {
-            r: Matrix4::zeros(),
-            qtb: Vector4::zeros(),
-        }
-    }
-}
-
-/// Singular-value summary of J.
-struct Conditioning<T> {
-    condition_number: T,
-    weakest: ParamSet,
-}
-
-impl<T: Real> Information<T> {
-    /// Folds in one row of `J·δ ≈ b` by Givens rotations.
-    pub fn add_row(&mut self, mut a: Vector4<T>, mut b: T) {
-        for k in 0..WRIST_JOINTS {
-            if a[k] == T::zero() {
-                continue;
-            }
-            let rkk = self.r[(k, k)];
-            // |u| ≤ a few, so sqrt(x² + y²) cannot overflow; it is cheaper than hypot
-            // on the Cortex-M4F.
-            let rho = (rkk * rkk + a[k] * a[k]).fast_sqrt();
-            let (c, s) = (rkk / rho, a[k] / rho);
-            for j in k..WRIST_JOINTS {
-                let (rkj, aj) = (self.r[(k, j)], a[j]);
-                self.r[(k, j)] = c * rkj + s * aj;
-                a[j] = c * aj - s * rkj;
-            }
-            let qk = self.qtb[k];
-            self.qtb[k] = c * qk + s * b;
-            b = c * b - s * qk;
-        }
-    }
-
-    /// JᵀJ.
-    pub fn matrix(&self) -> Matrix4<T> {
-        self.r.transpose() * self.r
-    }
-
-    /// R⁻¹ by back substitution, or `None` if a pivot is zero.
-    fn r_inverse(&self) -> Option<Matrix4<T>> {
-        let mut inv = Matrix4::zeros();
-        for col in 0..WRIST_JOINTS {
-            for i in (0..=col).rev() {
-                let mut acc = if i == col { T::one() } else { T::zero() };
-                for j in (i + 1)..=col {
-                    acc -= self.r[(i, j)] * inv[(j, col)];
-                }
-                let d = self.r[(i, i)];
-                if d == T::zero() {
-                    return None;
-                }
-                inv[(i, col)] = acc / d;
-            }
-        }
-        Some(inv)
-    }
-
-    /// sqrt(diag((JᵀJ)⁻¹)): the 1σ per parameter for unit reading noise.
-    fn unit_sigma(&self) -> Option<[T; WRIST_JOINTS]> {
-        let inv = self.r_inverse()?;
-        let mut out = [T::zero(); WRIST_JOINTS];
-        for (k, o) in out.iter_mut().enumerate() {
-            // (JᵀJ)⁻¹ = R⁻¹R⁻ᵀ: its diagonal is the squared row norms of R⁻¹.
-            *o = inv.row(k).norm();
-        }
-        Some(out)
-    }
-
-    /// The least-squares step, optionally damped by λ (Levenberg-Marquardt).
-    fn step(&self, lambda: T) -> Option<Vector4<T>> {
-        let sys = if lambda > T::zero() {
-            let mut damped = *self;
-            let sl = lambda.sqrt();
-            for k in 0..WRIST_JOINTS {
-                let mut row = Vector4::zeros();
-                row[k] = sl;
-                damped.add_row(row, T::zero());
-            }
-            damped
-        } else {
-            *self
-        };
-        let mut x = Vector4::zeros();
-        for i in (0..WRIST_JOINTS).rev() {
-            let mut acc = sys.qtb[i];
-            for j in (i + 1)..WRIST_JOINTS {
-                acc -= sys.r[(i, j)] * x[j];
-            }
-            let d = sys.r[(i, i)];
-            if d == T::zero() {
-                return None;
-            }
-            x[i] = acc / d;
-        }
-        Some(x)
-    }
-
-    fn conditioning(&self) -> Conditioning<T> {
-        let svd = self.r.svd(false, true);
-        let sv = svd.singular_values;
-        let (mut imax, mut imin) = (0, 0);
-        for k in 1..WRIST_JOINTS {
-            if sv[k] > sv[imax] {
-                imax = k;
-            }
-            if sv[k] < sv[imin] {
-                imin = k;
-            }
-        }
-        let condition_number = if sv[imin] > T::zero() {
-            sv[imax] / sv[imin]
-        } else {
-            T::max_value().unwrap_or(T::one() / T::EPSILON)
-        };
-        // The right singular vector of the smallest singular value is the direction
-        // in parameter space the data cannot see: name its large components.
-        let mut weakest = ParamSet::default();
-        if let Some(vt) = svd.v_t {
-            for k in 0..WRIST_JOINTS {
-                if vt[(imin, k)].abs() > T::lit(0.3) {
-                    weakest = weakest.with(k);
-                }
-            }
-        }
-        Conditioning {
-            condition_number,
-            weakest,
-        }
-    }
 }
 
 impl<T: Real> Stage2Model<T> {
@@ -429,7 +293,10 @@ fn out_of_range<T: Real>(pose: usize, axis: TiltAxis, value_rad: T, range_rad: T
 }
 
 /// Refuses a pose set that cannot separate the parameters.
-fn check_conditioning<T: Real>(info: &Information<T>, max_condition: T) -> Result<T, FitError> {
+pub(crate) fn check_conditioning<T: Real>(
+    info: &Information<T>,
+    max_condition: T,
+) -> Result<T, FitError> {
     let c = info.conditioning();
     if !c.condition_number.is_finite() || c.condition_number > T::lit(RANK_DEFICIENT_CONDITION) {
         return Err(FitError::RankDeficient { params: c.weakest });
@@ -528,15 +395,17 @@ pub fn fit<T: Real>(
     // E[cost] = σ²·(2N − 4 + tr(D·J_mᵀ(I−P)J_m)): without that term σ from the
     // residuals would come out ~20 % high in a real session.
     let d = Matrix4::from_fn(|r, c| config.model_covariance[r][c]);
-    let (propagated, extra_dof) = if d.iter().any(|v| *v != T::zero()) {
+    let (sensitivity, extra_dof) = if d.iter().any(|v| *v != T::zero()) {
         let (coupling, model_info) = model.model_coupling(poses, &offsets_rad);
-        let s = inv * coupling;
-        let left = model_info - coupling.transpose() * s;
-        // S·D·Sᵀ and tr(D·left).
-        (Some(s * d * s.transpose()), (d * left).trace())
+        let s = -(inv * coupling);
+        let left = model_info + coupling.transpose() * s;
+        // tr(D·left).
+        (s, (d * left).trace())
     } else {
-        (None, T::zero())
+        (Matrix4::zeros(), T::zero())
     };
+    // σ⁻²·Cov(Δθ) = (JᵀJ)⁻¹ + S·D·Sᵀ.
+    let unit_covariance = inv + sensitivity * d * sensitivity.transpose();
 
     let n_readings = 2 * poses.len();
     let residual_rms_rad = (cost / T::lit(n_readings as f64)).sqrt();
@@ -552,14 +421,21 @@ pub fn fit<T: Real>(
     let mut sigma_rad = [T::zero(); WRIST_JOINTS];
     let mut sigma_stage2_rad = [T::zero(); WRIST_JOINTS];
     for k in 0..WRIST_JOINTS {
-        let own = inv[(k, k)];
-        let from_model = propagated.map_or(T::zero(), |m| m[(k, k)]);
-        sigma_stage2_rad[k] = own.sqrt() * noise_sigma_rad;
+        sigma_stage2_rad[k] = inv[(k, k)].sqrt() * noise_sigma_rad;
         // A covariance is positive semi-definite; max() only guards rounding.
-        sigma_rad[k] = (own + from_model.max(T::zero())).sqrt() * noise_sigma_rad;
+        sigma_rad[k] = unit_covariance[(k, k)].max(T::zero()).sqrt() * noise_sigma_rad;
     }
-    let all_finite =
-        offsets_rad.iter().chain(&sigma_rad).all(|v| v.is_finite()) && residual_rms_rad.is_finite();
+    let variance = noise_sigma_rad * noise_sigma_rad;
+    let covariance_rad2: [[T; WRIST_JOINTS]; WRIST_JOINTS] =
+        core::array::from_fn(|r| core::array::from_fn(|c| unit_covariance[(r, c)] * variance));
+    let model_sensitivity: [[T; 4]; WRIST_JOINTS] =
+        core::array::from_fn(|r| core::array::from_fn(|c| sensitivity[(r, c)]));
+    let all_finite = offsets_rad
+        .iter()
+        .chain(&sigma_rad)
+        .chain(covariance_rad2.iter().flatten())
+        .all(|v| v.is_finite())
+        && residual_rms_rad.is_finite();
     if !all_finite {
         return Err(FitError::NonFiniteResult);
     }
@@ -567,6 +443,8 @@ pub fn fit<T: Real>(
         offsets_rad,
         sigma_rad,
         sigma_stage2_rad,
+        covariance_rad2,
+        model_sensitivity,
         residual_rms_rad,
         noise_sigma_rad,
         sigma_source,
@@ -592,46 +470,6 @@ pub fn single_linearised_step<T: Real>(
     info.step(T::zero())
         .map(Into::into)
         .ok_or(FitError::NonFiniteResult)
-}
-
-/// The covariance bound σ²(JᵀJ)⁻¹ of a pose set: the 1σ per offset any unbiased
-/// estimator can reach with per-reading noise `noise_sigma_rad` (Cramér-Rao for
-/// Gaussian noise), evaluated at `offsets_rad`.
-///
-/// # Errors
-/// Too few poses, non-finite joints, a rank-deficient set (naming the parameters).
-/// An ill-conditioned set still gets its (large) bound: that is the information a
-/// planner needs.
-pub fn covariance_bound<'p, T: Real + 'p>(
-    model: &Stage2Model<T>,
-    joints_rad: impl Iterator<Item = &'p [T; WRIST_JOINTS]> + Clone,
-    offsets_rad: &[T; WRIST_JOINTS],
-    noise_sigma_rad: T,
-) -> Result<CovarianceBound<T>, FitError> {
-    let mut n = 0;
-    for (i, j) in joints_rad.clone().enumerate() {
-        if j.iter().any(|q| !q.is_finite()) {
-            return Err(FitError::NonFiniteJoint { pose: i });
-        }
-        n += 1;
-    }
-    if n < MIN_POSES {
-        return Err(FitError::TooFewPoses {
-            got: n,
-            min: MIN_POSES,
-        });
-    }
-    let info = model.information(joints_rad, offsets_rad);
-    let condition_number = check_conditioning(&info, T::lit(RANK_DEFICIENT_CONDITION))?;
-    let unit = info.unit_sigma().ok_or(FitError::NonFiniteResult)?;
-    let mut sigma_rad = [T::zero(); WRIST_JOINTS];
-    for (s, u) in sigma_rad.iter_mut().zip(unit) {
-        *s = u * noise_sigma_rad;
-    }
-    Ok(CovarianceBound {
-        sigma_rad,
-        condition_number,
-    })
 }
 
 #[cfg(test)]

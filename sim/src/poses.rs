@@ -1,7 +1,7 @@
 //! A seeded pose sampler: random joint targets inside the joint limits whose readings
 //! stay inside the sensor window (on the true robot, as a real operator would see).
 
-use crate::sim::{SimInclinometer, SimRobot};
+use crate::{SimInclinometer, SimRobot};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::WRIST_JOINTS;

@@ -2,15 +2,16 @@
 //! stage 2 on the flange, each reading taken by the simulated sensor from the
 //! simulated robot. The pendant's side (core) sees only the readings.
 
-use crate::sim::{Noise, PoseSampler, SamplerError, SimInclinometer, SimRobot};
+use crate::{Noise, PoseSampler, SamplerError, SimInclinometer, SimRobot};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::fit::{PoseReading, Stage2Model};
 use zerocal_core::model::{rot_x, rot_y, rot_z, Convention, Tilt, WristChain, WRIST_JOINTS};
 use zerocal_core::real::deg_to_rad;
+use zerocal_core::session::{BiasSource, SessionReadings, SessionSolution};
 use zerocal_core::stage0::Reversal;
 use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
-use zerocal_core::{FitConfig, FitError, FitResult, StageError};
+use zerocal_core::stage2::{PoseReading, Stage2Model};
+use zerocal_core::{FitConfig, FitResult, StageError};
 
 /// The paper's Table 4 setup (METHOD.md, Reference figures).
 pub struct Table4;
@@ -101,18 +102,29 @@ pub struct SessionResult {
     pub model: Stage2Model<f64>,
     /// Stage 2.
     pub fit: FitResult<f64>,
+    /// Δθ2..Δθ6 and their covariance.
+    pub solution: SessionSolution<f64>,
 }
 
 /// Why a simulated session gave no result.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SessionError {
+pub enum SimError {
     /// No poses fit the window.
     Sampler(SamplerError),
-    /// Stage 0 or 1 refused.
-    Stage(StageError),
-    /// Stage 2 refused.
-    Fit(FitError),
+    /// The session solver refused.
+    Session(zerocal_core::SessionError),
 }
+
+impl std::fmt::Display for SimError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SimError::Sampler(e) => write!(f, "no pose set fits the sensor window: {e:?}"),
+            SimError::Session(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for SimError {}
 
 fn uniform(rng: &mut ChaCha8Rng, half: f64) -> f64 {
     if half > 0.0 {
@@ -127,7 +139,7 @@ impl SimSession {
     ///
     /// # Errors
     /// The pose window cannot be reached.
-    pub fn simulate(cfg: &SessionConfig) -> Result<Self, SessionError> {
+    pub fn simulate(cfg: &SessionConfig) -> Result<Self, SimError> {
         let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed);
         let off = cfg.max_offset_deg;
         let robot = SimRobot {
@@ -158,7 +170,7 @@ impl SimSession {
         sensor: &mut SimInclinometer,
         cfg: &SessionConfig,
         rng: &mut ChaCha8Rng,
-    ) -> Result<Self, SessionError> {
+    ) -> Result<Self, SimError> {
         let stage0 = cfg.with_stage0.then(|| {
             // A bench tilted by up to 2°, the pendant at any heading on it.
             let surface = rot_y(deg_to_rad(uniform(rng, 2.0)))
@@ -185,7 +197,7 @@ impl SimSession {
         let mut sampler = PoseSampler::symmetric(cfg.joint_range_deg, cfg.window_deg, rng.gen());
         let joints = sampler
             .sample(&robot, sensor, cfg.poses)
-            .map_err(SessionError::Sampler)?;
+            .map_err(SimError::Sampler)?;
         let poses = joints
             .iter()
             .map(|q| PoseReading {
@@ -202,40 +214,40 @@ impl SimSession {
         })
     }
 
-    /// Runs stages 0-2 as the pendant does.
+    /// The readings as core's session solver takes them.
+    pub fn readings(&self) -> SessionReadings<'_, f64> {
+        SessionReadings {
+            convention: self.sensor.model.convention,
+            chain: self.robot.chain,
+            bias: self
+                .stage0
+                .map_or(BiasSource::Unknown, BiasSource::Reversal),
+            stage1: self.stage1,
+            // Joint 2 stays where stage 1 had it.
+            j2_change_rad: 0.0,
+            poses: &self.poses,
+        }
+    }
+
+    /// Runs stages 0-2 as the pendant does: core's session solver.
     ///
     /// # Errors
     /// Whatever stage refuses.
-    pub fn identify(&self, config: &FitConfig<f64>) -> Result<SessionResult, SessionError> {
-        let range = config.sensor_range_rad;
-        let bias = match &self.stage0 {
-            Some(r) => Some(r.bias(range).map_err(SessionError::Stage)?),
-            None => None,
-        };
-        let convention = self.sensor.model.convention;
-        let stage1 = self
-            .stage1
-            .solve(convention, bias.as_ref(), range)
-            .map_err(SessionError::Stage)?;
-        // Joint 2 stays where stage 1 had it.
-        let handover = stage1.handover(
-            self.robot.chain,
-            convention,
-            bias.as_ref(),
-            0.0,
-            self.stage1.j2_direction,
-        );
-        let model = handover.model;
-        let config = FitConfig {
-            model_covariance: handover.model_covariance,
-            ..*config
-        };
-        let fit = zerocal_core::fit(&model, &self.poses, &config).map_err(SessionError::Fit)?;
+    pub fn identify(&self, config: &FitConfig<f64>) -> Result<SessionResult, SimError> {
+        let outcome = zerocal_core::session::solve(&self.readings(), config);
+        let solution = outcome.result.map_err(SimError::Session)?;
+        let stage1 =
+            outcome
+                .stage1
+                .ok_or(SimError::Session(zerocal_core::SessionError::Stage1(
+                    StageError::NonFiniteReading,
+                )))?;
         Ok(SessionResult {
-            bias,
+            bias: outcome.bias,
             stage1,
-            model,
-            fit,
+            model: solution.model,
+            fit: solution.fit,
+            solution,
         })
     }
 }

@@ -1,0 +1,729 @@
+//! The files the pendant writes and the desktop reads, written and parsed here, once,
+//! so the firmware and the CLI cannot drift apart.
+//!
+//! **The stage-2 log** (`zerocal identify` reads it): `#` comment lines, a header
+//! naming the columns (any order, extra columns ignored), then one pose a row, the
+//! commanded joints and the raw readings in degrees:
+//!
+//! ```text
+//! # comment lines start with '#'
+//! j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg
+//! 12.5,-40.0,3.25,90.0,1.234567,-0.456789
+//! ```
+//!
+//! **The pendant's export** is such a log with the session in `#` metadata lines,
+//! `# key value…`, before the header: `convention`, `stage0_bias_deg x,y`,
+//! `stage1_readings_deg before x,y after x,y c2_deg c s2 ±1`, stage 1's results, the
+//! `identify:` flags that reproduce the pendant's stage-2 model, and after the rows the
+//! result line. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! [`MetaItem`] the metadata the session solver needs.
+//!
+//! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
+//! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
+
+use crate::decimal::Fixed;
+use crate::model::{Convention, Tilt, WRIST_JOINTS};
+use crate::procedure::{ProcedureConfig, ProcedureState};
+use crate::real::{deg_to_rad, rad_to_deg, Real};
+use crate::stage1::AxisOneTurn;
+use crate::stage2::{FitResult, PoseReading};
+use core::fmt::{self, Write};
+
+/// A line of output: long enough for the widest export line.
+pub type Line = heapless::String<192>;
+
+/// The columns a stage-2 log must have, in the order the pendant writes them.
+pub const LOG_COLUMNS: [&str; 6] = ["j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg"];
+
+/// The header the pendant writes.
+pub const LOG_HEADER: &str = "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg";
+
+/// Largest joint command a log may hold (deg): two turns either way; beyond is a unit
+/// or column mistake.
+pub const MAX_JOINT_DEG: f64 = 720.0;
+
+/// Largest reading a log may hold (deg): an inclinometer reads ±180° at most.
+pub const MAX_READING_DEG: f64 = 180.0;
+
+/// Most columns a log row may have (extra ones are ignored, but counted).
+pub const MAX_COLUMNS: usize = 32;
+
+/// Decimals of a degree in the export: 1e-12° is 2e-14 rad, below the resolution of
+/// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the
+/// pendant's numbers, and an `f64` session's offsets move by ~1e-12° at most.
+pub const EXPORT_DECIMALS: u8 = 12;
+
+fn deg<T: Real>(w: &mut Line, rad: T) -> fmt::Result {
+    // In f64, whatever T is: the f32 value converts exactly.
+    write!(
+        w,
+        "{}",
+        Fixed::new(rad_to_deg(rad.to_f64()), EXPORT_DECIMALS)
+    )
+}
+
+/// The lines of `export`, produced one at a time so the link can send each before
+/// formatting the next.
+pub struct Export<'a, T: Real> {
+    state: &'a ProcedureState<T>,
+    config: &'a ProcedureConfig<T>,
+    line: usize,
+}
+
+/// Starts an export.
+pub fn export<'a, T: Real>(
+    state: &'a ProcedureState<T>,
+    config: &'a ProcedureConfig<T>,
+) -> Export<'a, T> {
+    Export {
+        state,
+        config,
+        line: 0,
+    }
+}
+
+const EXPORT_HEAD: usize = 7;
+
+impl<T: Real> Export<'_, T> {
+    fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
+        let s = self.state;
+        match i {
+            0 => w.write_str("# zerocal pendant export: stage-2 log for 'zerocal identify'"),
+            1 => write!(w, "# convention {}", self.config.convention.name()),
+            2 => match s.bias() {
+                Some(b) => {
+                    w.write_str("# stage0_bias_deg ")?;
+                    deg(w, b.x_rad)?;
+                    w.write_char(',')?;
+                    deg(w, b.y_rad)
+                }
+                None => w.write_str("# stage0_bias_deg none"),
+            },
+            3 => match s.stage1_readings() {
+                (Some(a), Some(b)) => {
+                    w.write_str("# stage1_readings_deg before ")?;
+                    deg(w, a.x_rad)?;
+                    w.write_char(',')?;
+                    deg(w, a.y_rad)?;
+                    w.write_str(" after ")?;
+                    deg(w, b.x_rad)?;
+                    w.write_char(',')?;
+                    deg(w, b.y_rad)?;
+                    w.write_str(" c2_deg ")?;
+                    deg(w, self.config.j2_commanded_rad)?;
+                    write!(w, " s2 {}", self.config.j2_direction)
+                }
+                _ => w.write_str("# stage1_readings_deg none"),
+            },
+            4 => match s.stage1() {
+                Some(r) => {
+                    w.write_str("# stage1 delta_theta2_deg ")?;
+                    deg(w, r.delta_theta2_rad)?;
+                    w.write_str(" alpha_deg ")?;
+                    deg(w, r.base_tilt.alpha_rad)?;
+                    w.write_str(" beta_deg ")?;
+                    deg(w, r.base_tilt.beta_rad)?;
+                    w.write_str(" bias_y_deg ")?;
+                    deg(w, r.bias_y_rad)
+                }
+                None => w.write_str("# stage1 none"),
+            },
+            5 => match s.stage2_model(self.config) {
+                // The flags that give `zerocal identify` the pendant's own model.
+                Some(m) => {
+                    write!(
+                        w,
+                        "# identify: --convention {} --base-tilt-deg ",
+                        self.config.convention.name()
+                    )?;
+                    deg(w, m.base_tilt.alpha_rad)?;
+                    w.write_char(',')?;
+                    deg(w, m.base_tilt.beta_rad)?;
+                    w.write_str(" --bias-deg ")?;
+                    deg(w, m.sensor.bias.x_rad)?;
+                    w.write_char(',')?;
+                    deg(w, m.sensor.bias.y_rad)
+                }
+                None => write!(
+                    w,
+                    "# identify: --convention {}",
+                    self.config.convention.name()
+                ),
+            },
+            _ => w.write_str(LOG_HEADER),
+        }
+    }
+
+    fn tail(&self, w: &mut Line) -> Option<fmt::Result> {
+        let outcome = self.state.outcome()?;
+        Some(match &outcome.result {
+            Ok(r) => result_line(w, &r.fit),
+            Err(e) => write!(w, "# refused: {e}"),
+        })
+    }
+}
+
+/// `# stage2 offsets_deg … sigma_deg … residual_rms_deg …`: also a `status` line.
+pub(crate) fn result_line<T: Real>(w: &mut Line, r: &FitResult<T>) -> fmt::Result {
+    w.write_str("# stage2 offsets_deg ")?;
+    for (k, v) in r.offsets_rad.iter().enumerate() {
+        if k > 0 {
+            w.write_char(',')?;
+        }
+        deg(w, *v)?;
+    }
+    w.write_str(" sigma_deg ")?;
+    for (k, v) in r.sigma_rad.iter().enumerate() {
+        if k > 0 {
+            w.write_char(',')?;
+        }
+        write!(w, "{}", crate::decimal::deg_fixed(*v, 6))?;
+    }
+    write!(
+        w,
+        " residual_rms_deg {}",
+        crate::decimal::deg_fixed(r.residual_rms_rad, 6)
+    )
+}
+
+impl<T: Real> Iterator for Export<'_, T> {
+    type Item = Result<Line, fmt::Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let i = self.line;
+        self.line += 1;
+        let mut w = Line::new();
+        let captures = self.state.captures();
+        let r = if i < EXPORT_HEAD {
+            self.head(i, &mut w)
+        } else if let Some((_, p)) = captures.get(i - EXPORT_HEAD) {
+            write_row(&mut w, p)
+        } else if i == EXPORT_HEAD + captures.len() {
+            self.tail(&mut w)?
+        } else {
+            return None;
+        };
+        Some(r.map(|()| w))
+    }
+}
+
+/// What is wrong with a log, and on which line (1-based).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum LogError {
+    /// No header line before the first row, or none at all.
+    NoHeader,
+    /// The header lacks a column.
+    MissingColumn {
+        /// Line of the header.
+        line: usize,
+        /// The column missing.
+        column: &'static str,
+    },
+    /// The header names a column twice.
+    DuplicateColumn {
+        /// Line of the header.
+        line: usize,
+        /// The column.
+        column: &'static str,
+    },
+    /// More columns than [`MAX_COLUMNS`].
+    TooManyColumns {
+        /// The line.
+        line: usize,
+    },
+    /// A row with another number of fields than the header.
+    FieldCount {
+        /// The line.
+        line: usize,
+        /// Fields in the header.
+        expected: usize,
+        /// Fields in the row.
+        got: usize,
+    },
+    /// A field that is not a number.
+    NotANumber {
+        /// The line.
+        line: usize,
+        /// Its column.
+        column: &'static str,
+    },
+    /// A number that is not finite, or outside its column's bound.
+    OutOfRange {
+        /// The line.
+        line: usize,
+        /// Its column.
+        column: &'static str,
+        /// The bound (± deg).
+        limit_deg: f64,
+    },
+    /// A header but no rows.
+    NoPoses,
+    /// A metadata line that names a known key but does not parse.
+    BadMetadata {
+        /// The line.
+        line: usize,
+        /// The key.
+        key: &'static str,
+    },
+}
+
+impl fmt::Display for LogError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            LogError::NoHeader => write!(f, "the log has no header line; expected: {LOG_HEADER}"),
+            LogError::MissingColumn { line, column } => write!(
+                f,
+                "line {line}: header lacks column '{column}' (expected {LOG_HEADER})"
+            ),
+            LogError::DuplicateColumn { line, column } => {
+                write!(f, "line {line}: header names column '{column}' twice")
+            }
+            LogError::TooManyColumns { line } => {
+                write!(f, "line {line}: more than {MAX_COLUMNS} columns")
+            }
+            LogError::FieldCount {
+                line,
+                expected,
+                got,
+            } => write!(f, "line {line}: {got} fields, the header has {expected}"),
+            LogError::NotANumber { line, column } => {
+                write!(f, "line {line}: {column} is not a number")
+            }
+            LogError::OutOfRange {
+                line,
+                column,
+                limit_deg,
+            } => write!(
+                f,
+                "line {line}: {column} is not a finite number within +/-{limit_deg} deg"
+            ),
+            LogError::NoPoses => f.write_str("the log has a header but no poses"),
+            LogError::BadMetadata { line, key } => {
+                write!(f, "line {line}: metadata '{key}' does not parse")
+            }
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for LogError {}
+
+/// One line of a log, as read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LogLine<'a, T> {
+    /// Blank.
+    Blank,
+    /// A `#` line: its text after `#`, trimmed.
+    Comment(&'a str),
+    /// The header.
+    Header,
+    /// A pose.
+    Pose(PoseReading<T>),
+}
+
+/// Reads a log a line at a time (no heap, so the pendant could too).
+///
+/// The number parser is the caller's: [`crate::decimal::parse`] on the pendant, the standard
+/// library's correctly rounded one on the desktop.
+#[derive(Clone, Debug)]
+pub struct LogReader {
+    /// Field index of each of [`LOG_COLUMNS`], once the header is read.
+    columns: Option<[usize; 6]>,
+    fields: usize,
+    line: usize,
+    poses: usize,
+}
+
+impl Default for LogReader {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl LogReader {
+    /// Before the first line.
+    pub fn new() -> Self {
+        LogReader {
+            columns: None,
+            fields: 0,
+            line: 0,
+            poses: 0,
+        }
+    }
+
+    /// The number of the line last fed (1-based).
+    pub fn line(&self) -> usize {
+        self.line
+    }
+
+    /// Reads the next line (without its line break).
+    ///
+    /// # Errors
+    /// A bad header or row, naming the line and the column.
+    pub fn feed<'a, T: Real>(
+        &mut self,
+        text: &'a str,
+        parse: impl Fn(&str) -> Option<f64>,
+    ) -> Result<LogLine<'a, T>, LogError> {
+        self.line += 1;
+        let line = self.line;
+        let t = text.trim();
+        if t.is_empty() {
+            return Ok(LogLine::Blank);
+        }
+        if let Some(comment) = t.strip_prefix('#') {
+            return Ok(LogLine::Comment(comment.trim()));
+        }
+        let Some(columns) = self.columns else {
+            let mut columns = [usize::MAX; 6];
+            let mut fields = 0;
+            for (i, name) in t.split(',').map(str::trim).enumerate() {
+                fields = i + 1;
+                if fields > MAX_COLUMNS {
+                    return Err(LogError::TooManyColumns { line });
+                }
+                if let Some(k) = LOG_COLUMNS.iter().position(|c| *c == name) {
+                    if columns[k] != usize::MAX {
+                        return Err(LogError::DuplicateColumn {
+                            line,
+                            column: LOG_COLUMNS[k],
+                        });
+                    }
+                    columns[k] = i;
+                }
+            }
+            if let Some(k) = columns.iter().position(|&c| c == usize::MAX) {
+                return Err(if line == 1 || fields > 1 {
+                    LogError::MissingColumn {
+                        line,
+                        column: LOG_COLUMNS[k],
+                    }
+                } else {
+                    LogError::NoHeader
+                });
+            }
+            self.columns = Some(columns);
+            self.fields = fields;
+            return Ok(LogLine::Header);
+        };
+        let mut values = [0.0f64; 6];
+        let mut got = 0;
+        for (i, field) in t.split(',').enumerate() {
+            got = i + 1;
+            if got > MAX_COLUMNS {
+                return Err(LogError::TooManyColumns { line });
+            }
+            if let Some(k) = columns.iter().position(|&c| c == i) {
+                let column = LOG_COLUMNS[k];
+                let v = parse(field.trim()).ok_or(LogError::NotANumber { line, column })?;
+                let limit_deg = if k < WRIST_JOINTS {
+                    MAX_JOINT_DEG
+                } else {
+                    MAX_READING_DEG
+                };
+                if !(v.is_finite() && v.abs() <= limit_deg) {
+                    return Err(LogError::OutOfRange {
+                        line,
+                        column,
+                        limit_deg,
+                    });
+                }
+                values[k] = v;
+            }
+        }
+        if got != self.fields {
+            return Err(LogError::FieldCount {
+                line,
+                expected: self.fields,
+                got,
+            });
+        }
+        self.poses += 1;
+        Ok(LogLine::Pose(PoseReading {
+            joints_rad: [values[0], values[1], values[2], values[3]].map(|d| deg_to_rad(T::lit(d))),
+            reading: Tilt::from_deg(T::lit(values[4]), T::lit(values[5])),
+        }))
+    }
+
+    /// Checks the end of the log.
+    ///
+    /// # Errors
+    /// No header, or no rows.
+    pub fn finish(&self) -> Result<usize, LogError> {
+        match (self.columns, self.poses) {
+            (None, _) => Err(LogError::NoHeader),
+            (Some(_), 0) => Err(LogError::NoPoses),
+            (Some(_), n) => Ok(n),
+        }
+    }
+}
+
+/// A metadata item of the pendant's export that the session solver needs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MetaItem<T> {
+    /// `# convention rpy|axis`.
+    Convention(Convention),
+    /// `# stage0_bias_deg x,y` (`None` for `none`).
+    Bias(Option<Tilt<T>>),
+    /// `# stage1_readings_deg before x,y after x,y c2_deg c s2 ±1` (`None` for `none`).
+    Stage1(Option<AxisOneTurn<T>>),
+}
+
+/// Reads a metadata comment (the text after `#`). `Ok(None)` for other comments.
+///
+/// # Errors
+/// A known key whose value does not parse.
+pub fn parse_meta<T: Real>(
+    comment: &str,
+    line: usize,
+    parse: impl Fn(&str) -> Option<f64>,
+) -> Result<Option<MetaItem<T>>, LogError> {
+    let mut words = comment.split_whitespace();
+    let (Some(key), rest) = (words.next(), words) else {
+        return Ok(None);
+    };
+    let mut rest = rest;
+    let pair = |text: Option<&str>| -> Option<Tilt<T>> {
+        let (x, y) = text?.split_once(',')?;
+        let (x, y) = (parse(x)?, parse(y)?);
+        (x.is_finite() && y.is_finite() && x.abs() <= MAX_READING_DEG && y.abs() <= MAX_READING_DEG)
+            .then(|| Tilt::from_deg(T::lit(x), T::lit(y)))
+    };
+    let item = match key {
+        "convention" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "convention",
+            };
+            let c = rest.next().and_then(Convention::parse).ok_or(bad)?;
+            if rest.next().is_some() {
+                return Err(bad);
+            }
+            MetaItem::Convention(c)
+        }
+        "stage0_bias_deg" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "stage0_bias_deg",
+            };
+            match rest.next() {
+                Some("none") => MetaItem::Bias(None),
+                v => MetaItem::Bias(Some(pair(v).ok_or(bad)?)),
+            }
+        }
+        "stage1_readings_deg" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "stage1_readings_deg",
+            };
+            let first = rest.next();
+            if first == Some("none") {
+                MetaItem::Stage1(None)
+            } else {
+                let before = (first == Some("before"))
+                    .then(|| pair(rest.next()))
+                    .flatten();
+                let after = (rest.next() == Some("after"))
+                    .then(|| pair(rest.next()))
+                    .flatten();
+                let c2 = (rest.next() == Some("c2_deg"))
+                    .then(|| rest.next().and_then(&parse))
+                    .flatten()
+                    .filter(|v| v.is_finite() && v.abs() <= MAX_JOINT_DEG);
+                let s2 = (rest.next() == Some("s2"))
+                    .then(|| match rest.next() {
+                        Some("1") => Some(1i8),
+                        Some("-1") => Some(-1),
+                        _ => None,
+                    })
+                    .flatten();
+                match (before, after, c2, s2, rest.next()) {
+                    (Some(before), Some(after), Some(c2), Some(s2), None) => {
+                        MetaItem::Stage1(Some(AxisOneTurn {
+                            before,
+                            after,
+                            commanded_j2_rad: deg_to_rad(T::lit(c2)),
+                            j2_direction: s2,
+                        }))
+                    }
+                    _ => return Err(bad),
+                }
+            }
+        }
+        _ => return Ok(None),
+    };
+    Ok(Some(item))
+}
+
+/// Writes one pose as a log row.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_row<T: Real>(w: &mut Line, p: &PoseReading<T>) -> fmt::Result {
+    for q in p.joints_rad {
+        deg(w, q)?;
+        w.write_char(',')?;
+    }
+    deg(w, p.reading.x_rad)?;
+    w.write_char(',')?;
+    deg(w, p.reading.y_rad)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::isclose;
+
+    fn read_all(text: &str) -> Result<std::vec::Vec<PoseReading<f64>>, LogError> {
+        let mut r = LogReader::new();
+        let mut poses = std::vec::Vec::new();
+        for line in text.lines() {
+            if let LogLine::Pose(p) = r.feed(line, |s| s.parse().ok())? {
+                poses.push(p);
+            }
+        }
+        r.finish()?;
+        Ok(poses)
+    }
+
+    #[test]
+    fn reads_comments_reordered_columns_and_spaces() {
+        let text = "# pendant export\n# convention axis\ny_deg, x_deg, j3_deg,j4_deg,j5_deg,j6_deg\n0.5,1.5,10,20,30,40\n# mid comment\n-0.5,-1.5,1,2,3,4\n";
+        let poses = read_all(text).expect("valid");
+        assert_eq!(poses.len(), 2);
+        let (x, y) = poses[0].reading.to_deg();
+        // Degrees to radians and back: two roundings, a few ulps.
+        assert!(isclose(x, 1.5, 4e-16, 0.0) && isclose(y, 0.5, 4e-16, 0.0));
+        assert!(isclose(
+            poses[1].joints_rad[3].to_degrees(),
+            4.0,
+            4e-16,
+            0.0
+        ));
+    }
+
+    #[test]
+    fn errors_name_the_line_and_column() {
+        let h = "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n";
+        let e = read_all(&format!("{h}1,2,3,4,0.1,0.2\n1,2,three,4,0.1,0.2\n")).unwrap_err();
+        assert_eq!(
+            e,
+            LogError::NotANumber {
+                line: 3,
+                column: "j5_deg"
+            }
+        );
+        assert_eq!(
+            read_all(&format!("{h}1,2,3,4,0.1\n")).unwrap_err(),
+            LogError::FieldCount {
+                line: 2,
+                expected: 6,
+                got: 5
+            }
+        );
+        assert_eq!(
+            read_all("j3_deg,j4_deg,j5_deg,x_deg,y_deg\n1,2,3,0.1,0.2\n").unwrap_err(),
+            LogError::MissingColumn {
+                line: 1,
+                column: "j6_deg"
+            }
+        );
+        let e = read_all(&format!("{h}1,2,3,4,NaN,0\n")).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                LogError::OutOfRange {
+                    line: 2,
+                    column: "x_deg",
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        let e = read_all(&format!("{h}1,2,3,4,0.1,0.2\n1,9000,3,4,0.1,0.2\n")).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                LogError::OutOfRange {
+                    line: 3,
+                    column: "j4_deg",
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        assert_eq!(read_all("").unwrap_err(), LogError::NoHeader);
+        assert_eq!(read_all(h).unwrap_err(), LogError::NoPoses);
+        assert_eq!(
+            read_all("j3_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n").unwrap_err(),
+            LogError::DuplicateColumn {
+                line: 1,
+                column: "j3_deg"
+            }
+        );
+    }
+
+    #[test]
+    fn rows_write_and_read_back_to_the_export_precision() {
+        let p = PoseReading {
+            joints_rad: [0.1, -2.9, 1.0 / 3.0, 3.0],
+            reading: Tilt::new(0.123_456_789_012_345_6, -0.000_001_234_567_891),
+        };
+        let mut w = Line::new();
+        write_row(&mut w, &p).unwrap();
+        let back = read_all(&format!("{LOG_HEADER}\n{w}\n")).unwrap();
+        // 12 decimals of a degree: ±5e-13° = ±8.7e-15 rad, plus conversions.
+        let tol = 1e-14;
+        for k in 0..4 {
+            assert!(isclose(back[0].joints_rad[k], p.joints_rad[k], 0.0, tol));
+        }
+        assert!(isclose(back[0].reading.x_rad, p.reading.x_rad, 0.0, tol));
+        assert!(isclose(back[0].reading.y_rad, p.reading.y_rad, 0.0, tol));
+    }
+
+    #[test]
+    fn metadata_parses_and_junk_is_named() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        assert_eq!(
+            parse_meta::<f64>("convention axis", 2, parse),
+            Ok(Some(MetaItem::Convention(Convention::Axis)))
+        );
+        assert_eq!(
+            parse_meta::<f64>("stage0_bias_deg none", 3, parse),
+            Ok(Some(MetaItem::Bias(None)))
+        );
+        match parse_meta::<f64>(
+            "stage1_readings_deg before 1.5,-0.5 after 0.25,0.75 c2_deg -2 s2 -1",
+            4,
+            parse,
+        ) {
+            Ok(Some(MetaItem::Stage1(Some(t)))) => {
+                assert_eq!(t.j2_direction, -1);
+                assert!(isclose(t.before.to_deg().0, 1.5, 1e-15, 0.0));
+                assert!(isclose(t.commanded_j2_rad.to_degrees(), -2.0, 1e-15, 0.0));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(
+            parse_meta::<f64>("a comment of the user", 1, parse),
+            Ok(None)
+        );
+        for bad in [
+            "convention polar",
+            "stage0_bias_deg 1",
+            "stage0_bias_deg 1,x",
+            "stage1_readings_deg before 1,2 after 3,4 c2_deg 0 s2 2",
+            "stage1_readings_deg before 1,2 after 3,4",
+        ] {
+            assert!(
+                matches!(
+                    parse_meta::<f64>(bad, 7, parse),
+                    Err(LogError::BadMetadata { line: 7, .. })
+                ),
+                "{bad}"
+            );
+        }
+    }
+}

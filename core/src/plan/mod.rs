@@ -1,0 +1,406 @@
+//! Stage-2 pose planning: which θ3..θ6 targets to send the robot to, chosen before it
+//! moves, so that the fit reaches the best accuracy the sensor window allows.
+//!
+//! How widely the joints vary inside the sensor window decides the accuracy
+//! (METHOD.md, Reference figures): 30 random poses with the joints within ±30° give
+//! ~0.0025° per axis, a planned handful does an order of magnitude better.
+//!
+//! The planner is an optimal experimental design on the linearised model:
+//!
+//! 1. **Candidates.** A seeded [`Xorshift64Star`] draws joint targets uniformly inside
+//!    the joint limits and keeps those whose predicted readings (at zero offsets, with
+//!    the model's base tilt and bias) stay within `window − margin`: the margin leaves
+//!    room for the offsets not yet known. Each kept candidate stores its information
+//!    `JᵢᵀJᵢ` (4×4, 2 readings).
+//! 2. **Greedy build.** Poses are added one at a time, each the candidate that most
+//!    increases `log det(JᵀJ)` (D-optimal, with a small ridge until the set has rank 4).
+//! 3. **Exchange** (Fedorov-style). Each pose of the design is swapped for the candidate
+//!    that most improves the criterion — D-optimal `max log det JᵀJ` or A-optimal
+//!    `min trace (JᵀJ)⁻¹`, the sum of the predicted variances — until a pass improves
+//!    nothing. A candidate is used at most once: distinct poses keep the plan robust to
+//!    a model error at any one of them.
+//! 4. **Check.** The plan's covariance bound ([`covariance_bound`]) gives the predicted
+//!    1σ per axis; a plan that cannot separate some parameters (e.g. limits that pin
+//!    θ4, so that Δθ3 and Δθ5 are one rotation about x) is refused with the parameters
+//!    named, before the robot moves.
+//!
+//! No heap: the candidate pool is a buffer the caller provides (`&mut [Candidate<T>]`,
+//! 56 bytes per candidate in `f32`, so 256 candidates are 14 KiB of the pendant's RAM),
+//! the plan is a `heapless::Vec` of at most [`MAX_POSES`].
+
+mod design;
+mod random;
+
+pub use design::Candidate;
+pub use random::Xorshift64Star;
+
+use crate::error::FitError;
+use crate::model::WRIST_JOINTS;
+use crate::real::{deg_to_rad, rad_to_deg, Real};
+use crate::stage2::{covariance_bound, weakest_of_gram, Stage2Model, MIN_POSES};
+use core::fmt;
+use design::{draw_pool, exchange, greedy, information_of, reading_extent, score, travel_order};
+
+/// Most poses a plan holds.
+pub const MAX_POSES: usize = 64;
+
+/// A candidate pool size that works well: the D/A-optimal 8-pose plan from 256
+/// candidates is within a few percent of the one from 4096.
+pub const DEFAULT_POOL: usize = 256;
+
+/// Joint targets θ3..θ6 (rad), one per pose: a plan's poses, as the pendant keeps them.
+pub type PoseList<T> = heapless::Vec<[T; WRIST_JOINTS], MAX_POSES>;
+
+/// What "best" means for a pose set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Criterion {
+    /// Minimise trace (JᵀJ)⁻¹: the sum of the four predicted variances.
+    #[default]
+    AOptimal,
+    /// Maximise log det JᵀJ: the smallest joint confidence region.
+    DOptimal,
+}
+
+impl Criterion {
+    /// Parses `a` / `a-optimal` or `d` / `d-optimal` (case-insensitive).
+    pub fn parse(s: &str) -> Option<Self> {
+        let t = s.trim();
+        if t.eq_ignore_ascii_case("a") || t.eq_ignore_ascii_case("a-optimal") {
+            Some(Criterion::AOptimal)
+        } else if t.eq_ignore_ascii_case("d") || t.eq_ignore_ascii_case("d-optimal") {
+            Some(Criterion::DOptimal)
+        } else {
+            None
+        }
+    }
+}
+
+impl Criterion {
+    /// The short name used on the command line and in files: `a` or `d`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Criterion::AOptimal => "a",
+            Criterion::DOptimal => "d",
+        }
+    }
+}
+
+impl core::str::FromStr for Criterion {
+    type Err = crate::model::UnknownName;
+
+    /// `a` / `a-optimal` or `d` / `d-optimal` (case-insensitive).
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Criterion::parse(s).ok_or(crate::model::UnknownName)
+    }
+}
+
+/// Planner settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlanConfig<T> {
+    /// Poses to plan (`MIN_POSES..=MAX_POSES`).
+    pub poses: usize,
+    /// The sensor window: readings must stay within ±this (rad).
+    pub window_rad: T,
+    /// Planned readings stay within ±(window − margin) at zero offsets (rad), so that
+    /// the still unknown offsets cannot push a reading out of the window.
+    pub margin_rad: T,
+    /// (low, high) of θ3..θ6 (rad).
+    pub limits_rad: [(T, T); WRIST_JOINTS],
+    /// Seed of the candidate draw: the same seed gives the same plan.
+    pub seed: u64,
+    /// Feasible candidates to collect (at most the pool buffer's length).
+    pub candidates: usize,
+    /// Per-reading noise 1σ (rad), for the predicted 1σ.
+    pub noise_sigma_rad: T,
+    /// What to optimise.
+    pub criterion: Criterion,
+    /// Random draws before giving up on filling the pool.
+    pub max_draws: u32,
+    /// Exchange passes at most (each tries every candidate at every pose).
+    pub max_exchange_passes: u32,
+    /// Plans whose Jacobian is worse conditioned than this are refused: keep it equal
+    /// to the fit's `FitConfig::max_condition_number`, or the fit refuses the plan.
+    pub max_condition_number: T,
+}
+
+impl<T: Real> Default for PlanConfig<T> {
+    /// 8 poses, the paper's ±10° window with a 1° margin, joints anywhere in ±180°,
+    /// Table-4 noise (uniform ±0.002°, σ = 0.002°/√3), A-optimal, 256 candidates.
+    fn default() -> Self {
+        let full = deg_to_rad(T::lit(180.0));
+        PlanConfig {
+            poses: 8,
+            window_rad: deg_to_rad(T::lit(10.0)),
+            margin_rad: deg_to_rad(T::lit(1.0)),
+            limits_rad: [(-full, full); WRIST_JOINTS],
+            seed: 1,
+            candidates: DEFAULT_POOL,
+            noise_sigma_rad: deg_to_rad(T::lit(0.002 / 1.732_050_807_568_877_2)),
+            criterion: Criterion::AOptimal,
+            // ±180° joints in a 9° window accept about 1 draw in 160: 256 candidates
+            // take ~40,000 draws; this cap only stops an impossible request.
+            max_draws: 2_000_000,
+            max_exchange_passes: 20,
+            max_condition_number: T::lit(1000.0),
+        }
+    }
+}
+
+/// A plan: the poses and what they promise.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Plan<T> {
+    /// θ3..θ6 targets (rad), in a short travel order (nearest neighbour from the pose
+    /// closest to all-zero joints).
+    pub poses_rad: PoseList<T>,
+    /// Predicted 1σ of Δθ3..Δθ6 (rad): the covariance bound at zero offsets.
+    pub predicted_sigma_rad: [T; WRIST_JOINTS],
+    /// Condition number of the plan's Jacobian.
+    pub condition_number: T,
+    /// log det JᵀJ of the plan.
+    pub log_det: T,
+    /// Largest |reading| of the plan at zero offsets (rad).
+    pub max_reading_rad: T,
+    /// Random draws spent on the pool.
+    pub draws: u32,
+    /// Feasible candidates in the pool.
+    pub candidates: usize,
+    /// Swaps the exchange made.
+    pub exchanges: u32,
+}
+
+/// Which setting is wrong.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum PlanSetting {
+    /// `window_rad`.
+    Window,
+    /// `margin_rad`.
+    Margin,
+    /// `limits_rad` of a joint (3..=6).
+    Limits {
+        /// Robot joint number.
+        joint: u8,
+    },
+    /// `noise_sigma_rad`.
+    NoiseSigma,
+    /// `candidates`.
+    Candidates,
+    /// `max_condition_number`.
+    MaxConditionNumber,
+}
+
+impl fmt::Display for PlanSetting {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            PlanSetting::Window => f.write_str("window: must be a positive finite angle"),
+            PlanSetting::Margin => {
+                f.write_str("margin: must be finite, >= 0 and smaller than the window")
+            }
+            PlanSetting::Limits { joint } => {
+                write!(f, "limits of joint {joint}: must be finite with min <= max")
+            }
+            PlanSetting::NoiseSigma => f.write_str("noise: must be a positive finite angle"),
+            PlanSetting::Candidates => {
+                f.write_str("candidates: must be at least the number of poses")
+            }
+            PlanSetting::MaxConditionNumber => {
+                f.write_str("max condition number: must be finite and > 1")
+            }
+        }
+    }
+}
+
+/// Why there is no plan.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum PlanError {
+    /// A setting is out of its domain.
+    InvalidSetting(PlanSetting),
+    /// Fewer poses asked for than the fit needs.
+    TooFewPoses {
+        /// Asked for.
+        got: usize,
+        /// Needed.
+        min: usize,
+    },
+    /// More poses asked for than a plan holds.
+    TooManyPoses {
+        /// Asked for.
+        got: usize,
+        /// Most a plan holds.
+        max: usize,
+    },
+    /// The pool buffer is smaller than the candidates asked for.
+    PoolTooSmall {
+        /// Buffer length.
+        pool: usize,
+        /// Candidates asked for.
+        needed: usize,
+    },
+    /// Too few poses inside the limits keep the readings inside the window.
+    WindowUnreachable {
+        /// Draws tried.
+        draws: u32,
+        /// Feasible candidates found.
+        found: usize,
+    },
+    /// The best plan inside these limits cannot separate some parameters: the fit
+    /// would refuse it ([`FitError::RankDeficient`] or [`FitError::IllConditioned`],
+    /// naming them).
+    Unobservable(FitError),
+}
+
+impl fmt::Display for PlanError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            PlanError::InvalidSetting(s) => write!(f, "invalid plan setting: {s}"),
+            PlanError::TooFewPoses { got, min } => {
+                write!(f, "too few poses: {got} asked for, the fit needs at least {min}")
+            }
+            PlanError::TooManyPoses { got, max } => {
+                write!(f, "too many poses: {got} asked for, a plan holds at most {max}")
+            }
+            PlanError::PoolTooSmall { pool, needed } => write!(
+                f,
+                "candidate pool buffer holds {pool}, {needed} candidates asked for"
+            ),
+            PlanError::WindowUnreachable { draws, found } => write!(
+                f,
+                "only {found} of {draws} random poses inside the joint limits keep the readings inside the window: widen the limits or the window"
+            ),
+            PlanError::Unobservable(e) => write!(f, "plan refused: {e}"),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for PlanError {}
+
+fn validate<T: Real>(config: &PlanConfig<T>, pool_len: usize) -> Result<(), PlanError> {
+    let bad = |s| Err(PlanError::InvalidSetting(s));
+    if config.poses < MIN_POSES {
+        return Err(PlanError::TooFewPoses {
+            got: config.poses,
+            min: MIN_POSES,
+        });
+    }
+    if config.poses > MAX_POSES {
+        return Err(PlanError::TooManyPoses {
+            got: config.poses,
+            max: MAX_POSES,
+        });
+    }
+    if !(config.window_rad.is_finite() && config.window_rad > T::zero()) {
+        return bad(PlanSetting::Window);
+    }
+    let m = config.margin_rad;
+    if !(m.is_finite() && m >= T::zero() && m < config.window_rad) {
+        return bad(PlanSetting::Margin);
+    }
+    for (k, &(lo, hi)) in config.limits_rad.iter().enumerate() {
+        if !(lo.is_finite() && hi.is_finite() && lo <= hi) {
+            return bad(PlanSetting::Limits { joint: k as u8 + 3 });
+        }
+    }
+    if !(config.noise_sigma_rad.is_finite() && config.noise_sigma_rad > T::zero()) {
+        return bad(PlanSetting::NoiseSigma);
+    }
+    let c = config.max_condition_number;
+    if !(c.is_finite() && c > T::one()) {
+        return bad(PlanSetting::MaxConditionNumber);
+    }
+    if config.candidates < config.poses || config.candidates > usize::from(u16::MAX) {
+        return bad(PlanSetting::Candidates);
+    }
+    if pool_len < config.candidates {
+        return Err(PlanError::PoolTooSmall {
+            pool: pool_len,
+            needed: config.candidates,
+        });
+    }
+    Ok(())
+}
+
+/// Plans `config.poses` stage-2 poses for `model` (its chain, the base tilt from
+/// stage 1, the sensor's convention and bias).
+///
+/// `pool` is scratch space for the candidates; it must hold `config.candidates`.
+///
+/// # Errors
+/// An invalid setting (naming it); too few or too many poses; a pool buffer too small;
+/// a window that too few poses inside the limits reach; a plan that cannot separate
+/// some parameters ([`PlanError::Unobservable`], naming them).
+pub fn plan<T: Real>(
+    model: &Stage2Model<T>,
+    config: &PlanConfig<T>,
+    pool: &mut [Candidate<T>],
+) -> Result<Plan<T>, PlanError> {
+    validate(config, pool.len())?;
+    let (found, draws) = draw_pool(model, config, pool);
+    // Fewer candidates than asked for is fine as long as the exchange has a choice.
+    if found < config.poses.max(MIN_POSES) * 2 && found < config.candidates {
+        return Err(PlanError::WindowUnreachable { draws, found });
+    }
+    let pool = &pool[..found];
+    let mut design = greedy(pool, config.poses);
+    let exchanges = exchange(
+        pool,
+        &mut design,
+        config.criterion,
+        config.max_exchange_passes,
+    );
+
+    let mut poses_rad: PoseList<T> = PoseList::new();
+    for &i in &design {
+        if let Some(c) = pool.get(usize::from(i)) {
+            // The design never exceeds MAX_POSES (validated), so this cannot fail.
+            let _ = poses_rad.push(c.joints_rad);
+        }
+    }
+    travel_order(&mut poses_rad);
+
+    let zero = [T::zero(); WRIST_JOINTS];
+    let bound = covariance_bound(model, poses_rad.iter(), &zero, config.noise_sigma_rad)
+        .map_err(PlanError::Unobservable)?;
+    let m = information_of(pool, &design);
+    if bound.condition_number > config.max_condition_number {
+        return Err(PlanError::Unobservable(FitError::IllConditioned {
+            condition_number: bound.condition_number.to_f64() as f32,
+            limit: config.max_condition_number.to_f64() as f32,
+            params: weakest_of_gram(&m),
+        }));
+    }
+    let log_det = score(Criterion::DOptimal, &m).unwrap_or(T::zero());
+    let max_reading_rad = poses_rad.iter().fold(T::zero(), |a, q| {
+        a.max(reading_extent(model, q).unwrap_or(a))
+    });
+    Ok(Plan {
+        poses_rad,
+        predicted_sigma_rad: bound.sigma_rad,
+        condition_number: bound.condition_number,
+        log_det,
+        max_reading_rad,
+        draws,
+        candidates: found,
+        exchanges,
+    })
+}
+
+/// Converts per-joint (min, max) limits in degrees to radians.
+pub fn limits_from_deg<T: Real>(limits_deg: [(T, T); WRIST_JOINTS]) -> [(T, T); WRIST_JOINTS] {
+    limits_deg.map(|(lo, hi)| (deg_to_rad(lo), deg_to_rad(hi)))
+}
+
+impl<T: Real> Plan<T> {
+    /// Predicted 1σ per axis (deg).
+    pub fn predicted_sigma_deg(&self) -> [T; WRIST_JOINTS] {
+        self.predicted_sigma_rad.map(rad_to_deg)
+    }
+}
+
+#[cfg(test)]
+mod tests;

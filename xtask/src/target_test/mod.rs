@@ -1,0 +1,259 @@
+//! `cargo xtask target-test`: zerocal-core on the real CPU, in QEMU.
+//!
+//! 1. Simulates seeded sessions on the host (host-tests' simulators) and writes their
+//!    readings, rounded to `f32`, as the Rust source of static arrays (never committed).
+//! 2. Builds `target-test/` (cortex-m-rt, no embassy) in release for thumbv7em with the
+//!    firmware's toolchain choice, the vectors included.
+//! 3. Runs it under `qemu-system-arm -machine netduinoplus2` (a Cortex-M4F) with a time
+//!    limit, reading its semihosting output (format: `target-test/src/main.rs`).
+//! 4. Solves the same `f32` data in `f64` on the host with the same pipeline
+//!    (`target-test/src/pipeline.rs`) and compares: every number within
+//!    [`TOLERANCE_DEG`], every refusal the same variant naming the same joints.
+//! 5. Checks the instruction count and peak stack of one 30-pose fit, and the release
+//!    firmware's flash and static RAM, against [`BUDGETS`].
+
+mod qemu;
+mod results;
+mod vectors;
+
+use std::fmt::Write as _;
+use std::fs;
+use std::path::Path;
+use std::time::Duration;
+
+use anyhow::{anyhow, bail, Context, Result};
+
+use crate::toolchain::THUMB_TARGET;
+use results::{compare, host_results, worst_difference, TargetReport};
+use vectors::{render_vectors, simulated_cases};
+
+/// Largest difference allowed between the target's `f32` and the host's `f64` result,
+/// on every angle (deg): a tenth of the Table 4 noise-limited accuracy.
+pub const TOLERANCE_DEG: f64 = 2e-5;
+
+/// What the pendant's CPU may spend. Exceeding any of them fails the check.
+pub const BUDGETS: Figures = Figures {
+    solve_instructions: 600_000,
+    solve_stack_bytes: 8 * 1024,
+    flash_bytes: 128 * 1024,
+    static_ram_bytes: 32 * 1024,
+};
+
+/// The session whose solve is timed and stack-measured: the paper's Table 4 setup.
+const MEASURED_CASE: &str = "table4";
+
+/// The refusal the degenerate set must give: θ4 and θ6 held at 0 make joints 3 and 5
+/// coaxial, one parameter.
+const DEGENERATE_CASE: &str = "degenerate";
+const DEGENERATE_ERROR: &str = "RankDeficient j3+j5";
+
+/// The QEMU run is killed (and the check fails) after this long. It takes about a
+/// second; the margin is for a loaded 2-core CI machine.
+const QEMU_TIME_LIMIT: Duration = Duration::from_secs(120);
+
+/// The environment variable through which `target-test/build.rs` finds the vectors.
+const VECTORS_VAR: &str = "ZEROCAL_TARGET_TEST_VECTORS";
+
+/// The four figures the check measures (and the budgets, in the same shape).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Figures {
+    /// Instructions of one 30-pose `f32` fit.
+    pub solve_instructions: u64,
+    /// Peak stack of that fit (bytes).
+    pub solve_stack_bytes: u64,
+    /// Release firmware's flash (bytes).
+    pub flash_bytes: u64,
+    /// Release firmware's static RAM (bytes).
+    pub static_ram_bytes: u64,
+}
+
+impl Figures {
+    /// One line per figure with its budget; `Err` lists the figures over budget.
+    ///
+    /// # Errors
+    /// When any figure exceeds its budget (the message names them).
+    pub fn against(&self, budgets: &Figures) -> Result<String, String> {
+        let rows = [
+            (
+                "30-pose f32 fit (table4)",
+                self.solve_instructions,
+                budgets.solve_instructions,
+                "instructions",
+            ),
+            (
+                "30-pose f32 fit peak stack",
+                self.solve_stack_bytes,
+                budgets.solve_stack_bytes,
+                "bytes",
+            ),
+            (
+                "firmware flash",
+                self.flash_bytes,
+                budgets.flash_bytes,
+                "bytes",
+            ),
+            (
+                "firmware static RAM",
+                self.static_ram_bytes,
+                budgets.static_ram_bytes,
+                "bytes",
+            ),
+        ];
+        let mut text = String::new();
+        let mut over = Vec::new();
+        for (what, value, budget, unit) in rows {
+            let verdict = if value <= budget { "ok" } else { "OVER BUDGET" };
+            // Writing to a String cannot fail.
+            let _ = writeln!(
+                text,
+                "{what}: {value} {unit} (budget {budget} {unit}, {:.0} %) {verdict}",
+                value as f64 * 100.0 / budget.max(1) as f64
+            );
+            if value > budget {
+                over.push(format!("{what} {value} > {budget} {unit}"));
+            }
+        }
+        if over.is_empty() {
+            Ok(text)
+        } else {
+            Err(format!("{text}over budget: {}", over.join("; ")))
+        }
+    }
+}
+
+/// Runs the whole check from the repository root.
+///
+/// # Errors
+/// Simulation, build, QEMU, a missing or different result, or a budget exceeded.
+pub fn run(root: &Path) -> Result<()> {
+    let cases = simulated_cases()?;
+    let expected = host_results(&cases)?;
+
+    let vectors_path = root.join("target").join("target-test").join("vectors.rs");
+    if let Some(dir) = vectors_path.parent() {
+        fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    }
+    fs::write(&vectors_path, render_vectors(&cases)?)
+        .with_context(|| format!("writing {}", vectors_path.display()))?;
+    eprintln!(
+        "xtask: {} test vectors in {}",
+        cases.len(),
+        vectors_path.display()
+    );
+
+    let program_dir = root.join("target-test");
+    let tools = crate::toolchain::provision(crate::toolchain::Needs::ALL)?;
+    let toolchain = tools.thumb()?;
+    // The child cargo (and its build script) inherit xtask's environment; xtask is
+    // single-threaded here.
+    std::env::set_var(VECTORS_VAR, &vectors_path);
+    toolchain.cargo_build(&program_dir, &["--release"])?;
+    let elf = program_dir
+        .join("target")
+        .join(THUMB_TARGET)
+        .join("release")
+        .join("zerocal-target-test");
+
+    let output = qemu::run_qemu(tools.qemu()?, &elf, QEMU_TIME_LIMIT)?;
+    let report = TargetReport::parse(&output);
+    if report.done != Some(cases.len()) {
+        bail!(
+            "the target program did not finish all {} cases (done line: {:?}); its output:\n{output}",
+            cases.len(),
+            report.done
+        );
+    }
+
+    let mismatches = compare(&expected, &report.results, TOLERANCE_DEG);
+    for m in &mismatches {
+        eprintln!("mismatch: {m}");
+    }
+    if !mismatches.is_empty() {
+        bail!(
+            "{} result(s) differ between the target (f32) and the host (f64); target output:\n{output}",
+            mismatches.len()
+        );
+    }
+    println!(
+        "target (f32 on Cortex-M4F, QEMU) agrees with host (f64) on {} cases, {} results, within {TOLERANCE_DEG:e} deg (worst {:.2e} deg)",
+        cases.len(),
+        expected.len(),
+        worst_difference(&expected, &report.results)
+    );
+
+    let (calibration_instructions, calibration_ticks) = report
+        .calibration
+        .ok_or_else(|| anyhow!("no `calibrate` line in the target output"))?;
+    let &(solve_ticks, solve_stack_bytes) = report
+        .measures
+        .get(MEASURED_CASE)
+        .ok_or_else(|| anyhow!("no `measure {MEASURED_CASE}` line in the target output"))?;
+    let solve_instructions =
+        ticks_to_instructions(solve_ticks, calibration_instructions, calibration_ticks)?;
+    println!(
+        "SysTick: {calibration_ticks} ticks for {calibration_instructions} instructions \
+         ({:.1} MHz at 1 instruction/ns under -icount shift=0)",
+        calibration_ticks as f64 * 1000.0 / calibration_instructions as f64
+    );
+
+    let (usage, _) = crate::build_firmware(root)?;
+    let figures = Figures {
+        solve_instructions,
+        solve_stack_bytes,
+        flash_bytes: usage.flash_bytes,
+        static_ram_bytes: usage.ram_bytes,
+    };
+    match figures.against(&BUDGETS) {
+        Ok(text) => {
+            print!("{text}");
+            Ok(())
+        }
+        Err(text) => bail!("{text}"),
+    }
+}
+
+/// Instructions from SysTick ticks, by the calibration loop's known instruction count.
+///
+/// Under `-icount shift=0` QEMU's virtual clock advances 1 ns per instruction and
+/// SysTick ticks at the CPU clock, so ticks are proportional to instructions; the loop
+/// gives the ratio (168 MHz: 5.95 instructions a tick) and the rounding is ±6
+/// instructions.
+///
+/// # Errors
+/// A calibration of zero ticks.
+fn ticks_to_instructions(
+    ticks: u64,
+    calibration_instructions: u64,
+    calibration_ticks: u64,
+) -> Result<u64> {
+    if calibration_ticks == 0 {
+        bail!("SysTick did not advance during the calibration loop (is -icount on?)");
+    }
+    let scaled = u128::from(ticks) * u128::from(calibration_instructions);
+    let rounded = (scaled + u128::from(calibration_ticks) / 2) / u128::from(calibration_ticks);
+    u64::try_from(rounded).context("instruction count overflows u64")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn converts_ticks_with_the_calibration() {
+        assert_eq!(
+            ticks_to_instructions(168, 1_000_000, 168_000).ok(),
+            Some(1000)
+        );
+        assert!(ticks_to_instructions(1, 1, 0).is_err());
+    }
+
+    #[test]
+    fn budgets_fail_when_exceeded() {
+        assert!(BUDGETS.against(&BUDGETS).is_ok());
+        let over = Figures {
+            solve_instructions: BUDGETS.solve_instructions + 1,
+            ..BUDGETS
+        };
+        assert!(over.against(&BUDGETS).is_err());
+    }
+}
