@@ -48,7 +48,7 @@ fn write_default_plan(out_dir: &std::path::Path) {
     );
     let _ = writeln!(
         text,
-        "/// The default stage-2 plan: θ3..θ6 (rad) per pose.\npub const DEFAULT_PLAN_RAD: [[f32; 4]; {}] = [",
+        "/// The default stage-2 plan: θ1..θ6 (rad) per pose.\npub const DEFAULT_PLAN_RAD: [[f32; 6]; {}] = [",
         plan.len()
     );
     for q in &plan {

@@ -20,6 +20,7 @@ fn table4_poses() -> Vec<PoseReading<f64>> {
             .map(|q| PoseReading {
                 joints_rad: *q,
                 reading: sensor.read(&robot.flange_orientation(q)),
+                temperature_c: None,
             })
             .collect(),
         Err(e) => panic!("bench setup: {e:?}"),
@@ -33,6 +34,7 @@ fn bench(c: &mut Criterion) {
         .map(|p| PoseReading {
             joints_rad: p.joints_rad.map(|q| q as f32),
             reading: Tilt::new(p.reading.x_rad as f32, p.reading.y_rad as f32),
+            temperature_c: None,
         })
         .collect();
     let (m64, c64) = (Stage2Model::<f64>::default(), FitConfig::<f64>::default());

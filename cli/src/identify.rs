@@ -1,13 +1,12 @@
 //! `zerocal identify LOG.csv`: stage 2 on a recorded log.
 
 use crate::args::{RealIn, CONDITION, TILT_PAIR};
-use crate::chain::parse_chain;
 use crate::error::CliError;
 use crate::log::{read_log, Log};
 use clap::Args;
 use serde::Serialize;
 use std::path::PathBuf;
-use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, WristChain};
+use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::report::{write_report, Verdict};
 use zerocal_core::stage2::{fit, FitConfig, FitResult, SigmaSource, Stage2Model};
@@ -21,9 +20,15 @@ pub struct IdentifyArgs {
     /// How the sensor's angles derive from gravity (METHOD.md): rpy or axis.
     #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
     pub convention: Convention,
-    /// Base tilt α,β in degrees, as measured by stage 1. Range: each [-10, 10] deg.
+    /// Base tilt α,β in degrees, as stage 1 measured it. It is composed with joints 1
+    /// and 2 as the log records them (its `j1_deg`, `j2_deg` columns, required with this
+    /// flag) and `--delta-theta2-deg`. Range: each [-10, 10] deg.
     #[arg(long, value_name = "X,Y", value_parser = TILT_PAIR, allow_hyphen_values = true)]
     pub base_tilt_deg: Option<(f64, f64)>,
+    /// Δθ2 in degrees, as stage 1 measured it (joint 2's true angle is the log's j2 plus
+    /// this). Range: [-10, 10] deg.
+    #[arg(long, value_name = "D", value_parser = RealIn::closed(-10.0, 10.0, "deg"), allow_hyphen_values = true)]
+    pub delta_theta2_deg: Option<f64>,
     /// Sensor bias x,y in degrees, as measured by stage 0 (and stage 1 for y).
     /// Range: each [-10, 10] deg.
     #[arg(long, value_name = "X,Y", value_parser = TILT_PAIR, allow_hyphen_values = true)]
@@ -40,9 +45,9 @@ pub struct IdentifyArgs {
     /// Refuse pose sets whose Jacobian condition number exceeds this. Range: (1, 100000].
     #[arg(long, default_value_t = 1000.0, value_parser = CONDITION)]
     pub max_condition: f64,
-    /// The robot's wrist (JSON; see `chain.rs`); default the paper's x, y, x, y.
-    #[arg(long, value_name = "FILE")]
-    pub chain: Option<PathBuf>,
+    /// Robot profile: a built-in name (`zerocal robots` lists them) or a TOML file.
+    #[arg(long, value_name = "NAME", default_value = "paper-wrist")]
+    pub robot: String,
     /// Print one JSON object instead of the report.
     #[arg(long)]
     pub json: bool,
@@ -75,23 +80,15 @@ pub struct IdentifyJson {
 pub fn model_and_config(
     args: &IdentifyArgs,
 ) -> Result<(Stage2Model<f64>, FitConfig<f64>), CliError> {
-    let chain = match &args.chain {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
-            parse_chain(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?
-        }
-        None => WristChain::paper(),
-    };
+    let profile = crate::robot::load(&args.robot)?;
     let (a, b) = args.base_tilt_deg.unwrap_or((0.0, 0.0));
     let (bx, by) = args.bias_deg.unwrap_or((0.0, 0.0));
     let model = Stage2Model {
-        chain,
+        arm: profile.arm,
         base_tilt: BaseTilt::from_deg(a, b),
-        sensor: SensorModel {
-            convention: args.convention,
-            bias: Tilt::from_deg(bx, by),
-        },
+        delta_theta2_rad: deg_to_rad(args.delta_theta2_deg.unwrap_or(0.0)),
+        sensor: SensorModel::new(args.convention, Tilt::from_deg(bx, by)),
+        ..Stage2Model::default()
     };
     let config = FitConfig {
         sensor_range_rad: deg_to_rad(args.range_deg),
@@ -120,6 +117,15 @@ pub fn run(args: &IdentifyArgs) -> Result<String, CliError> {
         .map_err(|e| CliError::Input(format!("{}: {e}", args.log.display())))?;
     let log =
         read_log(file).map_err(|e| CliError::Input(format!("{}: {e}", args.log.display())))?;
+    if (args.base_tilt_deg.is_some() || args.delta_theta2_deg.is_some()) && !log.has_j1_j2 {
+        // Stage 1's tilt and Δθ2 compose with joint 2's recorded angle: without it the
+        // tilt of the frame joint 3 turns in would be wrong by joint 2's angle, a silent
+        // error of degrees in Δθ3.
+        return Err(CliError::Input(format!(
+            "{}: the log has no j1_deg and j2_deg columns, which --base-tilt-deg and --delta-theta2-deg compose with; add them, or run `zerocal session` on the pendant's whole export",
+            args.log.display()
+        )));
+    }
     let (model, config) = model_and_config(args)?;
     let result = fit(&model, &log.poses, &config).map_err(|e| refusal(e, &log))?;
     let verdict = Verdict::judge(&result, &config, None);

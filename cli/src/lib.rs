@@ -2,10 +2,11 @@
 //! directly (see `tests/`) as well as through the binary.
 
 pub mod args;
-pub mod chain;
 pub mod error;
 pub mod identify;
 pub mod log;
 pub mod plan;
 pub mod plots;
+pub mod robot;
+pub mod session;
 pub mod simulate;

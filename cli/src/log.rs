@@ -13,6 +13,8 @@ pub struct Log {
     pub poses: Vec<PoseReading<f64>>,
     /// 1-based file line of each pose.
     pub lines: Vec<usize>,
+    /// Whether the header has `j1_deg` and `j2_deg` (else they read as 0).
+    pub has_j1_j2: bool,
 }
 
 /// The desktop's number parser: correctly rounded, so a logged `f64` reads back exactly.
@@ -38,6 +40,7 @@ pub fn read_log(mut input: impl Read) -> Result<Log, String> {
         }
     }
     reader.finish().map_err(|e| e.to_string())?;
+    log.has_j1_j2 = reader.has_column("j1_deg") && reader.has_column("j2_deg");
     Ok(log)
 }
 

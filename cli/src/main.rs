@@ -3,6 +3,7 @@
 //! - `zerocal simulate`: a whole calibration on a simulated robot, report beside truth.
 //! - `zerocal identify LOG.csv`: stage 2 on a recorded log.
 //! - `zerocal plan --poses N`: the stage-2 poses that minimise the predicted 1σ.
+//! - `zerocal session EXPORT`: stages 0-2 on a pendant export, in the controller's terms.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -10,6 +11,7 @@ use std::process::ExitCode;
 use zerocal_cli::error::CliError;
 use zerocal_cli::identify::{self, IdentifyArgs};
 use zerocal_cli::plan::{self, PlanArgs};
+use zerocal_cli::session::{self, SessionArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
 
 /// Joint-zero identification of industrial robots from a dual-axis inclinometer.
@@ -28,17 +30,28 @@ enum Command {
     Identify(IdentifyArgs),
     /// Plan the stage-2 poses and print the 1-sigma they promise.
     Plan(PlanArgs),
+    /// Solve a whole pendant session export (stages 0-2) and print the offsets in the
+    /// controller's own terms.
+    Session(SessionArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
     match &cli.command {
         Command::Simulate(args) => {
-            let (session, result) = simulate::simulate(args)?;
+            let (profile, session, result) = simulate::simulate(args)?;
             let mut out = simulate::render(args, &session, &result)?;
-            let report = simulate::accuracy(args, &session, &result)?;
-            out.push_str(
-                "\n-- positioning accuracy, ISO 9283-style, 6-axis arm (KR 6 R900 class) --\n",
-            );
+            let report = match simulate::accuracy(args, &profile, &session, &result) {
+                Ok(report) => report,
+                // The paper's wrist has no lengths: no positions to test.
+                Err(e) => {
+                    out.push_str(&format!("\nno positioning test: {e}\n"));
+                    return Ok(out);
+                }
+            };
+            out.push_str(&format!(
+                "\n-- positioning accuracy, ISO 9283-style, {} --\n",
+                profile.title
+            ));
             out.push_str(&report.to_string());
             if let Some(dir) = &args.plot {
                 for f in simulate::plots(dir, &session, &result, &report)? {
@@ -49,6 +62,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         }
         Command::Identify(args) => identify::run(args),
         Command::Plan(args) => plan::run(args),
+        Command::Session(args) => session::run(args),
     }
 }
 

@@ -26,16 +26,17 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write;
 use std::path::PathBuf;
-use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, WristChain, WRIST_JOINTS};
+use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError};
 use zerocal_core::real::{deg_to_rad, rad_to_deg};
 use zerocal_core::stage2::Stage2Model;
+use zerocal_profile::Profile;
 
 /// Arguments of `zerocal plan`.
 #[derive(Args, Debug, Clone)]
 pub struct PlanArgs {
-    /// Poses to plan (`zerocal_core::plan::MAX_POSES` at most). Range: [4, 64].
-    #[arg(long, default_value_t = 8, value_parser = CountIn::<usize>::new(4, 64))]
+    /// Poses to plan (`zerocal_core::plan::MAX_POSES` at most). Range: [4, 48].
+    #[arg(long, default_value_t = 8, value_parser = CountIn::<usize>::new(4, 48))]
     pub poses: usize,
     /// Sensor window: readings must stay within ±W degrees. Range: (0, 90] deg.
     #[arg(long, default_value_t = 10.0, value_name = "W", value_parser = RealIn::above(0.0, 90.0, "deg"))]
@@ -45,7 +46,8 @@ pub struct PlanArgs {
     /// Range: [0, 90] deg.
     #[arg(long, default_value_t = 1.0, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
     pub margin_deg: f64,
-    /// Joint limits of joints 3-6: CSV lines `joint,min_deg,max_deg` (default ±180).
+    /// Joint limits of joints 3-6: CSV lines `joint,min_deg,max_deg` (default: the
+    /// robot profile's).
     #[arg(long, value_name = "FILE")]
     pub limits: Option<PathBuf>,
     /// Reading noise: uniform in ±A degrees, as for `simulate` (σ = A/√3).
@@ -70,10 +72,11 @@ pub struct PlanArgs {
     /// will show. Range: each [-10, 10] deg.
     #[arg(long, value_name = "A,B", value_parser = TILT_PAIR, allow_hyphen_values = true)]
     pub base_tilt_deg: Option<(f64, f64)>,
-    /// Robot wrist description (JSON, see `zerocal identify --help`); default: the
-    /// paper's x, y, x, y.
-    #[arg(long, value_name = "FILE")]
-    pub chain: Option<PathBuf>,
+    /// Robot profile: a built-in name (`zerocal robots` lists them) or a TOML file.
+    /// Its joint limits apply unless `--limits` overrides them; joints 1 and 2 stay at
+    /// its stage-1 pose.
+    #[arg(long, value_name = "NAME", default_value = "paper-wrist")]
+    pub robot: String,
     /// Print one JSON object.
     #[arg(long, conflicts_with = "csv")]
     pub json: bool,
@@ -151,8 +154,12 @@ pub fn parse_limits(text: &str) -> Result<LimitsDeg, String> {
 /// The `--json` output.
 #[derive(Serialize, Debug)]
 pub struct PlanJson {
-    /// θ3..θ6 per pose (deg).
-    pub poses_deg: Vec<[f64; WRIST_JOINTS]>,
+    /// Robot profile.
+    pub robot: String,
+    /// θ1..θ6 per pose in the model's angles (deg): what the pendant's `plan set` takes.
+    pub poses_deg: Vec<[f64; JOINTS]>,
+    /// The same poses as the robot's controller shows them (deg).
+    pub poses_controller_deg: Vec<[f64; JOINTS]>,
     /// Predicted 1σ of Δθ3..Δθ6 (deg).
     pub predicted_sigma_deg: [f64; WRIST_JOINTS],
     /// Condition number of the plan's Jacobian.
@@ -174,10 +181,13 @@ pub struct PlanJson {
 }
 
 impl PlanArgs {
-    /// The limits the flags give (the file's, or ±180°).
-    pub fn limits_deg(&self) -> Result<LimitsDeg, CliError> {
+    /// The limits of joints 3-6: the file's, else the profile's.
+    pub fn limits_deg(&self, profile: &Profile) -> Result<LimitsDeg, CliError> {
         match &self.limits {
-            None => Ok([(-180.0, 180.0); WRIST_JOINTS]),
+            None => Ok(core::array::from_fn(|k| {
+                let j = &profile.joints[k + 2];
+                (j.min_deg, j.max_deg)
+            })),
             Some(path) => {
                 let text = std::fs::read_to_string(path)
                     .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
@@ -186,35 +196,26 @@ impl PlanArgs {
         }
     }
 
-    fn model(&self) -> Result<Stage2Model<f64>, CliError> {
-        let chain = match &self.chain {
-            None => WristChain::paper(),
-            Some(path) => {
-                let text = std::fs::read_to_string(path)
-                    .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
-                crate::chain::parse_chain(&text)
-                    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?
-            }
-        };
+    fn model(&self, profile: &Profile) -> Stage2Model<f64> {
         let (a, b) = self.base_tilt_deg.unwrap_or((0.0, 0.0));
-        Ok(Stage2Model {
-            chain,
+        Stage2Model {
+            arm: profile.arm,
             base_tilt: BaseTilt::from_deg(a, b),
-            sensor: SensorModel {
-                convention: self.convention,
-                bias: Tilt::default(),
-            },
-        })
+            sensor: SensorModel::new(self.convention, Tilt::default()),
+            ..Stage2Model::default()
+        }
     }
 
     /// The planner settings the flags give.
-    pub fn config(&self) -> Result<PlanConfig<f64>, CliError> {
-        let limits = self.limits_deg()?;
+    pub fn config(&self, profile: &Profile) -> Result<PlanConfig<f64>, CliError> {
+        let limits = self.limits_deg(profile)?;
+        let q1 = profile.stage1_joints_rad;
         Ok(PlanConfig {
             poses: self.poses,
             window_rad: deg_to_rad(self.window_deg),
             margin_rad: deg_to_rad(self.margin_deg),
             limits_rad: limits.map(|(lo, hi)| (deg_to_rad(lo), deg_to_rad(hi))),
+            fixed_joints_rad: [q1[0], q1[1]],
             seed: self.seed,
             candidates: self.candidates,
             noise_sigma_rad: deg_to_rad(self.noise_deg / 3f64.sqrt()),
@@ -243,12 +244,13 @@ fn cli_error(e: PlanError) -> CliError {
 /// # Errors
 /// Bad flags or limits file (status 2); a plan that cannot separate the parameters or
 /// reach the window inside the limits (status 3).
-pub fn make_plan(args: &PlanArgs) -> Result<(PlanConfig<f64>, Plan<f64>), CliError> {
-    let config = args.config()?;
-    let model = args.model()?;
+pub fn make_plan(args: &PlanArgs) -> Result<(Profile, PlanConfig<f64>, Plan<f64>), CliError> {
+    let profile = crate::robot::load(&args.robot)?;
+    let config = args.config(&profile)?;
+    let model = args.model(&profile);
     let mut pool = vec![Candidate::default(); args.candidates.max(1)];
     let p = plan(&model, &config, &mut pool).map_err(cli_error)?;
-    Ok((config, p))
+    Ok((profile, config, p))
 }
 
 /// Runs `zerocal plan`: the text to print on stdout.
@@ -256,20 +258,24 @@ pub fn make_plan(args: &PlanArgs) -> Result<(PlanConfig<f64>, Plan<f64>), CliErr
 /// # Errors
 /// As [`make_plan`].
 pub fn run(args: &PlanArgs) -> Result<String, CliError> {
-    let (config, p) = make_plan(args)?;
-    let poses_deg: Vec<[f64; WRIST_JOINTS]> =
-        p.poses_rad.iter().map(|q| q.map(rad_to_deg)).collect();
+    let (profile, config, p) = make_plan(args)?;
+    let poses_deg: Vec<[f64; JOINTS]> = p.poses_rad.iter().map(|q| q.map(rad_to_deg)).collect();
+    let shown: Vec<[f64; JOINTS]> = p.poses_rad.iter().map(|q| profile.shown_deg(q)).collect();
     let sigma_deg = p.predicted_sigma_deg();
     if args.csv {
-        let mut out = String::from("j3_deg,j4_deg,j5_deg,j6_deg\n");
+        // Model degrees, six joints: what the pendant's `plan set` takes.
+        let mut out = String::from("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg\n");
         for q in &poses_deg {
-            let _ = writeln!(out, "{:.4},{:.4},{:.4},{:.4}", q[0], q[1], q[2], q[3]);
+            let row: Vec<String> = q.iter().map(|v| format!("{v:.4}")).collect();
+            let _ = writeln!(out, "{}", row.join(","));
         }
         return Ok(out);
     }
     if args.json {
         let j = PlanJson {
+            robot: profile.name.clone(),
             poses_deg,
+            poses_controller_deg: shown,
             predicted_sigma_deg: sigma_deg,
             condition_number: p.condition_number,
             max_reading_deg: rad_to_deg(p.max_reading_rad),
@@ -296,17 +302,20 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
         p.draws,
         p.exchanges
     );
-    let _ = writeln!(out, "pose    j3_deg     j4_deg     j5_deg     j6_deg");
-    for (i, q) in poses_deg.iter().enumerate() {
-        let _ = writeln!(
-            out,
-            "{:>4}  {:>9.4}  {:>9.4}  {:>9.4}  {:>9.4}",
-            i + 1,
-            q[0],
-            q[1],
-            q[2],
-            q[3]
-        );
+    let _ = writeln!(
+        out,
+        "robot {} ({}); joints as its controller shows them (deg):",
+        profile.name, profile.title
+    );
+    let names: Vec<String> = profile
+        .joints
+        .iter()
+        .map(|j| format!("{:>9}", j.name))
+        .collect();
+    let _ = writeln!(out, "pose {}", names.join("  "));
+    for (i, q) in shown.iter().enumerate() {
+        let row: Vec<String> = q.iter().map(|v| format!("{v:>9.4}")).collect();
+        let _ = writeln!(out, "{:>4} {}", i + 1, row.join("  "));
     }
     let _ = writeln!(
         out,
@@ -370,7 +379,7 @@ mod tests {
     fn csv_and_json_outputs() {
         let csv = run(&args(&["--poses", "6", "--csv"])).unwrap_or_else(|e| panic!("{e}"));
         let lines: Vec<&str> = csv.lines().collect();
-        assert_eq!(lines[0], "j3_deg,j4_deg,j5_deg,j6_deg");
+        assert_eq!(lines[0], "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg");
         assert_eq!(lines.len(), 7);
         let json = run(&args(&["--poses", "6", "--json"])).unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_default();
@@ -385,7 +394,7 @@ mod tests {
     fn exit_statuses() {
         // Bad input is refused when the flags are parsed: status 2, naming the range.
         for (flag, value, range) in [
-            ("--poses", "2", "[4, 64]"),
+            ("--poses", "2", "[4, 48]"),
             ("--noise-deg", "0", "(0, 1] deg"),
         ] {
             let e = Wrap::try_parse_from(["plan", flag, value])

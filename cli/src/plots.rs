@@ -11,7 +11,7 @@ use std::io;
 use std::path::{Path, PathBuf};
 use zerocal_core::model::{Tilt, WRIST_JOINTS};
 use zerocal_core::stage2::{PoseReading, Stage2Model};
-use zerocal_sim::arm6::AccuracyReport;
+use zerocal_sim::positioning::AccuracyReport;
 
 const SIZE: (u32, u32) = (900, 640);
 const BEFORE: RGBColor = RGBColor(200, 40, 40);
@@ -170,17 +170,18 @@ pub fn write_plots(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use zerocal_sim::arm6::{accuracy_test, Arm6};
+    use zerocal_sim::positioning::accuracy_test;
 
     #[test]
     fn writes_four_readable_svgs() {
-        let arm = match Arm6::kr6_r900() {
-            Ok(a) => a,
+        let p = match zerocal_profile::builtin("kuka-kr6-r900-sixx") {
+            Ok(p) => p,
             Err(e) => panic!("{e}"),
         };
+        let limits = core::array::from_fn(|k| (p.joints[k].min_deg, p.joints[k].max_deg));
         let truth = [0.0, 0.004, 0.003, -0.002, 0.001, 0.005];
         let found = [0.0, 0.00401, 0.00299, -0.002, 0.001, 0.00501];
-        let report = match accuracy_test(&arm, &truth, &found, 50, 1) {
+        let report = match accuracy_test(&p.title, &p.arm, &limits, &truth, &found, 50, 1) {
             Ok(r) => r,
             Err(e) => panic!("{e}"),
         };

@@ -1,6 +1,7 @@
-//! `zerocal simulate`: the main job on an embedded default. A simulated robot with
-//! hidden offsets, base tilt and sensor bias goes through stages 0-2 exactly as the
-//! pendant would take it, and the pendant's report is printed beside the hidden truth.
+//! `zerocal simulate`: the main job on an embedded default. A simulated robot (a robot
+//! profile's kinematics) with hidden offsets, base tilt and sensor bias goes through
+//! stages 0-2 exactly as the pendant would take it, and the pendant's report is printed
+//! beside the hidden truth, then the positioning test on the same robot.
 
 use crate::args::{CountIn, RealIn, SEED};
 use crate::error::CliError;
@@ -9,13 +10,17 @@ use std::fmt::Write;
 use zerocal_core::model::Convention;
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::report::{write_report, Verdict};
-use zerocal_sim::arm6::{self, AccuracyReport, Arm6};
+use zerocal_profile::Profile;
+use zerocal_sim::positioning::{self, AccuracyReport};
 use zerocal_sim::session::{fit_config_for, SessionConfig, SessionResult};
 use zerocal_sim::{Noise, SimSession};
 
 /// Arguments of `zerocal simulate`.
 #[derive(Args, Debug, Clone)]
 pub struct SimulateArgs {
+    /// Robot profile: a built-in name (`zerocal robots` lists them) or a TOML file.
+    #[arg(long, value_name = "NAME", default_value = "kuka-kr6-r900-sixx")]
+    pub robot: String,
     /// Seed of the hidden truth, the poses and the noise. Range: [0, 18446744073709551615].
     #[arg(long, default_value_t = 1, value_parser = SEED)]
     pub seed: u64,
@@ -29,7 +34,8 @@ pub struct SimulateArgs {
     /// Sensor convention of the simulated sensor and of the model.
     #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
     pub convention: Convention,
-    /// Joints 3-6 are drawn within ±this (deg). Range: (0, 180] deg.
+    /// Joints 3-6 are drawn within ±this (deg), and within the robot's limits.
+    /// Range: (0, 180] deg.
     #[arg(long, default_value_t = 180.0, value_parser = RealIn::above(0.0, 180.0, "deg"))]
     pub joint_range_deg: f64,
     /// Hidden offsets of joints 2-6 are drawn within ±this (deg). Range: [0, 10] deg.
@@ -42,27 +48,43 @@ pub struct SimulateArgs {
     /// identification residuals) into this directory.
     #[arg(long, value_name = "DIR")]
     pub plot: Option<std::path::PathBuf>,
-    /// Test points of the ISO 9283-style accuracy test on the 6-axis arm.
+    /// Test points of the ISO 9283-style accuracy test on the robot (a profile with
+    /// lengths).
     /// Range: [1, 100000].
     #[arg(long, default_value_t = 200, value_parser = CountIn::<usize>::new(1, 100_000))]
     pub accuracy_points: usize,
 }
 
 impl SimulateArgs {
+    /// The reading noise the flags ask for.
+    pub fn noise(&self) -> Noise {
+        if self.noise_deg > 0.0 {
+            Noise::Uniform {
+                half_width_rad: deg_to_rad(self.noise_deg),
+            }
+        } else {
+            Noise::None
+        }
+    }
+
     /// The session the flags describe.
     ///
     /// The ranges are checked when the flags are parsed (`crate::args`).
-    pub fn session_config(&self) -> Result<SessionConfig, CliError> {
+    pub fn session_config(&self, profile: &Profile) -> Result<SessionConfig, CliError> {
+        let r = self.joint_range_deg;
+        let wrist_limits_deg = core::array::from_fn(|k| {
+            let j = &profile.joints[k + 2];
+            (j.min_deg.max(-r), j.max_deg.min(r))
+        });
+        // The paper's robot keeps its own stage 1 (joint 2 drawn, turning either way).
+        let paper = profile.name == "paper-wrist";
         Ok(SessionConfig {
+            arm: (!paper).then_some(profile.arm),
+            stage1_joints_rad: (!paper).then_some(profile.stage1_joints_rad),
+            wrist_limits_deg: Some(wrist_limits_deg),
             seed: self.seed,
             poses: self.poses,
-            noise: if self.noise_deg > 0.0 {
-                Noise::Uniform {
-                    half_width_rad: deg_to_rad(self.noise_deg),
-                }
-            } else {
-                Noise::None
-            },
+            noise: self.noise(),
             convention: self.convention,
             joint_range_deg: self.joint_range_deg,
             max_offset_deg: self.max_offset_deg,
@@ -73,13 +95,14 @@ impl SimulateArgs {
 }
 
 /// Simulates and identifies.
-pub fn simulate(args: &SimulateArgs) -> Result<(SimSession, SessionResult), CliError> {
-    let cfg = args.session_config()?;
+pub fn simulate(args: &SimulateArgs) -> Result<(Profile, SimSession, SessionResult), CliError> {
+    let profile = crate::robot::load(&args.robot)?;
+    let cfg = args.session_config(&profile)?;
     let session = SimSession::simulate(&cfg).map_err(|e| CliError::Refused(e.to_string()))?;
     let result = session
         .identify(&fit_config_for(cfg.noise))
         .map_err(|e| CliError::Refused(e.to_string()))?;
-    Ok((session, result))
+    Ok((profile, session, result))
 }
 
 /// The report: the pendant's view, then the hidden truth beside it.
@@ -88,13 +111,14 @@ pub fn render(
     session: &SimSession,
     result: &SessionResult,
 ) -> Result<String, CliError> {
-    let cfg = fit_config_for(args.session_config()?.noise);
+    let cfg = fit_config_for(args.noise());
     let verdict = Verdict::judge(&result.fit, &cfg, Some(&result.stage1));
     let mut out = String::new();
     let fmt_err = |e: std::fmt::Error| CliError::Input(e.to_string());
     writeln!(
         out,
-        "zerocal simulate: seed {}, {} poses, noise +/-{} deg, {} convention, joints within +/-{} deg",
+        "zerocal simulate: {}, seed {}, {} poses, noise +/-{} deg, {} convention, joints within +/-{} deg",
+        args.robot,
         args.seed,
         args.poses,
         args.noise_deg,
@@ -118,7 +142,7 @@ pub fn render(
     )
     .map_err(fmt_err)?;
     let dt2 = result.stage1.delta_theta2_rad.to_degrees();
-    let t2 = session.robot.delta_theta2_rad.to_degrees();
+    let t2 = session.robot.delta_theta2_rad().to_degrees();
     let s2 = result
         .stage1
         .delta_theta2_sigma_rad(result.fit.noise_sigma_rad)
@@ -132,7 +156,7 @@ pub fn render(
     .map_err(fmt_err)?;
     for k in 0..4 {
         let found = result.fit.offsets_rad[k].to_degrees();
-        let truth = session.robot.offsets_rad[k].to_degrees();
+        let truth = session.robot.wrist_offsets_rad()[k].to_degrees();
         let sigma = result.fit.sigma_rad[k].to_degrees();
         writeln!(
             out,
@@ -156,19 +180,28 @@ pub fn render(
     Ok(out)
 }
 
-/// The ISO 9283-style test on the 6-axis arm (KUKA KR 6 R900 class, `data/arm6_kr6.json`):
-/// TCP error at seeded random poses with the hidden offsets, and after entering the
-/// identified ones.
+/// The ISO 9283-style test on the robot: flange position error at seeded random
+/// poses within its limits with the hidden offsets, and after entering the identified
+/// ones.
 pub fn accuracy(
     args: &SimulateArgs,
+    profile: &Profile,
     session: &SimSession,
     result: &SessionResult,
 ) -> Result<AccuracyReport, CliError> {
-    let arm = Arm6::kr6_r900().map_err(|e| CliError::Input(format!("arm model: {e}")))?;
-    let truth = arm6::arm_offsets(session.robot.delta_theta2_rad, &session.robot.offsets_rad);
-    let found = arm6::arm_offsets(result.stage1.delta_theta2_rad, &result.fit.offsets_rad);
-    arm6::accuracy_test(&arm, &truth, &found, args.accuracy_points, args.seed)
-        .map_err(|e| CliError::Refused(format!("accuracy test: {e}")))
+    let limits = core::array::from_fn(|k| (profile.joints[k].min_deg, profile.joints[k].max_deg));
+    let mut found = [0.0; 6];
+    found[1..].copy_from_slice(&result.solution.offsets_rad);
+    positioning::accuracy_test(
+        &profile.title,
+        &profile.arm,
+        &limits,
+        &session.robot.offsets_rad,
+        &found,
+        args.accuracy_points,
+        args.seed,
+    )
+    .map_err(|e| CliError::Refused(format!("accuracy test: {e}")))
 }
 
 /// Writes the plots of `--plot DIR`; returns the files written.

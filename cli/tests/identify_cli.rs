@@ -100,8 +100,10 @@ fn identify_json_meets_the_bound_on_independent_logs() {
         );
         let n = rng.gen_range(12..=40);
         let mut qs = vec![];
-        let mut csv =
-            String::from("# independent simulator\nj3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n");
+        // Joints 1 and 2 at 0: the tilt is that of the frame joint 3 turns in.
+        let mut csv = String::from(
+            "# independent simulator\nj1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n",
+        );
         while qs.len() < n {
             let q = [0; 4].map(|_| rng.gen_range(-180f64..180.0).to_radians());
             let (x, y) = reading(&q, &off, tilt, bias, axis);
@@ -109,7 +111,7 @@ fn identify_json_meets_the_bound_on_independent_logs() {
                 let nx = x + rng.gen_range(-half_width..half_width);
                 let ny = y + rng.gen_range(-half_width..half_width);
                 csv += &format!(
-                    "{},{},{},{},{},{}\n",
+                    "0,0,{},{},{},{},{},{}\n",
                     q[0].to_degrees(),
                     q[1].to_degrees(),
                     q[2].to_degrees(),
@@ -259,7 +261,8 @@ fn planned_poses_beat_random_ones_by_five_times() {
         .as_array()
         .expect("poses")
         .iter()
-        .map(|p| core::array::from_fn(|k| p[k].as_f64().expect("angle").to_radians()))
+        // Joints 3-6 of each six-joint pose (joints 1 and 2 at the stage-1 pose, 0).
+        .map(|p| core::array::from_fn(|k| p[k + 2].as_f64().expect("angle").to_radians()))
         .collect();
     assert_eq!(planned.len(), 8);
     for q in &planned {
@@ -317,7 +320,7 @@ fn planned_poses_beat_random_ones_by_five_times() {
     assert!(
         text.lines()
             .next()
-            .is_some_and(|h| h.starts_with("j3_deg,j4_deg,j5_deg,j6_deg")),
+            .is_some_and(|h| h.starts_with("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg")),
         "{text}"
     );
     assert_eq!(

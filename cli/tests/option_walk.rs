@@ -168,7 +168,7 @@ fn sample_log() -> PathBuf {
     let dir = std::env::temp_dir().join(format!("zerocal-option-walk-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let path = dir.join("log.csv");
-    let mut text = String::from("j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n");
+    let mut text = String::from("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n");
     let poses: [[f64; 4]; 8] = [
         [0.0, 0.0, 0.0, 0.0],
         [90.0, 3.0, -90.0, 2.0],
@@ -189,7 +189,7 @@ fn sample_log() -> PathBuf {
         let x = u.y.atan2(u.z).to_degrees();
         let y = (-u.x).atan2((u.y * u.y + u.z * u.z).sqrt()).to_degrees();
         text.push_str(&format!(
-            "{},{},{},{},{x:.9},{y:.9}\n",
+            "0,0,{},{},{},{},{x:.9},{y:.9}\n",
             q[0], q[1], q[2], q[3]
         ));
     }
@@ -204,6 +204,8 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
         "simulate" => vec!["simulate".into(), "--accuracy-points=20".into()],
         "identify" => vec!["identify".into(), log.display().to_string()],
         "plan" => vec!["plan".into()],
+        // No numeric options today; a pendant export would be its input.
+        "session" => vec!["session".into(), log.display().to_string()],
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }
 }

@@ -4,6 +4,12 @@ use crate::decimal::Fixed;
 use crate::model::TiltAxis;
 use core::fmt;
 
+/// The names of stage 2's parameters, by index (`stage2::Param`'s order).
+pub const PARAM_NAMES: [&str; 13] = [
+    "j3", "j4", "j5", "j6", "gain_x", "gain_y", "cross_xy", "cross_yx", "sag", "bias_x", "bias_y",
+    "drift_x", "drift_y",
+];
+
 /// A set of stage-2 parameters by index (bit k = parameter k; 0..=3 are Δθ3..Δθ6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -40,14 +46,17 @@ impl ParamSet {
 }
 
 impl fmt::Display for ParamSet {
-    /// `j4+j6`: short enough for the pendant's display.
+    /// `j4+j6`, `j3+sag`: short enough for the pendant's display.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let mut first = true;
-        for j in self.joints() {
+        for k in (0..Self::CAPACITY).filter(|&k| self.contains(k)) {
             if !first {
                 f.write_str("+")?;
             }
-            write!(f, "j{j}")?;
+            match PARAM_NAMES.get(k) {
+                Some(name) => f.write_str(name)?,
+                None => write!(f, "p{k}")?,
+            }
             first = false;
         }
         Ok(())
@@ -174,9 +183,10 @@ pub enum StageError {
     },
     /// The readings cannot come from one orientation (`axis` convention only).
     InconsistentReading,
-    /// `s2` must be +1 or −1.
-    BadDirectionSign,
-    /// The commanded joint-2 angle is NaN or infinite.
+    /// The two readings cannot separate the tilt, the arm's angle and the bias: the
+    /// bracket is not along joint 2, or the turn was not a half turn.
+    Unresolvable,
+    /// A commanded joint angle is NaN or infinite.
     NonFiniteCommand,
 }
 
@@ -197,11 +207,11 @@ impl fmt::Display for StageError {
             StageError::InconsistentReading => {
                 f.write_str("the x and y readings cannot come from one orientation")
             }
-            StageError::BadDirectionSign => {
-                f.write_str("the joint-2 direction sign must be +1 or -1")
-            }
+            StageError::Unresolvable => f.write_str(
+                "the two readings cannot separate base tilt, joint 2 and bias: is the pendant's x along joint 2, and was the turn 180 deg?",
+            ),
             StageError::NonFiniteCommand => {
-                f.write_str("the commanded joint-2 angle is not a finite number")
+                f.write_str("a commanded joint angle is not a finite number")
             }
         }
     }
@@ -234,7 +244,7 @@ impl fmt::Display for Terse<'_, StageError> {
             StageError::NonFiniteReading => f.write_str("NonFiniteReading"),
             StageError::ReadingOutOfRange { axis, .. } => write!(f, "ReadingOutOfRange {axis}"),
             StageError::InconsistentReading => f.write_str("InconsistentReading"),
-            StageError::BadDirectionSign => f.write_str("BadDirectionSign"),
+            StageError::Unresolvable => f.write_str("Unresolvable"),
             StageError::NonFiniteCommand => f.write_str("NonFiniteCommand"),
         }
     }

@@ -28,9 +28,12 @@
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 #![warn(missing_docs)]
+// Matrix code reads best with row and column indices, as the formulas write them.
+#![allow(clippy::needless_range_loop)]
 
 pub mod decimal;
 pub mod error;
+pub mod linalg;
 pub mod link;
 pub mod log;
 pub mod model;

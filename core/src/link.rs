@@ -16,7 +16,7 @@
 use crate::decimal;
 use crate::decimal::{deg_fixed, deg_signed};
 use crate::log::result_line;
-use crate::model::WRIST_JOINTS;
+use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::plan::{PoseList, MAX_POSES};
 use crate::procedure::{Phase, ProcedureState};
 use crate::real::{deg_to_rad, Real};
@@ -93,7 +93,7 @@ impl fmt::Display for LinkError {
             LinkError::BadPlanRow { row } => {
                 write!(
                     f,
-                    "plan row {row}: expected four numbers j3,j4,j5,j6 in degrees; plan unchanged"
+                    "plan row {row}: expected j3,j4,j5,j6 or j1,...,j6 in degrees; plan unchanged"
                 )
             }
             LinkError::AngleOutOfRange { row } => {
@@ -141,9 +141,12 @@ pub fn parse_command(line: &str) -> Result<Command, LinkError> {
 }
 
 /// A `plan set` in progress: rows accumulate here and replace the plan only on `end`.
+/// A row is `j3,j4,j5,j6` (joints 1 and 2 where stage 1 has them) or `j1,…,j6`, in the
+/// model's degrees.
 #[derive(Clone, Debug, Default)]
 pub struct PlanUpload<T> {
     rows: PoseList<T>,
+    stage1_joints_rad: [T; 2],
 }
 
 /// What a line did to an upload.
@@ -156,10 +159,11 @@ pub enum UploadStep<T> {
 }
 
 impl<T: Real> PlanUpload<T> {
-    /// An empty upload.
-    pub fn new() -> Self {
+    /// An empty upload; four-number rows take joints 1 and 2 from `stage1_joints_rad`.
+    pub fn new(stage1_joints_rad: [T; 2]) -> Self {
         PlanUpload {
             rows: PoseList::new(),
+            stage1_joints_rad,
         }
     }
 
@@ -186,21 +190,27 @@ impl<T: Real> PlanUpload<T> {
         if line.starts_with("j3") {
             return Ok(UploadStep::More);
         }
-        let mut q = [T::zero(); WRIST_JOINTS];
-        let mut fields = line.split(',');
-        for slot in q.iter_mut() {
-            let deg = fields
-                .next()
-                .and_then(decimal::parse)
-                .ok_or(LinkError::BadPlanRow { row })?;
+        let mut values = [T::zero(); JOINTS];
+        let mut count = 0;
+        for field in line.split(',') {
+            let deg = decimal::parse(field).ok_or(LinkError::BadPlanRow { row })?;
             if deg.abs() > 360.0 {
                 return Err(LinkError::AngleOutOfRange { row });
             }
+            let slot = values.get_mut(count).ok_or(LinkError::BadPlanRow { row })?;
             *slot = deg_to_rad(T::lit(deg));
+            count += 1;
         }
-        if fields.next().is_some() {
-            return Err(LinkError::BadPlanRow { row });
-        }
+        let q = match count {
+            JOINTS => values,
+            WRIST_JOINTS => {
+                let mut q = [T::zero(); JOINTS];
+                q[..2].copy_from_slice(&self.stage1_joints_rad);
+                q[2..].copy_from_slice(&values[..WRIST_JOINTS]);
+                q
+            }
+            _ => return Err(LinkError::BadPlanRow { row }),
+        };
         self.rows.push(q).map_err(|_| LinkError::PlanTooLong)?;
         Ok(UploadStep::More)
     }
@@ -322,7 +332,7 @@ mod tests {
 
     #[test]
     fn plan_upload_takes_rows_until_end_and_refuses_junk() {
-        let mut up = PlanUpload::<f32>::new();
+        let mut up = PlanUpload::<f32>::new([0.0; 2]);
         assert_eq!(up.feed("j3_deg,j4_deg,j5_deg,j6_deg"), Ok(UploadStep::More));
         for row in [
             "10,20,30,40",
@@ -337,11 +347,11 @@ mod tests {
         match up.feed("end") {
             Ok(UploadStep::Done(p)) => {
                 assert_eq!(p.len(), 4);
-                assert!((p[1][0] - (-1.5f32).to_radians()).abs() < 1e-7);
+                assert!((p[1][2] - (-1.5f32).to_radians()).abs() < 1e-7);
             }
             other => panic!("{other:?}"),
         }
-        let mut up = PlanUpload::<f32>::new();
+        let mut up = PlanUpload::<f32>::new([0.0; 2]);
         assert_eq!(up.feed("1,2,3"), Err(LinkError::BadPlanRow { row: 1 }));
         assert_eq!(up.feed("1,2,3,4,5"), Err(LinkError::BadPlanRow { row: 1 }));
         assert_eq!(up.feed("1,2,x,4"), Err(LinkError::BadPlanRow { row: 1 }));
@@ -351,7 +361,7 @@ mod tests {
             Err(LinkError::AngleOutOfRange { row: 1 })
         );
         assert_eq!(up.feed("end"), Err(LinkError::PlanTooShort { rows: 0 }));
-        let mut up = PlanUpload::<f32>::new();
+        let mut up = PlanUpload::<f32>::new([0.0; 2]);
         for _ in 0..MAX_POSES {
             assert_eq!(up.feed("1,2,3,4"), Ok(UploadStep::More));
         }

@@ -12,17 +12,17 @@
 //! ```
 //!
 //! **The pendant's export** is such a log with the session in `#` metadata lines,
-//! `# key value…`, before the header: `convention`, `stage0_bias_deg x,y`,
-//! `stage1_readings_deg before x,y after x,y c2_deg c s2 ±1`, stage 1's results, the
-//! `identify:` flags that reproduce the pendant's stage-2 model, and after the rows the
-//! result line. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! `# key value…`, before the header: `robot NAME convention rpy|axis`,
+//! `stage0_bias_deg x,y`,
+//! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` and stage 1's results,
+//! and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
 //! [`MetaItem`] the metadata the session solver needs.
 //!
 //! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
 //! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
 
 use crate::decimal::Fixed;
-use crate::model::{Convention, Tilt, WRIST_JOINTS};
+use crate::model::{Convention, Tilt};
 use crate::procedure::{ProcedureConfig, ProcedureState};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
 use crate::stage1::AxisOneTurn;
@@ -32,11 +32,21 @@ use core::fmt::{self, Write};
 /// A line of output: long enough for the widest export line.
 pub type Line = heapless::String<192>;
 
-/// The columns a stage-2 log must have, in the order the pendant writes them.
-pub const LOG_COLUMNS: [&str; 6] = ["j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg"];
+/// The columns a stage-2 log has, in the order the pendant writes them. The first six
+/// are required; `j1_deg` and `j2_deg` default to 0 (joints 1 and 2 where stage 1 had
+/// them, for a log of the paper's wrist), `temp_c` to unrecorded.
+pub const LOG_COLUMNS: [&str; 9] = [
+    "j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg", "j1_deg", "j2_deg", "temp_c",
+];
+
+/// How many of [`LOG_COLUMNS`] a log must have.
+const REQUIRED_COLUMNS: usize = 6;
 
 /// The header the pendant writes.
-pub const LOG_HEADER: &str = "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg";
+pub const LOG_HEADER: &str = "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c";
+
+/// Temperatures a log may hold (°C): the SCL3300's operating range is −40..+125 °C.
+pub const TEMPERATURE_RANGE_C: (f64, f64) = (-60.0, 150.0);
 
 /// Largest joint command a log may hold (deg): two turns either way; beyond is a unit
 /// or column mistake.
@@ -82,14 +92,19 @@ pub fn export<'a, T: Real>(
     }
 }
 
-const EXPORT_HEAD: usize = 7;
+const EXPORT_HEAD: usize = 6;
 
 impl<T: Real> Export<'_, T> {
     fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
         let s = self.state;
         match i {
-            0 => w.write_str("# zerocal pendant export: stage-2 log for 'zerocal identify'"),
-            1 => write!(w, "# convention {}", self.config.convention.name()),
+            0 => w.write_str("# zerocal pendant export: read it with 'zerocal session'"),
+            1 => write!(
+                w,
+                "# robot {} convention {}",
+                self.config.robot,
+                self.config.convention.name()
+            ),
             2 => match s.bias() {
                 Some(b) => {
                     w.write_str("# stage0_bias_deg ")?;
@@ -109,9 +124,10 @@ impl<T: Real> Export<'_, T> {
                     deg(w, b.x_rad)?;
                     w.write_char(',')?;
                     deg(w, b.y_rad)?;
-                    w.write_str(" c2_deg ")?;
-                    deg(w, self.config.j2_commanded_rad)?;
-                    write!(w, " s2 {}", self.config.j2_direction)
+                    w.write_str(" j1_deg ")?;
+                    deg(w, self.config.stage1_joints_rad[0])?;
+                    w.write_str(" j2_deg ")?;
+                    deg(w, self.config.stage1_joints_rad[1])
                 }
                 _ => w.write_str("# stage1_readings_deg none"),
             },
@@ -127,28 +143,6 @@ impl<T: Real> Export<'_, T> {
                     deg(w, r.bias_y_rad)
                 }
                 None => w.write_str("# stage1 none"),
-            },
-            5 => match s.stage2_model(self.config) {
-                // The flags that give `zerocal identify` the pendant's own model.
-                Some(m) => {
-                    write!(
-                        w,
-                        "# identify: --convention {} --base-tilt-deg ",
-                        self.config.convention.name()
-                    )?;
-                    deg(w, m.base_tilt.alpha_rad)?;
-                    w.write_char(',')?;
-                    deg(w, m.base_tilt.beta_rad)?;
-                    w.write_str(" --bias-deg ")?;
-                    deg(w, m.sensor.bias.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, m.sensor.bias.y_rad)
-                }
-                None => write!(
-                    w,
-                    "# identify: --convention {}",
-                    self.config.convention.name()
-                ),
             },
             _ => w.write_str(LOG_HEADER),
         }
@@ -329,8 +323,9 @@ pub enum LogLine<'a, T> {
 /// library's correctly rounded one on the desktop.
 #[derive(Clone, Debug)]
 pub struct LogReader {
-    /// Field index of each of [`LOG_COLUMNS`], once the header is read.
-    columns: Option<[usize; 6]>,
+    /// Field index of each of [`LOG_COLUMNS`] (`usize::MAX`: absent), once the header
+    /// is read.
+    columns: Option<[usize; 9]>,
     fields: usize,
     line: usize,
     poses: usize,
@@ -358,6 +353,14 @@ impl LogReader {
         self.line
     }
 
+    /// Whether the header (once read) has the column `name`.
+    pub fn has_column(&self, name: &str) -> bool {
+        match (self.columns, LOG_COLUMNS.iter().position(|c| *c == name)) {
+            (Some(cols), Some(k)) => cols[k] != usize::MAX,
+            _ => false,
+        }
+    }
+
     /// Reads the next line (without its line break).
     ///
     /// # Errors
@@ -377,7 +380,7 @@ impl LogReader {
             return Ok(LogLine::Comment(comment.trim()));
         }
         let Some(columns) = self.columns else {
-            let mut columns = [usize::MAX; 6];
+            let mut columns = [usize::MAX; 9];
             let mut fields = 0;
             for (i, name) in t.split(',').map(str::trim).enumerate() {
                 fields = i + 1;
@@ -394,7 +397,10 @@ impl LogReader {
                     columns[k] = i;
                 }
             }
-            if let Some(k) = columns.iter().position(|&c| c == usize::MAX) {
+            if let Some(k) = columns[..REQUIRED_COLUMNS]
+                .iter()
+                .position(|&c| c == usize::MAX)
+            {
                 return Err(if line == 1 || fields > 1 {
                     LogError::MissingColumn {
                         line,
@@ -408,7 +414,8 @@ impl LogReader {
             self.fields = fields;
             return Ok(LogLine::Header);
         };
-        let mut values = [0.0f64; 6];
+        let mut values = [0.0f64; 9];
+        let mut temperature_given = false;
         let mut got = 0;
         for (i, field) in t.split(',').enumerate() {
             got = i + 1;
@@ -417,13 +424,19 @@ impl LogReader {
             }
             if let Some(k) = columns.iter().position(|&c| c == i) {
                 let column = LOG_COLUMNS[k];
+                if k == 8 && field.trim().is_empty() {
+                    // A temperature not recorded.
+                    continue;
+                }
                 let v = parse(field.trim()).ok_or(LogError::NotANumber { line, column })?;
-                let limit_deg = if k < WRIST_JOINTS {
-                    MAX_JOINT_DEG
-                } else {
-                    MAX_READING_DEG
+                temperature_given |= k == 8;
+                let (lo, hi) = match k {
+                    4 | 5 => (-MAX_READING_DEG, MAX_READING_DEG),
+                    8 => TEMPERATURE_RANGE_C,
+                    _ => (-MAX_JOINT_DEG, MAX_JOINT_DEG),
                 };
-                if !(v.is_finite() && v.abs() <= limit_deg) {
+                let limit_deg = hi;
+                if !(v.is_finite() && v >= lo && v <= hi) {
                     return Err(LogError::OutOfRange {
                         line,
                         column,
@@ -441,9 +454,13 @@ impl LogReader {
             });
         }
         self.poses += 1;
+        let joints_deg = [
+            values[6], values[7], values[0], values[1], values[2], values[3],
+        ];
         Ok(LogLine::Pose(PoseReading {
-            joints_rad: [values[0], values[1], values[2], values[3]].map(|d| deg_to_rad(T::lit(d))),
+            joints_rad: joints_deg.map(|d| deg_to_rad(T::lit(d))),
             reading: Tilt::from_deg(T::lit(values[4]), T::lit(values[5])),
+            temperature_c: temperature_given.then(|| T::lit(values[8])),
         }))
     }
 
@@ -461,13 +478,14 @@ impl LogReader {
 }
 
 /// A metadata item of the pendant's export that the session solver needs.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum MetaItem<T> {
-    /// `# convention rpy|axis`.
-    Convention(Convention),
+    /// `# robot NAME convention rpy|axis`.
+    Robot(crate::procedure::RobotName, Convention),
     /// `# stage0_bias_deg x,y` (`None` for `none`).
     Bias(Option<Tilt<T>>),
-    /// `# stage1_readings_deg before x,y after x,y c2_deg c s2 ±1` (`None` for `none`).
+    /// `# stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` (`None` for
+    /// `none`): the readings and the commanded joints 1 (before the half turn) and 2.
     Stage1(Option<AxisOneTurn<T>>),
 }
 
@@ -492,16 +510,18 @@ pub fn parse_meta<T: Real>(
             .then(|| Tilt::from_deg(T::lit(x), T::lit(y)))
     };
     let item = match key {
-        "convention" => {
-            let bad = LogError::BadMetadata {
-                line,
-                key: "convention",
-            };
-            let c = rest.next().and_then(Convention::parse).ok_or(bad)?;
+        "robot" => {
+            let bad = LogError::BadMetadata { line, key: "robot" };
+            let mut name = crate::procedure::RobotName::new();
+            name.push_str(rest.next().ok_or(bad)?).map_err(|_| bad)?;
+            let c = (rest.next() == Some("convention"))
+                .then(|| rest.next().and_then(Convention::parse))
+                .flatten()
+                .ok_or(bad)?;
             if rest.next().is_some() {
                 return Err(bad);
             }
-            MetaItem::Convention(c)
+            MetaItem::Robot(name, c)
         }
         "stage0_bias_deg" => {
             let bad = LogError::BadMetadata {
@@ -528,24 +548,21 @@ pub fn parse_meta<T: Real>(
                 let after = (rest.next() == Some("after"))
                     .then(|| pair(rest.next()))
                     .flatten();
-                let c2 = (rest.next() == Some("c2_deg"))
-                    .then(|| rest.next().and_then(&parse))
-                    .flatten()
-                    .filter(|v| v.is_finite() && v.abs() <= MAX_JOINT_DEG);
-                let s2 = (rest.next() == Some("s2"))
-                    .then(|| match rest.next() {
-                        Some("1") => Some(1i8),
-                        Some("-1") => Some(-1),
-                        _ => None,
-                    })
-                    .flatten();
-                match (before, after, c2, s2, rest.next()) {
-                    (Some(before), Some(after), Some(c2), Some(s2), None) => {
+                let mut joint = |name: &str| {
+                    (rest.next() == Some(name))
+                        .then(|| rest.next().and_then(&parse))
+                        .flatten()
+                        .filter(|v| v.is_finite() && v.abs() <= MAX_JOINT_DEG)
+                };
+                let j1 = joint("j1_deg");
+                let j2 = joint("j2_deg");
+                match (before, after, j1, j2, rest.next()) {
+                    (Some(before), Some(after), Some(j1), Some(j2), None) => {
                         MetaItem::Stage1(Some(AxisOneTurn {
                             before,
                             after,
-                            commanded_j2_rad: deg_to_rad(T::lit(c2)),
-                            j2_direction: s2,
+                            j1_rad: deg_to_rad(T::lit(j1)),
+                            j2_rad: deg_to_rad(T::lit(j2)),
                         }))
                     }
                     _ => return Err(bad),
@@ -568,7 +585,14 @@ pub fn write_row<T: Real>(w: &mut Line, p: &PoseReading<T>) -> fmt::Result {
     }
     deg(w, p.reading.x_rad)?;
     w.write_char(',')?;
-    deg(w, p.reading.y_rad)
+    deg(w, p.reading.y_rad)?;
+    w.write_char(',')?;
+    match p.temperature_c {
+        // Hundredths of a kelvin: the SCL3300's resolution is 1/18.9 K.
+        Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), 2)),
+        // Not recorded: an empty field.
+        None => Ok(()),
+    }
 }
 
 #[cfg(test)]
@@ -597,7 +621,7 @@ mod tests {
         // Degrees to radians and back: two roundings, a few ulps.
         assert!(isclose(x, 1.5, 4e-16, 0.0) && isclose(y, 0.5, 4e-16, 0.0));
         assert!(isclose(
-            poses[1].joints_rad[3].to_degrees(),
+            poses[1].joints_rad[5].to_degrees(),
             4.0,
             4e-16,
             0.0
@@ -668,17 +692,19 @@ mod tests {
     #[test]
     fn rows_write_and_read_back_to_the_export_precision() {
         let p = PoseReading {
-            joints_rad: [0.1, -2.9, 1.0 / 3.0, 3.0],
+            joints_rad: [0.0, -1.5, 0.1, -2.9, 1.0 / 3.0, 3.0],
             reading: Tilt::new(0.123_456_789_012_345_6, -0.000_001_234_567_891),
+            temperature_c: Some(23.25),
         };
         let mut w = Line::new();
         write_row(&mut w, &p).unwrap();
         let back = read_all(&format!("{LOG_HEADER}\n{w}\n")).unwrap();
         // 12 decimals of a degree: ±5e-13° = ±8.7e-15 rad, plus conversions.
         let tol = 1e-14;
-        for k in 0..4 {
+        for k in 0..6 {
             assert!(isclose(back[0].joints_rad[k], p.joints_rad[k], 0.0, tol));
         }
+        assert_eq!(back[0].temperature_c, Some(23.25));
         assert!(isclose(back[0].reading.x_rad, p.reading.x_rad, 0.0, tol));
         assert!(isclose(back[0].reading.y_rad, p.reading.y_rad, 0.0, tol));
     }
@@ -686,23 +712,23 @@ mod tests {
     #[test]
     fn metadata_parses_and_junk_is_named() {
         let parse = |s: &str| s.parse::<f64>().ok();
-        assert_eq!(
-            parse_meta::<f64>("convention axis", 2, parse),
-            Ok(Some(MetaItem::Convention(Convention::Axis)))
-        );
+        match parse_meta::<f64>("robot kuka-kr16 convention axis", 2, parse) {
+            Ok(Some(MetaItem::Robot(name, Convention::Axis))) => assert_eq!(name, "kuka-kr16"),
+            other => panic!("{other:?}"),
+        }
         assert_eq!(
             parse_meta::<f64>("stage0_bias_deg none", 3, parse),
             Ok(Some(MetaItem::Bias(None)))
         );
         match parse_meta::<f64>(
-            "stage1_readings_deg before 1.5,-0.5 after 0.25,0.75 c2_deg -2 s2 -1",
+            "stage1_readings_deg before 1.5,-0.5 after 0.25,0.75 j1_deg 0 j2_deg -2",
             4,
             parse,
         ) {
             Ok(Some(MetaItem::Stage1(Some(t)))) => {
-                assert_eq!(t.j2_direction, -1);
+                assert_eq!(t.j1_rad, 0.0);
                 assert!(isclose(t.before.to_deg().0, 1.5, 1e-15, 0.0));
-                assert!(isclose(t.commanded_j2_rad.to_degrees(), -2.0, 1e-15, 0.0));
+                assert!(isclose(t.j2_rad.to_degrees(), -2.0, 1e-15, 0.0));
             }
             other => panic!("{other:?}"),
         }
@@ -711,10 +737,11 @@ mod tests {
             Ok(None)
         );
         for bad in [
-            "convention polar",
+            "robot x convention polar",
+            "robot kuka-kr16",
             "stage0_bias_deg 1",
             "stage0_bias_deg 1,x",
-            "stage1_readings_deg before 1,2 after 3,4 c2_deg 0 s2 2",
+            "stage1_readings_deg before 1,2 after 3,4 j1_deg 0 j2_deg x",
             "stage1_readings_deg before 1,2 after 3,4",
         ] {
             assert!(

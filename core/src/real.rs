@@ -18,6 +18,15 @@ pub trait Real: RealField + Copy + Default + core::fmt::Display {
     /// Converts to `f64` (for reports and diagnostics).
     fn to_f64(self) -> f64;
 
+    /// 1 for `true`, 0 for `false`: a row of J that selects one reading.
+    fn from_bool(b: bool) -> Self {
+        if b {
+            Self::one()
+        } else {
+            Self::zero()
+        }
+    }
+
     /// sin and cos of an angle (rad), to within an ulp or two, in this precision's own
     /// arithmetic. For `f32` this avoids libm's `sincosf`, which works in `f64` and on
     /// the Cortex-M4F (single-precision FPU) costs ~2,500 instructions a call.

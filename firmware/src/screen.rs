@@ -179,7 +179,13 @@ impl Screen {
                 Some((index, of, joints_rad)) => Prompt::Pose {
                     number: index + 1,
                     of,
-                    joints_deg: joints_rad.map(rad_to_deg),
+                    // The wrist's targets: joints 1 and 2 stay where stage 1 had them.
+                    joints_deg: [
+                        rad_to_deg(joints_rad[2]),
+                        rad_to_deg(joints_rad[3]),
+                        rad_to_deg(joints_rad[4]),
+                        rad_to_deg(joints_rad[5]),
+                    ],
                 },
                 None => Prompt::NoPose,
             },

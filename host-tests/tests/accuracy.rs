@@ -1,5 +1,5 @@
 //! The paper's laser-tracker test in simulation: TCP position error of a full 6-axis
-//! arm (KUKA KR 6 R900 sixx, `data/arm6_kr6.json`) at 200 random reachable poses,
+//! arm (the KUKA KR 6 R900 sixx profile, `data/robots/`) at 200 random reachable poses,
 //! before and after entering the zero offsets that stages 0, 1 and 2 identified from
 //! simulated inclinometer readings. Prints the before/after table it asserts.
 
@@ -10,8 +10,9 @@ mod common;
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::model::{BaseTilt, Convention, Tilt, WRIST_JOINTS};
-use zerocal_sim::arm6::{accuracy_test, arm_offsets, AccuracyReport, Arm6, ARM_JOINTS};
+use zerocal_core::model::{BaseTilt, Convention, Tilt, JOINTS};
+use zerocal_profile::Profile;
+use zerocal_sim::positioning::{accuracy_test, tcp_mm, AccuracyReport, ARM_JOINTS};
 use zerocal_sim::session::{fit_config_for, SessionConfig};
 use zerocal_sim::{SimInclinometer, SimRobot, SimSession};
 
@@ -20,26 +21,37 @@ const SESSIONS: usize = 20;
 /// ISO 9283-style test points per session (the paper's 200).
 const POINTS: usize = 200;
 
+fn kr6() -> Profile {
+    zerocal_profile::builtin("kuka-kr6-r900-sixx").unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn limits(p: &Profile) -> [(f64, f64); JOINTS] {
+    core::array::from_fn(|k| (p.joints[k].min_deg, p.joints[k].max_deg))
+}
+
 /// One simulated calibration of the arm: random truth (offsets on axes 2-6 within
 /// ±0.5°, base tilt within ±0.5°, sensor bias within ±0.05°, Table-4 noise, 30 poses
-/// with the wrist anywhere in ±180° inside the ±10° window), then stages 0-2 as the
-/// pendant runs them. Returns (true, identified) Δθ1..Δθ6 (rad).
-fn calibrate(arm: &Arm6, seed: u64) -> ([f64; ARM_JOINTS], [f64; ARM_JOINTS]) {
-    let chain = arm.wrist_chain().unwrap_or_else(|e| panic!("{e}"));
+/// with the wrist anywhere in its limits inside the ±10° window), stage 1 at the
+/// profile's pose, then stages 0-2 as the pendant runs them. Returns (true,
+/// identified) Δθ1..Δθ6 (rad).
+fn calibrate(p: &Profile, seed: u64) -> ([f64; ARM_JOINTS], [f64; ARM_JOINTS]) {
+    let l = limits(p);
     let cfg = SessionConfig {
         seed,
+        stage1_joints_rad: Some(p.stage1_joints_rad),
+        wrist_limits_deg: Some([l[2], l[3], l[4], l[5]]),
         ..SessionConfig::default()
     };
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut u = |half: f64| rng.gen_range(-half..=half);
+    let mut offsets_rad = [0.0; JOINTS];
+    for o in offsets_rad.iter_mut().skip(1) {
+        *o = u(0.5).to_radians();
+    }
     let robot = SimRobot {
-        chain,
+        arm: p.arm,
         base_tilt: BaseTilt::from_deg(u(0.5), u(0.5)),
-        offsets_rad: [0; WRIST_JOINTS].map(|_| u(0.5).to_radians()),
-        delta_theta2_rad: u(0.5).to_radians(),
-        j2_direction: arm.j2_direction(),
-        // from_parts sets it to stage 1's command.
-        j2_commanded_rad: 0.0,
+        offsets_rad,
     };
     let bias = Tilt::from_deg(u(0.05), u(0.05));
     let mut sensor = SimInclinometer::new(Convention::Rpy, bias, cfg.noise, rng.gen());
@@ -48,10 +60,9 @@ fn calibrate(arm: &Arm6, seed: u64) -> ([f64; ARM_JOINTS], [f64; ARM_JOINTS]) {
     let r = session
         .identify(&fit_config_for(cfg.noise))
         .unwrap_or_else(|e| panic!("{e:?}"));
-    (
-        arm_offsets(robot.delta_theta2_rad, &robot.offsets_rad),
-        arm_offsets(r.stage1.delta_theta2_rad, &r.fit.offsets_rad),
-    )
+    let mut found = [0.0; JOINTS];
+    found[1..].copy_from_slice(&r.solution.offsets_rad);
+    (robot.offsets_rad, found)
 }
 
 fn print_report(r: &AccuracyReport) {
@@ -59,7 +70,7 @@ fn print_report(r: &AccuracyReport) {
 }
 
 /// |∂p/∂θk|² at every test point, by central differences (mm²/rad²).
-fn lever_arms_sq(arm: &Arm6, r: &AccuracyReport) -> Vec<[f64; ARM_JOINTS]> {
+fn lever_arms_sq(profile: &Profile, r: &AccuracyReport) -> Vec<[f64; ARM_JOINTS]> {
     r.points
         .iter()
         .map(|p| {
@@ -70,7 +81,8 @@ fn lever_arms_sq(arm: &Arm6, r: &AccuracyReport) -> Vec<[f64; ARM_JOINTS]> {
                 let (mut qp, mut qm) = (q, q);
                 qp[k] += h;
                 qm[k] -= h;
-                *o = ((arm.tcp_mm(&qp) - arm.tcp_mm(&qm)) / (2.0 * h)).norm_squared();
+                *o = ((tcp_mm(&profile.arm, &qp) - tcp_mm(&profile.arm, &qm)) / (2.0 * h))
+                    .norm_squared();
             }
             out
         })
@@ -79,14 +91,22 @@ fn lever_arms_sq(arm: &Arm6, r: &AccuracyReport) -> Vec<[f64; ARM_JOINTS]> {
 
 #[test]
 fn identified_zeros_cut_the_positioning_error_by_two_orders_of_magnitude() {
-    let arm = Arm6::kr6_r900().unwrap_or_else(|e| panic!("{e}"));
+    let arm = kr6();
     let (mut sq_err_joint, mut sq_after, mut mean_before, mut mean_after) =
         ([0.0; ARM_JOINTS], 0.0, 0.0, 0.0);
     let mut reports = Vec::new();
     for s in 0..SESSIONS as u64 {
         let (truth, found) = calibrate(&arm, 0xACC0 + s);
-        let r = accuracy_test(&arm, &truth, &found, POINTS, 0x9283 + s)
-            .unwrap_or_else(|e| panic!("{e}"));
+        let r = accuracy_test(
+            &arm.title,
+            &arm.arm,
+            &limits(&arm),
+            &truth,
+            &found,
+            POINTS,
+            0x9283 + s,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
         for k in 0..ARM_JOINTS {
             sq_err_joint[k] += (found[k] - truth[k]).powi(2) / SESSIONS as f64;
         }

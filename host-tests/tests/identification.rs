@@ -11,7 +11,9 @@ use common::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::{rotation_from_rpy_deg, BaseTilt, Convention, JointAxis, Tilt};
-use zerocal_core::stage2::{covariance_bound, fit, single_linearised_step, FitConfig, Stage2Model};
+use zerocal_core::stage2::{
+    covariance_bound, fit, single_linearised_step, Extras, FitConfig, Stage2Model,
+};
 use zerocal_core::{FitError, ParamSet};
 use zerocal_sim::stats::{column, max_abs, mean, rms};
 use zerocal_sim::{Noise, PoseSampler, SimRobot, Table4};
@@ -33,10 +35,12 @@ fn noiseless_offsets_up_to_10_deg_are_recovered_exactly() {
             // Another robot: other joint axes and fixed link rotations, no code change.
             // Joints 4 and 6 about their own z, rolled 90° into place as DH frames do,
             // and the sensor yawed 20° on the flange.
-            robot.chain.axes = [JointAxis::X, JointAxis::Z, JointAxis::X, JointAxis::Z];
-            robot.chain.fixed[1] = rotation_from_rpy_deg(90.0, 0.0, 0.0);
-            robot.chain.fixed[3] = rotation_from_rpy_deg(90.0, 0.0, 0.0);
-            robot.chain.fixed[4] = rotation_from_rpy_deg(0.5, -0.3, 20.0);
+            let j = &mut robot.arm.joints;
+            j[3].axis = JointAxis::Z;
+            j[5].axis = JointAxis::Z;
+            j[3].origin.rotation = rotation_from_rpy_deg(90.0, 0.0, 0.0);
+            j[5].origin.rotation = rotation_from_rpy_deg(90.0, 0.0, 0.0);
+            robot.arm.flange_mount = rotation_from_rpy_deg(0.5, -0.3, 20.0);
         }
         let bias = Tilt::from_deg(rng.gen_range(-0.1..0.1), rng.gen_range(-0.1..0.1));
         let mut s = sensor(conv, Noise::None, 1);
@@ -49,7 +53,7 @@ fn noiseless_offsets_up_to_10_deg_are_recovered_exactly() {
             &FitConfig::default(),
         )
         .unwrap_or_else(|e| panic!("case {case}: {e}"));
-        let e = max_abs(&errors_deg(&r.offsets_rad, &robot.offsets_rad));
+        let e = max_abs(&errors_deg(&r.offsets_rad, &robot.wrist_offsets_rad()));
         worst = worst.max(e);
     }
     println!("noiseless, offsets up to 10 deg, base tilt up to 1 deg: worst error {worst:.2e} deg");
@@ -80,12 +84,12 @@ fn table4_monte_carlo(range_deg: f64, trials: usize, seed: u64) -> MonteCarlo {
         let poses = read_poses(&robot, &mut s, &mut sampler, Table4::POSES);
         let r =
             fit(&model, &poses, &FitConfig::default()).expect("Table 4 pose sets are well posed");
-        errs.push(errors_deg(&r.offsets_rad, &robot.offsets_rad));
+        errs.push(errors_deg(&r.offsets_rad, &robot.wrist_offsets_rad()));
         found.push(r.offsets_rad.map(f64::to_degrees));
         bounds.push(bound_deg(
             &model,
             &poses,
-            &robot.offsets_rad,
+            &robot.wrist_offsets_rad(),
             noise.sigma_rad(),
         ));
     }
@@ -159,12 +163,12 @@ fn single_step_breaks_with_large_offsets_iterating_does_not() {
             let poses = read_poses(&robot, &mut s, &mut sampler, Table4::POSES);
             let step = single_linearised_step(&model, &poses, &FitConfig::default()).expect("step");
             let r = fit(&model, &poses, &FitConfig::default()).expect("fit");
-            one.extend(errors_deg(&step, &robot.offsets_rad));
-            ours.extend(errors_deg(&r.offsets_rad, &robot.offsets_rad));
+            one.extend(errors_deg(&step, &robot.wrist_offsets_rad()));
+            ours.extend(errors_deg(&r.offsets_rad, &robot.wrist_offsets_rad()));
             bound.extend(bound_deg(
                 &model,
                 &poses,
-                &robot.offsets_rad,
+                &robot.wrist_offsets_rad(),
                 noise.sigma_rad(),
             ));
             iters.push(f64::from(r.iterations));
@@ -221,17 +225,15 @@ fn base_tilt_as_rotation_stays_on_the_bound_a_tare_does_not() {
                 .map(|q| zerocal_core::PoseReading {
                     joints_rad: *q,
                     reading: s.read(&robot.flange_orientation(q)),
+                    temperature_c: None,
                 })
                 .collect();
             let r = fit(&exact, &poses, &FitConfig::default()).expect("fit");
             // The tare: read the reference pose, subtract it from every reading and
             // model a level base (equivalently: the reference reading as a bias).
-            let reference = s.read(&robot.flange_orientation(&[0.0; 4]));
+            let reference = s.read(&robot.flange_orientation(&[0.0; 6]));
             let tared = Stage2Model {
-                sensor: zerocal_core::SensorModel {
-                    convention: Convention::Rpy,
-                    bias: reference,
-                },
+                sensor: zerocal_core::SensorModel::new(Convention::Rpy, reference),
                 ..Stage2Model::default()
             };
             // The tare's poses are fine; only its model is wrong: let it report.
@@ -240,10 +242,16 @@ fn base_tilt_as_rotation_stays_on_the_bound_a_tare_does_not() {
                 ..FitConfig::default()
             };
             let t = fit(&tared, &poses, &loose).expect("tare fit");
-            let b = covariance_bound(&exact, joints.iter(), &robot.offsets_rad, noise.sigma_rad())
-                .expect("bound");
-            ex.extend(errors_deg(&r.offsets_rad, &robot.offsets_rad));
-            tare.extend(errors_deg(&t.offsets_rad, &robot.offsets_rad));
+            let b = covariance_bound(
+                &exact,
+                Extras::NONE,
+                &joints,
+                &robot.wrist_offsets_rad(),
+                noise.sigma_rad(),
+            )
+            .expect("bound");
+            ex.extend(errors_deg(&r.offsets_rad, &robot.wrist_offsets_rad()));
+            tare.extend(errors_deg(&t.offsets_rad, &robot.wrist_offsets_rad()));
             bound.extend(b.sigma_rad.map(|x| x.to_degrees().powi(2)));
         }
         let rb = mean(&bound).sqrt();
@@ -381,7 +389,7 @@ fn reported_sigma_matches_the_bound() {
         let b = bound_deg(
             &model,
             &poses,
-            &robot.offsets_rad,
+            &robot.wrist_offsets_rad(),
             Table4::noise().sigma_rad(),
         );
         for (sigma, bound) in r.sigma_rad.iter().zip(b) {

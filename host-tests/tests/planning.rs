@@ -10,9 +10,9 @@ mod common;
 use common::*;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::model::{Convention, WRIST_JOINTS};
+use zerocal_core::model::Convention;
 use zerocal_core::plan::{plan, Candidate, Plan, PlanConfig, DEFAULT_POOL};
-use zerocal_core::stage2::{covariance_bound, fit, FitConfig, PoseReading, Stage2Model};
+use zerocal_core::stage2::{covariance_bound, fit, Extras, FitConfig, PoseReading, Stage2Model};
 use zerocal_sim::stats::{column, mean, rms};
 use zerocal_sim::{PoseSampler, SimRobot, Table4};
 
@@ -36,7 +36,7 @@ fn plan_for(n: usize) -> Plan<f64> {
 /// that `poses_for_trial` gives, and the RMS of their covariance bounds (deg).
 fn monte_carlo(
     seed: u64,
-    mut poses_for_trial: impl FnMut(&mut ChaCha8Rng) -> Vec<[f64; WRIST_JOINTS]>,
+    mut poses_for_trial: impl FnMut(&mut ChaCha8Rng) -> Vec<[f64; 6]>,
 ) -> ([f64; 4], [f64; 4]) {
     let robot = SimRobot::paper(Table4::OFFSETS_DEG, (0.0, 0.0));
     let noise = Table4::noise();
@@ -51,12 +51,19 @@ fn monte_carlo(
             .map(|q| PoseReading {
                 joints_rad: *q,
                 reading: s.read(&robot.flange_orientation(q)),
+                temperature_c: None,
             })
             .collect();
         let r = fit(&model, &poses, &FitConfig::default()).unwrap_or_else(|e| panic!("{e}"));
-        let b = covariance_bound(&model, joints.iter(), &robot.offsets_rad, noise.sigma_rad())
-            .unwrap_or_else(|e| panic!("{e}"));
-        errs.push(errors_deg(&r.offsets_rad, &robot.offsets_rad));
+        let b = covariance_bound(
+            &model,
+            Extras::NONE,
+            &joints,
+            &robot.wrist_offsets_rad(),
+            noise.sigma_rad(),
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        errs.push(errors_deg(&r.offsets_rad, &robot.wrist_offsets_rad()));
         bounds_sq.push(b.sigma_rad.map(|x| x.to_degrees().powi(2)));
     }
     (
@@ -94,7 +101,7 @@ fn eight_planned_poses_beat_thirty_random_ones_fivefold() {
     );
     for n in [4, 6, 8, 12, 30] {
         let p = plan_for(n);
-        let poses: Vec<[f64; 4]> = p.poses_rad.to_vec();
+        let poses: Vec<[f64; 6]> = p.poses_rad.to_vec();
         let (mc, _) = monte_carlo(0x5B + n as u64, |_| poses.clone());
         let pred = p.predicted_sigma_deg();
         let gain_pred = (0..4)

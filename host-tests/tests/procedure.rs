@@ -24,10 +24,10 @@ fn z_scores<T: Real>(p: &SimPendant<T>) -> (f64, [f64; 4], FitResult<T>) {
         .map(|r| r.fit)
         .unwrap_or_else(|e| panic!("session refused: {e}"));
     let s1 = outcome.stage1.expect("stage 1");
-    let z2 = (s1.delta_theta2_rad.to_f64() - p.robot.delta_theta2_rad)
+    let z2 = (s1.delta_theta2_rad.to_f64() - p.robot.delta_theta2_rad())
         / s1.delta_theta2_sigma_rad(fit.noise_sigma_rad).to_f64();
     let z = core::array::from_fn(|k| {
-        (fit.offsets_rad[k].to_f64() - p.robot.offsets_rad[k]) / fit.sigma_rad[k].to_f64()
+        (fit.offsets_rad[k].to_f64() - p.robot.wrist_offsets_rad()[k]) / fit.sigma_rad[k].to_f64()
     });
     (z2, z, fit)
 }
@@ -257,7 +257,7 @@ fn a_pose_out_of_range_is_not_captured_and_can_be_skipped() {
     // The operator mis-jogs to a pose that tilts the pendant by ~15°.
     p.move_to(
         Mount::Flange {
-            joints_rad: [deg_to_rad(15.0), 0.0, 0.0, 0.0],
+            joints_rad: [0.0, 0.0, deg_to_rad(15.0), 0.0, 0.0, 0.0],
         },
         2500,
     );
@@ -286,12 +286,12 @@ fn a_robot_still_moving_is_never_captured() {
     scenario::stage0(&mut p);
     scenario::stage1(&mut p);
     let (_, _, q) = p.session.view().pose.expect("pose");
-    let start: [f64; 4] = q.map(f64::from);
+    let start: [f64; 6] = q.map(f64::from);
     p.move_to(Mount::Flange { joints_rad: start }, 2500);
     p.event(Event::Ok);
     // Creeping at 0.05°/s on joint 4: 0.1° per 2 s window, twice the threshold.
     let mut end = start;
-    end[1] += deg_to_rad(1.0);
+    end[3] += deg_to_rad(1.0);
     p.move_to(Mount::Flange { joints_rad: end }, 20_000);
     assert_eq!(
         p.session.captures().len(),
@@ -308,7 +308,7 @@ fn a_degenerate_plan_gives_the_named_refusal_not_numbers() {
     let mut plan = zerocal_core::plan::PoseList::<f32>::new();
     for i in 0..6 {
         let a = deg_to_rad(-30.0 + 10.0 * i as f32);
-        let _ = plan.push([a, 0.0, deg_to_rad(3.0) - a, 0.0]);
+        let _ = plan.push([0.0, 0.0, a, 0.0, deg_to_rad(3.0) - a, 0.0]);
     }
     let mut p = pendant::<f32>(8, 7).expect("the planner plans 8 poses");
     p.event(Event::SetPlan(plan));

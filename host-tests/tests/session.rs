@@ -19,11 +19,11 @@ fn reported_sigma_of_whole_sessions_is_honest() {
         let s = SimSession::simulate(&cfg).expect("session");
         let r = s.identify(&fit_config_for(cfg.noise)).expect("identify");
         for k in 0..4 {
-            let e = r.fit.offsets_rad[k] - s.robot.offsets_rad[k];
+            let e = r.fit.offsets_rad[k] - s.robot.wrist_offsets_rad()[k];
             z_total[k].push(e / r.fit.sigma_rad[k]);
             z_stage2[k].push(e / r.fit.sigma_stage2_rad[k]);
         }
-        let e2 = r.stage1.delta_theta2_rad - s.robot.delta_theta2_rad;
+        let e2 = r.stage1.delta_theta2_rad - s.robot.delta_theta2_rad();
         z_j2.push(e2 / r.stage1.delta_theta2_sigma_rad(r.fit.noise_sigma_rad));
     }
     println!("400 sessions: RMS of error/reported-1sigma (1.0 = honest)");
@@ -70,11 +70,11 @@ fn session_covariance_whitens_the_errors() {
         let r = s.identify(&fit_config_for(cfg.noise)).expect("identify");
         let sol = &r.solution;
         let truth = [
-            s.robot.delta_theta2_rad,
-            s.robot.offsets_rad[0],
             s.robot.offsets_rad[1],
             s.robot.offsets_rad[2],
             s.robot.offsets_rad[3],
+            s.robot.offsets_rad[4],
+            s.robot.offsets_rad[5],
         ];
         let e = Vector5::from_fn(|k, _| sol.offsets_rad[k] - truth[k]);
         let reported = Matrix5::from_fn(|i, j| sol.covariance_rad2[i][j]);

@@ -48,7 +48,7 @@ impl SimInclinometer {
     /// A sensor with the given convention, bias and noise; `seed` fixes the noise.
     pub fn new(convention: Convention, bias: SensorBias<f64>, noise: Noise, seed: u64) -> Self {
         SimInclinometer {
-            model: SensorModel { convention, bias },
+            model: SensorModel::new(convention, bias),
             noise,
             rng: ChaCha8Rng::seed_from_u64(seed),
         }

@@ -8,10 +8,10 @@
 
 #![forbid(unsafe_code)]
 
-pub mod arm6;
 pub mod inclinometer;
 pub mod pendant;
 pub mod poses;
+pub mod positioning;
 pub mod robot;
 pub mod scenario;
 pub mod scl3300_device;

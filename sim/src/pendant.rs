@@ -13,7 +13,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, Normal};
 use std::collections::BTreeMap;
-use zerocal_core::model::{rot_z, Convention, Tilt, WRIST_JOINTS};
+use zerocal_core::model::{rot_z, Convention, Tilt, JOINTS};
 use zerocal_core::plan::PoseList;
 use zerocal_core::procedure::{
     self, record, Event, Output, ProcedureConfig, ProcedureState, Record,
@@ -48,8 +48,8 @@ pub enum Mount {
     },
     /// On the flange, joints 3-6 commanded to these (rad).
     Flange {
-        /// θ3..θ6 commanded (rad).
-        joints_rad: [f64; WRIST_JOINTS],
+        /// θ1..θ6 commanded (rad).
+        joints_rad: [f64; JOINTS],
     },
 }
 
@@ -160,6 +160,7 @@ impl<T: Real> SimPendant<T> {
             Ok(r) => Event::Sample {
                 t_ms: self.t_ms,
                 reading: Tilt::new(T::lit(f64::from(r.x_rad)), T::lit(f64::from(r.y_rad))),
+                temperature_c: None,
             },
             Err(_) => {
                 self.sensor_errors += 1;

@@ -4,7 +4,7 @@
 use crate::{SimInclinometer, SimRobot};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::model::WRIST_JOINTS;
+use zerocal_core::model::{JOINTS, WRIST_JOINTS};
 use zerocal_core::real::deg_to_rad;
 
 /// Why no pose set could be drawn.
@@ -24,8 +24,10 @@ pub enum SamplerError {
 pub struct PoseSampler {
     /// (low, high) of θ3..θ6 (rad).
     pub limits_rad: [(f64, f64); WRIST_JOINTS],
-    /// Both readings must stay within ±this (rad), bias included.
+    /// Both readings must stay within ±this (rad), bias included, the pendant upright.
     pub window_rad: f64,
+    /// θ1 and θ2 of every pose (rad): where stage 1 left them.
+    pub fixed_joints_rad: [f64; 2],
     rng: ChaCha8Rng,
 }
 
@@ -36,14 +38,16 @@ impl PoseSampler {
         PoseSampler {
             limits_rad: [(-r, r); WRIST_JOINTS],
             window_rad: deg_to_rad(window_deg),
+            fixed_joints_rad: [0.0; 2],
             rng: ChaCha8Rng::seed_from_u64(seed),
         }
     }
 
     /// Draws one candidate inside the limits.
-    pub fn candidate(&mut self) -> [f64; WRIST_JOINTS] {
-        let mut q = [0.0; WRIST_JOINTS];
-        for (qk, &(lo, hi)) in q.iter_mut().zip(&self.limits_rad) {
+    pub fn candidate(&mut self) -> [f64; JOINTS] {
+        let mut q = [0.0; JOINTS];
+        q[..2].copy_from_slice(&self.fixed_joints_rad);
+        for (qk, &(lo, hi)) in q[2..].iter_mut().zip(&self.limits_rad) {
             *qk = if hi > lo {
                 self.rng.gen_range(lo..hi)
             } else {
@@ -59,7 +63,7 @@ impl PoseSampler {
         robot: &SimRobot,
         sensor: &SimInclinometer,
         n: usize,
-    ) -> Result<Vec<[f64; WRIST_JOINTS]>, SamplerError> {
+    ) -> Result<Vec<[f64; JOINTS]>, SamplerError> {
         self.sample_where(robot, sensor, n, |_| true)
     }
 
@@ -69,8 +73,8 @@ impl PoseSampler {
         robot: &SimRobot,
         sensor: &SimInclinometer,
         n: usize,
-        mut keep: impl FnMut(&[f64; WRIST_JOINTS]) -> bool,
-    ) -> Result<Vec<[f64; WRIST_JOINTS]>, SamplerError> {
+        mut keep: impl FnMut(&[f64; JOINTS]) -> bool,
+    ) -> Result<Vec<[f64; JOINTS]>, SamplerError> {
         // A 10° window over full-turn joints accepts ~1 draw in 130; this cap only
         // stops an impossible request.
         let max_tries = 10_000 * n as u64 + 100_000;
@@ -85,8 +89,14 @@ impl PoseSampler {
             }
             tries += 1;
             let q = self.candidate();
-            let t = sensor.exact(&robot.flange_orientation(&q));
-            if t.x_rad.abs() < self.window_rad && t.y_rad.abs() < self.window_rad && keep(&q) {
+            let r = robot.flange_orientation(&q);
+            let upright = zerocal_core::model::up_in_sensor(&r).z > 0.0;
+            let t = sensor.exact(&r);
+            if upright
+                && t.x_rad.abs() < self.window_rad
+                && t.y_rad.abs() < self.window_rad
+                && keep(&q)
+            {
                 out.push(q);
             }
         }

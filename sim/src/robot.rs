@@ -1,57 +1,78 @@
 //! A robot whose true joint zeros differ from its controller's by hidden offsets.
 
 use nalgebra::Rotation3;
-use zerocal_core::model::{rot_x, rot_z, BaseTilt, WristChain, WRIST_JOINTS};
+use zerocal_core::model::{Arm, BaseTilt, JointAxis, JOINTS, WRIST_JOINTS};
 use zerocal_core::real::deg_to_rad;
 
 /// The robot as the world sees it: true offsets and base tilt, unknown to the pendant.
 #[derive(Clone, Copy, Debug)]
 pub struct SimRobot {
-    /// Joints 3-6 of the robot (axes and fixed rotations).
-    pub chain: WristChain<f64>,
+    /// The arm and the pendant's two brackets.
+    pub arm: Arm<f64>,
     /// True base tilt.
     pub base_tilt: BaseTilt<f64>,
-    /// True Δθ3..Δθ6 = true − commanded (rad).
-    pub offsets_rad: [f64; WRIST_JOINTS],
-    /// True Δθ2 (rad).
-    pub delta_theta2_rad: f64,
-    /// +1 if positive joint-2 motion increases the upper-arm sensor's x reading.
-    pub j2_direction: i8,
-    /// Joint 2's commanded angle during stage 2 (rad): where stage 1 left it. Its true
-    /// angle, this plus Δθ2, tilts the frame joint 3 turns in.
-    pub j2_commanded_rad: f64,
+    /// True Δθ1..Δθ6 = true − commanded (rad). Δθ1 turns about the vertical: no
+    /// inclinometer sees it.
+    pub offsets_rad: [f64; JOINTS],
 }
 
 impl SimRobot {
-    /// The paper's robot with the given truth (degrees).
+    /// The paper's robot with the given truth (degrees): Δθ3..Δθ6 and the base tilt.
     pub fn paper(offsets_deg: [f64; WRIST_JOINTS], base_tilt_deg: (f64, f64)) -> Self {
+        let mut offsets_rad = [0.0; JOINTS];
+        for (o, d) in offsets_rad[2..].iter_mut().zip(offsets_deg) {
+            *o = deg_to_rad(d);
+        }
         SimRobot {
-            chain: WristChain::paper(),
+            arm: Arm::paper(),
             base_tilt: BaseTilt::from_deg(base_tilt_deg.0, base_tilt_deg.1),
-            offsets_rad: offsets_deg.map(deg_to_rad),
-            delta_theta2_rad: 0.0,
-            j2_direction: 1,
-            j2_commanded_rad: 0.0,
+            offsets_rad,
         }
     }
 
-    /// Orientation of the flange sensor for commanded θ3..θ6 (rad), axis 1 at its mark
-    /// and joint 2 commanded to `j2_commanded_rad` (true: that plus Δθ2).
-    pub fn flange_orientation(&self, commanded_rad: &[f64; WRIST_JOINTS]) -> Rotation3<f64> {
-        let mut q = *commanded_rad;
-        for (qk, dk) in q.iter_mut().zip(self.offsets_rad) {
-            *qk += dk;
-        }
-        let arm = f64::from(self.j2_direction) * (self.j2_commanded_rad + self.delta_theta2_rad);
-        // Joint 2 turns about the base's x (the joint-2 direction), before joint 3.
-        let wrist = self.chain.orientation(&BaseTilt::level(), &q);
-        self.base_tilt.rotation() * rot_x(arm) * wrist
+    /// Δθ2 (rad).
+    pub fn delta_theta2_rad(&self) -> f64 {
+        self.offsets_rad[1]
     }
 
-    /// Orientation of the upper-arm sensor (x ∥ joint 2) with axis 1 at `j1_rad` from
-    /// its mark and axis 2 commanded to `c2_rad`: `Rbase·Rz(θ1)·Rx(φ)`, φ = s2·(c2 + Δθ2).
-    pub fn upper_arm_orientation(&self, j1_rad: f64, c2_rad: f64) -> Rotation3<f64> {
-        let arm = f64::from(self.j2_direction) * (c2_rad + self.delta_theta2_rad);
-        self.base_tilt.rotation() * rot_z(j1_rad) * rot_x(arm)
+    /// Δθ3..Δθ6 (rad).
+    pub fn wrist_offsets_rad(&self) -> [f64; WRIST_JOINTS] {
+        [
+            self.offsets_rad[2],
+            self.offsets_rad[3],
+            self.offsets_rad[4],
+            self.offsets_rad[5],
+        ]
+    }
+
+    /// Sets the paper robot's joint-2 direction (`s2` of METHOD.md).
+    pub fn with_j2_direction(mut self, s2: i8) -> Self {
+        self.arm.joints[1].axis = if s2 < 0 {
+            JointAxis::NegX
+        } else {
+            JointAxis::X
+        };
+        self
+    }
+
+    /// The true joint angles of a commanded pose (rad).
+    pub fn true_joints(&self, commanded_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
+        core::array::from_fn(|k| commanded_rad[k] + self.offsets_rad[k])
+    }
+
+    /// Orientation of the flange pendant for commanded θ1..θ6 (rad).
+    pub fn flange_orientation(&self, commanded_rad: &[f64; JOINTS]) -> Rotation3<f64> {
+        self.arm
+            .flange_sensor(&self.base_tilt, &self.true_joints(commanded_rad))
+    }
+
+    /// Orientation of the upper-arm pendant with joints 1 and 2 commanded to `j1_rad`,
+    /// `j2_rad`.
+    pub fn upper_arm_orientation(&self, j1_rad: f64, j2_rad: f64) -> Rotation3<f64> {
+        self.arm.upper_arm_sensor(
+            &self.base_tilt,
+            j1_rad + self.offsets_rad[0],
+            j2_rad + self.offsets_rad[1],
+        )
     }
 }

@@ -21,10 +21,7 @@ pub const SCL3300_NOISE_DEG: f64 = 0.003;
 /// The planner's refusal (too many poses, an unobservable plan).
 pub fn default_plan<T: Real>(n: usize) -> Result<PoseList<T>, PlanError> {
     let model = Stage2Model {
-        sensor: SensorModel {
-            convention: Convention::Axis,
-            bias: Tilt::default(),
-        },
+        sensor: SensorModel::new(Convention::Axis, Tilt::default()),
         ..Stage2Model::default()
     };
     let config = PlanConfig {
@@ -38,9 +35,8 @@ pub fn default_plan<T: Real>(n: usize) -> Result<PoseList<T>, PlanError> {
 /// A robot and sensor truth for the scenarios (deg): offsets to ±0.3°, base tilt,
 /// sensor bias.
 pub fn truth_robot() -> (SimRobot, Tilt<f64>) {
-    let mut robot = SimRobot::paper([0.12, -0.25, 0.08, 0.3], (0.35, -0.2));
-    robot.delta_theta2_rad = deg_to_rad(-0.15);
-    robot.j2_direction = -1;
+    let mut robot = SimRobot::paper([0.12, -0.25, 0.08, 0.3], (0.35, -0.2)).with_j2_direction(-1);
+    robot.offsets_rad[1] = deg_to_rad(-0.15);
     (robot, Tilt::from_deg(0.04, -0.03))
 }
 
@@ -51,7 +47,7 @@ pub fn truth_robot() -> (SimRobot, Tilt<f64>) {
 pub fn pendant<T: Real>(n: usize, seed: u64) -> Result<SimPendant<T>, PlanError> {
     let (robot, bias) = truth_robot();
     let config = ProcedureConfig {
-        j2_direction: robot.j2_direction,
+        arm: robot.arm.cast(),
         ..ProcedureConfig::default()
     };
     Ok(SimPendant::new(

@@ -5,7 +5,7 @@
 use crate::{Noise, PoseSampler, SamplerError, SimInclinometer, SimRobot};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::model::{rot_x, rot_y, rot_z, Convention, Tilt, WristChain, WRIST_JOINTS};
+use zerocal_core::model::{rot_x, rot_y, rot_z, Convention, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::session::{BiasSource, SessionReadings, SessionSolution};
 use zerocal_core::stage0::Reversal;
@@ -57,6 +57,14 @@ pub struct SessionConfig {
     pub max_bias_deg: f64,
     /// Whether stage 0 runs (else stage 2 assumes no x bias, as the paper does).
     pub with_stage0: bool,
+    /// The robot's kinematics; `None`: the paper's robot, its joint 2 turning either
+    /// way at random.
+    pub arm: Option<zerocal_core::model::Arm<f64>>,
+    /// The stage-1 pose (rad) of a profile; `None`: the paper's (joint 1 at 0, joint 2
+    /// drawn within ±3°). Stage 2 keeps joints 1 and 2 there.
+    pub stage1_joints_rad: Option<[f64; JOINTS]>,
+    /// Limits of joints 3-6 for stage 2 (deg); `None`: ±`joint_range_deg`.
+    pub wrist_limits_deg: Option<[(f64, f64); WRIST_JOINTS]>,
 }
 
 impl Default for SessionConfig {
@@ -72,6 +80,9 @@ impl Default for SessionConfig {
             max_base_tilt_deg: 0.5,
             max_bias_deg: 0.05,
             with_stage0: true,
+            arm: None,
+            stage1_joints_rad: None,
+            wrist_limits_deg: None,
         }
     }
 }
@@ -142,16 +153,23 @@ impl SimSession {
     pub fn simulate(cfg: &SessionConfig) -> Result<Self, SimError> {
         let mut rng = ChaCha8Rng::seed_from_u64(cfg.seed);
         let off = cfg.max_offset_deg;
-        let robot = SimRobot {
-            chain: WristChain::paper(),
+        let mut robot = SimRobot {
+            arm: cfg.arm.unwrap_or_else(zerocal_core::model::Arm::paper),
             base_tilt: zerocal_core::BaseTilt::from_deg(
                 uniform(&mut rng, cfg.max_base_tilt_deg),
                 uniform(&mut rng, cfg.max_base_tilt_deg),
             ),
-            offsets_rad: [0; WRIST_JOINTS].map(|_| deg_to_rad(uniform(&mut rng, off))),
-            delta_theta2_rad: deg_to_rad(uniform(&mut rng, off)),
-            j2_direction: if rng.gen_bool(0.5) { 1 } else { -1 },
-            j2_commanded_rad: 0.0,
+            offsets_rad: [0.0; JOINTS],
+        };
+        for k in 2..JOINTS {
+            robot.offsets_rad[k] = deg_to_rad(uniform(&mut rng, off));
+        }
+        robot.offsets_rad[1] = deg_to_rad(uniform(&mut rng, off));
+        let s2 = if rng.gen_bool(0.5) { 1 } else { -1 };
+        let robot = if cfg.arm.is_none() {
+            robot.with_j2_direction(s2)
+        } else {
+            robot
         };
         let bias = Tilt::from_deg(
             uniform(&mut rng, cfg.max_bias_deg),
@@ -181,20 +199,23 @@ impl SimSession {
                 second: sensor.read(&(surface * rot_z(std::f64::consts::PI))),
             }
         });
-        // Joint 2 commanded a little away from 0 so the readings are not at 0; it stays
-        // there for stage 2 (axis 1 goes back to its mark).
-        let c2 = deg_to_rad(uniform(rng, 3.0));
-        let robot = SimRobot {
-            j2_commanded_rad: c2,
-            ..robot
+        // The paper's stage 1: joint 2 commanded a little away from 0 so the readings
+        // are not at 0; it stays there for stage 2 (axis 1 goes back to its mark).
+        let (c1, c2) = match cfg.stage1_joints_rad {
+            Some(q) => (q[0], q[1]),
+            None => (0.0, deg_to_rad(uniform(rng, 3.0))),
         };
         let stage1 = AxisOneTurn {
-            before: sensor.read(&robot.upper_arm_orientation(0.0, c2)),
-            after: sensor.read(&robot.upper_arm_orientation(std::f64::consts::PI, c2)),
-            commanded_j2_rad: c2,
-            j2_direction: robot.j2_direction,
+            before: sensor.read(&robot.upper_arm_orientation(c1, c2)),
+            after: sensor.read(&robot.upper_arm_orientation(c1 + std::f64::consts::PI, c2)),
+            j1_rad: c1,
+            j2_rad: c2,
         };
         let mut sampler = PoseSampler::symmetric(cfg.joint_range_deg, cfg.window_deg, rng.gen());
+        if let Some(limits) = cfg.wrist_limits_deg {
+            sampler.limits_rad = limits.map(|(lo, hi)| (deg_to_rad(lo), deg_to_rad(hi)));
+        }
+        sampler.fixed_joints_rad = [c1, c2];
         let joints = sampler
             .sample(&robot, sensor, cfg.poses)
             .map_err(SimError::Sampler)?;
@@ -203,6 +224,7 @@ impl SimSession {
             .map(|q| PoseReading {
                 joints_rad: *q,
                 reading: sensor.read(&robot.flange_orientation(q)),
+                temperature_c: None,
             })
             .collect();
         Ok(SimSession {
@@ -218,13 +240,12 @@ impl SimSession {
     pub fn readings(&self) -> SessionReadings<'_, f64> {
         SessionReadings {
             convention: self.sensor.model.convention,
-            chain: self.robot.chain,
+            arm: self.robot.arm,
+            masses: None,
             bias: self
                 .stage0
                 .map_or(BiasSource::Unknown, BiasSource::Reversal),
             stage1: self.stage1,
-            // Joint 2 stays where stage 1 had it.
-            j2_change_rad: 0.0,
             poses: &self.poses,
         }
     }

@@ -33,6 +33,8 @@ pub struct Case {
     pub bias: BiasSource<f32>,
     /// Stage 1.
     pub stage1: AxisOneTurn<f32>,
+    /// The paper robot's joint-2 direction (its arm: `Arm::paper_with_j2_direction`).
+    pub j2_direction: i8,
     /// Stage 2.
     pub poses: &'static [PoseReading<f32>],
 }
@@ -61,7 +63,7 @@ use cortex_m::peripheral::SYST;
 use cortex_m_rt::{entry, exception, ExceptionFrame};
 use cortex_m_semihosting::{debug, hprintln};
 use zerocal_core::error::Terse;
-use zerocal_core::model::{Convention, WristChain};
+use zerocal_core::model::{Arm, Convention};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::{self, BiasSource, SessionError, SessionOutcome, SessionReadings};
 use zerocal_core::stage1::AxisOneTurn;
@@ -121,10 +123,10 @@ fn run(case: &Case) {
     let name = case.name;
     let readings = SessionReadings {
         convention: case.convention,
-        chain: WristChain::paper(),
+        arm: Arm::paper_with_j2_direction(case.j2_direction),
+        masses: None,
         bias: case.bias,
         stage1: case.stage1,
-        j2_change_rad: 0.0,
         poses: case.poses,
     };
     let config = FitConfig::default();

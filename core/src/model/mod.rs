@@ -1,13 +1,16 @@
 //! The kinematic and sensor model of `METHOD.md`.
 //!
-//! A reading is `convention(Rᵀ·ẑ) + bias`, with `R` the sensor's orientation in a level
-//! world frame. For stage 2, `R = Rbase · F0·E3(θ3) · F1·E4(θ4) · F2·E5(θ5) · F3·E6(θ6) · F4`
-//! where `Ek` turns about joint k's axis and the `Fk` are fixed link rotations
-//! (identity for the paper's robot; `F4` is the sensor's mounting on the flange).
+//! A reading is `convention(G·Rᵀ·ẑ) + bias`, with `R` the sensor's orientation in a
+//! level world frame and `G` the sensor's gain ([`Gain`]). The arm ([`Arm`]) is six
+//! joints, each a fixed rotation then a turn about one of its frame's axes; stage 2 sees
+//! `R = Rbase · F1·E1(θ1) · F2·E2(θ2) · F3·E3(θ3) · … · F6·E6(θ6) · Fflange · Mount`,
+//! whose last four joints and mounting are the [`WristChain`].
 
+mod arm;
 mod sensor;
 
-pub use sensor::{Convention, SensorBias, SensorModel, Tilt, TiltAxis, UnknownName};
+pub use arm::{cast_rotation, cast_vector, Arm, Joint, Placement, JOINTS};
+pub use sensor::{Convention, Gain, SensorBias, SensorModel, Tilt, TiltAxis, UnknownName};
 
 use crate::real::{deg_to_rad, Real};
 use nalgebra::{Rotation3, Vector3};

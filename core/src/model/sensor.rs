@@ -203,7 +203,46 @@ impl std::error::Error for UnknownName {}
 /// The sensor's zero error: a reading is `convention(u) + bias`.
 pub type SensorBias<T> = Tilt<T>;
 
-/// A sensor: its convention and its bias.
+/// The sensing axes' sensitivity and cross-axis errors near level: the chip measures
+/// `a = (I + E)·u` for the up vector `u`, with
+/// `E = [[xx, xy, 0], [yx, yy, 0], [0, 0, 0]]` (the overall scale `E_zz` changes no
+/// angle; `E_xz`, `E_yz` act as a bias).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Gain<T> {
+    /// x's sensitivity error (relative).
+    pub xx: T,
+    /// y's sensitivity error (relative).
+    pub yy: T,
+    /// x's response to y.
+    pub xy: T,
+    /// y's response to x.
+    pub yx: T,
+}
+
+impl<T: Real> Gain<T> {
+    /// `(I + E)·u`.
+    pub fn apply(&self, u: &Vector3<T>) -> Vector3<T> {
+        Vector3::new(
+            u.x + self.xx * u.x + self.xy * u.y,
+            u.y + self.yx * u.x + self.yy * u.y,
+            u.z,
+        )
+    }
+
+    /// Both corrections together (first order: the terms add).
+    pub fn plus(&self, other: &Gain<T>) -> Gain<T> {
+        Gain {
+            xx: self.xx + other.xx,
+            yy: self.yy + other.yy,
+            xy: self.xy + other.xy,
+            yx: self.yx + other.yx,
+        }
+    }
+}
+
+/// A sensor: its convention, its bias and its gain.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -212,13 +251,24 @@ pub struct SensorModel<T> {
     pub convention: Convention,
     /// Zero error added to every reading.
     pub bias: SensorBias<T>,
+    /// Sensitivity and cross-axis errors (zero: ideal).
+    pub gain: Gain<T>,
 }
 
 impl<T: Real> SensorModel<T> {
+    /// An ideal sensor with a bias.
+    pub fn new(convention: Convention, bias: SensorBias<T>) -> Self {
+        SensorModel {
+            convention,
+            bias,
+            gain: Gain::default(),
+        }
+    }
+
     /// What this sensor reads at `orientation`.
     pub fn reading(&self, orientation: &Rotation3<T>) -> Tilt<T> {
         let u = super::up_in_sensor(orientation);
-        let t = self.convention.read(&u);
+        let t = self.convention.read(&self.gain.apply(&u));
         Tilt::new(t.x_rad + self.bias.x_rad, t.y_rad + self.bias.y_rad)
     }
 }

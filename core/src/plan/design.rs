@@ -4,68 +4,79 @@
 
 use super::random::Xorshift64Star;
 use super::{Criterion, PlanConfig, MAX_POSES};
-use crate::model::WRIST_JOINTS;
+use crate::linalg::{inverse_diagonal, log_det, Square};
+use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::real::Real;
-use crate::stage2::Stage2Model;
-use nalgebra::{Cholesky, Matrix4};
+use crate::stage2::{information, Layout, Stage2Model, MAX_PARAMS};
 
-/// Entries of the upper triangle of a symmetric 4×4 matrix.
-const PACKED: usize = WRIST_JOINTS * (WRIST_JOINTS + 1) / 2;
+/// Entries of the upper triangle of a symmetric `MAX_PARAMS`² matrix.
+const PACKED: usize = MAX_PARAMS * (MAX_PARAMS + 1) / 2;
+
+/// The information of a design: JᵀJ over the plan's parameters.
+pub(super) type Gram<T> = Square<T, MAX_PARAMS>;
 
 /// One feasible pose of the candidate pool, with its information matrix.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Candidate<T> {
-    /// θ3..θ6 (rad).
-    pub joints_rad: [T; WRIST_JOINTS],
-    /// Upper triangle of JᵢᵀJᵢ at zero offsets, row by row.
+    /// θ1..θ6 (rad).
+    pub joints_rad: [T; JOINTS],
+    /// Upper triangle of JᵢᵀJᵢ at zero offsets, row by row (first n(n+1)/2 used).
     info: [T; PACKED],
 }
 
-fn pack<T: Real>(m: &Matrix4<T>) -> [T; PACKED] {
+impl<T: Real> Default for Candidate<T> {
+    fn default() -> Self {
+        Candidate {
+            joints_rad: [T::zero(); JOINTS],
+            info: [T::zero(); PACKED],
+        }
+    }
+}
+
+fn pack<T: Real>(m: &Gram<T>) -> [T; PACKED] {
     let mut out = [T::zero(); PACKED];
-    let mut n = 0;
-    for i in 0..WRIST_JOINTS {
-        for j in i..WRIST_JOINTS {
-            out[n] = m[(i, j)];
-            n += 1;
+    let mut k = 0;
+    for i in 0..m.n {
+        for j in i..m.n {
+            out[k] = m.m[i][j];
+            k += 1;
         }
     }
     out
 }
 
 /// `m += sign·unpack(p)`.
-fn add_packed<T: Real>(m: &mut Matrix4<T>, p: &[T; PACKED], sign: T) {
-    let mut n = 0;
-    for i in 0..WRIST_JOINTS {
-        for j in i..WRIST_JOINTS {
-            let v = p[n] * sign;
-            m[(i, j)] += v;
+fn add_packed<T: Real>(m: &mut Gram<T>, p: &[T; PACKED], sign: T) {
+    let mut k = 0;
+    for i in 0..m.n {
+        for j in i..m.n {
+            let v = p[k] * sign;
+            m.m[i][j] += v;
             if i != j {
-                m[(j, i)] += v;
+                m.m[j][i] += v;
             }
-            n += 1;
+            k += 1;
         }
     }
 }
 
 /// The criterion as a score (larger is better), `None` if the matrix is singular.
-pub(super) fn score<T: Real>(criterion: Criterion, m: &Matrix4<T>) -> Option<T> {
-    let chol = Cholesky::new(*m)?;
-    let l = chol.l_dirty();
+pub(super) fn score<T: Real>(criterion: Criterion, m: &Gram<T>) -> Option<T> {
     match criterion {
-        Criterion::DOptimal => {
-            let mut log_det = T::zero();
-            for k in 0..WRIST_JOINTS {
-                log_det += l[(k, k)].ln();
-            }
-            let two = T::one() + T::one();
-            Some(two * log_det).filter(|v| v.is_finite())
-        }
+        Criterion::DOptimal => log_det(m).filter(|v| v.is_finite()),
         Criterion::AOptimal => {
-            let trace = chol.inverse().trace();
+            // The sum of the offsets' variances only: the extra terms are nuisance
+            // parameters, planned for but not optimised.
+            let trace = trace_inverse_of_offsets(m)?;
             Some(-trace).filter(|v| v.is_finite() && trace > T::zero())
         }
     }
+}
+
+/// `trace` of the offsets' block of `m⁻¹` (the first four slots).
+fn trace_inverse_of_offsets<T: Real>(m: &Gram<T>) -> Option<T> {
+    let d = inverse_diagonal(m)?;
+    Some(d.iter().take(WRIST_JOINTS).fold(T::zero(), |s, v| s + *v))
 }
 
 /// `a` better than `b` by more than the rounding of the criterion.
@@ -79,35 +90,50 @@ pub(super) fn better<T: Real>(a: Option<T>, b: Option<T>) -> bool {
     }
 }
 
-/// Largest |reading| of `joints_rad` at zero offsets (rad); `None` if not finite.
+/// Largest |reading| of `joints_rad` at zero offsets (rad); `None` if not finite or
+/// if the pendant would hang upside down (the `axis` angles cannot tell, but a real
+/// sensor's cross-axis terms change sign there, and the low-noise modes are specified
+/// near level only).
 pub(super) fn reading_extent<T: Real>(
     model: &Stage2Model<T>,
-    joints_rad: &[T; WRIST_JOINTS],
+    joints_rad: &[T; JOINTS],
 ) -> Option<T> {
+    let z = model.up_at(joints_rad).z;
+    if !z.is_finite() || z <= T::zero() {
+        return None;
+    }
     let t = model.predict(joints_rad, &[T::zero(); WRIST_JOINTS]);
     t.is_finite().then(|| t.x_rad.abs().max(t.y_rad.abs()))
+}
+
+/// A candidate pose: joints 1 and 2 where the plan holds them, 3-6 drawn in the limits.
+pub(super) fn draw<T: Real>(config: &PlanConfig<T>, rng: &mut Xorshift64Star) -> [T; JOINTS] {
+    let mut q = [T::zero(); JOINTS];
+    q[..2].copy_from_slice(&config.fixed_joints_rad);
+    for (qk, &(lo, hi)) in q[2..].iter_mut().zip(&config.limits_rad) {
+        *qk = rng.uniform(lo, hi);
+    }
+    q
 }
 
 /// Fills the pool with feasible candidates; returns (found, draws).
 pub(super) fn draw_pool<T: Real>(
     model: &Stage2Model<T>,
     config: &PlanConfig<T>,
+    layout: &Layout,
     pool: &mut [Candidate<T>],
 ) -> (usize, u32) {
-    let zero = [T::zero(); WRIST_JOINTS];
     let limit = config.window_rad - config.margin_rad;
     let mut rng = Xorshift64Star::new(config.seed);
     let (mut found, mut draws) = (0, 0u32);
     while found < config.candidates && draws < config.max_draws {
         draws += 1;
-        let mut q = [T::zero(); WRIST_JOINTS];
-        for (qk, &(lo, hi)) in q.iter_mut().zip(&config.limits_rad) {
-            *qk = rng.uniform(lo, hi);
-        }
+        let q = draw(config, &mut rng);
         if !reading_extent(model, &q).is_some_and(|r| r <= limit) {
             continue;
         }
-        let info = model.information(core::iter::once(&q), &zero).matrix();
+        let info = information(model, config.extras, &[q], &[T::zero(); WRIST_JOINTS]).gram();
+        debug_assert_eq!(info.n, layout.len());
         if let Some(slot) = pool.get_mut(found) {
             *slot = Candidate {
                 joints_rad: q,
@@ -119,8 +145,12 @@ pub(super) fn draw_pool<T: Real>(
     (found, draws)
 }
 
-pub(super) fn information_of<T: Real>(pool: &[Candidate<T>], design: &[u16]) -> Matrix4<T> {
-    let mut m = Matrix4::zeros();
+pub(super) fn information_of<T: Real>(
+    pool: &[Candidate<T>],
+    design: &[u16],
+    layout: &Layout,
+) -> Gram<T> {
+    let mut m = Gram::zeros(layout.len());
     for &i in design {
         if let Some(c) = pool.get(usize::from(i)) {
             add_packed(&mut m, &c.info, T::one());
@@ -130,12 +160,19 @@ pub(super) fn information_of<T: Real>(pool: &[Candidate<T>], design: &[u16]) -> 
 }
 
 /// Greedy D-optimal build of `n` distinct candidates.
-pub(super) fn greedy<T: Real>(pool: &[Candidate<T>], n: usize) -> heapless::Vec<u16, MAX_POSES> {
+pub(super) fn greedy<T: Real>(
+    pool: &[Candidate<T>],
+    n: usize,
+    layout: &Layout,
+) -> heapless::Vec<u16, MAX_POSES> {
     let mut design: heapless::Vec<u16, MAX_POSES> = heapless::Vec::new();
-    // The ridge makes log det defined while the set has rank < 4; per-pose information
+    // The ridge makes log det defined while the set has rank < n; per-pose information
     // is O(1) (a reading moves about one radian per radian of joint), so 1e-4 only
     // breaks ties among the first picks.
-    let mut m = Matrix4::identity() * T::lit(1e-4);
+    let mut m = Gram::identity(layout.len());
+    for i in 0..m.n {
+        m.m[i][i] = T::lit(1e-4);
+    }
     while design.len() < n {
         let Some((c, _)) = best_addition(pool, &design, &m, Criterion::DOptimal, None) else {
             break;
@@ -155,7 +192,7 @@ pub(super) fn greedy<T: Real>(pool: &[Candidate<T>], n: usize) -> heapless::Vec<
 fn best_addition<T: Real>(
     pool: &[Candidate<T>],
     design: &[u16],
-    base: &Matrix4<T>,
+    base: &Gram<T>,
     criterion: Criterion,
     bar: Option<Option<T>>,
 ) -> Option<(u16, Option<T>)> {
@@ -183,9 +220,10 @@ pub(super) fn exchange<T: Real>(
     design: &mut [u16],
     criterion: Criterion,
     max_passes: u32,
+    layout: &Layout,
 ) -> u32 {
     let mut swaps = 0;
-    let mut m = information_of(pool, design);
+    let mut m = information_of(pool, design, layout);
     let mut current = score(criterion, &m);
     for _ in 0..max_passes {
         let mut improved = false;
@@ -198,7 +236,7 @@ pub(super) fn exchange<T: Real>(
             if let Some((c, _)) = best_addition(pool, design, &without, criterion, Some(current)) {
                 design[i] = c;
                 // Recomputed, not updated, so rounding does not accumulate in f32.
-                m = information_of(pool, design);
+                m = information_of(pool, design, layout);
                 current = score(criterion, &m);
                 swaps += 1;
                 improved = true;
@@ -211,15 +249,19 @@ pub(super) fn exchange<T: Real>(
     swaps
 }
 
-/// Orders the plan for short robot travel: start at the pose nearest all-zero joints,
-/// then always go to the nearest pose not yet visited (largest joint move).
-pub(super) fn travel_order<T: Real>(poses: &mut [[T; WRIST_JOINTS]]) {
-    let dist = |a: &[T; WRIST_JOINTS], b: &[T; WRIST_JOINTS]| {
+/// Orders the plan for short robot travel: start at the pose nearest the stage-1 pose
+/// (joints 3-6 at zero), then always go to the nearest pose not yet visited (largest
+/// joint move).
+pub(super) fn travel_order<T: Real>(poses: &mut [[T; JOINTS]]) {
+    let dist = |a: &[T; JOINTS], b: &[T; JOINTS]| {
         a.iter()
             .zip(b)
             .fold(T::zero(), |m, (x, y)| m.max((*x - *y).abs()))
     };
-    let mut here = [T::zero(); WRIST_JOINTS];
+    let mut here = poses.first().copied().unwrap_or([T::zero(); JOINTS]);
+    for q in here.iter_mut().skip(2) {
+        *q = T::zero();
+    }
     for i in 0..poses.len() {
         let mut best = i;
         for j in (i + 1)..poses.len() {

@@ -35,21 +35,21 @@ pub use design::Candidate;
 pub use random::Xorshift64Star;
 
 use crate::error::FitError;
-use crate::model::WRIST_JOINTS;
+use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
-use crate::stage2::{covariance_bound, weakest_of_gram, Stage2Model, MIN_POSES};
+use crate::stage2::{covariance_bound, weakest_of_gram, Extras, Stage2Model, MIN_POSES};
 use core::fmt;
 use design::{draw_pool, exchange, greedy, information_of, reading_extent, score, travel_order};
 
 /// Most poses a plan holds.
-pub const MAX_POSES: usize = 64;
+pub const MAX_POSES: usize = 48;
 
 /// A candidate pool size that works well: the D/A-optimal 8-pose plan from 256
 /// candidates is within a few percent of the one from 4096.
 pub const DEFAULT_POOL: usize = 256;
 
-/// Joint targets θ3..θ6 (rad), one per pose: a plan's poses, as the pendant keeps them.
-pub type PoseList<T> = heapless::Vec<[T; WRIST_JOINTS], MAX_POSES>;
+/// Joint targets θ1..θ6 (rad), one per pose: a plan's poses, as the pendant keeps them.
+pub type PoseList<T> = heapless::Vec<[T; JOINTS], MAX_POSES>;
 
 /// What "best" means for a pose set.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -108,6 +108,10 @@ pub struct PlanConfig<T> {
     pub margin_rad: T,
     /// (low, high) of θ3..θ6 (rad).
     pub limits_rad: [(T, T); WRIST_JOINTS],
+    /// θ1 and θ2 during stage 2 (rad): where stage 1 had them.
+    pub fixed_joints_rad: [T; 2],
+    /// The parameters the plan must separate (the fit's `FitConfig::extras`).
+    pub extras: Extras,
     /// Seed of the candidate draw: the same seed gives the same plan.
     pub seed: u64,
     /// Feasible candidates to collect (at most the pool buffer's length).
@@ -135,6 +139,8 @@ impl<T: Real> Default for PlanConfig<T> {
             window_rad: deg_to_rad(T::lit(10.0)),
             margin_rad: deg_to_rad(T::lit(1.0)),
             limits_rad: [(-full, full); WRIST_JOINTS],
+            fixed_joints_rad: [T::zero(); 2],
+            extras: Extras::NONE,
             seed: 1,
             candidates: DEFAULT_POOL,
             noise_sigma_rad: deg_to_rad(T::lit(0.002 / 1.732_050_807_568_877_2)),
@@ -151,8 +157,8 @@ impl<T: Real> Default for PlanConfig<T> {
 /// A plan: the poses and what they promise.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Plan<T> {
-    /// θ3..θ6 targets (rad), in a short travel order (nearest neighbour from the pose
-    /// closest to all-zero joints).
+    /// θ1..θ6 targets (rad), in a short travel order (nearest neighbour from the pose
+    /// closest to the stage-1 pose).
     pub poses_rad: PoseList<T>,
     /// Predicted 1σ of Δθ3..Δθ6 (rad): the covariance bound at zero offsets.
     pub predicted_sigma_rad: [T; WRIST_JOINTS],
@@ -190,6 +196,8 @@ pub enum PlanSetting {
     Candidates,
     /// `max_condition_number`.
     MaxConditionNumber,
+    /// `fixed_joints_rad`.
+    FixedJoints,
 }
 
 impl fmt::Display for PlanSetting {
@@ -209,6 +217,7 @@ impl fmt::Display for PlanSetting {
             PlanSetting::MaxConditionNumber => {
                 f.write_str("max condition number: must be finite and > 1")
             }
+            PlanSetting::FixedJoints => f.write_str("joints 1 and 2: must be finite angles"),
         }
     }
 }
@@ -306,6 +315,9 @@ fn validate<T: Real>(config: &PlanConfig<T>, pool_len: usize) -> Result<(), Plan
             return bad(PlanSetting::Limits { joint: k as u8 + 3 });
         }
     }
+    if !config.fixed_joints_rad.iter().all(|q| q.is_finite()) {
+        return bad(PlanSetting::FixedJoints);
+    }
     if !(config.noise_sigma_rad.is_finite() && config.noise_sigma_rad > T::zero()) {
         return bad(PlanSetting::NoiseSigma);
     }
@@ -340,18 +352,20 @@ pub fn plan<T: Real>(
     pool: &mut [Candidate<T>],
 ) -> Result<Plan<T>, PlanError> {
     validate(config, pool.len())?;
-    let (found, draws) = draw_pool(model, config, pool);
+    let layout = config.extras.layout();
+    let (found, draws) = draw_pool(model, config, &layout, pool);
     // Fewer candidates than asked for is fine as long as the exchange has a choice.
     if found < config.poses.max(MIN_POSES) * 2 && found < config.candidates {
         return Err(PlanError::WindowUnreachable { draws, found });
     }
     let pool = &pool[..found];
-    let mut design = greedy(pool, config.poses);
+    let mut design = greedy(pool, config.poses, &layout);
     let exchanges = exchange(
         pool,
         &mut design,
         config.criterion,
         config.max_exchange_passes,
+        &layout,
     );
 
     let mut poses_rad: PoseList<T> = PoseList::new();
@@ -363,15 +377,20 @@ pub fn plan<T: Real>(
     }
     travel_order(&mut poses_rad);
 
-    let zero = [T::zero(); WRIST_JOINTS];
-    let bound = covariance_bound(model, poses_rad.iter(), &zero, config.noise_sigma_rad)
-        .map_err(PlanError::Unobservable)?;
-    let m = information_of(pool, &design);
+    let bound = covariance_bound(
+        model,
+        config.extras,
+        &poses_rad,
+        &[T::zero(); WRIST_JOINTS],
+        config.noise_sigma_rad,
+    )
+    .map_err(PlanError::Unobservable)?;
+    let m = information_of(pool, &design, &layout);
     if bound.condition_number > config.max_condition_number {
         return Err(PlanError::Unobservable(FitError::IllConditioned {
             condition_number: bound.condition_number.to_f64() as f32,
             limit: config.max_condition_number.to_f64() as f32,
-            params: weakest_of_gram(&m),
+            params: weakest_of_gram(&m, &layout),
         }));
     }
     let log_det = score(Criterion::DOptimal, &m).unwrap_or(T::zero());

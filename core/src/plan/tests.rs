@@ -2,7 +2,7 @@
 use super::design::better;
 use super::*;
 use crate::error::ParamSet;
-use crate::model::{BaseTilt, SensorModel, Tilt, WristChain};
+use crate::model::{BaseTilt, SensorModel, Tilt};
 
 fn pool64() -> std::vec::Vec<Candidate<f64>> {
     std::vec![Candidate::default(); DEFAULT_POOL]
@@ -55,13 +55,14 @@ fn exchange_never_worsens_the_greedy_design() {
     let model = Stage2Model::<f64>::default();
     let config = PlanConfig::default();
     let mut pool = pool64();
-    let (found, _) = draw_pool(&model, &config, &mut pool);
+    let layout = config.extras.layout();
+    let (found, _) = draw_pool(&model, &config, &layout, &mut pool);
     let pool = &pool[..found];
     for criterion in [Criterion::AOptimal, Criterion::DOptimal] {
-        let mut design = greedy(pool, 8);
-        let before = score(criterion, &information_of(pool, &design));
-        exchange(pool, &mut design, criterion, 20);
-        let after = score(criterion, &information_of(pool, &design));
+        let mut design = greedy(pool, 8, &layout);
+        let before = score(criterion, &information_of(pool, &design, &layout));
+        exchange(pool, &mut design, criterion, 20, &layout);
+        let after = score(criterion, &information_of(pool, &design, &layout));
         assert!(
             !better(before, after),
             "{criterion:?}: {before:?} -> {after:?}"
@@ -122,8 +123,14 @@ fn bad_settings_are_named() {
             PlanError::TooFewPoses { got: 3, min: 4 },
         ),
         (
-            PlanConfig { poses: 65, ..base },
-            PlanError::TooManyPoses { got: 65, max: 64 },
+            PlanConfig {
+                poses: MAX_POSES + 1,
+                ..base
+            },
+            PlanError::TooManyPoses {
+                got: MAX_POSES + 1,
+                max: MAX_POSES,
+            },
         ),
         (
             PlanConfig {
@@ -188,12 +195,9 @@ fn unreachable_window_is_reported() {
 #[test]
 fn plans_for_a_tilted_base_and_biased_sensor_stay_in_the_window() {
     let model = Stage2Model {
-        chain: WristChain::paper(),
         base_tilt: BaseTilt::from_deg(0.5, -0.4),
-        sensor: SensorModel {
-            convention: crate::model::Convention::Axis,
-            bias: Tilt::from_deg(0.05, -0.03),
-        },
+        sensor: SensorModel::new(crate::model::Convention::Axis, Tilt::from_deg(0.05, -0.03)),
+        ..Stage2Model::default()
     };
     let config = PlanConfig::default();
     let p = plan(&model, &config, &mut pool64()).unwrap_or_else(|e| panic!("{e}"));

@@ -17,48 +17,58 @@ pub mod record;
 mod state;
 
 use crate::error::StageError;
-use crate::model::{BaseTilt, Convention, SensorModel, Tilt, TiltAxis, WristChain, WRIST_JOINTS};
+use crate::model::{Arm, BaseTilt, Convention, SensorModel, Tilt, TiltAxis, JOINTS, WRIST_JOINTS};
 use crate::plan::{plan, Candidate, PlanConfig, PlanError, PoseList, MAX_POSES};
 use crate::real::{deg_to_rad, Real};
 use crate::report::Verdict;
 use crate::session::{SessionError, SessionSolution};
 use crate::stage0::Reversal;
 use crate::stage1::Stage1Result;
-use crate::stage2::{FitConfig, PoseReading, Stage2Model};
+use crate::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessConfig};
 pub use record::{Record, RecordError};
 pub use state::{ProcedureState, View};
 
+/// A robot profile's name as the pendant keeps it (`zerocal robots` lists them).
+pub type RobotName = heapless::String<32>;
+
 /// What the procedure needs to know that does not change during a session.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ProcedureConfig<T: Real> {
+    /// The robot profile's name, written into the export.
+    pub robot: RobotName,
     /// The sensor's reading convention (the SCL3300 reads `axis`).
     pub convention: Convention,
-    /// The robot's wrist.
-    pub chain: WristChain<T>,
+    /// The robot and the pendant's mountings.
+    pub arm: Arm<T>,
+    /// The links' masses for the sag term (`None`: no sag term).
+    pub masses: Option<MassModel<T>>,
     /// When to call the pendant still.
     pub stillness: StillnessConfig<T>,
     /// Moving this far from the last capture arms the next one (rad).
     pub rearm_motion_rad: T,
-    /// Joint-2 angle commanded during stage 1 (rad).
-    pub j2_commanded_rad: T,
-    /// +1 if positive joint-2 motion increases the upper-arm x reading, else −1.
-    pub j2_direction: i8,
+    /// The stage-1 pose (rad): joint 1 at its mark (the second reading is this + π),
+    /// joint 2 where stage 2 keeps it too.
+    pub stage1_joints_rad: [T; JOINTS],
     /// Stage-2 fit settings, including the sensor's range and noise.
     pub fit: FitConfig<T>,
 }
 
 impl<T: Real> Default for ProcedureConfig<T> {
     fn default() -> Self {
+        let mut robot = RobotName::new();
+        // 11 bytes into 32: cannot fail.
+        let _ = robot.push_str("paper-wrist");
         ProcedureConfig {
+            robot,
             convention: Convention::Axis,
-            chain: WristChain::paper(),
+            arm: Arm::paper(),
+            masses: None,
             stillness: StillnessConfig::default(),
             // Four times the stillness threshold: a robot going to a new pose moves the
             // reading by degrees, noise never by a fifth of one.
             rearm_motion_rad: deg_to_rad(T::lit(0.2)),
-            j2_commanded_rad: T::zero(),
-            j2_direction: 1,
+            stage1_joints_rad: [T::zero(); JOINTS],
             fit: FitConfig::default(),
         }
     }
@@ -124,6 +134,8 @@ pub enum Event<T> {
         t_ms: u32,
         /// The reading.
         reading: Tilt<T>,
+        /// The sensor's temperature (°C), if it reports one.
+        temperature_c: Option<T>,
     },
     /// The sensor is missing or failing (the firmware keeps retrying).
     SensorFault,
@@ -224,16 +236,17 @@ pub fn pendant_default<T: Real>(
     pool: &mut [Candidate<T>],
 ) -> Result<PoseList<T>, PlanError> {
     let model = Stage2Model {
-        chain: config.chain,
+        arm: config.arm,
         base_tilt: BaseTilt::level(),
-        sensor: SensorModel {
-            convention: config.convention,
-            bias: Tilt::default(),
-        },
+        sensor: SensorModel::new(config.convention, Tilt::default()),
+        masses: config.masses,
+        ..Stage2Model::default()
     };
     let plan_config = PlanConfig {
         poses: PENDANT_PLAN_POSES,
         max_condition_number: config.fit.max_condition_number,
+        fixed_joints_rad: [config.stage1_joints_rad[0], config.stage1_joints_rad[1]],
+        extras: config.fit.extras,
         ..PlanConfig::default()
     };
     Ok(plan(&model, &plan_config, pool)?.poses_rad)
@@ -247,7 +260,14 @@ pub fn step<T: Real>(
 ) -> Output<T> {
     let mut out = Output::default();
     match event {
-        Event::Sample { t_ms, reading } => on_sample(config, s, t_ms, reading, &mut out),
+        Event::Sample {
+            t_ms,
+            reading,
+            temperature_c,
+        } => {
+            s.temperature_c = temperature_c;
+            on_sample(config, s, t_ms, reading, &mut out)
+        }
         Event::SensorFault => {
             s.filter.reset();
             s.live = None;
@@ -430,6 +450,7 @@ fn capture<T: Real>(
             let pose = PoseReading {
                 joints_rad: q,
                 reading: mean,
+                temperature_c: s.temperature_c,
             };
             if s.captures.push((s.next_pose as u8, pose)).is_err() {
                 return;
@@ -437,8 +458,7 @@ fn capture<T: Real>(
             out.push(Record::Capture {
                 slot,
                 plan_index: s.next_pose as u8,
-                joints_rad: q,
-                reading: mean,
+                pose,
             });
             s.next_pose += 1;
             s.enter(Phase::Stage2, false);

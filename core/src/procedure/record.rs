@@ -4,17 +4,21 @@
 //! so "undo" overwrites a count rather than deleting (the STM32F4 flash cannot delete).
 //!
 //! Encoding: a format byte, then little-endian fields; every angle as an `f64` of
-//! radians (exact for the pendant's `f32`).
+//! radians (exact for the pendant's `f32`). Format 2 holds all six joints and the
+//! temperature of each capture; format 1 (the wrist's four joints) is refused as
+//! `WrongFormat` and the pendant starts afresh.
 
 use super::Phase;
-use crate::model::{Tilt, WRIST_JOINTS};
+use crate::model::{Tilt, JOINTS, WRIST_JOINTS};
 use crate::plan::MAX_POSES;
 use crate::real::Real;
+use crate::stage2::PoseReading;
 
-/// Largest encoded record (bytes).
-pub const MAX_RECORD_LEN: usize = 1 + 2 + 8 * 10;
+/// Largest encoded record (bytes): the last result (format, ten angles); a capture
+/// (format, slot, index, six joints, two readings, a flag and a temperature) is 76.
+pub const MAX_RECORD_LEN: usize = 1 + 8 * 10;
 
-const FORMAT: u8 = 1;
+const FORMAT: u8 = 2;
 
 /// One stored fact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,10 +48,8 @@ pub enum Record<T> {
         slot: u8,
         /// The plan pose it answers.
         plan_index: u8,
-        /// Commanded joints (rad).
-        joints_rad: [T; WRIST_JOINTS],
-        /// Averaged reading.
-        reading: Tilt<T>,
+        /// The commanded joints, the averaged reading and the temperature.
+        pose: PoseReading<T>,
     },
     /// Number of poses in the plan.
     PlanLen(u8),
@@ -55,8 +57,8 @@ pub enum Record<T> {
     PlanPose {
         /// Index in the plan.
         index: u8,
-        /// Joint targets θ3..θ6 (rad).
-        joints_rad: [T; WRIST_JOINTS],
+        /// Joint targets θ1..θ6 (rad).
+        joints_rad: [T; JOINTS],
     },
     /// The last completed result.
     LastResult {
@@ -177,8 +179,18 @@ impl Reader<'_> {
     fn tilt<T: Real>(&mut self) -> Result<Tilt<T>, RecordError> {
         Ok(Tilt::new(self.f()?, self.f()?))
     }
-    fn joints<T: Real>(&mut self) -> Result<[T; WRIST_JOINTS], RecordError> {
+    fn four<T: Real>(&mut self) -> Result<[T; WRIST_JOINTS], RecordError> {
         Ok([self.f()?, self.f()?, self.f()?, self.f()?])
+    }
+    fn joints<T: Real>(&mut self) -> Result<[T; JOINTS], RecordError> {
+        Ok([
+            self.f()?,
+            self.f()?,
+            self.f()?,
+            self.f()?,
+            self.f()?,
+            self.f()?,
+        ])
     }
 }
 
@@ -222,15 +234,21 @@ impl<T: Real> Record<T> {
             Record::Capture {
                 slot,
                 plan_index,
-                joints_rad,
-                reading,
+                pose,
             } => {
                 w.put(&[slot, plan_index])?;
-                for q in joints_rad {
+                for q in pose.joints_rad {
                     w.f(q)?;
                 }
-                w.f(reading.x_rad)?;
-                w.f(reading.y_rad)?;
+                w.f(pose.reading.x_rad)?;
+                w.f(pose.reading.y_rad)?;
+                match pose.temperature_c {
+                    Some(c) => {
+                        w.put(&[1])?;
+                        w.f(c)?;
+                    }
+                    None => w.put(&[0])?,
+                }
             }
             Record::PlanLen(n) => w.put(&[n])?,
             Record::PlanPose { index, joints_rad } => {
@@ -295,8 +313,8 @@ impl<T: Real> Record<T> {
                 Record::PlanLen(n)
             }
             key::LAST_RESULT => {
-                let offsets_rad = r.joints()?;
-                let sigma_rad = r.joints()?;
+                let offsets_rad = r.four()?;
+                let sigma_rad = r.four()?;
                 Record::LastResult {
                     offsets_rad,
                     sigma_rad,
@@ -310,11 +328,21 @@ impl<T: Real> Record<T> {
                 if u16::from(slot) != k - key::CAPTURE || usize::from(plan_index) >= MAX_POSES {
                     return Err(RecordError::BadField);
                 }
+                let joints_rad = r.joints()?;
+                let reading = r.tilt()?;
+                let temperature_c = match r.u8()? {
+                    0 => None,
+                    1 => Some(r.f()?),
+                    _ => return Err(RecordError::BadField),
+                };
                 Record::Capture {
                     slot,
                     plan_index,
-                    joints_rad: r.joints()?,
-                    reading: r.tilt()?,
+                    pose: PoseReading {
+                        joints_rad,
+                        reading,
+                        temperature_c,
+                    },
                 }
             }
             k if plan_range.contains(&k) => {
@@ -365,13 +393,25 @@ mod tests {
         round_trip(Record::Capture {
             slot: 5,
             plan_index: 9,
-            joints_rad: [0.1, -3.1, 2.0, 1e-9],
-            reading: t,
+            pose: PoseReading {
+                joints_rad: [0.0, -1.5, 0.1, -3.1, 2.0, 1e-9],
+                reading: t,
+                temperature_c: Some(24.5),
+            },
+        });
+        round_trip(Record::Capture {
+            slot: 6,
+            plan_index: 10,
+            pose: PoseReading {
+                joints_rad: [0.0; 6],
+                reading: t,
+                temperature_c: None,
+            },
         });
         round_trip(Record::PlanLen(12));
         round_trip(Record::PlanPose {
-            index: 63,
-            joints_rad: [1.0, 2.0, 3.0, -3.0],
+            index: MAX_POSES as u8 - 1,
+            joints_rad: [0.0, -1.5, 1.0, 2.0, 3.0, -3.0],
         });
         round_trip(Record::LastResult {
             offsets_rad: [1e-3, -2e-3, 3e-3, 4e-3],
@@ -387,8 +427,7 @@ mod tests {
         let r = Record::Capture {
             slot: 2,
             plan_index: 1,
-            joints_rad: [0.0f32; 4],
-            reading: Tilt::default(),
+            pose: PoseReading::<f32>::default(),
         };
         let n = r.encode(&mut buf).unwrap();
         assert_eq!(

@@ -4,7 +4,7 @@
 use super::record::Record;
 use super::{LastResult, Notice, Outcome, Phase, ProcedureConfig};
 use crate::error::StageError;
-use crate::model::{Tilt, WRIST_JOINTS};
+use crate::model::{Tilt, JOINTS};
 use crate::plan::{PoseList, MAX_POSES};
 use crate::real::Real;
 use crate::report::Verdict;
@@ -35,6 +35,8 @@ pub struct ProcedureState<T: Real> {
     pub(super) stillness: Stillness<T>,
     pub(super) armed: bool,
     pub(super) last_capture: Option<Tilt<T>>,
+    /// The sensor's latest temperature (°C), stored with each capture.
+    pub(super) temperature_c: Option<T>,
     pub(super) notice: Option<Notice>,
 }
 
@@ -50,7 +52,7 @@ pub struct View<'a, T: Real> {
     /// Whether the next still window will be captured.
     pub armed: bool,
     /// In stage 2: (index, plan length, joint targets in rad) of the pose to take.
-    pub pose: Option<(usize, usize, [T; WRIST_JOINTS])>,
+    pub pose: Option<(usize, usize, [T; JOINTS])>,
     /// Stage-2 captures so far.
     pub captured: usize,
     /// The bias in use, if any.
@@ -82,6 +84,7 @@ impl<T: Real> ProcedureState<T> {
             stillness: Stillness::Moving,
             armed: true,
             last_capture: None,
+            temperature_c: None,
             notice: None,
         }
     }
@@ -117,17 +120,10 @@ impl<T: Real> ProcedureState<T> {
                 Record::Capture {
                     slot,
                     plan_index,
-                    joints_rad,
-                    reading,
+                    pose,
                 } => {
                     if let Some(x) = slots.get_mut(usize::from(slot)) {
-                        *x = Some((
-                            plan_index,
-                            PoseReading {
-                                joints_rad,
-                                reading,
-                            },
-                        ));
+                        *x = Some((plan_index, pose));
                     }
                 }
                 Record::PlanLen(n) => plan_len = usize::from(n),
@@ -256,11 +252,10 @@ impl<T: Real> ProcedureState<T> {
         Some(
             session::handover(
                 s1,
-                config.chain,
+                config.arm,
                 config.convention,
                 self.bias.as_ref(),
-                T::zero(),
-                config.j2_direction,
+                config.masses,
             )
             .model,
         )
@@ -275,11 +270,10 @@ impl<T: Real> ProcedureState<T> {
     ) -> Option<SessionReadings<'a, T>> {
         Some(SessionReadings {
             convention: config.convention,
-            chain: config.chain,
+            arm: config.arm,
+            masses: config.masses,
             bias: self.bias_source(),
             stage1: self.axis_one_turn(config)?,
-            // Joint 2 stays where stage 1 had it (the first pose screen says so).
-            j2_change_rad: T::zero(),
             poses,
         })
     }
@@ -292,8 +286,8 @@ impl<T: Real> ProcedureState<T> {
         Some(AxisOneTurn {
             before: self.stage1_before?,
             after: self.stage1_after?,
-            commanded_j2_rad: config.j2_commanded_rad,
-            j2_direction: config.j2_direction,
+            j1_rad: config.stage1_joints_rad[0],
+            j2_rad: config.stage1_joints_rad[1],
         })
     }
 
@@ -337,6 +331,7 @@ impl<T: Real> ProcedureState<T> {
             session::solve_stages01(
                 &self.bias_source(),
                 &turn,
+                &config.arm,
                 config.convention,
                 config.fit.sensor_range_rad,
             )

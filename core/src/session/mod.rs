@@ -3,18 +3,18 @@
 //!
 //! Stage 0's reversal (or a bias kept from an earlier one) gives the sensor bias;
 //! stage 1's half turn of axis 1 gives the base tilt, the y bias and Δθ2; the
-//! hand-over builds the stage-2 model from both; stage 2 fits Δθ3..Δθ6. Every reading
-//! carries the same sensor noise, so the uncertainty of what stages 0 and 1 handed
-//! over is propagated into stage 2's, and the result is Δθ2..Δθ6 with their full
-//! covariance. The pendant's procedure, the CLI, the simulators and the on-target
+//! hand-over builds the stage-2 model from both; stage 2 fits Δθ3..Δθ6 (and the sensor
+//! and sag terms the poses separate). Every reading carries the same sensor noise, so
+//! the uncertainty of what stages 0 and 1 handed over is propagated into stage 2's,
+//! and the result is Δθ2..Δθ6 with their full covariance. The pendant's procedure, the CLI, the simulators and the on-target
 //! check all call [`solve`].
 
 use crate::error::{FitError, StageError};
-use crate::model::{BaseTilt, Convention, SensorBias, SensorModel, Tilt, WristChain, WRIST_JOINTS};
+use crate::model::{Arm, Convention, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
 use crate::real::Real;
 use crate::stage0::Reversal;
 use crate::stage1::{AxisOneTurn, Stage1Result};
-use crate::stage2::{fit, FitConfig, FitResult, PoseReading, Stage2Model};
+use crate::stage2::{fit, FitConfig, FitResult, MassModel, PoseReading, Stage2Model};
 use core::fmt;
 
 /// Joints whose offsets a session finds: Δθ2..Δθ6.
@@ -38,98 +38,53 @@ pub enum BiasSource<T> {
 pub struct SessionReadings<'a, T: Real> {
     /// The sensor's reading convention.
     pub convention: Convention,
-    /// Joints 3-6 of the robot.
-    pub chain: WristChain<T>,
+    /// The robot and the pendant's mountings.
+    pub arm: Arm<T>,
+    /// The links' masses for the sag term, if the profile has the geometry.
+    pub masses: Option<MassModel<T>>,
     /// Stage 0.
     pub bias: BiasSource<T>,
-    /// Stage 1: the half turn of axis 1, with joint 2's command and direction.
+    /// Stage 1: the half turn of axis 1 with the commanded joints 1 and 2.
     pub stage1: AxisOneTurn<T>,
-    /// How far joint 2 was commanded from its stage-1 angle during stage 2 (rad): 0
-    /// when it stayed there.
-    pub j2_change_rad: T,
-    /// Stage 2.
+    /// Stage 2: every capture with all six commanded joints.
     pub poses: &'a [PoseReading<T>],
 }
 
-/// What stages 0-1 hand to stage 2: the model of the frame joint 3 turns in and the
-/// sensor, and how well they are known.
+/// What stages 0-1 hand to stage 2: the model of the arm, the tilt, Δθ2 and the sensor,
+/// and how well they are known.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Handover<T: Real> {
     /// The stage-2 model.
     pub model: Stage2Model<T>,
-    /// Covariance of (Δθ2, α, β, bias x, bias y) in units of one reading's noise
-    /// variance, α being that of the model's base tilt (tilt and joint 2 together).
+    /// Covariance of (α, β, Δθ2, bias x, bias y) in units of one reading's noise
+    /// variance (stage 1's, with stage 0's propagated).
     pub covariance: [[T; 5]; 5],
 }
 
-impl<T: Real> Handover<T> {
-    /// The (α, β, bias x, bias y) block of [`covariance`](Self::covariance), for
-    /// [`FitConfig::model_covariance`].
-    pub fn model_covariance(&self) -> [[T; 4]; 4] {
-        core::array::from_fn(|r| core::array::from_fn(|c| self.covariance[r + 1][c + 1]))
-    }
-}
-
-/// Stage 2's model from stages 0-1.
-///
-/// Stage 2 runs with axis 1 back at its mark and joint 2 where stage 1 had it, moved by
-/// `j2_change_rad` (commanded) if at all, so joint 3 turns in
-/// `Ry(β)·Rx(α + φ + s2·j2_change)`: the base tilt composed with joint 2's true angle φ
-/// (both turn about the joint-2 direction). Leaving φ out would move all of it into
-/// Δθ3, unseen.
-///
-/// In `rpy`, α + φ = x1 − bx: stage 1's first reading less the stage-0 bias. With noise
-/// n on each reading (variance 1 in units of σ²) its error n1x − e_bx has variance
-/// 1 + ½ (without stage 0, 1) and covariance −½ with the bias x error; β and the y bias
-/// are half-differences and half-sums of two readings (½ each, uncorrelated); the bias
-/// x is stage 0's half-sum (½), or 0 and wrong when there was no stage 0. Δθ2 =
-/// s2·((x1 + x2)/2 − bx) − c2 has variance ½ + ½ (½), covariance s2·(½ + ½) (s2·½) with
-/// α and −s2·½ (0) with the bias x. First order, which is exact for `rpy` and within 1 %
-/// for `axis` inside a ±10° window.
+/// Stage 2's model from stages 0-1: the measured base tilt and Δθ2 (joint 2's true
+/// angle is its recorded one plus Δθ2, wherever stage 2 has it), the stage-0 x bias
+/// (or 0, and the report warns) and stage 1's y bias.
 pub fn handover<T: Real>(
     stage1: &Stage1Result<T>,
-    chain: WristChain<T>,
+    arm: Arm<T>,
     convention: Convention,
     bias: Option<&SensorBias<T>>,
-    j2_change_rad: T,
-    j2_direction: i8,
+    masses: Option<MassModel<T>>,
 ) -> Handover<T> {
-    let s2 = if j2_direction < 0 {
-        -T::one()
-    } else {
-        T::one()
-    };
-    let model = Stage2Model {
-        chain,
-        base_tilt: BaseTilt {
-            alpha_rad: stage1.base_tilt.alpha_rad + stage1.arm_angle_rad + s2 * j2_change_rad,
-            beta_rad: stage1.base_tilt.beta_rad,
+    Handover {
+        model: Stage2Model {
+            arm,
+            base_tilt: stage1.base_tilt,
+            delta_theta2_rad: stage1.delta_theta2_rad,
+            sensor: SensorModel::new(
+                convention,
+                Tilt::new(bias.map_or(T::zero(), |b| b.x_rad), stage1.bias_y_rad),
+            ),
+            reference_temperature_c: T::zero(),
+            masses,
         },
-        sensor: SensorModel {
-            convention,
-            bias: Tilt::new(bias.map_or(T::zero(), |b| b.x_rad), stage1.bias_y_rad),
-        },
-    };
-    let (o, h, one) = (T::zero(), T::lit(0.5), T::one());
-    // Order: Δθ2, α, β, bias x, bias y.
-    let covariance = if bias.is_some() {
-        [
-            [one, s2, o, -s2 * h, o],
-            [s2, T::lit(1.5), o, -h, o],
-            [o, o, h, o, o],
-            [-s2 * h, -h, o, h, o],
-            [o, o, o, o, h],
-        ]
-    } else {
-        [
-            [h, s2 * h, o, o, o],
-            [s2 * h, one, o, o, o],
-            [o, o, h, o, o],
-            [o, o, o, o, o],
-            [o, o, o, o, h],
-        ]
-    };
-    Handover { model, covariance }
+        covariance: stage1.covariance,
+    }
 }
 
 /// Why a session gave no offsets.
@@ -169,6 +124,9 @@ pub struct SessionSolution<T: Real> {
     pub offsets_rad: [T; SESSION_JOINTS],
     /// Their covariance (rad²): stage-2 noise, and the stage 0-1 noise it inherits.
     pub covariance_rad2: [[T; SESSION_JOINTS]; SESSION_JOINTS],
+    /// Each variance split by where the noise came from: stage 0's reversal, stage 1's
+    /// half turn, stage 2's poses (rad²; the three add up to the diagonal).
+    pub variance_shares_rad2: [[T; 3]; SESSION_JOINTS],
 }
 
 impl<T: Real> SessionSolution<T> {
@@ -197,6 +155,7 @@ pub struct SessionOutcome<T: Real> {
 pub fn solve_stages01<T: Real>(
     bias: &BiasSource<T>,
     stage1: &AxisOneTurn<T>,
+    arm: &Arm<T>,
     convention: Convention,
     range_rad: T,
 ) -> Result<(Option<SensorBias<T>>, Stage1Result<T>), SessionError> {
@@ -205,8 +164,15 @@ pub fn solve_stages01<T: Real>(
         BiasSource::Stored(b) => Some(*b),
         BiasSource::Unknown => None,
     };
+    // A reversal's half-sum has half a reading's variance, a stored one too (it was
+    // such a half-sum).
     let s1 = stage1
-        .solve(convention, bias.as_ref(), range_rad)
+        .solve(
+            arm,
+            convention,
+            bias.as_ref().map(|b| (b, T::lit(0.5))),
+            range_rad,
+        )
         .map_err(SessionError::Stage1)?;
     Ok((bias, s1))
 }
@@ -220,32 +186,36 @@ pub fn solve<T: Real>(
     config: &FitConfig<T>,
 ) -> SessionOutcome<T> {
     let range = config.sensor_range_rad;
-    let (bias, stage1) =
-        match solve_stages01(&readings.bias, &readings.stage1, readings.convention, range) {
-            Ok(v) => v,
-            Err(e) => {
-                let bias = match readings.bias {
-                    BiasSource::Stored(b) => Some(b),
-                    BiasSource::Reversal(r) => r.bias(range).ok(),
-                    BiasSource::Unknown => None,
-                };
-                return SessionOutcome {
-                    bias,
-                    stage1: None,
-                    result: Err(e),
-                };
-            }
-        };
+    let (bias, stage1) = match solve_stages01(
+        &readings.bias,
+        &readings.stage1,
+        &readings.arm,
+        readings.convention,
+        range,
+    ) {
+        Ok(v) => v,
+        Err(e) => {
+            let bias = match readings.bias {
+                BiasSource::Stored(b) => Some(b),
+                BiasSource::Reversal(r) => r.bias(range).ok(),
+                BiasSource::Unknown => None,
+            };
+            return SessionOutcome {
+                bias,
+                stage1: None,
+                result: Err(e),
+            };
+        }
+    };
     let h = handover(
         &stage1,
-        readings.chain,
+        readings.arm,
         readings.convention,
         bias.as_ref(),
-        readings.j2_change_rad,
-        readings.stage1.j2_direction,
+        readings.masses,
     );
     let fit_config = FitConfig {
-        model_covariance: h.model_covariance(),
+        model_covariance: h.covariance,
         ..*config
     };
     let result = fit(&h.model, readings.poses, &fit_config)
@@ -259,22 +229,24 @@ pub fn solve<T: Real>(
 }
 
 /// Δθ2..Δθ6 and their covariance: Δθ2's own, stage 2's, and the cross terms through
-/// the model parameters Δθ2 shares with stage 2 (Cov(Δθ2, Δθk) = C₂ₘ·Sₖᵀ·σ²).
+/// the hand-over parameters Δθ2 shares with stage 2 (Cov(Δθ2, Δθk) = C₂ₘ·Sₖᵀ·σ²).
 fn combine<T: Real>(
     stage1: &Stage1Result<T>,
     h: &Handover<T>,
     fit: FitResult<T>,
 ) -> SessionSolution<T> {
+    /// Δθ2's place among the hand-over parameters (α, β, Δθ2, bias x, bias y).
+    const J2: usize = 2;
     let variance = fit.noise_sigma_rad * fit.noise_sigma_rad;
     let mut offsets_rad = [T::zero(); SESSION_JOINTS];
     offsets_rad[0] = stage1.delta_theta2_rad;
     offsets_rad[1..].copy_from_slice(&fit.offsets_rad);
     let mut cov = [[T::zero(); SESSION_JOINTS]; SESSION_JOINTS];
-    cov[0][0] = h.covariance[0][0] * variance;
+    cov[0][0] = h.covariance[J2][J2] * variance;
     for k in 0..WRIST_JOINTS {
         let mut c = T::zero();
-        for m in 0..4 {
-            c += h.covariance[0][m + 1] * fit.model_sensitivity[k][m];
+        for (m, s) in fit.model_sensitivity[k].iter().enumerate() {
+            c += h.covariance[J2][m] * *s;
         }
         cov[0][k + 1] = c * variance;
         cov[k + 1][0] = c * variance;
@@ -282,10 +254,29 @@ fn combine<T: Real>(
             cov[k + 1][j + 1] = fit.covariance_rad2[k][j];
         }
     }
+    // Shares: Δθ2 has stage 0's and stage 1's; Δθk inherits S·D₀·Sᵀ from stage 0 and
+    // S·(D − D₀)·Sᵀ from stage 1, and has its own stage-2 noise.
+    let d0 = &stage1.covariance_from_stage0;
+    let mut shares = [[T::zero(); 3]; SESSION_JOINTS];
+    shares[0][0] = d0[J2][J2] * variance;
+    shares[0][1] = (h.covariance[J2][J2] - d0[J2][J2]) * variance;
+    for k in 0..WRIST_JOINTS {
+        let s = &fit.model_sensitivity[k];
+        let (mut from0, mut from01) = (T::zero(), T::zero());
+        for a in 0..5 {
+            for b in 0..5 {
+                from0 += s[a] * d0[a][b] * s[b];
+                from01 += s[a] * h.covariance[a][b] * s[b];
+            }
+        }
+        let stage2 = fit.sigma_stage2_rad[k] * fit.sigma_stage2_rad[k];
+        shares[k + 1] = [from0 * variance, (from01 - from0) * variance, stage2];
+    }
     SessionSolution {
         model: h.model,
         fit,
         offsets_rad,
         covariance_rad2: cov,
+        variance_shares_rad2: shares,
     }
 }

@@ -1,6 +1,7 @@
-//! Stage 2: zero offsets of axes 3-6 by an iterated least-squares fit over many poses.
+//! Stage 2: zero offsets of axes 3-6 by an iterated least-squares fit over many poses,
+//! with the sensor and robot terms the poses can separate ([`params`]).
 //!
-//! The fit is Levenberg-Marquardt on the exact model of [`crate::model`] with an analytic
+//! The fit is Levenberg-Marquardt on the exact model of [`model`] with an analytic
 //! Jacobian, each residual row folded into a triangular factor as it is computed
 //! ([`information`]). Before any number is reported the factor is checked: a
 //! rank-deficient or ill-conditioned pose set is refused and the inseparable parameters
@@ -8,14 +9,18 @@
 
 mod bound;
 mod information;
+mod model;
+pub mod params;
 
 pub use bound::{covariance_bound, CovarianceBound};
-pub use information::{weakest_of_gram, Information, WEAK_DIRECTION_SHARE};
+pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
+pub use model::{Estimate, MassModel, Stage2Model, HANDOVER_PARAMS};
+pub use params::{Extras, Layout, Param, MAX_PARAMS};
 
-use crate::error::FitError;
-use crate::model::{joint_trig, BaseTilt, SensorModel, Tilt, TiltAxis, WristChain, WRIST_JOINTS};
+use crate::error::{FitError, ParamSet};
+use crate::linalg::Square;
+use crate::model::{Tilt, TiltAxis, JOINTS, WRIST_JOINTS};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
-use nalgebra::{Matrix4, Vector3, Vector4};
 
 /// Fewest poses the fit accepts: 2N readings must exceed the 4 unknowns with room for σ.
 pub const MIN_POSES: usize = 4;
@@ -29,36 +34,17 @@ pub const RANK_DEFICIENT_CONDITION: f64 = 1e5;
 /// Levenberg-Marquardt: see [`fit`].
 const LOCAL_STEP_RAD: f64 = 1e-4;
 
-/// One stage-2 pose: what the robot was commanded to and what the sensor read.
+/// One stage-2 capture: what the robot was commanded to and what the sensor read.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct PoseReading<T> {
-    /// Commanded θ3..θ6 (rad).
-    pub joints_rad: [T; WRIST_JOINTS],
-    /// Raw reading (bias included).
+    /// Commanded θ1..θ6 (rad), in the model's angles.
+    pub joints_rad: [T; JOINTS],
+    /// Reading (bias included).
     pub reading: Tilt<T>,
-}
-
-/// Everything about the robot and the sensor that the fit does not estimate.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stage2Model<T: Real> {
-    /// Joints 3-6 and the fixed rotations between them.
-    pub chain: WristChain<T>,
-    /// Base tilt measured in stage 1.
-    pub base_tilt: BaseTilt<T>,
-    /// Convention and bias of the sensor.
-    pub sensor: SensorModel<T>,
-}
-
-impl<T: Real> Default for Stage2Model<T> {
-    fn default() -> Self {
-        Stage2Model {
-            chain: WristChain::paper(),
-            base_tilt: BaseTilt::level(),
-            sensor: SensorModel::default(),
-        }
-    }
+    /// The sensor's temperature during the capture (°C), if recorded.
+    pub temperature_c: Option<T>,
 }
 
 /// Fit settings.
@@ -76,17 +62,19 @@ pub struct FitConfig<T> {
     pub sensor_noise_rad: T,
     /// Pose sets whose Jacobian is worse conditioned than this are refused.
     pub max_condition_number: T,
-    /// Below this many residual degrees of freedom (2N − 4), σ comes from
+    /// Below this many residual degrees of freedom (2N − parameters), σ comes from
     /// `sensor_noise_rad` instead of the residuals.
     pub min_residual_dof: usize,
-    /// Starting point of the iteration (rad).
+    /// Which terms beyond the offsets are estimated.
+    pub extras: Extras,
+    /// Starting point of the offsets (rad).
     pub initial_offsets_rad: [T; WRIST_JOINTS],
     /// Uncertainty of what stages 0-1 handed to the model: the covariance of
-    /// (α, β, bias x, bias y) in units of one reading's noise variance (see
+    /// (α, β, Δθ2, bias x, bias y) in units of one reading's noise variance (see
     /// [`crate::session::Handover`]). Zero (the default) takes the model as exact.
-    /// Propagated into the reported 1σ, since an error in α, for one, passes straight
-    /// into Δθ3.
-    pub model_covariance: [[T; 4]; 4],
+    /// Propagated into the reported covariance, since an error in α, for one, passes
+    /// straight into Δθ3.
+    pub model_covariance: [[T; HANDOVER_PARAMS]; HANDOVER_PARAMS],
 }
 
 impl<T: Real> Default for FitConfig<T> {
@@ -100,8 +88,9 @@ impl<T: Real> Default for FitConfig<T> {
             sensor_noise_rad: deg_to_rad(T::lit(0.002 / 1.732_050_807_568_877_2)),
             max_condition_number: T::lit(1000.0),
             min_residual_dof: 8,
+            extras: Extras::NONE,
             initial_offsets_rad: [T::zero(); WRIST_JOINTS],
-            model_covariance: [[T::zero(); 4]; 4],
+            model_covariance: [[T::zero(); HANDOVER_PARAMS]; HANDOVER_PARAMS],
         }
     }
 }
@@ -119,26 +108,32 @@ pub enum SigmaSource {
 
 /// What stage 2 finds.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct FitResult<T> {
+pub struct FitResult<T: Real> {
     /// Δθ3..Δθ6 = true − commanded (rad).
     pub offsets_rad: [T; WRIST_JOINTS],
-    /// 1σ of each offset (rad), including the propagated uncertainty of the base tilt
-    /// and bias (see [`FitConfig::model_covariance`]).
+    /// 1σ of each offset (rad), including the propagated uncertainty of the hand-over
+    /// (see [`FitConfig::model_covariance`]).
     pub sigma_rad: [T; WRIST_JOINTS],
     /// 1σ of each offset from the stage-2 readings alone (rad).
     pub sigma_stage2_rad: [T; WRIST_JOINTS],
-    /// Covariance of Δθ3..Δθ6 (rad²), including the propagated uncertainty of the model
-    /// (`sigma_rad` is the square root of its diagonal).
+    /// Covariance of Δθ3..Δθ6 (rad²), including the propagated uncertainty of the
+    /// hand-over (`sigma_rad` is the square root of its diagonal).
     pub covariance_rad2: [[T; WRIST_JOINTS]; WRIST_JOINTS],
-    /// How the offsets move with an error in the model parameters (α, β, bias x,
-    /// bias y) of [`FitConfig::model_covariance`]: rad per rad, row k = Δθ(k+3). Zero
-    /// when that covariance is zero.
-    pub model_sensitivity: [[T; 4]; WRIST_JOINTS],
+    /// How the offsets move with an error in the hand-over parameters (α, β, Δθ2,
+    /// bias x, bias y): rad per rad, row k = Δθ(k+3). Zero when the hand-over's
+    /// covariance is zero.
+    pub model_sensitivity: [[T; HANDOVER_PARAMS]; WRIST_JOINTS],
+    /// Every estimated parameter by [`Param`] index (0 where not estimated).
+    pub values: [T; MAX_PARAMS],
+    /// Their 1σ by index (stage-2 noise and the hand-over's).
+    pub sigmas: [T; MAX_PARAMS],
+    /// Which parameters were estimated.
+    pub estimated: ParamSet,
     /// RMS of the residuals over all 2N readings (rad).
     pub residual_rms_rad: T,
-    /// Per-reading noise σ used for `sigma_rad` (rad).
+    /// Largest residual (rad) and its pose (0-based).
+    pub worst_residual: (T, usize),
+    /// Per-reading noise σ used for the covariance (rad).
     pub noise_sigma_rad: T,
     /// Where that σ comes from.
     pub sigma_source: SigmaSource,
@@ -150,116 +145,13 @@ pub struct FitResult<T> {
     pub poses: usize,
 }
 
-impl<T: Real> Stage2Model<T> {
-    /// The reading predicted at commanded joints `joints_rad` with offsets `offsets_rad`.
-    pub fn predict(
-        &self,
-        joints_rad: &[T; WRIST_JOINTS],
-        offsets_rad: &[T; WRIST_JOINTS],
-    ) -> Tilt<T> {
-        let q = add(joints_rad, offsets_rad);
-        self.sensor
-            .reading(&self.chain.orientation(&self.base_tilt, &q))
+impl<T: Real> FitResult<T> {
+    /// The estimate of `p` and its 1σ, if estimated.
+    pub fn get(&self, p: Param) -> Option<(T, T)> {
+        self.estimated
+            .contains(p.index())
+            .then(|| (self.values[p.index()], self.sigmas[p.index()]))
     }
-
-    /// Predicted reading and its 2×4 Jacobian with respect to the offsets.
-    fn predict_with_jacobian(
-        &self,
-        fixed_in_use: &[bool; WRIST_JOINTS + 1],
-        base_up: &Vector3<T>,
-        joints_rad: &[T; WRIST_JOINTS],
-        offset_trig: &[(T, T); WRIST_JOINTS],
-    ) -> (Tilt<T>, [Vector4<T>; 2]) {
-        let trig = joint_trig(joints_rad, offset_trig);
-        let (u, du) = self
-            .chain
-            .up_and_partials_with(fixed_in_use, base_up, &trig);
-        let (t, grad) = self.sensor.convention.read_with_gradient(&u);
-        let mut rows = [Vector4::zeros(); 2];
-        for (k, duk) in du.iter().enumerate() {
-            rows[0][k] = grad[0].dot(duk);
-            rows[1][k] = grad[1].dot(duk);
-        }
-        let bias = self.sensor.bias;
-        (Tilt::new(t.x_rad + bias.x_rad, t.y_rad + bias.y_rad), rows)
-    }
-
-    /// Folds every pose into J (and the residuals, where readings are given).
-    /// Returns the factor and the sum of squared residuals.
-    fn linearise<'p>(
-        &self,
-        poses: impl Iterator<Item = (&'p [T; WRIST_JOINTS], Option<&'p Tilt<T>>)>,
-        offsets_rad: &[T; WRIST_JOINTS],
-    ) -> (Information<T>, T)
-    where
-        T: 'p,
-    {
-        let mut info = Information::default();
-        let mut ssr = T::zero();
-        let base_up = self.base_tilt.up_in_base();
-        let offset_trig = offsets_rad.map(|d| d.fast_sin_cos());
-        let fixed_in_use = self.chain.fixed_in_use();
-        for (joints, measured) in poses {
-            let (pred, rows) =
-                self.predict_with_jacobian(&fixed_in_use, &base_up, joints, &offset_trig);
-            let r = measured.map_or(Tilt::default(), |m| m.minus(&pred));
-            ssr += r.x_rad * r.x_rad + r.y_rad * r.y_rad;
-            info.add_row(rows[0], r.x_rad);
-            info.add_row(rows[1], r.y_rad);
-        }
-        (info, ssr)
-    }
-
-    /// `(Jᵀ·J_m, J_mᵀ·J_m)`, with J_m the readings' derivatives with respect to the
-    /// model parameters (α, β, bias x, bias y): how an error in those moves the
-    /// solution, and how much of it is left in the residuals.
-    fn model_coupling(
-        &self,
-        poses: &[PoseReading<T>],
-        offsets_rad: &[T; WRIST_JOINTS],
-    ) -> (Matrix4<T>, Matrix4<T>) {
-        let base_up = self.base_tilt.up_in_base();
-        let base_d = self.base_tilt.up_in_base_partials();
-        let offset_trig = offsets_rad.map(|d| d.fast_sin_cos());
-        let mut coupling = Matrix4::zeros();
-        let mut model_info = Matrix4::zeros();
-        let fixed = self.chain.fixed_in_use();
-        for p in poses {
-            let trig = joint_trig(&p.joints_rad, &offset_trig);
-            let (u, du) = self.chain.up_and_partials_with(&fixed, &base_up, &trig);
-            let (_, grad) = self.sensor.convention.read_with_gradient(&u);
-            let du_alpha = self.chain.to_sensor(&fixed, &base_d[0], &trig);
-            let du_beta = self.chain.to_sensor(&fixed, &base_d[1], &trig);
-            for (axis, g) in grad.iter().enumerate() {
-                let j = Vector4::new(g.dot(&du[0]), g.dot(&du[1]), g.dot(&du[2]), g.dot(&du[3]));
-                let mut jm = Vector4::new(g.dot(&du_alpha), g.dot(&du_beta), T::zero(), T::zero());
-                jm[2 + axis] = T::one();
-                coupling += j * jm.transpose();
-                model_info += jm * jm.transpose();
-            }
-        }
-        (coupling, model_info)
-    }
-
-    /// JᵀJ of a pose set at `offsets_rad` (for pose planning).
-    pub fn information<'p>(
-        &self,
-        joints_rad: impl Iterator<Item = &'p [T; WRIST_JOINTS]>,
-        offsets_rad: &[T; WRIST_JOINTS],
-    ) -> Information<T>
-    where
-        T: 'p,
-    {
-        self.linearise(joints_rad.map(|j| (j, None)), offsets_rad).0
-    }
-}
-
-fn add<T: Real>(a: &[T; WRIST_JOINTS], b: &[T; WRIST_JOINTS]) -> [T; WRIST_JOINTS] {
-    let mut q = *a;
-    for (qk, bk) in q.iter_mut().zip(b) {
-        *qk += *bk;
-    }
-    q
 }
 
 fn check_poses<T: Real>(poses: &[PoseReading<T>], range_rad: T) -> Result<(), FitError> {
@@ -273,7 +165,7 @@ fn check_poses<T: Real>(poses: &[PoseReading<T>], range_rad: T) -> Result<(), Fi
         if p.joints_rad.iter().any(|q| !q.is_finite()) {
             return Err(FitError::NonFiniteJoint { pose: i });
         }
-        if !p.reading.is_finite() {
+        if !p.reading.is_finite() || p.temperature_c.is_some_and(|c| !c.is_finite()) {
             return Err(FitError::NonFiniteReading { pose: i });
         }
         if let Some(axis) = p.reading.axis_beyond(range_rad) {
@@ -295,47 +187,132 @@ fn out_of_range<T: Real>(pose: usize, axis: TiltAxis, value_rad: T, range_rad: T
 /// Refuses a pose set that cannot separate the parameters.
 pub(crate) fn check_conditioning<T: Real>(
     info: &Information<T>,
+    layout: &Layout,
     max_condition: T,
 ) -> Result<T, FitError> {
     let c = info.conditioning();
     if !c.condition_number.is_finite() || c.condition_number > T::lit(RANK_DEFICIENT_CONDITION) {
-        return Err(FitError::RankDeficient { params: c.weakest });
+        return Err(FitError::RankDeficient {
+            params: c.weakest(layout),
+        });
     }
     if c.condition_number > max_condition {
         return Err(FitError::IllConditioned {
             condition_number: c.condition_number.to_f64() as f32,
             limit: max_condition.to_f64() as f32,
-            params: c.weakest,
+            params: c.weakest(layout),
         });
     }
     Ok(c.condition_number)
 }
 
-fn pairs<T: Real>(
+/// Refuses a parameter the model cannot estimate at all.
+fn check_layout<T: Real>(
+    model: &Stage2Model<T>,
+    layout: &Layout,
     poses: &[PoseReading<T>],
-) -> impl Iterator<Item = (&[T; WRIST_JOINTS], Option<&Tilt<T>>)> {
-    poses.iter().map(|p| (&p.joints_rad, Some(&p.reading)))
+) -> Result<(), FitError> {
+    if layout.slot(Param::Sag).is_some() && model.masses.is_none() {
+        return Err(FitError::RankDeficient {
+            params: ParamSet::default().with(Param::Sag.index()),
+        });
+    }
+    if layout.slot(Param::DriftX).is_some() && poses.iter().any(|p| p.temperature_c.is_none()) {
+        return Err(FitError::RankDeficient {
+            params: ParamSet::default()
+                .with(Param::DriftX.index())
+                .with(Param::DriftY.index()),
+        });
+    }
+    Ok(())
 }
 
-fn max_abs<T: Real>(v: &Vector4<T>) -> T {
-    v.iter().fold(T::zero(), |m, x| m.max(x.abs()))
+/// J over all poses, with the residuals when `with_residuals`; the sum of squared
+/// residuals and the largest one (and its pose).
+fn linearise<T: Real>(
+    model: &Stage2Model<T>,
+    layout: &Layout,
+    poses: &[PoseReading<T>],
+    x: &[T; MAX_PARAMS],
+    with_residuals: bool,
+) -> (Information<T>, T, (T, usize)) {
+    let estimate = Estimate::from_slots(layout, x);
+    let pass = model.pass(&estimate);
+    let mut info = Information::new(layout.len());
+    let mut ssr = T::zero();
+    let mut worst = (T::zero(), 0);
+    for (i, pose) in poses.iter().enumerate() {
+        let p = model.predict_rows(&pass, layout, &estimate, pose, false);
+        let r = if with_residuals {
+            pose.reading.minus(&p.reading)
+        } else {
+            Tilt::default()
+        };
+        let size = r.x_rad.abs().max(r.y_rad.abs());
+        if size > worst.0 {
+            worst = (size, i);
+        }
+        ssr += r.x_rad * r.x_rad + r.y_rad * r.y_rad;
+        info.add_row(&p.rows[0], r.x_rad);
+        info.add_row(&p.rows[1], r.y_rad);
+    }
+    (info, ssr, worst)
 }
 
-/// Identifies Δθ3..Δθ6.
+/// `(Jᵀ·J_m, J_mᵀ·J_m)`, with J_m the readings' derivatives with respect to the
+/// hand-over parameters: how an error in those moves the solution, and how much of it
+/// is left in the residuals.
+fn handover_coupling<T: Real>(
+    model: &Stage2Model<T>,
+    layout: &Layout,
+    poses: &[PoseReading<T>],
+    x: &[T; MAX_PARAMS],
+) -> (
+    [[T; HANDOVER_PARAMS]; MAX_PARAMS],
+    [[T; HANDOVER_PARAMS]; HANDOVER_PARAMS],
+) {
+    let estimate = Estimate::from_slots(layout, x);
+    let pass = model.pass(&estimate);
+    let n = layout.len();
+    let mut coupling = [[T::zero(); HANDOVER_PARAMS]; MAX_PARAMS];
+    let mut model_info = [[T::zero(); HANDOVER_PARAMS]; HANDOVER_PARAMS];
+    for pose in poses {
+        let p = model.predict_rows(&pass, layout, &estimate, pose, true);
+        for (row, jm) in p.rows.iter().zip(&p.handover_rows) {
+            for (i, c) in coupling.iter_mut().enumerate().take(n) {
+                for (cj, &m) in c.iter_mut().zip(jm) {
+                    *cj += row[i] * m;
+                }
+            }
+            for (mi, &a) in model_info.iter_mut().zip(jm) {
+                for (mij, &b) in mi.iter_mut().zip(jm) {
+                    *mij += a * b;
+                }
+            }
+        }
+    }
+    (coupling, model_info)
+}
+
+/// Identifies Δθ3..Δθ6 and the extra terms `config.extras` asks for.
 ///
 /// # Errors
 /// Too few poses; a non-finite joint or reading, or a reading out of range (with the
-/// pose index); a rank-deficient or ill-conditioned pose set (naming the parameters);
-/// no convergence; a non-finite intermediate.
+/// pose index); a rank-deficient or ill-conditioned pose set (naming the parameters,
+/// the extra terms included); no convergence; a non-finite intermediate.
 pub fn fit<T: Real>(
     model: &Stage2Model<T>,
     poses: &[PoseReading<T>],
     config: &FitConfig<T>,
 ) -> Result<FitResult<T>, FitError> {
     check_poses(poses, config.sensor_range_rad)?;
-    let mut p = Vector4::from(config.initial_offsets_rad);
-    let (mut info, mut cost) = model.linearise(pairs(poses), &p.into());
-    check_conditioning(&info, config.max_condition_number)?;
+    let layout = config.extras.layout();
+    check_layout(model, &layout, poses)?;
+    let n = layout.len();
+    let mut x = [T::zero(); MAX_PARAMS];
+    x[..WRIST_JOINTS].copy_from_slice(&config.initial_offsets_rad);
+    let (mut info, mut cost, mut worst) = linearise(model, &layout, poses, &x, true);
+    check_conditioning(&info, &layout, config.max_condition_number)?;
 
     let mut lambda = T::zero();
     let mut iterations = 0;
@@ -346,31 +323,39 @@ pub fn fit<T: Real>(
     while iterations < config.max_iterations {
         iterations += 1;
         let step = info.step(lambda).ok_or(FitError::NonFiniteResult)?;
-        if !step.iter().all(|s| s.is_finite()) {
+        if !step.iter().take(n).all(|s| s.is_finite()) {
             return Err(FitError::NonFiniteResult);
         }
-        let size = max_abs(&step);
+        // Convergence is judged on the angles (the offsets); the other terms are
+        // dimensionless or per metre, and follow them.
+        let size = step[..WRIST_JOINTS]
+            .iter()
+            .fold(T::zero(), |m, s| m.max(s.abs()));
         let small = size < T::STEP_TOLERANCE_RAD;
-        let candidate = p + step;
-        let (cand_info, cand_cost) = model.linearise(pairs(poses), &candidate.into());
+        let mut candidate = x;
+        for (c, s) in candidate.iter_mut().zip(&step).take(n) {
+            *c += *s;
+        }
+        let (cand_info, cand_cost, cand_worst) = linearise(model, &layout, poses, &candidate, true);
         // Below LOCAL_STEP_RAD the linearisation error (∝ δ²) is far under the noise, so
         // the Gauss-Newton step is trusted as it is: there the cost's own rounding noise
         // (~1e-3 relative in f32) would otherwise reject genuine steps and stall the
         // fit short of the minimum.
         let local = size < T::lit(LOCAL_STEP_RAD);
         if cand_cost.is_finite() && (local || cand_cost <= cost * slack) {
-            p = candidate;
+            x = candidate;
             info = cand_info;
             cost = cand_cost;
+            worst = cand_worst;
             lambda /= T::lit(10.0);
             if lambda < T::EPSILON {
                 lambda = T::zero();
             }
         } else {
             // Gauss-Newton overshot: damp towards gradient descent. The scale is that of
-            // JᵀJ's diagonal (trace/4 = ‖R‖²/4).
+            // JᵀJ's diagonal (trace/n = ‖R‖²/n).
             lambda = if lambda == T::zero() {
-                T::lit(1e-3) * info.r.norm_squared() / T::lit(4.0)
+                T::lit(1e-3) * info.norm_squared() / T::lit(n as f64)
             } else {
                 lambda * T::lit(10.0)
             };
@@ -384,55 +369,126 @@ pub fn fit<T: Real>(
         return Err(FitError::NoConvergence { iterations });
     }
 
-    let condition_number = check_conditioning(&info, config.max_condition_number)?;
-    let offsets_rad: [T; WRIST_JOINTS] = p.into();
-    let r_inv = info.r_inverse().ok_or(FitError::NonFiniteResult)?;
-    // (JᵀJ)⁻¹ = R⁻¹R⁻ᵀ.
-    let inv = r_inv * r_inv.transpose();
+    let condition_number = check_conditioning(&info, &layout, config.max_condition_number)?;
+    let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
 
-    // Errors δm in the model parameters (variance σ²·D) move the solution by S·δm,
+    // Errors δm in the hand-over parameters (variance σ²·D) move the solution by S·δm,
     // S = −(JᵀJ)⁻¹·JᵀJ_m, and leave J_mᵀ(I−P)J_m of themselves in the residuals, so
-    // E[cost] = σ²·(2N − 4 + tr(D·J_mᵀ(I−P)J_m)): without that term σ from the
+    // E[cost] = σ²·(2N − n + tr(D·J_mᵀ(I−P)J_m)): without that term σ from the
     // residuals would come out ~20 % high in a real session.
-    let d = Matrix4::from_fn(|r, c| config.model_covariance[r][c]);
-    let (sensitivity, extra_dof) = if d.iter().any(|v| *v != T::zero()) {
-        let (coupling, model_info) = model.model_coupling(poses, &offsets_rad);
-        let s = -(inv * coupling);
-        let left = model_info + coupling.transpose() * s;
-        // tr(D·left).
-        (s, (d * left).trace())
-    } else {
-        (Matrix4::zeros(), T::zero())
-    };
-    // σ⁻²·Cov(Δθ) = (JᵀJ)⁻¹ + S·D·Sᵀ.
-    let unit_covariance = inv + sensitivity * d * sensitivity.transpose();
+    let d = config.model_covariance;
+    let any_d = d.iter().flatten().any(|v| *v != T::zero());
+    let mut sensitivity = [[T::zero(); HANDOVER_PARAMS]; MAX_PARAMS];
+    let mut extra_dof = T::zero();
+    if any_d {
+        let (coupling, model_info) = handover_coupling(model, &layout, poses, &x);
+        for (i, s) in sensitivity.iter_mut().enumerate().take(n) {
+            for (m, sm) in s.iter_mut().enumerate() {
+                let mut acc = T::zero();
+                for (k, ck) in coupling.iter().enumerate().take(n) {
+                    acc += inv.m[i][k] * ck[m];
+                }
+                *sm = -acc;
+            }
+        }
+        // left = J_mᵀJ_m + (JᵀJ_m)ᵀ·S, then tr(D·left).
+        for a in 0..HANDOVER_PARAMS {
+            for b in 0..HANDOVER_PARAMS {
+                let mut left = model_info[a][b];
+                for (ck, sk) in coupling.iter().zip(&sensitivity).take(n) {
+                    left += ck[a] * sk[b];
+                }
+                extra_dof += d[b][a] * left;
+            }
+        }
+    }
+    // σ⁻²·Cov = (JᵀJ)⁻¹ + S·D·Sᵀ over the slots.
+    let mut unit_cov = inv;
+    if any_d {
+        for i in 0..n {
+            for j in 0..n {
+                let mut acc = T::zero();
+                for a in 0..HANDOVER_PARAMS {
+                    for b in 0..HANDOVER_PARAMS {
+                        acc += sensitivity[i][a] * d[a][b] * sensitivity[j][b];
+                    }
+                }
+                unit_cov.m[i][j] += acc;
+            }
+        }
+    }
+    finish(
+        &layout,
+        &x,
+        &inv,
+        &unit_cov,
+        &sensitivity,
+        Summary {
+            cost,
+            worst,
+            extra_dof,
+            iterations,
+            condition_number,
+            poses: poses.len(),
+        },
+        config,
+    )
+}
 
-    let n_readings = 2 * poses.len();
-    let residual_rms_rad = (cost / T::lit(n_readings as f64)).sqrt();
-    let dof = n_readings - WRIST_JOINTS;
+/// The statistics a finished fit reports besides the covariance.
+struct Summary<T> {
+    cost: T,
+    worst: (T, usize),
+    extra_dof: T,
+    iterations: u32,
+    condition_number: T,
+    poses: usize,
+}
+
+/// σ from the residuals (or the sensor's figure), and the result in physical form.
+fn finish<T: Real>(
+    layout: &Layout,
+    x: &[T; MAX_PARAMS],
+    inv: &Square<T, MAX_PARAMS>,
+    unit_cov: &Square<T, MAX_PARAMS>,
+    sensitivity: &[[T; HANDOVER_PARAMS]; MAX_PARAMS],
+    s: Summary<T>,
+    config: &FitConfig<T>,
+) -> Result<FitResult<T>, FitError> {
+    let n = layout.len();
+    let n_readings = 2 * s.poses;
+    let residual_rms_rad = (s.cost / T::lit(n_readings as f64)).sqrt();
+    let dof = n_readings.saturating_sub(n);
     let (noise_sigma_rad, sigma_source) = if dof >= config.min_residual_dof {
         (
-            (cost / (T::lit(dof as f64) + extra_dof)).sqrt(),
+            (s.cost / (T::lit(dof as f64) + s.extra_dof)).sqrt(),
             SigmaSource::Residuals,
         )
     } else {
         (config.sensor_noise_rad, SigmaSource::SensorNoise)
     };
-    let mut sigma_rad = [T::zero(); WRIST_JOINTS];
-    let mut sigma_stage2_rad = [T::zero(); WRIST_JOINTS];
-    for k in 0..WRIST_JOINTS {
-        sigma_stage2_rad[k] = inv[(k, k)].sqrt() * noise_sigma_rad;
-        // A covariance is positive semi-definite; max() only guards rounding.
-        sigma_rad[k] = unit_covariance[(k, k)].max(T::zero()).sqrt() * noise_sigma_rad;
-    }
     let variance = noise_sigma_rad * noise_sigma_rad;
+    let mut values = [T::zero(); MAX_PARAMS];
+    let mut sigmas = [T::zero(); MAX_PARAMS];
+    let mut estimated = ParamSet::default();
+    for (slot, p) in layout.params().iter().enumerate() {
+        values[p.index()] = x[slot];
+        // A covariance is positive semi-definite; max() only guards rounding.
+        sigmas[p.index()] = (unit_cov.m[slot][slot].max(T::zero()) * variance).sqrt();
+        estimated = estimated.with(p.index());
+    }
+    let mut offsets_rad = [T::zero(); WRIST_JOINTS];
+    offsets_rad.copy_from_slice(&x[..WRIST_JOINTS]);
+    let sigma_rad: [T; WRIST_JOINTS] = core::array::from_fn(|k| sigmas[k]);
+    let sigma_stage2_rad: [T; WRIST_JOINTS] =
+        core::array::from_fn(|k| (inv.m[k][k].max(T::zero()) * variance).sqrt());
     let covariance_rad2: [[T; WRIST_JOINTS]; WRIST_JOINTS] =
-        core::array::from_fn(|r| core::array::from_fn(|c| unit_covariance[(r, c)] * variance));
-    let model_sensitivity: [[T; 4]; WRIST_JOINTS] =
-        core::array::from_fn(|r| core::array::from_fn(|c| sensitivity[(r, c)]));
-    let all_finite = offsets_rad
+        core::array::from_fn(|r| core::array::from_fn(|c| unit_cov.m[r][c] * variance));
+    let model_sensitivity: [[T; HANDOVER_PARAMS]; WRIST_JOINTS] =
+        core::array::from_fn(|r| sensitivity[r]);
+    let all_finite = values
         .iter()
-        .chain(&sigma_rad)
+        .chain(&sigmas)
         .chain(covariance_rad2.iter().flatten())
         .all(|v| v.is_finite())
         && residual_rms_rad.is_finite();
@@ -445,12 +501,16 @@ pub fn fit<T: Real>(
         sigma_stage2_rad,
         covariance_rad2,
         model_sensitivity,
+        values,
+        sigmas,
+        estimated,
         residual_rms_rad,
+        worst_residual: s.worst,
         noise_sigma_rad,
         sigma_source,
-        iterations,
-        condition_number,
-        poses: poses.len(),
+        iterations: s.iterations,
+        condition_number: s.condition_number,
+        poses: s.poses,
     })
 }
 
@@ -465,138 +525,40 @@ pub fn single_linearised_step<T: Real>(
     config: &FitConfig<T>,
 ) -> Result<[T; WRIST_JOINTS], FitError> {
     check_poses(poses, config.sensor_range_rad)?;
-    let (info, _) = model.linearise(pairs(poses), &[T::zero(); WRIST_JOINTS]);
-    check_conditioning(&info, config.max_condition_number)?;
-    info.step(T::zero())
-        .map(Into::into)
-        .ok_or(FitError::NonFiniteResult)
+    let layout = Extras::NONE.layout();
+    let (info, _, _) = linearise(model, &layout, poses, &[T::zero(); MAX_PARAMS], true);
+    check_conditioning(&info, &layout, config.max_condition_number)?;
+    let step = info.step(T::zero()).ok_or(FitError::NonFiniteResult)?;
+    Ok(core::array::from_fn(|k| step[k]))
+}
+
+/// J of commanded poses at the given offsets (zero when planning: none are known yet),
+/// no readings needed.
+pub fn information<T: Real>(
+    model: &Stage2Model<T>,
+    extras: Extras,
+    joints_rad: &[[T; JOINTS]],
+    offsets_rad: &[T; WRIST_JOINTS],
+) -> Information<T> {
+    let layout = extras.layout();
+    let poses = joints_rad.iter().map(|q| PoseReading {
+        joints_rad: *q,
+        reading: Tilt::default(),
+        temperature_c: None,
+    });
+    let estimate = Estimate {
+        offsets_rad: *offsets_rad,
+        ..Estimate::default()
+    };
+    let pass = model.pass(&estimate);
+    let mut info = Information::new(layout.len());
+    for pose in poses {
+        let p = model.predict_rows(&pass, &layout, &estimate, &pose, false);
+        info.add_row(&p.rows[0], T::zero());
+        info.add_row(&p.rows[1], T::zero());
+    }
+    info
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::model::{rotation_from_rpy_deg, Convention, JointAxis};
-
-    fn model(conv: Convention) -> Stage2Model<f64> {
-        let mut chain = WristChain::paper();
-        chain.fixed[1] = rotation_from_rpy_deg(0.0, 0.0, 30.0);
-        chain.axes[2] = JointAxis::NegZ;
-        Stage2Model {
-            chain,
-            base_tilt: BaseTilt::from_deg(0.3, -0.5),
-            sensor: SensorModel {
-                convention: conv,
-                bias: Tilt::from_deg(0.01, -0.02),
-            },
-        }
-    }
-
-    #[test]
-    fn analytic_jacobian_matches_central_differences() {
-        for conv in [Convention::Rpy, Convention::Axis] {
-            let m = model(conv);
-            let q = [0.3, -0.2, 0.5, 1.1];
-            let off = [0.01, -0.02, 0.03, 0.04];
-            let (_, rows) = m.predict_with_jacobian(
-                &m.chain.fixed_in_use(),
-                &m.base_tilt.up_in_base(),
-                &q,
-                &off.map(|d: f64| d.sin_cos()),
-            );
-            for k in 0..4 {
-                let h = 1e-6;
-                let mut op = off;
-                op[k] += h;
-                let mut om = off;
-                om[k] -= h;
-                let d = m.predict(&q, &op).minus(&m.predict(&q, &om));
-                // Central differences are O(h²) ≈ 1e-12; rounding adds ε/h ≈ 1e-10.
-                assert!(
-                    (d.x_rad / (2.0 * h) - rows[0][k]).abs() < 1e-8,
-                    "{conv:?} x{k}"
-                );
-                assert!(
-                    (d.y_rad / (2.0 * h) - rows[1][k]).abs() < 1e-8,
-                    "{conv:?} y{k}"
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn givens_factor_reproduces_normal_equations() {
-        let mut info = Information::<f64>::default();
-        let rows = [
-            [1.0, 2.0, 0.0, -1.0],
-            [0.5, -1.0, 3.0, 0.0],
-            [0.0, 0.3, 1.0, 2.0],
-            [2.0, 0.0, -1.0, 1.0],
-            [1.0, 1.0, 1.0, 1.0],
-        ];
-        let mut ata = Matrix4::zeros();
-        for r in rows {
-            let v = Vector4::from(r);
-            ata += v * v.transpose();
-            info.add_row(v, 1.0);
-        }
-        assert!((info.matrix() - ata).norm() < 1e-12);
-    }
-}
-
-#[cfg(test)]
-mod properties {
-    //! Invariants of the fit on noiseless data from the model itself.
-    use super::*;
-    use crate::model::{Convention, SensorModel};
-    use proptest::prelude::*;
-
-    proptest! {
-        #![proptest_config(ProptestConfig::with_cases(64))]
-        /// Whatever the offsets (to ±10°), tilt, bias and well-spread poses, noiseless
-        /// readings are fitted exactly, with zero residual, in either precision.
-        #[test]
-        fn noiseless_data_are_fitted_exactly(
-            offsets in prop::array::uniform4(-0.17..0.17f64),
-            alpha in -0.02..0.02f64, beta in -0.02..0.02f64,
-            bias in (-0.002..0.002f64, -0.002..0.002f64),
-            axis_conv in any::<bool>(),
-            joints in prop::collection::vec(prop::array::uniform4(-0.6..0.6f64), 12),
-        ) {
-            let model = Stage2Model {
-                chain: WristChain::paper(),
-                base_tilt: BaseTilt { alpha_rad: alpha, beta_rad: beta },
-                sensor: SensorModel {
-                    convention: if axis_conv { Convention::Axis } else { Convention::Rpy },
-                    bias: Tilt::new(bias.0, bias.1),
-                },
-            };
-            let poses: heapless::Vec<PoseReading<f64>, 12> = joints
-                .iter()
-                .map(|q| PoseReading { joints_rad: *q, reading: model.predict(q, &offsets) })
-                .collect();
-            // The range check has its own tests; here any reading goes.
-            let config = FitConfig { sensor_range_rad: 4.0, ..FitConfig::default() };
-            let bound = covariance_bound(&model, joints.iter(), &offsets, 1e-5);
-            let r = fit(&model, &poses, &config);
-            match bound {
-                // Well separated at the truth (with room for the iteration's start at
-                // zero): the fit must give the numbers, exactly.
-                Ok(b) if b.condition_number < 300.0 => {
-                    let r = r.map_err(|e| TestCaseError::fail(format!("{e}")))?;
-                    for (found, truth) in r.offsets_rad.iter().zip(offsets) {
-                        prop_assert!((found - truth).abs() < 1e-11, "{r:?}");
-                    }
-                    prop_assert!(r.residual_rms_rad < 1e-12);
-                }
-                // Weak sets may go either way, but never to wrong numbers.
-                _ => {
-                    if let Ok(r) = r {
-                        for (found, truth) in r.offsets_rad.iter().zip(offsets) {
-                            prop_assert!((found - truth).abs() < 1e-9, "{r:?}");
-                        }
-                    }
-                }
-            }
-        }
-    }
-}
+mod tests;

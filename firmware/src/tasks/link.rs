@@ -253,7 +253,7 @@ async fn answer(
             .await
         }
         Command::PlanSet => {
-            *upload = Some(PlanUpload::new());
+            *upload = Some(PlanUpload::new([0.0; 2]));
             write_line(
                 class,
                 b"ok: send poses as j3,j4,j5,j6 in degrees, one a line, then 'end'",

@@ -86,7 +86,14 @@ pub async fn procedure_task() -> ! {
                 // wrapping differences.
                 let t_ms = Instant::now().as_millis() as u32;
                 let reading = Tilt::new(x_rad, y_rad);
-                (Source::Sensor, Event::Sample { t_ms, reading })
+                (
+                    Source::Sensor,
+                    Event::Sample {
+                        t_ms,
+                        reading,
+                        temperature_c: None,
+                    },
+                )
             }
             Either3::First(SensorReport::Fault(fault)) => {
                 extras.fault = Some(fault);

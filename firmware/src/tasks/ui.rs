@@ -250,7 +250,7 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
             )),
             StageError::InconsistentReading => fixed("! redo: x/y mismatch"),
             StageError::NonFiniteReading => fixed("! redo: bad reading"),
-            StageError::BadDirectionSign | StageError::NonFiniteCommand => {
+            StageError::Unresolvable | StageError::NonFiniteCommand => {
                 fixed("! config: j2 setting")
             }
         },

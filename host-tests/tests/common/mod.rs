@@ -2,7 +2,7 @@
 #![allow(dead_code)] // each test binary uses its own subset
 
 use zerocal_core::model::{Convention, SensorModel, Tilt, WRIST_JOINTS};
-use zerocal_core::stage2::{covariance_bound, PoseReading, Stage2Model};
+use zerocal_core::stage2::{covariance_bound, Extras, PoseReading, Stage2Model};
 use zerocal_sim::{Noise, PoseSampler, SimInclinometer, SimRobot};
 
 /// Draws `n` poses and reads them.
@@ -18,16 +18,19 @@ pub fn read_poses(
         .map(|q| PoseReading {
             joints_rad: *q,
             reading: sensor.read(&robot.flange_orientation(q)),
+            temperature_c: None,
         })
         .collect()
 }
 
-/// The stage-2 model that knows the truth's base tilt and bias.
+/// The stage-2 model that knows the truth's base tilt, Δθ2 and bias.
 pub fn true_model(robot: &SimRobot, convention: Convention, bias: Tilt<f64>) -> Stage2Model<f64> {
     Stage2Model {
-        chain: robot.chain,
+        arm: robot.arm,
         base_tilt: robot.base_tilt,
-        sensor: SensorModel { convention, bias },
+        delta_theta2_rad: robot.delta_theta2_rad(),
+        sensor: SensorModel::new(convention, bias),
+        ..Stage2Model::default()
     }
 }
 
@@ -47,6 +50,7 @@ pub fn to_f32(p: &PoseReading<f64>) -> PoseReading<f32> {
     PoseReading {
         joints_rad: p.joints_rad.map(|q| q as f32),
         reading: Tilt::new(p.reading.x_rad as f32, p.reading.y_rad as f32),
+        temperature_c: p.temperature_c.map(|c| c as f32),
     }
 }
 
@@ -57,13 +61,9 @@ pub fn bound_deg(
     truth_rad: &[f64; WRIST_JOINTS],
     sigma_rad: f64,
 ) -> [f64; WRIST_JOINTS] {
-    covariance_bound(
-        model,
-        poses.iter().map(|p| &p.joints_rad),
-        truth_rad,
-        sigma_rad,
-    )
-    .expect("an informative pose set")
-    .sigma_rad
-    .map(f64::to_degrees)
+    let joints: Vec<[f64; 6]> = poses.iter().map(|p| p.joints_rad).collect();
+    covariance_bound(model, Extras::NONE, &joints, truth_rad, sigma_rad)
+        .expect("an informative pose set")
+        .sigma_rad
+        .map(f64::to_degrees)
 }

@@ -32,9 +32,16 @@ use vectors::{render_vectors, simulated_cases};
 pub const TOLERANCE_DEG: f64 = 2e-5;
 
 /// What the pendant's CPU may spend. Exceeding any of them fails the check.
+///
+/// The fit's budgets are regression guards, not limits of the part: a million
+/// instructions is 10 ms at the F411's 100 MHz (the operator waits seconds per
+/// capture), and 12 KiB is an eighth of the stack the static RAM leaves. They were
+/// raised from 600,000 and 8 KiB when the fit became the general six-joint model
+/// (frames per pose, up to 13 parameters, the hand-over sensitivity): 763k and
+/// 8.9 KiB measured then.
 pub const BUDGETS: Figures = Figures {
-    solve_instructions: 600_000,
-    solve_stack_bytes: 8 * 1024,
+    solve_instructions: 1_000_000,
+    solve_stack_bytes: 12 * 1024,
     flash_bytes: 128 * 1024,
     static_ram_bytes: 32 * 1024,
 };

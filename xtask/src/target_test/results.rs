@@ -6,7 +6,7 @@ use std::fmt;
 
 use anyhow::{bail, Result};
 use zerocal_core::error::Terse;
-use zerocal_core::model::{Tilt, WristChain};
+use zerocal_core::model::{Arm, Tilt};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::{self, BiasSource, SessionError, SessionReadings};
 use zerocal_core::stage0::Reversal;
@@ -43,11 +43,13 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
             .map(|p| PoseReading {
                 joints_rad: p.joints_rad.map(f64::from),
                 reading: tilt(&p.reading),
+                temperature_c: None,
             })
             .collect();
         let readings = SessionReadings {
             convention: case.convention,
-            chain: WristChain::paper(),
+            arm: Arm::paper_with_j2_direction(case.j2_direction),
+            masses: None,
             bias: match &case.bias {
                 BiasSource::Reversal(r) => BiasSource::Reversal(Reversal {
                     first: tilt(&r.first),
@@ -59,10 +61,9 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
             stage1: AxisOneTurn {
                 before: tilt(&case.stage1.before),
                 after: tilt(&case.stage1.after),
-                commanded_j2_rad: f64::from(case.stage1.commanded_j2_rad),
-                j2_direction: case.stage1.j2_direction,
+                j1_rad: f64::from(case.stage1.j1_rad),
+                j2_rad: f64::from(case.stage1.j2_rad),
             },
-            j2_change_rad: 0.0,
             poses: &poses,
         };
         let outcome = session::solve(&readings, &FitConfig::default());

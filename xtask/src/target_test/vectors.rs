@@ -24,6 +24,8 @@ pub(super) struct Case {
     pub(super) convention: Convention,
     pub(super) bias: BiasSource<f32>,
     pub(super) stage1: AxisOneTurn<f32>,
+    /// The paper robot's joint-2 direction (its arm is `Arm::paper_with_j2_direction`).
+    pub(super) j2_direction: i8,
     pub(super) poses: Vec<PoseReading<f32>>,
     /// The fit's refusal this case is built to provoke, if any.
     pub(super) expected_error: Option<&'static str>,
@@ -34,10 +36,9 @@ pub(super) struct Case {
 pub(super) fn simulated_cases() -> Result<Vec<Case>> {
     let table4 = SimRobot::paper(Table4::OFFSETS_DEG, (0.0, 0.0));
     let mut offsets5 = SimRobot::paper([5.0, -5.0, 5.0, -5.0], (0.3, -0.5));
-    offsets5.delta_theta2_rad = deg_to_rad(5.0);
-    let mut axis_tilt = SimRobot::paper(Table4::OFFSETS_DEG, (0.3, -0.5));
-    axis_tilt.delta_theta2_rad = deg_to_rad(-0.08);
-    axis_tilt.j2_direction = -1;
+    offsets5.offsets_rad[1] = deg_to_rad(5.0);
+    let mut axis_tilt = SimRobot::paper(Table4::OFFSETS_DEG, (0.3, -0.5)).with_j2_direction(-1);
+    axis_tilt.offsets_rad[1] = deg_to_rad(-0.08);
 
     let rpy = SessionConfig::default();
     let axis = SessionConfig {
@@ -111,6 +112,7 @@ fn degenerate_case(robot: SimRobot, config: &SessionConfig, seed: u64) -> Result
     let mut sampler = PoseSampler::symmetric(config.joint_range_deg, config.window_deg, seed);
     sampler.limits_rad[1] = (0.0, 0.0);
     sampler.limits_rad[3] = (0.0, 0.0);
+    sampler.fixed_joints_rad = [session.stage1.j1_rad, session.stage1.j2_rad];
     let joints = sampler
         .sample(&session.robot, &sensor, config.poses)
         .map_err(|e| anyhow!("sampling the {DEGENERATE_CASE} poses: {e:?}"))?;
@@ -119,6 +121,7 @@ fn degenerate_case(robot: SimRobot, config: &SessionConfig, seed: u64) -> Result
         .map(|q| PoseReading {
             joints_rad: *q,
             reading: sensor.read(&session.robot.flange_orientation(q)),
+            temperature_c: None,
         })
         .collect();
     Ok(to_case(DEGENERATE_CASE, &session, Some(DEGENERATE_ERROR)))
@@ -139,8 +142,13 @@ fn to_case(name: &'static str, s: &SimSession, expected_error: Option<&'static s
         stage1: AxisOneTurn {
             before: tilt(&s.stage1.before),
             after: tilt(&s.stage1.after),
-            commanded_j2_rad: s.stage1.commanded_j2_rad as f32,
-            j2_direction: s.stage1.j2_direction,
+            j1_rad: s.stage1.j1_rad as f32,
+            j2_rad: s.stage1.j2_rad as f32,
+        },
+        j2_direction: if s.robot.arm.joints[1].axis == zerocal_core::model::JointAxis::NegX {
+            -1
+        } else {
+            1
         },
         poses: s
             .poses
@@ -148,6 +156,7 @@ fn to_case(name: &'static str, s: &SimSession, expected_error: Option<&'static s
             .map(|p| PoseReading {
                 joints_rad: p.joints_rad.map(|q| q as f32),
                 reading: tilt(&p.reading),
+                temperature_c: None,
             })
             .collect(),
         expected_error,
@@ -181,7 +190,7 @@ pub(super) fn render_vectors(cases: &[Case]) -> Result<String> {
                 .collect::<Result<Vec<_>>>()?;
             let _ = writeln!(
                 out,
-                "    PoseReading {{ joints_rad: [{}], reading: {} }},",
+                "    PoseReading {{ joints_rad: [{}], reading: {}, temperature_c: None }},",
                 joints.join(", "),
                 tilt_literal(&p.reading)?
             );
@@ -210,13 +219,14 @@ pub(super) fn render_vectors(cases: &[Case]) -> Result<String> {
         let _ = writeln!(
             out,
             "    Case {{\n        name: {:?},\n        convention: {convention},\n        bias: {bias},\n        \
-             stage1: AxisOneTurn {{ before: {}, after: {}, commanded_j2_rad: {}, j2_direction: {} }},\n        \
-             poses: &POSES_{i},\n    }},",
+             stage1: AxisOneTurn {{ before: {}, after: {}, j1_rad: {}, j2_rad: {} }},\n        \
+             j2_direction: {},\n        poses: &POSES_{i},\n    }},",
             case.name,
             tilt_literal(&case.stage1.before)?,
             tilt_literal(&case.stage1.after)?,
-            literal(case.stage1.commanded_j2_rad)?,
-            case.stage1.j2_direction,
+            literal(case.stage1.j1_rad)?,
+            literal(case.stage1.j2_rad)?,
+            case.j2_direction,
         );
     }
     out.push_str("];\n");

@@ -1,0 +1,366 @@
+//! `zerocal session EXPORT`: a whole pendant export (stages 0, 1 and 2 with all six
+//! joints and the `#` metadata) through core's session solver, reported with the
+//! covariance of Δθ2..Δθ6, each stage's share of each variance, and the offsets in the
+//! robot controller's own terms.
+//!
+//! Everything comes from the file: the robot, the convention, stage 0's bias and
+//! stage 1's readings with the joints they were taken at. Nothing is retyped, so the
+//! hand-over cannot be got wrong (METHOD.md: stage 1's tilt composes with joint 2's
+//! recorded angle).
+
+use crate::error::CliError;
+use crate::log::parse_number;
+use clap::Args;
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use zerocal_core::log::{parse_meta, LogLine, LogReader, MetaItem};
+use zerocal_core::model::{Convention, JOINTS};
+use zerocal_core::report::Verdict;
+use zerocal_core::session::{
+    solve, BiasSource, SessionError, SessionReadings, SessionSolution, SESSION_JOINTS,
+};
+use zerocal_core::stage1::AxisOneTurn;
+use zerocal_core::stage2::{FitConfig, PoseReading};
+use zerocal_core::Tilt;
+use zerocal_profile::Profile;
+
+/// Arguments of `zerocal session`.
+#[derive(Args, Debug, Clone)]
+pub struct SessionArgs {
+    /// The pendant's export (its `export` command's output, saved to a file).
+    pub export: PathBuf,
+    /// Robot profile, if not the one the export names: a built-in name or a TOML file.
+    #[arg(long, value_name = "NAME")]
+    pub robot: Option<String>,
+    /// Print one JSON object instead of the report.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// What the export holds.
+#[derive(Clone, Debug)]
+pub struct Export {
+    /// `# robot` (the name) and the convention.
+    pub robot: Option<(String, Convention)>,
+    /// `# stage0_bias_deg`: `Some(None)` for "none".
+    pub bias: Option<Option<Tilt<f64>>>,
+    /// `# stage1_readings_deg`.
+    pub stage1: Option<Option<AxisOneTurn<f64>>>,
+    /// The stage-2 rows.
+    pub poses: Vec<PoseReading<f64>>,
+    /// Their lines.
+    pub lines: Vec<usize>,
+}
+
+/// Reads a pendant export.
+///
+/// # Errors
+/// A malformed row or metadata line (naming the line).
+pub fn read_export(text: &str) -> Result<Export, String> {
+    let mut reader = LogReader::new();
+    let mut export = Export {
+        robot: None,
+        bias: None,
+        stage1: None,
+        poses: Vec::new(),
+        lines: Vec::new(),
+    };
+    for line in text.lines() {
+        match reader.feed(line, parse_number).map_err(|e| e.to_string())? {
+            LogLine::Pose(p) => {
+                export.poses.push(p);
+                export.lines.push(reader.line());
+            }
+            LogLine::Comment(c) => {
+                match parse_meta::<f64>(c, reader.line(), parse_number)
+                    .map_err(|e| e.to_string())?
+                {
+                    Some(MetaItem::Robot(name, conv)) => {
+                        export.robot = Some((name.as_str().to_owned(), conv));
+                    }
+                    Some(MetaItem::Bias(b)) => export.bias = Some(b),
+                    Some(MetaItem::Stage1(s)) => export.stage1 = Some(s),
+                    None => {}
+                }
+            }
+            LogLine::Blank | LogLine::Header => {}
+        }
+    }
+    reader.finish().map_err(|e| e.to_string())?;
+    Ok(export)
+}
+
+/// One joint in the `--json` output.
+#[derive(Serialize, Debug)]
+pub struct JointJson {
+    /// The controller's name for the joint.
+    pub name: String,
+    /// Δθ in the model's terms (deg).
+    pub offset_deg: f64,
+    /// Its 1σ (deg).
+    pub sigma_deg: f64,
+    /// Δq in the controller's joint terms (deg): true − commanded as it shows the joint.
+    pub controller_offset_deg: f64,
+    /// Its 1σ (deg).
+    pub controller_sigma_deg: f64,
+    /// Δq in the controller's offset unit, where the profile has the scale.
+    pub controller_offset_in_unit: Option<f64>,
+    /// The unit.
+    pub controller_unit: &'static str,
+    /// Why `controller_offset_in_unit` is absent.
+    pub controller_unit_missing: Option<&'static str>,
+    /// Shares of the variance from stage 0, 1 and 2 (fractions).
+    pub variance_shares: [f64; 3],
+    /// The URDF form: `<calibration rising="…"/>` in radians (model terms; see
+    /// docs/controllers/urdf.md for what tools read it).
+    pub urdf_calibration_rising_rad: f64,
+}
+
+/// The `--json` output.
+#[derive(Serialize, Debug)]
+pub struct SessionJson {
+    /// Robot profile.
+    pub robot: String,
+    /// Its controller family.
+    pub family: &'static str,
+    /// Where the controller keeps its zeros (the profile's `offset_where`).
+    pub controller_offset_where: String,
+    /// Δθ2..Δθ6.
+    pub joints: Vec<JointJson>,
+    /// Correlations of Δθ2..Δθ6 (row-major, 5×5).
+    pub correlations: Vec<[f64; SESSION_JOINTS]>,
+    /// Base tilt α, β (deg).
+    pub base_tilt_deg: [f64; 2],
+    /// Stage-2 residual RMS (deg).
+    pub residual_rms_deg: f64,
+    /// Poses fitted.
+    pub poses: usize,
+    /// Condition number.
+    pub condition_number: f64,
+    /// Pass: no warnings.
+    pub pass: bool,
+    /// Every warning.
+    pub warnings: Vec<String>,
+    /// Every note (what was assumed, what the profile lacks).
+    pub notes: Vec<String>,
+}
+
+/// Runs `zerocal session`.
+///
+/// # Errors
+/// An unreadable or malformed export, an unknown robot (status 2); a session the solver
+/// refuses (status 3).
+pub fn run(args: &SessionArgs) -> Result<String, CliError> {
+    let text = std::fs::read_to_string(&args.export)
+        .map_err(|e| CliError::Input(format!("{}: {e}", args.export.display())))?;
+    let export = read_export(&text)
+        .map_err(|e| CliError::Input(format!("{}: {e}", args.export.display())))?;
+    let name = |what: &str| format!("{}: {what}", args.export.display());
+    let (robot_name, convention) = export.robot.clone().ok_or_else(|| {
+        CliError::Input(name(
+            "no `# robot … convention …` line: not a pendant export",
+        ))
+    })?;
+    let profile = crate::robot::load(args.robot.as_deref().unwrap_or(&robot_name))?;
+    let stage1 = export.stage1.flatten().ok_or_else(|| {
+        CliError::Refused(name("stage 1 was not completed (no stage-1 readings)"))
+    })?;
+    let bias = match export.bias.flatten() {
+        Some(b) => BiasSource::Stored(b),
+        None => BiasSource::Unknown,
+    };
+    let readings = SessionReadings {
+        convention,
+        arm: profile.arm,
+        masses: None,
+        bias,
+        stage1,
+        poses: &export.poses,
+    };
+    let config = FitConfig::<f64>::default();
+    let outcome = solve(&readings, &config);
+    let solution = outcome.result.map_err(|e| refused(e, &export))?;
+    let verdict = Verdict::judge(&solution.fit, &config, outcome.stage1.as_ref());
+    let mut notes = vec![format!(
+        "robot profile {} ({}), convention {}",
+        profile.name,
+        profile.title,
+        convention.name()
+    )];
+    if args.robot.as_deref().is_some_and(|r| r != robot_name) {
+        notes.push(format!(
+            "the export names {robot_name}; --robot {} was used instead",
+            profile.name
+        ));
+    }
+    notes.extend(profile.missing.iter().map(|m| format!("profile: {m}")));
+    let json = to_json(&profile, &solution, &verdict, notes);
+    if args.json {
+        return serde_json::to_string_pretty(&json).map_err(|e| CliError::Input(e.to_string()));
+    }
+    Ok(render(&json))
+}
+
+fn refused(e: SessionError, export: &Export) -> CliError {
+    let line = |pose: usize| export.lines.get(pose).copied().unwrap_or(0);
+    let msg = match e {
+        SessionError::Stage2(
+            f @ (zerocal_core::FitError::NonFiniteJoint { pose }
+            | zerocal_core::FitError::NonFiniteReading { pose }
+            | zerocal_core::FitError::ReadingOutOfRange { pose, .. }),
+        ) => format!("line {}: stage 2: {f}", line(pose)),
+        other => other.to_string(),
+    };
+    CliError::Refused(msg)
+}
+
+/// The whole result, in degrees and in the controller's terms.
+pub fn to_json(
+    profile: &Profile,
+    s: &SessionSolution<f64>,
+    verdict: &Verdict,
+    notes: Vec<String>,
+) -> SessionJson {
+    let mut delta = [0.0; JOINTS];
+    delta[1..].copy_from_slice(&s.offsets_rad);
+    let mut cov = [[0.0; JOINTS]; JOINTS];
+    for i in 0..SESSION_JOINTS {
+        for j in 0..SESSION_JOINTS {
+            cov[i + 1][j + 1] = s.covariance_rad2[i][j];
+        }
+    }
+    let controller = profile.controller.offsets(&delta, &cov);
+    let sigma = s.sigma_rad();
+    let joints = (0..SESSION_JOINTS)
+        .map(|k| {
+            let c = &controller[k + 1];
+            let shares = s.variance_shares_rad2[k];
+            let total: f64 = shares.iter().sum();
+            JointJson {
+                name: profile.joints[k + 1].name.clone(),
+                offset_deg: s.offsets_rad[k].to_degrees(),
+                sigma_deg: sigma[k].to_degrees(),
+                controller_offset_deg: c.shown_deg,
+                controller_sigma_deg: c.sigma_deg,
+                controller_offset_in_unit: c.in_unit,
+                controller_unit: profile.controller.unit.name(),
+                controller_unit_missing: c.no_unit_because,
+                variance_shares: shares.map(|v| if total > 0.0 { v / total } else { 0.0 }),
+                urdf_calibration_rising_rad: s.offsets_rad[k],
+            }
+        })
+        .collect();
+    let correlations = (0..SESSION_JOINTS)
+        .map(|i| {
+            core::array::from_fn(|j| {
+                let d = (s.covariance_rad2[i][i] * s.covariance_rad2[j][j]).sqrt();
+                if d > 0.0 {
+                    s.covariance_rad2[i][j] / d
+                } else {
+                    0.0
+                }
+            })
+        })
+        .collect();
+    SessionJson {
+        robot: profile.name.clone(),
+        family: profile.family.name(),
+        controller_offset_where: profile.controller.offset_where.clone(),
+        joints,
+        correlations,
+        base_tilt_deg: [
+            s.model.base_tilt.alpha_rad.to_degrees(),
+            s.model.base_tilt.beta_rad.to_degrees(),
+        ],
+        residual_rms_deg: s.fit.residual_rms_rad.to_degrees(),
+        poses: s.fit.poses,
+        condition_number: s.fit.condition_number,
+        pass: verdict.is_pass(),
+        warnings: verdict.warnings.iter().map(ToString::to_string).collect(),
+        notes,
+    }
+}
+
+/// The report as text.
+pub fn render(j: &SessionJson) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "zerocal session: {} poses, residual RMS {:.5} deg, condition number {:.1}",
+        j.poses, j.residual_rms_deg, j.condition_number
+    );
+    let _ = writeln!(
+        out,
+        "joint  offset_deg  1sigma_deg   variance from stage 0 / 1 / 2"
+    );
+    for (k, joint) in j.joints.iter().enumerate() {
+        let [a, b, c] = joint.variance_shares.map(|v| v * 100.0);
+        let _ = writeln!(
+            out,
+            "j{}     {:+.5}    {:.5}      {a:>3.0}% / {b:>3.0}% / {c:>3.0}%",
+            k + 2,
+            joint.offset_deg,
+            joint.sigma_deg
+        );
+    }
+    let mut strongest = (0.0f64, 0, 0);
+    for (i, row) in j.correlations.iter().enumerate() {
+        for (k, r) in row.iter().enumerate().skip(i + 1) {
+            if r.abs() > strongest.0.abs() {
+                strongest = (*r, i, k);
+            }
+        }
+    }
+    let _ = writeln!(
+        out,
+        "strongest correlation: j{} with j{} {:+.2}",
+        strongest.1 + 2,
+        strongest.2 + 2,
+        strongest.0
+    );
+    let _ = writeln!(
+        out,
+        "base tilt alpha {:+.5} deg, beta {:+.5} deg",
+        j.base_tilt_deg[0], j.base_tilt_deg[1]
+    );
+    let _ = writeln!(
+        out,
+        "\nin the controller's terms ({}; {}):",
+        j.family, j.controller_offset_where
+    );
+    let _ = writeln!(
+        out,
+        "joint   dq_deg (true - commanded, as the controller shows it)   in its unit"
+    );
+    for joint in &j.joints {
+        let unit = match (
+            joint.controller_offset_in_unit,
+            joint.controller_unit_missing,
+        ) {
+            (Some(v), _) => format!("{v:+.6} {}", joint.controller_unit),
+            (None, Some(why)) => format!("({why})"),
+            (None, None) => String::new(),
+        };
+        let _ = writeln!(
+            out,
+            "{:<6} {:+.5} +/- {:.5}   {unit}",
+            joint.name, joint.controller_offset_deg, joint.controller_sigma_deg
+        );
+    }
+    let _ = writeln!(
+        out,
+        "each joint's reading must move by +dq: docs/controllers/{}.md says where and with which sign",
+        j.family
+    );
+    if j.pass {
+        let _ = writeln!(out, "verdict: PASS");
+    }
+    for w in &j.warnings {
+        let _ = writeln!(out, "verdict: WARN {w}");
+    }
+    for n in &j.notes {
+        let _ = writeln!(out, "note: {n}");
+    }
+    out
+}

@@ -1,0 +1,329 @@
+//! Stage 2's model of a reading: the arm from the base to the flange pendant, with
+//! joints 1 and 2 where the pose recorded them (joint 2 corrected by stage 1's Δθ2),
+//! the base tilt composed as a rotation, joints 3-6 at their commanded angles plus the
+//! offsets (joint 3 also by the sag), and the sensor's gain, bias and drift.
+//!
+//! It gives the predicted reading and its derivatives with respect to every stage-2
+//! parameter ([`super::params::Param`]) and to every parameter stages 0-1 handed over
+//! (α, β, Δθ2, bias x, bias y), all analytic: the up vector and its partials are
+//! propagated through the chain ([`WristChain::up_and_partials_with`]).
+
+use super::information::Row;
+use super::params::{Layout, Param, MAX_PARAMS};
+use super::PoseReading;
+use crate::model::{
+    joint_trig, Arm, BaseTilt, Gain, SensorModel, Tilt, WristChain, JOINTS, WRIST_JOINTS,
+};
+use crate::real::Real;
+use nalgebra::{Rotation3, Vector3};
+
+/// Parameters stages 0-1 hand to stage 2: α, β, Δθ2, bias x, bias y.
+pub const HANDOVER_PARAMS: usize = 5;
+
+/// The links' masses for the sag model: only the shape of the gravity lever matters
+/// (the compliance is fitted), so relative masses suffice.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MassModel<T: Real> {
+    /// Mass of the link after each joint (kg, or any common unit).
+    pub link_kg: [T; JOINTS],
+    /// Its centre of mass in that joint's frame (m).
+    pub com_m: [Vector3<T>; JOINTS],
+    /// The pendant and its bracket (same unit as `link_kg`), at `pendant_com_m` in the
+    /// flange frame.
+    pub pendant_kg: T,
+    /// The pendant's centre of mass in the flange frame (m).
+    pub pendant_com_m: Vector3<T>,
+}
+
+impl<T: Real> MassModel<T> {
+    /// In another precision.
+    pub fn cast<U: Real>(&self) -> MassModel<U> {
+        MassModel {
+            link_kg: self.link_kg.map(|m| U::lit(m.to_f64())),
+            com_m: self.com_m.map(|c| crate::model::cast_vector(&c)),
+            pendant_kg: U::lit(self.pendant_kg.to_f64()),
+            pendant_com_m: crate::model::cast_vector(&self.pendant_com_m),
+        }
+    }
+
+    /// Links of uniform mass per metre, each centred between its joint and the next
+    /// (the flange after joint 6): the stated default where no source gives masses.
+    pub fn uniform(arm: &Arm<T>) -> Self {
+        let mut link_kg = [T::zero(); JOINTS];
+        let mut com_m = [Vector3::zeros(); JOINTS];
+        for k in 0..JOINTS {
+            let next = if k + 1 < JOINTS {
+                arm.joints[k + 1].origin.translation_m
+            } else {
+                arm.flange.translation_m
+            };
+            // The next joint's origin in this joint's frame (at zero): its placement.
+            link_kg[k] = next.norm();
+            com_m[k] = next * T::lit(0.5);
+        }
+        MassModel {
+            link_kg,
+            com_m,
+            pendant_kg: T::zero(),
+            pendant_com_m: Vector3::zeros(),
+        }
+    }
+
+    /// The gravity lever of links 3-6 and the pendant about joint 3's axis at true
+    /// joint angles `q_rad` (m, mass-weighted): `Σ mᵢ·a₃·((cᵢ − p₃) × −ẑ) / Σ mᵢ`.
+    /// Joint 2's load varies by the same amount while joint 2 is held (the two axes
+    /// are parallel), so one compliance times this lever is the deflection of both.
+    pub fn lever_m(&self, arm: &Arm<T>, q_rad: &[T; JOINTS]) -> T {
+        let (frames, flange) = arm.frames(q_rad);
+        let j3 = frames[2];
+        let axis = j3.rotation * arm.joints[2].axis.unit::<T>();
+        let down = -Vector3::z();
+        let mut moment = T::zero();
+        let mut total = T::zero();
+        let mut add = |m: T, c: Vector3<T>| {
+            moment += m * axis.dot(&(c - j3.translation_m).cross(&down));
+            total += m;
+        };
+        for k in 2..JOINTS {
+            add(
+                self.link_kg[k],
+                frames[k].translation_m + frames[k].rotation * self.com_m[k],
+            );
+        }
+        add(
+            self.pendant_kg,
+            flange.translation_m + flange.rotation * self.pendant_com_m,
+        );
+        if total > T::zero() {
+            moment / total
+        } else {
+            T::zero()
+        }
+    }
+}
+
+/// Everything about the robot and the sensor that stage 2 does not estimate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stage2Model<T: Real> {
+    /// The arm and the pendant's mounting on the flange.
+    pub arm: Arm<T>,
+    /// Base tilt measured in stage 1.
+    pub base_tilt: BaseTilt<T>,
+    /// Δθ2 measured in stage 1 (rad): joint 2's true angle is the recorded one plus this.
+    pub delta_theta2_rad: T,
+    /// Convention, bias (stages 0-1) and nominal gain of the sensor.
+    pub sensor: SensorModel<T>,
+    /// The temperature the bias was measured at (°C): the drift term is relative to it.
+    pub reference_temperature_c: T,
+    /// The sag model's masses; `None`: no sag term (and the sag parameter is refused).
+    pub masses: Option<MassModel<T>>,
+}
+
+impl<T: Real> Default for Stage2Model<T> {
+    fn default() -> Self {
+        Stage2Model {
+            arm: Arm::paper(),
+            base_tilt: BaseTilt::level(),
+            delta_theta2_rad: T::zero(),
+            sensor: SensorModel::default(),
+            reference_temperature_c: T::zero(),
+            masses: None,
+        }
+    }
+}
+
+/// Stage 2's parameters in physical form (the fit's vector read through its layout).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Estimate<T> {
+    /// Δθ3..Δθ6 (rad).
+    pub offsets_rad: [T; WRIST_JOINTS],
+    /// Gain and cross-axis, added to the model's nominal gain.
+    pub gain: Gain<T>,
+    /// Compliance of joints 2-3 (rad per metre of lever).
+    pub sag_rad_per_m: T,
+    /// Bias correction (rad).
+    pub bias: Tilt<T>,
+    /// Drift (rad per kelvin).
+    pub drift_per_k: Tilt<T>,
+}
+
+impl<T: Real> Estimate<T> {
+    /// From the fit's vector (`x[slot]`).
+    pub fn from_slots(layout: &Layout, x: &[T]) -> Self {
+        let mut e = Estimate::default();
+        for (&p, &v) in layout.params().iter().zip(x) {
+            match p {
+                Param::Offset(k) => e.offsets_rad[usize::from(k).min(3)] = v,
+                Param::GainX => e.gain.xx = v,
+                Param::GainY => e.gain.yy = v,
+                Param::CrossXy => e.gain.xy = v,
+                Param::CrossYx => e.gain.yx = v,
+                Param::Sag => e.sag_rad_per_m = v,
+                Param::BiasX => e.bias.x_rad = v,
+                Param::BiasY => e.bias.y_rad = v,
+                Param::DriftX => e.drift_per_k.x_rad = v,
+                Param::DriftY => e.drift_per_k.y_rad = v,
+            }
+        }
+        e
+    }
+}
+
+/// What is fixed for a pass over the poses: the wrist chain and which of its fixed
+/// rotations are not the identity, the base's up vector and its partials.
+pub(crate) struct Pass<T: Real> {
+    wrist: WristChain<T>,
+    fixed_in_use: [bool; WRIST_JOINTS + 1],
+    up_in_base: Vector3<T>,
+    up_in_base_partials: [Vector3<T>; 2],
+    offset_trig: [(T, T); WRIST_JOINTS],
+    gain: Gain<T>,
+}
+
+/// A predicted reading and its derivatives.
+pub(crate) struct Prediction<T: Real> {
+    /// The reading.
+    pub(crate) reading: Tilt<T>,
+    /// Rows of J for the x and y readings over the layout's slots.
+    pub(crate) rows: [Row<T>; 2],
+    /// Rows for the hand-over parameters (α, β, Δθ2, bias x, bias y); only when asked.
+    pub(crate) handover_rows: [[T; HANDOVER_PARAMS]; 2],
+}
+
+impl<T: Real> Stage2Model<T> {
+    pub(crate) fn pass(&self, estimate: &Estimate<T>) -> Pass<T> {
+        let wrist = self.arm.wrist();
+        Pass {
+            fixed_in_use: wrist.fixed_in_use(),
+            wrist,
+            up_in_base: self.base_tilt.up_in_base(),
+            up_in_base_partials: self.base_tilt.up_in_base_partials(),
+            offset_trig: estimate.offsets_rad.map(|d| d.fast_sin_cos()),
+            gain: self.sensor.gain.plus(&estimate.gain),
+        }
+    }
+
+    /// The up vector in the frame after joint 2 (before joint 3's fixed rotation) for
+    /// the recorded joints 1-2, and the rotation that takes base vectors there.
+    fn shoulder(&self, joints_rad: &[T; JOINTS]) -> Rotation3<T> {
+        let [j1, j2, ..] = self.arm.joints;
+        let r = j1.origin.rotation
+            * j1.axis.rotation(joints_rad[0])
+            * j2.origin.rotation
+            * j2.axis.rotation(joints_rad[1] + self.delta_theta2_rad);
+        r.inverse()
+    }
+
+    /// The reading predicted for a pose, with its rows of J over `layout` (and the
+    /// hand-over rows when `with_handover`).
+    pub(crate) fn predict_rows(
+        &self,
+        pass: &Pass<T>,
+        layout: &Layout,
+        estimate: &Estimate<T>,
+        pose: &PoseReading<T>,
+        with_handover: bool,
+    ) -> Prediction<T> {
+        let q = &pose.joints_rad;
+        let to_link2 = self.shoulder(q);
+        let base_up = to_link2 * pass.up_in_base;
+        // The lever at the commanded pose: the offsets and Δθ2 (tenths of a degree)
+        // change it by far less than the model's own accuracy, and it keeps J exact.
+        let lever = match (&self.masses, layout.slot(Param::Sag)) {
+            (Some(m), Some(_)) => m.lever_m(&self.arm, q),
+            _ => T::zero(),
+        };
+        let mut offset_trig = pass.offset_trig;
+        if lever != T::zero() {
+            let (s, c) = (estimate.offsets_rad[0] + estimate.sag_rad_per_m * lever).fast_sin_cos();
+            offset_trig[0] = (s, c);
+        }
+        let wrist_q = [q[2], q[3], q[4], q[5]];
+        let trig = joint_trig(&wrist_q, &offset_trig);
+        let (u, du) = pass
+            .wrist
+            .up_and_partials_with(&pass.fixed_in_use, &base_up, &trig);
+        let g = &pass.gain;
+        let a = g.apply(&u);
+        let (t, grad) = self.sensor.convention.read_with_gradient(&a);
+        let dt = pose
+            .temperature_c
+            .map_or(T::zero(), |c| c - self.reference_temperature_c);
+        let bias = self.sensor.bias;
+        let reading = Tilt::new(
+            t.x_rad + bias.x_rad + estimate.bias.x_rad + estimate.drift_per_k.x_rad * dt,
+            t.y_rad + bias.y_rad + estimate.bias.y_rad + estimate.drift_per_k.y_rad * dt,
+        );
+        // Through the gain: d(reading)/dv = grad·G·dv for a change dv of u.
+        let through = |axis: usize, dv: &Vector3<T>| grad[axis].dot(&g.apply(dv));
+        let mut rows = [[T::zero(); MAX_PARAMS]; 2];
+        for (slot, &p) in layout.params().iter().enumerate() {
+            for (axis, row) in rows.iter_mut().enumerate() {
+                row[slot] = match p {
+                    Param::Offset(k) => through(axis, &du[usize::from(k).min(3)]),
+                    Param::Sag => lever * through(axis, &du[0]),
+                    Param::GainX => grad[axis].x * u.x,
+                    Param::GainY => grad[axis].y * u.y,
+                    Param::CrossXy => grad[axis].x * u.y,
+                    Param::CrossYx => grad[axis].y * u.x,
+                    Param::BiasX => T::from_bool(axis == 0),
+                    Param::BiasY => T::from_bool(axis == 1),
+                    Param::DriftX => T::from_bool(axis == 0) * dt,
+                    Param::DriftY => T::from_bool(axis == 1) * dt,
+                };
+            }
+        }
+        let mut handover_rows = [[T::zero(); HANDOVER_PARAMS]; 2];
+        if with_handover {
+            let d_alpha = pass.wrist.to_sensor(
+                &pass.fixed_in_use,
+                &(to_link2 * pass.up_in_base_partials[0]),
+                &trig,
+            );
+            let d_beta = pass.wrist.to_sensor(
+                &pass.fixed_in_use,
+                &(to_link2 * pass.up_in_base_partials[1]),
+                &trig,
+            );
+            // Turning joint 2 by dq turns the up vector in link 2 by (u × a₂)·dq.
+            let axis2 = self.arm.joints[1].axis.unit::<T>();
+            let d_j2 = pass
+                .wrist
+                .to_sensor(&pass.fixed_in_use, &base_up.cross(&axis2), &trig);
+            for (axis, row) in handover_rows.iter_mut().enumerate() {
+                *row = [
+                    through(axis, &d_alpha),
+                    through(axis, &d_beta),
+                    through(axis, &d_j2),
+                    T::from_bool(axis == 0),
+                    T::from_bool(axis == 1),
+                ];
+            }
+        }
+        Prediction {
+            reading,
+            rows,
+            handover_rows,
+        }
+    }
+
+    /// The reading predicted for commanded joints and given offsets (no sag, gain or
+    /// drift terms): what a planner needs to keep readings in the window.
+    pub fn predict(&self, joints_rad: &[T; JOINTS], offsets_rad: &[T; WRIST_JOINTS]) -> Tilt<T> {
+        let mut q = *joints_rad;
+        q[1] += self.delta_theta2_rad;
+        for k in 0..WRIST_JOINTS {
+            q[k + 2] += offsets_rad[k];
+        }
+        self.sensor
+            .reading(&self.arm.flange_sensor(&self.base_tilt, &q))
+    }
+
+    /// The up vector in the pendant's frame at commanded joints (zero offsets): whether
+    /// the pendant is upright (z > 0) and how far from level.
+    pub fn up_at(&self, joints_rad: &[T; JOINTS]) -> Vector3<T> {
+        let mut q = *joints_rad;
+        q[1] += self.delta_theta2_rad;
+        crate::model::up_in_sensor(&self.arm.flange_sensor(&self.base_tilt, &q))
+    }
+}

@@ -1,0 +1,325 @@
+//! The TOML as written, with every key known (`deny_unknown_fields`), and its checks.
+
+use crate::controller::{Controller, Coupling, OffsetUnit};
+use crate::{
+    flange_mount, kinematics, upper_arm_mount, Family, JointInfo, ProfileError, Source, FORMAT,
+};
+use serde::Deserialize;
+use std::collections::BTreeSet;
+use zerocal_core::model::JOINTS;
+use zerocal_core::stage2::MassModel;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct Profile {
+    format: u32,
+    name: String,
+    title: String,
+    family: String,
+    #[serde(default)]
+    missing: Vec<String>,
+    #[serde(default)]
+    source: Vec<RawSource>,
+    pub(crate) kinematics: Kinematics,
+    pub(crate) joint: Vec<RawJoint>,
+    pub(crate) flange: Option<Flange>,
+    controller: RawController,
+    stage1: Stage1,
+    stage2: Stage2,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSource {
+    id: String,
+    cite: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct Kinematics {
+    pub(crate) form: String,
+    source: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct RawJoint {
+    name: String,
+    pub(crate) xyz_m: Option<[f64; 3]>,
+    pub(crate) rpy_deg: Option<[f64; 3]>,
+    pub(crate) axis: Option<[f64; 3]>,
+    pub(crate) a_m: Option<f64>,
+    pub(crate) alpha_deg: Option<f64>,
+    pub(crate) d_m: Option<f64>,
+    pub(crate) theta_deg: Option<f64>,
+    min_deg: f64,
+    max_deg: f64,
+    max_speed_deg_s: Option<f64>,
+    limits_source: Option<String>,
+    mass_kg: Option<f64>,
+    com_m: Option<[f64; 3]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct Flange {
+    pub(crate) xyz_m: Option<[f64; 3]>,
+    pub(crate) rpy_deg: Option<[f64; 3]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawController {
+    sign: [i8; JOINTS],
+    zero_deg: [f64; JOINTS],
+    coupling: String,
+    source: String,
+    offset_unit: String,
+    offset_where: String,
+    offset_source: String,
+    gear_ratio: Option<[f64; JOINTS]>,
+    counts_per_deg: Option<[f64; JOINTS]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Stage1 {
+    pose_deg: [f64; JOINTS],
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Stage2 {
+    mount_z: String,
+    mount_x: String,
+}
+
+impl Profile {
+    pub(crate) fn build(self) -> Result<crate::Profile, ProfileError> {
+        if self.format != FORMAT {
+            return Err(ProfileError::new(
+                "format",
+                format!(
+                    "{} is not a format this zerocal reads ({FORMAT})",
+                    self.format
+                ),
+            ));
+        }
+        let name_ok = !self.name.is_empty()
+            && self
+                .name
+                .chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-');
+        if !name_ok {
+            return Err(ProfileError::new(
+                "name",
+                "lowercase letters, digits and '-' only",
+            ));
+        }
+        let family = Family::parse(&self.family).ok_or_else(|| {
+            ProfileError::new(
+                "family",
+                format!(
+                    "'{}' is not kuka, abb, fanuc, yaskawa, staubli, ur or generic",
+                    self.family
+                ),
+            )
+        })?;
+        if self.joint.len() != JOINTS {
+            return Err(ProfileError::new(
+                "joint",
+                format!("{} [[joint]] tables; a profile has six", self.joint.len()),
+            ));
+        }
+        let ids: BTreeSet<&str> = self.source.iter().map(|s| s.id.as_str()).collect();
+        let cited = |id: &str, key: &str| {
+            if ids.contains(id) {
+                Ok(())
+            } else {
+                Err(ProfileError::new(
+                    key,
+                    format!("source '{id}' is not defined by any [[source]]"),
+                ))
+            }
+        };
+        cited(&self.kinematics.source, "kinematics.source")?;
+        cited(&self.controller.source, "controller.source")?;
+        cited(&self.controller.offset_source, "controller.offset_source")?;
+        let mut infos = Vec::with_capacity(JOINTS);
+        for (k, j) in self.joint.iter().enumerate() {
+            let key = |what: &str| format!("joint {}: {what}", k + 1);
+            if !(j.min_deg.is_finite() && j.max_deg.is_finite() && j.min_deg <= j.max_deg) {
+                return Err(ProfileError::new(
+                    key("min_deg"),
+                    "limits must be finite with min_deg <= max_deg",
+                ));
+            }
+            if j.max_speed_deg_s
+                .is_some_and(|v| !(v.is_finite() && v > 0.0))
+            {
+                return Err(ProfileError::new(key("max_speed_deg_s"), "must be > 0"));
+            }
+            if let Some(id) = &j.limits_source {
+                cited(id, &key("limits_source"))?;
+            }
+            if j.mass_kg.is_some_and(|m| !(m.is_finite() && m >= 0.0)) {
+                return Err(ProfileError::new(key("mass_kg"), "must be >= 0"));
+            }
+            if j.mass_kg.is_some() != j.com_m.is_some() {
+                return Err(ProfileError::new(
+                    key("mass_kg"),
+                    "mass_kg and com_m go together",
+                ));
+            }
+            infos.push(JointInfo {
+                name: j.name.clone(),
+                min_deg: j.min_deg,
+                max_deg: j.max_deg,
+                max_speed_deg_s: j.max_speed_deg_s,
+            });
+        }
+        let (joints, flange) = kinematics(&self)?;
+        let controller = self.controller()?;
+        let stage1_joints_rad = controller.model_rad(&self.stage1.pose_deg);
+        let mut arm = zerocal_core::model::Arm {
+            joints,
+            flange,
+            upper_arm_mount: nalgebra::Rotation3::identity(),
+            flange_mount: flange_mount(&self.stage2.mount_z, &self.stage2.mount_x)?,
+        };
+        check_stage1(&infos, &stage1_joints_rad)?;
+        arm.upper_arm_mount = upper_arm_mount(&arm, &stage1_joints_rad)?;
+        let masses = self.masses();
+        Ok(crate::Profile {
+            name: self.name,
+            title: self.title,
+            family,
+            missing: self.missing,
+            sources: self
+                .source
+                .into_iter()
+                .map(|s| Source {
+                    id: s.id,
+                    cite: s.cite,
+                })
+                .collect(),
+            joints: infos,
+            arm,
+            masses,
+            controller,
+            stage1_joints_rad,
+        })
+    }
+
+    fn controller(&self) -> Result<Controller, ProfileError> {
+        let c = &self.controller;
+        if let Some(k) = c.sign.iter().position(|s| *s != 1 && *s != -1) {
+            return Err(ProfileError::new(
+                format!("controller.sign[{k}]"),
+                "must be 1 or -1",
+            ));
+        }
+        if c.zero_deg.iter().any(|z| !z.is_finite()) {
+            return Err(ProfileError::new("controller.zero_deg", "must be finite"));
+        }
+        let coupling = match c.coupling.as_str() {
+            "none" => Coupling::None,
+            "j3-minus-j2" => Coupling::J3MinusJ2,
+            other => {
+                return Err(ProfileError::new(
+                    "controller.coupling",
+                    format!("'{other}' is not none or j3-minus-j2"),
+                ))
+            }
+        };
+        let positive = |v: &Option<[f64; JOINTS]>, key: &str| match v {
+            Some(a) if a.iter().any(|x| !(x.is_finite() && *x > 0.0)) => {
+                Err(ProfileError::new(key, "every entry must be > 0"))
+            }
+            _ => Ok(*v),
+        };
+        let unit = match c.offset_unit.as_str() {
+            "deg" => OffsetUnit::Degrees,
+            "motor_rad" => {
+                OffsetUnit::MotorRadians(positive(&c.gear_ratio, "controller.gear_ratio")?)
+            }
+            "counts" => {
+                OffsetUnit::Counts(positive(&c.counts_per_deg, "controller.counts_per_deg")?)
+            }
+            other => {
+                return Err(ProfileError::new(
+                    "controller.offset_unit",
+                    format!("'{other}' is not deg, motor_rad or counts"),
+                ))
+            }
+        };
+        Ok(Controller {
+            sign: c.sign,
+            zero_deg: c.zero_deg,
+            coupling,
+            unit,
+            offset_where: c.offset_where.clone(),
+        })
+    }
+
+    /// The sources' link masses, if every link beyond joint 2 has one.
+    fn masses(&self) -> Option<MassModel<f64>> {
+        let mut link_kg = [0.0; JOINTS];
+        let mut com_m = [nalgebra::Vector3::zeros(); JOINTS];
+        for (k, j) in self.joint.iter().enumerate() {
+            match (j.mass_kg, j.com_m) {
+                (Some(m), Some(c)) => {
+                    link_kg[k] = m;
+                    let c = nalgebra::Vector3::from(c);
+                    com_m[k] = match (self.kinematics.form.as_str(), j.a_m, j.alpha_deg, j.d_m) {
+                        // DH: the centre of mass is given in frame i, after the link's
+                        // own Tz(d)·Tx(a)·Rx(α).
+                        ("dh", Some(a), Some(alpha), Some(d)) => {
+                            let p = crate::dh_after(a, alpha, d);
+                            p.translation_m + p.rotation * c
+                        }
+                        _ => c,
+                    };
+                }
+                _ if k >= 2 => return None,
+                _ => {}
+            }
+        }
+        Some(MassModel {
+            link_kg,
+            com_m,
+            pendant_kg: 0.0,
+            pendant_com_m: nalgebra::Vector3::zeros(),
+        })
+    }
+}
+
+/// The stage-1 pose inside the limits, and joint 1's half turn too.
+fn check_stage1(joints: &[JointInfo], q: &[f64; JOINTS]) -> Result<(), ProfileError> {
+    for (k, (j, v)) in joints.iter().zip(q).enumerate() {
+        let d = v.to_degrees();
+        if !(j.min_deg..=j.max_deg).contains(&d) {
+            return Err(ProfileError::new(
+                "stage1.pose_deg",
+                format!(
+                    "joint {} at {d:.3} deg is outside its limits {}..{} deg",
+                    k + 1,
+                    j.min_deg,
+                    j.max_deg
+                ),
+            ));
+        }
+    }
+    let turned = (q[0] + std::f64::consts::PI).to_degrees();
+    if turned > joints[0].max_deg {
+        return Err(ProfileError::new(
+            "stage1.pose_deg",
+            format!(
+                "joint 1's half turn ends at {turned:.1} deg, past its limit {} deg: start it lower",
+                joints[0].max_deg
+            ),
+        ));
+    }
+    Ok(())
+}
