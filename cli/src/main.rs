@@ -11,6 +11,7 @@ use std::process::ExitCode;
 use zerocal_cli::error::CliError;
 use zerocal_cli::identify::{self, IdentifyArgs};
 use zerocal_cli::plan::{self, PlanArgs};
+use zerocal_cli::real;
 use zerocal_cli::session::{self, SessionArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
 
@@ -30,6 +31,9 @@ enum Command {
     Identify(IdentifyArgs),
     /// Plan the stage-2 poses and print the 1-sigma they promise.
     Plan(PlanArgs),
+    /// The error sources one at a time, over many simulated sessions, with and without
+    /// the compensation.
+    ErrorTable(real::ErrorTableArgs),
     /// Solve a whole pendant session export (stages 0-2) and print the offsets in the
     /// controller's own terms.
     Session(SessionArgs),
@@ -37,6 +41,33 @@ enum Command {
 
 fn run(cli: &Cli) -> Result<String, CliError> {
     match &cli.command {
+        Command::Simulate(args) if args.world == simulate::World::Real => {
+            let world = args.real.world();
+            let run = real::run_session(
+                &args.robot,
+                &world,
+                args.poses.unwrap_or(zerocal_sim::montecarlo::DEFAULT_POSES),
+                args.seed,
+            )?;
+            let mut out = real::render(&run, &world, args.seed);
+            match real::accuracy(&run, args.accuracy_points, args.seed) {
+                Ok(report) => {
+                    out.push_str(&format!(
+                        "\n-- positioning accuracy, ISO 9283-style, {} --\n",
+                        run.profile.title
+                    ));
+                    out.push_str(&report.to_string());
+                    if let Some(dir) = &args.plot {
+                        for f in real::plots(dir, &run, &report)? {
+                            out.push_str(&format!("wrote {}\n", f.display()));
+                        }
+                    }
+                }
+                Err(e) => out.push_str(&format!("\nno positioning test: {e}\n")),
+            }
+            Ok(out)
+        }
+        Command::ErrorTable(args) => real::error_table(args),
         Command::Simulate(args) => {
             let (profile, session, result) = simulate::simulate(args)?;
             let mut out = simulate::render(args, &session, &result)?;

@@ -8,6 +8,7 @@
 //! hand-over cannot be got wrong (METHOD.md: stage 1's tilt composes with joint 2's
 //! recorded angle).
 
+use crate::args::RealIn;
 use crate::error::CliError;
 use crate::log::parse_number;
 use clap::Args;
@@ -18,8 +19,10 @@ use zerocal_core::log::{parse_meta, LogLine, LogReader, MetaItem};
 use zerocal_core::model::{Convention, JOINTS};
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
-    solve, BiasSource, SessionError, SessionReadings, SessionSolution, SESSION_JOINTS,
+    budget, solve, BiasSource, Budget, BudgetInputs, BudgetTerm, SessionError, SessionReadings,
+    SessionSolution, StageTemperatures, DEFAULT_REPEATABILITY_DEG, SESSION_JOINTS,
 };
+use zerocal_core::stage0::ClosingReversal;
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{FitConfig, PoseReading};
 use zerocal_core::Tilt;
@@ -33,6 +36,13 @@ pub struct SessionArgs {
     /// Robot profile, if not the one the export names: a built-in name or a TOML file.
     #[arg(long, value_name = "NAME")]
     pub robot: Option<String>,
+    /// The brackets' seat tolerance, ± deg about joint 2 (upper arm) and joint 6
+    /// (flange): enters Δθ2, Δθ3 and Δθ6 one to one (docs/mounting.md). Range: [0, 1] deg.
+    #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
+    pub mount_tolerance_deg: f64,
+    /// The robot's repeatability per joint, 1σ. Range: [0, 0.1] deg.
+    #[arg(long, default_value_t = DEFAULT_REPEATABILITY_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 0.1, "deg"))]
+    pub repeatability_deg: f64,
     /// Print one JSON object instead of the report.
     #[arg(long)]
     pub json: bool,
@@ -47,6 +57,14 @@ pub struct Export {
     pub bias: Option<Option<Tilt<f64>>>,
     /// `# stage1_readings_deg`.
     pub stage1: Option<Option<AxisOneTurn<f64>>>,
+    /// `# stage0_reversal_deg`: stage 0's readings and temperature.
+    pub stage0: Option<ClosingReversal<f64>>,
+    /// `# stage1_temp_c`.
+    pub stage1_temperature_c: Option<f64>,
+    /// `# closing_reversal_deg`.
+    pub closing: Option<ClosingReversal<f64>>,
+    /// `# fit_extras`: the pendant's model.
+    pub extras: Option<zerocal_core::stage2::Extras>,
     /// The stage-2 rows.
     pub poses: Vec<PoseReading<f64>>,
     /// Their lines.
@@ -63,6 +81,10 @@ pub fn read_export(text: &str) -> Result<Export, String> {
         robot: None,
         bias: None,
         stage1: None,
+        stage0: None,
+        stage1_temperature_c: None,
+        closing: None,
+        extras: None,
         poses: Vec::new(),
         lines: Vec::new(),
     };
@@ -81,6 +103,10 @@ pub fn read_export(text: &str) -> Result<Export, String> {
                     }
                     Some(MetaItem::Bias(b)) => export.bias = Some(b),
                     Some(MetaItem::Stage1(s)) => export.stage1 = Some(s),
+                    Some(MetaItem::Stage0Reversal(r)) => export.stage0 = Some(r),
+                    Some(MetaItem::Stage1Temperature(t)) => export.stage1_temperature_c = Some(t),
+                    Some(MetaItem::Closing(r)) => export.closing = Some(r),
+                    Some(MetaItem::FitExtras(e)) => export.extras = Some(e),
                     None => {}
                 }
             }
@@ -115,6 +141,19 @@ pub struct JointJson {
     /// The URDF form: `<calibration rising="…"/>` in radians (model terms; see
     /// docs/controllers/urdf.md for what tools read it).
     pub urdf_calibration_rising_rad: f64,
+    /// Expanded uncertainty, k = 2 (deg).
+    pub expanded_k2_deg: f64,
+    /// The budget: each term's standard uncertainty (deg).
+    pub budget_deg: Vec<BudgetJson>,
+}
+
+/// One term of a joint's budget.
+#[derive(Serialize, Debug)]
+pub struct BudgetJson {
+    /// What it is.
+    pub term: &'static str,
+    /// Its standard uncertainty (deg).
+    pub standard_uncertainty_deg: f64,
 }
 
 /// The `--json` output.
@@ -166,22 +205,44 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
     let stage1 = export.stage1.flatten().ok_or_else(|| {
         CliError::Refused(name("stage 1 was not completed (no stage-1 readings)"))
     })?;
-    let bias = match export.bias.flatten() {
-        Some(b) => BiasSource::Stored(b),
-        None => BiasSource::Unknown,
+    // The reversal's own readings where the export has them (the drift model needs
+    // their temperature), else the bias it computed.
+    let bias = match (export.stage0, export.bias.flatten()) {
+        (Some(r), _) => BiasSource::Reversal(r.reversal),
+        (None, Some(b)) => BiasSource::Stored(b),
+        (None, None) => BiasSource::Unknown,
     };
+    let masses = profile.mass_model();
     let readings = SessionReadings {
         convention,
         arm: profile.arm,
-        masses: None,
+        masses,
         bias,
         stage1,
         poses: &export.poses,
+        temperatures: StageTemperatures {
+            stage0_c: export.stage0.and_then(|r| r.temperature_c),
+            stage1_c: export.stage1_temperature_c,
+        },
+        closing: export.closing,
     };
-    let config = FitConfig::<f64>::default();
+    // The pendant's own model where the export states it, so both compute the same.
+    let mut config = fit_config(convention, &profile);
+    if let Some(e) = export.extras {
+        config.extras = e;
+    }
     let outcome = solve(&readings, &config);
     let solution = outcome.result.map_err(|e| refused(e, &export))?;
     let verdict = Verdict::judge(&solution.fit, &config, outcome.stage1.as_ref());
+    let budget = budget(
+        &solution,
+        &export.poses,
+        &BudgetInputs {
+            extras: config.extras,
+            mount_tolerance_rad: args.mount_tolerance_deg.to_radians(),
+            repeatability_rad: args.repeatability_deg.to_radians(),
+        },
+    );
     let mut notes = vec![format!(
         "robot profile {} ({}), convention {}",
         profile.name,
@@ -195,7 +256,22 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         ));
     }
     notes.extend(profile.missing.iter().map(|m| format!("profile: {m}")));
-    let json = to_json(&profile, &solution, &verdict, notes);
+    if args.mount_tolerance_deg == 0.0 {
+        notes.push(
+            "the brackets' seat tolerance is not included (--mount-tolerance-deg): a turn of \
+             the upper-arm bracket about joint 2 enters Δθ2 and Δθ3, one of the flange bracket \
+             about joint 6 enters Δθ6, one to one (docs/mounting.md)"
+                .to_owned(),
+        );
+    }
+    if export.closing.is_none() && convention == Convention::Axis {
+        notes.push(
+            "no closing reversal: the sensor's bias drift was not measured; the session is \
+             refused if the pendant's temperature moved more than 0.5 K"
+                .to_owned(),
+        );
+    }
+    let json = to_json(&profile, &solution, &verdict, &budget, notes);
     if args.json {
         return serde_json::to_string_pretty(&json).map_err(|e| CliError::Input(e.to_string()));
     }
@@ -203,16 +279,42 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
 }
 
 fn refused(e: SessionError, export: &Export) -> CliError {
-    let line = |pose: usize| export.lines.get(pose).copied().unwrap_or(0);
+    // The solver fits repeated poses merged: its pose index is into the merged list.
+    let merged = zerocal_core::session::merge_repeats(&export.poses);
+    let line = |pose: usize| {
+        let joints = merged
+            .as_ref()
+            .and_then(|m| m.get(pose).map(|p| p.joints_rad))
+            .or_else(|| export.poses.get(pose).map(|p| p.joints_rad));
+        joints
+            .and_then(|j| export.poses.iter().position(|p| p.joints_rad == j))
+            .and_then(|i| export.lines.get(i).copied())
+            .unwrap_or(0)
+    };
     let msg = match e {
         SessionError::Stage2(
             f @ (zerocal_core::FitError::NonFiniteJoint { pose }
             | zerocal_core::FitError::NonFiniteReading { pose }
             | zerocal_core::FitError::ReadingOutOfRange { pose, .. }),
         ) => format!("line {}: stage 2: {f}", line(pose)),
+        SessionError::Stage2(f @ zerocal_core::FitError::ResidualTooLarge { worst_pose, .. }) => {
+            format!(
+                "stage 2: {f} (the worst pose's first capture is on line {})",
+                line(worst_pose)
+            )
+        }
         other => other.to_string(),
     };
     CliError::Refused(msg)
+}
+
+/// The fit a session's sensor needs: a MEMS inclinometer (`axis`) gets the real-sensor
+/// model ([`FitConfig::for_mems`]), the paper's `rpy` sensor the paper's.
+pub fn fit_config(convention: Convention, profile: &Profile) -> FitConfig<f64> {
+    match convention {
+        Convention::Axis => FitConfig::for_mems(&profile.arm, profile.mass_model().is_some()),
+        Convention::Rpy => FitConfig::default(),
+    }
 }
 
 /// The whole result, in degrees and in the controller's terms.
@@ -220,6 +322,7 @@ pub fn to_json(
     profile: &Profile,
     s: &SessionSolution<f64>,
     verdict: &Verdict,
+    budget: &Budget<f64>,
     notes: Vec<String>,
 ) -> SessionJson {
     let mut delta = [0.0; JOINTS];
@@ -248,6 +351,15 @@ pub fn to_json(
                 controller_unit_missing: c.no_unit_because,
                 variance_shares: shares.map(|v| if total > 0.0 { v / total } else { 0.0 }),
                 urdf_calibration_rising_rad: s.offsets_rad[k],
+                expanded_k2_deg: budget.expanded_rad[k].to_degrees(),
+                budget_deg: BudgetTerm::ALL
+                    .iter()
+                    .zip(&budget.terms_rad)
+                    .map(|(t, u)| BudgetJson {
+                        term: t.name(),
+                        standard_uncertainty_deg: u[k].to_degrees(),
+                    })
+                    .collect(),
             }
         })
         .collect();
@@ -292,18 +404,46 @@ pub fn render(j: &SessionJson) -> String {
     );
     let _ = writeln!(
         out,
-        "joint  offset_deg  1sigma_deg   variance from stage 0 / 1 / 2"
+        "joint  offset_deg  1sigma_deg  U(k=2)_deg   variance from stage 0 / 1 / 2"
     );
     for (k, joint) in j.joints.iter().enumerate() {
         let [a, b, c] = joint.variance_shares.map(|v| v * 100.0);
         let _ = writeln!(
             out,
-            "j{}     {:+.5}    {:.5}      {a:>3.0}% / {b:>3.0}% / {c:>3.0}%",
+            "j{}     {:+.5}    {:.5}     {:.5}      {a:>3.0}% / {b:>3.0}% / {c:>3.0}%",
             k + 2,
             joint.offset_deg,
-            joint.sigma_deg
+            joint.sigma_deg,
+            joint.expanded_k2_deg
         );
     }
+    let _ = writeln!(
+        out,
+        "\nuncertainty budget (standard uncertainties, deg; GUM, combined in quadrature, k = 2):"
+    );
+    let _ = write!(out, "{:<42}", "term");
+    for k in 0..j.joints.len() {
+        let _ = write!(out, "  j{:<7}", k + 2);
+    }
+    let _ = writeln!(out);
+    if let Some(first) = j.joints.first() {
+        for (t, term) in first.budget_deg.iter().enumerate() {
+            let _ = write!(out, "{:<42}", term.term);
+            for joint in &j.joints {
+                let v = joint
+                    .budget_deg
+                    .get(t)
+                    .map_or(0.0, |b| b.standard_uncertainty_deg);
+                let _ = write!(out, "  {v:.5} ");
+            }
+            let _ = writeln!(out);
+        }
+    }
+    let _ = write!(out, "{:<42}", "expanded, k = 2");
+    for joint in &j.joints {
+        let _ = write!(out, "  {:.5} ", joint.expanded_k2_deg);
+    }
+    let _ = writeln!(out);
     let mut strongest = (0.0f64, 0, 0);
     for (i, row) in j.correlations.iter().enumerate() {
         for (k, r) in row.iter().enumerate().skip(i + 1) {

@@ -15,6 +15,15 @@ use zerocal_sim::positioning::{self, AccuracyReport};
 use zerocal_sim::session::{fit_config_for, SessionConfig, SessionResult};
 use zerocal_sim::{Noise, SimSession};
 
+/// Which world `zerocal simulate` simulates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum World {
+    /// Every sourced error of a real sensor and robot.
+    Real,
+    /// The paper's ideal sensor on a rigid robot.
+    Ideal,
+}
+
 /// Arguments of `zerocal simulate`.
 #[derive(Args, Debug, Clone)]
 pub struct SimulateArgs {
@@ -24,14 +33,24 @@ pub struct SimulateArgs {
     /// Seed of the hidden truth, the poses and the noise. Range: [0, 18446744073709551615].
     #[arg(long, default_value_t = 1, value_parser = SEED)]
     pub seed: u64,
-    /// Stage-2 poses. Range: [4, 10000].
-    #[arg(long, default_value_t = 30, value_parser = CountIn::<usize>::new(4, 10_000))]
-    pub poses: usize,
-    /// Reading noise: uniform in ±A degrees (the paper's Table 4: 0.002).
+    /// The world simulated: `real` (a production SCL3300 and a robot that sags, has
+    /// backlash and repeats only so well, every source on unless `--without` says) or
+    /// `ideal` (the paper's: a constant bias plus uniform noise on a rigid robot).
+    #[arg(long, value_enum, default_value = "real")]
+    pub world: World,
+    /// The real world's sources and faults.
+    #[command(flatten)]
+    pub real: crate::real::WorldArgs,
+    /// Stage-2 poses (real world: each captured twice, default 24; ideal: default 30).
+    /// Range: [4, 10000].
+    #[arg(long, value_parser = CountIn::<usize>::new(4, 10_000))]
+    pub poses: Option<usize>,
+    /// Ideal world: reading noise, uniform in ±A degrees (the paper's Table 4: 0.002).
     /// Range: [0, 1] deg.
     #[arg(long, default_value_t = 0.002, value_name = "A", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
     pub noise_deg: f64,
-    /// Sensor convention of the simulated sensor and of the model.
+    /// Ideal world: sensor convention of the simulated sensor and of the model (the
+    /// real world's SCL3300 is `axis`).
     #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
     pub convention: Convention,
     /// Joints 3-6 are drawn within ±this (deg), and within the robot's limits.
@@ -83,7 +102,7 @@ impl SimulateArgs {
             stage1_joints_rad: (!paper).then_some(profile.stage1_joints_rad),
             wrist_limits_deg: Some(wrist_limits_deg),
             seed: self.seed,
-            poses: self.poses,
+            poses: self.poses.unwrap_or(30),
             noise: self.noise(),
             convention: self.convention,
             joint_range_deg: self.joint_range_deg,
@@ -120,7 +139,7 @@ pub fn render(
         "zerocal simulate: {}, seed {}, {} poses, noise +/-{} deg, {} convention, joints within +/-{} deg",
         args.robot,
         args.seed,
-        args.poses,
+        args.poses.unwrap_or(30),
         args.noise_deg,
         args.convention.name(),
         args.joint_range_deg

@@ -228,7 +228,29 @@ fn degenerate_log_exits_3_with_the_named_error() {
 
 #[test]
 fn simulate_prints_report_beside_truth() {
+    // The real world (the default): the budget beside the truth.
     let out = zerocal(&["simulate", "--seed", "3", "--poses", "20"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    for needle in [
+        "every error source on",
+        "j2 ",
+        "j6 ",
+        "U(k=2)_deg",
+        "robot repeatability",
+        "verdict:",
+        "positioning accuracy",
+    ] {
+        assert!(text.contains(needle), "missing '{needle}' in\n{text}");
+    }
+    // The paper's ideal world.
+    let out = zerocal(&[
+        "simulate", "--world", "ideal", "--seed", "3", "--poses", "20",
+    ]);
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
     for needle in [

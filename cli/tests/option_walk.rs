@@ -117,7 +117,14 @@ fn parse_range(text: &str) -> Option<Stated> {
 }
 
 /// Value names of options that take text, not a number.
-const TEXT_VALUES: [&str; 4] = ["<FILE>", "<DIR>", "<PATH>", "<NAME>"];
+const TEXT_VALUES: [&str; 6] = [
+    "<FILE>",
+    "<DIR>",
+    "<PATH>",
+    "<NAME>",
+    "<NAMES>",
+    "<SOURCES>",
+];
 
 /// `(flag line, its help text)` for every option of a subcommand, from its `--help`.
 fn options(subcommand: &str) -> Vec<(String, String)> {
@@ -197,6 +204,21 @@ fn sample_log() -> PathBuf {
     path
 }
 
+/// A pendant export of a real-world simulated session on the KR 6 (12 poses).
+fn sample_export() -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("zerocal-option-walk-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("export.csv");
+    let profile = zerocal_profile::builtin("kuka-kr6-r900-sixx").expect("built in");
+    let (plan, _) =
+        zerocal_sim::montecarlo::setup(&profile, zerocal_sim::montecarlo::Method::Compensated, 12)
+            .expect("plan");
+    let world = zerocal_sim::world::WorldConfig::real();
+    let session = zerocal_sim::world::RealSession::simulate(&profile, &plan, &world, 5);
+    std::fs::write(&path, session.export_text(&profile.name)).expect("write export");
+    path
+}
+
 /// The arguments that make each subcommand run at all; a new subcommand must be added
 /// here, or the walk fails.
 fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
@@ -204,8 +226,12 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
         "simulate" => vec!["simulate".into(), "--accuracy-points=20".into()],
         "identify" => vec!["identify".into(), log.display().to_string()],
         "plan" => vec!["plan".into()],
-        // No numeric options today; a pendant export would be its input.
-        "session" => vec!["session".into(), log.display().to_string()],
+        "session" => vec!["session".into(), sample_export().display().to_string()],
+        "error-table" => vec![
+            "error-table".into(),
+            "--sessions=1".into(),
+            "--robot=paper-wrist".into(),
+        ],
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }
 }

@@ -5,9 +5,9 @@ use crate::model::TiltAxis;
 use core::fmt;
 
 /// The names of stage 2's parameters, by index (`stage2::Param`'s order).
-pub const PARAM_NAMES: [&str; 13] = [
-    "j3", "j4", "j5", "j6", "gain_x", "gain_y", "cross_xy", "cross_yx", "sag", "bias_x", "bias_y",
-    "drift_x", "drift_y",
+pub const PARAM_NAMES: [&str; 17] = [
+    "j3", "j4", "j5", "j6", "gain_x", "gain_y", "cross_xy", "cross_yx", "cross_xz", "cross_yz",
+    "cross_zx", "cross_zy", "sag", "bias_x", "bias_y", "drift_x", "drift_y",
 ];
 
 /// A set of stage-2 parameters by index (bit k = parameter k; 0..=3 are Δθ3..Δθ6).
@@ -117,6 +117,16 @@ pub enum FitError {
     },
     /// The arithmetic produced a non-finite number (a model far from the data).
     NonFiniteResult,
+    /// The residuals are far above what a still robot, a tight bracket and the right
+    /// model leave.
+    ResidualTooLarge {
+        /// Residual RMS (deg).
+        rms_deg: f32,
+        /// The limit (deg).
+        limit_deg: f32,
+        /// The pose with the largest residual (0-based).
+        worst_pose: usize,
+    },
 }
 
 impl fmt::Display for FitError {
@@ -161,6 +171,19 @@ impl fmt::Display for FitError {
                 write!(f, "no convergence after {iterations} iterations")
             }
             FitError::NonFiniteResult => f.write_str("the fit produced a non-finite number"),
+            FitError::ResidualTooLarge {
+                rms_deg,
+                limit_deg,
+                worst_pose,
+            } => write!(
+                f,
+                "residuals of {} deg RMS exceed the {} deg a still robot, a tight bracket and \
+                 the right robot model leave (worst at pose {}): check the flange bracket is \
+                 tight, the robot stood still, and the profile and convention are the robot's",
+                Fixed::new(f64::from(rms_deg), 4),
+                Fixed::new(f64::from(limit_deg), 4),
+                worst_pose + 1
+            ),
         }
     }
 }
@@ -234,6 +257,9 @@ impl fmt::Display for Terse<'_, FitError> {
             FitError::IllConditioned { params, .. } => write!(f, "IllConditioned {params}"),
             FitError::NoConvergence { .. } => f.write_str("NoConvergence"),
             FitError::NonFiniteResult => f.write_str("NonFiniteResult"),
+            FitError::ResidualTooLarge { worst_pose, .. } => {
+                write!(f, "ResidualTooLarge {worst_pose}")
+            }
         }
     }
 }

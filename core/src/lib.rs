@@ -53,7 +53,9 @@ pub use error::{FitError, ParamSet, StageError};
 pub use model::{BaseTilt, Convention, JointAxis, SensorBias, SensorModel, Tilt, WristChain};
 pub use real::Real;
 pub use session::BiasSource;
-pub use session::{solve, SessionError, SessionOutcome, SessionReadings, SessionSolution};
+pub use session::{
+    solve, SessionError, SessionOutcome, SessionReadings, SessionSolution, StageTemperatures,
+};
 pub use stage0::Reversal;
 pub use stage1::{AxisOneTurn, Stage1Result};
 pub use stage2::{

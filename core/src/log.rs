@@ -13,9 +13,10 @@
 //!
 //! **The pendant's export** is such a log with the session in `#` metadata lines,
 //! `# key value…`, before the header: `robot NAME convention rpy|axis`,
-//! `stage0_bias_deg x,y`,
-//! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` and stage 1's results,
-//! and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! `stage0_bias_deg x,y`, `stage0_reversal_deg first x,y second x,y temp_c t`,
+//! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c`, `stage1_temp_c t`,
+//! stage 1's results, `closing_reversal_deg first x,y second x,y temp_c t` (the reversal
+//! after stage 2 that measures the bias' drift), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
 //! [`MetaItem`] the metadata the session solver needs.
 //!
 //! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
@@ -25,8 +26,9 @@ use crate::decimal::Fixed;
 use crate::model::{Convention, Tilt};
 use crate::procedure::{ProcedureConfig, ProcedureState};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
+use crate::stage0::{ClosingReversal, Reversal};
 use crate::stage1::AxisOneTurn;
-use crate::stage2::{FitResult, PoseReading};
+use crate::stage2::{Extras, FitResult, PoseReading};
 use core::fmt::{self, Write};
 
 /// A line of output: long enough for the widest export line.
@@ -92,7 +94,7 @@ pub fn export<'a, T: Real>(
     }
 }
 
-const EXPORT_HEAD: usize = 6;
+const EXPORT_HEAD: usize = 7;
 
 impl<T: Real> Export<'_, T> {
     fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
@@ -144,6 +146,7 @@ impl<T: Real> Export<'_, T> {
                 }
                 None => w.write_str("# stage1 none"),
             },
+            5 => write_fit_extras(w, self.config.fit.extras),
             _ => w.write_str(LOG_HEADER),
         }
     }
@@ -487,6 +490,67 @@ pub enum MetaItem<T> {
     /// `# stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` (`None` for
     /// `none`): the readings and the commanded joints 1 (before the half turn) and 2.
     Stage1(Option<AxisOneTurn<T>>),
+    /// `# stage0_reversal_deg first x,y second x,y temp_c t|none`: stage 0's own
+    /// readings and temperature (the bias follows from them).
+    Stage0Reversal(ClosingReversal<T>),
+    /// `# stage1_temp_c t`: the sensor's temperature during stage 1.
+    Stage1Temperature(T),
+    /// `# closing_reversal_deg first x,y second x,y temp_c t|none`: the reversal after
+    /// stage 2 that measures the bias' drift.
+    Closing(ClosingReversal<T>),
+    /// `# fit_extras gain,cross_z,…|none`: what the pendant's fit estimated.
+    FitExtras(Extras),
+}
+
+/// The names of [`Extras`]' groups in `# fit_extras`, in order.
+const EXTRAS_NAMES: [&str; 6] = ["gain", "cross_z", "sag", "bias_x", "bias_y", "drift"];
+
+fn extras_flags(e: Extras) -> [bool; 6] {
+    [e.gain, e.cross_z, e.sag, e.bias_x, e.bias_y, e.drift]
+}
+
+/// Writes `# fit_extras a,b,…|none`: the terms the pendant's fit estimated, so the
+/// desktop solves the session with the same model.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_fit_extras(w: &mut Line, extras: Extras) -> fmt::Result {
+    w.write_str("# fit_extras ")?;
+    let mut any = false;
+    for (name, on) in EXTRAS_NAMES.iter().zip(extras_flags(extras)) {
+        if on {
+            if any {
+                w.write_char(',')?;
+            }
+            w.write_str(name)?;
+            any = true;
+        }
+    }
+    if !any {
+        w.write_str("none")?;
+    }
+    Ok(())
+}
+
+/// Writes a reversal with its temperature as a metadata line: `# KEY first x,y second
+/// x,y temp_c t|none`.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_reversal<T: Real>(w: &mut Line, key: &str, r: &ClosingReversal<T>) -> fmt::Result {
+    write!(w, "# {key} first ")?;
+    deg(w, r.reversal.first.x_rad)?;
+    w.write_char(',')?;
+    deg(w, r.reversal.first.y_rad)?;
+    w.write_str(" second ")?;
+    deg(w, r.reversal.second.x_rad)?;
+    w.write_char(',')?;
+    deg(w, r.reversal.second.y_rad)?;
+    w.write_str(" temp_c ")?;
+    match r.temperature_c {
+        Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), 2)),
+        None => w.write_str("none"),
+    }
 }
 
 /// Reads a metadata comment (the text after `#`). `Ok(None)` for other comments.
@@ -567,6 +631,83 @@ pub fn parse_meta<T: Real>(
                     }
                     _ => return Err(bad),
                 }
+            }
+        }
+        "fit_extras" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "fit_extras",
+            };
+            let list = rest.next().ok_or(bad)?;
+            if rest.next().is_some() {
+                return Err(bad);
+            }
+            let mut flags = [false; 6];
+            if list != "none" {
+                for name in list.split(',') {
+                    let k = EXTRAS_NAMES.iter().position(|n| *n == name).ok_or(bad)?;
+                    flags[k] = true;
+                }
+            }
+            MetaItem::FitExtras(Extras {
+                gain: flags[0],
+                cross_z: flags[1],
+                sag: flags[2],
+                bias_x: flags[3],
+                bias_y: flags[4],
+                drift: flags[5],
+            })
+        }
+        "stage1_temp_c" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "stage1_temp_c",
+            };
+            match (rest.next().and_then(&parse), rest.next()) {
+                (Some(t), None)
+                    if t.is_finite()
+                        && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(&t) =>
+                {
+                    MetaItem::Stage1Temperature(T::lit(t))
+                }
+                _ => return Err(bad),
+            }
+        }
+        "stage0_reversal_deg" | "closing_reversal_deg" => {
+            let key: &'static str = if key == "closing_reversal_deg" {
+                "closing_reversal_deg"
+            } else {
+                "stage0_reversal_deg"
+            };
+            let bad = LogError::BadMetadata { line, key };
+            let first = (rest.next() == Some("first"))
+                .then(|| pair(rest.next()))
+                .flatten();
+            let second = (rest.next() == Some("second"))
+                .then(|| pair(rest.next()))
+                .flatten();
+            let temperature = match (rest.next(), rest.next()) {
+                (Some("temp_c"), Some("none")) => Some(None),
+                (Some("temp_c"), Some(t)) => parse(t)
+                    .filter(|t| {
+                        t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t)
+                    })
+                    .map(|t| Some(T::lit(t))),
+                _ => None,
+            };
+            match (first, second, temperature, rest.next()) {
+                (Some(first), Some(second), Some(temperature_c), None) => {
+                    let r = ClosingReversal {
+                        reversal: Reversal { first, second },
+                        temperature_c,
+                    };
+                    if key == "closing_reversal_deg" {
+                        MetaItem::Closing(r)
+                    } else {
+                        MetaItem::Stage0Reversal(r)
+                    }
+                }
+                _ => return Err(bad),
             }
         }
         _ => return Ok(None),
@@ -707,6 +848,64 @@ mod tests {
         assert_eq!(back[0].temperature_c, Some(23.25));
         assert!(isclose(back[0].reading.x_rad, p.reading.x_rad, 0.0, tol));
         assert!(isclose(back[0].reading.y_rad, p.reading.y_rad, 0.0, tol));
+    }
+
+    #[test]
+    fn reversals_and_temperatures_round_trip() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        let r = ClosingReversal {
+            reversal: Reversal {
+                first: Tilt::from_deg(1.25_f64, -0.5),
+                second: Tilt::from_deg(-0.75, 0.125),
+            },
+            temperature_c: Some(25.5),
+        };
+        for (key, closing) in [
+            ("closing_reversal_deg", true),
+            ("stage0_reversal_deg", false),
+        ] {
+            let mut w = Line::new();
+            write_reversal(&mut w, key, &r).unwrap();
+            let text = w.as_str().trim_start_matches('#');
+            match parse_meta::<f64>(text, 1, parse).unwrap() {
+                Some(MetaItem::Closing(b)) if closing => assert_eq!(b.temperature_c, Some(25.5)),
+                Some(MetaItem::Stage0Reversal(b)) if !closing => {
+                    assert!(isclose(
+                        b.reversal.second.y_rad,
+                        r.reversal.second.y_rad,
+                        0.0,
+                        1e-14
+                    ));
+                }
+                other => panic!("{key}: {other:?}"),
+            }
+        }
+        assert_eq!(
+            parse_meta::<f64>("stage1_temp_c 24.1", 1, parse),
+            Ok(Some(MetaItem::Stage1Temperature(24.1)))
+        );
+        let e = Extras {
+            gain: true,
+            sag: true,
+            bias_y: true,
+            ..Extras::NONE
+        };
+        let mut w = Line::new();
+        write_fit_extras(&mut w, e).unwrap();
+        assert_eq!(w.as_str(), "# fit_extras gain,sag,bias_y");
+        assert_eq!(
+            parse_meta::<f64>(w.as_str().trim_start_matches('#'), 1, parse),
+            Ok(Some(MetaItem::FitExtras(e)))
+        );
+        assert!(parse_meta::<f64>("fit_extras gain,wobble", 1, parse).is_err());
+        for junk in [
+            "stage1_temp_c hot",
+            "stage1_temp_c 900",
+            "closing_reversal_deg first 1,2 second 3,4",
+            "closing_reversal_deg first 1,2 second 3,4 temp_c x",
+        ] {
+            assert!(parse_meta::<f64>(junk, 7, parse).is_err(), "{junk}");
+        }
     }
 
     #[test]

@@ -16,7 +16,7 @@
 
 use crate::error::StageError;
 use crate::linalg::Square;
-use crate::model::{Arm, BaseTilt, Convention, SensorBias, SensorModel, Tilt};
+use crate::model::{Arm, BaseTilt, Convention, Gain, SensorBias, SensorModel, Tilt};
 use crate::real::Real;
 use crate::stage0::check_reading;
 use nalgebra::Vector3;
@@ -73,15 +73,15 @@ impl<T: Real> Stage1Result<T> {
     }
 }
 
-/// The reading and its derivatives with respect to (α, β, Δθ2, bias y) and bias x, of
-/// the upper-arm pendant.
+/// The reading of the upper-arm pendant, its derivatives with respect to (α, β, Δθ2,
+/// bias y), and those with respect to bias x.
 fn predict<T: Real>(
     arm: &Arm<T>,
     sensor: &SensorModel<T>,
     p: &[T; UNKNOWNS],
     j1_rad: T,
     j2_rad: T,
-) -> (Tilt<T>, [[T; UNKNOWNS]; 2]) {
+) -> (Tilt<T>, [[T; UNKNOWNS]; 2], [T; 2]) {
     let base = BaseTilt {
         alpha_rad: p[0],
         beta_rad: p[1],
@@ -94,20 +94,21 @@ fn predict<T: Real>(
     // Turning joint 2 by dq turns the up vector in link 2 by (u × a₂)·dq.
     let up_link2 = link2.inverse() * up_base;
     let d_j2 = arm.upper_arm_mount.inverse() * up_link2.cross(&arm.joints[1].axis.unit());
-    let a = sensor.gain.apply(&u);
-    let (t, grad) = sensor.convention.read_with_gradient(&a);
-    let through = |axis: usize, dv: &Vector3<T>| grad[axis].dot(&sensor.gain.apply(dv));
+    let read = sensor.read_up(&u, &Tilt::new(sensor.bias.x_rad, p[3]));
+    let grad = read.grad;
+    let through = |axis: usize, dv: &Vector3<T>| grad[axis].dot(&sensor.gain.apply_linear(dv));
     let mut rows = [[T::zero(); UNKNOWNS]; 2];
+    let mut bias_x = [T::zero(); 2];
     for (axis, row) in rows.iter_mut().enumerate() {
         *row = [
             through(axis, &d_alpha),
             through(axis, &d_beta),
             through(axis, &d_j2),
-            T::from_bool(axis == 1),
+            read.d_bias[axis][1],
         ];
+        bias_x[axis] = read.d_bias[axis][0];
     }
-    let reading = Tilt::new(t.x_rad + sensor.bias.x_rad, t.y_rad + p[3]);
-    (reading, rows)
+    (read.reading, rows, bias_x)
 }
 
 impl<T: Real> AxisOneTurn<T> {
@@ -127,27 +128,50 @@ impl<T: Real> AxisOneTurn<T> {
         bias: Option<(&SensorBias<T>, T)>,
         range_rad: T,
     ) -> Result<Stage1Result<T>, StageError> {
+        self.solve_with_gain(arm, convention, Gain::default(), bias, range_rad)
+    }
+
+    /// As [`solve`](Self::solve), with the sensor's gain and cross-axis errors known
+    /// (stage 2 estimates them): a 1 % gain error on the upper arm's ~1° of tilt is
+    /// 0.01° in Δθ2 otherwise.
+    ///
+    /// # Errors
+    /// As [`solve`](Self::solve).
+    pub fn solve_with_gain(
+        &self,
+        arm: &Arm<T>,
+        convention: Convention,
+        gain: Gain<T>,
+        bias: Option<(&SensorBias<T>, T)>,
+        range_rad: T,
+    ) -> Result<Stage1Result<T>, StageError> {
         check_reading(&self.before, range_rad)?;
         check_reading(&self.after, range_rad)?;
         if !(self.j1_rad.is_finite() && self.j2_rad.is_finite()) {
             return Err(StageError::NonFiniteCommand);
         }
         let (bx, bx_var) = bias.map_or((T::zero(), T::zero()), |(b, v)| (b.x_rad, v));
-        let sensor = SensorModel::new(convention, Tilt::new(bx, T::zero()));
+        let sensor = SensorModel {
+            gain,
+            ..SensorModel::new(convention, Tilt::new(bx, T::zero()))
+        };
         let j1 = [self.j1_rad, self.j1_rad + T::pi()];
         let measured = [self.before, self.after];
         let mut p = [T::zero(); UNKNOWNS];
         let mut jac = Square::<T, UNKNOWNS>::zeros(UNKNOWNS);
+        let mut j_bx = [T::zero(); UNKNOWNS];
         let mut converged = false;
         for _ in 0..MAX_STEPS {
             let mut r = [T::zero(); UNKNOWNS];
             for (k, (&q1, m)) in j1.iter().zip(&measured).enumerate() {
-                let (t, rows) = predict(arm, &sensor, &p, q1, self.j2_rad);
+                let (t, rows, bx_rows) = predict(arm, &sensor, &p, q1, self.j2_rad);
                 let d = m.minus(&t);
                 r[2 * k] = d.x_rad;
                 r[2 * k + 1] = d.y_rad;
                 jac.m[2 * k] = rows[0];
                 jac.m[2 * k + 1] = rows[1];
+                j_bx[2 * k] = bx_rows[0];
+                j_bx[2 * k + 1] = bx_rows[1];
             }
             let step = solve4(&jac, &r).ok_or(StageError::InconsistentReading)?;
             let size = step.iter().fold(T::zero(), |m, s| m.max(s.abs()));
@@ -169,8 +193,9 @@ impl<T: Real> AxisOneTurn<T> {
         if svd.condition_number() > T::lit(MAX_CONDITION) {
             return Err(StageError::Unresolvable);
         }
-        let covariance = propagate(&jac, bx_var).ok_or(StageError::Unresolvable)?;
-        let with_readings_only = propagate(&jac, T::zero()).ok_or(StageError::Unresolvable)?;
+        let covariance = propagate(&jac, &j_bx, bx_var).ok_or(StageError::Unresolvable)?;
+        let with_readings_only =
+            propagate(&jac, &j_bx, T::zero()).ok_or(StageError::Unresolvable)?;
         let covariance_from_stage0 = core::array::from_fn(|i| {
             core::array::from_fn(|j| covariance[i][j] - with_readings_only[i][j])
         });
@@ -228,8 +253,12 @@ fn solve4<T: Real>(j: &Square<T, UNKNOWNS>, r: &[T; UNKNOWNS]) -> Option<[T; UNK
 
 /// Covariance of (α, β, Δθ2, bias x, bias y), unit reading variance: the solution moves
 /// by `J⁻¹·(n − J_bx·e_bx)` for reading noise `n` and a stage-0 bias error `e_bx`
-/// (`J_bx` = 1 on both x readings).
-fn propagate<T: Real>(jac: &Square<T, UNKNOWNS>, bx_var: T) -> Option<[[T; 5]; 5]> {
+/// (`J_bx`: the readings' derivatives with respect to bias x).
+fn propagate<T: Real>(
+    jac: &Square<T, UNKNOWNS>,
+    j_bx: &[T; UNKNOWNS],
+    bx_var: T,
+) -> Option<[[T; 5]; 5]> {
     // Columns of J⁻¹, and J⁻¹·J_bx.
     let mut inv = [[T::zero(); UNKNOWNS]; UNKNOWNS];
     for col in 0..UNKNOWNS {
@@ -240,7 +269,8 @@ fn propagate<T: Real>(jac: &Square<T, UNKNOWNS>, bx_var: T) -> Option<[[T; 5]; 5
             row[col] = xr;
         }
     }
-    let g_bx: [T; UNKNOWNS] = core::array::from_fn(|i| inv[i][0] + inv[i][2]);
+    let g_bx: [T; UNKNOWNS] =
+        core::array::from_fn(|i| (0..UNKNOWNS).fold(T::zero(), |s, k| s + inv[i][k] * j_bx[k]));
     // Unknown order (α, β, Δθ2, by) → output order (α, β, Δθ2, bx, by).
     let out_index = [0usize, 1, 2, 4];
     let mut cov = [[T::zero(); 5]; 5];
@@ -340,7 +370,7 @@ mod properties {
                 first: sensor.reading(&surface),
                 second: sensor.reading(&(surface * rot_z(core::f64::consts::PI))),
             };
-            let b = rev.bias(0.5).unwrap();
+            let b = rev.bias(c, 0.5).unwrap();
             prop_assert!((b.x_rad - bx).abs() < 1e-14 && (b.y_rad - by).abs() < 1e-14);
         }
 

@@ -52,6 +52,7 @@ fn calibrate(p: &Profile, seed: u64) -> ([f64; ARM_JOINTS], [f64; ARM_JOINTS]) {
         arm: p.arm,
         base_tilt: BaseTilt::from_deg(u(0.5), u(0.5)),
         offsets_rad,
+        errors: zerocal_sim::robot::RobotErrors::none(),
     };
     let bias = Tilt::from_deg(u(0.05), u(0.05));
     let mut sensor = SimInclinometer::new(Convention::Rpy, bias, cfg.noise, rng.gen());

@@ -35,7 +35,7 @@ fn stage0_and_stage1_are_exact_in_3d() {
             first: sensor.exact(&surface),
             second: sensor.exact(&(surface * rot_z(std::f64::consts::PI))),
         };
-        let found = rev.bias(RANGE_RAD).expect("in range");
+        let found = rev.bias(conv, RANGE_RAD).expect("in range");
         worst_bias = worst_bias
             .max((found.x_rad - bias.x_rad).to_degrees().abs())
             .max((found.y_rad - bias.y_rad).to_degrees().abs());

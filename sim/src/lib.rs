@@ -9,14 +9,17 @@
 #![forbid(unsafe_code)]
 
 pub mod inclinometer;
+pub mod montecarlo;
 pub mod pendant;
 pub mod poses;
 pub mod positioning;
 pub mod robot;
 pub mod scenario;
 pub mod scl3300_device;
+pub mod sensor;
 pub mod session;
 pub mod stats;
+pub mod world;
 
 pub use inclinometer::{Noise, SimInclinometer};
 pub use poses::{PoseSampler, SamplerError};

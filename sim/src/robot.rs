@@ -1,8 +1,247 @@
-//! A robot whose true joint zeros differ from its controller's by hidden offsets.
+//! A robot whose true joint zeros differ from its controller's by hidden offsets, and
+//! which, like a real one, sags under gravity, has backlash in its gears and does not
+//! repeat a pose exactly ([`RobotErrors`]).
 
-use nalgebra::Rotation3;
+use nalgebra::{Rotation3, Vector3};
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+use rand_distr::{Distribution, StandardNormal};
 use zerocal_core::model::{Arm, BaseTilt, JointAxis, JOINTS, WRIST_JOINTS};
 use zerocal_core::real::deg_to_rad;
+use zerocal_core::stage2::MassModel;
+
+/// Which of the robot's error sources are on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RobotSources {
+    /// Gravity sag of joints 2 and 3.
+    pub sag: bool,
+    /// Gear backlash (lost motion).
+    pub backlash: bool,
+    /// Pose repeatability.
+    pub repeatability: bool,
+}
+
+impl RobotSources {
+    /// Every source on: the default.
+    pub const ALL: RobotSources = RobotSources {
+        sag: true,
+        backlash: true,
+        repeatability: true,
+    };
+    /// A rigid, backlash-free, perfectly repeatable robot.
+    pub const NONE: RobotSources = RobotSources {
+        sag: false,
+        backlash: false,
+        repeatability: false,
+    };
+}
+
+/// The ranges a robot's errors are drawn from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RobotSpec {
+    /// Sag of joints 2 and 3 at the largest gravity torque the arm sees (deg), drawn
+    /// per joint within this range: issue 15's figure ("0.01-0.02° at full lever"). No
+    /// public compliance of a named arm was found (docs/error-budget.md): joint
+    /// stiffness papers (Dumas et al.; Klimchik et al.) were not reachable.
+    pub sag_full_lever_deg: (f64, f64),
+    /// Lost motion per joint (deg), drawn within 0..this: < 1 arc min for an RV gear
+    /// (Nabtesco RV-42N product page: lost motion < 1 arc min) and of the same order for
+    /// Harmonic Drive gears (CSF catalogue, Table 40: 1 arc min transmission accuracy).
+    pub lost_motion_deg: f64,
+    /// Gravity torque, as a fraction of the joint's largest, below which friction holds
+    /// the output on the side it was driven to (approach) rather than gravity's side.
+    /// A stated default: no source gives it.
+    pub friction_fraction: f64,
+    /// Repeatability per joint, 1σ (deg): issue 15's 0.0015° per joint; six joints so
+    /// give about 0.004° of flange orientation, within the 87 µrad (0.005°) measured
+    /// for an ABB IRB 1600 (Slamani, Nubiola and Bonev, Industrial Robot 39(1), 2012).
+    pub repeatability_deg: f64,
+    /// Mass of the pendant and its bracket (kg) and its centre in the flange frame (m):
+    /// the pendant's own design figure.
+    pub pendant_kg: f64,
+}
+
+impl RobotSpec {
+    /// The figures above.
+    pub const DEFAULT: RobotSpec = RobotSpec {
+        sag_full_lever_deg: (0.01, 0.02),
+        lost_motion_deg: 1.0 / 60.0,
+        friction_fraction: 0.1,
+        repeatability_deg: 0.0015,
+        pendant_kg: 0.25,
+    };
+}
+
+/// One robot's errors.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RobotErrors {
+    /// Compliance of each joint (rad per N·m); only joints 2 and 3 sag here.
+    pub compliance_rad_per_nm: [f64; JOINTS],
+    /// The true masses (kg) the sag comes from.
+    pub masses: Option<MassModel<f64>>,
+    /// Largest gravity torque of each joint over its range (N·m).
+    pub full_torque_nm: [f64; JOINTS],
+    /// Lost motion per joint (rad).
+    pub lost_motion_rad: [f64; JOINTS],
+    /// Friction threshold as a fraction of `full_torque_nm`.
+    pub friction_fraction: f64,
+    /// Repeatability per joint, 1σ (rad).
+    pub repeatability_rad: f64,
+}
+
+impl RobotErrors {
+    /// None at all.
+    pub fn none() -> Self {
+        RobotErrors {
+            compliance_rad_per_nm: [0.0; JOINTS],
+            masses: None,
+            full_torque_nm: [0.0; JOINTS],
+            lost_motion_rad: [0.0; JOINTS],
+            friction_fraction: 0.0,
+            repeatability_rad: 0.0,
+        }
+    }
+
+    /// Errors drawn for `arm`: masses from `masses` (the profile's, or uniform per
+    /// metre) each scaled by a factor in 0.7..1.3 (the true arm is not the model's), the
+    /// pendant added at the flange, and the compliances that give the drawn sag at the
+    /// largest torque found over a grid of joints 2 and 3 within `limits_rad`.
+    pub fn draw(
+        arm: &Arm<f64>,
+        masses: Option<MassModel<f64>>,
+        limits_rad: &[(f64, f64); JOINTS],
+        spec: &RobotSpec,
+        sources: RobotSources,
+        rng: &mut ChaCha8Rng,
+    ) -> Self {
+        let mut e = RobotErrors::none();
+        e.friction_fraction = spec.friction_fraction;
+        if sources.repeatability {
+            e.repeatability_rad = deg_to_rad(spec.repeatability_deg);
+        }
+        if sources.backlash {
+            for l in &mut e.lost_motion_rad {
+                *l = deg_to_rad(rng.gen_range(0.0..=spec.lost_motion_deg));
+            }
+        }
+        if let Some(mut m) = masses {
+            for kg in &mut m.link_kg {
+                *kg *= rng.gen_range(0.7..=1.3);
+            }
+            // The pendant hangs 5 cm out from the flange: a stated design figure.
+            m.pendant_kg = spec.pendant_kg;
+            m.pendant_com_m = Vector3::new(0.0, 0.0, 0.05);
+            e.masses = Some(m);
+            e.full_torque_nm = full_torques(arm, &m, limits_rad);
+            // Friction holds the wrist (light loads) wherever it was driven; joints 2-3
+            // are the loaded ones.
+            if sources.sag {
+                for k in [1, 2] {
+                    let (lo, hi) = spec.sag_full_lever_deg;
+                    if e.full_torque_nm[k] > 0.0 {
+                        e.compliance_rad_per_nm[k] =
+                            deg_to_rad(rng.gen_range(lo..=hi)) / e.full_torque_nm[k];
+                    }
+                }
+            }
+        }
+        e
+    }
+
+    /// The gravity torque about each joint's axis at true angles `q_rad` (N·m), the
+    /// base level: `Σᵢ≥ₖ mᵢ·g·aₖ·((cᵢ − pₖ) × −ẑ)`.
+    pub fn gravity_torques_nm(&self, arm: &Arm<f64>, q_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
+        match &self.masses {
+            Some(m) => gravity_torques(arm, m, q_rad),
+            None => [0.0; JOINTS],
+        }
+    }
+
+    /// Where each joint really is, for a commanded pose reached with the given approach
+    /// directions (+1: the joint arrived moving positive), its zero already applied
+    /// (`q_rad` = commanded + offset): sag, the side of the backlash, repeatability.
+    pub fn deflect(
+        &self,
+        arm: &Arm<f64>,
+        q_rad: &[f64; JOINTS],
+        approach: &[i8; JOINTS],
+        rng: &mut ChaCha8Rng,
+    ) -> [f64; JOINTS] {
+        let tau = self.gravity_torques_nm(arm, q_rad);
+        core::array::from_fn(|k| {
+            let sag = self.compliance_rad_per_nm[k] * tau[k];
+            // The output lags the motor by half the lost motion on the side it was
+            // driven from, unless gravity pulls it across to its own side.
+            let loaded = LOADED_JOINTS.contains(&k);
+            let side = if loaded
+                && self.full_torque_nm[k] > 0.0
+                && tau[k].abs() > self.friction_fraction * self.full_torque_nm[k]
+            {
+                tau[k].signum()
+            } else {
+                -f64::from(approach[k].signum())
+            };
+            let backlash = 0.5 * self.lost_motion_rad[k] * side;
+            let z: f64 = StandardNormal.sample(rng);
+            q_rad[k] + sag + backlash + self.repeatability_rad * z
+        })
+    }
+}
+
+/// Joints 2 and 3 (indices 1, 2) carry the arm: gravity can pull their output across
+/// the play. The wrist joints carry the wrist and a 0.25 kg pendant: friction holds
+/// them on the side they were driven to (a stated model, no source gives the
+/// threshold).
+const LOADED_JOINTS: [usize; 2] = [1, 2];
+
+/// Gravity torques (N·m) about each joint at `q_rad`, base level.
+pub fn gravity_torques(arm: &Arm<f64>, m: &MassModel<f64>, q_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
+    const G: f64 = 9.81;
+    let (frames, flange) = arm.frames(q_rad);
+    let down = -Vector3::z() * G;
+    let mut points = [(0.0, Vector3::zeros()); JOINTS + 1];
+    for i in 0..JOINTS {
+        points[i] = (
+            m.link_kg[i],
+            frames[i].translation_m + frames[i].rotation * m.com_m[i],
+        );
+    }
+    points[JOINTS] = (
+        m.pendant_kg,
+        flange.translation_m + flange.rotation * m.pendant_com_m,
+    );
+    core::array::from_fn(|k| {
+        let axis = frames[k].rotation * arm.joints[k].axis.unit::<f64>();
+        points
+            .iter()
+            .skip(k)
+            .map(|(kg, c)| kg * axis.dot(&(c - frames[k].translation_m).cross(&down)))
+            .sum()
+    })
+}
+
+/// The largest |torque| of each joint over a grid of joints 2 and 3 in their limits
+/// (the others at zero: the loaded joints' worst case is the arm stretched out).
+fn full_torques(
+    arm: &Arm<f64>,
+    m: &MassModel<f64>,
+    limits_rad: &[(f64, f64); JOINTS],
+) -> [f64; JOINTS] {
+    let mut worst = [0.0f64; JOINTS];
+    let steps = 36;
+    for a in 0..=steps {
+        for b in 0..=steps {
+            let mut q = [0.0; JOINTS];
+            let at = |(lo, hi): (f64, f64), i: usize| lo + (hi - lo) * i as f64 / steps as f64;
+            q[1] = at(limits_rad[1], a);
+            q[2] = at(limits_rad[2], b);
+            for (w, t) in worst.iter_mut().zip(gravity_torques(arm, m, &q)) {
+                *w = w.max(t.abs());
+            }
+        }
+    }
+    worst
+}
 
 /// The robot as the world sees it: true offsets and base tilt, unknown to the pendant.
 #[derive(Clone, Copy, Debug)]
@@ -14,6 +253,8 @@ pub struct SimRobot {
     /// True Δθ1..Δθ6 = true − commanded (rad). Δθ1 turns about the vertical: no
     /// inclinometer sees it.
     pub offsets_rad: [f64; JOINTS],
+    /// Sag, backlash and repeatability.
+    pub errors: RobotErrors,
 }
 
 impl SimRobot {
@@ -27,6 +268,7 @@ impl SimRobot {
             arm: Arm::paper(),
             base_tilt: BaseTilt::from_deg(base_tilt_deg.0, base_tilt_deg.1),
             offsets_rad,
+            errors: RobotErrors::none(),
         }
     }
 
@@ -60,7 +302,19 @@ impl SimRobot {
         core::array::from_fn(|k| commanded_rad[k] + self.offsets_rad[k])
     }
 
-    /// Orientation of the flange pendant for commanded θ1..θ6 (rad).
+    /// Where the joints really are for a commanded pose reached with `approach`: the
+    /// zero offsets, then sag, backlash and repeatability.
+    pub fn reached_joints(
+        &self,
+        commanded_rad: &[f64; JOINTS],
+        approach: &[i8; JOINTS],
+        rng: &mut ChaCha8Rng,
+    ) -> [f64; JOINTS] {
+        self.errors
+            .deflect(&self.arm, &self.true_joints(commanded_rad), approach, rng)
+    }
+
+    /// Orientation of the flange pendant for commanded θ1..θ6 (rad), rigid and exact.
     pub fn flange_orientation(&self, commanded_rad: &[f64; JOINTS]) -> Rotation3<f64> {
         self.arm
             .flange_sensor(&self.base_tilt, &self.true_joints(commanded_rad))

@@ -160,6 +160,7 @@ impl SimSession {
                 uniform(&mut rng, cfg.max_base_tilt_deg),
             ),
             offsets_rad: [0.0; JOINTS],
+            errors: crate::robot::RobotErrors::none(),
         };
         for k in 2..JOINTS {
             robot.offsets_rad[k] = deg_to_rad(uniform(&mut rng, off));
@@ -247,6 +248,8 @@ impl SimSession {
                 .map_or(BiasSource::Unknown, BiasSource::Reversal),
             stage1: self.stage1,
             poses: &self.poses,
+            temperatures: Default::default(),
+            closing: None,
         }
     }
 

@@ -161,6 +161,7 @@ fn run(case: &Case) {
         Err(SessionError::Stage0(e)) => hprintln!("case {} stage0 error {}", name, Terse(&e)),
         Err(SessionError::Stage1(e)) => hprintln!("case {} stage1 error {}", name, Terse(&e)),
         Err(SessionError::Stage2(e)) => hprintln!("case {} fit error {}", name, Terse(&e)),
+        Err(SessionError::Warmed { .. }) => hprintln!("case {} session error Warmed", name),
     }
 }
 

@@ -10,7 +10,9 @@ mod arm;
 mod sensor;
 
 pub use arm::{cast_rotation, cast_vector, Arm, Joint, Placement, JOINTS};
-pub use sensor::{Convention, Gain, SensorBias, SensorModel, Tilt, TiltAxis, UnknownName};
+pub use sensor::{
+    Convention, Gain, SensorBias, SensorModel, SensorRead, Tilt, TiltAxis, UnknownName,
+};
 
 use crate::real::{deg_to_rad, Real};
 use nalgebra::{Rotation3, Vector3};

@@ -203,10 +203,13 @@ impl std::error::Error for UnknownName {}
 /// The sensor's zero error: a reading is `convention(u) + bias`.
 pub type SensorBias<T> = Tilt<T>;
 
-/// The sensing axes' sensitivity and cross-axis errors near level: the chip measures
-/// `a = (I + E)·u` for the up vector `u`, with
-/// `E = [[xx, xy, 0], [yx, yy, 0], [0, 0, 0]]` (the overall scale `E_zz` changes no
-/// angle; `E_xz`, `E_yz` act as a bias).
+/// The sensing axes' sensitivity and cross-axis errors: the chip measures
+/// `a = u + E·(u − ẑ) + o` for the up vector `u`, with
+/// `E = [[xx, xy, xz], [yx, yy, yz], [zx, zy, 0]]` and `o` the offset. `E` acts on
+/// `u − ẑ` so that the bias stays what the pendant reads at level (what stage 0's
+/// reversal measures); `E_xz`, `E_yz` then matter only away from level, as
+/// `E·(cos t − 1)`: 0.0056° at 8° for the 1 % a MEMS part may have. The overall scale
+/// `E_zz` changes no angle to first order.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -219,15 +222,34 @@ pub struct Gain<T> {
     pub xy: T,
     /// y's response to x.
     pub yx: T,
+    /// x's response to z.
+    pub xz: T,
+    /// y's response to z.
+    pub yz: T,
+    /// z's response to x: the angles divide by z, so it tilts them by `zx·u_x·t`,
+    /// 0.01° at 8° of tilt on both axes for 1 %.
+    pub zx: T,
+    /// z's response to y.
+    pub zy: T,
 }
 
 impl<T: Real> Gain<T> {
-    /// `(I + E)·u`.
+    /// `u + E·(u − ẑ)`: the acceleration without the offset.
     pub fn apply(&self, u: &Vector3<T>) -> Vector3<T> {
+        let dz = u.z - T::one();
         Vector3::new(
-            u.x + self.xx * u.x + self.xy * u.y,
-            u.y + self.yx * u.x + self.yy * u.y,
-            u.z,
+            u.x + self.xx * u.x + self.xy * u.y + self.xz * dz,
+            u.y + self.yx * u.x + self.yy * u.y + self.yz * dz,
+            u.z + self.zx * u.x + self.zy * u.y,
+        )
+    }
+
+    /// `(I + E)·v`: how a change `v` of the up vector moves the acceleration.
+    pub fn apply_linear(&self, v: &Vector3<T>) -> Vector3<T> {
+        Vector3::new(
+            v.x + self.xx * v.x + self.xy * v.y + self.xz * v.z,
+            v.y + self.yx * v.x + self.yy * v.y + self.yz * v.z,
+            v.z + self.zx * v.x + self.zy * v.y,
         )
     }
 
@@ -238,6 +260,10 @@ impl<T: Real> Gain<T> {
             yy: self.yy + other.yy,
             xy: self.xy + other.xy,
             yx: self.yx + other.yx,
+            xz: self.xz + other.xz,
+            yz: self.yz + other.yz,
+            zx: self.zx + other.zx,
+            zy: self.zy + other.zy,
         }
     }
 }
@@ -267,10 +293,58 @@ impl<T: Real> SensorModel<T> {
 
     /// What this sensor reads at `orientation`.
     pub fn reading(&self, orientation: &Rotation3<T>) -> Tilt<T> {
-        let u = super::up_in_sensor(orientation);
-        let t = self.convention.read(&self.gain.apply(&u));
-        Tilt::new(t.x_rad + self.bias.x_rad, t.y_rad + self.bias.y_rad)
+        self.read_up(&super::up_in_sensor(orientation), &self.bias)
+            .reading
     }
+
+    /// The reading of the up vector `u` (the pendant's frame) with zero error `bias`
+    /// instead of this model's, and its derivatives.
+    ///
+    /// The bias is where the physics of the two conventions differ. An `rpy` sensor
+    /// (the paper's) reads angles and adds its zero error to them. An `axis` sensor (a
+    /// MEMS accelerometer such as the SCL3300) computes its angles from accelerations,
+    /// and its zero error is an acceleration offset `o`: `a = (I + E)·u + o`, the angles
+    /// `atan2` of `a`. The offset is parametrised by the tilt it reads at level,
+    /// `o = (−b_y, b_x, 0)` in g. The two differ by `b·(1/cos t − 1)` at tilt `t`:
+    /// 0.018° for the SCL3300's ±1.15° offset at 10°, four times the accuracy aimed at.
+    pub fn read_up(&self, u: &Vector3<T>, bias: &Tilt<T>) -> SensorRead<T> {
+        let mut a = self.gain.apply(u);
+        if self.convention == Convention::Axis {
+            a.x -= bias.y_rad;
+            a.y += bias.x_rad;
+        }
+        let (t, grad) = self.convention.read_with_gradient(&a);
+        match self.convention {
+            Convention::Rpy => SensorRead {
+                reading: Tilt::new(t.x_rad + bias.x_rad, t.y_rad + bias.y_rad),
+                grad,
+                d_bias: [[T::one(), T::zero()], [T::zero(), T::one()]],
+                acceleration: a,
+            },
+            Convention::Axis => SensorRead {
+                reading: t,
+                d_bias: [[grad[0].y, -grad[0].x], [grad[1].y, -grad[1].x]],
+                grad,
+                acceleration: a,
+            },
+        }
+    }
+}
+
+/// A reading with what the fits need of it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SensorRead<T: Real> {
+    /// The reading.
+    pub reading: Tilt<T>,
+    /// Gradient of each reading (x, y) with respect to the acceleration `a` the angles
+    /// are computed from: a change `dv` of the up vector moves reading `i` by
+    /// `grad[i]·(I + E)·dv`.
+    pub grad: [Vector3<T>; 2],
+    /// `d_bias[i][j]`: reading `i`'s derivative with respect to the bias' component `j`
+    /// (x, y).
+    pub d_bias: [[T; 2]; 2],
+    /// The acceleration the angles were computed from (g).
+    pub acceleration: Vector3<T>,
 }
 
 #[cfg(test)]

@@ -396,7 +396,7 @@ fn capture<T: Real>(
                 first,
                 second: mean,
             })
-            .bias(config.fit.sensor_range_rad)
+            .bias(config.convention, config.fit.sensor_range_rad)
             {
                 Ok(b) => {
                     s.bias = Some(b);

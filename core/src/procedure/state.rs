@@ -8,7 +8,7 @@ use crate::model::{Tilt, JOINTS};
 use crate::plan::{PoseList, MAX_POSES};
 use crate::real::Real;
 use crate::report::Verdict;
-use crate::session::{self, BiasSource, SessionError, SessionReadings};
+use crate::session::{self, BiasSource, SessionError, SessionReadings, StageTemperatures};
 use crate::stage1::{AxisOneTurn, Stage1Result};
 use crate::stage2::{PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessFilter};
@@ -275,6 +275,10 @@ impl<T: Real> ProcedureState<T> {
             bias: self.bias_source(),
             stage1: self.axis_one_turn(config)?,
             poses,
+            // The pendant keeps stage 0's bias, not its temperature: the drift model
+            // needs the closing reversal, which this procedure does not yet take.
+            temperatures: StageTemperatures::default(),
+            closing: None,
         })
     }
 

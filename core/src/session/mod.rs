@@ -9,12 +9,20 @@
 //! and the result is Δθ2..Δθ6 with their full covariance. The pendant's procedure, the CLI, the simulators and the on-target
 //! check all call [`solve`].
 
+mod budget;
+
+pub use budget::{
+    budget, Budget, BudgetInputs, BudgetTerm, BUDGET_TERMS, COVERAGE_FACTOR,
+    DEFAULT_REPEATABILITY_DEG,
+};
+
 use crate::error::{FitError, StageError};
-use crate::model::{Arm, Convention, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
+use crate::model::{Arm, Convention, Gain, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
+use crate::plan::MAX_POSES;
 use crate::real::Real;
-use crate::stage0::Reversal;
+use crate::stage0::{BiasOverTemperature, ClosingReversal, Reversal};
 use crate::stage1::{AxisOneTurn, Stage1Result};
-use crate::stage2::{fit, FitConfig, FitResult, MassModel, PoseReading, Stage2Model};
+use crate::stage2::{fit, FitConfig, FitResult, MassModel, Param, PoseReading, Stage2Model};
 use core::fmt;
 
 /// Joints whose offsets a session finds: Δθ2..Δθ6.
@@ -48,7 +56,31 @@ pub struct SessionReadings<'a, T: Real> {
     pub stage1: AxisOneTurn<T>,
     /// Stage 2: every capture with all six commanded joints.
     pub poses: &'a [PoseReading<T>],
+    /// The sensor's temperature at stages 0 and 1, where recorded.
+    pub temperatures: StageTemperatures<T>,
+    /// The reversal on the bench after stage 2, if made: it measures the bias' drift.
+    pub closing: Option<ClosingReversal<T>>,
 }
+
+/// The sensor's temperature during stages 0 and 1 (°C), where recorded.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct StageTemperatures<T> {
+    /// During stage 0's reversal.
+    pub stage0_c: Option<T>,
+    /// During stage 1's half turn.
+    pub stage1_c: Option<T>,
+}
+
+/// Without a closing reversal the drift is unknown: stage 2's temperatures may differ
+/// from stage 0's by at most this (K). At the SCL3300's up to ~0.009 °/K
+/// (docs/error-budget.md) 0.5 K is 0.0045°, just inside the 0.005° aimed at.
+pub const MAX_UNMEASURED_DRIFT_K: f64 = 0.5;
+
+/// With a closing reversal the drift is linear between the two reversals' temperatures:
+/// a capture may lie outside them by at most this (K).
+pub const MAX_DRIFT_EXTRAPOLATION_K: f64 = 1.0;
 
 /// What stages 0-1 hand to stage 2: the model of the arm, the tilt, Δθ2 and the sensor,
 /// and how well they are known.
@@ -71,6 +103,21 @@ pub fn handover<T: Real>(
     bias: Option<&SensorBias<T>>,
     masses: Option<MassModel<T>>,
 ) -> Handover<T> {
+    let bias = bias.map(|b| BiasOverTemperature::constant(*b, None));
+    handover_at(stage1, arm, convention, bias.as_ref(), None, masses)
+}
+
+/// As [`handover`], with the bias following the temperature: the model's bias is
+/// stage 1's (x from the reversals at stage 1's temperature, y from the half turn),
+/// and it drifts from there as the reversals measured.
+pub fn handover_at<T: Real>(
+    stage1: &Stage1Result<T>,
+    arm: Arm<T>,
+    convention: Convention,
+    bias: Option<&BiasOverTemperature<T>>,
+    stage1_c: Option<T>,
+    masses: Option<MassModel<T>>,
+) -> Handover<T> {
     Handover {
         model: Stage2Model {
             arm,
@@ -78,9 +125,15 @@ pub fn handover<T: Real>(
             delta_theta2_rad: stage1.delta_theta2_rad,
             sensor: SensorModel::new(
                 convention,
-                Tilt::new(bias.map_or(T::zero(), |b| b.x_rad), stage1.bias_y_rad),
+                Tilt::new(
+                    bias.map_or(T::zero(), |b| b.at(stage1_c).x_rad),
+                    stage1.bias_y_rad,
+                ),
             ),
-            reference_temperature_c: T::zero(),
+            reference_temperature_c: stage1_c
+                .or(bias.and_then(|b| b.reference_c))
+                .unwrap_or(T::zero()),
+            drift_per_k: bias.map_or(Tilt::default(), |b| b.drift_per_k),
             masses,
         },
         covariance: stage1.covariance,
@@ -98,6 +151,15 @@ pub enum SessionError {
     Stage1(StageError),
     /// Stage 2 refused to give numbers.
     Stage2(FitError),
+    /// The pendant's temperature moved further than the bias model follows.
+    Warmed {
+        /// How far beyond what the model follows (K).
+        kelvin: f32,
+        /// The limit (K).
+        limit_k: f32,
+        /// Whether a closing reversal measured the drift.
+        drift_measured: bool,
+    },
 }
 
 impl fmt::Display for SessionError {
@@ -106,6 +168,25 @@ impl fmt::Display for SessionError {
             SessionError::Stage0(e) => write!(f, "stage 0: {e}"),
             SessionError::Stage1(e) => write!(f, "stage 1: {e}"),
             SessionError::Stage2(e) => write!(f, "stage 2: {e}"),
+            SessionError::Warmed {
+                kelvin,
+                limit_k,
+                drift_measured: false,
+            } => write!(
+                f,
+                "warm box: the pendant's temperature moved {kelvin:.1} K from stage 0's during \
+                 stage 2 (limit {limit_k:.1} K without a closing reversal): reverse it on the \
+                 bench again after stage 2 so that its drift is measured"
+            ),
+            SessionError::Warmed {
+                kelvin,
+                limit_k,
+                drift_measured: true,
+            } => write!(
+                f,
+                "warm box: a stage-2 capture lies {kelvin:.1} K outside the temperatures of the \
+                 two reversals (limit {limit_k:.1} K): let the pendant settle and repeat"
+            ),
         }
     }
 }
@@ -159,22 +240,114 @@ pub fn solve_stages01<T: Real>(
     convention: Convention,
     range_rad: T,
 ) -> Result<(Option<SensorBias<T>>, Stage1Result<T>), SessionError> {
-    let bias = match bias {
-        BiasSource::Reversal(r) => Some(r.bias(range_rad).map_err(SessionError::Stage0)?),
-        BiasSource::Stored(b) => Some(*b),
-        BiasSource::Unknown => None,
-    };
-    // A reversal's half-sum has half a reading's variance, a stored one too (it was
-    // such a half-sum).
-    let s1 = stage1
-        .solve(
+    let bias = bias_over_temperature(
+        bias,
+        &StageTemperatures::default(),
+        None,
+        convention,
+        range_rad,
+    )?;
+    let s1 = solve_stage1(
+        &bias,
+        None,
+        &Stage1Setup {
+            turn: stage1,
             arm,
             convention,
-            bias.as_ref().map(|b| (b, T::lit(0.5))),
             range_rad,
+        },
+        Gain::default(),
+        T::one(),
+    )?;
+    Ok((bias.map(|b| b.bias), s1))
+}
+
+fn bias_over_temperature<T: Real>(
+    bias: &BiasSource<T>,
+    temperatures: &StageTemperatures<T>,
+    closing: Option<&ClosingReversal<T>>,
+    convention: Convention,
+    range_rad: T,
+) -> Result<Option<BiasOverTemperature<T>>, SessionError> {
+    Ok(match bias {
+        BiasSource::Reversal(r) => Some(
+            BiasOverTemperature::measure(r, temperatures.stage0_c, closing, convention, range_rad)
+                .map_err(SessionError::Stage0)?,
+        ),
+        BiasSource::Stored(b) => Some(BiasOverTemperature::constant(*b, None)),
+        BiasSource::Unknown => None,
+    })
+}
+
+/// Stage 1 with the bias at its temperature (a reversal's half-sum has half a reading's
+/// variance, a stored bias too: it was such a half-sum).
+fn solve_stage1<T: Real>(
+    bias: &Option<BiasOverTemperature<T>>,
+    stage1_c: Option<T>,
+    setup: &Stage1Setup<'_, T>,
+    gain: Gain<T>,
+    captures_per_reading: T,
+) -> Result<Stage1Result<T>, SessionError> {
+    // Variances are in units of one reading of stages 1-2; a reversal's readings are
+    // single captures, `captures_per_reading` times noisier than a reading that
+    // averages that many.
+    let at = bias.as_ref().map(|b| {
+        (
+            b.at(stage1_c),
+            b.variance_factor(stage1_c) * captures_per_reading,
         )
-        .map_err(SessionError::Stage1)?;
-    Ok((bias, s1))
+    });
+    setup
+        .turn
+        .solve_with_gain(
+            setup.arm,
+            setup.convention,
+            gain,
+            at.as_ref().map(|(b, v)| (b, *v)),
+            setup.range_rad,
+        )
+        .map_err(SessionError::Stage1)
+}
+
+/// What stage 1 is solved on, besides the bias.
+struct Stage1Setup<'a, T: Real> {
+    turn: &'a AxisOneTurn<T>,
+    arm: &'a Arm<T>,
+    convention: Convention,
+    range_rad: T,
+}
+
+/// Refuses a session whose temperatures the bias model cannot follow.
+fn check_temperatures<T: Real>(
+    bias: &Option<BiasOverTemperature<T>>,
+    poses: &[PoseReading<T>],
+) -> Result<(), SessionError> {
+    let Some(b) = bias else { return Ok(()) };
+    let Some(t0) = b.reference_c else {
+        return Ok(());
+    };
+    let (lo, hi, limit, measured) = match b.closing_c {
+        Some(t1) => (
+            t0.min(t1),
+            t0.max(t1),
+            T::lit(MAX_DRIFT_EXTRAPOLATION_K),
+            true,
+        ),
+        None => (t0, t0, T::lit(MAX_UNMEASURED_DRIFT_K), false),
+    };
+    let worst = poses
+        .iter()
+        .filter_map(|p| p.temperature_c)
+        .map(|t| (lo - t).max(t - hi).max(T::zero()))
+        .fold(T::zero(), |m, d| m.max(d));
+    if worst > limit {
+        return Err(SessionError::Warmed {
+            kelvin: worst.to_f64() as f32,
+            limit_k: limit.to_f64() as f32,
+            drift_measured: measured,
+        });
+    }
+    Ok(())
 }
 
 /// Solves a session: stages 0, 1 and 2 and the covariance of Δθ2..Δθ6.
@@ -186,18 +359,36 @@ pub fn solve<T: Real>(
     config: &FitConfig<T>,
 ) -> SessionOutcome<T> {
     let range = config.sensor_range_rad;
-    let (bias, stage1) = match solve_stages01(
+    let temps = &readings.temperatures;
+    // Captures per stage-2 reading once repeats are merged: the session's readings
+    // (stage 1's too, taken the same way) average that many captures.
+    let per_reading = merge_repeats(readings.poses).map_or(T::one(), |m| {
+        T::lit(readings.poses.len() as f64) / T::lit(m.len().max(1) as f64)
+    });
+    let setup = Stage1Setup {
+        turn: &readings.stage1,
+        arm: &readings.arm,
+        convention: readings.convention,
+        range_rad: range,
+    };
+    let chain = bias_over_temperature(
         &readings.bias,
-        &readings.stage1,
-        &readings.arm,
+        temps,
+        readings.closing.as_ref(),
         readings.convention,
         range,
-    ) {
+    )
+    .and_then(|b| {
+        check_temperatures(&b, readings.poses)?;
+        let s1 = solve_stage1(&b, temps.stage1_c, &setup, Gain::default(), per_reading)?;
+        Ok((b, s1))
+    });
+    let (bias_t, stage1) = match chain {
         Ok(v) => v,
         Err(e) => {
             let bias = match readings.bias {
                 BiasSource::Stored(b) => Some(b),
-                BiasSource::Reversal(r) => r.bias(range).ok(),
+                BiasSource::Reversal(r) => r.bias(readings.convention, range).ok(),
                 BiasSource::Unknown => None,
             };
             return SessionOutcome {
@@ -207,24 +398,125 @@ pub fn solve<T: Real>(
             };
         }
     };
-    let h = handover(
-        &stage1,
-        readings.arm,
-        readings.convention,
-        bias.as_ref(),
-        readings.masses,
-    );
-    let fit_config = FitConfig {
-        model_covariance: h.covariance,
-        ..*config
+    let stage2 = |stage1: &Stage1Result<T>, residual_check: bool| {
+        let h = handover_at(
+            stage1,
+            readings.arm,
+            readings.convention,
+            bias_t.as_ref(),
+            temps.stage1_c,
+            readings.masses,
+        );
+        let fit_config = FitConfig {
+            model_covariance: h.covariance,
+            // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
+            handover_noise_rad: config.handover_noise_rad / per_reading.sqrt(),
+            max_residual_rms_rad: if residual_check {
+                config.max_residual_rms_rad
+            } else {
+                T::zero()
+            },
+            ..*config
+        };
+        let pairs = merge_repeats(readings.poses);
+        let poses = pairs.as_ref().map_or(readings.poses, |p| p.as_slice());
+        fit(&h.model, poses, &fit_config)
+            .map_err(SessionError::Stage2)
+            .map(|r| (h, r))
     };
-    let result = fit(&h.model, readings.poses, &fit_config)
-        .map_err(SessionError::Stage2)
-        .map(|r| combine(&stage1, &h, r));
+    let mut stage1 = stage1;
+    // The first pass has stage 1 without the sensor's gain: its residuals are not yet
+    // the session's, so only the last pass is judged by them.
+    let mut result = stage2(&stage1, false);
+    // Stage 2 measured the sensor's gain: stage 1's readings are solved again with it,
+    // and stage 2 with the better hand-over (the gain moves Δθ2 by ~1 % of the upper
+    // arm's tilt, and stage 2 by far less than its noise, so once is enough).
+    if let Ok((_, r)) = &result {
+        let gain = estimated_gain(r);
+        if gain != Gain::default() {
+            if let Ok(again) = solve_stage1(&bias_t, temps.stage1_c, &setup, gain, per_reading) {
+                stage1 = again;
+                result = stage2(&stage1, true);
+            }
+        }
+    }
+    // Without a second pass the first is judged here.
+    if let Ok((_, r)) = &result {
+        let limit = config.max_residual_rms_rad;
+        if limit > T::zero() && r.residual_rms_rad > limit {
+            result = Err(SessionError::Stage2(FitError::ResidualTooLarge {
+                rms_deg: crate::real::rad_to_deg(r.residual_rms_rad).to_f64() as f32,
+                limit_deg: crate::real::rad_to_deg(limit).to_f64() as f32,
+                worst_pose: r.worst_residual.1,
+            }));
+        }
+    }
     SessionOutcome {
-        bias,
+        bias: bias_t.map(|b| b.bias),
         stage1: Some(stage1),
-        result,
+        result: result.map(|(h, r)| {
+            combine(
+                &stage1,
+                &h,
+                r,
+                config.handover_noise_rad / per_reading.sqrt(),
+            )
+        }),
+    }
+}
+
+/// Captures of the same commanded pose, averaged into one: the robot approaches each
+/// pose from both sides of every joint's backlash (docs/error-budget.md), and the mean
+/// of the two captures is the reading at the middle of the play, the kinematic zero's.
+/// Averaging before the fit keeps the play's ±half width out of the residuals, so σ
+/// stays the noise's. `None` when no pose repeats (or more distinct poses than a plan
+/// holds: then each capture is fitted as it is, which gives the same offsets).
+pub fn merge_repeats<T: Real>(
+    poses: &[PoseReading<T>],
+) -> Option<heapless::Vec<PoseReading<T>, MAX_POSES>> {
+    let mut out: heapless::Vec<(PoseReading<T>, u16), MAX_POSES> = heapless::Vec::new();
+    let mut repeated = false;
+    for p in poses {
+        if let Some((m, n)) = out.iter_mut().find(|(m, _)| m.joints_rad == p.joints_rad) {
+            repeated = true;
+            m.reading.x_rad += p.reading.x_rad;
+            m.reading.y_rad += p.reading.y_rad;
+            m.temperature_c = match (m.temperature_c, p.temperature_c) {
+                (Some(a), Some(b)) => Some(a + b),
+                _ => None,
+            };
+            *n += 1;
+        } else if out.push((*p, 1)).is_err() {
+            return None;
+        }
+    }
+    if !repeated {
+        return None;
+    }
+    Some(
+        out.into_iter()
+            .map(|(mut m, n)| {
+                let k = T::lit(f64::from(n));
+                m.reading = Tilt::new(m.reading.x_rad / k, m.reading.y_rad / k);
+                m.temperature_c = m.temperature_c.map(|t| t / k);
+                m
+            })
+            .collect(),
+    )
+}
+
+/// The gain and cross-axis terms a fit estimated (zero where not estimated).
+fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
+    let v = |p: Param| r.get(p).map_or(T::zero(), |(v, _)| v);
+    Gain {
+        xx: v(Param::GainX),
+        yy: v(Param::GainY),
+        xy: v(Param::CrossXy),
+        yx: v(Param::CrossYx),
+        xz: v(Param::CrossXz),
+        yz: v(Param::CrossYz),
+        zx: v(Param::CrossZx),
+        zy: v(Param::CrossZy),
     }
 }
 
@@ -234,10 +526,15 @@ fn combine<T: Real>(
     stage1: &Stage1Result<T>,
     h: &Handover<T>,
     fit: FitResult<T>,
+    handover_noise_rad: T,
 ) -> SessionSolution<T> {
     /// Δθ2's place among the hand-over parameters (α, β, Δθ2, bias x, bias y).
     const J2: usize = 2;
-    let variance = fit.noise_sigma_rad * fit.noise_sigma_rad;
+    let variance = if handover_noise_rad > T::zero() {
+        handover_noise_rad * handover_noise_rad
+    } else {
+        fit.noise_sigma_rad * fit.noise_sigma_rad
+    };
     let mut offsets_rad = [T::zero(); SESSION_JOINTS];
     offsets_rad[0] = stage1.delta_theta2_rad;
     offsets_rad[1..].copy_from_slice(&fit.offsets_rad);

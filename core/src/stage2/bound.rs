@@ -2,7 +2,7 @@
 //! reach on it, for planning poses before the robot moves.
 
 use super::{
-    check_conditioning, information, Extras, Stage2Model, MAX_PARAMS, MIN_POSES,
+    check_conditioning, information, Extras, PoseReading, Stage2Model, MAX_PARAMS, MIN_POSES,
     RANK_DEFICIENT_CONDITION,
 };
 use crate::error::FitError;
@@ -57,4 +57,81 @@ pub fn covariance_bound<T: Real>(
         all_sigma,
         condition_number,
     })
+}
+
+/// How much the robot's repeatability moves the offsets: the covariance of Δθ3..Δθ6
+/// (rad²) when every capture's joints 2-6 land off their commanded angles by
+/// independent errors of variance `joint_variance_rad2 / captures_per_row` (a row
+/// averaging that many captures). A joint error at one pose looks like an offset at
+/// that pose, so the fit takes most of it for one and the residuals barely show it:
+/// σ from the residuals alone would miss it.
+///
+/// `S = (JᵀJ)⁻¹Jᵀ` maps reading errors to the parameters; the joints' errors reach the
+/// readings through `J_q` (the offsets' own columns for joints 3-6, the hand-over's Δθ2
+/// column for joint 2), so the covariance is `σ_q²·S·J_q·J_qᵀ·Sᵀ`.
+///
+/// # Errors
+/// As [`covariance_bound`].
+pub fn repeatability_covariance<T: Real>(
+    model: &Stage2Model<T>,
+    extras: Extras,
+    poses: &[PoseReading<T>],
+    offsets_rad: &[T; WRIST_JOINTS],
+    joint_variance_rad2: T,
+    captures_per_row: T,
+) -> Result<[[T; WRIST_JOINTS]; WRIST_JOINTS], FitError> {
+    let layout = extras.layout();
+    let n = layout.len();
+    let estimate = super::Estimate {
+        offsets_rad: *offsets_rad,
+        ..super::Estimate::default()
+    };
+    let pass = model.pass(&estimate);
+    let mut info = super::information::Information::new(n);
+    // Σ over poses of (Jᵀ J_q)(Jᵀ J_q)ᵀ, pose by pose: B_i = J_iᵀ·J_q,i (n × 5).
+    let mut outer = crate::linalg::Square::<T, MAX_PARAMS>::zeros(n);
+    for pose in poses {
+        let p = model.predict_rows(&pass, &layout, &estimate, pose, true);
+        info.add_row(&p.rows[0], T::zero());
+        info.add_row(&p.rows[1], T::zero());
+        // J_q for this pose: columns Δθ2 (hand-over slot 2) and the offsets.
+        let jq = |axis: usize, joint: usize| -> T {
+            if joint == 0 {
+                p.handover_rows[axis][2]
+            } else {
+                p.rows[axis][joint - 1]
+            }
+        };
+        let mut b = [[T::zero(); WRIST_JOINTS + 1]; MAX_PARAMS];
+        for (i, bi) in b.iter_mut().enumerate().take(n) {
+            for (j, bij) in bi.iter_mut().enumerate() {
+                *bij = p.rows[0][i] * jq(0, j) + p.rows[1][i] * jq(1, j);
+            }
+        }
+        for i in 0..n {
+            for k in 0..n {
+                let s = b[i]
+                    .iter()
+                    .zip(&b[k])
+                    .fold(T::zero(), |s, (x, y)| s + *x * *y);
+                outer.m[i][k] += s;
+            }
+        }
+    }
+    check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
+    let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
+    let scale = joint_variance_rad2 / captures_per_row;
+    let mut cov = [[T::zero(); WRIST_JOINTS]; WRIST_JOINTS];
+    for (a, row) in cov.iter_mut().enumerate() {
+        for (c, v) in row.iter_mut().enumerate() {
+            let mut acc = T::zero();
+            for i in 0..n {
+                for k in 0..n {
+                    acc += inv.m[a][i] * outer.m[i][k] * inv.m[k][c];
+                }
+            }
+            *v = acc * scale;
+        }
+    }
+    Ok(cov)
 }

@@ -12,7 +12,7 @@ mod information;
 mod model;
 pub mod params;
 
-pub use bound::{covariance_bound, CovarianceBound};
+pub use bound::{covariance_bound, repeatability_covariance, CovarianceBound};
 pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
 pub use model::{Estimate, MassModel, Stage2Model, HANDOVER_PARAMS};
 pub use params::{Extras, Layout, Param, MAX_PARAMS};
@@ -75,6 +75,13 @@ pub struct FitConfig<T> {
     /// Propagated into the reported covariance, since an error in α, for one, passes
     /// straight into Δθ3.
     pub model_covariance: [[T; HANDOVER_PARAMS]; HANDOVER_PARAMS],
+    /// Residual RMS above which the fit refuses (rad); 0: never.
+    pub max_residual_rms_rad: T,
+    /// The noise of one stage 0-1 reading (rad), for the hand-over's share of the
+    /// covariance; 0: the stage-2 residuals' σ. The reversals are read on a bench and
+    /// stage 1 with the robot still: stage 2's residuals also hold the robot's
+    /// repeatability over many poses, which the budget carries on its own.
+    pub handover_noise_rad: T,
 }
 
 impl<T: Real> Default for FitConfig<T> {
@@ -91,6 +98,41 @@ impl<T: Real> Default for FitConfig<T> {
             extras: Extras::NONE,
             initial_offsets_rad: [T::zero(); WRIST_JOINTS],
             model_covariance: [[T::zero(); HANDOVER_PARAMS]; HANDOVER_PARAMS],
+            max_residual_rms_rad: T::zero(),
+            handover_noise_rad: T::zero(),
+        }
+    }
+}
+
+/// One capture's noise in mode 4 (deg, 1σ): 0.08 mg RMS on the chip's X (0.06 mg on Y)
+/// behind its 10 Hz first-order filter, 40 samples read at 20 Hz and averaged, plus the
+/// angle registers' 90/2¹⁴ deg LSB: 0.00080° (x) and 0.00062° (y), the larger taken
+/// (`zerocal_sim::sensor::Scl3300::capture_sigma_rad` derives it).
+pub const MEMS_CAPTURE_NOISE_DEG: f64 = 0.0008;
+
+/// Mode 4's specified range (deg): the SCL3300 in its low-noise inclination mode is
+/// specified within about ±10° of level (Doc. 4921 §2.11.1, docs/error-budget.md).
+pub const MEMS_RANGE_DEG: f64 = 10.0;
+
+/// The residual RMS a session with a MEMS sensor refuses above (deg). Over 50 simulated
+/// sessions per robot with every error source on, the largest residual RMS was 0.0028°
+/// (mostly the robot's repeatability, which a fit leaves partly in the residuals); a
+/// flange bracket that seats anew within ±0.03° at every pose gives 0.010°. 0.005° lies
+/// between: docs/error-budget.md.
+pub const MEMS_MAX_RESIDUAL_DEG: f64 = 0.005;
+
+impl<T: Real> FitConfig<T> {
+    /// The settings for a session with the SCL3300 on `arm` (`sag` where the profile
+    /// has the geometry for the sag's lever): the extras of [`Extras::for_mems`], one
+    /// capture's noise, mode 4's range and the residual ceiling.
+    pub fn for_mems(arm: &crate::model::Arm<T>, sag: bool) -> Self {
+        FitConfig {
+            extras: Extras::for_mems(arm, sag),
+            sensor_noise_rad: deg_to_rad(T::lit(MEMS_CAPTURE_NOISE_DEG)),
+            sensor_range_rad: deg_to_rad(T::lit(MEMS_RANGE_DEG)),
+            max_residual_rms_rad: deg_to_rad(T::lit(MEMS_MAX_RESIDUAL_DEG)),
+            handover_noise_rad: deg_to_rad(T::lit(MEMS_CAPTURE_NOISE_DEG)),
+            ..FitConfig::default()
         }
     }
 }
@@ -402,8 +444,8 @@ pub fn fit<T: Real>(
             }
         }
     }
-    // σ⁻²·Cov = (JᵀJ)⁻¹ + S·D·Sᵀ over the slots.
-    let mut unit_cov = inv;
+    // Cov = σ²·(JᵀJ)⁻¹ + σₕ²·S·D·Sᵀ over the slots (σₕ: the hand-over's noise).
+    let mut unit_cov = Square::<T, MAX_PARAMS>::zeros(n);
     if any_d {
         for i in 0..n {
             for j in 0..n {
@@ -450,7 +492,7 @@ fn finish<T: Real>(
     layout: &Layout,
     x: &[T; MAX_PARAMS],
     inv: &Square<T, MAX_PARAMS>,
-    unit_cov: &Square<T, MAX_PARAMS>,
+    handover_part: &Square<T, MAX_PARAMS>,
     sensitivity: &[[T; HANDOVER_PARAMS]; MAX_PARAMS],
     s: Summary<T>,
     config: &FitConfig<T>,
@@ -468,13 +510,20 @@ fn finish<T: Real>(
         (config.sensor_noise_rad, SigmaSource::SensorNoise)
     };
     let variance = noise_sigma_rad * noise_sigma_rad;
+    let handover_variance = if config.handover_noise_rad > T::zero() {
+        config.handover_noise_rad * config.handover_noise_rad
+    } else {
+        variance
+    };
+    let cov_of =
+        |r: usize, c: usize| inv.m[r][c] * variance + handover_part.m[r][c] * handover_variance;
     let mut values = [T::zero(); MAX_PARAMS];
     let mut sigmas = [T::zero(); MAX_PARAMS];
     let mut estimated = ParamSet::default();
     for (slot, p) in layout.params().iter().enumerate() {
         values[p.index()] = x[slot];
         // A covariance is positive semi-definite; max() only guards rounding.
-        sigmas[p.index()] = (unit_cov.m[slot][slot].max(T::zero()) * variance).sqrt();
+        sigmas[p.index()] = cov_of(slot, slot).max(T::zero()).sqrt();
         estimated = estimated.with(p.index());
     }
     let mut offsets_rad = [T::zero(); WRIST_JOINTS];
@@ -483,9 +532,16 @@ fn finish<T: Real>(
     let sigma_stage2_rad: [T; WRIST_JOINTS] =
         core::array::from_fn(|k| (inv.m[k][k].max(T::zero()) * variance).sqrt());
     let covariance_rad2: [[T; WRIST_JOINTS]; WRIST_JOINTS] =
-        core::array::from_fn(|r| core::array::from_fn(|c| unit_cov.m[r][c] * variance));
+        core::array::from_fn(|r| core::array::from_fn(|c| cov_of(r, c)));
     let model_sensitivity: [[T; HANDOVER_PARAMS]; WRIST_JOINTS] =
         core::array::from_fn(|r| sensitivity[r]);
+    if config.max_residual_rms_rad > T::zero() && residual_rms_rad > config.max_residual_rms_rad {
+        return Err(FitError::ResidualTooLarge {
+            rms_deg: rad_to_deg(residual_rms_rad).to_f64() as f32,
+            limit_deg: rad_to_deg(config.max_residual_rms_rad).to_f64() as f32,
+            worst_pose: s.worst.1,
+        });
+    }
     let all_finite = values
         .iter()
         .chain(&sigmas)

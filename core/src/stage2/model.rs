@@ -113,8 +113,10 @@ pub struct Stage2Model<T: Real> {
     pub delta_theta2_rad: T,
     /// Convention, bias (stages 0-1) and nominal gain of the sensor.
     pub sensor: SensorModel<T>,
-    /// The temperature the bias was measured at (°C): the drift term is relative to it.
+    /// The temperature the bias was measured at (°C): the drift terms are relative to it.
     pub reference_temperature_c: T,
+    /// The bias' drift the reversals measured (rad/K); the fit's drift term adds to it.
+    pub drift_per_k: Tilt<T>,
     /// The sag model's masses; `None`: no sag term (and the sag parameter is refused).
     pub masses: Option<MassModel<T>>,
 }
@@ -127,6 +129,7 @@ impl<T: Real> Default for Stage2Model<T> {
             delta_theta2_rad: T::zero(),
             sensor: SensorModel::default(),
             reference_temperature_c: T::zero(),
+            drift_per_k: Tilt::default(),
             masses: None,
         }
     }
@@ -158,6 +161,10 @@ impl<T: Real> Estimate<T> {
                 Param::GainY => e.gain.yy = v,
                 Param::CrossXy => e.gain.xy = v,
                 Param::CrossYx => e.gain.yx = v,
+                Param::CrossXz => e.gain.xz = v,
+                Param::CrossYz => e.gain.yz = v,
+                Param::CrossZx => e.gain.zx = v,
+                Param::CrossZy => e.gain.zy = v,
                 Param::Sag => e.sag_rad_per_m = v,
                 Param::BiasX => e.bias.x_rad = v,
                 Param::BiasY => e.bias.y_rad = v,
@@ -244,18 +251,26 @@ impl<T: Real> Stage2Model<T> {
             .wrist
             .up_and_partials_with(&pass.fixed_in_use, &base_up, &trig);
         let g = &pass.gain;
-        let a = g.apply(&u);
-        let (t, grad) = self.sensor.convention.read_with_gradient(&a);
         let dt = pose
             .temperature_c
             .map_or(T::zero(), |c| c - self.reference_temperature_c);
         let bias = self.sensor.bias;
-        let reading = Tilt::new(
-            t.x_rad + bias.x_rad + estimate.bias.x_rad + estimate.drift_per_k.x_rad * dt,
-            t.y_rad + bias.y_rad + estimate.bias.y_rad + estimate.drift_per_k.y_rad * dt,
+        let drift = Tilt::new(
+            self.drift_per_k.x_rad + estimate.drift_per_k.x_rad,
+            self.drift_per_k.y_rad + estimate.drift_per_k.y_rad,
         );
+        let total_bias = Tilt::new(
+            bias.x_rad + estimate.bias.x_rad + drift.x_rad * dt,
+            bias.y_rad + estimate.bias.y_rad + drift.y_rad * dt,
+        );
+        let sensor = SensorModel {
+            gain: *g,
+            ..self.sensor
+        };
+        let read = sensor.read_up(&u, &total_bias);
+        let (reading, grad, d_bias) = (read.reading, read.grad, read.d_bias);
         // Through the gain: d(reading)/dv = grad·G·dv for a change dv of u.
-        let through = |axis: usize, dv: &Vector3<T>| grad[axis].dot(&g.apply(dv));
+        let through = |axis: usize, dv: &Vector3<T>| grad[axis].dot(&g.apply_linear(dv));
         let mut rows = [[T::zero(); MAX_PARAMS]; 2];
         for (slot, &p) in layout.params().iter().enumerate() {
             for (axis, row) in rows.iter_mut().enumerate() {
@@ -266,10 +281,14 @@ impl<T: Real> Stage2Model<T> {
                     Param::GainY => grad[axis].y * u.y,
                     Param::CrossXy => grad[axis].x * u.y,
                     Param::CrossYx => grad[axis].y * u.x,
-                    Param::BiasX => T::from_bool(axis == 0),
-                    Param::BiasY => T::from_bool(axis == 1),
-                    Param::DriftX => T::from_bool(axis == 0) * dt,
-                    Param::DriftY => T::from_bool(axis == 1) * dt,
+                    Param::CrossXz => grad[axis].x * (u.z - T::one()),
+                    Param::CrossYz => grad[axis].y * (u.z - T::one()),
+                    Param::CrossZx => grad[axis].z * u.x,
+                    Param::CrossZy => grad[axis].z * u.y,
+                    Param::BiasX => d_bias[axis][0],
+                    Param::BiasY => d_bias[axis][1],
+                    Param::DriftX => d_bias[axis][0] * dt,
+                    Param::DriftY => d_bias[axis][1] * dt,
                 };
             }
         }
@@ -295,8 +314,8 @@ impl<T: Real> Stage2Model<T> {
                     through(axis, &d_alpha),
                     through(axis, &d_beta),
                     through(axis, &d_j2),
-                    T::from_bool(axis == 0),
-                    T::from_bool(axis == 1),
+                    d_bias[axis][0],
+                    d_bias[axis][1],
                 ];
             }
         }

@@ -17,7 +17,7 @@ use crate::error::{ParamSet, PARAM_NAMES};
 const _: () = assert!(PARAM_NAMES.len() == MAX_PARAMS);
 
 /// Most parameters stage 2 estimates.
-pub const MAX_PARAMS: usize = 13;
+pub const MAX_PARAMS: usize = 17;
 
 /// One stage-2 parameter. Its index (the order below) is what a [`ParamSet`] names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,6 +34,14 @@ pub enum Param {
     CrossXy,
     /// `E_yx`: y's response to x.
     CrossYx,
+    /// `E_xz`: x's response to z, away from level.
+    CrossXz,
+    /// `E_yz`: y's response to z, away from level.
+    CrossYz,
+    /// `E_zx`: z's response to x.
+    CrossZx,
+    /// `E_zy`: z's response to y.
+    CrossZy,
     /// Compliance of joints 2-3 (rad per metre of gravity lever).
     Sag,
     /// Correction to the x bias on the flange (rad).
@@ -57,6 +65,10 @@ impl Param {
         Param::GainY,
         Param::CrossXy,
         Param::CrossYx,
+        Param::CrossXz,
+        Param::CrossYz,
+        Param::CrossZx,
+        Param::CrossZy,
         Param::Sag,
         Param::BiasX,
         Param::BiasY,
@@ -72,11 +84,15 @@ impl Param {
             Param::GainY => 5,
             Param::CrossXy => 6,
             Param::CrossYx => 7,
-            Param::Sag => 8,
-            Param::BiasX => 9,
-            Param::BiasY => 10,
-            Param::DriftX => 11,
-            Param::DriftY => 12,
+            Param::CrossXz => 8,
+            Param::CrossYz => 9,
+            Param::CrossZx => 10,
+            Param::CrossZy => 11,
+            Param::Sag => 12,
+            Param::BiasX => 13,
+            Param::BiasY => 14,
+            Param::DriftX => 15,
+            Param::DriftY => 16,
         }
     }
 
@@ -91,12 +107,20 @@ impl Param {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Extras {
-    /// Sensor gain and cross-axis (4).
+    /// Sensor gain and cross-axis between x and y (4).
     pub gain: bool,
+    /// The cross terms with z: x's and y's response to z away from level, z's to x
+    /// and y (4).
+    pub cross_z: bool,
     /// Sag of joints 2-3 (1; needs the arm's geometry).
     pub sag: bool,
-    /// Bias on the flange (2; needs poses that turn the pendant about the vertical).
-    pub bias: bool,
+    /// Correction to the x bias on the flange (1). With the pendant's x along joint 6
+    /// (the flange bracket of every profile), a tilt of the pendant about x is a turn
+    /// of joint 6: this one is Δθ6's twin and the fit refuses the pair.
+    pub bias_x: bool,
+    /// Correction to the y bias on the flange (1): the flange bracket's tilt about the
+    /// pendant's y, which no joint shares.
+    pub bias_y: bool,
     /// Bias drift with temperature (2; needs temperatures that vary).
     pub drift: bool,
 }
@@ -105,10 +129,35 @@ impl Extras {
     /// The paper's model: the four offsets only.
     pub const NONE: Extras = Extras {
         gain: false,
+        cross_z: false,
         sag: false,
-        bias: false,
+        bias_x: false,
+        bias_y: false,
         drift: false,
     };
+
+    /// What a session with a MEMS inclinometer (the SCL3300, `axis` convention) fits
+    /// besides the offsets, chosen by Monte-Carlo over whole simulated sessions
+    /// (docs/error-budget.md): the gain and cross-axis terms (within the ±10° of mode 4
+    /// they move the zeros by up to 0.07°), the z cross terms (0.006° at 8°), the sag of
+    /// joints 2-3 where the arm has the geometry for its lever, and the flange bracket's
+    /// tilt about the pendant's horizontal axis that joint 6 does not turn about (the
+    /// tilt about the other one is a turn of joint 6 itself, see `bias_x`).
+    pub fn for_mems<T: crate::real::Real>(arm: &crate::model::Arm<T>, sag: bool) -> Extras {
+        let axis6 = (arm.flange.rotation * arm.flange_mount).inverse()
+            * arm.joints[crate::model::JOINTS - 1].axis.unit::<T>();
+        let (ax, ay) = (axis6.x.abs(), axis6.y.abs());
+        Extras {
+            gain: true,
+            cross_z: true,
+            sag,
+            // Joint 6 along the pendant's x: a tilt about x is Δθ6, fit y; and the
+            // other way round. Along z, both tilts are free of it.
+            bias_x: ax <= ay,
+            bias_y: ay <= ax,
+            drift: false,
+        }
+    }
 
     /// The parameters, in index order.
     pub fn layout(self) -> Layout {
@@ -118,8 +167,10 @@ impl Extras {
             let on = match p {
                 Param::Offset(_) => true,
                 Param::GainX | Param::GainY | Param::CrossXy | Param::CrossYx => self.gain,
+                Param::CrossXz | Param::CrossYz | Param::CrossZx | Param::CrossZy => self.cross_z,
                 Param::Sag => self.sag,
-                Param::BiasX | Param::BiasY => self.bias,
+                Param::BiasX => self.bias_x,
+                Param::BiasY => self.bias_y,
                 Param::DriftX | Param::DriftY => self.drift,
             };
             if on {
@@ -178,8 +229,10 @@ mod tests {
         assert_eq!(none.len(), 4);
         let all = Extras {
             gain: true,
+            cross_z: true,
             sag: true,
-            bias: true,
+            bias_x: true,
+            bias_y: true,
             drift: true,
         }
         .layout();

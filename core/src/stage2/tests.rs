@@ -41,17 +41,24 @@ fn model(conv: Convention) -> Stage2Model<f64> {
                 yy: -0.001,
                 xy: 0.003,
                 yx: -0.002,
+                xz: 0.004,
+                yz: -0.003,
+                zx: 0.002,
+                zy: -0.004,
             },
         },
         reference_temperature_c: 20.0,
+        drift_per_k: Tilt::from_deg(0.004, -0.003),
         masses: Some(MassModel::uniform(&arm)),
     }
 }
 
 const ALL: Extras = Extras {
     gain: true,
+    cross_z: true,
     sag: true,
-    bias: true,
+    bias_x: true,
+    bias_y: true,
     drift: true,
 };
 

@@ -396,6 +396,14 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
                 Text::new(),
             ]
         }
+        Refusal::Session(SessionError::Warmed { kelvin, .. }) => {
+            return [
+                fixed("warm box:"),
+                line(format_args!("moved {} K", fx(*kelvin, 1))),
+                fixed("redo stage 0 at the"),
+                fixed("end, or let it settle"),
+            ]
+        }
         Refusal::NoOutcome => {
             return [
                 fixed("no outcome"),
@@ -463,6 +471,16 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
             line(format_args!("{iterations} iterations")),
             Text::new(),
             Text::new(),
+        ],
+        FitError::ResidualTooLarge {
+            rms_deg,
+            worst_pose,
+            ..
+        } => [
+            line(format_args!("residuals {}\u{b0} RMS", fx(rms_deg, 4))),
+            line(format_args!("worst: pose {}", worst_pose + 1)),
+            fixed("bracket loose? robot"),
+            fixed("moving? wrong robot?"),
         ],
         FitError::NonFiniteResult => [
             fixed("the fit diverged"),

@@ -65,6 +65,8 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
                 j2_rad: f64::from(case.stage1.j2_rad),
             },
             poses: &poses,
+            temperatures: Default::default(),
+            closing: None,
         };
         let outcome = session::solve(&readings, &FitConfig::default());
         let mut record = |stage: &str, value: Value| {
@@ -107,6 +109,11 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
             }
             Err(SessionError::Stage2(e)) => {
                 Some(record("fit", Value::Error(Terse(&e).to_string())))
+            }
+            // The vectors carry no temperatures: this cannot arise, but is reported.
+            Err(e @ SessionError::Warmed { .. }) => {
+                record("session", Value::Error(e.to_string()));
+                None
             }
         };
         let name = case.name;

@@ -1,0 +1,282 @@
+//! Monte-Carlo over whole real-world sessions: many robots (offsets, base tilt, sag,
+//! backlash) and many sensor units, each session planned and solved exactly as the
+//! pendant does (core's planner and session solver), the result compared with the
+//! truth.
+
+use crate::world::{RealSession, WorldConfig};
+use zerocal_core::model::{Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
+use zerocal_core::plan::{plan, Candidate, Plan, PlanConfig, PlanError};
+
+use zerocal_core::session::{
+    budget, solve, BiasSource, Budget, BudgetInputs, SessionError, SessionReadings,
+    SessionSolution, StageTemperatures,
+};
+use zerocal_core::stage2::{FitConfig, Stage2Model};
+use zerocal_profile::Profile;
+
+/// What one session gave.
+#[derive(Clone, Debug)]
+pub struct SessionOutcome {
+    /// Seed of the session.
+    pub seed: u64,
+    /// The solution, or the refusal.
+    pub result: Result<SessionSolution<f64>, SessionError>,
+    /// Truth Δθ2..Δθ6 (rad).
+    pub truth_rad: [f64; 5],
+    /// Captures outside mode 4's range.
+    pub outside_range: usize,
+    /// The k = 2 budget, if solved.
+    pub budget: Option<Budget<f64>>,
+}
+
+impl SessionOutcome {
+    /// Identified − true, Δθ2..Δθ6 (deg), if solved.
+    pub fn errors_deg(&self) -> Option<[f64; 5]> {
+        self.result
+            .as_ref()
+            .ok()
+            .map(|s| core::array::from_fn(|k| (s.offsets_rad[k] - self.truth_rad[k]).to_degrees()))
+    }
+}
+
+/// The stage-2 plan for a profile as the pendant makes it: its stage-1 joints 1-2,
+/// the profile's wrist limits, the `axis` convention at zero offsets.
+///
+/// # Errors
+/// The planner's refusal.
+pub fn plan_for(
+    profile: &Profile,
+    config: &PlanConfig<f64>,
+    j3_half_range_deg: f64,
+) -> Result<Plan<f64>, PlanError> {
+    let model = Stage2Model {
+        arm: profile.arm,
+        sensor: SensorModel::new(Convention::Axis, Tilt::default()),
+        masses: profile.mass_model(),
+        ..Stage2Model::default()
+    };
+    let mut config = *config;
+    config.fixed_joints_rad = [profile.stage1_joints_rad[0], profile.stage1_joints_rad[1]];
+    for k in 0..WRIST_JOINTS {
+        let j = &profile.joints[k + 2];
+        config.limits_rad[k] = (j.min_deg.to_radians(), j.max_deg.to_radians());
+    }
+    if j3_half_range_deg > 0.0 {
+        let c = profile.stage1_joints_rad[2];
+        let h = j3_half_range_deg.to_radians();
+        let (lo, hi) = config.limits_rad[0];
+        config.limits_rad[0] = ((c - h).max(lo), (c + h).min(hi));
+    }
+    let mut pool = vec![Candidate::default(); config.candidates];
+    plan(&model, &config, &mut pool)
+}
+
+/// Runs `sessions` sessions on `profile` through `poses`, solved with `fit`.
+pub fn run(
+    profile: &Profile,
+    poses: &[[f64; JOINTS]],
+    world: &WorldConfig,
+    fit: &FitConfig<f64>,
+    sessions: usize,
+    seed: u64,
+) -> Vec<SessionOutcome> {
+    let mount_tolerance_rad = world.mount_tolerance_deg.to_radians();
+    (0..sessions as u64)
+        .map(|i| {
+            let s = seed.wrapping_mul(1_000_003).wrapping_add(i);
+            let session = RealSession::simulate(profile, poses, world, s);
+            let readings = SessionReadings {
+                convention: Convention::Axis,
+                arm: profile.arm,
+                masses: profile.mass_model(),
+                bias: BiasSource::Reversal(session.stage0),
+                stage1: session.stage1,
+                poses: &session.poses,
+                // The method without the closing reversal recorded no temperatures.
+                temperatures: if world.closing_reversal {
+                    StageTemperatures {
+                        stage0_c: Some(session.stage0_temperature_c),
+                        stage1_c: Some(session.stage1_temperature_c),
+                    }
+                } else {
+                    StageTemperatures::default()
+                },
+                closing: world.closing_reversal.then_some(session.closing),
+            };
+            let result = solve(&readings, fit).result;
+            let budget = result.as_ref().ok().map(|sol| {
+                budget(
+                    sol,
+                    &session.poses,
+                    &BudgetInputs {
+                        extras: fit.extras,
+                        mount_tolerance_rad,
+                        repeatability_rad: if world.robot.repeatability {
+                            world.robot_spec.repeatability_deg.to_radians()
+                        } else {
+                            0.0
+                        },
+                    },
+                )
+            });
+            SessionOutcome {
+                seed: s,
+                result,
+                truth_rad: session.truth_rad(),
+                outside_range: session.outside_range,
+                budget,
+            }
+        })
+        .collect()
+}
+
+/// Per-joint statistics over the solved sessions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Summary {
+    /// Sessions run.
+    pub sessions: usize,
+    /// Sessions refused.
+    pub refused: usize,
+    /// RMS error per joint (deg).
+    pub rms_deg: [f64; 5],
+    /// 95th percentile of |error| per joint (deg).
+    pub p95_deg: [f64; 5],
+    /// Largest |error| per joint (deg).
+    pub max_deg: [f64; 5],
+    /// Mean reported 1σ per joint (deg).
+    pub mean_sigma_deg: [f64; 5],
+    /// Fraction of sessions whose every joint is within `limit_deg`.
+    pub all_within: f64,
+    /// Per joint, the fraction of solved sessions whose error is within the k = 2
+    /// budget.
+    pub covered: [f64; 5],
+    /// Mean k = 2 budget per joint (deg).
+    pub mean_k2_deg: [f64; 5],
+    /// Per joint, the fraction of sessions within `limit_deg`.
+    pub within: [f64; 5],
+}
+
+/// Summarises outcomes; `limit_deg` is the per-joint target.
+pub fn summarise(outcomes: &[SessionOutcome], limit_deg: f64) -> Summary {
+    let solved: Vec<(&SessionOutcome, [f64; 5])> = outcomes
+        .iter()
+        .filter_map(|o| o.errors_deg().map(|e| (o, e)))
+        .collect();
+    let n = solved.len().max(1) as f64;
+    let mut rms = [0.0; 5];
+    let mut max = [0.0f64; 5];
+    let mut sig = [0.0; 5];
+    let mut p95 = [0.0; 5];
+    for k in 0..5 {
+        let mut abs: Vec<f64> = solved.iter().map(|(_, e)| e[k].abs()).collect();
+        abs.sort_by(f64::total_cmp);
+        rms[k] = (solved.iter().map(|(_, e)| e[k] * e[k]).sum::<f64>() / n).sqrt();
+        max[k] = abs.last().copied().unwrap_or(0.0);
+        p95[k] = abs
+            .get(((abs.len() as f64) * 0.95).ceil() as usize - usize::from(!abs.is_empty()))
+            .copied()
+            .unwrap_or(0.0);
+        sig[k] = solved
+            .iter()
+            .filter_map(|(o, _)| {
+                o.result
+                    .as_ref()
+                    .ok()
+                    .map(|s| s.sigma_rad()[k].to_degrees())
+            })
+            .sum::<f64>()
+            / n;
+    }
+    let within = solved
+        .iter()
+        .filter(|(_, e)| e.iter().all(|v| v.abs() <= limit_deg))
+        .count();
+    let mut covered = [0.0; 5];
+    let mut mean_k2 = [0.0; 5];
+    let mut within_k = [0.0; 5];
+    for (o, e) in &solved {
+        if let Some(b) = &o.budget {
+            for k in 0..5 {
+                let u = b.expanded_rad[k].to_degrees();
+                covered[k] += f64::from(u8::from(e[k].abs() <= u)) / n;
+                mean_k2[k] += u / n;
+            }
+        }
+        for k in 0..5 {
+            within_k[k] +=
+                f64::from(u8::from(e[k].abs() <= limit_deg)) / outcomes.len().max(1) as f64;
+        }
+    }
+    Summary {
+        covered,
+        mean_k2_deg: mean_k2,
+        within: within_k,
+        sessions: outcomes.len(),
+        refused: outcomes.len() - solved.len(),
+        rms_deg: rms,
+        p95_deg: p95,
+        max_deg: max,
+        mean_sigma_deg: sig,
+        all_within: within as f64 / outcomes.len().max(1) as f64,
+    }
+}
+
+/// How a session is run and solved: before issue 15's compensation (the paper's model
+/// with a MEMS sensor: offsets only, one approach direction, no closing reversal) or
+/// with it (the real-sensor model, both approach directions, the closing reversal).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// Offsets only.
+    Uncompensated,
+    /// The real-sensor model ([`FitConfig::for_mems`]).
+    Compensated,
+}
+
+/// Stage-2 poses the pendant plans by default (each captured twice, once from each
+/// side of the backlash): 24, chosen by Monte-Carlo (docs/error-budget.md).
+pub const DEFAULT_POSES: usize = 24;
+
+/// The pendant's plan and fit settings for `profile` under `method`, with `poses`
+/// stage-2 poses.
+///
+/// # Errors
+/// The planner's refusal.
+pub fn setup(
+    profile: &Profile,
+    method: Method,
+    poses: usize,
+) -> Result<(Vec<[f64; JOINTS]>, FitConfig<f64>), PlanError> {
+    let sag = profile.mass_model().is_some();
+    let fit = match method {
+        Method::Compensated => FitConfig::for_mems(&profile.arm, sag),
+        Method::Uncompensated => FitConfig {
+            sensor_range_rad: FitConfig::<f64>::for_mems(&profile.arm, sag).sensor_range_rad,
+            sensor_noise_rad: FitConfig::<f64>::for_mems(&profile.arm, sag).sensor_noise_rad,
+            ..FitConfig::default()
+        },
+    };
+    let config = PlanConfig {
+        poses,
+        extras: fit.extras,
+        noise_sigma_rad: fit.sensor_noise_rad,
+        window_rad: PLAN_WINDOW_DEG.to_radians(),
+        margin_rad: 0.0,
+        ..PlanConfig::default()
+    };
+    let plan = plan_for(profile, &config, 0.0)?;
+    Ok((plan.poses_rad.iter().copied().collect(), fit))
+}
+
+/// The planning window (deg): mode 4's ±10° less room for the sensor's offset (up to
+/// 1.45°) and the offsets not yet known.
+pub const PLAN_WINDOW_DEG: f64 = 8.0;
+
+/// The world a method runs in: `Uncompensated` approaches from one side and makes no
+/// closing reversal.
+pub fn world_for(method: Method, mut world: WorldConfig) -> WorldConfig {
+    if method == Method::Uncompensated {
+        world.approach = crate::world::Approach::Consistent;
+        world.closing_reversal = false;
+    }
+    world
+}
