@@ -10,3 +10,4 @@ pub mod plots;
 pub mod robot;
 pub mod session;
 pub mod simulate;
+pub mod timing;
