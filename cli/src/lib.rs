@@ -7,6 +7,7 @@ pub mod identify;
 pub mod log;
 pub mod plan;
 pub mod plots;
+pub mod program;
 pub mod robot;
 pub mod session;
 pub mod simulate;
