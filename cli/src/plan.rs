@@ -738,7 +738,7 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
         .collect();
     let _ = writeln!(
         out,
-        "robot time {}: motion {:.0} s, dwell {:.0} s ({} captures x {:.1} s), remount {:.0} s, operator OKs {:.0} s ({} stops); planner's order {}",
+        "robot time {}: motion {:.0} s, dwell {:.0} s ({} captures x {:.1} s), pendant mountings {:.0} s, operator OKs {:.0} s ({} stops); planner's order {}",
         minutes(t.total_s),
         t.motion_s,
         t.dwell_s,
@@ -751,7 +751,7 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
     );
     let _ = writeln!(
         out,
-        "  joints at {} % of their maximum speed ({}), acceleration {:.1} deg/s^2 (stated default), settling {} s, remount {} s, OK {} s (stated defaults)",
+        "  joints at {} % of their maximum speed ({}), acceleration {:.1} deg/s^2 (stated default), settling {} s, each mounting {} s, OK {} s (stated defaults)",
         tm.speed_percent,
         if defaults.is_empty() {
             "the profile's".to_owned()
