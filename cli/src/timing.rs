@@ -640,6 +640,29 @@ mod tests {
         }
     }
 
+    /// A move of a few hundredths of a degree cannot arm the pendant (its re-arm
+    /// threshold is 0.2°, here with a factor 2); a 20° turn of A5 does, and moves the
+    /// reading all the way, so nothing looks still before the robot arrives.
+    #[test]
+    fn small_moves_do_not_arm_the_next_capture() {
+        let profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
+        let t = Timing::new(&profile, &TimingArgs::default(), [1; JOINTS])
+            .unwrap_or_else(|e| panic!("{e}"));
+        let pendant = Pendant::new(&profile);
+        let mut a = profile.shown_deg(&profile.stage1_joints_rad);
+        a[2] = -90.0;
+        let mut b = a;
+        b[5] += 0.05;
+        assert!(!pendant.leg(&t.model, &a, &b).armed);
+        b = a;
+        b[4] += 20.0;
+        let check = pendant.leg(&t.model, &a, &b);
+        assert!(check.armed && !check.early_still, "{check:?}");
+        // Either way round: the way back arrives against A5's approach direction and
+        // goes through the approach point, still arming.
+        assert!(pendant.leg(&t.model, &b, &a).armed);
+    }
+
     #[test]
     fn approach_turns_round_at_a_limit() {
         let profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
