@@ -4,6 +4,8 @@
 //! - `zerocal identify LOG.csv`: stage 2 on a recorded log.
 //! - `zerocal plan --poses N`: the stage-2 poses that minimise the predicted 1σ.
 //! - `zerocal session EXPORT`: stages 0-2 on a pendant export, in the controller's terms.
+//! - `zerocal program --robot R --format F --out FILE`: a robot program that drives the
+//!   whole session.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -11,6 +13,7 @@ use std::process::ExitCode;
 use zerocal_cli::error::CliError;
 use zerocal_cli::identify::{self, IdentifyArgs};
 use zerocal_cli::plan::{self, PlanArgs};
+use zerocal_cli::program::{self, ProgramArgs};
 use zerocal_cli::real;
 use zerocal_cli::session::{self, SessionArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
@@ -37,6 +40,9 @@ enum Command {
     /// Solve a whole pendant session export (stages 0-2) and print the offsets in the
     /// controller's own terms.
     Session(SessionArgs),
+    /// Write a robot program (KRL, RAPID, TP, INFORM, VAL3, URScript) that drives the
+    /// whole session: stage 1, the remount stop, every planned pose.
+    Program(ProgramArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
@@ -94,6 +100,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Identify(args) => identify::run(args),
         Command::Plan(args) => plan::run(args),
         Command::Session(args) => session::run(args),
+        Command::Program(args) => program::run(args),
     }
 }
 

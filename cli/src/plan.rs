@@ -1,9 +1,18 @@
 //! `zerocal plan`: the stage-2 poses to send the robot to, planned before it moves
-//! (`zerocal_core::plan`), with the 1σ per axis they promise.
+//! (`zerocal_core::plan`), with what they promise: the predicted 1σ and k = 2
+//! uncertainty per joint, the worst correlation between the parameters (naming the
+//! poorly separated ones), and the session's robot time (`crate::timing`).
 //!
-//! Output: a table (default), `--csv` (header `j3_deg,j4_deg,j5_deg,j6_deg`, one row
-//! per pose, nothing else on stdout) or `--json` (one object: `poses_deg`,
-//! `predicted_sigma_deg`, `condition_number`, `max_reading_deg`, settings).
+//! The poses come in the order that makes the session short (a joint-space tour that
+//! keeps every joint's approach direction, `crate::timing::time_order`): the order
+//! the pendant's plan and the robot program (`zerocal program`) must both follow.
+//! `--target-k2-deg U` asks for the fewest poses whose predicted k = 2 uncertainty
+//! is at most U on every joint (j2 from stage 1, j3-j6 from the plan), through one
+//! function, [`predicted_k2_deg`], which a fuller uncertainty budget replaces.
+//!
+//! Output: a table (default), `--csv` (header `j1_deg,...,j6_deg`, model degrees, one
+//! row per pose, nothing else on stdout) or `--json` (one object: `poses_deg`,
+//! `predicted_sigma_deg`, `predicted_k2_deg`, `correlation`, `robot_time`, settings).
 //!
 //! `--limits FILE` gives the joint limits as CSV, one joint per line, degrees:
 //!
@@ -22,38 +31,50 @@
 
 use crate::args::{CountIn, RealIn, SEED, TILT_PAIR};
 use crate::error::CliError;
+use crate::timing::{self, Pendant, SessionPoses, SpeedSource, Timing, TimingArgs};
 use clap::Args;
 use serde::Serialize;
 use std::fmt::Write;
 use std::path::PathBuf;
 use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
-use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError};
+use zerocal_core::plan::time::SessionTime;
+use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError, MAX_POSES};
 use zerocal_core::real::{deg_to_rad, rad_to_deg};
-use zerocal_core::stage2::Stage2Model;
+use zerocal_core::session::{
+    predict_budget, BudgetInputs, PlannedRobot, DEFAULT_REPEATABILITY_DEG,
+};
+use zerocal_core::stage2::{information, Extras, FitConfig, Stage2Model, MIN_POSES};
 use zerocal_profile::Profile;
+
+/// A parameter pair whose |correlation| exceeds this is named as poorly separated:
+/// at 0.9 the pair's difference is known √(1/(1−0.9)) ≈ 3× worse than if they were
+/// independent (issue 12's example figure).
+pub const POORLY_SEPARATED: f64 = 0.9;
 
 /// Arguments of `zerocal plan`.
 #[derive(Args, Debug, Clone)]
 pub struct PlanArgs {
-    /// Poses to plan (`zerocal_core::plan::MAX_POSES` at most). Range: [4, 48].
-    #[arg(long, default_value_t = 8, value_parser = CountIn::<usize>::new(4, 48))]
+    /// Poses to plan (`zerocal_core::plan::MAX_POSES` at most; the SCL3300's model
+    /// needs 24 for its 13-17 parameters: docs/error-budget.md). Range: [4, 48].
+    #[arg(long, default_value_t = zerocal_sim::montecarlo::DEFAULT_POSES, value_parser = CountIn::<usize>::new(4, 48))]
     pub poses: usize,
     /// Sensor window: readings must stay within ±W degrees. Range: (0, 90] deg.
     #[arg(long, default_value_t = 10.0, value_name = "W", value_parser = RealIn::above(0.0, 90.0, "deg"))]
     pub window_deg: f64,
     /// Planned readings stay within ±(W − margin) at zero offsets, leaving room for
-    /// the offsets not yet known (deg); it must also be smaller than W.
-    /// Range: [0, 90] deg.
-    #[arg(long, default_value_t = 1.0, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
+    /// the offsets not yet known and the sensor's offset (up to 1.45° on an SCL3300)
+    /// (deg); it must also be smaller than W. Range: [0, 90] deg.
+    #[arg(long, default_value_t = 2.0, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
     pub margin_deg: f64,
     /// Joint limits of joints 3-6: CSV lines `joint,min_deg,max_deg` (default: the
     /// robot profile's).
     #[arg(long, value_name = "FILE")]
     pub limits: Option<PathBuf>,
-    /// Reading noise: uniform in ±A degrees, as for `simulate` (σ = A/√3).
+    /// Reading noise: uniform in ±A degrees (σ = A/√3). Default: for `axis`, one
+    /// SCL3300 capture's noise (σ 0.0008°); for `rpy`, the paper's ±0.002°.
     /// Range: (0, 1] deg.
-    #[arg(long, default_value_t = 0.002, value_name = "A", value_parser = RealIn::above(0.0, 1.0, "deg"))]
-    pub noise_deg: f64,
+    #[arg(long, value_name = "A", value_parser = RealIn::above(0.0, 1.0, "deg"))]
+    pub noise_deg: Option<f64>,
     /// Seed of the candidate draw: the same seed gives the same plan.
     /// Range: [0, 18446744073709551615].
     #[arg(long, default_value_t = 1, value_parser = SEED)]
@@ -65,8 +86,10 @@ pub struct PlanArgs {
     /// or d (D-optimal, greatest log det JᵀJ).
     #[arg(long, default_value = "a", value_parser = crate::args::criterion())]
     pub criterion: Criterion,
-    /// Sensor convention (rpy or axis).
-    #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
+    /// Sensor convention: axis (the pendant's SCL3300: the plan then separates its gain,
+    /// cross-axis and the sag too, and each pose is captured from both sides of the
+    /// backlash) or rpy (the paper's ideal sensor).
+    #[arg(long, default_value = "axis", value_parser = crate::args::convention())]
     pub convention: Convention,
     /// Base tilt α,β from stage 1 (deg), so the plan's readings are those the robot
     /// will show. Range: each [-10, 10] deg.
@@ -80,9 +103,17 @@ pub struct PlanArgs {
     /// Print one JSON object.
     #[arg(long, conflicts_with = "csv")]
     pub json: bool,
-    /// Print CSV rows j3_deg,j4_deg,j5_deg,j6_deg.
+    /// Print CSV rows j1_deg..j6_deg (model degrees, in the session's order).
     #[arg(long)]
     pub csv: bool,
+    /// Plan the fewest poses whose predicted k = 2 uncertainty is at most U on every
+    /// joint (j2 from stage 1, j3-j6 from the plan); --poses is then searched from 4
+    /// up. Range: (0, 1] deg.
+    #[arg(long, value_name = "U", conflicts_with = "poses", value_parser = RealIn::above(0.0, 1.0, "deg"))]
+    pub target_k2_deg: Option<f64>,
+    /// The session's robot time.
+    #[command(flatten)]
+    pub timing: TimingArgs,
 }
 
 /// Per-joint (min, max) limits of joints 3-6 (deg).
@@ -151,17 +182,88 @@ pub fn parse_limits(text: &str) -> Result<LimitsDeg, String> {
     Ok(limits)
 }
 
+/// The worst correlation between two parameters of the plan.
+#[derive(Serialize, Debug, Clone, PartialEq)]
+pub struct Correlation {
+    /// The two parameters (`j3`..`j6`).
+    pub params: [&'static str; 2],
+    /// Their correlation coefficient.
+    pub value: f64,
+}
+
+/// The correlations of the plan's parameters (the stage-2 offsets).
+#[derive(Serialize, Debug, Clone, PartialEq)]
+pub struct Correlations {
+    /// The parameters, in the matrix's order.
+    pub params: Vec<&'static str>,
+    /// Correlation coefficients of (JᵀJ)⁻¹.
+    pub matrix: Vec<Vec<f64>>,
+    /// The largest |coefficient| off the diagonal.
+    pub worst: Correlation,
+    /// Every pair with |coefficient| above [`POORLY_SEPARATED`].
+    pub poorly_separated: Vec<Correlation>,
+    /// The threshold.
+    pub threshold: f64,
+}
+
+/// The session's robot time in `--json`.
+#[derive(Serialize, Debug, Clone, PartialEq)]
+pub struct RobotTimeJson {
+    /// All of it (s).
+    pub total_s: f64,
+    /// Moving (s).
+    pub motion_s: f64,
+    /// Standing for settling and the pendant's still window (s).
+    pub dwell_s: f64,
+    /// The pendant's remount (s).
+    pub remount_s: f64,
+    /// Operator OKs at the pendant (s).
+    pub operator_s: f64,
+    /// Moves, approach moves included.
+    pub moves: u16,
+    /// Moves that turn round to arrive in the approach direction.
+    pub approach_moves: u16,
+    /// Stops for an operator's OK.
+    pub ok_stops: u16,
+    /// Joint speed, % of each joint's maximum.
+    pub speed_percent: u8,
+    /// Each joint's maximum speed (deg/s).
+    pub max_speed_deg_s: [f64; JOINTS],
+    /// Where each comes from.
+    pub max_speed_source: [SpeedSource; JOINTS],
+    /// Each joint's acceleration (deg/s², stated default).
+    pub accel_deg_s2: [f64; JOINTS],
+    /// Settling per pose (s).
+    pub settle_s: f64,
+    /// The wait at each captured pose (s): settling, still window, two sensor periods.
+    pub dwell_per_pose_s: f64,
+    /// Each joint's approach direction (+1 from below, −1 from above), in the
+    /// controller's joint terms.
+    pub approach: [i8; JOINTS],
+}
+
 /// The `--json` output.
 #[derive(Serialize, Debug)]
 pub struct PlanJson {
     /// Robot profile.
     pub robot: String,
-    /// θ1..θ6 per pose in the model's angles (deg): what the pendant's `plan set` takes.
+    /// θ1..θ6 per pose in the model's angles (deg), in the session's order: what the
+    /// pendant's `plan set` takes.
     pub poses_deg: Vec<[f64; JOINTS]>,
     /// The same poses as the robot's controller shows them (deg).
     pub poses_controller_deg: Vec<[f64; JOINTS]>,
     /// Predicted 1σ of Δθ3..Δθ6 (deg).
     pub predicted_sigma_deg: [f64; WRIST_JOINTS],
+    /// Predicted k = 2 uncertainty of Δθ2..Δθ6 (deg): [`predicted_k2_deg`].
+    pub predicted_k2_deg: [f64; WRIST_JOINTS + 1],
+    /// What the prediction includes.
+    pub predicted_from: &'static str,
+    /// The target asked for (deg), if any.
+    pub target_k2_deg: Option<f64>,
+    /// Correlations of the plan's parameters.
+    pub correlation: Correlations,
+    /// The session's robot time.
+    pub robot_time: RobotTimeJson,
     /// Condition number of the plan's Jacobian.
     pub condition_number: f64,
     /// Largest |reading| at zero offsets (deg).
@@ -172,8 +274,12 @@ pub struct PlanJson {
     pub margin_deg: f64,
     /// Limits used (deg).
     pub limits_deg: LimitsDeg,
-    /// Uniform noise half-width (deg).
-    pub noise_deg: f64,
+    /// The capture noise assumed, 1σ (deg).
+    pub noise_sigma_deg: f64,
+    /// What the plan separates besides the offsets.
+    pub fitted: Vec<&'static str>,
+    /// Captures per pose.
+    pub captures_per_pose: usize,
     /// Criterion ("a" or "d").
     pub criterion: &'static str,
     /// Seed.
@@ -196,13 +302,35 @@ impl PlanArgs {
         }
     }
 
-    fn model(&self, profile: &Profile) -> Stage2Model<f64> {
+    /// The stage-2 model the plan is made for: the profile's arm, the given base tilt,
+    /// the convention, no bias.
+    pub fn model(&self, profile: &Profile) -> Stage2Model<f64> {
         let (a, b) = self.base_tilt_deg.unwrap_or((0.0, 0.0));
         Stage2Model {
             arm: profile.arm,
             base_tilt: BaseTilt::from_deg(a, b),
             sensor: SensorModel::new(self.convention, Tilt::default()),
+            masses: profile.mass_model(),
             ..Stage2Model::default()
+        }
+    }
+
+    /// The fit the session will run: `zerocal session`'s for this convention, with
+    /// `--noise-deg` if given.
+    pub fn fit_config(&self, profile: &Profile) -> FitConfig<f64> {
+        let mut fit = crate::session::fit_config(self.convention, profile);
+        if let Some(a) = self.noise_deg {
+            fit.sensor_noise_rad = deg_to_rad(a / 3f64.sqrt());
+        }
+        fit
+    }
+
+    /// Captures per pose: two (one from each side of the backlash) with the SCL3300,
+    /// one for the paper's sensor.
+    pub fn captures_per_pose(&self) -> usize {
+        match self.convention {
+            Convention::Axis => 2,
+            Convention::Rpy => 1,
         }
     }
 
@@ -218,7 +346,8 @@ impl PlanArgs {
             fixed_joints_rad: [q1[0], q1[1]],
             seed: self.seed,
             candidates: self.candidates,
-            noise_sigma_rad: deg_to_rad(self.noise_deg / 3f64.sqrt()),
+            noise_sigma_rad: self.fit_config(profile).sensor_noise_rad,
+            extras: self.fit_config(profile).extras,
             criterion: self.criterion,
             ..PlanConfig::default()
         })
@@ -239,18 +368,252 @@ fn cli_error(e: PlanError) -> CliError {
     }
 }
 
-/// Plans the poses the flags ask for.
+/// What [`predicted_k2_deg`] includes (printed beside the figures).
+pub const PREDICTED_FROM: &str = "the session's budget predicted before the robot moves (core's predict_budget): stages 0-1 handed over, the plan's readings with the sensor's noise, the cost of estimating the sensor's gain and cross-axis, the sag and the flange bracket's tilt, and the robot's repeatability (0.0015 deg per joint); not the brackets' seats";
+
+/// The predicted k = 2 uncertainty of Δθ2..Δθ6 (deg) of a session on `profile` with
+/// the stage-2 poses `poses_rad` (model angles), per-reading noise 1σ
+/// `noise_sigma_rad`: j2 from stage 1's two readings at the profile's stage-1 pose
+/// (with a stage-0 bias), j3-j6 from core's covariance bound of the poses.
+///
+/// The one function the target search calls: a fuller uncertainty budget (stage 0-1's
+/// hand-over, the sensor's and the robot's error terms) replaces its body.
+///
+/// # Errors
+/// A pose set the bound refuses (too few poses, rank deficient: naming the
+/// parameters), or a stage-1 pose the two readings cannot resolve.
+pub fn predicted_k2_deg(
+    profile: &Profile,
+    model: &Stage2Model<f64>,
+    poses_rad: &[[f64; JOINTS]],
+    fit: &FitConfig<f64>,
+    captures_per_pose: usize,
+) -> Result<[f64; WRIST_JOINTS + 1], CliError> {
+    let robot = PlannedRobot {
+        arm: profile.arm,
+        masses: model.masses,
+        convention: model.sensor.convention,
+        stage1_joints_rad: profile.stage1_joints_rad,
+    };
+    let b = predict_budget(
+        &robot,
+        poses_rad,
+        captures_per_pose,
+        fit,
+        &BudgetInputs {
+            extras: fit.extras,
+            mount_tolerance_rad: 0.0,
+            repeatability_rad: DEFAULT_REPEATABILITY_DEG.to_radians(),
+        },
+    )
+    .map_err(|e| CliError::Refused(format!("plan refused: {e}")))?;
+    Ok(b.expanded_rad.map(rad_to_deg))
+}
+
+/// The correlations of Δθ3..Δθ6 on a pose set, from (JᵀJ)⁻¹.
+///
+/// # Errors
+/// A singular information matrix.
+pub fn correlations(
+    model: &Stage2Model<f64>,
+    extras: Extras,
+    poses_rad: &[[f64; JOINTS]],
+) -> Result<Correlations, CliError> {
+    let gram = information(model, extras, poses_rad, &[0.0; WRIST_JOINTS]).gram();
+    let singular = || CliError::Refused("plan refused: its information matrix is singular".into());
+    let l = gram.cholesky().ok_or_else(singular)?;
+    let ui = l.transpose().upper_inverse().ok_or_else(singular)?;
+    let cov = ui.mul(&ui.transpose());
+    let layout = extras.layout();
+    let n = layout.len();
+    let params: Vec<&'static str> = layout.params().iter().map(|p| p.name()).collect();
+    let mut matrix = vec![vec![0.0; n]; n];
+    let mut worst = Correlation {
+        params: [params[0], params[1]],
+        value: 0.0,
+    };
+    let mut poorly_separated = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            let r = cov.m[i][j] / (cov.m[i][i] * cov.m[j][j]).sqrt();
+            matrix[i][j] = r;
+            if j > i {
+                let c = Correlation {
+                    params: [params[i], params[j]],
+                    value: r,
+                };
+                if r.abs() > worst.value.abs() {
+                    worst = c.clone();
+                }
+                if r.abs() > POORLY_SEPARATED {
+                    poorly_separated.push(c);
+                }
+            }
+        }
+    }
+    Ok(Correlations {
+        params,
+        matrix,
+        worst,
+        poorly_separated,
+        threshold: POORLY_SEPARATED,
+    })
+}
+
+/// A plan with everything `zerocal plan` reports of it.
+#[derive(Clone, Debug)]
+pub struct SessionPlan {
+    /// The robot.
+    pub profile: Profile,
+    /// The planner's settings.
+    pub config: PlanConfig<f64>,
+    /// The plan, its poses in the session's order.
+    pub plan: Plan<f64>,
+    /// The poses in the controller's terms.
+    pub poses: SessionPoses,
+    /// The time model (approach directions chosen inside the limits).
+    pub timing: Timing,
+    /// The robot time in this order.
+    pub time: SessionTime<f64>,
+    /// The same poses' robot time in the planner's own order.
+    pub time_unordered: SessionTime<f64>,
+    /// [`predicted_k2_deg`].
+    pub k2_deg: [f64; WRIST_JOINTS + 1],
+    /// The correlations.
+    pub correlation: Correlations,
+}
+
+/// Plans `poses` poses with the flags' other settings, unordered.
+fn plan_n(
+    args: &PlanArgs,
+    profile: &Profile,
+    poses: usize,
+) -> Result<(PlanConfig<f64>, Plan<f64>), CliError> {
+    let mut config = args.config(profile)?;
+    config.poses = poses;
+    let model = args.model(profile);
+    let mut pool = vec![Candidate::default(); args.candidates.max(1)];
+    let p = plan(&model, &config, &mut pool).map_err(cli_error)?;
+    Ok((config, p))
+}
+
+/// Puts a plan's poses in the session's order and works out what it promises.
+///
+/// # Errors
+/// A pose whose approach leaves the joint limits; a plan the bound refuses.
+pub fn session_plan(
+    args: &PlanArgs,
+    profile: Profile,
+    config: PlanConfig<f64>,
+    mut p: Plan<f64>,
+) -> Result<SessionPlan, CliError> {
+    let model = args.model(&profile);
+    let unordered = SessionPoses::new(&profile, &p.poses_rad);
+    let approach = timing::approach_directions(&profile, &unordered.captures())?;
+    let unordered = unordered.with_mounts(&profile, &approach)?;
+    let t = Timing::new(&profile, &args.timing, approach)?;
+    let pendant = Pendant::new(&profile);
+    let time_unordered = timing::session_time(&pendant, &t.model, &unordered);
+    let order = timing::time_order(&pendant, &t.model, &unordered);
+    let poses = unordered.reordered(&profile, &order, &approach)?;
+    let original = p.poses_rad.clone();
+    p.poses_rad.clear();
+    for &i in &order {
+        if let Some(q) = original.get(i) {
+            // As many as there were: cannot overflow.
+            let _ = p.poses_rad.push(*q);
+        }
+    }
+    let time = timing::session_time(&pendant, &t.model, &poses);
+    let fit = args.fit_config(&profile);
+    let k2_deg = predicted_k2_deg(
+        &profile,
+        &model,
+        &p.poses_rad,
+        &fit,
+        args.captures_per_pose(),
+    )?;
+    let correlation = correlations(&model, fit.extras, &p.poses_rad)?;
+    Ok(SessionPlan {
+        profile,
+        config,
+        plan: p,
+        poses,
+        timing: t,
+        time,
+        time_unordered,
+        k2_deg,
+        correlation,
+    })
+}
+
+/// Plans the poses the flags ask for, in the session's order, with what they
+/// promise; with `--target-k2-deg`, the fewest poses that reach it.
 ///
 /// # Errors
 /// Bad flags or limits file (status 2); a plan that cannot separate the parameters or
-/// reach the window inside the limits (status 3).
-pub fn make_plan(args: &PlanArgs) -> Result<(Profile, PlanConfig<f64>, Plan<f64>), CliError> {
+/// reach the window inside the limits, or a target no plan reaches (status 3).
+pub fn make_plan(args: &PlanArgs) -> Result<SessionPlan, CliError> {
     let profile = crate::robot::load(&args.robot)?;
-    let config = args.config(&profile)?;
+    let Some(target) = args.target_k2_deg else {
+        let (config, p) = plan_n(args, &profile, args.poses)?;
+        return session_plan(args, profile, config, p);
+    };
     let model = args.model(&profile);
-    let mut pool = vec![Candidate::default(); args.candidates.max(1)];
-    let p = plan(&model, &config, &mut pool).map_err(cli_error)?;
-    Ok((profile, config, p))
+    let mut best: Option<(usize, [f64; WRIST_JOINTS + 1])> = None;
+    let mut refusal = None;
+    for n in MIN_POSES..=MAX_POSES {
+        let (config, p) = match plan_n(args, &profile, n) {
+            Ok(v) => v,
+            // A plan this small may not separate the parameters: try more poses.
+            Err(CliError::Refused(m)) => {
+                refusal = Some(m);
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
+        let fit = args.fit_config(&profile);
+        let k2 = predicted_k2_deg(
+            &profile,
+            &model,
+            &p.poses_rad,
+            &fit,
+            args.captures_per_pose(),
+        )?;
+        if k2.iter().all(|u| *u <= target) {
+            return session_plan(args, profile, config, p);
+        }
+        let worst = |k: &[f64; WRIST_JOINTS + 1]| k.iter().fold(0.0f64, |m, u| m.max(*u));
+        if best.is_none_or(|(_, b)| worst(&k2) < worst(&b)) {
+            best = Some((n, k2));
+        }
+    }
+    let detail = match best {
+        Some((n, k2)) => {
+            let names = ["j2", "j3", "j4", "j5", "j6"];
+            let over: Vec<String> = names
+                .iter()
+                .zip(k2)
+                .filter(|(_, u)| *u > target)
+                .map(|(name, u)| format!("{name} {u:.5}"))
+                .collect();
+            format!(
+                "the best, {n} poses, predicts k=2 {} deg (j2 comes from stage 1 alone and does not improve with poses)",
+                over.join(", ")
+            )
+        }
+        None => format!(
+            "no plan of {MIN_POSES}-{MAX_POSES} poses separates the parameters ({})",
+            refusal.unwrap_or_default()
+        ),
+    };
+    Err(CliError::Refused(format!(
+        "no plan of at most {MAX_POSES} poses reaches k=2 <= {target} deg on every joint: {detail}"
+    )))
+}
+
+fn minutes(s: f64) -> String {
+    format!("{:.1} min ({s:.0} s)", s / 60.0)
 }
 
 /// Runs `zerocal plan`: the text to print on stdout.
@@ -258,25 +621,50 @@ pub fn make_plan(args: &PlanArgs) -> Result<(Profile, PlanConfig<f64>, Plan<f64>
 /// # Errors
 /// As [`make_plan`].
 pub fn run(args: &PlanArgs) -> Result<String, CliError> {
-    let (profile, config, p) = make_plan(args)?;
+    let sp = make_plan(args)?;
+    let (profile, config, p) = (&sp.profile, &sp.config, &sp.plan);
     let poses_deg: Vec<[f64; JOINTS]> = p.poses_rad.iter().map(|q| q.map(rad_to_deg)).collect();
-    let shown: Vec<[f64; JOINTS]> = p.poses_rad.iter().map(|q| profile.shown_deg(q)).collect();
+    let shown = sp.poses.poses.clone();
     let sigma_deg = p.predicted_sigma_deg();
     if args.csv {
         // Model degrees, six joints: what the pendant's `plan set` takes.
         let mut out = String::from("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg\n");
         for q in &poses_deg {
-            let row: Vec<String> = q.iter().map(|v| format!("{v:.4}")).collect();
+            let row: Vec<String> = q.iter().map(|v| format!("{v:.6}")).collect();
             let _ = writeln!(out, "{}", row.join(","));
         }
         return Ok(out);
     }
+    let t = &sp.time;
+    let tm = &sp.timing;
+    let robot_time = RobotTimeJson {
+        total_s: t.total_s,
+        motion_s: t.motion_s,
+        dwell_s: t.dwell_s,
+        remount_s: t.remount_s,
+        operator_s: t.operator_s,
+        moves: t.moves,
+        approach_moves: t.approach_moves,
+        ok_stops: t.ok_stops,
+        speed_percent: tm.speed_percent,
+        max_speed_deg_s: tm.max_speed_deg_s,
+        max_speed_source: tm.speed_source,
+        accel_deg_s2: tm.model.accel_deg_s2,
+        settle_s: tm.model.settle_s,
+        dwell_per_pose_s: tm.model.dwell_s(),
+        approach: tm.model.approach,
+    };
     if args.json {
         let j = PlanJson {
             robot: profile.name.clone(),
             poses_deg,
             poses_controller_deg: shown,
             predicted_sigma_deg: sigma_deg,
+            predicted_k2_deg: sp.k2_deg,
+            predicted_from: PREDICTED_FROM,
+            target_k2_deg: args.target_k2_deg,
+            correlation: sp.correlation.clone(),
+            robot_time,
             condition_number: p.condition_number,
             max_reading_deg: rad_to_deg(p.max_reading_rad),
             window_deg: args.window_deg,
@@ -284,7 +672,12 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
             limits_deg: config
                 .limits_rad
                 .map(|(lo, hi)| (rad_to_deg(lo), rad_to_deg(hi))),
-            noise_deg: args.noise_deg,
+            noise_sigma_deg: rad_to_deg(config.noise_sigma_rad),
+            fitted: config.extras.layout().params()[WRIST_JOINTS..]
+                .iter()
+                .map(|p| p.name())
+                .collect(),
+            captures_per_pose: args.captures_per_pose(),
             criterion: args.criterion.name(),
             seed: args.seed,
         };
@@ -292,6 +685,13 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
             .map_err(|e| CliError::Input(format!("cannot write JSON: {e}")));
     }
     let mut out = String::new();
+    if let Some(target) = args.target_k2_deg {
+        let _ = writeln!(
+            out,
+            "fewest poses with predicted k=2 <= {target} deg on j2-j6: {}",
+            p.poses_rad.len()
+        );
+    }
     let _ = writeln!(
         out,
         "{} planned poses (readings within +/-{:.2} deg at zero offsets, window +/-{} deg; {} candidates from {} draws, {} exchanges)",
@@ -304,7 +704,7 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
     );
     let _ = writeln!(
         out,
-        "robot {} ({}); joints as its controller shows them (deg):",
+        "robot {} ({}); joints as its controller shows them (deg), in the session's order:",
         profile.name, profile.title
     );
     let names: Vec<String> = profile
@@ -319,14 +719,78 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
     }
     let _ = writeln!(
         out,
-        "predicted 1-sigma (deg), noise uniform +/-{} deg: j3 {:.6}  j4 {:.6}  j5 {:.6}  j6 {:.6}",
-        args.noise_deg, sigma_deg[0], sigma_deg[1], sigma_deg[2], sigma_deg[3]
+        "stage 2 alone, predicted 1-sigma (deg), {} capture(s) per pose of sigma {:.5} deg: j3 {:.6}  j4 {:.6}  j5 {:.6}  j6 {:.6}",
+        args.captures_per_pose(),
+        rad_to_deg(config.noise_sigma_rad),
+        sigma_deg[0],
+        sigma_deg[1],
+        sigma_deg[2],
+        sigma_deg[3]
+    );
+    let k2 = sp.k2_deg;
+    let _ = writeln!(
+        out,
+        "predicted k=2 (deg): j2 {:.5}  j3 {:.5}  j4 {:.5}  j5 {:.5}  j6 {:.5}\n  ({PREDICTED_FROM})",
+        k2[0], k2[1], k2[2], k2[3], k2[4]
+    );
+    let c = &sp.correlation;
+    let _ = writeln!(
+        out,
+        "worst correlation {}-{} {:+.3}; poorly separated (|r| > {}): {}",
+        c.worst.params[0],
+        c.worst.params[1],
+        c.worst.value,
+        c.threshold,
+        if c.poorly_separated.is_empty() {
+            "none".to_owned()
+        } else {
+            c.poorly_separated
+                .iter()
+                .map(|p| format!("{}-{} {:+.3}", p.params[0], p.params[1], p.value))
+                .collect::<Vec<_>>()
+                .join(", ")
+        }
     );
     let _ = writeln!(
         out,
         "condition number {:.2}, largest reading {:.3} deg",
         p.condition_number,
         rad_to_deg(p.max_reading_rad)
+    );
+    let defaults: Vec<String> = (0..JOINTS)
+        .filter(|&k| tm.speed_source[k] == SpeedSource::StatedDefault)
+        .map(|k| timing::joint_label(profile, k))
+        .collect();
+    let _ = writeln!(
+        out,
+        "robot time {}: motion {:.0} s, dwell {:.0} s ({} captures x {:.1} s), pendant mountings {:.0} s, operator OKs {:.0} s ({} stops); planner's order {}",
+        minutes(t.total_s),
+        t.motion_s,
+        t.dwell_s,
+        p.poses_rad.len() + 2,
+        tm.model.dwell_s(),
+        t.remount_s,
+        t.operator_s,
+        t.ok_stops,
+        minutes(sp.time_unordered.total_s),
+    );
+    let _ = writeln!(
+        out,
+        "  joints at {} % of their maximum speed ({}), acceleration {:.1} deg/s^2 (stated default), settling {} s, each mounting {} s, OK {} s (stated defaults)",
+        tm.speed_percent,
+        if defaults.is_empty() {
+            "the profile's".to_owned()
+        } else {
+            format!(
+                "{} deg/s stated default for {} (not given by the profile)",
+                timing::DEFAULT_JOINT_SPEED_DEG_S,
+                defaults.join(", ")
+            )
+        },
+        tm.model.accel_deg_s2[0],
+        tm.model.settle_s,
+        tm.model.remount_s,
+        tm.model.operator_ok_s,
     );
     Ok(out)
 }
@@ -377,17 +841,123 @@ mod tests {
 
     #[test]
     fn csv_and_json_outputs() {
-        let csv = run(&args(&["--poses", "6", "--csv"])).unwrap_or_else(|e| panic!("{e}"));
+        let csv = run(&args(&["--poses", "12", "--csv"])).unwrap_or_else(|e| panic!("{e}"));
         let lines: Vec<&str> = csv.lines().collect();
         assert_eq!(lines[0], "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg");
-        assert_eq!(lines.len(), 7);
-        let json = run(&args(&["--poses", "6", "--json"])).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(lines.len(), 13);
+        let json = run(&args(&["--poses", "12", "--json"])).unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_default();
-        assert_eq!(v["poses_deg"].as_array().map(Vec::len), Some(6));
+        assert_eq!(v["poses_deg"].as_array().map(Vec::len), Some(12));
         assert_eq!(v["predicted_sigma_deg"].as_array().map(Vec::len), Some(4));
         let text = run(&args(&[])).unwrap_or_else(|e| panic!("{e}"));
         println!("{text}");
         assert!(text.contains("predicted 1-sigma"), "{text}");
+    }
+
+    /// The session's order moves the poses, never the prediction: the same poses'
+    /// information in another order (a sum over poses: rounding only), and the tour is
+    /// no longer than the planner's order.
+    #[test]
+    fn session_order_keeps_the_prediction_and_shortens_the_session() {
+        for robot in ["paper-wrist", "kuka-kr16", "fanuc-m20ia"] {
+            let a = args(&["--robot", robot, "--poses", "12"]);
+            let profile = crate::robot::load(robot).unwrap_or_else(|e| panic!("{e}"));
+            let (config, p) = plan_n(&a, &profile, 12).unwrap_or_else(|e| panic!("{e}"));
+            let model = a.model(&profile);
+            let before = predicted_k2_deg(
+                &profile,
+                &model,
+                &p.poses_rad,
+                &a.fit_config(&profile),
+                a.captures_per_pose(),
+            )
+            .unwrap_or_else(|e| panic!("{e}"));
+            let original = p.poses_rad.clone();
+            let sp = session_plan(&a, profile, config, p).unwrap_or_else(|e| panic!("{e}"));
+            for (k, (x, y)) in sp.k2_deg.iter().zip(before).enumerate() {
+                // Relative rounding of a sum of 12 terms in another order.
+                assert!((x - y).abs() <= 1e-9 * y, "{robot} j{}: {x} vs {y}", k + 2);
+            }
+            assert!(
+                sp.time.total_s <= sp.time_unordered.total_s + 1e-9,
+                "{robot}"
+            );
+            let mut a: Vec<String> = original.iter().map(|q| format!("{q:?}")).collect();
+            let mut b: Vec<String> = sp.plan.poses_rad.iter().map(|q| format!("{q:?}")).collect();
+            a.sort();
+            b.sort();
+            assert_eq!(a, b, "{robot}: the same poses");
+            println!(
+                "{robot}: 12 poses, robot time {:.0} s toured, {:.0} s in the planner's order",
+                sp.time.total_s, sp.time_unordered.total_s
+            );
+        }
+    }
+
+    #[test]
+    fn json_carries_the_prediction_correlations_and_robot_time() {
+        let json =
+            run(&args(&["--robot", "kuka-kr16", "--json"])).unwrap_or_else(|e| panic!("{e}"));
+        let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_default();
+        assert_eq!(v["predicted_k2_deg"].as_array().map(Vec::len), Some(5));
+        let t = &v["robot_time"];
+        let parts: f64 = ["motion_s", "dwell_s", "remount_s", "operator_s"]
+            .iter()
+            .map(|k| t[*k].as_f64().unwrap_or(f64::NAN))
+            .sum();
+        let total = t["total_s"].as_f64().unwrap_or(f64::NAN);
+        assert!((parts - total).abs() < 1e-9, "{parts} vs {total}");
+        let m = &v["correlation"]["matrix"];
+        for i in 0..4 {
+            assert!((m[i][i].as_f64().unwrap_or(0.0) - 1.0).abs() < 1e-12);
+            for j in 0..4 {
+                let (a, b) = (
+                    m[i][j].as_f64().unwrap_or(2.0),
+                    m[j][i].as_f64().unwrap_or(3.0),
+                );
+                assert!((a - b).abs() < 1e-12 && a.abs() <= 1.0 + 1e-12);
+            }
+        }
+        let worst = v["correlation"]["worst"]["value"].as_f64().unwrap_or(2.0);
+        assert!(worst.abs() < POORLY_SEPARATED, "{worst}");
+        assert_eq!(v["robot_time"]["max_speed_source"][0], "profile");
+    }
+
+    /// The target search returns the fewest poses: one fewer misses the target.
+    #[test]
+    fn target_search_finds_the_fewest_poses() {
+        let target = 0.005;
+        let a = args(&["--robot", "kuka-kr16", "--target-k2-deg", "0.005"]);
+        let sp = make_plan(&a).unwrap_or_else(|e| panic!("{e}"));
+        let n = sp.plan.poses_rad.len();
+        assert!(sp.k2_deg.iter().all(|u| *u <= target), "{:?}", sp.k2_deg);
+        assert!(
+            n > MIN_POSES,
+            "the target is reached at the minimum already: no test"
+        );
+        let profile = crate::robot::load("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
+        for fewer in MIN_POSES..n {
+            if let Ok((config, p)) = plan_n(&a, &profile, fewer) {
+                let _ = config;
+                let k2 = predicted_k2_deg(
+                    &profile,
+                    &a.model(&profile),
+                    &p.poses_rad,
+                    &a.fit_config(&profile),
+                    a.captures_per_pose(),
+                )
+                .unwrap_or_else(|e| panic!("{e}"));
+                assert!(
+                    k2.iter().any(|u| *u > target),
+                    "{fewer} poses reach it: {k2:?}"
+                );
+            }
+        }
+        // A target below stage 1's own j2 uncertainty is refused, naming j2.
+        let e =
+            make_plan(&args(&["--robot", "kuka-kr16", "--target-k2-deg", "0.001"])).unwrap_err();
+        assert_eq!(e.exit_code(), 3);
+        assert!(e.to_string().contains("j2"), "{e}");
     }
 
     #[test]

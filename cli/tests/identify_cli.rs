@@ -267,12 +267,13 @@ fn simulate_prints_report_beside_truth() {
     assert_eq!(out.status.code(), Some(2));
 }
 
-/// `zerocal plan --poses 8 --json` poses have a covariance bound,
+/// `zerocal plan --convention rpy --poses 8 --json` (the paper's ideal sensor) poses
+/// have a covariance bound,
 /// computed here independently (METHOD.md's model, numeric Jacobian), at least 5×
 /// smaller per axis than 30 random poses with joints within ±30° inside the window.
 #[test]
 fn planned_poses_beat_random_ones_by_five_times() {
-    let out = zerocal(&["plan", "--poses", "8", "--json"]);
+    let out = zerocal(&["plan", "--convention", "rpy", "--poses", "8", "--json"]);
     assert!(
         out.status.success(),
         "{}",
@@ -337,7 +338,7 @@ fn planned_poses_beat_random_ones_by_five_times() {
         );
     }
     // --csv is what a robot program or the pendant's `plan set` takes.
-    let out = zerocal(&["plan", "--poses", "6", "--csv"]);
+    let out = zerocal(&["plan", "--convention", "rpy", "--poses", "6", "--csv"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(
         text.lines()

@@ -232,6 +232,16 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
             "--sessions=1".into(),
             "--robot=paper-wrist".into(),
         ],
+        // Writes next to the walk's log; a refused value writes nothing.
+        "program" => vec![
+            "program".into(),
+            "--robot".into(),
+            "kuka-kr16".into(),
+            "--format".into(),
+            "krl".into(),
+            "--out".into(),
+            log.with_file_name("walk.src").display().to_string(),
+        ],
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }
 }
@@ -311,9 +321,10 @@ fn every_numeric_option_refuses_what_is_outside_its_stated_range() {
             }
         }
     }
-    // simulate 6, identify 5, plan 6 numeric options at the time of writing.
+    // simulate 6, identify 5, plan 10, program 3 numeric options at the time of
+    // writing.
     assert!(
-        walked >= 17 * WALK.len(),
+        walked >= 24 * WALK.len(),
         "only {walked} runs: options lost?"
     );
 }

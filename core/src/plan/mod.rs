@@ -30,6 +30,7 @@
 
 mod design;
 mod random;
+pub mod time;
 
 pub use design::Candidate;
 pub use random::Xorshift64Star;

@@ -196,3 +196,92 @@ pub fn budget<T: Real>(
         expanded_rad: combined.map(|u| u * T::lit(COVERAGE_FACTOR)),
     }
 }
+
+/// The robot a session is planned for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlannedRobot<T: Real> {
+    /// Its arm and brackets.
+    pub arm: crate::model::Arm<T>,
+    /// The sag model's masses, if the profile has the geometry.
+    pub masses: Option<crate::stage2::MassModel<T>>,
+    /// The sensor's convention.
+    pub convention: crate::model::Convention,
+    /// The stage-1 pose (rad); stage 2 keeps its joints 1-2.
+    pub stage1_joints_rad: [T; JOINTS],
+}
+
+/// What a planned session will report, before the robot moves: the session solver run
+/// on noiseless readings of a level robot at zero offsets (stage 0 on a level bench,
+/// stage 1 at `stage1_joints_rad`, every pose of `poses` captured `captures_per_pose`
+/// times), with σ the sensor's noise figure, then its budget. The offsets and tilts of
+/// the real robot change the Jacobian by a fraction of a percent.
+///
+/// The session's own report takes σ from its residuals, which also hold part of the
+/// robot's repeatability: its budget comes out somewhat larger than this one.
+///
+/// # Errors
+/// The solver's refusal of the plan (rank-deficient, ill-conditioned).
+pub fn predict_budget<T: Real>(
+    robot: &PlannedRobot<T>,
+    poses: &[[T; JOINTS]],
+    captures_per_pose: usize,
+    config: &crate::stage2::FitConfig<T>,
+    inputs: &BudgetInputs<T>,
+) -> Result<Budget<T>, super::SessionError> {
+    use crate::model::{up_in_sensor, BaseTilt, SensorModel, Tilt};
+    let (arm, convention, stage1_joints_rad) =
+        (&robot.arm, robot.convention, &robot.stage1_joints_rad);
+    let sensor = SensorModel::new(convention, Tilt::default());
+    let level = BaseTilt::level();
+    let read_upper =
+        |q1: T| sensor.reading(&arm.upper_arm_sensor(&level, q1, stage1_joints_rad[1]));
+    let stage1 = crate::stage1::AxisOneTurn {
+        before: read_upper(stage1_joints_rad[0]),
+        after: read_upper(stage1_joints_rad[0] + T::pi()),
+        j1_rad: stage1_joints_rad[0],
+        j2_rad: stage1_joints_rad[1],
+    };
+    let level_reading = convention.read(&up_in_sensor(&nalgebra::Rotation3::identity()));
+    let mut captures: heapless::Vec<PoseReading<T>, { crate::plan::MAX_POSES * 2 }> =
+        heapless::Vec::new();
+    for q in poses {
+        let reading = sensor.reading(&arm.flange_sensor(&level, q));
+        for _ in 0..captures_per_pose.max(1) {
+            captures
+                .push(PoseReading {
+                    joints_rad: *q,
+                    reading,
+                    temperature_c: None,
+                })
+                .map_err(|_| {
+                    super::SessionError::Stage2(crate::FitError::TooFewPoses {
+                        got: poses.len(),
+                        min: crate::stage2::MIN_POSES,
+                    })
+                })?;
+        }
+    }
+    let readings = super::SessionReadings {
+        convention,
+        arm: *arm,
+        masses: robot.masses,
+        bias: super::BiasSource::Reversal(crate::stage0::Reversal {
+            first: level_reading,
+            second: level_reading,
+        }),
+        stage1,
+        poses: &captures,
+        temperatures: super::StageTemperatures::default(),
+        closing: None,
+    };
+    // σ from the noise figure: noiseless readings leave no residuals to take it from.
+    let per_row = T::lit(captures_per_pose.max(1) as f64);
+    let config = crate::stage2::FitConfig {
+        min_residual_dof: usize::MAX,
+        max_residual_rms_rad: T::zero(),
+        sensor_noise_rad: config.sensor_noise_rad / per_row.sqrt(),
+        ..*config
+    };
+    let solution = super::solve(&readings, &config).result?;
+    Ok(budget(&solution, &captures, inputs))
+}

@@ -12,8 +12,8 @@
 mod budget;
 
 pub use budget::{
-    budget, Budget, BudgetInputs, BudgetTerm, BUDGET_TERMS, COVERAGE_FACTOR,
-    DEFAULT_REPEATABILITY_DEG,
+    budget, predict_budget, Budget, BudgetInputs, BudgetTerm, PlannedRobot, BUDGET_TERMS,
+    COVERAGE_FACTOR, DEFAULT_REPEATABILITY_DEG,
 };
 
 use crate::error::{FitError, StageError};

@@ -1,0 +1,157 @@
+//! `zerocal program` refuses, before anything is written, a plan the robot cannot
+//! run: a pose outside the joint limits (naming the joint and the limit), another
+//! robot's plan, an INFORM job without pulses per degree.
+
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+// Joint loops read best with the joint index, as the formulas write them.
+#![allow(clippy::needless_range_loop)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use zerocal_cli::timing::TimingArgs;
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("zerocal-limits-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d.join(name)
+}
+
+fn program(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_zerocal"))
+        .arg("program")
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn write_plan(path: &Path, poses_deg: &[[f64; 6]]) {
+    let mut text = String::from("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg\n");
+    for q in poses_deg {
+        let row: Vec<String> = q.iter().map(|v| format!("{v:.6}")).collect();
+        text.push_str(&row.join(","));
+        text.push('\n');
+    }
+    std::fs::write(path, text).unwrap();
+}
+
+fn kr16_plan_deg() -> Vec<[f64; 6]> {
+    zerocal_cli::program::default_plan("kuka-kr16", &TimingArgs::default())
+        .unwrap()
+        .iter()
+        .map(|q| q.map(f64::to_degrees))
+        .collect()
+}
+
+#[test]
+fn a_pose_outside_the_limits_is_refused_naming_joint_and_limit() {
+    let mut poses = kr16_plan_deg();
+    // KR 16-2: A5 within -130..130 deg (profile kuka-kr16, from the KUKA datasheet).
+    poses[3][4] = 131.5;
+    let plan = tmp("outside.csv");
+    write_plan(&plan, &poses);
+    let out = tmp("outside.src");
+    let run = program(&[
+        "--robot",
+        "kuka-kr16",
+        "--format",
+        "krl",
+        "--plan",
+        plan.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(3), "{err}");
+    assert!(
+        err.contains("A5 (joint 5)") && err.contains("-130..130"),
+        "{err}"
+    );
+    assert!(err.contains("131.5"), "{err}");
+    assert!(!out.exists(), "a refused program must not be written");
+
+    // At the lower limit a pose is still fine: A5 is then approached from above, so
+    // that the approach point stays inside. A pose with A5 at -130 that the pendant
+    // can read (within ±9°), drawn seeded:
+    let profile = zerocal_profile::builtin("kuka-kr16").unwrap();
+    let pendant = zerocal_cli::timing::Pendant::new(&profile);
+    let mut rng = zerocal_core::plan::Xorshift64Star::new(3);
+    poses[3] = loop {
+        let mut q = poses[3];
+        for k in [2, 3, 5] {
+            let j = &profile.joints[k];
+            q[k] = rng.uniform(j.min_deg, j.max_deg);
+        }
+        q[4] = -130.0;
+        let t = pendant.reading(&profile.shown_deg(&q.map(f64::to_radians)));
+        if t.x_rad.to_degrees().abs() < 9.0 && t.y_rad.to_degrees().abs() < 9.0 {
+            break q;
+        }
+    };
+    write_plan(&plan, &poses);
+    let run = program(&[
+        "--robot",
+        "kuka-kr16",
+        "--format",
+        "krl",
+        "--plan",
+        plan.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.contains("A5-"), "A5 approached from above:\n{text}");
+}
+
+#[test]
+fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
+    let plan = tmp("kr16.csv");
+    write_plan(&plan, &kr16_plan_deg());
+    let out = tmp("other.mod");
+    // Joints 1-2 are the KR 16's stage-1 values, not the IRB 140's.
+    let run = program(&[
+        "--robot",
+        "abb-irb140",
+        "--format",
+        "rapid",
+        "--plan",
+        plan.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(2), "{err}");
+    assert!(err.contains("stage-1 values"), "{err}");
+    // A KUKA profile in RAPID: exit 2, naming the right format.
+    let run = program(&[
+        "--robot",
+        "kuka-kr16",
+        "--format",
+        "rapid",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("--format krl"));
+    // The built-in GP7 has no pulses per degree: refused, nothing written.
+    let jbi = tmp("gp7.jbi");
+    let run = program(&[
+        "--robot",
+        "yaskawa-gp7",
+        "--format",
+        "inform",
+        "--out",
+        jbi.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(3), "{err}");
+    assert!(err.contains("counts_per_deg"), "{err}");
+    assert!(!jbi.exists());
+    assert!(!out.exists());
+}
