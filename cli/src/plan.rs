@@ -41,7 +41,7 @@ use zerocal_core::plan::time::SessionTime;
 use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError, MAX_POSES};
 use zerocal_core::real::{deg_to_rad, rad_to_deg};
 use zerocal_core::session::{
-    predict_budget, BudgetInputs, PlannedRobot, DEFAULT_REPEATABILITY_DEG,
+    predict_budget, BudgetInputs, PlannedRobot, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
 };
 use zerocal_core::stage2::{information, Extras, FitConfig, Stage2Model, MIN_POSES};
 use zerocal_profile::Profile;
@@ -404,6 +404,7 @@ pub fn predicted_k2_deg(
             extras: fit.extras,
             mount_tolerance_rad: 0.0,
             repeatability_rad: DEFAULT_REPEATABILITY_DEG.to_radians(),
+            lost_motion_rad: DEFAULT_LOST_MOTION_DEG.to_radians(),
         },
     )
     .map_err(|e| CliError::Refused(format!("plan refused: {e}")))?;

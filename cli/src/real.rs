@@ -209,6 +209,11 @@ pub fn run_session(
             } else {
                 0.0
             },
+            lost_motion_rad: if world.robot.backlash {
+                world.robot_spec.lost_motion_deg.to_radians()
+            } else {
+                0.0
+            },
         },
     );
     Ok(RealRun {
@@ -334,8 +339,8 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
         let _ = writeln!(out, "\n{} ({})", profile.name, profile.title);
         let _ = writeln!(
             out,
-            "{:<58} {:>10} {:>10} {:>10} {:>8}",
-            "error source switched on", "before", "after p95", "after max", "<=0.005"
+            "{:<58} {:>10} {:>10} {:>10} {:>8} {:>8}",
+            "error source switched on", "before", "after p95", "after max", "<=0.005", "refused"
         );
         let mut rows: Vec<(String, Option<Vec<Source>>)> = vec![(
             "none (noise and quantisation only)".to_owned(),
@@ -357,11 +362,23 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
                 world.warming_k = 0.0;
             }
             let mut cells = Vec::new();
+            let mut refusals: Vec<String> = Vec::new();
             for method in [Method::Uncompensated, Method::Compensated] {
                 let (plan, fit) = montecarlo::setup(&profile, method, args.poses)
                     .map_err(|e| CliError::Refused(format!("{name}: plan: {e}")))?;
                 let w = montecarlo::world_for(method, world);
                 let outcomes = montecarlo::run(&profile, &plan, &w, &fit, args.sessions, args.seed);
+                if method == Method::Compensated {
+                    refusals = outcomes
+                        .iter()
+                        .filter_map(|o| {
+                            o.result
+                                .as_ref()
+                                .err()
+                                .map(|e| format!("seed {}: {e}", o.seed))
+                        })
+                        .collect();
+                }
                 let worst: Vec<f64> = outcomes
                     .iter()
                     .map(|o| {
@@ -372,8 +389,14 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
                     .collect();
                 cells.push(worst);
             }
-            let max = |v: &[f64]| v.iter().cloned().fold(0.0f64, f64::max);
-            let mut after = cells[1].clone();
+            // Refused sessions (NaN) give no error: they are counted on their own.
+            let max = |v: &[f64]| {
+                v.iter()
+                    .cloned()
+                    .filter(|x| x.is_finite())
+                    .fold(0.0f64, f64::max)
+            };
+            let mut after: Vec<f64> = cells[1].iter().cloned().filter(|x| x.is_finite()).collect();
             after.sort_by(f64::total_cmp);
             let p95 = after
                 .get(((after.len() as f64 * 0.95).ceil() as usize).saturating_sub(1))
@@ -390,13 +413,17 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
             };
             let _ = writeln!(
                 out,
-                "{:<58} {:>10} {:>10} {:>10} {:>7.0}%",
+                "{:<58} {:>10} {:>10} {:>10} {:>7.1}% {:>8}",
                 label,
                 fmt(max(&cells[0])),
                 fmt(p95),
                 fmt(max(&cells[1])),
-                ok * 100.0
+                ok * 100.0,
+                refusals.len()
             );
+            for r in &refusals {
+                let _ = writeln!(out, "    refused, {r}");
+            }
         }
     }
     Ok(out)

@@ -20,7 +20,8 @@ use zerocal_core::model::{Convention, JOINTS};
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
     budget, solve, BiasSource, Budget, BudgetInputs, BudgetTerm, SessionError, SessionReadings,
-    SessionSolution, StageTemperatures, DEFAULT_REPEATABILITY_DEG, SESSION_JOINTS,
+    SessionSolution, StageTemperatures, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
+    SESSION_JOINTS,
 };
 use zerocal_core::stage0::ClosingReversal;
 use zerocal_core::stage1::AxisOneTurn;
@@ -43,6 +44,10 @@ pub struct SessionArgs {
     /// The robot's repeatability per joint, 1σ. Range: [0, 0.1] deg.
     #[arg(long, default_value_t = DEFAULT_REPEATABILITY_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 0.1, "deg"))]
     pub repeatability_deg: f64,
+    /// The gears' lost motion (joint 3 may sit on gravity's side of it; default: the
+    /// 1 arc min of an RV gear). Range: [0, 0.5] deg.
+    #[arg(long, default_value_t = DEFAULT_LOST_MOTION_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 0.5, "deg"))]
+    pub lost_motion_deg: f64,
     /// Print one JSON object instead of the report.
     #[arg(long)]
     pub json: bool,
@@ -241,6 +246,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             extras: config.extras,
             mount_tolerance_rad: args.mount_tolerance_deg.to_radians(),
             repeatability_rad: args.repeatability_deg.to_radians(),
+            lost_motion_rad: args.lost_motion_deg.to_radians(),
         },
     );
     let mut notes = vec![format!(

@@ -204,7 +204,7 @@ fn sample_log() -> PathBuf {
     path
 }
 
-/// A pendant export of a real-world simulated session on the KR 6 (12 poses).
+/// A pendant export of a real-world simulated session on the KR 6.
 fn sample_export() -> PathBuf {
     let dir = std::env::temp_dir().join(format!("zerocal-option-walk-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");

@@ -84,12 +84,16 @@ fn main() {
     let j3_half: f64 = a.get(7).map_or(0.0, |s| s.parse().unwrap());
     let mut plan = plan_for(&profile, &pc, j3_half).unwrap();
     let _ = &mut plan;
-    let fit = FitConfig {
+    let mut fit = FitConfig {
         extras,
         sensor_noise_rad: sigma,
         sensor_range_rad: 12f64.to_radians(),
         ..FitConfig::default()
     };
+    if std::env::var("MEMS").is_ok() {
+        fit = FitConfig::for_mems(&profile.arm, profile.mass_model().is_some());
+        fit.extras = extras;
+    }
     let out = run(&profile, &plan.poses_rad, &w, &fit, sessions, 1);
     let s = summarise(&out, 0.005);
     let f = |v: [f64; 5]| v.map(|x| format!("{x:.4}")).join(" ");

@@ -116,6 +116,11 @@ pub fn run(
                         } else {
                             0.0
                         },
+                        lost_motion_rad: if world.robot.backlash {
+                            world.robot_spec.lost_motion_deg.to_radians()
+                        } else {
+                            0.0
+                        },
                     },
                 )
             });
@@ -269,7 +274,7 @@ pub fn setup(
 
 /// The planning window (deg): mode 4's ±10° less room for the sensor's offset (up to
 /// 1.45°) and the offsets not yet known.
-pub const PLAN_WINDOW_DEG: f64 = 8.0;
+pub const PLAN_WINDOW_DEG: f64 = 7.0;
 
 /// The world a method runs in: `Uncompensated` approaches from one side and makes no
 /// closing reversal.

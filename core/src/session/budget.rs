@@ -39,6 +39,9 @@ pub enum BudgetTerm {
     FlangeTilt,
     /// The robot's repeatability, propagated (Type B: the residuals barely show it).
     Repeatability,
+    /// Joint 3's backlash where gravity holds it on one side whatever the approach
+    /// (Type B, the stated lost motion, propagated).
+    LoadedBacklash,
     /// The brackets' seats (Type B, the stated tolerance).
     Mounting,
 }
@@ -52,6 +55,7 @@ impl BudgetTerm {
         BudgetTerm::Sag,
         BudgetTerm::FlangeTilt,
         BudgetTerm::Repeatability,
+        BudgetTerm::LoadedBacklash,
         BudgetTerm::Mounting,
     ];
 
@@ -64,13 +68,14 @@ impl BudgetTerm {
             BudgetTerm::Sag => "sag of joints 2-3 (estimated)",
             BudgetTerm::FlangeTilt => "flange bracket tilt (estimated)",
             BudgetTerm::Repeatability => "robot repeatability (stated, propagated)",
+            BudgetTerm::LoadedBacklash => "joint 3 backlash under gravity (stated)",
             BudgetTerm::Mounting => "bracket seats (stated tolerance)",
         }
     }
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 7;
+pub const BUDGET_TERMS: usize = 8;
 
 /// Coverage factor: 2 for about 95 % (GUM 6.3.3).
 pub const COVERAGE_FACTOR: f64 = 2.0;
@@ -95,7 +100,15 @@ pub struct BudgetInputs<T> {
     pub mount_tolerance_rad: T,
     /// The robot's repeatability per joint, 1σ (rad).
     pub repeatability_rad: T,
+    /// The gears' lost motion (rad): joint 3, loaded by the arm, may sit on gravity's
+    /// side of it whatever the approach, so averaging both approaches does not cancel it
+    /// there; taken uniform within ±half of it at every pose.
+    pub lost_motion_rad: T,
 }
+
+/// The gears' lost motion when no figure is stated: 1 arc min, the Nabtesco RV-42N's
+/// (product page: lost motion < 1 arc min).
+pub const DEFAULT_LOST_MOTION_DEG: f64 = 1.0 / 60.0;
 
 /// The robot's repeatability per joint when no figure is stated: 0.0015° (1σ), issue 15's
 /// figure; six joints so give about 0.004° of flange orientation, inside the 87 µrad
@@ -162,11 +175,14 @@ pub fn budget<T: Real>(
         previous = variance;
     }
 
-    // Repeatability: stage 1's two readings each put joint 2 off by its own error
-    // (Δθ2 takes their mean, and Δθ3 the same with the other sign: the axes are
-    // parallel); stage 2's captures through the fit.
+    // Repeatability: stage 1's two readings each put joint 2 off by its own error δ₁,
+    // δ₂. Δθ2 takes their mean; the tilt α their half difference, so the rotation about
+    // joint 2's axis that stage 2 inherits with joint 1 back at its first position,
+    // α + Δθ2, carries δ₁ whole, and Δθ3 (parallel to joint 2) takes it back. Stage 2's
+    // captures through the fit.
     let rep2 = inputs.repeatability_rad * inputs.repeatability_rad;
     let stage1_part = rep2 / (T::lit(2.0) * per_row);
+    let inherited_by_j3 = rep2 / per_row;
     terms[5][0] = stage1_part.sqrt();
     let rep = crate::stage2::repeatability_covariance(
         &solution.model,
@@ -178,15 +194,28 @@ pub fn budget<T: Real>(
     );
     for k in 0..WRIST_JOINTS {
         let v = rep.map_or(T::zero(), |c| c[k][k]);
-        let inherited = if k == 0 { stage1_part } else { T::zero() };
+        let inherited = if k == 0 { inherited_by_j3 } else { T::zero() };
         terms[5][k + 1] = (v + inherited).sqrt();
+    }
+
+    // Joint 3 under gravity: ±half the lost motion at each pose, both captures alike.
+    let half = inputs.lost_motion_rad.abs() * T::lit(0.5);
+    let mut loaded = [T::zero(); WRIST_JOINTS + 1];
+    loaded[1] = half * half / T::lit(3.0);
+    let backlash =
+        crate::stage2::joint_error_covariance(&solution.model, extras, poses, &offsets, &loaded);
+    for k in 0..WRIST_JOINTS {
+        terms[6][k + 1] = backlash
+            .map_or(T::zero(), |c| c[k][k])
+            .max(T::zero())
+            .sqrt();
     }
 
     // Bracket seats: uniform within ±t, u = t/√3.
     let u_mount = inputs.mount_tolerance_rad.abs() / T::lit(3.0).sqrt();
-    terms[6][0] = u_mount;
-    terms[6][1] = u_mount;
-    terms[6][SESSION_JOINTS - 1] = u_mount;
+    terms[7][0] = u_mount;
+    terms[7][1] = u_mount;
+    terms[7][SESSION_JOINTS - 1] = u_mount;
 
     let combined: [T; SESSION_JOINTS] =
         core::array::from_fn(|k| terms.iter().fold(T::zero(), |s, t| s + t[k] * t[k]).sqrt());

@@ -13,7 +13,7 @@ mod budget;
 
 pub use budget::{
     budget, predict_budget, Budget, BudgetInputs, BudgetTerm, PlannedRobot, BUDGET_TERMS,
-    COVERAGE_FACTOR, DEFAULT_REPEATABILITY_DEG,
+    COVERAGE_FACTOR, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
 };
 
 use crate::error::{FitError, StageError};
@@ -81,6 +81,11 @@ pub const MAX_UNMEASURED_DRIFT_K: f64 = 0.5;
 /// With a closing reversal the drift is linear between the two reversals' temperatures:
 /// a capture may lie outside them by at most this (K).
 pub const MAX_DRIFT_EXTRAPOLATION_K: f64 = 1.0;
+
+/// The two reversals may differ by at most this (K): the offset's temperature curve is
+/// not a line over tens of kelvin (the SCA3300 data sheet's Figure 2, the SCL3300 notes'
+/// §2.9), and a box that warms this much is not settled.
+pub const MAX_DRIFT_SPAN_K: f64 = 10.0;
 
 /// What stages 0-1 hand to stage 2: the model of the arm, the tilt, Δθ2 and the sensor,
 /// and how well they are known.
@@ -184,8 +189,8 @@ impl fmt::Display for SessionError {
                 drift_measured: true,
             } => write!(
                 f,
-                "warm box: a stage-2 capture lies {kelvin:.1} K outside the temperatures of the \
-                 two reversals (limit {limit_k:.1} K): let the pendant settle and repeat"
+                "warm box: the pendant's temperature moved {kelvin:.1} K beyond what the two \
+                 reversals' linear drift follows (limit {limit_k:.1} K): let it settle and repeat"
             ),
         }
     }
@@ -326,6 +331,16 @@ fn check_temperatures<T: Real>(
     let Some(t0) = b.reference_c else {
         return Ok(());
     };
+    if let Some(t1) = b.closing_c {
+        let span = (t1 - t0).abs();
+        if span > T::lit(MAX_DRIFT_SPAN_K) {
+            return Err(SessionError::Warmed {
+                kelvin: span.to_f64() as f32,
+                limit_k: MAX_DRIFT_SPAN_K as f32,
+                drift_measured: true,
+            });
+        }
+    }
     let (lo, hi, limit, measured) = match b.closing_c {
         Some(t1) => (
             t0.min(t1),
@@ -530,11 +545,9 @@ fn combine<T: Real>(
 ) -> SessionSolution<T> {
     /// Δθ2's place among the hand-over parameters (α, β, Δθ2, bias x, bias y).
     const J2: usize = 2;
-    let variance = if handover_noise_rad > T::zero() {
-        handover_noise_rad * handover_noise_rad
-    } else {
-        fit.noise_sigma_rad * fit.noise_sigma_rad
-    };
+    // As stage 2 did (`FitConfig::handover_noise_rad`).
+    let variance =
+        (handover_noise_rad * handover_noise_rad).max(fit.noise_sigma_rad * fit.noise_sigma_rad);
     let mut offsets_rad = [T::zero(); SESSION_JOINTS];
     offsets_rad[0] = stage1.delta_theta2_rad;
     offsets_rad[1..].copy_from_slice(&fit.offsets_rad);

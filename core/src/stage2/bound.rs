@@ -80,6 +80,23 @@ pub fn repeatability_covariance<T: Real>(
     joint_variance_rad2: T,
     captures_per_row: T,
 ) -> Result<[[T; WRIST_JOINTS]; WRIST_JOINTS], FitError> {
+    let v = joint_variance_rad2 / captures_per_row;
+    joint_error_covariance(model, extras, poses, offsets_rad, &[v; WRIST_JOINTS + 1])
+}
+
+/// As [`repeatability_covariance`], with each of joints 2-6 off by its own variance
+/// per row (rad², index 0 = joint 2): for an error that differs by joint, such as the
+/// backlash of a loaded joint.
+///
+/// # Errors
+/// As [`covariance_bound`].
+pub fn joint_error_covariance<T: Real>(
+    model: &Stage2Model<T>,
+    extras: Extras,
+    poses: &[PoseReading<T>],
+    offsets_rad: &[T; WRIST_JOINTS],
+    joint_variance_rad2: &[T; WRIST_JOINTS + 1],
+) -> Result<[[T; WRIST_JOINTS]; WRIST_JOINTS], FitError> {
     let layout = extras.layout();
     let n = layout.len();
     let estimate = super::Estimate {
@@ -113,14 +130,14 @@ pub fn repeatability_covariance<T: Real>(
                 let s = b[i]
                     .iter()
                     .zip(&b[k])
-                    .fold(T::zero(), |s, (x, y)| s + *x * *y);
+                    .zip(joint_variance_rad2)
+                    .fold(T::zero(), |s, ((x, y), v)| s + *x * *y * *v);
                 outer.m[i][k] += s;
             }
         }
     }
     check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
     let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
-    let scale = joint_variance_rad2 / captures_per_row;
     let mut cov = [[T::zero(); WRIST_JOINTS]; WRIST_JOINTS];
     for (a, row) in cov.iter_mut().enumerate() {
         for (c, v) in row.iter_mut().enumerate() {
@@ -130,7 +147,7 @@ pub fn repeatability_covariance<T: Real>(
                     acc += inv.m[a][i] * outer.m[i][k] * inv.m[k][c];
                 }
             }
-            *v = acc * scale;
+            *v = acc;
         }
     }
     Ok(cov)
