@@ -62,9 +62,10 @@ pub struct PlanArgs {
     #[arg(long, default_value_t = 10.0, value_name = "W", value_parser = RealIn::above(0.0, 90.0, "deg"))]
     pub window_deg: f64,
     /// Planned readings stay within ±(W − margin) at zero offsets, leaving room for
-    /// the offsets not yet known and the sensor's offset (up to 1.45° on an SCL3300)
-    /// (deg); it must also be smaller than W. Range: [0, 90] deg.
-    #[arg(long, default_value_t = 2.0, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
+    /// the offsets not yet known and the sensor's offset (up to 1.45° on an SCL3300):
+    /// 3° by default, chosen by Monte-Carlo (docs/error-budget.md) (deg); it must also
+    /// be smaller than W. Range: [0, 90] deg.
+    #[arg(long, default_value_t = 10.0 - zerocal_sim::montecarlo::PLAN_WINDOW_DEG, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
     pub margin_deg: f64,
     /// Joint limits of joints 3-6: CSV lines `joint,min_deg,max_deg` (default: the
     /// robot profile's).
@@ -342,7 +343,16 @@ impl PlanArgs {
             poses: self.poses,
             window_rad: deg_to_rad(self.window_deg),
             margin_rad: deg_to_rad(self.margin_deg),
-            limits_rad: limits.map(|(lo, hi)| (deg_to_rad(lo), deg_to_rad(hi))),
+            // The robot reaches each pose from past it on either side: the poses keep
+            // that far inside the limits (a joint pinned by a limits file stays pinned).
+            limits_rad: limits.map(|(lo, hi)| {
+                let a = if hi - lo > 2.0 * timing::APPROACH_DEG {
+                    timing::APPROACH_DEG
+                } else {
+                    0.0
+                };
+                (deg_to_rad(lo + a), deg_to_rad(hi - a))
+            }),
             fixed_joints_rad: [q1[0], q1[1]],
             seed: self.seed,
             candidates: self.candidates,
@@ -842,13 +852,13 @@ mod tests {
 
     #[test]
     fn csv_and_json_outputs() {
-        let csv = run(&args(&["--poses", "12", "--csv"])).unwrap_or_else(|e| panic!("{e}"));
+        let csv = run(&args(&["--poses", "24", "--csv"])).unwrap_or_else(|e| panic!("{e}"));
         let lines: Vec<&str> = csv.lines().collect();
         assert_eq!(lines[0], "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg");
-        assert_eq!(lines.len(), 13);
-        let json = run(&args(&["--poses", "12", "--json"])).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(lines.len(), 25);
+        let json = run(&args(&["--poses", "24", "--json"])).unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value = serde_json::from_str(&json).unwrap_or_default();
-        assert_eq!(v["poses_deg"].as_array().map(Vec::len), Some(12));
+        assert_eq!(v["poses_deg"].as_array().map(Vec::len), Some(24));
         assert_eq!(v["predicted_sigma_deg"].as_array().map(Vec::len), Some(4));
         let text = run(&args(&[])).unwrap_or_else(|e| panic!("{e}"));
         println!("{text}");
@@ -861,9 +871,9 @@ mod tests {
     #[test]
     fn session_order_keeps_the_prediction_and_shortens_the_session() {
         for robot in ["paper-wrist", "kuka-kr16", "fanuc-m20ia"] {
-            let a = args(&["--robot", robot, "--poses", "12"]);
+            let a = args(&["--robot", robot, "--poses", "24"]);
             let profile = crate::robot::load(robot).unwrap_or_else(|e| panic!("{e}"));
-            let (config, p) = plan_n(&a, &profile, 12).unwrap_or_else(|e| panic!("{e}"));
+            let (config, p) = plan_n(&a, &profile, 24).unwrap_or_else(|e| panic!("{e}"));
             let model = a.model(&profile);
             let before = predicted_k2_deg(
                 &profile,

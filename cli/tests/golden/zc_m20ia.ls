@@ -7,7 +7,7 @@ CREATE		= DATE 23-11-14  TIME 22:13:20;
 MODIFIED	= DATE 23-11-14  TIME 22:13:20;
 FILE_NAME	= ;
 VERSION		= 0;
-LINE_COUNT	= 224;
+LINE_COUNT	= 222;
 MEMORY_SIZE	= 0;
 PROTECT		= READ_WRITE;
 TCD:  STACK_SIZE	= 0,
@@ -60,7 +60,7 @@ CONTROL_CODE	= 00000000 00000000;
   39:  ! target is reached ;
   40:  ! with each joint ;
   41:  ! moving J1+ J2+ J3+ ;
-  42:  ! J4+ J5- J6+. ;
+  42:  ! J4+ J5+ J6+. ;
   43:  ! Dwell 3.2 s at each ;
   44:  ! capture: settling 1 ;
   45:  ! s (stated default) + ;
@@ -68,7 +68,7 @@ CONTROL_CODE	= 00000000 00000000;
   47:  ! still window + 2 ;
   48:  ! sensor periods. ;
   49:  ! Predicted robot time ;
-  50:  ! 5.7 min (motion 131 ;
+  50:  ! 5.6 min (motion 122 ;
   51:  ! s, dwell 83 s, ;
   52:  ! remount 120 s, ;
   53:  ! operator OKs 10 s). ;
@@ -124,10 +124,10 @@ CONTROL_CODE	= 00000000 00000000;
  103:  ! zerocal stage 2: ;
  104:  ! pose 1 of 24 ;
  105:J P[7] 10% FINE ;
- 106:J P[8] 10% FINE ;
- 107:  WAIT   3.20(sec) ;
- 108:  ! zerocal stage 2: ;
- 109:  ! pose 2 of 24 ;
+ 106:  WAIT   3.20(sec) ;
+ 107:  ! zerocal stage 2: ;
+ 108:  ! pose 2 of 24 ;
+ 109:J P[8] 10% FINE ;
  110:J P[9] 10% FINE ;
  111:  WAIT   3.20(sec) ;
  112:  ! zerocal stage 2: ;
@@ -218,37 +218,35 @@ CONTROL_CODE	= 00000000 00000000;
  197:  ! zerocal stage 2: ;
  198:  ! pose 20 of 24 ;
  199:J P[44] 10% FINE ;
- 200:J P[45] 10% FINE ;
- 201:  WAIT   3.20(sec) ;
- 202:  ! zerocal stage 2: ;
- 203:  ! pose 21 of 24 ;
+ 200:  WAIT   3.20(sec) ;
+ 201:  ! zerocal stage 2: ;
+ 202:  ! pose 21 of 24 ;
+ 203:J P[45] 10% FINE ;
  204:J P[46] 10% FINE ;
- 205:J P[47] 10% FINE ;
- 206:  WAIT   3.20(sec) ;
- 207:  ! zerocal stage 2: ;
- 208:  ! pose 22 of 24 ;
+ 205:  WAIT   3.20(sec) ;
+ 206:  ! zerocal stage 2: ;
+ 207:  ! pose 22 of 24 ;
+ 208:J P[47] 10% FINE ;
  209:J P[48] 10% FINE ;
- 210:J P[49] 10% FINE ;
- 211:  WAIT   3.20(sec) ;
- 212:  ! zerocal stage 2: ;
- 213:  ! pose 23 of 24 ;
- 214:J P[50] 10% FINE ;
- 215:J P[51] 10% FINE ;
- 216:  WAIT   3.20(sec) ;
- 217:  ! zerocal stage 2: ;
- 218:  ! pose 24 of 24 ;
- 219:J P[52] 10% FINE ;
- 220:J P[53] 10% FINE ;
- 221:  WAIT   3.20(sec) ;
- 222:  ! zerocal: session ;
- 223:  ! done; the pendant ;
- 224:  ! shows the result ;
+ 210:  WAIT   3.20(sec) ;
+ 211:  ! zerocal stage 2: ;
+ 212:  ! pose 23 of 24 ;
+ 213:J P[49] 10% FINE ;
+ 214:  WAIT   3.20(sec) ;
+ 215:  ! zerocal stage 2: ;
+ 216:  ! pose 24 of 24 ;
+ 217:J P[50] 10% FINE ;
+ 218:J P[51] 10% FINE ;
+ 219:  WAIT   3.20(sec) ;
+ 220:  ! zerocal: session ;
+ 221:  ! done; the pendant ;
+ 222:  ! shows the result ;
 /POS
 P[1]{
    GP1:
 	UF : 0, UT : 0,	
 	J1=   -91.000 deg,	J2=   -46.000 deg,	J3=    72.330 deg,
-	J4=    -1.000 deg,	J5=     1.000 deg,	J6=    -1.000 deg
+	J4=    -1.000 deg,	J5=    -1.000 deg,	J6=    -1.000 deg
 };
 P[2]{
    GP1:
@@ -271,295 +269,283 @@ P[4]{
 P[5]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=     0.000 deg,	J3=   140.118 deg,
-	J4=  -193.099 deg,	J5=    90.410 deg,	J6=  -188.186 deg
+	J1=   -91.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
+	J4=   163.492 deg,	J5=   -64.996 deg,	J6=    13.445 deg
 };
 P[6]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   140.118 deg,
-	J4=  -192.099 deg,	J5=    89.410 deg,	J6=  -187.186 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
+	J4=   163.492 deg,	J5=   -63.996 deg,	J6=    13.445 deg
 };
 P[7]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   140.118 deg,
-	J4=  -192.099 deg,	J5=   135.410 deg,	J6=  -187.186 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
+	J4=   163.492 deg,	J5=   -18.996 deg,	J6=    13.445 deg
 };
 P[8]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   140.118 deg,
-	J4=  -192.099 deg,	J5=   134.410 deg,	J6=  -187.186 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   229.442 deg,
+	J4=    40.559 deg,	J5=   120.684 deg,	J6=    22.395 deg
 };
 P[9]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   230.255 deg,
-	J4=    41.768 deg,	J5=   121.553 deg,	J6=    22.479 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   229.442 deg,
+	J4=    41.559 deg,	J5=   120.684 deg,	J6=    22.395 deg
 };
 P[10]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   158.772 deg,
-	J4=   164.314 deg,	J5=   -19.132 deg,	J6=    12.494 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   157.966 deg,
+	J4=   -34.294 deg,	J5=    24.196 deg,	J6=   207.719 deg
 };
 P[11]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.772 deg,
-	J4=   164.314 deg,	J5=   -19.132 deg,	J6=    13.494 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   158.966 deg,
+	J4=   -33.294 deg,	J5=    25.196 deg,	J6=   207.719 deg
 };
 P[12]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   218.008 deg,
-	J4=   113.971 deg,	J5=  -118.853 deg,	J6=  -224.551 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   177.626 deg,
+	J4=     4.302 deg,	J5=     3.868 deg,	J6=   174.489 deg
 };
 P[13]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   218.008 deg,
-	J4=   114.971 deg,	J5=  -118.853 deg,	J6=  -223.551 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   177.626 deg,
+	J4=     4.302 deg,	J5=     4.868 deg,	J6=   175.489 deg
 };
 P[14]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   148.136 deg,
-	J4=    35.358 deg,	J5=  -139.275 deg,	J6=    31.819 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   181.007 deg,
+	J4=    23.153 deg,	J5=    -0.693 deg,	J6=   158.207 deg
 };
 P[15]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   149.136 deg,
-	J4=    36.358 deg,	J5=  -139.275 deg,	J6=    31.819 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   181.007 deg,
+	J4=    23.153 deg,	J5=     0.307 deg,	J6=   159.207 deg
 };
 P[16]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   171.317 deg,
-	J4=     6.420 deg,	J5=     5.906 deg,	J6=   169.709 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   104.259 deg,
+	J4=   -80.014 deg,	J5=   -95.244 deg,	J6=   -17.584 deg
 };
 P[17]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   171.317 deg,
-	J4=     7.420 deg,	J5=     4.906 deg,	J6=   169.709 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   105.259 deg,
+	J4=   -79.014 deg,	J5=   -94.244 deg,	J6=   -16.584 deg
 };
 P[18]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   178.211 deg,
-	J4=     3.324 deg,	J5=     4.903 deg,	J6=   176.141 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    38.827 deg,
+	J4=  -131.528 deg,	J5=  -129.295 deg,	J6=    38.844 deg
 };
 P[19]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   178.211 deg,
-	J4=     4.324 deg,	J5=     4.903 deg,	J6=   176.141 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    39.827 deg,
+	J4=  -130.528 deg,	J5=  -128.295 deg,	J6=    38.844 deg
 };
 P[20]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   158.470 deg,
-	J4=   -34.462 deg,	J5=    26.377 deg,	J6=   208.491 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -38.928 deg,
+	J4=   -11.644 deg,	J5=  -138.835 deg,	J6=   165.771 deg
 };
 P[21]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.470 deg,
-	J4=   -33.462 deg,	J5=    25.377 deg,	J6=   208.491 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -37.928 deg,
+	J4=   -11.644 deg,	J5=  -137.835 deg,	J6=   165.771 deg
 };
 P[22]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   120.246 deg,
-	J4=  -184.491 deg,	J5=   122.498 deg,	J6=   173.268 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -39.529 deg,
+	J4=    32.794 deg,	J5=  -136.096 deg,	J6=   207.047 deg
 };
 P[23]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   121.246 deg,
-	J4=  -183.491 deg,	J5=   121.498 deg,	J6=   174.268 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -38.529 deg,
+	J4=    32.794 deg,	J5=  -136.096 deg,	J6=   207.047 deg
 };
 P[24]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    77.484 deg,
-	J4=  -152.066 deg,	J5=   -92.403 deg,	J6=    -2.923 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.158 deg,
+	J4=   177.096 deg,	J5=  -137.731 deg,	J6=     0.841 deg
 };
 P[25]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    78.484 deg,
-	J4=  -152.066 deg,	J5=   -92.403 deg,	J6=    -1.923 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.158 deg,
+	J4=   177.096 deg,	J5=  -136.731 deg,	J6=     1.841 deg
 };
 P[26]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    38.808 deg,
-	J4=  -131.184 deg,	J5=  -129.218 deg,	J6=    38.988 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     1.538 deg,
+	J4=   153.071 deg,	J5=     0.157 deg,	J6=   202.416 deg
 };
 P[27]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    39.808 deg,
-	J4=  -131.184 deg,	J5=  -129.218 deg,	J6=    38.988 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     2.538 deg,
+	J4=   154.071 deg,	J5=     0.157 deg,	J6=   202.416 deg
 };
 P[28]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -39.892 deg,
-	J4=    32.959 deg,	J5=  -137.075 deg,	J6=   207.817 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -4.262 deg,
+	J4=   172.745 deg,	J5=    -9.651 deg,	J6=   189.361 deg
 };
 P[29]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -38.892 deg,
-	J4=    32.959 deg,	J5=  -137.075 deg,	J6=   207.817 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -3.262 deg,
+	J4=   172.745 deg,	J5=    -8.651 deg,	J6=   190.361 deg
 };
 P[30]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     2.356 deg,
-	J4=   154.846 deg,	J5=     1.158 deg,	J6=   202.169 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -65.298 deg,
+	J4=   198.604 deg,	J5=   121.201 deg,	J6=     3.175 deg
 };
 P[31]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     2.356 deg,
-	J4=   154.846 deg,	J5=     0.158 deg,	J6=   203.169 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -64.298 deg,
+	J4=   198.604 deg,	J5=   121.201 deg,	J6=     4.175 deg
 };
 P[32]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.159 deg,
-	J4=   177.986 deg,	J5=  -137.715 deg,	J6=     0.848 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -179.689 deg,
+	J4=    89.174 deg,	J5=   -92.305 deg,	J6=    91.495 deg
 };
 P[33]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.159 deg,
-	J4=   177.986 deg,	J5=  -137.715 deg,	J6=     1.848 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -178.689 deg,
+	J4=    90.174 deg,	J5=   -91.305 deg,	J6=    91.495 deg
 };
 P[34]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -54.611 deg,
-	J4=    36.366 deg,	J5=  -116.945 deg,	J6=  -160.368 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -141.617 deg,
+	J4=  -114.937 deg,	J5=  -119.730 deg,	J6=   223.978 deg
 };
 P[35]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -53.611 deg,
-	J4=    37.366 deg,	J5=  -117.945 deg,	J6=  -159.368 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -141.617 deg,
+	J4=  -113.937 deg,	J5=  -118.730 deg,	J6=   223.978 deg
 };
 P[36]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -26.187 deg,
-	J4=  -124.430 deg,	J5=   -38.880 deg,	J6=  -230.737 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.852 deg,
+	J4=  -195.576 deg,	J5=  -136.559 deg,	J6=   170.907 deg
 };
 P[37]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -26.187 deg,
-	J4=  -123.430 deg,	J5=   -39.880 deg,	J6=  -229.737 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.852 deg,
+	J4=  -194.576 deg,	J5=  -135.559 deg,	J6=   171.907 deg
 };
 P[38]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.888 deg,
-	J4=  -117.725 deg,	J5=   136.593 deg,	J6=    55.825 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -151.403 deg,
+	J4=   -56.759 deg,	J5=   133.802 deg,	J6=   -51.643 deg
 };
 P[39]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.888 deg,
-	J4=  -117.725 deg,	J5=   135.593 deg,	J6=    55.825 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -150.403 deg,
+	J4=   -56.759 deg,	J5=   133.802 deg,	J6=   -50.643 deg
 };
 P[40]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -11.202 deg,
-	J4=   -18.907 deg,	J5=     6.935 deg,	J6=    17.707 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -111.597 deg,
+	J4=  -162.797 deg,	J5=    61.791 deg,	J6=   -13.245 deg
 };
 P[41]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -11.202 deg,
-	J4=   -18.907 deg,	J5=     6.935 deg,	J6=    18.707 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -111.597 deg,
+	J4=  -161.797 deg,	J5=    62.791 deg,	J6=   -13.245 deg
 };
 P[42]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    23.472 deg,
-	J4=    24.507 deg,	J5=   -25.109 deg,	J6=   -21.515 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.881 deg,
+	J4=  -122.813 deg,	J5=   -40.595 deg,	J6=  -229.886 deg
 };
 P[43]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    23.472 deg,
-	J4=    24.507 deg,	J5=   -25.109 deg,	J6=   -20.515 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.881 deg,
+	J4=  -122.813 deg,	J5=   -39.595 deg,	J6=  -228.886 deg
 };
 P[44]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    49.227 deg,
-	J4=   171.390 deg,	J5=    56.910 deg,	J6=  -168.017 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    23.562 deg,
+	J4=    24.384 deg,	J5=   -24.930 deg,	J6=   -20.439 deg
 };
 P[45]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    49.227 deg,
-	J4=   171.390 deg,	J5=    55.910 deg,	J6=  -167.017 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -11.961 deg,
+	J4=   -19.813 deg,	J5=     6.885 deg,	J6=    18.638 deg
 };
 P[46]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -5.920 deg,
-	J4=    88.561 deg,	J5=    74.072 deg,	J6=   -84.423 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -10.961 deg,
+	J4=   -18.813 deg,	J5=     6.885 deg,	J6=    18.638 deg
 };
 P[47]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -4.920 deg,
-	J4=    89.561 deg,	J5=    73.072 deg,	J6=   -84.423 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -26.582 deg,
+	J4=  -118.136 deg,	J5=   134.624 deg,	J6=    55.619 deg
 };
 P[48]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -56.146 deg,
-	J4=   189.433 deg,	J5=   118.033 deg,	J6=    -0.383 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.582 deg,
+	J4=  -117.136 deg,	J5=   134.624 deg,	J6=    55.619 deg
 };
 P[49]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -55.146 deg,
-	J4=   189.433 deg,	J5=   117.033 deg,	J6=    -0.383 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    25.706 deg,
+	J4=   -61.914 deg,	J5=   137.043 deg,	J6=   125.764 deg
 };
 P[50]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -145.010 deg,
-	J4=    34.477 deg,	J5=   -48.805 deg,	J6=   159.857 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    83.327 deg,
+	J4=  -152.171 deg,	J5=    88.977 deg,	J6=  -177.532 deg
 };
 P[51]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -144.010 deg,
-	J4=    35.477 deg,	J5=   -48.805 deg,	J6=   159.857 deg
-};
-P[52]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -181.869 deg,
-	J4=   -89.870 deg,	J5=   -83.907 deg,	J6=   -91.449 deg
-};
-P[53]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -180.869 deg,
-	J4=   -88.870 deg,	J5=   -83.907 deg,	J6=   -90.449 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    83.327 deg,
+	J4=  -151.171 deg,	J5=    89.977 deg,	J6=  -176.532 deg
 };
 /END
