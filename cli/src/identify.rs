@@ -17,8 +17,10 @@ use zerocal_core::FitError;
 pub struct IdentifyArgs {
     /// The log: `j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg`, one pose a row, `#` comments.
     pub log: PathBuf,
-    /// How the sensor's angles derive from gravity (METHOD.md): rpy or axis.
-    #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
+    /// How the sensor's angles derive from gravity (METHOD.md): rpy (the paper's
+    /// sensor) or axis (the pendant's SCL3300). Required: the two differ by 0.15° at
+    /// 10° of tilt, and a log does not say which it holds.
+    #[arg(long, value_parser = crate::args::convention())]
     pub convention: Convention,
     /// Base tilt α,β in degrees, as stage 1 measured it. It is composed with joints 1
     /// and 2 as the log records them (its `j1_deg`, `j2_deg` columns, required with this
@@ -74,6 +76,8 @@ pub struct IdentifyJson {
     pub sigma_source: &'static str,
     /// Empty when the verdict is pass.
     pub warnings: Vec<String>,
+    /// What was assumed (as the text report's `note:` lines).
+    pub notes: Vec<String>,
 }
 
 /// The model and config the flags describe.
@@ -129,8 +133,18 @@ pub fn run(args: &IdentifyArgs) -> Result<String, CliError> {
     let (model, config) = model_and_config(args)?;
     let result = fit(&model, &log.poses, &config).map_err(|e| refusal(e, &log))?;
     let verdict = Verdict::judge(&result, &config, None);
+    let mut notes = Vec::new();
+    if args.bias_deg.is_none() {
+        notes.push("no --bias-deg given: sensor bias taken as zero".to_owned());
+    }
+    if args.base_tilt_deg.is_none() {
+        notes.push("no --base-tilt-deg given: base taken as level".to_owned());
+    }
+    notes.push(
+        "1-sigma covers the stage-2 readings only, the base tilt and bias taken as exact, and the sensor as ideal; `zerocal session` on the pendant's export adds stages 0-1 and the real sensor's terms".to_owned(),
+    );
     if args.json {
-        let json = to_json(&result, args.convention, &verdict);
+        let json = to_json(&result, args.convention, &verdict, notes);
         serde_json::to_string_pretty(&json).map_err(|e| CliError::Input(e.to_string()))
     } else {
         let mut out = format!(
@@ -139,15 +153,9 @@ pub fn run(args: &IdentifyArgs) -> Result<String, CliError> {
             args.log.display(),
             args.convention.name()
         );
-        if args.bias_deg.is_none() {
-            out.push_str("note: no --bias-deg given: sensor bias taken as zero\n");
+        for n in &notes {
+            out.push_str(&format!("note: {n}\n"));
         }
-        if args.base_tilt_deg.is_none() {
-            out.push_str("note: no --base-tilt-deg given: base taken as level\n");
-        }
-        out.push_str(
-            "note: 1-sigma covers the stage-2 readings only, the base tilt and bias taken as exact (the pendant's own report adds their uncertainty)\n",
-        );
         write_report(&mut out, None, &result, &verdict)
             .map_err(|e| CliError::Input(e.to_string()))?;
         Ok(out)
@@ -155,7 +163,12 @@ pub fn run(args: &IdentifyArgs) -> Result<String, CliError> {
 }
 
 /// The JSON object of a result.
-pub fn to_json(r: &FitResult<f64>, convention: Convention, verdict: &Verdict) -> IdentifyJson {
+pub fn to_json(
+    r: &FitResult<f64>,
+    convention: Convention,
+    verdict: &Verdict,
+    notes: Vec<String>,
+) -> IdentifyJson {
     IdentifyJson {
         offsets_deg: r.offsets_rad.map(f64::to_degrees),
         sigma_deg: r.sigma_rad.map(f64::to_degrees),
@@ -169,5 +182,6 @@ pub fn to_json(r: &FitResult<f64>, convention: Convention, verdict: &Verdict) ->
             SigmaSource::SensorNoise => "sensor_noise",
         },
         warnings: verdict.warnings.iter().map(|w| w.to_string()).collect(),
+        notes,
     }
 }

@@ -34,6 +34,8 @@ enum Command {
     Identify(IdentifyArgs),
     /// Plan the stage-2 poses and print the 1-sigma they promise.
     Plan(PlanArgs),
+    /// List the built-in robot profiles, one a line.
+    Robots(zerocal_cli::robot::RobotsArgs),
     /// The error sources one at a time, over many simulated sessions, with and without
     /// the compensation.
     ErrorTable(real::ErrorTableArgs),
@@ -74,6 +76,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
             Ok(out)
         }
         Command::ErrorTable(args) => real::error_table(args),
+        Command::Robots(args) => zerocal_cli::robot::list(args),
         Command::Simulate(args) => {
             let (profile, session, result) = simulate::simulate(args)?;
             let mut out = simulate::render(args, &session, &result)?;

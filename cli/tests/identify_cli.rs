@@ -170,15 +170,32 @@ fn malformed_log_exits_2_naming_the_line() {
         "bad.csv",
         "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n1,2,3,4,0.1,0.2\n1,2,3,x,0.1,0.2\n",
     );
-    let out = zerocal(&["identify", path.to_str().expect("path")]);
+    let out = zerocal(&[
+        "identify",
+        "--convention",
+        "rpy",
+        path.to_str().expect("path"),
+    ]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("line 3") && err.contains("j6_deg"), "{err}");
 
-    let out = zerocal(&["identify", "/nonexistent/log.csv"]);
+    let out = zerocal(&["identify", "--convention", "rpy", "/nonexistent/log.csv"]);
     assert_eq!(out.status.code(), Some(2));
-    let out = zerocal(&["identify", path.to_str().expect("path"), "--bias-deg", "1"]);
+    let out = zerocal(&[
+        "identify",
+        "--convention",
+        "rpy",
+        path.to_str().expect("path"),
+        "--bias-deg",
+        "1",
+    ]);
     assert_eq!(out.status.code(), Some(2), "clap refuses a malformed pair");
+    // No convention: a log does not say which it holds (the pendant's is `axis`, the
+    // paper's `rpy`, 0.15° apart at 10°), so the user must.
+    let out = zerocal(&["identify", path.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--convention"));
 }
 
 #[test]
@@ -202,7 +219,13 @@ fn degenerate_log_exits_3_with_the_named_error() {
         );
     }
     let path = temp_file("degenerate.csv", &csv);
-    let out = zerocal(&["identify", path.to_str().expect("path"), "--json"]);
+    let out = zerocal(&[
+        "identify",
+        "--convention",
+        "rpy",
+        path.to_str().expect("path"),
+        "--json",
+    ]);
     assert_eq!(out.status.code(), Some(3));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
@@ -215,12 +238,22 @@ fn degenerate_log_exits_3_with_the_named_error() {
         "few.csv",
         "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n1,2,3,4,0.1,0.2\n",
     );
-    let out = zerocal(&["identify", path.to_str().expect("path")]);
+    let out = zerocal(&[
+        "identify",
+        "--convention",
+        "rpy",
+        path.to_str().expect("path"),
+    ]);
     assert_eq!(out.status.code(), Some(3));
     assert!(String::from_utf8_lossy(&out.stderr).contains("too few poses"));
 
     let path = temp_file("range.csv", "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n1,2,3,4,45,0.2\n1,2,3,4,1,0.2\n1,2,3,4,1,0.2\n1,2,3,4,1,0.2\n");
-    let out = zerocal(&["identify", path.to_str().expect("path")]);
+    let out = zerocal(&[
+        "identify",
+        "--convention",
+        "rpy",
+        path.to_str().expect("path"),
+    ]);
     assert_eq!(out.status.code(), Some(3));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("line 2") && err.contains("range"), "{err}");

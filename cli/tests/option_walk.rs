@@ -227,8 +227,13 @@ fn sample_export() -> PathBuf {
 fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
     match subcommand {
         "simulate" => vec!["simulate".into(), "--accuracy-points=20".into()],
-        "identify" => vec!["identify".into(), log.display().to_string()],
+        "identify" => vec![
+            "identify".into(),
+            "--convention=rpy".into(),
+            log.display().to_string(),
+        ],
         "plan" => vec!["plan".into()],
+        "robots" => vec!["robots".into()],
         "session" => vec!["session".into(), sample_export().display().to_string()],
         "error-table" => vec![
             "error-table".into(),
