@@ -312,6 +312,10 @@ impl PlanArgs {
             base_tilt: BaseTilt::from_deg(a, b),
             sensor: SensorModel::new(self.convention, Tilt::default()),
             masses: profile.mass_model(),
+            y_weight: match self.convention {
+                Convention::Axis => zerocal_core::stage2::MEMS_Y_WEIGHT,
+                Convention::Rpy => 1.0,
+            },
             ..Stage2Model::default()
         }
     }

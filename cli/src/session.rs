@@ -139,6 +139,10 @@ pub struct JointJson {
     pub controller_offset_in_unit: Option<f64>,
     /// The unit.
     pub controller_unit: &'static str,
+    /// False for a joint parallel to the one before it in every pose (joint 4 of a
+    /// UR): gravity sees only their sum, which the earlier joint's offset carries; this
+    /// one's zero needs another method and its numbers are not zeros.
+    pub identifiable: bool,
     /// Why `controller_offset_in_unit` is absent.
     pub controller_unit_missing: Option<&'static str>,
     /// Shares of the variance from stage 0, 1 and 2 (fractions).
@@ -234,10 +238,20 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
     // The pendant's own model where the export states it, so both compute the same.
     let mut config = fit_config(convention, &profile);
     if let Some(e) = export.extras {
-        config.extras = e;
+        config.extras = zerocal_core::stage2::Extras {
+            held: config.extras.held,
+            ..e
+        };
     }
     let outcome = solve(&readings, &config);
-    let solution = outcome.result.map_err(|e| refused(e, &export))?;
+    let solution = match outcome.result {
+        Ok(s) => s,
+        Err(e) => {
+            return Err(refused_with_diagnosis(
+                e, &export, &readings, &config, &profile,
+            ))
+        }
+    };
     let verdict = Verdict::judge(&solution.fit, &config, outcome.stage1.as_ref());
     let budget = budget(
         &solution,
@@ -277,11 +291,72 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
                 .to_owned(),
         );
     }
-    let json = to_json(&profile, &solution, &verdict, &budget, notes);
+    let held = config.extras.held;
+    for (k, h) in held.iter().enumerate() {
+        if *h {
+            let this = &profile.joints[k + 2].name;
+            // The first earlier wrist joint not itself held carries the sum.
+            let carrier = (0..k).rev().find(|&i| !held[i]).unwrap_or(0);
+            let twin = &profile.joints[carrier + 2].name;
+            notes.push(format!(
+                "{this} (joint {}) turns about an axis parallel to {twin}'s (joint {}) in every pose: gravity sees only the sum of their offsets, which {twin}'s line carries; {this}'s own zero needs another method (the controller's mastering marks or a fixture), and its line is not a zero",
+                k + 3,
+                carrier + 3
+            ));
+        }
+    }
+    let json = to_json(&profile, &solution, &verdict, &budget, held, notes);
     if args.json {
         return serde_json::to_string_pretty(&json).map_err(|e| CliError::Input(e.to_string()));
     }
     Ok(render(&json))
+}
+
+/// A refusal; when the readings do not fit the model at all, with the model change
+/// that makes them fit ([`crate::diagnose`]).
+fn refused_with_diagnosis(
+    e: SessionError,
+    export: &Export,
+    readings: &SessionReadings<'_, f64>,
+    config: &FitConfig<f64>,
+    profile: &Profile,
+) -> CliError {
+    use zerocal_core::FitError;
+    let wrong_model = matches!(
+        e,
+        SessionError::Stage2(
+            FitError::ResidualTooLarge { .. }
+                | FitError::NoConvergence { .. }
+                | FitError::IllConditioned { .. }
+                | FitError::NonFiniteResult
+        ) | SessionError::Stage1(zerocal_core::StageError::InconsistentReading)
+    );
+    let base = refused(e, export);
+    if !wrong_model {
+        return base;
+    }
+    // Without a ceiling of its own (the paper's sensor), five times the noise figure.
+    let level = if config.max_residual_rms_rad > 0.0 {
+        config.max_residual_rms_rad.to_degrees()
+    } else {
+        5.0 * config.sensor_noise_rad.to_degrees()
+    };
+    let names: Vec<String> = profile.joints.iter().map(|j| j.name.clone()).collect();
+    let found = crate::diagnose::diagnose(readings, config, &names, level);
+    let CliError::Refused(msg) = base else {
+        return base;
+    };
+    CliError::Refused(match found.first() {
+        Some(d) => format!(
+            "{msg}\ndiagnosis: the readings fit at the noise level ({:.4} deg RMS) with {}; correct that and run `zerocal session` again",
+            d.residual_rms_deg, d.change
+        ),
+        // An ill-conditioned set can be just that: the message stands alone.
+        None if matches!(e, SessionError::Stage2(FitError::IllConditioned { .. })) => msg,
+        None => format!(
+            "{msg}\ndiagnosis: no joint direction, bracket orientation or convention change makes the readings fit: check that the robot stood still at every capture, that the export is this robot's, and the bracket is tight"
+        ),
+    })
 }
 
 fn refused(e: SessionError, export: &Export) -> CliError {
@@ -319,7 +394,18 @@ fn refused(e: SessionError, export: &Export) -> CliError {
 pub fn fit_config(convention: Convention, profile: &Profile) -> FitConfig<f64> {
     match convention {
         Convention::Axis => FitConfig::for_mems(&profile.arm, profile.mass_model().is_some()),
-        Convention::Rpy => FitConfig::default(),
+        Convention::Rpy => {
+            let c = FitConfig::<f64>::default();
+            FitConfig {
+                extras: zerocal_core::stage2::Extras {
+                    held: profile.arm.parallel_twins(),
+                    ..zerocal_core::stage2::Extras::NONE
+                },
+                // Five times the noise figure: a model that leaves more is wrong.
+                max_residual_rms_rad: 5.0 * c.sensor_noise_rad,
+                ..c
+            }
+        }
     }
 }
 
@@ -329,6 +415,7 @@ pub fn to_json(
     s: &SessionSolution<f64>,
     verdict: &Verdict,
     budget: &Budget<f64>,
+    held: [bool; 4],
     notes: Vec<String>,
 ) -> SessionJson {
     let mut delta = [0.0; JOINTS];
@@ -354,6 +441,7 @@ pub fn to_json(
                 controller_sigma_deg: c.sigma_deg,
                 controller_offset_in_unit: c.in_unit,
                 controller_unit: profile.controller.unit.name(),
+                identifiable: k == 0 || !held[k - 1],
                 controller_unit_missing: c.no_unit_because,
                 variance_shares: shares.map(|v| if total > 0.0 { v / total } else { 0.0 }),
                 urdf_calibration_rising_rad: s.offsets_rad[k],
@@ -413,6 +501,14 @@ pub fn render(j: &SessionJson) -> String {
         "joint  offset_deg  1sigma_deg  U(k=2)_deg   variance from stage 0 / 1 / 2"
     );
     for (k, joint) in j.joints.iter().enumerate() {
+        if !joint.identifiable {
+            let _ = writeln!(
+                out,
+                "j{}     not identifiable by gravity (see the note): another method",
+                k + 2
+            );
+            continue;
+        }
         let [a, b, c] = joint.variance_shares.map(|v| v * 100.0);
         let _ = writeln!(
             out,
@@ -479,7 +575,7 @@ pub fn render(j: &SessionJson) -> String {
         out,
         "joint   dq_deg (true - commanded, as the controller shows it)   in its unit"
     );
-    for joint in &j.joints {
+    for joint in j.joints.iter().filter(|joint| joint.identifiable) {
         let unit = match (
             joint.controller_offset_in_unit,
             joint.controller_unit_missing,

@@ -5,9 +5,9 @@ use crate::model::TiltAxis;
 use core::fmt;
 
 /// The names of stage 2's parameters, by index (`stage2::Param`'s order).
-pub const PARAM_NAMES: [&str; 17] = [
+pub const PARAM_NAMES: [&str; 18] = [
     "j3", "j4", "j5", "j6", "gain_x", "gain_y", "cross_xy", "cross_yx", "cross_xz", "cross_yz",
-    "cross_zx", "cross_zy", "sag", "bias_x", "bias_y", "drift_x", "drift_y",
+    "cross_zx", "cross_zy", "gain_z", "sag", "bias_x", "bias_y", "drift_x", "drift_y",
 ];
 
 /// A set of stage-2 parameters by index (bit k = parameter k; 0..=3 are Δθ3..Δθ6).

@@ -656,6 +656,8 @@ pub fn parse_meta<T: Real>(
                 bias_x: flags[3],
                 bias_y: flags[4],
                 drift: flags[5],
+                // Which offsets are held follows from the arm, not the export.
+                held: [false; 4],
             })
         }
         "stage1_temp_c" => {

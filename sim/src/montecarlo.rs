@@ -53,6 +53,7 @@ pub fn plan_for(
         arm: profile.arm,
         sensor: SensorModel::new(Convention::Axis, Tilt::default()),
         masses: profile.mass_model(),
+        y_weight: zerocal_core::stage2::MEMS_Y_WEIGHT,
         ..Stage2Model::default()
     };
     let mut config = *config;

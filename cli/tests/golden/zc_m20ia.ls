@@ -7,7 +7,7 @@ CREATE		= DATE 23-11-14  TIME 22:13:20;
 MODIFIED	= DATE 23-11-14  TIME 22:13:20;
 FILE_NAME	= ;
 VERSION		= 0;
-LINE_COUNT	= 222;
+LINE_COUNT	= 224;
 MEMORY_SIZE	= 0;
 PROTECT		= READ_WRITE;
 TCD:  STACK_SIZE	= 0,
@@ -218,29 +218,31 @@ CONTROL_CODE	= 00000000 00000000;
  197:  ! zerocal stage 2: ;
  198:  ! pose 20 of 24 ;
  199:J P[44] 10% FINE ;
- 200:  WAIT   3.20(sec) ;
- 201:  ! zerocal stage 2: ;
- 202:  ! pose 21 of 24 ;
- 203:J P[45] 10% FINE ;
+ 200:J P[45] 10% FINE ;
+ 201:  WAIT   3.20(sec) ;
+ 202:  ! zerocal stage 2: ;
+ 203:  ! pose 21 of 24 ;
  204:J P[46] 10% FINE ;
- 205:  WAIT   3.20(sec) ;
- 206:  ! zerocal stage 2: ;
- 207:  ! pose 22 of 24 ;
- 208:J P[47] 10% FINE ;
+ 205:J P[47] 10% FINE ;
+ 206:  WAIT   3.20(sec) ;
+ 207:  ! zerocal stage 2: ;
+ 208:  ! pose 22 of 24 ;
  209:J P[48] 10% FINE ;
- 210:  WAIT   3.20(sec) ;
- 211:  ! zerocal stage 2: ;
- 212:  ! pose 23 of 24 ;
- 213:J P[49] 10% FINE ;
- 214:  WAIT   3.20(sec) ;
- 215:  ! zerocal stage 2: ;
- 216:  ! pose 24 of 24 ;
- 217:J P[50] 10% FINE ;
- 218:J P[51] 10% FINE ;
- 219:  WAIT   3.20(sec) ;
- 220:  ! zerocal: session ;
- 221:  ! done; the pendant ;
- 222:  ! shows the result ;
+ 210:J P[49] 10% FINE ;
+ 211:  WAIT   3.20(sec) ;
+ 212:  ! zerocal stage 2: ;
+ 213:  ! pose 23 of 24 ;
+ 214:J P[50] 10% FINE ;
+ 215:J P[51] 10% FINE ;
+ 216:  WAIT   3.20(sec) ;
+ 217:  ! zerocal stage 2: ;
+ 218:  ! pose 24 of 24 ;
+ 219:J P[52] 10% FINE ;
+ 220:J P[53] 10% FINE ;
+ 221:  WAIT   3.20(sec) ;
+ 222:  ! zerocal: session ;
+ 223:  ! done; the pendant ;
+ 224:  ! shows the result ;
 /POS
 P[1]{
    GP1:
@@ -269,283 +271,295 @@ P[4]{
 P[5]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
-	J4=   163.492 deg,	J5=   -64.996 deg,	J6=    13.445 deg
+	J1=   -91.000 deg,	J2=     0.000 deg,	J3=   -65.298 deg,
+	J4=   198.604 deg,	J5=    76.201 deg,	J6=     4.175 deg
 };
 P[6]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
-	J4=   163.492 deg,	J5=   -63.996 deg,	J6=    13.445 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -64.298 deg,
+	J4=   198.604 deg,	J5=    76.201 deg,	J6=     4.175 deg
 };
 P[7]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
-	J4=   163.492 deg,	J5=   -18.996 deg,	J6=    13.445 deg
-};
-P[8]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   229.442 deg,
-	J4=    40.559 deg,	J5=   120.684 deg,	J6=    22.395 deg
-};
-P[9]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   229.442 deg,
-	J4=    41.559 deg,	J5=   120.684 deg,	J6=    22.395 deg
-};
-P[10]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   157.966 deg,
-	J4=   -34.294 deg,	J5=    24.196 deg,	J6=   207.719 deg
-};
-P[11]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   158.966 deg,
-	J4=   -33.294 deg,	J5=    25.196 deg,	J6=   207.719 deg
-};
-P[12]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   177.626 deg,
-	J4=     4.302 deg,	J5=     3.868 deg,	J6=   174.489 deg
-};
-P[13]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   177.626 deg,
-	J4=     4.302 deg,	J5=     4.868 deg,	J6=   175.489 deg
-};
-P[14]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   181.007 deg,
-	J4=    23.153 deg,	J5=    -0.693 deg,	J6=   158.207 deg
-};
-P[15]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   181.007 deg,
-	J4=    23.153 deg,	J5=     0.307 deg,	J6=   159.207 deg
-};
-P[16]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   104.259 deg,
-	J4=   -80.014 deg,	J5=   -95.244 deg,	J6=   -17.584 deg
-};
-P[17]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   105.259 deg,
-	J4=   -79.014 deg,	J5=   -94.244 deg,	J6=   -16.584 deg
-};
-P[18]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    38.827 deg,
-	J4=  -131.528 deg,	J5=  -129.295 deg,	J6=    38.844 deg
-};
-P[19]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    39.827 deg,
-	J4=  -130.528 deg,	J5=  -128.295 deg,	J6=    38.844 deg
-};
-P[20]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -38.928 deg,
-	J4=   -11.644 deg,	J5=  -138.835 deg,	J6=   165.771 deg
-};
-P[21]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -37.928 deg,
-	J4=   -11.644 deg,	J5=  -137.835 deg,	J6=   165.771 deg
-};
-P[22]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -39.529 deg,
-	J4=    32.794 deg,	J5=  -136.096 deg,	J6=   207.047 deg
-};
-P[23]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -38.529 deg,
-	J4=    32.794 deg,	J5=  -136.096 deg,	J6=   207.047 deg
-};
-P[24]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.158 deg,
-	J4=   177.096 deg,	J5=  -137.731 deg,	J6=     0.841 deg
-};
-P[25]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.158 deg,
-	J4=   177.096 deg,	J5=  -136.731 deg,	J6=     1.841 deg
-};
-P[26]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     1.538 deg,
-	J4=   153.071 deg,	J5=     0.157 deg,	J6=   202.416 deg
-};
-P[27]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     2.538 deg,
-	J4=   154.071 deg,	J5=     0.157 deg,	J6=   202.416 deg
-};
-P[28]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -4.262 deg,
-	J4=   172.745 deg,	J5=    -9.651 deg,	J6=   189.361 deg
-};
-P[29]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -3.262 deg,
-	J4=   172.745 deg,	J5=    -8.651 deg,	J6=   190.361 deg
-};
-P[30]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -65.298 deg,
-	J4=   198.604 deg,	J5=   121.201 deg,	J6=     3.175 deg
-};
-P[31]{
    GP1:
 	UF : 0, UT : 0,	
 	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -64.298 deg,
 	J4=   198.604 deg,	J5=   121.201 deg,	J6=     4.175 deg
 };
-P[32]{
+P[8]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -179.689 deg,
-	J4=    89.174 deg,	J5=   -92.305 deg,	J6=    91.495 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -4.707 deg,
+	J4=    88.114 deg,	J5=    71.550 deg,	J6=   -85.111 deg
 };
-P[33]{
+P[9]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -178.689 deg,
-	J4=    90.174 deg,	J5=   -91.305 deg,	J6=    91.495 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -4.707 deg,
+	J4=    89.114 deg,	J5=    72.550 deg,	J6=   -84.111 deg
 };
-P[34]{
+P[10]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -141.617 deg,
-	J4=  -114.937 deg,	J5=  -119.730 deg,	J6=   223.978 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -23.154 deg,
+	J4=    55.544 deg,	J5=    38.837 deg,	J6=   -51.011 deg
 };
-P[35]{
+P[11]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -141.617 deg,
-	J4=  -113.937 deg,	J5=  -118.730 deg,	J6=   223.978 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -22.154 deg,
+	J4=    56.544 deg,	J5=    39.837 deg,	J6=   -51.011 deg
 };
-P[36]{
+P[12]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.852 deg,
-	J4=  -195.576 deg,	J5=  -136.559 deg,	J6=   170.907 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    23.562 deg,
+	J4=    23.384 deg,	J5=   -25.930 deg,	J6=   -20.439 deg
 };
-P[37]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.852 deg,
-	J4=  -194.576 deg,	J5=  -135.559 deg,	J6=   171.907 deg
-};
-P[38]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -151.403 deg,
-	J4=   -56.759 deg,	J5=   133.802 deg,	J6=   -51.643 deg
-};
-P[39]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -150.403 deg,
-	J4=   -56.759 deg,	J5=   133.802 deg,	J6=   -50.643 deg
-};
-P[40]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -111.597 deg,
-	J4=  -162.797 deg,	J5=    61.791 deg,	J6=   -13.245 deg
-};
-P[41]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -111.597 deg,
-	J4=  -161.797 deg,	J5=    62.791 deg,	J6=   -13.245 deg
-};
-P[42]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.881 deg,
-	J4=  -122.813 deg,	J5=   -40.595 deg,	J6=  -229.886 deg
-};
-P[43]{
-   GP1:
-	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.881 deg,
-	J4=  -122.813 deg,	J5=   -39.595 deg,	J6=  -228.886 deg
-};
-P[44]{
+P[13]{
    GP1:
 	UF : 0, UT : 0,	
 	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    23.562 deg,
 	J4=    24.384 deg,	J5=   -24.930 deg,	J6=   -20.439 deg
 };
-P[45]{
+P[14]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -11.961 deg,
-	J4=   -19.813 deg,	J5=     6.885 deg,	J6=    18.638 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -4.712 deg,
+	J4=    85.939 deg,	J5=  -130.987 deg,	J6=   -98.862 deg
 };
-P[46]{
+P[15]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -10.961 deg,
-	J4=   -18.813 deg,	J5=     6.885 deg,	J6=    18.638 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -3.712 deg,
+	J4=    85.939 deg,	J5=  -129.987 deg,	J6=   -97.862 deg
 };
-P[47]{
+P[16]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -26.582 deg,
-	J4=  -118.136 deg,	J5=   134.624 deg,	J6=    55.619 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.158 deg,
+	J4=   177.096 deg,	J5=  -137.731 deg,	J6=     1.841 deg
 };
-P[48]{
+P[17]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.582 deg,
-	J4=  -117.136 deg,	J5=   134.624 deg,	J6=    55.619 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    44.158 deg,
+	J4=   177.096 deg,	J5=  -136.731 deg,	J6=     1.841 deg
 };
-P[49]{
+P[18]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -39.529 deg,
+	J4=    31.794 deg,	J5=  -136.096 deg,	J6=   207.047 deg
+};
+P[19]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -38.529 deg,
+	J4=    32.794 deg,	J5=  -136.096 deg,	J6=   207.047 deg
+};
+P[20]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -142.617 deg,
+	J4=  -114.937 deg,	J5=  -118.730 deg,	J6=   223.978 deg
+};
+P[21]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -141.617 deg,
+	J4=  -113.937 deg,	J5=  -118.730 deg,	J6=   223.978 deg
+};
+P[22]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.852 deg,
+	J4=  -195.576 deg,	J5=  -136.559 deg,	J6=   170.907 deg
+};
+P[23]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.852 deg,
+	J4=  -194.576 deg,	J5=  -135.559 deg,	J6=   171.907 deg
+};
+P[24]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -180.887 deg,
+	J4=   -88.425 deg,	J5=   -83.307 deg,	J6=   -91.114 deg
+};
+P[25]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -179.887 deg,
+	J4=   -88.425 deg,	J5=   -83.307 deg,	J6=   -90.114 deg
+};
+P[26]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -178.689 deg,
+	J4=    90.174 deg,	J5=   -92.305 deg,	J6=    91.495 deg
+};
+P[27]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -178.689 deg,
+	J4=    90.174 deg,	J5=   -91.305 deg,	J6=    91.495 deg
+};
+P[28]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -150.403 deg,
+	J4=   -57.759 deg,	J5=   133.802 deg,	J6=   -51.643 deg
+};
+P[29]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -150.403 deg,
+	J4=   -56.759 deg,	J5=   133.802 deg,	J6=   -50.643 deg
+};
+P[30]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.881 deg,
+	J4=  -123.813 deg,	J5=   -40.595 deg,	J6=  -229.886 deg
+};
+P[31]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.881 deg,
+	J4=  -122.813 deg,	J5=   -39.595 deg,	J6=  -228.886 deg
+};
+P[32]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -7.698 deg,
+	J4=  -184.812 deg,	J5=   -12.935 deg,	J6=  -182.220 deg
+};
+P[33]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -7.698 deg,
+	J4=  -183.812 deg,	J5=   -12.935 deg,	J6=  -182.220 deg
+};
+P[34]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -22.215 deg,
+	J4=  -133.450 deg,	J5=   -21.629 deg,	J6=   130.803 deg
+};
+P[35]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -21.215 deg,
+	J4=  -133.450 deg,	J5=   -20.629 deg,	J6=   130.803 deg
+};
+P[36]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    25.706 deg,
+	J4=   -61.914 deg,	J5=   137.043 deg,	J6=   124.764 deg
+};
+P[37]{
    GP1:
 	UF : 0, UT : 0,	
 	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    25.706 deg,
 	J4=   -61.914 deg,	J5=   137.043 deg,	J6=   125.764 deg
 };
+P[38]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   133.450 deg,
+	J4=   164.550 deg,	J5=   -49.631 deg,	J6=     7.319 deg
+};
+P[39]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   133.450 deg,
+	J4=   164.550 deg,	J5=   -48.631 deg,	J6=     8.319 deg
+};
+P[40]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
+	J4=   162.492 deg,	J5=   -18.996 deg,	J6=    13.445 deg
+};
+P[41]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   159.267 deg,
+	J4=   163.492 deg,	J5=   -18.996 deg,	J6=    13.445 deg
+};
+P[42]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   194.459 deg,
+	J4=   111.544 deg,	J5=    18.832 deg,	J6=    71.013 deg
+};
+P[43]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   194.459 deg,
+	J4=   112.544 deg,	J5=    18.832 deg,	J6=    71.013 deg
+};
+P[44]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   180.007 deg,
+	J4=    22.153 deg,	J5=    -0.693 deg,	J6=   159.207 deg
+};
+P[45]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   181.007 deg,
+	J4=    23.153 deg,	J5=     0.307 deg,	J6=   159.207 deg
+};
+P[46]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   176.626 deg,
+	J4=     3.302 deg,	J5=     4.868 deg,	J6=   175.489 deg
+};
+P[47]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   177.626 deg,
+	J4=     4.302 deg,	J5=     4.868 deg,	J6=   175.489 deg
+};
+P[48]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   228.372 deg,
+	J4=   -34.348 deg,	J5=   -54.164 deg,	J6=   200.825 deg
+};
+P[49]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   228.372 deg,
+	J4=   -33.348 deg,	J5=   -53.164 deg,	J6=   200.825 deg
+};
 P[50]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    83.327 deg,
-	J4=  -152.171 deg,	J5=    88.977 deg,	J6=  -177.532 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   265.719 deg,
+	J4=     0.711 deg,	J5=    90.639 deg,	J6=    -0.712 deg
 };
 P[51]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    83.327 deg,
-	J4=  -151.171 deg,	J5=    89.977 deg,	J6=  -176.532 deg
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   265.719 deg,
+	J4=     0.711 deg,	J5=    90.639 deg,	J6=     0.288 deg
+};
+P[52]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   221.177 deg,
+	J4=    47.347 deg,	J5=   121.592 deg,	J6=    31.098 deg
+};
+P[53]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   222.177 deg,
+	J4=    47.347 deg,	J5=   121.592 deg,	J6=    31.098 deg
 };
 /END

@@ -165,6 +165,24 @@ impl<T: Real> Arm<T> {
         r * self.flange.rotation * self.flange_mount
     }
 
+    /// For Δθ3..Δθ6, whether the joint turns about an axis parallel to the previous
+    /// wrist joint's in every pose (joint 4 after joint 3 on a UR): its offset and that
+    /// one's are then a single parameter to gravity. Joint 3 is never marked: joint 2
+    /// before it is measured on its own in stage 1.
+    pub fn parallel_twins(&self) -> [bool; WRIST_JOINTS] {
+        core::array::from_fn(|k| {
+            let j = k + 2;
+            if j < 3 {
+                return false;
+            }
+            // The next joint's axis in the previous joint's frame: the placement's
+            // rotation (the previous joint's own turn is about its axis, which keeps it).
+            let prev = self.joints[j - 1].axis.unit::<T>();
+            let next = self.joints[j].origin.rotation * self.joints[j].axis.unit::<T>();
+            prev.cross(&next).norm() < T::lit(1e-9)
+        })
+    }
+
     /// Each joint's frame in the (untilted) base frame at joint angles `q_rad`, and
     /// the flange's: the positions for the sag model and the positioning test.
     pub fn frames(&self, q_rad: &[T; JOINTS]) -> ([Placement<T>; JOINTS], Placement<T>) {

@@ -144,18 +144,22 @@ pub fn budget<T: Real>(
     }
     let sigma = solution.fit.noise_sigma_rad;
     let offsets = solution.fit.offsets_rad;
+    let offsets_only = Extras {
+        held: extras.held,
+        ..Extras::NONE
+    };
     let steps = [
-        Extras::NONE,
+        offsets_only,
         Extras {
             gain: extras.gain,
             cross_z: extras.cross_z,
-            ..Extras::NONE
+            ..offsets_only
         },
         Extras {
             gain: extras.gain,
             cross_z: extras.cross_z,
             sag: extras.sag,
-            ..Extras::NONE
+            ..offsets_only
         },
         extras,
     ];
@@ -193,7 +197,7 @@ pub fn budget<T: Real>(
         per_row,
     );
     for k in 0..WRIST_JOINTS {
-        let v = rep.map_or(T::zero(), |c| c[k][k]);
+        let v = rep.map_or(T::zero(), |c| c[k][k]).max(T::zero());
         let inherited = if k == 0 { inherited_by_j3 } else { T::zero() };
         terms[5][k + 1] = (v + inherited).sqrt();
     }

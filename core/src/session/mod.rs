@@ -140,6 +140,10 @@ pub fn handover_at<T: Real>(
                 .unwrap_or(T::zero()),
             drift_per_k: bias.map_or(Tilt::default(), |b| b.drift_per_k),
             masses,
+            y_weight: match convention {
+                Convention::Axis => T::lit(crate::stage2::MEMS_Y_WEIGHT),
+                Convention::Rpy => T::one(),
+            },
         },
         covariance: stage1.covariance,
     }
@@ -532,6 +536,7 @@ fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
         yz: v(Param::CrossYz),
         zx: v(Param::CrossZx),
         zy: v(Param::CrossZy),
+        zz: v(Param::GainZ),
     }
 }
 

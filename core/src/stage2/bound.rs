@@ -136,6 +136,7 @@ pub fn joint_error_covariance<T: Real>(
             }
         }
     }
+    super::add_held(&mut info, &extras);
     check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
     let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
     let mut cov = [[T::zero(); WRIST_JOINTS]; WRIST_JOINTS];

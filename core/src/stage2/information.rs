@@ -156,9 +156,25 @@ impl<T: Real> Information<T> {
         Some(x)
     }
 
-    /// The singular values of R (those of J) and J's weakest direction.
+    /// The singular values of R (those of J) with its columns scaled to unit length,
+    /// and J's weakest direction. Scaling makes the figure independent of the
+    /// parameters' units: a cross-axis term's column is a hundred times shorter than an
+    /// offset's (its effect grows with the tilt squared), which says nothing about
+    /// whether the poses separate it.
     pub(crate) fn conditioning(&self) -> Conditioning<T> {
-        let s = svd(&self.r);
+        let n = self.r.n;
+        let mut scaled = self.r;
+        for j in 0..n {
+            let norm = (0..n)
+                .fold(T::zero(), |s, i| s + self.r.m[i][j] * self.r.m[i][j])
+                .sqrt();
+            if norm > T::zero() {
+                for i in 0..n {
+                    scaled.m[i][j] /= norm;
+                }
+            }
+        }
+        let s = svd(&scaled);
         Conditioning {
             condition_number: s.condition_number(),
             weakest_slots: named_components(&s.weakest[..s.n]),

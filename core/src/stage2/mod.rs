@@ -16,7 +16,7 @@ pub use bound::{
     covariance_bound, joint_error_covariance, repeatability_covariance, CovarianceBound,
 };
 pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
-pub use model::{Estimate, MassModel, Stage2Model, HANDOVER_PARAMS};
+pub use model::{Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT};
 pub use params::{Extras, Layout, Param, MAX_PARAMS};
 
 use crate::error::{FitError, ParamSet};
@@ -110,22 +110,15 @@ impl<T: Real> Default for FitConfig<T> {
 /// (`zerocal_sim::sensor::Scl3300::capture_sigma_rad` derives it).
 pub const MEMS_CAPTURE_NOISE_DEG: f64 = 0.0008;
 
-/// The noise a stage 0-1 capture is budgeted with (deg): the capture noise at the
-/// data sheet's *maximum* noise rather than its typical. Doc. 4921's typ/max split was
-/// not found; the sister SCA3300's Table 2 gives 0.15 mg typical and 0.2 mg maximum in
-/// its mode 4 (×1.33), and that ratio is applied. Stage 2 takes σ from its own
-/// residuals instead.
-pub const MEMS_HANDOVER_NOISE_DEG: f64 = MEMS_CAPTURE_NOISE_DEG * 4.0 / 3.0;
-
 /// Mode 4's specified range (deg): the SCL3300 in its low-noise inclination mode is
 /// specified within about ±10° of level (Doc. 4921 §2.11.1, docs/error-budget.md).
 pub const MEMS_RANGE_DEG: f64 = 10.0;
 
-/// The residual RMS a session with a MEMS sensor refuses above (deg). Over 50 simulated
-/// sessions per robot with every error source on, the largest residual RMS was 0.0028°
-/// (mostly the robot's repeatability, which a fit leaves partly in the residuals); a
-/// flange bracket that seats anew within ±0.03° at every pose gives 0.010°. 0.005° lies
-/// between: docs/error-budget.md.
+/// The residual RMS a session with a MEMS sensor refuses above (deg). Over 200 simulated
+/// sessions on each of four robots with every error source on, the largest residual RMS
+/// was 0.0034° (mostly the robot's repeatability, which a fit leaves partly in the
+/// residuals); a flange bracket that seats anew within ±0.03° at every pose gives
+/// 0.010°. 0.005° lies between: docs/error-budget.md.
 pub const MEMS_MAX_RESIDUAL_DEG: f64 = 0.005;
 
 impl<T: Real> FitConfig<T> {
@@ -138,7 +131,6 @@ impl<T: Real> FitConfig<T> {
             sensor_noise_rad: deg_to_rad(T::lit(MEMS_CAPTURE_NOISE_DEG)),
             sensor_range_rad: deg_to_rad(T::lit(MEMS_RANGE_DEG)),
             max_residual_rms_rad: deg_to_rad(T::lit(MEMS_MAX_RESIDUAL_DEG)),
-            handover_noise_rad: deg_to_rad(T::lit(MEMS_HANDOVER_NOISE_DEG)),
             ..FitConfig::default()
         }
     }
@@ -284,6 +276,7 @@ fn linearise<T: Real>(
     poses: &[PoseReading<T>],
     x: &[T; MAX_PARAMS],
     with_residuals: bool,
+    held: &Held<T>,
 ) -> (Information<T>, T, (T, usize)) {
     let estimate = Estimate::from_slots(layout, x);
     let pass = model.pass(&estimate);
@@ -293,7 +286,8 @@ fn linearise<T: Real>(
     for (i, pose) in poses.iter().enumerate() {
         let p = model.predict_rows(&pass, layout, &estimate, pose, false);
         let r = if with_residuals {
-            pose.reading.minus(&p.reading)
+            let r = pose.reading.minus(&p.reading);
+            Tilt::new(r.x_rad, r.y_rad * model.y_weight)
         } else {
             Tilt::default()
         };
@@ -305,7 +299,38 @@ fn linearise<T: Real>(
         info.add_row(&p.rows[0], r.x_rad);
         info.add_row(&p.rows[1], r.y_rad);
     }
+    // A held offset: a pseudo-reading that it equals its starting value, weighted ten
+    // readings' worth. The data say nothing on it (it is another joint's twin), so the
+    // solution puts it there and its twin takes the sum.
+    for (k, &h) in held.offsets.iter().enumerate() {
+        if h {
+            let mut row = [T::zero(); MAX_PARAMS];
+            row[k] = T::lit(HELD_WEIGHT);
+            info.add_row(&row, T::lit(HELD_WEIGHT) * (held.at_rad[k] - x[k]));
+        }
+    }
     (info, ssr, worst)
+}
+
+/// The weight of a held offset's pseudo-reading, in readings.
+const HELD_WEIGHT: f64 = 10.0;
+
+/// A held offset's pseudo-reading in an information matrix without residuals (planning,
+/// bounds): it pins the offset, and its twin's variance is the sum's.
+pub(crate) fn add_held<T: Real>(info: &mut Information<T>, extras: &Extras) {
+    for (k, &h) in extras.held.iter().enumerate() {
+        if h {
+            let mut row = [T::zero(); MAX_PARAMS];
+            row[k] = T::lit(HELD_WEIGHT);
+            info.add_row(&row, T::zero());
+        }
+    }
+}
+
+/// Offsets held at a value.
+struct Held<T> {
+    offsets: [bool; WRIST_JOINTS],
+    at_rad: [T; WRIST_JOINTS],
 }
 
 /// `(Jᵀ·J_m, J_mᵀ·J_m)`, with J_m the readings' derivatives with respect to the
@@ -360,7 +385,11 @@ pub fn fit<T: Real>(
     let n = layout.len();
     let mut x = [T::zero(); MAX_PARAMS];
     x[..WRIST_JOINTS].copy_from_slice(&config.initial_offsets_rad);
-    let (mut info, mut cost, mut worst) = linearise(model, &layout, poses, &x, true);
+    let held = Held {
+        offsets: config.extras.held,
+        at_rad: config.initial_offsets_rad,
+    };
+    let (mut info, mut cost, mut worst) = linearise(model, &layout, poses, &x, true, &held);
     check_conditioning(&info, &layout, config.max_condition_number)?;
 
     let mut lambda = T::zero();
@@ -385,7 +414,8 @@ pub fn fit<T: Real>(
         for (c, s) in candidate.iter_mut().zip(&step).take(n) {
             *c += *s;
         }
-        let (cand_info, cand_cost, cand_worst) = linearise(model, &layout, poses, &candidate, true);
+        let (cand_info, cand_cost, cand_worst) =
+            linearise(model, &layout, poses, &candidate, true, &held);
         // Below LOCAL_STEP_RAD the linearisation error (∝ δ²) is far under the noise, so
         // the Gauss-Newton step is trusted as it is: there the cost's own rounding noise
         // (~1e-3 relative in f32) would otherwise reject genuine steps and stall the
@@ -507,7 +537,9 @@ fn finish<T: Real>(
     let n = layout.len();
     let n_readings = 2 * s.poses;
     let residual_rms_rad = (s.cost / T::lit(n_readings as f64)).sqrt();
-    let dof = n_readings.saturating_sub(n);
+    // A held offset is pinned by its pseudo-reading, not by the data.
+    let held = config.extras.held.iter().filter(|h| **h).count();
+    let dof = n_readings.saturating_sub(n - held.min(n));
     let (noise_sigma_rad, sigma_source) = if dof >= config.min_residual_dof {
         (
             (s.cost / (T::lit(dof as f64) + s.extra_dof)).sqrt(),
@@ -587,7 +619,11 @@ pub fn single_linearised_step<T: Real>(
 ) -> Result<[T; WRIST_JOINTS], FitError> {
     check_poses(poses, config.sensor_range_rad)?;
     let layout = Extras::NONE.layout();
-    let (info, _, _) = linearise(model, &layout, poses, &[T::zero(); MAX_PARAMS], true);
+    let held = Held {
+        offsets: config.extras.held,
+        at_rad: config.initial_offsets_rad,
+    };
+    let (info, _, _) = linearise(model, &layout, poses, &[T::zero(); MAX_PARAMS], true, &held);
     check_conditioning(&info, &layout, config.max_condition_number)?;
     let step = info.step(T::zero()).ok_or(FitError::NonFiniteResult)?;
     Ok(core::array::from_fn(|k| step[k]))
@@ -618,6 +654,7 @@ pub fn information<T: Real>(
         info.add_row(&p.rows[0], T::zero());
         info.add_row(&p.rows[1], T::zero());
     }
+    add_held(&mut info, &extras);
     info
 }
 

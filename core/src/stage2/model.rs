@@ -119,7 +119,16 @@ pub struct Stage2Model<T: Real> {
     pub drift_per_k: Tilt<T>,
     /// The sag model's masses; `None`: no sag term (and the sag parameter is refused).
     pub masses: Option<MassModel<T>>,
+    /// σ of an x reading over σ of a y reading: the y rows are multiplied by it, so
+    /// the fit weighs each reading by its own noise (1: equal). The SCL3300's X channel
+    /// (the pendant's x reading) has 0.08 mg, its Y 0.06 mg: [`MEMS_Y_WEIGHT`].
+    pub y_weight: T,
 }
+
+/// The SCL3300's x reading σ over its y reading σ for one capture:
+/// 0.00080° / 0.00062° (mode 4's 0.08 and 0.06 mg through the 40-sample mean, with the
+/// quantisation that both share; `zerocal_sim::sensor::Scl3300::capture_sigma_rad`).
+pub const MEMS_Y_WEIGHT: f64 = 0.000_796 / 0.000_620;
 
 impl<T: Real> Default for Stage2Model<T> {
     fn default() -> Self {
@@ -131,6 +140,7 @@ impl<T: Real> Default for Stage2Model<T> {
             reference_temperature_c: T::zero(),
             drift_per_k: Tilt::default(),
             masses: None,
+            y_weight: T::one(),
         }
     }
 }
@@ -165,6 +175,7 @@ impl<T: Real> Estimate<T> {
                 Param::CrossYz => e.gain.yz = v,
                 Param::CrossZx => e.gain.zx = v,
                 Param::CrossZy => e.gain.zy = v,
+                Param::GainZ => e.gain.zz = v,
                 Param::Sag => e.sag_rad_per_m = v,
                 Param::BiasX => e.bias.x_rad = v,
                 Param::BiasY => e.bias.y_rad = v,
@@ -285,6 +296,7 @@ impl<T: Real> Stage2Model<T> {
                     Param::CrossYz => grad[axis].y * (u.z - T::one()),
                     Param::CrossZx => grad[axis].z * u.x,
                     Param::CrossZy => grad[axis].z * u.y,
+                    Param::GainZ => grad[axis].z * (u.z - T::one()),
                     Param::BiasX => d_bias[axis][0],
                     Param::BiasY => d_bias[axis][1],
                     Param::DriftX => d_bias[axis][0] * dt,
@@ -318,6 +330,15 @@ impl<T: Real> Stage2Model<T> {
                     d_bias[axis][1],
                 ];
             }
+        }
+        // The y reading is weighted by how much less noisy it is than x (least squares
+        // with each reading divided by its σ, in units of x's σ).
+        let w = self.y_weight;
+        for v in rows[1].iter_mut() {
+            *v *= w;
+        }
+        for v in handover_rows[1].iter_mut() {
+            *v *= w;
         }
         Prediction {
             reading,

@@ -17,7 +17,7 @@ use crate::error::{ParamSet, PARAM_NAMES};
 const _: () = assert!(PARAM_NAMES.len() == MAX_PARAMS);
 
 /// Most parameters stage 2 estimates.
-pub const MAX_PARAMS: usize = 17;
+pub const MAX_PARAMS: usize = 18;
 
 /// One stage-2 parameter. Its index (the order below) is what a [`ParamSet`] names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,6 +42,8 @@ pub enum Param {
     CrossZx,
     /// `E_zy`: z's response to y.
     CrossZy,
+    /// `E_zz`: z's offset as it shows away from level.
+    GainZ,
     /// Compliance of joints 2-3 (rad per metre of gravity lever).
     Sag,
     /// Correction to the x bias on the flange (rad).
@@ -69,6 +71,7 @@ impl Param {
         Param::CrossYz,
         Param::CrossZx,
         Param::CrossZy,
+        Param::GainZ,
         Param::Sag,
         Param::BiasX,
         Param::BiasY,
@@ -88,11 +91,12 @@ impl Param {
             Param::CrossYz => 9,
             Param::CrossZx => 10,
             Param::CrossZy => 11,
-            Param::Sag => 12,
-            Param::BiasX => 13,
-            Param::BiasY => 14,
-            Param::DriftX => 15,
-            Param::DriftY => 16,
+            Param::GainZ => 12,
+            Param::Sag => 13,
+            Param::BiasX => 14,
+            Param::BiasY => 15,
+            Param::DriftX => 16,
+            Param::DriftY => 17,
         }
     }
 
@@ -109,8 +113,8 @@ impl Param {
 pub struct Extras {
     /// Sensor gain and cross-axis between x and y (4).
     pub gain: bool,
-    /// The cross terms with z: x's and y's response to z away from level, z's to x
-    /// and y (4).
+    /// The terms with z: x's and y's response to z away from level, z's to x and y,
+    /// z's offset away from level (5).
     pub cross_z: bool,
     /// Sag of joints 2-3 (1; needs the arm's geometry).
     pub sag: bool,
@@ -123,6 +127,11 @@ pub struct Extras {
     pub bias_y: bool,
     /// Bias drift with temperature (2; needs temperatures that vary).
     pub drift: bool,
+    /// Offsets (Δθ3..Δθ6) held at the fit's starting value: a joint parallel to the one
+    /// before it in every pose the arm can take (joint 4 of a UR, after joint 3), whose
+    /// zero gravity cannot tell from that one's; the earlier joint's offset then carries
+    /// the sum ([`crate::model::Arm::parallel_twins`]).
+    pub held: [bool; 4],
 }
 
 impl Extras {
@@ -134,6 +143,7 @@ impl Extras {
         bias_x: false,
         bias_y: false,
         drift: false,
+        held: [false; 4],
     };
 
     /// What a session with a MEMS inclinometer (the SCL3300, `axis` convention) fits
@@ -156,6 +166,7 @@ impl Extras {
             bias_x: ax <= ay,
             bias_y: ay <= ax,
             drift: false,
+            held: arm.parallel_twins(),
         }
     }
 
@@ -167,7 +178,11 @@ impl Extras {
             let on = match p {
                 Param::Offset(_) => true,
                 Param::GainX | Param::GainY | Param::CrossXy | Param::CrossYx => self.gain,
-                Param::CrossXz | Param::CrossYz | Param::CrossZx | Param::CrossZy => self.cross_z,
+                Param::CrossXz
+                | Param::CrossYz
+                | Param::CrossZx
+                | Param::CrossZy
+                | Param::GainZ => self.cross_z,
                 Param::Sag => self.sag,
                 Param::BiasX => self.bias_x,
                 Param::BiasY => self.bias_y,
@@ -234,6 +249,7 @@ mod tests {
             bias_x: true,
             bias_y: true,
             drift: true,
+            held: [false; 4],
         }
         .layout();
         assert_eq!(all.len(), MAX_PARAMS);

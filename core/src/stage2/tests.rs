@@ -45,15 +45,18 @@ fn model(conv: Convention) -> Stage2Model<f64> {
                 yz: -0.003,
                 zx: 0.002,
                 zy: -0.004,
+                zz: 0.003,
             },
         },
         reference_temperature_c: 20.0,
         drift_per_k: Tilt::from_deg(0.004, -0.003),
+        y_weight: 1.3,
         masses: Some(MassModel::uniform(&arm)),
     }
 }
 
 const ALL: Extras = Extras {
+    held: [false; 4],
     gain: true,
     cross_z: true,
     sag: true,
@@ -88,8 +91,9 @@ fn analytic_jacobian_matches_central_differences() {
             xp[slot] += h;
             xm[slot] -= h;
             let d = at(&xp).reading.minus(&at(&xm).reading);
-            // Central differences are O(h²) ≈ 1e-12; rounding adds ε/h ≈ 1e-10.
-            for (axis, fd) in [d.x_rad, d.y_rad].iter().enumerate() {
+            // Central differences are O(h²) ≈ 1e-12; rounding adds ε/h ≈ 1e-10. The y
+            // row is weighted by the model's y_weight.
+            for (axis, fd) in [d.x_rad, d.y_rad * m.y_weight].iter().enumerate() {
                 let got = p.rows[axis][slot];
                 assert!(
                     isclose(fd / (2.0 * h), got, 0.0, 1e-8),
@@ -131,7 +135,7 @@ fn analytic_jacobian_matches_central_differences() {
                     .reading
             };
             let d = r(&mp).minus(&r(&mm));
-            for (axis, fd) in [d.x_rad, d.y_rad].iter().enumerate() {
+            for (axis, fd) in [d.x_rad, d.y_rad * m.y_weight].iter().enumerate() {
                 let got = p.handover_rows[axis][k];
                 assert!(
                     isclose(fd / (2.0 * h), got, 0.0, 1e-8),
@@ -250,4 +254,67 @@ mod properties {
             }
         }
     }
+}
+
+/// θ4 held at 0 (and no Δθ4) makes joints 3 and 5 coaxial: their zeros are one
+/// parameter, refused by name; holding Δθ5 gives their sum in Δθ3, exactly on noiseless
+/// data.
+#[test]
+fn a_held_offset_hands_its_twin_the_sum() {
+    let model = Stage2Model::<f64> {
+        sensor: SensorModel::new(Convention::Rpy, Tilt::default()),
+        ..Stage2Model::default()
+    };
+    let truth = [0.004, 0.0, 0.002, 0.005];
+    let mut poses = std::vec::Vec::new();
+    for i in 0..12 {
+        let a = f64::from(i) * 0.5;
+        let q = [
+            0.0,
+            0.0,
+            0.1 * a.sin(),
+            0.0,
+            0.12 * (1.3 * a).cos(),
+            0.15 * (0.7 * a + 1.0).sin(),
+        ];
+        let mut t = q;
+        for k in 0..4 {
+            t[k + 2] += truth[k];
+        }
+        let reading = model
+            .sensor
+            .reading(&model.arm.flange_sensor(&model.base_tilt, &t));
+        poses.push(PoseReading {
+            joints_rad: q,
+            reading,
+            temperature_c: None,
+        });
+    }
+    let config = FitConfig::<f64> {
+        min_residual_dof: 100,
+        ..FitConfig::default()
+    };
+    match fit(&model, &poses, &config) {
+        Err(FitError::RankDeficient { params }) => {
+            assert!(params.contains(0) && params.contains(2), "{params}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let held = FitConfig {
+        extras: Extras {
+            held: [false, false, true, false],
+            ..Extras::NONE
+        },
+        ..config
+    };
+    let r = fit(&model, &poses, &held).unwrap();
+    // Noiseless: rounding only (1e-12 rad).
+    assert!(
+        isclose(r.offsets_rad[0], truth[0] + truth[2], 0.0, 1e-12),
+        "{:?}",
+        r.offsets_rad
+    );
+    assert!(isclose(r.offsets_rad[2], 0.0, 0.0, 1e-12));
+    assert!(isclose(r.offsets_rad[1], truth[1], 0.0, 1e-12));
+    assert!(isclose(r.offsets_rad[3], truth[3], 0.0, 1e-12));
 }
