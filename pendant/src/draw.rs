@@ -1,0 +1,616 @@
+//! How each [`Screen`] looks on the 128×64 OLED: six lines of `FONT_6X10` (21 glyphs of
+//! 6 px on 128 px), the title underlined. Every text here is at most 21 glyphs; a longer
+//! number is cut by its buffer, never an error.
+//!
+//! Drawing is generic over any `DrawTarget<Color = BinaryColor>`: the SSD1306's frame
+//! buffer on the board, a plain frame buffer on the desktop, so the gallery shows the
+//! pixels the pendant shows.
+
+use core::fmt::Write;
+
+use embedded_graphics::mono_font::iso_8859_1::FONT_6X10;
+use embedded_graphics::mono_font::MonoTextStyle;
+use embedded_graphics::pixelcolor::BinaryColor;
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::{Line as LinePrimitive, PrimitiveStyle};
+use embedded_graphics::text::{Baseline, Text as TextDrawable};
+use heapless::String;
+use zerocal_core::decimal::Fixed;
+use zerocal_core::error::{FitError, StageError};
+use zerocal_core::procedure::Notice;
+use zerocal_core::report::Warning;
+use zerocal_core::session::SessionError;
+
+use crate::screen::{
+    CaptureScreen, FitSummary, InfoScreen, Offset, Prompt, Refusal, RestartCause, ResultScreen,
+    Screen, Settle,
+};
+use crate::sensor::SensorFault;
+use crate::store::ResetReason;
+
+/// Top of each of the six text lines (10 px glyphs spread over 64 px).
+const LINE_Y: [i32; 6] = [0, 11, 22, 32, 43, 54];
+
+/// One line of text: 21 glyphs, some of them two bytes (°, ±).
+pub type Text = String<32>;
+
+/// The firmware version shown on the boot and info screens.
+const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// A line of fixed text.
+fn fixed(content: &str) -> Text {
+    let mut text = Text::new();
+    // Every fixed text here fits; a longer one would be left out, never an error.
+    let _ = text.push_str(content);
+    text
+}
+
+/// Formats one line; a line too long for the buffer is cut, never an error.
+fn line(args: core::fmt::Arguments<'_>) -> Text {
+    let mut text = Text::new();
+    let _ = text.write_fmt(args);
+    text
+}
+
+/// The six lines of `screen`.
+pub fn lines(screen: &Screen) -> [Text; 6] {
+    match screen {
+        Screen::Starting => [
+            fixed("zerocal pendant"),
+            Text::new(),
+            fixed("reading store..."),
+            Text::new(),
+            Text::new(),
+            line(format_args!("fw {VERSION}")),
+        ],
+        Screen::StorageReset(reason) => {
+            let [a, b] = reset_lines(*reason);
+            [
+                fixed("STORAGE RESET"),
+                a,
+                b,
+                fixed("its session is lost;"),
+                fixed("export it elsewhere"),
+                fixed("OK: erase and start"),
+            ]
+        }
+        Screen::Restarted(note) => {
+            let cause = match note.cause {
+                RestartCause::Panic => "RESTARTED: fault",
+                RestartCause::Watchdog => "RESTARTED: watchdog",
+            };
+            let (first, rest) = split_at_char(&note.message, 21);
+            let (second, rest) = split_at_char(rest, 21);
+            let (third, _) = split_at_char(rest, 21);
+            [
+                fixed(cause),
+                fixed(first),
+                fixed(second),
+                fixed(third),
+                fixed("session kept"),
+                fixed("OK: continue"),
+            ]
+        }
+        Screen::Capture(capture) => capture_lines(capture),
+        Screen::Result(result) => result_lines(result),
+        Screen::Info(info) => info_lines(info),
+    }
+}
+
+/// Draws `screen` into `target` (cleared first).
+///
+/// # Errors
+/// The target's own (a frame buffer's is `Infallible`).
+pub fn draw<D: DrawTarget<Color = BinaryColor>>(
+    target: &mut D,
+    screen: &Screen,
+) -> Result<(), D::Error> {
+    target.clear(BinaryColor::Off)?;
+    let style = MonoTextStyle::new(&FONT_6X10, BinaryColor::On);
+    for (content, y) in lines(screen).iter().zip(LINE_Y) {
+        TextDrawable::with_baseline(content, Point::new(0, y), style, Baseline::Top)
+            .draw(target)?;
+    }
+    // The title's underline: between line 0 (rows 0-9) and line 1 (from row 11).
+    LinePrimitive::new(Point::new(0, 10), Point::new(127, 10))
+        .into_styled(PrimitiveStyle::with_stroke(BinaryColor::On, 1))
+        .draw(target)
+}
+
+/// The first `glyphs` characters of `text` and the rest.
+fn split_at_char(text: &str, glyphs: usize) -> (&str, &str) {
+    match text.char_indices().nth(glyphs) {
+        Some((at, _)) => text.split_at(at),
+        None => (text, ""),
+    }
+}
+
+fn reset_lines(reason: ResetReason) -> [Text; 2] {
+    match reason {
+        ResetReason::Unreadable => [fixed("store unreadable"), fixed("(corrupt or foreign)")],
+        ResetReason::ForeignBytes => [fixed("store holds another"), fixed("image's bytes")],
+        ResetReason::OlderFormat(format) => [
+            fixed("older record format"),
+            line(format_args!("(format {format})")),
+        ],
+        ResetReason::NewerFormat(format) => [
+            fixed("newer record format"),
+            line(format_args!("(format {format})")),
+        ],
+    }
+}
+
+fn info_lines(info: &InfoScreen) -> [Text; 6] {
+    [
+        line(format_args!("PENDANT  fw {VERSION}")),
+        line(format_args!(
+            "poses {}, captured {}",
+            info.plan_len, info.captured
+        )),
+        line(format_args!("SPI drops {}", info.dropped_frames)),
+        line(format_args!("OLED err {}", info.display_faults)),
+        fixed(if info.usb_connected {
+            "USB: host connected"
+        } else {
+            "USB: no host"
+        }),
+        fixed("any button: back"),
+    ]
+}
+
+/// A screen of stages 0-2: title, two prompt lines, live reading, stillness, notice.
+fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
+    if let Some(fault) = screen.fault {
+        return fault_lines(fault);
+    }
+    if let Some(Notice::ReadingOutOfRange { axis, value_deg }) = screen.notice {
+        return [
+            fixed("OUT OF RANGE"),
+            line(format_args!("{axis} reads {}\u{b0}:", sgn(value_deg, 2))),
+            fixed("outside the sensor's"),
+            fixed("\u{b1}10\u{b0} range; not"),
+            fixed("captured. Move robot"),
+            live_line(screen),
+        ];
+    }
+    if screen.still_moving {
+        return [
+            fixed("ROBOT NOT STILL"),
+            fixed("reading keeps moving:"),
+            fixed("stopped? brakes on?"),
+            live_line(screen),
+            settle_line(screen),
+            fixed("capture waits"),
+        ];
+    }
+    let (title, first, second, hint): (Text, &str, &str, &str) = match screen.prompt {
+        Prompt::Stage0First => (
+            fixed("STAGE 0: sensor bias"),
+            "pendant on a bench,",
+            "hold still",
+            "NEXT: skip stage 0",
+        ),
+        Prompt::Stage0Second => (
+            fixed("STAGE 0: 2nd reading"),
+            "turn pendant 180\u{b0} on",
+            "same spot, then OK",
+            "BACK: redo 1st",
+        ),
+        Prompt::Stage1Before => (
+            fixed("STAGE 1: upper arm"),
+            "sensor x along j2,",
+            "axis 1 at its mark",
+            "BACK: redo stage 0",
+        ),
+        Prompt::Stage1After => (
+            fixed("STAGE 1: 2nd reading"),
+            "turn axis 1 by 180\u{b0},",
+            "all else locked; OK",
+            "BACK: redo 1st",
+        ),
+        Prompt::Pose {
+            number,
+            of,
+            joints_deg: [j3, j4, j5, j6],
+        } => {
+            let title = line(format_args!(
+                "POSE {number}/{of}  ({} done)",
+                screen.captured
+            ));
+            return [
+                title,
+                line(format_args!("j3{:>7} j4{:>7}", sgn(j3, 2), sgn(j4, 2))),
+                line(format_args!("j5{:>7} j6{:>7}", sgn(j5, 2), sgn(j6, 2))),
+                live_line(screen),
+                settle_line(screen),
+                // Stage 2's model has axis 1 at its mark and joint 2 where stage 1
+                // left it (core's Stage1Result::handover): say so before the first pose.
+                notice_line(
+                    screen,
+                    if screen.captured == 0 {
+                        "axis1 at mark,j2 kept"
+                    } else {
+                        "NEXT skip BACK undo"
+                    },
+                ),
+            ];
+        }
+        Prompt::NoPose => (
+            fixed("STAGE 2: flange"),
+            "no plan: send one",
+            "with 'plan set' (USB)",
+            "BACK: undo",
+        ),
+    };
+    [
+        title,
+        fixed(first),
+        fixed(second),
+        live_line(screen),
+        settle_line(screen),
+        notice_line(screen, hint),
+    ]
+}
+
+/// The whole screen for a sensor without readings: what is wrong and what to do.
+fn fault_lines(fault: SensorFault) -> [Text; 6] {
+    let (what, detail, todo): (&str, Text, &str) = match fault {
+        SensorFault::NotResponding => (
+            "no answer on SPI",
+            fixed("(MISO stuck)"),
+            "check cable, 3.3 V",
+        ),
+        SensorFault::FrameErrors => (
+            "frames corrupted",
+            fixed("(CRC/echo), dropped"),
+            "check cable, shield",
+        ),
+        SensorFault::ErrorStatus { status_flags } => (
+            "error status",
+            line(format_args!("flags {status_flags:#06x}")),
+            "knock? supply? reset",
+        ),
+        SensorFault::Frozen => (
+            "output frozen:",
+            fixed("same value for 10 s"),
+            "power-cycle pendant",
+        ),
+        SensorFault::NotPresent { whoami } => (
+            "not an SCL3300:",
+            line(format_args!("WHOAMI {whoami:#06x}")),
+            "check the board",
+        ),
+        SensorFault::NotReady => ("start-up never ends", Text::new(), "power-cycle pendant"),
+        SensorFault::Bus => ("SPI bus error", Text::new(), "check the board"),
+    };
+    [
+        fixed("SENSOR FAULT"),
+        fixed(what),
+        detail,
+        fixed(todo),
+        fixed("retrying every 1 s"),
+        fixed("nothing is captured"),
+    ]
+}
+
+/// `x+1.2345 y-0.1234` (deg, raw), or why there is none.
+fn live_line(screen: &CaptureScreen) -> Text {
+    match screen.live_deg {
+        // Four decimals: the LSB is 0.0055°; the captured mean resolves finer.
+        Some((x, y)) => line(format_args!("x{} y{}", sgn(x, 4), sgn(y, 4))),
+        None => fixed("x ---     y ---"),
+    }
+}
+
+/// Stillness and whether the next still window is captured.
+fn settle_line(screen: &CaptureScreen) -> Text {
+    let arm = if screen.armed { "armed" } else { "OK: arm" };
+    match screen.settle {
+        Settle::Moving => line(format_args!("moving       {arm}")),
+        Settle::Settling(percent) => line(format_args!("settling {percent:>2}% {arm}")),
+        Settle::Still => line(format_args!("STILL        {arm}")),
+    }
+}
+
+/// The notice of core (or a failed flash write), else `hint`.
+fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
+    if screen.store_failed {
+        return fixed("! FLASH WRITE FAILED");
+    }
+    let Some(notice) = screen.notice else {
+        return fixed(hint);
+    };
+    match notice {
+        Notice::ReadingOutOfRange { axis, value_deg } => {
+            line(format_args!("! {axis}={}\u{b0} > range", sgn(value_deg, 2)))
+        }
+        Notice::SensorFault => fixed("! sensor fault"),
+        // Core undid the capture: the same step is to be taken again.
+        Notice::StageRefused(error) => match error {
+            StageError::ReadingOutOfRange {
+                axis, value_deg, ..
+            } => line(format_args!(
+                "! redo: {axis}={}\u{b0} out",
+                sgn(value_deg, 1)
+            )),
+            StageError::InconsistentReading => fixed("! redo: x/y mismatch"),
+            StageError::NonFiniteReading => fixed("! redo: bad reading"),
+            StageError::Unresolvable | StageError::NonFiniteCommand => {
+                fixed("! config: j2 setting")
+            }
+        },
+        // Shown in full on the result screen.
+        Notice::Refused(_) => fixed("! refused"),
+        Notice::NoPlan => fixed("! no plan: 'plan set'"),
+        Notice::PlanLocked => fixed("! plan locked: clear"),
+        Notice::Captured => fixed("captured"),
+    }
+}
+
+/// The result: offsets, details, then one page per warning; or why there is none.
+fn result_lines(screen: &ResultScreen) -> [Text; 6] {
+    let footer = if screen.store_failed {
+        fixed("! FLASH WRITE FAILED")
+    } else if screen.hold_ok_hint {
+        fixed("hold OK: new session")
+    } else {
+        fixed("BACK undo NEXT page")
+    };
+    let summary = match &screen.fit {
+        Ok(summary) => summary,
+        Err(error) => {
+            let [a, b, c, d] = refusal_lines(error);
+            return [fixed("NO RESULT"), a, b, c, d, footer];
+        }
+    };
+    let pages = ResultScreen::pages(&screen.fit);
+    let verdict = if summary.warnings.is_empty() {
+        "PASS"
+    } else {
+        "WARN"
+    };
+    match screen.page {
+        0 => offset_lines(summary, verdict, pages),
+        1 => [
+            line(format_args!("DETAILS {verdict}     2/{pages}")),
+            line(format_args!(
+                "poses {}  iter {}",
+                summary.poses, summary.iterations
+            )),
+            line(format_args!(
+                "rms {}\u{b0}",
+                fx(summary.residual_rms_deg, 5)
+            )),
+            line(format_args!("cond {}", fx(summary.condition_number, 1))),
+            match summary.base_tilt_deg {
+                Some((a, b)) => line(format_args!("tilt a{} b{}", sgn(a, 3), sgn(b, 3))),
+                None => fixed("tilt: no stage 1"),
+            },
+            footer,
+        ],
+        page => {
+            let index = page - 2;
+            let [a, b, c, d] = match summary.warnings.get(index) {
+                Some(warning) => warning_lines(warning),
+                None => Default::default(),
+            };
+            [
+                line(format_args!(
+                    "WARNING {}      {}/{pages}",
+                    index + 1,
+                    page + 1
+                )),
+                a,
+                b,
+                c,
+                d,
+                footer,
+            ]
+        }
+    }
+}
+
+/// Page 1: Δθ2..Δθ6 with 1σ, e.g. `j3 +0.05012 ±0.00031` (NEXT: page 2).
+fn offset_lines(summary: &FitSummary, verdict: &str, pages: usize) -> [Text; 6] {
+    let joint = |number: u8, offset: &Offset| {
+        line(format_args!(
+            "j{number}{:>9} \u{b1}{}",
+            sgn(offset.value_deg, 5),
+            fx(offset.sigma_deg, 5)
+        ))
+    };
+    let [j3, j4, j5, j6] = &summary.wrist;
+    [
+        line(format_args!("offset\u{b0} 1sig {verdict} 1/{pages}")),
+        match &summary.j2 {
+            Some(j2) => joint(2, j2),
+            None => fixed("j2  (no stage 1)"),
+        },
+        joint(3, j3),
+        joint(4, j4),
+        joint(5, j5),
+        joint(6, j6),
+    ]
+}
+
+/// A warning in four lines.
+fn warning_lines(warning: &Warning) -> [Text; 4] {
+    match *warning {
+        Warning::ResidualHigh {
+            residual_rms_deg,
+            sensor_noise_deg,
+        } => [
+            fixed("residual too high:"),
+            line(format_args!(
+                "{}x sensor noise",
+                fx(residual_rms_deg / sensor_noise_deg, 1)
+            )),
+            fixed("robot moved, wrong"),
+            fixed("pose or convention?"),
+        ],
+        Warning::BiasXUnknown => [
+            fixed("no stage 0 reversal:"),
+            fixed("j2 offset includes"),
+            fixed("the sensor x bias;"),
+            fixed("j3-j6 biased too"),
+        ],
+        Warning::SigmaFromSensorFigure => [
+            fixed("few poses: 1 sigma"),
+            fixed("from the sensor's"),
+            fixed("noise figure"),
+            Text::new(),
+        ],
+    }
+}
+
+/// Why stage 2 gave no numbers, in four lines.
+fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
+    let error = match refusal {
+        Refusal::Session(SessionError::Stage2(e)) => e,
+        Refusal::Session(SessionError::Stage0(_)) => {
+            return [
+                fixed("stage 0 refused"),
+                fixed("BACK, redo it"),
+                Text::new(),
+                Text::new(),
+            ]
+        }
+        Refusal::Session(SessionError::Stage1(_)) => {
+            return [
+                fixed("stage 1 refused"),
+                fixed("BACK, redo it"),
+                Text::new(),
+                Text::new(),
+            ]
+        }
+        Refusal::NoOutcome => {
+            return [
+                fixed("no outcome"),
+                fixed("hold OK: new session"),
+                Text::new(),
+                Text::new(),
+            ]
+        }
+    };
+    match *error {
+        FitError::TooFewPoses { got, min } => [
+            fixed("too few poses:"),
+            line(format_args!("{got} taken, {min} needed")),
+            fixed("BACK, retake poses"),
+            Text::new(),
+        ],
+        FitError::NonFiniteJoint { pose } => [
+            line(format_args!("pose {}: joint", pose + 1)),
+            fixed("angle not finite"),
+            Text::new(),
+            Text::new(),
+        ],
+        FitError::NonFiniteReading { pose } => [
+            line(format_args!("pose {}: reading", pose + 1)),
+            fixed("not finite"),
+            Text::new(),
+            Text::new(),
+        ],
+        FitError::ReadingOutOfRange {
+            pose,
+            axis,
+            value_deg,
+            range_deg,
+        } => [
+            line(format_args!(
+                "pose {}: {axis}={}\u{b0}",
+                pose + 1,
+                sgn(value_deg, 2)
+            )),
+            line(format_args!(
+                "outside \u{b1}{}\u{b0} range",
+                fx(range_deg, 0)
+            )),
+            Text::new(),
+            Text::new(),
+        ],
+        FitError::RankDeficient { params } => [
+            fixed("rank-deficient poses:"),
+            line(format_args!("{params}")),
+            fixed("cannot be separated;"),
+            fixed("vary those joints"),
+        ],
+        FitError::IllConditioned {
+            condition_number,
+            params,
+            ..
+        } => [
+            fixed("ill-conditioned:"),
+            line(format_args!("{params} barely")),
+            line(format_args!("separable: cond {}", fx(condition_number, 0))),
+            fixed("vary those joints"),
+        ],
+        FitError::NoConvergence { iterations } => [
+            fixed("no convergence after"),
+            line(format_args!("{iterations} iterations")),
+            Text::new(),
+            Text::new(),
+        ],
+        FitError::NonFiniteResult => [
+            fixed("the fit diverged"),
+            fixed("(non-finite result)"),
+            Text::new(),
+            Text::new(),
+        ],
+    }
+}
+
+/// A number with a fixed count of decimals, formatted by integer arithmetic: core's
+/// float formatting would add ~8 KiB of flash (see `zerocal_core::decimal`).
+fn fx(value: impl Into<f64>, decimals: u8) -> Fixed {
+    Fixed::new(value.into(), decimals)
+}
+
+/// As [`fx`], always with a sign.
+fn sgn(value: impl Into<f64>, decimals: u8) -> Fixed {
+    Fixed::signed(value.into(), decimals)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::screen::{InfoScreen, Screen};
+
+    /// Every line of every fixed screen fits the 21 glyphs of the 128 px line.
+    #[test]
+    fn lines_fit_the_display() {
+        let screens = [
+            Screen::Starting,
+            Screen::StorageReset(ResetReason::OlderFormat(1)),
+            Screen::StorageReset(ResetReason::Unreadable),
+            Screen::StorageReset(ResetReason::ForeignBytes),
+            Screen::Info(InfoScreen {
+                dropped_frames: 4_000_000_000,
+                display_faults: 4_000_000_000,
+                captured: 48,
+                plan_len: 48,
+                usb_connected: true,
+            }),
+        ];
+        for screen in &screens {
+            for text in lines(screen) {
+                assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
+            }
+        }
+        for fault in [
+            SensorFault::NotResponding,
+            SensorFault::FrameErrors,
+            SensorFault::ErrorStatus {
+                status_flags: 0x03ff,
+            },
+            SensorFault::Frozen,
+            SensorFault::NotPresent { whoami: 0xffff },
+            SensorFault::NotReady,
+            SensorFault::Bus,
+        ] {
+            for text in fault_lines(fault) {
+                assert!(text.chars().count() <= 21, "{text:?} of {fault:?}");
+            }
+        }
+    }
+}
