@@ -5,7 +5,7 @@
 //! | button | short | long (held [`LONG_PRESS_MS`]) | held longer |
 //! | --- | --- | --- | --- |
 //! | OK | arm the capture, confirm | new session (on the result) | – |
-//! | BACK | undo the last capture | the info screen | – |
+//! | BACK | undo the last capture | undo too | – |
 //! | NEXT | skip stage 0 / a pose, next result page | – | repeats every [`REPEAT_MS`] (result pages only) |
 //!
 //! A short press is sent on release, so that a long one never sends a short one too.
@@ -169,16 +169,15 @@ impl Debouncer {
     /// The next time (ms) an update is needed without a change of level: a level
     /// waiting out its debounce, or a long press / repeat falling due.
     pub fn next_due_ms(&self) -> Option<u64> {
-        self.keys
-            .iter()
-            .flat_map(|k| {
-                [
-                    k.candidate_since_ms.map(|t| t + DEBOUNCE_MS),
-                    k.due_ms.filter(|_| k.held),
-                ]
-            })
-            .flatten()
-            .min()
+        let mut next: Option<u64> = None;
+        for k in &self.keys {
+            let debounce = k.candidate_since_ms.map(|t| t + DEBOUNCE_MS);
+            let hold = k.due_ms.filter(|_| k.held);
+            for due in [debounce, hold].into_iter().flatten() {
+                next = Some(next.map_or(due, |n| n.min(due)));
+            }
+        }
+        next
     }
 }
 

@@ -14,7 +14,7 @@
 //! Signals hold only the newest value (a screen superseded by a newer one is worth
 //! nothing); channels queue (a press or a sample must not be lost to a busy task).
 
-use core::sync::atomic::{AtomicBool, AtomicU32};
+use core::sync::atomic::AtomicU32;
 
 use embassy_sync::blocking_mutex::raw::CriticalSectionRawMutex;
 use embassy_sync::channel::Channel;
@@ -83,12 +83,8 @@ pub struct Shared {
     pub link_replies: Channel<RawMutex, LinkReply, 1>,
     /// Sensor samples refused (CRC, echo, status) since power-up. Writer: sensor.
     pub dropped_frames: AtomicU32,
-    /// Samples the procedure had no room for (it was busy). Writer: sensor.
-    pub samples_skipped: AtomicU32,
     /// Display transfers that failed or timed out since power-up. Writer: UI.
     pub display_faults: AtomicU32,
-    /// A USB host has the port open. Writer: the board's link loop.
-    pub usb_connected: AtomicBool,
 }
 
 impl Shared {
@@ -105,9 +101,7 @@ impl Shared {
             link_requests: Channel::new(),
             link_replies: Channel::new(),
             dropped_frames: AtomicU32::new(0),
-            samples_skipped: AtomicU32::new(0),
             display_faults: AtomicU32::new(0),
-            usb_connected: AtomicBool::new(false),
         }
     }
 }

@@ -8,12 +8,11 @@
 
 use core::fmt::Write;
 
-use embedded_graphics::mono_font::iso_8859_1::FONT_6X10;
-use embedded_graphics::mono_font::MonoTextStyle;
+use embedded_graphics::image::GetPixel;
+use embedded_graphics::mono_font::ascii::FONT_6X10;
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
-use embedded_graphics::primitives::{Line as LinePrimitive, PrimitiveStyle};
-use embedded_graphics::text::{Baseline, Text as TextDrawable};
+use embedded_graphics::primitives::Rectangle;
 use heapless::String;
 use zerocal_core::decimal::Fixed;
 use zerocal_core::error::{FitError, StageError};
@@ -22,8 +21,7 @@ use zerocal_core::report::Warning;
 use zerocal_core::session::SessionError;
 
 use crate::screen::{
-    CaptureScreen, FitSummary, InfoScreen, Offset, Prompt, Refusal, RestartCause, ResultScreen,
-    Screen, Settle,
+    CaptureScreen, FitSummary, Offset, Prompt, Refusal, RestartCause, ResultScreen, Screen, Settle,
 };
 use crate::sensor::SensorFault;
 use crate::store::ResetReason;
@@ -34,7 +32,7 @@ const LINE_Y: [i32; 6] = [0, 11, 22, 32, 43, 54];
 /// One line of text: 21 glyphs, some of them two bytes (°, ±).
 pub type Text = String<32>;
 
-/// The firmware version shown on the boot and info screens.
+/// The firmware version shown on the boot screen.
 const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// A line of fixed text.
@@ -81,19 +79,18 @@ pub fn lines(screen: &Screen) -> [Text; 6] {
             };
             let (first, rest) = split_at_char(&note.message, 21);
             let (second, rest) = split_at_char(rest, 21);
-            let (third, _) = split_at_char(rest, 21);
+            let third = rest;
             [
                 fixed(cause),
                 fixed(first),
                 fixed(second),
                 fixed(third),
-                fixed("session kept"),
-                fixed("OK: continue"),
+                Text::new(),
+                fixed("OK: go on (kept)"),
             ]
         }
         Screen::Capture(capture) => capture_lines(capture),
         Screen::Result(result) => result_lines(result),
-        Screen::Info(info) => info_lines(info),
     }
 }
 
@@ -106,21 +103,68 @@ pub fn draw<D: DrawTarget<Color = BinaryColor>>(
     screen: &Screen,
 ) -> Result<(), D::Error> {
     target.clear(BinaryColor::Off)?;
-    let style = MonoTextStyle::new(&FONT_6X10, BinaryColor::On);
     for (content, y) in lines(screen).iter().zip(LINE_Y) {
-        TextDrawable::with_baseline(content, Point::new(0, y), style, Baseline::Top)
-            .draw(target)?;
+        text(target, content, y)?;
     }
     // The title's underline: between line 0 (rows 0-9) and line 1 (from row 11).
-    LinePrimitive::new(Point::new(0, 10), Point::new(127, 10))
-        .into_styled(PrimitiveStyle::with_stroke(BinaryColor::On, 1))
-        .draw(target)
+    target.fill_solid(
+        &Rectangle::new(Point::new(0, 10), Size::new(128, 1)),
+        BinaryColor::On,
+    )
+}
+
+/// The two glyphs the screens use beyond ASCII, in `FONT_6X10`'s style: rows of five
+/// pixels, top row first, bit 4 leftmost. The ASCII font with these two costs half
+/// the flash of the whole ISO 8859-1 one.
+const DEGREE: [u8; 10] = [0b01100, 0b10010, 0b10010, 0b01100, 0, 0, 0, 0, 0, 0];
+const PLUS_MINUS: [u8; 10] = [
+    0, 0b00100, 0b00100, 0b11111, 0b00100, 0b00100, 0, 0b11111, 0, 0,
+];
+
+/// One line of `FONT_6X10` with its top at `top`: each glyph's lit pixels copied from
+/// the font's image. Leaner than embedded-graphics' text renderer (alignment,
+/// baselines, decorations, none of which a six-line screen uses): drawing was the
+/// largest part of the firmware's flash.
+fn text<D: DrawTarget<Color = BinaryColor>>(
+    target: &mut D,
+    content: &str,
+    top: i32,
+) -> Result<(), D::Error> {
+    let font = &FONT_6X10;
+    let (w, h) = (
+        font.character_size.width as i32,
+        font.character_size.height as i32,
+    );
+    let columns = (font.image.size().width as i32 / w).max(1);
+    for (i, c) in content.chars().enumerate() {
+        let left = i as i32 * w;
+        let special = match c {
+            '\u{b0}' => Some(&DEGREE),
+            '\u{b1}' => Some(&PLUS_MINUS),
+            _ => None,
+        };
+        let glyph = font.glyph_mapping.index(c) as i32;
+        let origin = Point::new((glyph % columns) * w, (glyph / columns) * h);
+        let pixels = (0..h).flat_map(|y| (0..w).map(move |x| Point::new(x, y)));
+        target.draw_iter(pixels.filter_map(|p| {
+            let lit = match special {
+                Some(rows) => rows
+                    .get(p.y as usize)
+                    .is_some_and(|row| p.x < 5 && row & (0b10000 >> p.x) != 0),
+                None => font.image.pixel(origin + p) == Some(BinaryColor::On),
+            };
+            lit.then(|| Pixel(Point::new(left + p.x, top + p.y), BinaryColor::On))
+        }))?;
+    }
+    Ok(())
 }
 
 /// The first `glyphs` characters of `text` and the rest.
 fn split_at_char(text: &str, glyphs: usize) -> (&str, &str) {
+    // `split_at_checked`: a char boundary by construction, and no panic path (whose
+    // message formatting would cost ~2 KiB of flash).
     match text.char_indices().nth(glyphs) {
-        Some((at, _)) => text.split_at(at),
+        Some((at, _)) => text.split_at_checked(at).unwrap_or((text, "")),
         None => (text, ""),
     }
 }
@@ -129,33 +173,11 @@ fn reset_lines(reason: ResetReason) -> [Text; 2] {
     match reason {
         ResetReason::Unreadable => [fixed("store unreadable"), fixed("(corrupt or foreign)")],
         ResetReason::ForeignBytes => [fixed("store holds another"), fixed("image's bytes")],
-        ResetReason::OlderFormat(format) => [
-            fixed("older record format"),
-            line(format_args!("(format {format})")),
-        ],
-        ResetReason::NewerFormat(format) => [
-            fixed("newer record format"),
-            line(format_args!("(format {format})")),
+        ResetReason::OtherFormat(format) => [
+            fixed("records of another"),
+            line(format_args!("build (format {format})")),
         ],
     }
-}
-
-fn info_lines(info: &InfoScreen) -> [Text; 6] {
-    [
-        line(format_args!("PENDANT  fw {VERSION}")),
-        line(format_args!(
-            "poses {}, captured {}",
-            info.plan_len, info.captured
-        )),
-        line(format_args!("SPI drops {}", info.dropped_frames)),
-        line(format_args!("OLED err {}", info.display_faults)),
-        fixed(if info.usb_connected {
-            "USB: host connected"
-        } else {
-            "USB: no host"
-        }),
-        fixed("any button: back"),
-    ]
 }
 
 /// A screen of stages 0-2: title, two prompt lines, live reading, stillness, notice.
@@ -351,10 +373,9 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
 fn result_lines(screen: &ResultScreen) -> [Text; 6] {
     let footer = if screen.store_failed {
         fixed("! FLASH WRITE FAILED")
-    } else if screen.hold_ok_hint {
-        fixed("hold OK: new session")
     } else {
-        fixed("BACK undo NEXT page")
+        // A brush of OK keeps the result: a new session needs OK held.
+        fixed("NEXT:page hold OK:new")
     };
     let summary = match &screen.fit {
         Ok(summary) => summary,
@@ -574,23 +595,16 @@ fn sgn(value: impl Into<f64>, decimals: u8) -> Fixed {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::screen::{InfoScreen, Screen};
+    use crate::screen::Screen;
 
     /// Every line of every fixed screen fits the 21 glyphs of the 128 px line.
     #[test]
     fn lines_fit_the_display() {
         let screens = [
             Screen::Starting,
-            Screen::StorageReset(ResetReason::OlderFormat(1)),
+            Screen::StorageReset(ResetReason::OtherFormat(1)),
             Screen::StorageReset(ResetReason::Unreadable),
             Screen::StorageReset(ResetReason::ForeignBytes),
-            Screen::Info(InfoScreen {
-                dropped_frames: 4_000_000_000,
-                display_faults: 4_000_000_000,
-                captured: 48,
-                plan_len: 48,
-                usb_connected: true,
-            }),
         ];
         for screen in &screens {
             for text in lines(screen) {

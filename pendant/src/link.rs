@@ -218,9 +218,12 @@ impl<W: Write> Server<'_, W> {
                             self.write_fmt(format_args!("ok: plan set, {poses} poses"))
                                 .await?
                         }
-                        LinkReply::PlanLocked => self
-                            .write_line(b"error: plan locked: the session has stage-2 captures or a result; 'clear' first; plan unchanged")
-                            .await?,
+                        LinkReply::PlanLocked => {
+                            self.write_line(
+                                b"error: plan locked by stage-2 captures; 'clear' first",
+                            )
+                            .await?
+                        }
                         LinkReply::StoreFailed => {
                             self.write_line(b"error: plan set but the flash write failed")
                                 .await?
@@ -311,10 +314,8 @@ impl<W: Write> Server<'_, W> {
         }
         let shared = self.shared;
         self.write_fmt(format_args!(
-            "pendant: fw {}, sensor frames dropped {}, samples skipped {}, display faults {}",
-            env!("CARGO_PKG_VERSION"),
+            "pendant: sensor frames dropped {}, display faults {}",
             shared.dropped_frames.load(Ordering::Relaxed),
-            shared.samples_skipped.load(Ordering::Relaxed),
             shared.display_faults.load(Ordering::Relaxed),
         ))
         .await
@@ -398,7 +399,7 @@ fn stop_key(typed: &[u8]) -> Option<Vec<u8, 64>> {
 }
 
 /// The answer while the storage reset or restart screen waits for OK.
-const NOT_READY: &[u8] = b"error: the pendant waits for OK on its screen; nothing changed";
+const NOT_READY: &[u8] = b"error: press OK on the pendant first";
 
 #[cfg(test)]
 mod tests {

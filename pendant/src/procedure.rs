@@ -10,7 +10,6 @@
 //! faults on the screen.
 
 use core::ops::Range;
-use core::sync::atomic::Ordering;
 
 use embassy_futures::select::{select3, Either3};
 use embassy_time::Instant;
@@ -23,7 +22,7 @@ use zerocal_core::stillness::Stillness;
 use crate::buttons::{Button, ButtonEvent, Press};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
 use crate::config::STILL_MOVING_MS;
-use crate::screen::{Extras, InfoScreen, RestartNote, Screen};
+use crate::screen::{Extras, RestartNote, Screen};
 use crate::sensor::SensorReport;
 use crate::store::{Restored, Store};
 
@@ -43,8 +42,6 @@ pub struct Boot<'a, F> {
 #[derive(Clone, Copy, Debug, Default)]
 struct Presentation {
     extras: Extras,
-    /// The info screen is shown over the session's.
-    info: bool,
     /// Since when (ms) the armed pendant has not been still.
     unsettled_since_ms: Option<u64>,
     /// The last sample's stillness was `Moving`: the next `Moving` is no news.
@@ -56,21 +53,26 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     shared.screen.signal(Screen::Starting);
     let mut store = Store::new(boot.flash, boot.store_range).ok();
     let mut presentation = Presentation::default();
-    let mut restored = Restored::default();
-    if let Some(s) = store.as_mut() {
-        if let Err(reason) = s.open(&mut restored).await {
-            shared.screen.signal(Screen::StorageReset(reason));
-            wait_for_ok(shared).await;
-            restored = Restored::default();
-            presentation.extras.store_failed = s.erase().await.is_err();
+    let mut reset = None;
+    {
+        let mut procedure = shared.procedure.lock().await;
+        let Procedure { config, session } = &mut *procedure;
+        match store.as_mut() {
+            Some(s) => match restore(s, config, session) {
+                Ok(()) => {}
+                Err(reason) => reset = Some(reason),
+            },
+            None => presentation.extras.store_failed = true,
         }
-    } else {
-        presentation.extras.store_failed = true;
+    }
+    if let (Some(reason), Some(s)) = (reset, store.as_mut()) {
+        shared.screen.signal(Screen::StorageReset(reason));
+        wait_for_ok(shared).await;
+        presentation.extras.store_failed = s.erase().await.is_err();
     }
     {
         let mut procedure = shared.procedure.lock().await;
         let Procedure { config, session } = &mut *procedure;
-        *session = ProcedureState::restore(config, restored.records());
         if session.plan().is_empty() {
             // Through core, like an upload: it decides and lists the records to store.
             if let Ok(plan) = PoseList::from_slice(boot.default_plan) {
@@ -131,7 +133,6 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
         let phase = session.phase();
         if phase != Phase::Done || phase_before != Phase::Done {
             presentation.extras.result_page = 0;
-            presentation.extras.hold_ok_hint = false;
         }
         if from_link {
             let reply = if !stored {
@@ -159,6 +160,22 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     }
 }
 
+/// Reads the store into `session`. Driven to completion on the spot rather than
+/// awaited: reading flash is a memory copy that never waits, and this keeps the
+/// record table (~4.5 KiB) on the stack at power-up instead of in the task's state for
+/// good. Only a fresh store's first write (its marker) waits for the flash, briefly.
+fn restore<F: NorFlash>(
+    store: &mut Store<F>,
+    config: &zerocal_core::procedure::ProcedureConfig<f32>,
+    session: &mut ProcedureState<f32>,
+) -> Result<(), crate::store::ResetReason> {
+    let mut restored = Restored::default();
+    let opened = embassy_futures::block_on(store.open(&mut restored));
+    // A store to be reset restores nothing: the session starts afresh.
+    *session = ProcedureState::restore(config, restored.records());
+    opened
+}
+
 /// Waits for a short or long OK, dropping everything else (answering the link).
 async fn wait_for_ok(shared: &Shared) {
     loop {
@@ -181,23 +198,9 @@ async fn wait_for_ok(shared: &Shared) {
 /// What a press means on the screen shown: core's event, or a change of presentation.
 fn on_press(p: &mut Presentation, phase: Phase, press: ButtonEvent) -> Option<Event<f32>> {
     let ButtonEvent { button, press } = press;
-    if p.info {
-        // Any press closes the info screen, and does nothing else.
-        if press != Press::Repeat {
-            p.info = false;
-        }
-        return None;
-    }
     match (button, press, phase) {
-        (Button::Back, Press::Long, _) => {
-            p.info = true;
-            None
-        }
         // The result stays until OK is held: a brush of OK must not lose it.
-        (Button::Ok, Press::Short, Phase::Done) => {
-            p.extras.hold_ok_hint = true;
-            None
-        }
+        (Button::Ok, Press::Short, Phase::Done) => None,
         (Button::Ok, Press::Long, Phase::Done) => Some(Event::Ok),
         (Button::Next, Press::Short | Press::Repeat, Phase::Done) => {
             p.extras.result_page = p.extras.result_page.wrapping_add(1);
@@ -244,17 +247,7 @@ async fn persist<F: NorFlash>(
 
 /// Sends the screen for the session as it is now.
 fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
-    let session = &procedure.session;
-    let screen = if p.info {
-        Screen::Info(InfoScreen {
-            dropped_frames: shared.dropped_frames.load(Ordering::Relaxed),
-            display_faults: shared.display_faults.load(Ordering::Relaxed),
-            captured: session.captures().len(),
-            plan_len: session.plan().len(),
-            usb_connected: shared.usb_connected.load(Ordering::Relaxed),
-        })
-    } else {
-        Screen::from_view(&session.view(), p.extras)
-    };
-    shared.screen.signal(screen);
+    shared
+        .screen
+        .signal(Screen::from_view(&procedure.session.view(), p.extras));
 }

@@ -31,8 +31,6 @@ pub enum Screen {
     Capture(CaptureScreen),
     /// The session's result, one page at a time (NEXT turns the page).
     Result(ResultScreen),
-    /// The pendant's own state (long NEXT): firmware, sensor, store, display.
-    Info(InfoScreen),
 }
 
 /// Why the pendant restarted, kept across the reset by the board.
@@ -157,8 +155,6 @@ pub struct ResultScreen {
     pub page: usize,
     /// The numbers, or why there are none.
     pub fit: Result<FitSummary, Refusal>,
-    /// OK was pressed briefly: say that a new session needs OK held.
-    pub hold_ok_hint: bool,
     /// The last flash write failed.
     pub store_failed: bool,
 }
@@ -173,28 +169,11 @@ impl ResultScreen {
     }
 }
 
-/// The pendant's own state, for the info screen and the link's `status`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct InfoScreen {
-    /// Sensor frames dropped (bad CRC, wrong echo, error status) since power-up.
-    pub dropped_frames: u32,
-    /// Display transfers that timed out or failed since power-up.
-    pub display_faults: u32,
-    /// Stage-2 captures in the session.
-    pub captured: usize,
-    /// Poses in the plan.
-    pub plan_len: usize,
-    /// Whether a USB host has the port open.
-    pub usb_connected: bool,
-}
-
 /// What the pendant adds to core's view: presentation and the hardware's own state.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Extras {
     /// The result page the operator turned to (wraps).
     pub result_page: usize,
-    /// OK was pressed briefly on the result.
-    pub hold_ok_hint: bool,
     /// The sensor task's last fault (cleared by the next reading).
     pub fault: Option<SensorFault>,
     /// Armed and not still for too long.
@@ -248,8 +227,6 @@ pub enum ScreenKind {
     ResultWarning,
     /// No result, and why.
     NoResult,
-    /// The pendant's own state.
-    Info,
 }
 
 impl ScreenKind {
@@ -277,7 +254,6 @@ impl ScreenKind {
             ScreenKind::ResultDetails => "result-details",
             ScreenKind::ResultWarning => "result-warning",
             ScreenKind::NoResult => "no-result",
-            ScreenKind::Info => "info",
         }
     }
 
@@ -333,9 +309,6 @@ impl ScreenKind {
             ScreenKind::ResultDetails => "checks residual and conditioning; NEXT for warnings",
             ScreenKind::ResultWarning => "reads what to distrust before entering the offsets",
             ScreenKind::NoResult => "reads why, then BACK to retake poses",
-            ScreenKind::Info => {
-                "reads the pendant's own state (long NEXT opens it, any button closes it)"
-            }
         }
     }
 }
@@ -347,7 +320,6 @@ impl Screen {
             Screen::Starting => ScreenKind::Boot,
             Screen::StorageReset(_) => ScreenKind::StorageReset,
             Screen::Restarted(_) => ScreenKind::Restarted,
-            Screen::Info(_) => ScreenKind::Info,
             Screen::Result(result) => match (&result.fit, result.page) {
                 (Err(_), _) => ScreenKind::NoResult,
                 (Ok(_), 0) => ScreenKind::ResultOffsets,
@@ -398,7 +370,6 @@ impl Screen {
             return Screen::Result(ResultScreen {
                 page,
                 fit,
-                hold_ok_hint: extras.hold_ok_hint,
                 store_failed: extras.store_failed,
             });
         }

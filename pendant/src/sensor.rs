@@ -41,6 +41,16 @@ const MAX_CONSECUTIVE_DROPS: u32 = 10;
 /// equal words in a row on both axes a coin toss; 200 is impossible for a live chip.
 pub const FROZEN_SAMPLES: u32 = 200;
 
+/// The longest burst of frames.
+const MAX_BURST: usize = 5;
+
+/// A placeholder before the responses are decoded.
+const NO_RESPONSE: Response = Response {
+    op_code: 0,
+    return_status: ReturnStatus::Normal,
+    data: 0,
+};
+
 /// Wait before starting a failed sensor up again.
 const RETRY_DELAY: Duration = Duration::from_secs(1);
 
@@ -174,7 +184,9 @@ impl<S: SpiDevice> Scl3300<S> {
             Command::READ_WHOAMI,
         ];
         // [status 1 (clears), status 2, status 3, whoami]
-        let [_, _, status, whoami] = self.transaction(&commands).await?;
+        let mut responses = [NO_RESPONSE; 4];
+        self.transaction(&commands, &mut responses).await?;
+        let [_, _, status, whoami] = responses;
         // WHOAMI first: a foreign chip's return status means nothing.
         if whoami.data & 0x00FF != u16::from(WHOAMI_SCL3300) {
             return Err(Error::NotPresent {
@@ -200,7 +212,9 @@ impl<S: SpiDevice> Scl3300<S> {
             Command::READ_STATUS,
             Command::READ_WHOAMI,
         ];
-        let [_, ang_x, ang_y, temperature, status] = self.transaction(&commands).await?;
+        let mut responses = [NO_RESPONSE; 5];
+        self.transaction(&commands, &mut responses).await?;
+        let [_, ang_x, ang_y, temperature, status] = responses;
         let status_flags = StatusFlags(status.data);
         for response in [ang_x, ang_y, temperature, status] {
             check_status(response.return_status, status_flags)?;
@@ -215,23 +229,20 @@ impl<S: SpiDevice> Scl3300<S> {
         })
     }
 
-    /// Clocks out every command, then checks the responses in order; response `i`
-    /// answers the command before `commands[i]`.
-    async fn transaction<const N: usize>(
+    /// Clocks out every command, then checks the responses in order; `responses[i]`
+    /// answers the command before `commands[i]`. One function for every burst length
+    /// (slices, not arrays): the firmware's flash is tight.
+    async fn transaction(
         &mut self,
-        commands: &[Command; N],
-    ) -> Result<[Response; N], Error<S::Error>> {
-        let mut frames = [0_u32; N];
-        let mut expected = [None; N];
-        for (i, &command) in commands.iter().enumerate() {
-            expected[i] = self.in_flight;
-            frames[i] = self.exchange(command).await?;
+        commands: &[Command],
+        responses: &mut [Response],
+    ) -> Result<(), Error<S::Error>> {
+        let mut frames = [0_u32; MAX_BURST];
+        let mut expected = [None; MAX_BURST];
+        for ((frame, expected), &command) in frames.iter_mut().zip(&mut expected).zip(commands) {
+            *expected = self.in_flight;
+            *frame = self.exchange(command).await?;
         }
-        let mut responses = [Response {
-            op_code: 0,
-            return_status: ReturnStatus::Normal,
-            data: 0,
-        }; N];
         for ((response, &frame), expected) in responses.iter_mut().zip(&frames).zip(&expected) {
             // An answer to an unknown command (the first frame, or the one after a bus
             // error) may be anything: it is not checked, and never used.
@@ -245,7 +256,7 @@ impl<S: SpiDevice> Scl3300<S> {
             }
             *response = decoded;
         }
-        Ok(responses)
+        Ok(())
     }
 
     /// One frame, then chip select high for [`CS_HIGH`].
@@ -332,10 +343,9 @@ async fn sample_until_fault<S: SpiDevice>(shared: &Shared, sensor: &mut Scl3300<
                     temperature_c: temperature_celsius(sample.temperature),
                 };
                 // A full queue means the procedure is busy (a flash erase, an export):
-                // the stillness filter copes with a gap, it never sees a stale time.
-                if shared.sensor_reports.try_send(report).is_err() {
-                    shared.samples_skipped.fetch_add(1, Ordering::Relaxed);
-                }
+                // the sample is dropped; the stillness filter copes with a gap, and it
+                // never sees a stale time.
+                let _ = shared.sensor_reports.try_send(report);
             }
             Err(error) => {
                 shared.dropped_frames.fetch_add(1, Ordering::Relaxed);

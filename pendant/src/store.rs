@@ -71,10 +71,9 @@ pub enum ResetReason {
     Unreadable,
     /// Written, but not by this pendant: no marker (another firmware image's bytes).
     ForeignBytes,
-    /// An older build's records.
-    OlderFormat(u8),
-    /// A newer build's records (this firmware was downgraded).
-    NewerFormat(u8),
+    /// Another build's records: an older format, or a newer one (the firmware was
+    /// downgraded).
+    OtherFormat(u8),
 }
 
 /// Why a write did not happen.
@@ -114,8 +113,10 @@ pub struct Restored {
 
 impl Default for Restored {
     fn default() -> Self {
+        // Built by a loop: `[None; N]` would be a 4.5 KiB constant in the firmware's
+        // flash, copied at power-up.
         Restored {
-            slots: [None; STORED_KEYS],
+            slots: core::array::from_fn(|_| None),
         }
     }
 }
@@ -227,11 +228,8 @@ impl<F: NorFlash> Store<F> {
                         [b'z', b'c', b'a', b'l', format] if *format == FORMAT => {
                             marker_seen = true;
                         }
-                        [b'z', b'c', b'a', b'l', format] if *format < FORMAT => {
-                            return Err(ResetReason::OlderFormat(*format))
-                        }
                         [b'z', b'c', b'a', b'l', format] => {
-                            return Err(ResetReason::NewerFormat(*format))
+                            return Err(ResetReason::OtherFormat(*format))
                         }
                         _ => return Err(ResetReason::ForeignBytes),
                     }
@@ -247,11 +245,8 @@ impl<F: NorFlash> Store<F> {
                             *s = Some(record);
                         }
                     }
-                    Err(RecordError::WrongFormat(format)) if format < FORMAT => {
-                        return Err(ResetReason::OlderFormat(format))
-                    }
                     Err(RecordError::WrongFormat(format)) => {
-                        return Err(ResetReason::NewerFormat(format))
+                        return Err(ResetReason::OtherFormat(format))
                     }
                     // The CRC held but the value makes no sense: not our writing.
                     Err(_) => return Err(ResetReason::Unreadable),

@@ -50,7 +50,6 @@ fn a_whole_session_identifies_the_offsets_within_three_sigma() {
         ScreenKind::Pose,
         ScreenKind::ResultOffsets,
         ScreenKind::ResultDetails,
-        ScreenKind::Info,
     ] {
         assert!(panel.seen(kind), "{kind:?} not shown");
     }

@@ -2,6 +2,10 @@
 //! of bank 1 (the driver's region), 32-bit words programmed one at a time (x32
 //! parallelism), erase by whole sector, programming only clears bits.
 //!
+//! Operations complete at once on the simulated clock (the pendant reads its store at
+//! power-up without waiting, as reading the board's flash is a memory copy); their
+//! real durations, and the CPU stall they cause, are the README's subject.
+//!
 //! Every word program and every sector erase is numbered. A [`CutPoint`] cuts the
 //! power at one of them, before it starts or half-way (some of the word's bits
 //! cleared, part of the sector erased): the host runner's power-cut campaign. A clone
@@ -11,7 +15,6 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use embassy_time::{Duration, Timer};
 use embedded_storage_async::nor_flash::{
     ErrorType, NorFlash, NorFlashError, NorFlashErrorKind, ReadNorFlash,
 };
@@ -31,13 +34,6 @@ pub const STORE_RANGE: core::ops::Range<u32> = 0x4000..0x1_0000;
 
 /// Program unit: a 32-bit word (x32 parallelism, what embassy-stm32 uses on the F4).
 pub const WORD_BYTES: usize = 4;
-
-/// Simulated time a word program takes (DS10314 gives the programming time; the
-/// runner's timing does not depend on it being exact).
-pub const WORD_PROGRAM: Duration = Duration::from_micros(16);
-
-/// Simulated time a 16 KiB sector erase takes (DS10314's typical at x32).
-pub const SECTOR_ERASE: Duration = Duration::from_millis(250);
 
 /// Where to cut the power.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -124,28 +120,31 @@ impl SimFlash {
         Ok(start)
     }
 
-    /// Counts one operation; `Some(half_done)` if the power goes at it.
-    fn operation(&self) -> Option<bool> {
+    /// Counts one operation; `Some(half_done)` if the power goes at it. After the cut
+    /// nothing more happens to the bytes.
+    fn operation(&self) -> Result<Option<bool>, SimFlashError> {
         let mut memory = self.memory.borrow_mut();
+        if memory.cut_done {
+            return Err(SimFlashError(NorFlashErrorKind::Other));
+        }
         let index = memory.operations;
         memory.operations += 1;
         match memory.cut {
             Some(cut) if cut.operation == index => {
                 memory.cut = None;
                 memory.cut_done = true;
-                Some(cut.half_done)
+                Ok(Some(cut.half_done))
             }
-            _ => None,
+            _ => Ok(None),
         }
     }
 }
 
-/// Never returns: the power is gone.
-async fn dead() -> ! {
+/// The power is gone: the executor stops after this poll (the operation fails, for
+/// whatever still runs until then, and every later one too).
+fn dead() -> SimFlashError {
     cut_power();
-    core::future::pending::<()>().await;
-    #[allow(clippy::empty_loop)]
-    loop {}
+    SimFlashError(NorFlashErrorKind::Other)
 }
 
 impl ErrorType for SimFlash {
@@ -174,7 +173,7 @@ impl NorFlash for SimFlash {
         let start = Self::check(from, (to.saturating_sub(from)) as usize, SECTOR_BYTES)?;
         let end = to as usize;
         for sector in (start..end).step_by(SECTOR_BYTES) {
-            match self.operation() {
+            match self.operation()? {
                 Some(half_done) => {
                     if half_done {
                         // An interrupted erase leaves some words erased, some not.
@@ -185,10 +184,9 @@ impl NorFlash for SimFlash {
                             }
                         }
                     }
-                    dead().await;
+                    return Err(dead());
                 }
                 None => {
-                    Timer::after(SECTOR_ERASE).await;
                     let mut memory = self.memory.borrow_mut();
                     memory.bytes[sector..sector + SECTOR_BYTES].fill(0xFF);
                     memory.erases += 1;
@@ -202,7 +200,7 @@ impl NorFlash for SimFlash {
         let start = Self::check(offset, bytes.len(), WORD_BYTES)?;
         for (i, word) in bytes.chunks_exact(WORD_BYTES).enumerate() {
             let at = start + i * WORD_BYTES;
-            match self.operation() {
+            match self.operation()? {
                 Some(half_done) => {
                     if half_done {
                         // A half-written word: some of the bits to clear are cleared.
@@ -212,7 +210,7 @@ impl NorFlash for SimFlash {
                             memory.bytes[at + k] &= b | mask;
                         }
                     }
-                    dead().await;
+                    return Err(dead());
                 }
                 None => {
                     let mut memory = self.memory.borrow_mut();
@@ -223,7 +221,6 @@ impl NorFlash for SimFlash {
                 }
             }
         }
-        Timer::after(WORD_PROGRAM * (bytes.len() / WORD_BYTES) as u32).await;
         Ok(())
     }
 }

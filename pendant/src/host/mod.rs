@@ -16,7 +16,6 @@ pub mod world;
 use std::cell::RefCell;
 use std::future::Future;
 use std::rc::Rc;
-use std::sync::atomic::Ordering;
 
 use embassy_futures::join::join5;
 use embassy_futures::select::{select, Either};
@@ -109,14 +108,12 @@ impl Rig {
     async fn usb(&self, shared: &Shared) -> ! {
         loop {
             if self.link.plugged.get() {
-                shared.usb_connected.store(true, Ordering::Relaxed);
                 let _ = crate::link::serve(
                     shared,
                     &mut PendantRx(&self.link),
                     &mut PendantTx(&self.link),
                 )
                 .await;
-                shared.usb_connected.store(false, Ordering::Relaxed);
             }
             if !self.link.plugged.get() {
                 self.link.cable.wait().await;

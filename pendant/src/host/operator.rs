@@ -148,7 +148,6 @@ pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptEr
             Screen::StorageReset(_) | Screen::Restarted(_) => {
                 press(rig, Button::Ok, PRESS_MS).await
             }
-            Screen::Info(_) => press(rig, Button::Back, PRESS_MS).await,
             Screen::Result(_) => return Ok(screen),
             Screen::Capture(capture) => {
                 if let Some(fault) = capture.fault {

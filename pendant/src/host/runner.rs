@@ -16,7 +16,7 @@ use zerocal_sim::scl3300_device::Fault;
 use super::exec::{self, Stop};
 use super::flash::{CutPoint, SimFlash, STORE_RANGE};
 use super::operator::{
-    calibrate, capture_count, command, press, t_ms, wait_for, ScriptError, LONG_PRESS_MS, PRESS_MS,
+    calibrate, capture_count, command, press, t_ms, wait_for, ScriptError, PRESS_MS,
 };
 use super::panel::{Frame, PanelLog};
 use super::world::WorldConfig;
@@ -117,8 +117,8 @@ pub struct SessionReport {
     pub poses: usize,
 }
 
-/// Runs a whole calibration on `rig` and exports it; `tour` also opens every result
-/// page and the info screen (for the gallery).
+/// Runs a whole calibration on `rig` and exports it; `tour` also turns every result
+/// page (for the gallery).
 async fn full_session(
     rig: &Rig,
     shared: &Shared,
@@ -138,13 +138,8 @@ async fn full_session(
         // A brush of OK: the result stays and says how to start anew.
         press(rig, Button::Ok, PRESS_MS).await;
         Timer::after(Duration::from_millis(300)).await;
-        press(rig, Button::Back, LONG_PRESS_MS).await;
-        wait_for(rig, "info screen", Duration::from_secs(5), |s| {
-            s.kind() == ScreenKind::Info
-        })
-        .await?;
-        press(rig, Button::Back, PRESS_MS).await;
-        Timer::after(Duration::from_millis(300)).await;
+        // A long OK starts a new session; the export is of the one just finished, so
+        // not here.
     }
     let export = command(rig, b"export\r\n", SILENCE).await;
     let second = command(rig, b"export\r\n", SILENCE).await;
