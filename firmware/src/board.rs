@@ -43,7 +43,7 @@ pub const STORAGE_END: u32 = 0x0001_0000;
 /// next prescaler, 1.5 MHz.)
 pub const SENSOR_SPI_HZ: u32 = 3_000_000;
 
-/// OLED I2C clock: fast mode, the SSD1306's maximum (400 kHz).
+/// OLED I2C clock: I2C fast mode, 400 kHz (a 1 KiB frame in ~25 ms).
 pub const DISPLAY_I2C_HZ: u32 = 400_000;
 
 /// The SSD1306's 7-bit I2C address: 0x3C with its SA0 pin low, 0x3D with it high (the

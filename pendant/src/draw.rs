@@ -67,8 +67,8 @@ pub fn lines(screen: &Screen) -> [Text; 6] {
                 fixed("STORAGE RESET"),
                 a,
                 b,
-                fixed("its session is lost;"),
-                fixed("export it elsewhere"),
+                fixed("this build cannot"),
+                fixed("read what it holds"),
                 fixed("OK: erase and start"),
             ]
         }

@@ -201,10 +201,19 @@ impl<F: NorFlash> Store<F> {
     /// # Errors
     /// [`ResetReason`]: the store must be erased ([`Self::erase`]) before use.
     pub async fn open(&mut self, restored: &mut Restored) -> Result<(), ResetReason> {
-        match self.written_extent().await {
-            Err(()) => return Err(ResetReason::Unreadable),
-            Ok(None) => return self.start_fresh().await,
-            Ok(Some(_)) => {}
+        let Ok(scan) = self.scan().await else {
+            return Err(ResetReason::Unreadable);
+        };
+        let Some(written) = scan.written else {
+            return self.start_fresh().await;
+        };
+        if let Some(wreck_end) = scan.wreck_end {
+            // See `Scan::wreck_end`.
+            let marker = [0_u8; 16];
+            let word = marker.get(..F::WRITE_SIZE).ok_or(ResetReason::Unreadable)?;
+            if self.map.flash().write(wreck_end, word).await.is_err() {
+                return Err(ResetReason::Unreadable);
+            }
         }
         let mut marker_seen = false;
         let mut items = 0_usize;
@@ -256,7 +265,7 @@ impl<F: NorFlash> Store<F> {
         if marker_seen {
             return Ok(());
         }
-        if items == 0 && self.first_start_was_cut().await {
+        if items == 0 && written as usize <= FIRST_WRITE_BYTES {
             // Nothing valid, nothing written past the marker: the first start was
             // cut off while writing it. Nothing to lose; start again.
             *restored = Restored::default();
@@ -320,7 +329,8 @@ impl<F: NorFlash> Store<F> {
         let filler = [0xA5_u8; MAX_RECORD_LEN];
         let mut moved = false;
         for _ in 0..8 {
-            match self.free_in_open_page().await {
+            let free = self.scan().await.map_err(|()| StoreError::Flash)?.open_free;
+            match free {
                 Some(free) if free < IDLE_HEADROOM_BYTES => {
                     self.map
                         .store_item(&mut self.buffer, &FILLER_KEY, &&filler[..])
@@ -333,75 +343,79 @@ impl<F: NorFlash> Store<F> {
         Ok(moved)
     }
 
-    /// Bytes free at the end of the page being written, by sequential-storage's layout
-    /// (a marker word at each end of a page; items appended from the start): `None` if
-    /// no page is open for writing or the flash cannot be read. A wrong guess costs
-    /// only an erase at the ordinary moment.
-    async fn free_in_open_page(&mut self) -> Option<u32> {
+    /// Reads the whole store once: how much was ever written, and an interrupted
+    /// erase to finish (see [`Scan::wreck_end`]).
+    async fn scan(&mut self) -> Result<Scan, ()> {
         let range = self.map.flash_range();
         let page = F::ERASE_SIZE as u32;
-        let word = F::WRITE_SIZE.max(F::READ_SIZE) as u32;
-        let flash = self.map.flash();
-        let mut start = range.start;
-        while start < range.end {
-            let end = start + page;
-            let mut first = [0_u8; 4];
-            let mut last = [0_u8; 4];
-            flash
-                .read(start, &mut first[..word.min(4) as usize])
-                .await
-                .ok()?;
-            flash
-                .read(end - word, &mut last[..word.min(4) as usize])
-                .await
-                .ok()?;
-            let opened = first[0] != 0xFF;
-            let closed = last[0] != 0xFF;
-            if opened && !closed {
-                // Scan back from the end marker for the last written word.
-                let mut at = end - word;
-                let mut chunk = [0_u8; 4];
-                while at > start + word {
-                    at -= word;
-                    flash
-                        .read(at, &mut chunk[..word.min(4) as usize])
-                        .await
-                        .ok()?;
-                    if chunk.iter().take(word.min(4) as usize).any(|b| *b != 0xFF) {
-                        return Some(end - word - (at + word));
-                    }
-                }
-                return Some(page - 2 * word);
-            }
-            start = end;
-        }
-        None
-    }
-
-    /// `Ok(None)` when every byte is erased, else the offset just past the last
-    /// written byte.
-    async fn written_extent(&mut self) -> Result<Option<u32>, ()> {
-        let range = self.map.flash_range();
         let flash = self.map.flash();
         let mut chunk = [0_u8; 64];
-        let mut last_written = None;
+        let mut scan = Scan::default();
+        let mut previous_open: Option<u32> = None;
+        let mut first_open: Option<u32> = None;
+        let mut page_first = 0xFF_u8;
+        let mut page_written = 0_u32;
         let mut at = range.start;
         while at < range.end {
             let len = (range.end - at).min(chunk.len() as u32);
             let bytes = chunk.get_mut(..len as usize).ok_or(())?;
             flash.read(at, bytes).await.map_err(|_| ())?;
+            let offset = (at - range.start) % page;
+            if offset == 0 {
+                page_first = bytes.first().copied().unwrap_or(0xFF);
+                page_written = 0;
+            }
             if let Some(i) = bytes.iter().rposition(|b| *b != 0xFF) {
-                last_written = Some(at + i as u32 + 1);
+                scan.written = Some(at + i as u32 + 1 - range.start);
+                page_written = offset + i as u32 + 1;
+            }
+            if offset + len == page {
+                // sequential-storage's own test of a page marker: half of the first
+                // (last) byte's bits cleared. Marked start, unmarked end: being written.
+                let last = bytes.last().copied().unwrap_or(0xFF);
+                if page_first.count_zeros() >= 4 && last.count_zeros() < 4 {
+                    // Items are appended from the start; the last word is the end marker.
+                    scan.open_free = Some(page.saturating_sub(page_written + F::WRITE_SIZE as u32));
+                    let index = (at - range.start) / page;
+                    let pages = (range.end - range.start) / page;
+                    // Pages are a ring: the wreck follows the page really being written.
+                    let wreck = match (previous_open, first_open) {
+                        (Some(p), _) if p + 1 == index => Some(index),
+                        (_, Some(0)) if index + 1 == pages => Some(0),
+                        _ => None,
+                    };
+                    if let Some(w) = wreck {
+                        scan.wreck_end = Some(range.start + (w + 1) * page - F::WRITE_SIZE as u32);
+                    }
+                    previous_open = Some(index);
+                    first_open = first_open.or(Some(index));
+                }
             }
             at += len;
         }
-        Ok(last_written.map(|end| end - range.start))
+        Ok(scan)
     }
+}
 
-    /// Whether only the first [`FIRST_WRITE_BYTES`] of the store were ever written.
-    async fn first_start_was_cut(&mut self) -> bool {
-        matches!(self.written_extent().await, Ok(Some(end)) if end as usize <= FIRST_WRITE_BYTES)
-    }
+/// What [`Store::scan`] found.
+#[derive(Clone, Copy, Debug, Default)]
+struct Scan {
+    /// The offset just past the last written byte; `None`: every byte erased.
+    written: Option<u32>,
+    /// Bytes left in the page being written (sequential-storage's layout: a marker
+    /// byte at each end, items appended from the start); `None`: no such page. A wrong
+    /// guess costs only an erase at the ordinary moment.
+    open_free: Option<u32>,
+    /// An erase cut off half-way leaves its page with some words erased and some not.
+    /// sequential-storage erases a page only after moving its live records on (it is
+    /// then the spare page after the one being written), so nothing there is needed;
+    /// but a half-erased page whose first byte kept its marker and whose last lost it
+    /// reads as "being written", beside the page that really is, and sequential-storage
+    /// would write into the wreck (found by the power-cut campaign). Two such pages
+    /// cannot otherwise occur: the one that follows the other is the wreck. Writing its
+    /// end marker (this address) makes it read as a full page of old records, each
+    /// superseded, which the map erases again in its turn.
+    wreck_end: Option<u32>,
 }
 
 #[cfg(test)]

@@ -168,7 +168,7 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
             cuts.cut_points, cuts.captures_lost, cuts.duplicated
         );
         println!(
-            "  each a whole session cut at one of the uncut run's {} flash operations ({} word programs, {} sector erases), before it and half-way; results equal to the uncut run: {} of {}; storage resets after a cut: {}; {:.0} s of CPU",
+            "  each a whole session (two: a fresh board, and a store whose page fills) cut at one of its flash operations ({} in all: {} word programs, {} sector erases), before it and half-way, rebooted, finished and rebooted again; results from flash equal to the uncut run's: {} of {}; storage resets after a cut: {}; {:.0} s",
             cuts.operations,
             cuts.operations - cuts.erases,
             cuts.erases,
@@ -180,7 +180,11 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
         for failure in cuts.failures.iter().take(10) {
             println!("  ! {failure}");
         }
-        if cuts.captures_lost > 0 || cuts.duplicated > 0 || !cuts.failures.is_empty() {
+        if cuts.captures_lost > 0
+            || cuts.duplicated > 0
+            || cuts.storage_resets > 0
+            || !cuts.failures.is_empty()
+        {
             problems.push(format!("{} power-cut failures", cuts.failures.len()));
         }
         if options.cut_limit.is_none() && cuts.cut_points < 1000 {

@@ -68,6 +68,8 @@ pub struct FlashMemory {
     pub cut: Option<CutPoint>,
     /// The cut happened.
     pub cut_done: bool,
+    /// When `Some`, each operation's address and kind (`true`: an erase), in order.
+    pub trace: Option<Vec<(u32, bool)>>,
     rng: ChaCha8Rng,
 }
 
@@ -87,9 +89,16 @@ impl SimFlash {
                 erases: 0,
                 cut: None,
                 cut_done: false,
+                trace: None,
                 rng: ChaCha8Rng::seed_from_u64(seed),
             })),
         }
+    }
+
+    /// The power comes back: operations work again (the bytes stay as the cut left
+    /// them).
+    pub fn power_on(&self) {
+        self.memory.borrow_mut().cut_done = false;
     }
 
     /// The memory behind it.
@@ -122,8 +131,11 @@ impl SimFlash {
 
     /// Counts one operation; `Some(half_done)` if the power goes at it. After the cut
     /// nothing more happens to the bytes.
-    fn operation(&self) -> Result<Option<bool>, SimFlashError> {
+    fn operation(&self, address: u32, erase: bool) -> Result<Option<bool>, SimFlashError> {
         let mut memory = self.memory.borrow_mut();
+        if let Some(trace) = memory.trace.as_mut() {
+            trace.push((address, erase));
+        }
         if memory.cut_done {
             return Err(SimFlashError(NorFlashErrorKind::Other));
         }
@@ -173,7 +185,7 @@ impl NorFlash for SimFlash {
         let start = Self::check(from, (to.saturating_sub(from)) as usize, SECTOR_BYTES)?;
         let end = to as usize;
         for sector in (start..end).step_by(SECTOR_BYTES) {
-            match self.operation()? {
+            match self.operation(sector as u32, true)? {
                 Some(half_done) => {
                     if half_done {
                         // An interrupted erase leaves some words erased, some not.
@@ -200,7 +212,7 @@ impl NorFlash for SimFlash {
         let start = Self::check(offset, bytes.len(), WORD_BYTES)?;
         for (i, word) in bytes.chunks_exact(WORD_BYTES).enumerate() {
             let at = start + i * WORD_BYTES;
-            match self.operation()? {
+            match self.operation(at as u32, false)? {
                 Some(half_done) => {
                     if half_done {
                         // A half-written word: some of the bits to clear are cleared.

@@ -228,6 +228,8 @@ pub struct CutReport {
     pub equal_results: usize,
     /// Reboots that showed the storage reset screen.
     pub storage_resets: usize,
+    /// Where those cuts were: (on the filled store, the cut).
+    pub reset_points: Vec<(bool, CutPoint)>,
     /// Flash operations of the uncut run (word programs and sector erases).
     pub operations: u64,
     /// Sector erases of the uncut run.
@@ -236,128 +238,324 @@ pub struct CutReport {
     pub failures: Vec<String>,
 }
 
-async fn cut_script(rig: &Rig, shared: &Shared) -> Result<Vec<u8>, ScriptError> {
+/// The campaign's session: from a fresh board, or from a store that holds earlier
+/// sessions (`started` false: the old result is on the screen, a long OK starts anew).
+async fn cut_script(rig: &Rig, mut started: bool) -> Result<Vec<u8>, ScriptError> {
+    loop {
+        let shown = rig.panel.borrow().shown.clone();
+        match shown {
+            None | Some(Screen::Starting) => Timer::after(Duration::from_millis(50)).await,
+            Some(Screen::Result(_)) if !started => {
+                press(rig, Button::Ok, super::operator::LONG_PRESS_MS).await;
+                started = true;
+            }
+            Some(_) => break,
+        }
+    }
     calibrate(rig, PATIENCE).await?;
-    let _ = shared;
     Ok(command(rig, b"export\r\n", SILENCE).await)
 }
 
+/// A rig whose flash holds `image` (or is erased).
+fn campaign_rig(world: WorldConfig, image: Option<&[u8]>, flash_seed: u64) -> Result<Rig, String> {
+    let rig = Rig::new(world, flash_seed)?;
+    if let Some(bytes) = image {
+        rig.flash.memory().bytes.copy_from_slice(bytes);
+    }
+    Ok(rig)
+}
+
+/// A store that has seen enough sessions that the next one moves to a new page (and
+/// so migrates records and erases a sector): the bytes before that session.
+fn store_before_an_erase(world: WorldConfig) -> Result<Vec<u8>, String> {
+    exec::reset_clock();
+    let rig = Rig::new(world, world.seed)?;
+    for session in 0..40 {
+        let erases_before = rig.flash.memory().erases;
+        let before = rig.flash.memory().bytes.clone();
+        let run = rig.run(exec::now() + RUN_LIMIT, |_| cut_script(&rig, session == 0));
+        if !matches!(run, Ok(Ok(_))) {
+            return Err(format!(
+                "filling the store: session {session} failed: {run:?}"
+            ));
+        }
+        if rig.flash.memory().erases > erases_before {
+            return Ok(before);
+        }
+        exec::advance(REBOOT);
+    }
+    Err("40 sessions and no page change".into())
+}
+
+/// One cut point: the session cut there, rebooted, finished.
+fn cut_one(
+    world: WorldConfig,
+    image: Option<&[u8]>,
+    cut: CutPoint,
+    reference: &[u8],
+    poses: usize,
+) -> Result<CutOutcome, String> {
+    exec::reset_clock();
+    let rig = campaign_rig(
+        world,
+        image,
+        world.seed ^ (cut.operation << 1) ^ u64::from(cut.half_done),
+    )?;
+    rig.flash.memory().cut = Some(cut);
+    let fresh = image.is_none();
+    let first = rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| {
+        cut_script(&rig, fresh)
+    });
+    if first != Err(Stop::PowerCut) {
+        return Err(format!("{cut:?}: the power was never cut ({first:?})"));
+    }
+    let shown = rig.panel.borrow().shown.clone();
+    let acked = screen_progress(shown.as_ref(), poses);
+    // The new session had begun on the screen unless the old result was still shown.
+    let started = fresh
+        || !matches!(
+            shown,
+            Some(Screen::Result(_)) | Some(Screen::Starting) | None
+        );
+    exec::advance(REBOOT);
+    rig.flash.power_on();
+    let rig = &rig;
+    let resumed = rig.run(Instant::from_secs(0) + RUN_LIMIT * 2, |shared| async move {
+        // What the reboot restored, before the operator does anything.
+        let restored = loop {
+            let shown = rig.panel.borrow().shown.clone();
+            match shown {
+                Some(Screen::Starting) | None => Timer::after(Duration::from_millis(50)).await,
+                Some(screen) => {
+                    let reset = screen.kind() == ScreenKind::StorageReset;
+                    let session = &shared.procedure.lock().await.session;
+                    // An old result restored before the new session began is progress 0.
+                    let progress = if !started && session.phase() == Phase::Done {
+                        0
+                    } else {
+                        session_progress(session)
+                    };
+                    break (progress, reset);
+                }
+            }
+        };
+        let export = cut_script(rig, started).await?;
+        let dup = duplicates(&shared.procedure.lock().await.session);
+        Ok::<_, ScriptError>((restored, export, dup))
+    });
+    // One more power cycle: the finished session must come back from flash as it was.
+    exec::advance(REBOOT);
+    let stored = rig.run(Instant::from_secs(0) + RUN_LIMIT * 3, |_| async move {
+        wait_for(
+            rig,
+            "the result after a reboot",
+            Duration::from_secs(10),
+            |s| s.kind() != ScreenKind::Boot,
+        )
+        .await?;
+        Ok::<_, ScriptError>(command(rig, b"export\r\n", SILENCE).await)
+    });
+    match resumed {
+        Ok(Ok(((restored, reset), export, duplicated))) => {
+            let lost = if started {
+                acked.saturating_sub(restored)
+            } else {
+                0
+            };
+            let export = match stored {
+                Ok(Ok(from_flash)) if from_flash == export => export,
+                Ok(Ok(from_flash)) => from_flash,
+                other => {
+                    return Err(format!(
+                        "{cut:?}: the reboot after the session failed: {other:?}"
+                    ))
+                }
+            };
+            let difference = (export != reference).then(|| {
+                let (ours, uncut) = (
+                    String::from_utf8_lossy(&export).into_owned(),
+                    String::from_utf8_lossy(reference).into_owned(),
+                );
+                ours.lines()
+                    .zip(uncut.lines())
+                    .find(|(a, b)| a != b)
+                    .map(|(a, b)| format!("{a} | uncut: {b}"))
+                    .unwrap_or_else(|| {
+                        format!(
+                            "{} lines against the uncut {}; last: {:?}",
+                            ours.lines().count(),
+                            uncut.lines().count(),
+                            ours.lines().last()
+                        )
+                    })
+            });
+            Ok(CutOutcome {
+                lost,
+                duplicated,
+                reset,
+                difference,
+                acked,
+                restored,
+            })
+        }
+        other => Err(format!("{cut:?}: the resumed session failed: {other:?}")),
+    }
+}
+
+/// What one cut point found.
+struct CutOutcome {
+    lost: usize,
+    duplicated: usize,
+    reset: bool,
+    difference: Option<String>,
+    acked: usize,
+    restored: usize,
+}
+
 /// Cuts the power at every flash operation of a session in turn (before it, and
-/// half-way), reboots, lets the operator finish, and compares with the uncut run.
-/// `limit` caps the cut points (for quick tests); `progress` is told each one.
+/// half-way through it), reboots, lets the operator finish, and compares with the
+/// uncut run. Two sessions: on a fresh board (its first writes included), and on a
+/// store whose page fills during the session (so records migrate and a sector is
+/// erased). `limit` caps the cut points of each (for quick tests); `progress` is told
+/// each one. Two threads share the points, each with its own simulated clock.
 ///
 /// # Errors
-/// The uncut reference run's failure.
+/// An uncut reference run's failure.
 pub fn power_cuts(
     seed: u64,
     limit: Option<usize>,
-    mut progress: impl FnMut(usize, usize),
+    progress: impl Fn(usize, usize) + Sync,
 ) -> Result<CutReport, String> {
     let world = WorldConfig {
         seed,
         frozen: true,
         ..WorldConfig::default()
     };
-    exec::reset_clock();
-    let reference_rig = Rig::new(world, seed)?;
-    let reference = match reference_rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| {
-        cut_script(&reference_rig, shared)
-    }) {
-        Ok(Ok(export)) => export,
-        other => return Err(format!("the uncut run failed: {other:?}")),
-    };
-    let (operations, erases) = {
-        let m = reference_rig.flash.memory();
-        (m.operations, m.erases)
-    };
-    let poses = reference_rig.plan.len();
-    let mut report = CutReport {
-        operations,
-        erases,
-        ..CutReport::default()
-    };
-    let mut points: Vec<CutPoint> = (0..operations)
-        .flat_map(|operation| {
-            [false, true].map(|half_done| CutPoint {
-                operation,
-                half_done,
-            })
-        })
-        .collect();
-    if let Some(limit) = limit {
-        // An even spread over the session, both kinds of cut (an odd step alternates
-        // them).
-        let step = (points.len() / limit.max(1)).max(1) | 1;
-        points = points.into_iter().step_by(step).take(limit).collect();
-    }
-    let total = points.len();
-    for (i, cut) in points.into_iter().enumerate() {
-        progress(i, total);
+    let mut report = CutReport::default();
+    let prefilled = store_before_an_erase(world)?;
+    for image in [None, Some(prefilled.as_slice())] {
         exec::reset_clock();
-        let rig = Rig::new(
-            world,
-            seed ^ (cut.operation << 1) ^ u64::from(cut.half_done),
-        )?;
-        rig.flash.memory().cut = Some(cut);
-        let first = rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| {
-            cut_script(&rig, shared)
-        });
-        report.cut_points += 1;
-        if first != Err(Stop::PowerCut) {
-            report
-                .failures
-                .push(format!("{cut:?}: the power was never cut ({first:?})"));
-            continue;
+        let reference_rig = campaign_rig(world, image, seed)?;
+        let reference = match reference_rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| {
+            cut_script(&reference_rig, image.is_none())
+        }) {
+            Ok(Ok(export)) => export,
+            other => return Err(format!("the uncut run failed: {other:?}")),
+        };
+        let (operations, erases) = {
+            let m = reference_rig.flash.memory();
+            (m.operations, m.erases)
+        };
+        let poses = reference_rig.plan.len();
+        report.operations += operations;
+        report.erases += erases;
+        let mut points: Vec<CutPoint> = (0..operations)
+            .flat_map(|operation| {
+                [false, true].map(|half_done| CutPoint {
+                    operation,
+                    half_done,
+                })
+            })
+            .collect();
+        if let Some(limit) = limit {
+            // An even spread over the session, both kinds of cut (an odd step
+            // alternates them).
+            let step = (points.len() / limit.max(1)).max(1) | 1;
+            points = points.into_iter().step_by(step).take(limit).collect();
         }
-        let acked = screen_progress(rig.panel.borrow().shown.as_ref(), poses);
-        exec::advance(REBOOT);
-        let resumed = rig.run(Instant::from_secs(0) + RUN_LIMIT * 2, |shared| async {
-            // What the reboot restored, before the operator does anything.
-            let restored = loop {
-                let shown = rig.panel.borrow().shown.clone();
-                match shown {
-                    Some(Screen::Starting) | None => Timer::after(Duration::from_millis(50)).await,
-                    Some(screen) => {
-                        let reset = screen.kind() == ScreenKind::StorageReset;
-                        let progress = session_progress(&shared.procedure.lock().await.session);
-                        break (progress, reset);
+        let total = points.len();
+        let done = std::sync::atomic::AtomicUsize::new(0);
+        let outcomes: Vec<(CutPoint, Result<CutOutcome, String>)> = std::thread::scope(|scope| {
+            let workers: Vec<_> = (0..2)
+                .map(|worker| {
+                    let (points, reference, done, progress) =
+                        (&points, &reference, &done, &progress);
+                    scope.spawn(move || {
+                        points
+                            .iter()
+                            .skip(worker)
+                            .step_by(2)
+                            .map(|&cut| {
+                                progress(
+                                    done.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
+                                    total,
+                                );
+                                (cut, cut_one(world, image, cut, reference, poses))
+                            })
+                            .collect::<Vec<_>>()
+                    })
+                })
+                .collect();
+            workers
+                .into_iter()
+                .flat_map(|w| w.join().unwrap_or_default())
+                .collect()
+        });
+        for (cut, outcome) in outcomes {
+            report.cut_points += 1;
+            match outcome {
+                Ok(o) => {
+                    report.captures_lost += o.lost;
+                    report.duplicated += o.duplicated;
+                    report.storage_resets += usize::from(o.reset);
+                    if o.reset {
+                        report.reset_points.push((image.is_some(), cut));
+                    }
+                    match o.difference {
+                        None => report.equal_results += 1,
+                        Some(d) => report.failures.push(format!(
+                            "{cut:?}{}: the export differs from the uncut run's (acked {}, restored {}): {d}",
+                            if image.is_some() { " (filled store)" } else { "" },
+                            o.acked, o.restored
+                        )),
+                    }
+                    if o.lost > 0 {
+                        report.failures.push(format!(
+                            "{cut:?}: acked {}, restored {}",
+                            o.acked, o.restored
+                        ));
                     }
                 }
-            };
-            let export = cut_script(&rig, shared).await?;
-            let dup = duplicates(&shared.procedure.lock().await.session);
-            Ok::<_, ScriptError>((restored, export, dup))
-        });
-        match resumed {
-            Ok(Ok(((restored, reset), export, dup))) => {
-                if reset {
-                    report.storage_resets += 1;
-                }
-                let lost = acked.saturating_sub(restored);
-                report.captures_lost += lost;
-                report.duplicated += dup;
-                if export == reference {
-                    report.equal_results += 1;
-                } else {
-                    let first_difference = String::from_utf8_lossy(&export)
-                        .lines()
-                        .zip(String::from_utf8_lossy(&reference).lines())
-                        .find(|(a, b)| a != b)
-                        .map(|(a, b)| format!("{a} | uncut: {b}"))
-                        .unwrap_or_else(|| "(one is a prefix of the other)".into());
-                    report.failures.push(format!(
-                        "{cut:?}: the export differs from the uncut run's (acked {acked}, restored {restored}): {first_difference}"
-                    ));
-                }
-                if lost > 0 {
-                    report
-                        .failures
-                        .push(format!("{cut:?}: acked {acked}, restored {restored}"));
-                }
+                Err(e) => report.failures.push(e),
             }
-            other => report
-                .failures
-                .push(format!("{cut:?}: the resumed session failed: {other:?}")),
+        }
+    }
+    Ok(report)
+}
+
+/// The campaign at chosen cut points only, `(on the filled store, cut)`: to look
+/// again at a failure the whole campaign reported.
+///
+/// # Errors
+/// An uncut reference run's failure.
+pub fn power_cuts_at(seed: u64, cuts: &[(bool, CutPoint)]) -> Result<CutReport, String> {
+    let world = WorldConfig {
+        seed,
+        frozen: true,
+        ..WorldConfig::default()
+    };
+    let prefilled = store_before_an_erase(world)?;
+    let mut report = CutReport::default();
+    for &(filled, cut) in cuts {
+        let image = filled.then_some(prefilled.as_slice());
+        exec::reset_clock();
+        let reference_rig = campaign_rig(world, image, seed)?;
+        let reference = match reference_rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| {
+            cut_script(&reference_rig, image.is_none())
+        }) {
+            Ok(Ok(export)) => export,
+            other => return Err(format!("the uncut run failed: {other:?}")),
+        };
+        let poses = reference_rig.plan.len();
+        report.cut_points += 1;
+        match cut_one(world, image, cut, &reference, poses) {
+            Ok(o) => match o.difference {
+                None => report.equal_results += 1,
+                Some(d) => report
+                    .failures
+                    .push(format!("{cut:?} filled {filled}: {d}")),
+            },
+            Err(e) => report.failures.push(e),
         }
     }
     Ok(report)
