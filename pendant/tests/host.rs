@@ -4,6 +4,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use zerocal_core::log::{LogLine, LogReader};
+use zerocal_pendant::host::flash::CutPoint;
 use zerocal_pendant::host::runner::{self, StoreContents};
 use zerocal_pendant::host::world::WorldConfig;
 use zerocal_pendant::screen::ScreenKind;
@@ -166,4 +167,29 @@ fn power_cuts_lose_and_duplicate_nothing() {
     assert_eq!(report.equal_results, 80);
     // A power cut never makes the store look foreign.
     assert_eq!(report.storage_resets, 0, "{:?}", report.reset_points);
+}
+
+#[test]
+fn an_erase_cut_half_way_is_finished_at_power_up() {
+    // The filled store's session erases a sector; cut before it and half-way through
+    // it (some words erased, some not): the regression the whole campaign found.
+    let erases = runner::erase_operations(3).unwrap();
+    assert!(!erases.is_empty());
+    let cuts: Vec<(bool, CutPoint)> = erases
+        .iter()
+        .flat_map(|&operation| {
+            [false, true].map(|half_done| {
+                (
+                    true,
+                    CutPoint {
+                        operation,
+                        half_done,
+                    },
+                )
+            })
+        })
+        .collect();
+    let report = runner::power_cuts_at(3, &cuts).unwrap();
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    assert_eq!(report.equal_results, cuts.len());
 }

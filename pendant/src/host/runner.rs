@@ -523,6 +523,35 @@ pub fn power_cuts(
     Ok(report)
 }
 
+/// The flash operations of the filled-store session that are sector erases.
+///
+/// # Errors
+/// The reference run's failure.
+pub fn erase_operations(seed: u64) -> Result<Vec<u64>, String> {
+    let world = WorldConfig {
+        seed,
+        frozen: true,
+        ..WorldConfig::default()
+    };
+    let prefilled = store_before_an_erase(world)?;
+    exec::reset_clock();
+    let rig = campaign_rig(world, Some(&prefilled), seed)?;
+    rig.flash.memory().trace = Some(Vec::new());
+    match rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| {
+        cut_script(&rig, false)
+    }) {
+        Ok(Ok(_)) => {}
+        other => return Err(format!("the uncut run failed: {other:?}")),
+    }
+    let trace = rig.flash.memory().trace.take().unwrap_or_default();
+    Ok(trace
+        .iter()
+        .enumerate()
+        .filter(|(_, (_, erase))| *erase)
+        .map(|(i, _)| i as u64)
+        .collect())
+}
+
 /// The campaign at chosen cut points only, `(on the filled store, cut)`: to look
 /// again at a failure the whole campaign reported.
 ///
