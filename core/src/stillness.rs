@@ -4,7 +4,8 @@
 //! Still means: the samples of the last `window_ms` span the whole window and every
 //! sample lies within `max_peak_to_peak_rad` of every other on both axes. A robot still
 //! moving, or ringing after a stop, fails the second test; a sensor dropout empties the
-//! window (see [`StillnessFilter::reset`]).
+//! window (see [`StillnessFilter::reset`]). Each sample may carry the sensor's
+//! temperature; a still window gives its mean too, stored with the capture.
 
 use crate::model::Tilt;
 use crate::real::{deg_to_rad, Real};
@@ -53,13 +54,15 @@ pub enum Stillness<T> {
         mean: Tilt<T>,
         /// Samples averaged.
         samples: u16,
+        /// Mean temperature of the samples that carried one (°C).
+        temperature_c: Option<T>,
     },
 }
 
 /// The filter's state: the samples of the current window.
 #[derive(Clone, Debug, Default)]
 pub struct StillnessFilter<T> {
-    samples: Deque<(u32, Tilt<T>), WINDOW_CAPACITY>,
+    samples: Deque<(u32, Tilt<T>, Option<T>), WINDOW_CAPACITY>,
 }
 
 impl<T: Real> StillnessFilter<T> {
@@ -75,13 +78,14 @@ impl<T: Real> StillnessFilter<T> {
         self.samples.clear();
     }
 
-    /// Adds a sample taken at `t_ms` (a wrapping millisecond clock) and says where the
-    /// window stands.
+    /// Adds a sample taken at `t_ms` (a wrapping millisecond clock), with the sensor's
+    /// temperature if it has one, and says where the window stands.
     pub fn push(
         &mut self,
         config: &StillnessConfig<T>,
         t_ms: u32,
         reading: Tilt<T>,
+        temperature_c: Option<T>,
     ) -> Stillness<T> {
         if !reading.is_finite() {
             self.reset();
@@ -89,7 +93,7 @@ impl<T: Real> StillnessFilter<T> {
         }
         // Keep exactly the samples still within window_ms of this one; a full deque
         // drops its oldest, which only shortens the span (never a false "still").
-        while let Some(&(t0, _)) = self.samples.front() {
+        while let Some(&(t0, _, _)) = self.samples.front() {
             if t_ms.wrapping_sub(t0) > config.window_ms {
                 self.samples.pop_front();
             } else {
@@ -100,14 +104,14 @@ impl<T: Real> StillnessFilter<T> {
             self.samples.pop_front();
         }
         // Capacity is free after the pops above.
-        let _ = self.samples.push_back((t_ms, reading));
+        let _ = self.samples.push_back((t_ms, reading, temperature_c));
 
         // Drop everything before the newest sample that breaks the spread: the
         // still stretch starts after it.
         let limit = config.max_peak_to_peak_rad;
         let (mut lo, mut hi) = (reading, reading);
         let mut keep = 0;
-        for (i, (_, s)) in self.samples.iter().enumerate().rev() {
+        for (i, (_, s, _)) in self.samples.iter().enumerate().rev() {
             lo = Tilt::new(lo.x_rad.min(s.x_rad), lo.y_rad.min(s.y_rad));
             hi = Tilt::new(hi.x_rad.max(s.x_rad), hi.y_rad.max(s.y_rad));
             if hi.x_rad - lo.x_rad > limit || hi.y_rad - lo.y_rad > limit {
@@ -119,7 +123,7 @@ impl<T: Real> StillnessFilter<T> {
             self.samples.pop_front();
         }
         let span = match self.samples.front() {
-            Some(&(t0, _)) => t_ms.wrapping_sub(t0),
+            Some(&(t0, _, _)) => t_ms.wrapping_sub(t0),
             None => 0,
         };
         if keep > 0 && self.samples.len() <= 1 {
@@ -134,14 +138,21 @@ impl<T: Real> StillnessFilter<T> {
         // Sum deviations from the first sample: no loss of precision in f32 when
         // averaging ~0.17 rad values that differ by ~1e-4.
         let first = self.samples.front().map_or(reading, |s| s.1);
-        for (_, s) in self.samples.iter() {
+        let (mut temperature_sum, mut temperatures) = (T::zero(), 0_u32);
+        for (_, s, c) in self.samples.iter() {
             sx += s.x_rad - first.x_rad;
             sy += s.y_rad - first.y_rad;
+            if let Some(c) = c {
+                temperature_sum += *c;
+                temperatures += 1;
+            }
         }
         let inv = T::one() / T::lit(n as f64);
         Stillness::Still {
             mean: Tilt::new(first.x_rad + sx * inv, first.y_rad + sy * inv),
             samples: n as u16,
+            temperature_c: (temperatures > 0)
+                .then(|| temperature_sum / T::lit(f64::from(temperatures))),
         }
     }
 }
@@ -163,14 +174,25 @@ mod tests {
         let mut last = Stillness::Moving;
         for i in 0..=10u32 {
             let wobble = if i % 2 == 0 { 2e-4 } else { -2e-4 };
-            last = f.push(&cfg(), i * 100, Tilt::new(0.1 + wobble, -0.05));
+            last = f.push(
+                &cfg(),
+                i * 100,
+                Tilt::new(0.1 + wobble, -0.05),
+                Some(20.0 + f64::from(i)),
+            );
             if i < 10 {
                 assert!(matches!(last, Stillness::Settling { .. }), "{i}: {last:?}");
             }
         }
         match last {
-            Stillness::Still { mean, samples } => {
+            Stillness::Still {
+                mean,
+                samples,
+                temperature_c,
+            } => {
                 assert_eq!(samples, 11);
+                // 20..=30 °C, one a sample.
+                assert_eq!(temperature_c, Some(25.0));
                 // 6 × +2e-4 and 5 × −2e-4 over 11 samples.
                 assert!((mean.x_rad - (0.1 + 2e-4 / 11.0)).abs() < 1e-12);
             }
@@ -182,12 +204,12 @@ mod tests {
     fn motion_restarts_the_window() {
         let mut f = StillnessFilter::new();
         for i in 0..8u32 {
-            f.push(&cfg(), i * 100, Tilt::new(0.1, 0.0));
+            f.push(&cfg(), i * 100, Tilt::new(0.1, 0.0), None);
         }
         // A jump larger than the threshold: the still stretch restarts at the jump.
-        let s = f.push(&cfg(), 800, Tilt::new(0.11, 0.0));
+        let s = f.push(&cfg(), 800, Tilt::new(0.11, 0.0), None);
         assert_eq!(s, Stillness::Moving);
-        let s = f.push(&cfg(), 900, Tilt::new(0.11, 0.0));
+        let s = f.push(&cfg(), 900, Tilt::new(0.11, 0.0), None);
         assert!(
             matches!(s, Stillness::Settling { percent } if percent <= 10),
             "{s:?}"
@@ -195,7 +217,12 @@ mod tests {
         // A slow drift (robot creeping) never gets still.
         let mut f = StillnessFilter::new();
         for i in 0..40u32 {
-            let s = f.push(&cfg(), i * 100, Tilt::new(0.1 + f64::from(i) * 2e-4, 0.0));
+            let s = f.push(
+                &cfg(),
+                i * 100,
+                Tilt::new(0.1 + f64::from(i) * 2e-4, 0.0),
+                None,
+            );
             assert!(!matches!(s, Stillness::Still { .. }), "{i}");
         }
     }
@@ -203,14 +230,14 @@ mod tests {
     #[test]
     fn gaps_and_non_finite_samples_do_not_fake_stillness() {
         let mut f = StillnessFilter::new();
-        f.push(&cfg(), 0, Tilt::new(0.1, 0.0));
+        f.push(&cfg(), 0, Tilt::new(0.1, 0.0), None);
         assert_eq!(
-            f.push(&cfg(), 100, Tilt::new(f64::NAN, 0.0)),
+            f.push(&cfg(), 100, Tilt::new(f64::NAN, 0.0), None),
             Stillness::Moving
         );
         // Only two samples 1.5 s apart after a dropout: the first is out of the window.
-        f.push(&cfg(), 200, Tilt::new(0.1, 0.0));
-        let s = f.push(&cfg(), 1700, Tilt::new(0.1, 0.0));
+        f.push(&cfg(), 200, Tilt::new(0.1, 0.0), None);
+        let s = f.push(&cfg(), 1700, Tilt::new(0.1, 0.0), None);
         assert!(matches!(s, Stillness::Settling { percent: 0 }), "{s:?}");
     }
 
@@ -220,7 +247,12 @@ mod tests {
         let start = u32::MAX - 500;
         let mut last = Stillness::Moving;
         for i in 0..=10u32 {
-            last = f.push(&cfg(), start.wrapping_add(i * 100), Tilt::new(0.1, 0.0));
+            last = f.push(
+                &cfg(),
+                start.wrapping_add(i * 100),
+                Tilt::new(0.1, 0.0),
+                None,
+            );
         }
         assert!(
             matches!(last, Stillness::Still { samples: 11, .. }),

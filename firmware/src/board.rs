@@ -1,32 +1,31 @@
-//! The pendant's board: which pin does what, in one place.
+//! The pendant's board: which pin does what, and the clock and bus figures, in one place.
 //!
-//! WeAct "Black Pill" STM32F411CEU6 (25 MHz HSE crystal, USB-C on PA11/PA12, LED on
-//! PC13) wired to:
+//! WeAct "Black Pill" STM32F411CEU6 (25 MHz HSE crystal, USB-C on PA11/PA12, KEY on PA0,
+//! LED on PC13) wired to:
 //!
 //! | function | MCU pin | peripheral | to |
 //! | --- | --- | --- | --- |
-//! | SCL3300 SCK | PA5 | SPI1 SCK | SCL3300 SCK |
-//! | SCL3300 MISO | PA6 | SPI1 MISO | SCL3300 MISO |
-//! | SCL3300 MOSI | PA7 | SPI1 MOSI | SCL3300 MOSI |
-//! | SCL3300 CS | PA4 | GPIO out, idle high | SCL3300 CSB |
+//! | SCL3300 SCK | PB13 | SPI2 SCK (AF5) | SCL3300 SCK |
+//! | SCL3300 MISO | PB14 | SPI2 MISO (AF5), pull-down | SCL3300 MISO |
+//! | SCL3300 MOSI | PB15 | SPI2 MOSI (AF5) | SCL3300 MOSI |
+//! | SCL3300 CS | PB12 | GPIO out, idle high | SCL3300 CSB |
 //! | OLED SCL | PB6 | I2C1 SCL | SSD1306 SCL (4.7 kΩ pull-up on the module) |
 //! | OLED SDA | PB7 | I2C1 SDA | SSD1306 SDA (4.7 kΩ pull-up on the module) |
-//! | OK button | PB12 | EXTI12, pull-up | push button to GND |
-//! | BACK button | PB13 | EXTI13, pull-up | push button to GND |
-//! | NEXT button | PB14 | EXTI14, pull-up | push button to GND |
-//! | USB D− | PA11 | USB_OTG_FS DM | USB-C (on board) |
-//! | USB D+ | PA12 | USB_OTG_FS DP | USB-C (on board) |
+//! | OK button | PA1 | EXTI1, pull-up | push button to GND |
+//! | BACK button | PA2 | EXTI2, pull-up | push button to GND |
+//! | NEXT button | PA3 | EXTI3, pull-up | push button to GND |
+//! | USB D− / D+ | PA11 / PA12 | USB_OTG_FS | USB-C (on board) |
 //!
-//! The SCL3300 runs from 3.3 V. Buttons sit on pins 12-14 so each has its own EXTI
-//! line (EXTI lines are shared by pin number across ports). PA0 (the board's KEY
-//! button), PA9 (no VBUS sensing on this board) and PC13 (LED) are left free.
+//! Why these pins: PA4-PA7 are the board's optional SPI-flash footprint (CS, SCK,
+//! MISO, MOSI on v3.0), so the sensor is on SPI2 instead; each button has its own EXTI
+//! line (lines are shared by pin number across ports). PA0 (KEY), PA9 (no VBUS sensing
+//! on this board), PC13 (LED) and PA13/PA14 (SWD) are left free.
 //!
-//! [`Board::split`] is the only place that names pins: `main` turns them into drivers
-//! and hands each task its own.
+//! [`Board::split`] is the only place that names pins.
 
 use embassy_stm32::peripherals::{
-    DMA1_CH0, DMA1_CH6, EXTI12, EXTI13, EXTI14, I2C1, PA11, PA12, PA4, PA5, PA6, PA7, PB12, PB13,
-    PB14, PB6, PB7, SPI1, USB_OTG_FS,
+    DMA1_CH0, DMA1_CH6, EXTI1, EXTI2, EXTI3, I2C1, IWDG, PA1, PA11, PA12, PA2, PA3, PB12, PB13,
+    PB14, PB15, PB6, PB7, SPI2, USB_OTG_FS,
 };
 use embassy_stm32::{Peri, Peripherals};
 
@@ -38,24 +37,37 @@ pub const STORAGE_START: u32 = 0x0000_4000;
 /// the program starts. The store is 3 sectors of 16 KiB.
 pub const STORAGE_END: u32 = 0x0001_0000;
 
-/// SCL3300 SPI clock: within the sensor's 2-4 MHz, low end for robust wiring.
-pub const SENSOR_SPI_HZ: u32 = 2_000_000;
+/// SCL3300 SPI clock, chosen: SPI2 runs from APB1 (48 MHz) through a power-of-two
+/// prescaler (RM0383, SPI_CR1.BR: fPCLK/2 … /256), so 48 MHz / 16 = 3 MHz, inside the
+/// sensor's recommended 2-4 MHz. (2 MHz cannot be made: the driver rounds down to the
+/// next prescaler, 1.5 MHz.)
+pub const SENSOR_SPI_HZ: u32 = 3_000_000;
 
-/// OLED I2C clock: SSD1306 fast mode.
+/// OLED I2C clock: I2C fast mode, 400 kHz (a 1 KiB frame in ~25 ms).
 pub const DISPLAY_I2C_HZ: u32 = 400_000;
+
+/// The SSD1306's 7-bit I2C address: 0x3C with its SA0 pin low, 0x3D with it high (the
+/// module's "0x78/0x7A" resistor selects it; those are the 8-bit write addresses).
+/// A module strapped for 0x3D: change this to 0x3D.
+pub const OLED_ADDRESS: u8 = 0x3C;
+
+/// The independent watchdog's timeout (µs), nominal. It runs from the LSI, whose
+/// frequency varies from part to part (see the README: the real timeout may be
+/// shorter than nominal), so the watchdog task pets it four times as often.
+pub const WATCHDOG_TIMEOUT_US: u32 = 4_000_000;
 
 /// The sensor's pins and bus.
 pub struct SensorPins {
-    /// SPI1.
-    pub spi: Peri<'static, SPI1>,
+    /// SPI2.
+    pub spi: Peri<'static, SPI2>,
     /// Serial clock.
-    pub sck: Peri<'static, PA5>,
+    pub sck: Peri<'static, PB13>,
     /// Master in.
-    pub miso: Peri<'static, PA6>,
+    pub miso: Peri<'static, PB14>,
     /// Master out.
-    pub mosi: Peri<'static, PA7>,
+    pub mosi: Peri<'static, PB15>,
     /// Chip select (active low).
-    pub cs: Peri<'static, PA4>,
+    pub cs: Peri<'static, PB12>,
 }
 
 /// The display's pins, bus and DMA streams.
@@ -75,11 +87,11 @@ pub struct DisplayPins {
 /// The three buttons and their EXTI channels.
 pub struct ButtonPins {
     /// OK.
-    pub ok: (Peri<'static, PB12>, Peri<'static, EXTI12>),
+    pub ok: (Peri<'static, PA1>, Peri<'static, EXTI1>),
     /// BACK.
-    pub back: (Peri<'static, PB13>, Peri<'static, EXTI13>),
+    pub back: (Peri<'static, PA2>, Peri<'static, EXTI2>),
     /// NEXT.
-    pub next: (Peri<'static, PB14>, Peri<'static, EXTI14>),
+    pub next: (Peri<'static, PA3>, Peri<'static, EXTI3>),
 }
 
 /// The USB port.
@@ -104,6 +116,8 @@ pub struct Board {
     pub usb: UsbPins,
     /// Internal flash (calibration store).
     pub flash: Peri<'static, embassy_stm32::peripherals::FLASH>,
+    /// The independent watchdog.
+    pub watchdog: Peri<'static, IWDG>,
 }
 
 impl Board {
@@ -111,11 +125,11 @@ impl Board {
     pub fn split(p: Peripherals) -> Board {
         Board {
             sensor: SensorPins {
-                spi: p.SPI1,
-                sck: p.PA5,
-                miso: p.PA6,
-                mosi: p.PA7,
-                cs: p.PA4,
+                spi: p.SPI2,
+                sck: p.PB13,
+                miso: p.PB14,
+                mosi: p.PB15,
+                cs: p.PB12,
             },
             display: DisplayPins {
                 i2c: p.I2C1,
@@ -125,9 +139,9 @@ impl Board {
                 rx_dma: p.DMA1_CH0,
             },
             buttons: ButtonPins {
-                ok: (p.PB12, p.EXTI12),
-                back: (p.PB13, p.EXTI13),
-                next: (p.PB14, p.EXTI14),
+                ok: (p.PA1, p.EXTI1),
+                back: (p.PA2, p.EXTI2),
+                next: (p.PA3, p.EXTI3),
             },
             usb: UsbPins {
                 otg: p.USB_OTG_FS,
@@ -135,6 +149,7 @@ impl Board {
                 dm: p.PA11,
             },
             flash: p.FLASH,
+            watchdog: p.IWDG,
         }
     }
 }

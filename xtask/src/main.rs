@@ -6,6 +6,7 @@
 //! linked by Debian's ld.lld, installed with apt-get when missing. [`toolchain`] is the
 //! one owner of that knowledge; `cargo xtask setup` runs it alone.
 
+mod pendant_sim;
 mod size;
 mod target_test;
 mod toolchain;
@@ -41,6 +42,33 @@ enum Command {
     /// solution within 2e-5 deg; then the instructions and peak stack of one 30-pose
     /// fit and the release firmware's flash and static RAM, against their budgets.
     TargetTest,
+    /// Run the pendant's application on the desktop: a whole calibration on a
+    /// simulated robot (SCL3300 at the SPI-frame level, SSD1306 as a frame buffer, USB
+    /// as a byte stream, the F411's flash sectors), then the fault scenarios. Writes
+    /// DIR/export, DIR/screens/NN-name.png and DIR/truth.json; prints the identified
+    /// offsets beside the truth.
+    PendantSim {
+        /// Where to write the export, the screens and the truth.
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+        /// Seed of the simulated world (truth and noise).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Also cut the power at every flash write and erase of a session in turn,
+        /// reboot and finish; report what was lost or duplicated.
+        #[arg(long)]
+        power_cuts: bool,
+        /// At most this many cut points, spread over the session (default: all).
+        #[arg(long, value_name = "N")]
+        cut_limit: Option<usize>,
+        /// Fail if the gallery in DIR (and README.md's table) differs from what the
+        /// code draws.
+        #[arg(long, value_name = "DIR")]
+        check_gallery: Option<PathBuf>,
+        /// Write the gallery into DIR and README.md's table.
+        #[arg(long, value_name = "DIR")]
+        write_gallery: Option<PathBuf>,
+    },
 }
 
 fn main() -> Result<()> {
@@ -49,6 +77,24 @@ fn main() -> Result<()> {
         Command::Firmware => firmware(),
         Command::CoreThumb => core_thumb(),
         Command::TargetTest => target_test::run(&repo_root()),
+        Command::PendantSim {
+            out,
+            seed,
+            power_cuts,
+            cut_limit,
+            check_gallery,
+            write_gallery,
+        } => pendant_sim::run(
+            &repo_root(),
+            &pendant_sim::Options {
+                out,
+                seed,
+                power_cuts,
+                cut_limit,
+                check_gallery,
+                write_gallery,
+            },
+        ),
     }
 }
 

@@ -359,8 +359,15 @@ fn on_sample<T: Real>(
             s.armed = true;
         }
     }
-    s.stillness = s.filter.push(&config.stillness, t_ms, reading);
-    let Stillness::Still { mean, .. } = s.stillness else {
+    s.stillness = s
+        .filter
+        .push(&config.stillness, t_ms, reading, s.temperature_c);
+    let Stillness::Still {
+        mean,
+        temperature_c,
+        ..
+    } = s.stillness
+    else {
         return;
     };
     if !s.armed {
@@ -373,13 +380,14 @@ fn on_sample<T: Real>(
         });
         return;
     }
-    capture(config, s, mean, out);
+    capture(config, s, mean, temperature_c, out);
 }
 
 fn capture<T: Real>(
     config: &ProcedureConfig<T>,
     s: &mut ProcedureState<T>,
     mean: Tilt<T>,
+    temperature_c: Option<T>,
     out: &mut Output<T>,
 ) {
     s.notice = Some(Notice::Captured);
@@ -450,7 +458,8 @@ fn capture<T: Real>(
             let pose = PoseReading {
                 joints_rad: q,
                 reading: mean,
-                temperature_c: s.temperature_c,
+                // The window's mean, like the reading's.
+                temperature_c,
             };
             if s.captures.push((s.next_pose as u8, pose)).is_err() {
                 return;

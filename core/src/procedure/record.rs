@@ -18,7 +18,9 @@ use crate::stage2::PoseReading;
 /// (format, slot, index, six joints, two readings, a flag and a temperature) is 76.
 pub const MAX_RECORD_LEN: usize = 1 + 8 * 10;
 
-const FORMAT: u8 = 2;
+/// The record format this build writes and reads (the first byte of every value). A
+/// store holding another format is reset by the pendant, never misread.
+pub const FORMAT: u8 = 2;
 
 /// One stored fact.
 #[derive(Clone, Copy, Debug, PartialEq)]

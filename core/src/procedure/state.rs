@@ -35,7 +35,8 @@ pub struct ProcedureState<T: Real> {
     pub(super) stillness: Stillness<T>,
     pub(super) armed: bool,
     pub(super) last_capture: Option<Tilt<T>>,
-    /// The sensor's latest temperature (°C), stored with each capture.
+    /// The sensor's latest temperature (°C), fed to the stillness window with the
+    /// reading: a capture stores the window's mean.
     pub(super) temperature_c: Option<T>,
     pub(super) notice: Option<Notice>,
 }

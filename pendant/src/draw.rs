@@ -1,80 +1,39 @@
-//! The UI task: owns I2C1 and the SSD1306 128x64 OLED, and draws each [`Screen`] it
-//! receives. It decides nothing: what to show comes from the procedure task.
+//! How each [`Screen`] looks on the 128×64 OLED: six lines of `FONT_6X10` (21 glyphs of
+//! 6 px on 128 px), the title underlined. Every text here is at most 21 glyphs; a longer
+//! number is cut by its buffer, never an error.
 //!
-//! Layout: six lines of `FONT_6X10` (21 glyphs of 6 px on 128 px): a title, the
-//! prompt, the live reading, the stillness and a notice or hint. Every text here is at
-//! most 21 glyphs; a longer number is cut by its buffer, never an error.
+//! Drawing is generic over any `DrawTarget<Color = BinaryColor>`: the SSD1306's frame
+//! buffer on the board, a plain frame buffer on the desktop, so the gallery shows the
+//! pixels the pendant shows.
 
 use core::fmt::Write;
-use zerocal_core::decimal::Fixed;
 
-use embassy_stm32::i2c::{I2c, Master};
-use embassy_stm32::mode::Async;
-use embassy_time::{Duration, Timer};
-use embedded_graphics::mono_font::iso_8859_1::FONT_6X10;
-use embedded_graphics::mono_font::{MonoFont, MonoTextStyle};
+use embedded_graphics::image::GetPixel;
+use embedded_graphics::mono_font::ascii::FONT_6X10;
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
-use embedded_graphics::text::{Baseline, Text as TextDrawable};
+use embedded_graphics::primitives::Rectangle;
 use heapless::String;
-use ssd1306::mode::BufferedGraphicsModeAsync;
-use ssd1306::prelude::*;
-use ssd1306::{I2CDisplayInterface, Ssd1306Async};
-
-use crate::channels::SCREEN;
-use zerocal_core::error::FitError;
+use zerocal_core::decimal::Fixed;
+use zerocal_core::error::{FitError, StageError};
+use zerocal_core::procedure::Notice;
 use zerocal_core::report::Warning;
 use zerocal_core::session::SessionError;
 
 use crate::screen::{
-    CaptureScreen, FitSummary, Offset, Prompt, Refusal, ResultScreen, Screen, Settle,
+    CaptureScreen, FitSummary, Offset, Prompt, Refusal, RestartCause, ResultScreen, Screen, Settle,
 };
-use crate::tasks::sensor::SensorFault;
-
-/// The display's bus.
-pub type DisplayI2c = I2c<'static, Async, Master>;
-
-type Display = Ssd1306Async<
-    I2CInterface<DisplayI2c>,
-    DisplaySize128x64,
-    BufferedGraphicsModeAsync<DisplaySize128x64>,
->;
-
-/// Wait before trying a display that failed to initialise again.
-const RETRY_DELAY: Duration = Duration::from_secs(2);
-
-/// Draws screens forever. A display that fails (absent, I2C error) is initialised
-/// again; the rest of the pendant keeps working without it.
-#[embassy_executor::task]
-pub async fn ui_task(i2c: DisplayI2c) -> ! {
-    let interface = I2CDisplayInterface::new(i2c);
-    let mut display: Display =
-        Ssd1306Async::new(interface, DisplaySize128x64, DisplayRotation::Rotate0)
-            .into_buffered_graphics_mode();
-    let mut screen = Screen::Starting("");
-    loop {
-        if display.init().await.is_err() {
-            defmt::warn!("display: init failed, retrying");
-            Timer::after(RETRY_DELAY).await;
-            continue;
-        }
-        loop {
-            display.clear_buffer();
-            draw(&mut display, &screen);
-            if display.flush().await.is_err() {
-                defmt::warn!("display: flush failed, re-initialising");
-                break;
-            }
-            screen = SCREEN.wait().await;
-        }
-    }
-}
+use crate::sensor::SensorFault;
+use crate::store::ResetReason;
 
 /// Top of each of the six text lines (10 px glyphs spread over 64 px).
 const LINE_Y: [i32; 6] = [0, 11, 22, 32, 43, 54];
 
 /// One line of text: 21 glyphs, some of them two bytes (°, ±).
-type Text = String<32>;
+pub type Text = String<32>;
+
+/// The firmware version shown on the boot screen.
+const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// A line of fixed text.
 fn fixed(content: &str) -> Text {
@@ -91,35 +50,161 @@ fn line(args: core::fmt::Arguments<'_>) -> Text {
     text
 }
 
-/// Draws `screen` into the frame buffer.
-fn draw(display: &mut Display, screen: &Screen) {
+/// The six lines of `screen`.
+pub fn lines(screen: &Screen) -> [Text; 6] {
     match screen {
-        Screen::Starting(what) => {
-            // FONT_6X10 only: a larger font would cost ~6 KiB of flash for one word.
-            text(
-                display,
-                "zerocal pendant",
-                Point::new(0, LINE_Y[0]),
-                &FONT_6X10,
-            );
-            text(display, what, Point::new(0, LINE_Y[2]), &FONT_6X10);
-            let version = line(format_args!("fw {}", env!("CARGO_PKG_VERSION")));
-            text(display, &version, Point::new(0, LINE_Y[5]), &FONT_6X10);
+        Screen::Starting => [
+            fixed("zerocal pendant"),
+            Text::new(),
+            fixed("reading store..."),
+            Text::new(),
+            Text::new(),
+            line(format_args!("fw {VERSION}")),
+        ],
+        Screen::StorageReset(reason) => {
+            let [a, b] = reset_lines(*reason);
+            [
+                fixed("STORAGE RESET"),
+                a,
+                b,
+                fixed("this build cannot"),
+                fixed("read what it holds"),
+                fixed("OK: erase and start"),
+            ]
         }
-        Screen::Capture(capture) => draw_lines(display, &capture_lines(capture)),
-        Screen::Result(result) => draw_lines(display, &result_lines(result)),
+        Screen::Restarted(note) => {
+            let cause = match note.cause {
+                RestartCause::Panic => "RESTARTED: fault",
+                RestartCause::Watchdog => "RESTARTED: watchdog",
+            };
+            let (first, rest) = split_at_char(&note.message, 21);
+            let (second, rest) = split_at_char(rest, 21);
+            let third = rest;
+            [
+                fixed(cause),
+                fixed(first),
+                fixed(second),
+                fixed(third),
+                Text::new(),
+                fixed("OK: go on (kept)"),
+            ]
+        }
+        Screen::Capture(capture) => capture_lines(capture),
+        Screen::Result(result) => result_lines(result),
     }
 }
 
-/// Draws six lines of `FONT_6X10`.
-fn draw_lines(display: &mut Display, lines: &[Text; 6]) {
-    for (content, y) in lines.iter().zip(LINE_Y) {
-        text(display, content, Point::new(0, y), &FONT_6X10);
+/// Draws `screen` into `target` (cleared first).
+///
+/// # Errors
+/// The target's own (a frame buffer's is `Infallible`).
+pub fn draw<D: DrawTarget<Color = BinaryColor>>(
+    target: &mut D,
+    screen: &Screen,
+) -> Result<(), D::Error> {
+    target.clear(BinaryColor::Off)?;
+    for (content, y) in lines(screen).iter().zip(LINE_Y) {
+        text(target, content, y)?;
+    }
+    // The title's underline: between line 0 (rows 0-9) and line 1 (from row 11).
+    target.fill_solid(
+        &Rectangle::new(Point::new(0, 10), Size::new(128, 1)),
+        BinaryColor::On,
+    )
+}
+
+/// The two glyphs the screens use beyond ASCII, in `FONT_6X10`'s style: rows of five
+/// pixels, top row first, bit 4 leftmost. The ASCII font with these two costs half
+/// the flash of the whole ISO 8859-1 one.
+const DEGREE: [u8; 10] = [0b01100, 0b10010, 0b10010, 0b01100, 0, 0, 0, 0, 0, 0];
+const PLUS_MINUS: [u8; 10] = [
+    0, 0b00100, 0b00100, 0b11111, 0b00100, 0b00100, 0, 0b11111, 0, 0,
+];
+
+/// One line of `FONT_6X10` with its top at `top`: each glyph's lit pixels copied from
+/// the font's image. Leaner than embedded-graphics' text renderer (alignment,
+/// baselines, decorations, none of which a six-line screen uses): drawing was the
+/// largest part of the firmware's flash.
+fn text<D: DrawTarget<Color = BinaryColor>>(
+    target: &mut D,
+    content: &str,
+    top: i32,
+) -> Result<(), D::Error> {
+    let font = &FONT_6X10;
+    let (w, h) = (
+        font.character_size.width as i32,
+        font.character_size.height as i32,
+    );
+    let columns = (font.image.size().width as i32 / w).max(1);
+    for (i, c) in content.chars().enumerate() {
+        let left = i as i32 * w;
+        let special = match c {
+            '\u{b0}' => Some(&DEGREE),
+            '\u{b1}' => Some(&PLUS_MINUS),
+            _ => None,
+        };
+        let glyph = font.glyph_mapping.index(c) as i32;
+        let origin = Point::new((glyph % columns) * w, (glyph / columns) * h);
+        let pixels = (0..h).flat_map(|y| (0..w).map(move |x| Point::new(x, y)));
+        target.draw_iter(pixels.filter_map(|p| {
+            let lit = match special {
+                Some(rows) => rows
+                    .get(p.y as usize)
+                    .is_some_and(|row| p.x < 5 && row & (0b10000 >> p.x) != 0),
+                None => font.image.pixel(origin + p) == Some(BinaryColor::On),
+            };
+            lit.then(|| Pixel(Point::new(left + p.x, top + p.y), BinaryColor::On))
+        }))?;
+    }
+    Ok(())
+}
+
+/// The first `glyphs` characters of `text` and the rest.
+fn split_at_char(text: &str, glyphs: usize) -> (&str, &str) {
+    // `split_at_checked`: a char boundary by construction, and no panic path (whose
+    // message formatting would cost ~2 KiB of flash).
+    match text.char_indices().nth(glyphs) {
+        Some((at, _)) => text.split_at_checked(at).unwrap_or((text, "")),
+        None => (text, ""),
+    }
+}
+
+fn reset_lines(reason: ResetReason) -> [Text; 2] {
+    match reason {
+        ResetReason::Unreadable => [fixed("store unreadable"), fixed("(corrupt or foreign)")],
+        ResetReason::ForeignBytes => [fixed("store holds another"), fixed("image's bytes")],
+        ResetReason::OtherFormat(format) => [
+            fixed("records of another"),
+            line(format_args!("build (format {format})")),
+        ],
     }
 }
 
 /// A screen of stages 0-2: title, two prompt lines, live reading, stillness, notice.
 fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
+    if let Some(fault) = screen.fault {
+        return fault_lines(fault);
+    }
+    if let Some(Notice::ReadingOutOfRange { axis, value_deg }) = screen.notice {
+        return [
+            fixed("OUT OF RANGE"),
+            line(format_args!("{axis} reads {}\u{b0}:", sgn(value_deg, 2))),
+            fixed("outside the sensor's"),
+            fixed("\u{b1}10\u{b0} range; not"),
+            fixed("captured. Move robot"),
+            live_line(screen),
+        ];
+    }
+    if screen.still_moving {
+        return [
+            fixed("ROBOT NOT STILL"),
+            fixed("reading keeps moving:"),
+            fixed("stopped? brakes on?"),
+            live_line(screen),
+            settle_line(screen),
+            fixed("capture waits"),
+        ];
+    }
     let (title, first, second, hint): (Text, &str, &str, &str) = match screen.prompt {
         Prompt::Stage0First => (
             fixed("STAGE 0: sensor bias"),
@@ -130,7 +215,7 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
         Prompt::Stage0Second => (
             fixed("STAGE 0: 2nd reading"),
             "turn pendant 180\u{b0} on",
-            "the same spot",
+            "same spot, then OK",
             "BACK: redo 1st",
         ),
         Prompt::Stage1Before => (
@@ -142,7 +227,7 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
         Prompt::Stage1After => (
             fixed("STAGE 1: 2nd reading"),
             "turn axis 1 by 180\u{b0},",
-            "all else locked",
+            "all else locked; OK",
             "BACK: redo 1st",
         ),
         Prompt::Pose {
@@ -154,15 +239,10 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
                 "POSE {number}/{of}  ({} done)",
                 screen.captured
             ));
-            let joints = [
-                line(format_args!("j3{:>7} j4{:>7}", sgn(j3, 1), sgn(j4, 1))),
-                line(format_args!("j5{:>7} j6{:>7}", sgn(j5, 1), sgn(j6, 1))),
-            ];
-            let [first, second] = joints;
             return [
                 title,
-                first,
-                second,
+                line(format_args!("j3{:>7} j4{:>7}", sgn(j3, 2), sgn(j4, 2))),
+                line(format_args!("j5{:>7} j6{:>7}", sgn(j5, 2), sgn(j6, 2))),
                 live_line(screen),
                 settle_line(screen),
                 // Stage 2's model has axis 1 at its mark and joint 2 where stage 1
@@ -186,11 +266,52 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
     };
     [
         title,
-        line(format_args!("{first}")),
-        line(format_args!("{second}")),
+        fixed(first),
+        fixed(second),
         live_line(screen),
         settle_line(screen),
         notice_line(screen, hint),
+    ]
+}
+
+/// The whole screen for a sensor without readings: what is wrong and what to do.
+fn fault_lines(fault: SensorFault) -> [Text; 6] {
+    let (what, detail, todo): (&str, Text, &str) = match fault {
+        SensorFault::NotResponding => (
+            "no answer on SPI",
+            fixed("(MISO stuck)"),
+            "check cable, 3.3 V",
+        ),
+        SensorFault::FrameErrors => (
+            "frames corrupted",
+            fixed("(CRC/echo), dropped"),
+            "check cable, shield",
+        ),
+        SensorFault::ErrorStatus { status_flags } => (
+            "error status",
+            line(format_args!("flags {status_flags:#06x}")),
+            "knock? supply? reset",
+        ),
+        SensorFault::Frozen => (
+            "output frozen:",
+            fixed("same value for 10 s"),
+            "power-cycle pendant",
+        ),
+        SensorFault::NotPresent { whoami } => (
+            "not an SCL3300:",
+            line(format_args!("WHOAMI {whoami:#06x}")),
+            "check the board",
+        ),
+        SensorFault::NotReady => ("start-up never ends", Text::new(), "power-cycle pendant"),
+        SensorFault::Bus => ("SPI bus error", Text::new(), "check the board"),
+    };
+    [
+        fixed("SENSOR FAULT"),
+        fixed(what),
+        detail,
+        fixed(todo),
+        fixed("retrying every 1 s"),
+        fixed("nothing is captured"),
     ]
 }
 
@@ -213,33 +334,19 @@ fn settle_line(screen: &CaptureScreen) -> Text {
     }
 }
 
-/// The notice of core (or a failed flash write, or the sensor's fault), else `hint`.
+/// The notice of core (or a failed flash write), else `hint`.
 fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
-    use zerocal_core::error::StageError;
-    use zerocal_core::procedure::Notice;
     if screen.store_failed {
         return fixed("! FLASH WRITE FAILED");
     }
     let Some(notice) = screen.notice else {
-        return line(format_args!("{hint}"));
+        return fixed(hint);
     };
     match notice {
         Notice::ReadingOutOfRange { axis, value_deg } => {
             line(format_args!("! {axis}={}\u{b0} > range", sgn(value_deg, 2)))
         }
-        Notice::SensorFault => match screen.fault {
-            Some(SensorFault::NotResponding) => fixed("! sensor: no answer"),
-            Some(SensorFault::NotPresent { whoami }) => {
-                line(format_args!("! wrong chip {whoami:#06x}"))
-            }
-            Some(SensorFault::ErrorStatus { status_flags }) => {
-                line(format_args!("! sensor flags {status_flags:#06x}"))
-            }
-            Some(SensorFault::NotReady) => fixed("! sensor not ready"),
-            Some(SensorFault::Bus) => fixed("! sensor SPI error"),
-            Some(SensorFault::FrameErrors) => fixed("! sensor: bad frames"),
-            None => fixed("! SENSOR FAULT"),
-        },
+        Notice::SensorFault => fixed("! sensor fault"),
         // Core undid the capture: the same step is to be taken again.
         Notice::StageRefused(error) => match error {
             StageError::ReadingOutOfRange {
@@ -267,7 +374,8 @@ fn result_lines(screen: &ResultScreen) -> [Text; 6] {
     let footer = if screen.store_failed {
         fixed("! FLASH WRITE FAILED")
     } else {
-        fixed("BACK undo OK restart")
+        // A brush of OK keeps the result: a new session needs OK held.
+        fixed("NEXT:page hold OK:new")
     };
     let summary = match &screen.fit {
         Ok(summary) => summary,
@@ -299,7 +407,7 @@ fn result_lines(screen: &ResultScreen) -> [Text; 6] {
                 Some((a, b)) => line(format_args!("tilt a{} b{}", sgn(a, 3), sgn(b, 3))),
                 None => fixed("tilt: no stage 1"),
             },
-            fixed("ctrl zero: -offset"),
+            footer,
         ],
         page => {
             let index = page - 2;
@@ -317,7 +425,7 @@ fn result_lines(screen: &ResultScreen) -> [Text; 6] {
                 b,
                 c,
                 d,
-                fixed("NEXT page OK restart"),
+                footer,
             ]
         }
     }
@@ -407,7 +515,7 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
         Refusal::NoOutcome => {
             return [
                 fixed("no outcome"),
-                fixed("OK: new session"),
+                fixed("hold OK: new session"),
                 Text::new(),
                 Text::new(),
             ]
@@ -491,13 +599,6 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
     }
 }
 
-/// Draws one line of text with its top-left corner at `top_left`.
-fn text(display: &mut Display, content: &str, top_left: Point, font: &MonoFont<'_>) {
-    let style = MonoTextStyle::new(font, BinaryColor::On);
-    // Drawing into the frame buffer cannot fail (its error type is Infallible).
-    let _ = TextDrawable::with_baseline(content, top_left, style, Baseline::Top).draw(display);
-}
-
 /// A number with a fixed count of decimals, formatted by integer arithmetic: core's
 /// float formatting would add ~8 KiB of flash (see `zerocal_core::decimal`).
 fn fx(value: impl Into<f64>, decimals: u8) -> Fixed {
@@ -507,4 +608,41 @@ fn fx(value: impl Into<f64>, decimals: u8) -> Fixed {
 /// As [`fx`], always with a sign.
 fn sgn(value: impl Into<f64>, decimals: u8) -> Fixed {
     Fixed::signed(value.into(), decimals)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::screen::Screen;
+
+    /// Every line of every fixed screen fits the 21 glyphs of the 128 px line.
+    #[test]
+    fn lines_fit_the_display() {
+        let screens = [
+            Screen::Starting,
+            Screen::StorageReset(ResetReason::OtherFormat(1)),
+            Screen::StorageReset(ResetReason::Unreadable),
+            Screen::StorageReset(ResetReason::ForeignBytes),
+        ];
+        for screen in &screens {
+            for text in lines(screen) {
+                assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
+            }
+        }
+        for fault in [
+            SensorFault::NotResponding,
+            SensorFault::FrameErrors,
+            SensorFault::ErrorStatus {
+                status_flags: 0x03ff,
+            },
+            SensorFault::Frozen,
+            SensorFault::NotPresent { whoami: 0xffff },
+            SensorFault::NotReady,
+            SensorFault::Bus,
+        ] {
+            for text in fault_lines(fault) {
+                assert!(text.chars().count() <= 21, "{text:?} of {fault:?}");
+            }
+        }
+    }
 }

@@ -1,0 +1,107 @@
+//! Everything the pendant's tasks share, in one value: each channel and signal with
+//! its sender and receiver, the session behind its mutex, and the counters the info
+//! screen and the link's `status` show.
+//!
+//! ```text
+//! sensor  ──sensor_reports──▶ procedure ──screen──▶ ui
+//! buttons ──button_events───▶ procedure ◀─▶ store (owned by the procedure)
+//! link    ──link_requests───▶ procedure ──link_replies──▶ link
+//! link    ──locks──▶ procedure (status, plan, export read the session under it)
+//! ```
+//!
+//! One value rather than `static`s, so that the desktop runner can power-cycle the
+//! pendant by dropping it and building a new one (the board makes it `'static` once).
+//! Signals hold only the newest value (a screen superseded by a newer one is worth
+//! nothing); channels queue (a press or a sample must not be lost to a busy task).
+
+use core::sync::atomic::AtomicU32;
+
+use embassy_sync::blocking_mutex::raw::CriticalSectionRawMutex;
+use embassy_sync::channel::Channel;
+use embassy_sync::mutex::Mutex;
+use embassy_sync::signal::Signal;
+use zerocal_core::plan::PoseList;
+use zerocal_core::procedure::{ProcedureConfig, ProcedureState};
+
+use crate::buttons::ButtonEvent;
+use crate::screen::Screen;
+use crate::sensor::SensorReport;
+
+/// The mutex kind of every channel: a critical section (the board's single core; the
+/// host's `critical-section/std`).
+pub type RawMutex = CriticalSectionRawMutex;
+
+/// The session and its configuration.
+pub struct Procedure {
+    /// The pendant's procedure settings ([`crate::config::procedure_config`]).
+    pub config: ProcedureConfig<f32>,
+    /// Everything the procedure remembers.
+    pub session: ProcedureState<f32>,
+}
+
+/// A change the USB host asks for.
+// The plan is the request's point; without a heap it travels by value, once (the
+// channel holds one).
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Debug, PartialEq)]
+pub enum LinkRequest {
+    /// `plan set` … `end`: the new plan.
+    SetPlan(PoseList<f32>),
+    /// `clear`.
+    Clear,
+}
+
+/// What became of a [`LinkRequest`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LinkReply {
+    /// Done and stored.
+    Done,
+    /// Core refused the plan: stage 2 has captures.
+    PlanLocked,
+    /// Core took it but the flash write failed.
+    StoreFailed,
+    /// The pendant is not ready (storage reset or restart screen pending).
+    NotReady,
+}
+
+/// The pendant's shared state.
+pub struct Shared {
+    /// The session. Writer: the procedure task (every step). Readers: the link task
+    /// (`status`, `plan`, `export`), which holds it for a whole export, so an export is
+    /// one consistent state and no capture (hence no flash write) happens during it.
+    pub procedure: Mutex<RawMutex, Procedure>,
+    /// Samples and sensor faults. Sender: the sensor task (20 Hz). Receiver: procedure.
+    pub sensor_reports: Channel<RawMutex, SensorReport, 8>,
+    /// Debounced presses, in order. Sender: the buttons task. Receiver: procedure.
+    pub button_events: Channel<RawMutex, ButtonEvent, 8>,
+    /// What the display should show now. Sender: procedure. Receiver: the UI task.
+    pub screen: Signal<RawMutex, Screen>,
+    /// Changes from the USB host, one at a time. Sender: link. Receiver: procedure.
+    pub link_requests: Channel<RawMutex, LinkRequest, 1>,
+    /// The answer to each [`Self::link_requests`] entry once stored. Sender:
+    /// procedure. Receiver: link.
+    pub link_replies: Channel<RawMutex, LinkReply, 1>,
+    /// Sensor samples refused (CRC, echo, status) since power-up. Writer: sensor.
+    pub dropped_frames: AtomicU32,
+    /// Display transfers that failed or timed out since power-up. Writer: UI.
+    pub display_faults: AtomicU32,
+}
+
+impl Shared {
+    /// Before the power-up restore: an empty session on `config`.
+    pub fn new(config: ProcedureConfig<f32>) -> Self {
+        Shared {
+            procedure: Mutex::new(Procedure {
+                config,
+                session: ProcedureState::new(PoseList::new(), None),
+            }),
+            sensor_reports: Channel::new(),
+            button_events: Channel::new(),
+            screen: Signal::new(),
+            link_requests: Channel::new(),
+            link_replies: Channel::new(),
+            dropped_frames: AtomicU32::new(0),
+            display_faults: AtomicU32::new(0),
+        }
+    }
+}

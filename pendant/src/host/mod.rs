@@ -1,0 +1,152 @@
+//! The pendant on the desktop: the same tasks as on the board, on a simulated clock
+//! ([`exec`]), with a simulated SCL3300 at the SPI-frame level on a simulated robot
+//! ([`world`], [`io`]), the SSD1306 as a frame buffer ([`panel`]), the USB port as byte
+//! pipes ([`io`]) and the F411's flash sectors ([`flash`]). [`operator`] presses the
+//! buttons and moves the robot as the screens ask; [`runner`] runs whole sessions,
+//! the power-cut campaign and the faults, for `cargo xtask pendant-sim` and the tests.
+
+pub mod exec;
+pub mod flash;
+pub mod io;
+pub mod operator;
+pub mod panel;
+pub mod runner;
+pub mod world;
+
+use std::cell::RefCell;
+use std::future::Future;
+use std::rc::Rc;
+
+use embassy_futures::join::join5;
+use embassy_futures::select::{select, Either};
+use embassy_time::Instant;
+use zerocal_core::plan::{Candidate, DEFAULT_POOL};
+use zerocal_core::procedure::pendant_default;
+
+use crate::channels::Shared;
+use crate::config::procedure_config;
+use crate::procedure::Boot;
+use crate::screen::RestartNote;
+use exec::Stop;
+use flash::{SimFlash, STORE_RANGE};
+use io::{ButtonLevels, HostButtons, HostLink, HostSpi, PendantRx, PendantTx};
+use panel::{HostPanel, PanelLog};
+use world::{World, WorldConfig};
+
+/// The pendant's default plan, as the firmware's build computes it: core's planner on
+/// the pendant's configuration.
+///
+/// # Errors
+/// The planner's refusal, as text.
+pub fn default_plan() -> Result<Vec<[f32; 6]>, String> {
+    let config = procedure_config();
+    let mut pool = vec![Candidate::<f32>::default(); DEFAULT_POOL];
+    pendant_default(&config, &mut pool)
+        .map(|plan| plan.to_vec())
+        .map_err(|e| format!("core's planner refused the default plan: {e:?}"))
+}
+
+/// Everything around the pendant that outlives a power cut: the world, the flash, the
+/// display's log, the buttons, the cable.
+pub struct Rig {
+    /// The robot, the pendant's place and the SCL3300.
+    pub world: Rc<RefCell<World>>,
+    /// The flash chip.
+    pub flash: SimFlash,
+    /// What the display showed.
+    pub panel: Rc<RefCell<PanelLog>>,
+    /// The buttons' levels.
+    pub buttons: Rc<ButtonLevels>,
+    /// The USB cable and its bytes.
+    pub link: HostLink,
+    /// The plan the pendant starts with, and the robot program's poses.
+    pub plan: Vec<[f32; 6]>,
+    /// The note the board hands the next boot (a panic's message).
+    pub restart: RefCell<Option<RestartNote>>,
+}
+
+impl Rig {
+    /// A rig with an erased flash.
+    ///
+    /// # Errors
+    /// The planner's refusal of the default plan.
+    pub fn new(world: WorldConfig, flash_seed: u64) -> Result<Rig, String> {
+        Ok(Rig {
+            world: Rc::new(RefCell::new(World::new(world))),
+            flash: SimFlash::new(flash_seed),
+            panel: Rc::new(RefCell::new(PanelLog::default())),
+            buttons: Rc::new(ButtonLevels::default()),
+            link: HostLink::default(),
+            plan: default_plan()?,
+            restart: RefCell::new(None),
+        })
+    }
+
+    /// The pendant's tasks, as the firmware spawns them.
+    async fn pendant(&self, shared: &Shared) -> ! {
+        let restart = self.restart.borrow_mut().take();
+        let (never, ..) = join5(
+            crate::procedure::run(
+                shared,
+                Boot {
+                    flash: self.flash.clone(),
+                    store_range: STORE_RANGE,
+                    default_plan: &self.plan,
+                    restart,
+                },
+            ),
+            crate::sensor::run(shared, HostSpi::new(self.world.clone())),
+            crate::buttons::run(shared, HostButtons::new(self.buttons.clone())),
+            crate::ui::run(shared, HostPanel::new(self.panel.clone())),
+            self.usb(shared),
+        )
+        .await;
+        never
+    }
+
+    /// The board's USB loop: serve while plugged, wait for the cable otherwise.
+    async fn usb(&self, shared: &Shared) -> ! {
+        loop {
+            if self.link.plugged.get() {
+                let _ = crate::link::serve(
+                    shared,
+                    &mut PendantRx(&self.link),
+                    &mut PendantTx(&self.link),
+                )
+                .await;
+            }
+            if !self.link.plugged.get() {
+                self.link.cable.wait().await;
+            }
+        }
+    }
+
+    /// Powers the pendant up and runs `script` beside it until the script finishes,
+    /// the power is cut or the simulated clock reaches `deadline`. What the display
+    /// shows goes dark first; the world, the flash and the cable stay as they are.
+    ///
+    /// # Errors
+    /// [`Stop`] when the script did not finish.
+    pub fn run<'s, S, F>(&'s self, deadline: Instant, script: S) -> Result<F::Output, Stop>
+    where
+        S: FnOnce(&'s Shared) -> F,
+        F: Future + 's,
+    {
+        // Leaked: the pendant's state lives as long as the board's `static` would, and
+        // the runner's few hundred boots leak a few MB at most.
+        let shared: &'s Shared = Box::leak(Box::new(Shared::new(procedure_config())));
+        self.panel.borrow_mut().shown = None;
+        self.link.to_pendant.clear();
+        self.link.to_host.clear();
+        let script = script(shared);
+        exec::run(
+            async {
+                match select(self.pendant(shared), script).await {
+                    Either::First(never) => never,
+                    Either::Second(output) => output,
+                }
+            },
+            deadline,
+        )
+    }
+}

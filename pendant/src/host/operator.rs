@@ -1,0 +1,221 @@
+//! The operator, scripted: reads the screen the pendant shows and does what it asks,
+//! as a person with the robot's teach pendant would. It acts on what is shown only, so
+//! after a power cut it simply carries on from the screen the pendant comes back with.
+//!
+//! Timing: a glance at the screen every [`LOOK_MS`]; a button held [`PRESS_MS`]; OK
+//! pressed once the robot and the pendant have been at rest for [`REST_BEFORE_OK_MS`]
+//! when the screen waits for it. The robot program holds the same plan as the pendant
+//! (both from `zerocal plan`), so it goes to the pose number the screen shows.
+
+use embassy_time::{Duration, Instant, Timer};
+use zerocal_core::model::JOINTS;
+
+use super::exec::now;
+use super::world::Place;
+use super::Rig;
+use crate::buttons::Button;
+use crate::screen::{Prompt, Screen};
+
+/// How often the operator looks at the screen (ms).
+pub const LOOK_MS: u64 = 100;
+
+/// How long a short press is held (ms).
+pub const PRESS_MS: u64 = 150;
+
+/// How long a long press is held (ms): past the pendant's 800 ms.
+pub const LONG_PRESS_MS: u64 = 1200;
+
+/// Rest before pressing OK on a screen that waits for it (ms).
+pub const REST_BEFORE_OK_MS: f64 = 1000.0;
+
+/// Why a script gave up.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ScriptError {
+    /// The pendant showed a screen the script does not expect.
+    Unexpected(String),
+    /// A screen did not come in time.
+    Timeout(String),
+}
+
+/// The simulated time (ms).
+pub fn t_ms() -> f64 {
+    now().as_micros() as f64 / 1000.0
+}
+
+/// Holds `button` for `ms`, then lets go.
+pub async fn press(rig: &Rig, button: Button, ms: u64) {
+    let mut held = [false; 3];
+    if let Some(i) = Button::ALL.iter().position(|b| *b == button) {
+        held[i] = true;
+    }
+    rig.buttons.set(held);
+    Timer::after(Duration::from_millis(ms)).await;
+    rig.buttons.set([false; 3]);
+    Timer::after(Duration::from_millis(LOOK_MS)).await;
+}
+
+/// Waits until the display shows a screen `accept` takes, looking every [`LOOK_MS`].
+///
+/// # Errors
+/// [`ScriptError::Timeout`] after `within`.
+pub async fn wait_for(
+    rig: &Rig,
+    what: &str,
+    within: Duration,
+    accept: impl Fn(&Screen) -> bool,
+) -> Result<Screen, ScriptError> {
+    let deadline = Instant::now() + within;
+    loop {
+        if let Some(screen) = rig.panel.borrow().shown.clone() {
+            if accept(&screen) {
+                return Ok(screen);
+            }
+        }
+        if Instant::now() > deadline {
+            let shown = rig.panel.borrow().shown.as_ref().map(Screen::kind);
+            return Err(ScriptError::Timeout(format!(
+                "{what} not shown within {} s (showing {shown:?})",
+                within.as_secs()
+            )));
+        }
+        Timer::after(Duration::from_millis(LOOK_MS)).await;
+    }
+}
+
+/// The joints of the stage-1 pose with axis 1 at its mark (0) or turned (π).
+fn stage1_pose(rig: &Rig, turned: bool) -> [f64; JOINTS] {
+    let mut q = rig.plan.first().map_or([0.0; JOINTS], |p| {
+        core::array::from_fn(|k| if k < 2 { f64::from(p[k]) } else { 0.0 })
+    });
+    if turned {
+        q[0] += core::f64::consts::PI;
+    }
+    q
+}
+
+/// What the screen asks of the world: where the pendant goes, where the robot goes,
+/// and whether OK is needed once both are there.
+fn wanted(rig: &Rig, prompt: &Prompt) -> Result<(Place, Option<[f64; JOINTS]>), ScriptError> {
+    Ok(match *prompt {
+        Prompt::Stage0First => (Place::Bench { heading_rad: 0.0 }, None),
+        Prompt::Stage0Second => (
+            Place::Bench {
+                heading_rad: core::f64::consts::PI,
+            },
+            None,
+        ),
+        Prompt::Stage1Before => (Place::UpperArm, Some(stage1_pose(rig, false))),
+        Prompt::Stage1After => (Place::UpperArm, Some(stage1_pose(rig, true))),
+        Prompt::Pose { number, .. } => {
+            let pose = rig
+                .plan
+                .get(number.wrapping_sub(1))
+                .ok_or_else(|| ScriptError::Unexpected(format!("pose {number} not in plan")))?;
+            (
+                Place::Flange,
+                Some(core::array::from_fn(|k| f64::from(pose[k]))),
+            )
+        }
+        Prompt::NoPose => return Err(ScriptError::Unexpected("no plan".into())),
+    })
+}
+
+/// Does what the screens ask until the result (or a refusal) is shown; returns it.
+///
+/// # Errors
+/// A fault screen, or no progress for `patience`.
+pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptError> {
+    let mut last_change = Instant::now();
+    let mut last_kind = None;
+    loop {
+        Timer::after(Duration::from_millis(LOOK_MS)).await;
+        let Some(screen) = rig.panel.borrow().shown.clone() else {
+            continue;
+        };
+        let progress = Some((screen.kind(), capture_count(&screen)));
+        if progress != last_kind {
+            last_kind = progress;
+            last_change = Instant::now();
+        } else if Instant::now() > last_change + patience {
+            return Err(ScriptError::Timeout(format!(
+                "stuck on {:?} for {} s",
+                screen.kind(),
+                patience.as_secs()
+            )));
+        }
+        match &screen {
+            Screen::Starting => {}
+            Screen::StorageReset(_) | Screen::Restarted(_) => {
+                press(rig, Button::Ok, PRESS_MS).await
+            }
+            Screen::Result(_) => return Ok(screen),
+            Screen::Capture(capture) => {
+                if let Some(fault) = capture.fault {
+                    return Err(ScriptError::Unexpected(format!("sensor fault {fault:?}")));
+                }
+                let (place, joints) = wanted(rig, &capture.prompt)?;
+                let t = t_ms();
+                let until = {
+                    let mut world = rig.world.borrow_mut();
+                    if world.place() != place {
+                        // Robot places: the robot stays where it is while the pendant is
+                        // clipped on; then it moves.
+                        Some(world.carry(t, place))
+                    } else {
+                        joints
+                            .filter(|q| world.target() != *q)
+                            .map(|q| world.move_joints(t, q))
+                    }
+                };
+                match until {
+                    Some(end_ms) => {
+                        let wait = (end_ms - t).max(0.0) as u64;
+                        Timer::after(Duration::from_millis(wait)).await;
+                    }
+                    None => {
+                        let rested = t - rig.world.borrow().rest_since_ms();
+                        if !capture.armed && rested > REST_BEFORE_OK_MS {
+                            press(rig, Button::Ok, PRESS_MS).await;
+                            // Give the capture its window before looking again.
+                            Timer::after(Duration::from_millis(500)).await;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Stage-2 captures a screen shows (0 elsewhere).
+pub fn capture_count(screen: &Screen) -> usize {
+    match screen {
+        Screen::Capture(c) => c.captured,
+        _ => 0,
+    }
+}
+
+/// Types `text` on the link and collects the answer until the pendant has been silent
+/// for `silence`.
+pub async fn command(rig: &Rig, text: &[u8], silence: Duration) -> Vec<u8> {
+    rig.link.to_pendant.write_all(text).await;
+    collect(rig, silence).await
+}
+
+/// Collects what the pendant sends until it has been silent for `silence`.
+pub async fn collect(rig: &Rig, silence: Duration) -> Vec<u8> {
+    let mut answer = Vec::new();
+    let mut buf = [0_u8; 256];
+    loop {
+        match embassy_futures::select::select(
+            rig.link.to_host.read(&mut buf),
+            Timer::after(silence),
+        )
+        .await
+        {
+            embassy_futures::select::Either::First(n) => {
+                answer.extend_from_slice(buf.get(..n).unwrap_or(&[]));
+            }
+            embassy_futures::select::Either::Second(()) => return answer,
+        }
+    }
+}

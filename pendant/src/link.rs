@@ -1,0 +1,445 @@
+//! The USB link's server: a person (or a script) types commands into a serial port.
+//! This module edits lines and moves bytes; parsing, plan upload and the text of
+//! `status`, `plan` and `export` are `zerocal-core`'s (`link`, `log`).
+//!
+//! Generic over an embedded-io-async reader and writer (the board's CDC-ACM halves, the
+//! desktop runner's pipes). An error from either means the host went away: [`serve`]
+//! returns and the board waits for the next connection. A write that the host does not
+//! take within [`WRITE_TIMEOUT`] counts as gone too, so an export never holds the
+//! session forever.
+//!
+//! - Lines end with CR, LF or CR LF; backspace and DEL edit. A line longer than
+//!   [`MAX_LINE`] is refused whole (`error: line too long`), however long it gets.
+//! - Bytes that are not UTF-8 give `error: not text`; nothing changes.
+//! - `export` holds the session for its whole length: one consistent state, and no
+//!   capture (so no flash write or erase) in the middle of it. A second export gives
+//!   the same bytes.
+//! - `live` streams until a key: CR, LF, Ctrl-C or ESC stop it and are used up; any
+//!   other key stops it and begins the next command line. The read in progress is
+//!   never dropped, so no key is lost.
+
+use core::fmt::Write as _;
+use core::pin::pin;
+use core::sync::atomic::Ordering;
+
+use embassy_futures::select::{select, Either};
+use embassy_time::{with_timeout, Duration, Ticker};
+use embedded_io_async::{Read, Write};
+use heapless::Vec;
+use zerocal_core::decimal::Fixed;
+use zerocal_core::link::{
+    parse_command, plan_line, status, Command, Line, PlanUpload, UploadStep, HELP,
+};
+use zerocal_core::log::export;
+
+use crate::channels::{LinkReply, LinkRequest, Shared};
+
+/// Longest command line; longer lines are refused whole. A plan row of six angles with
+/// every digit fits easily.
+pub const MAX_LINE: usize = 128;
+
+/// A host that takes no bytes for this long is gone.
+pub const WRITE_TIMEOUT: Duration = Duration::from_secs(2);
+
+/// `live` period: 10 Hz, half the sampling rate (a terminal shows no more).
+const LIVE_PERIOD: Duration = Duration::from_millis(100);
+
+/// The host went away (cable pulled, port closed, nobody reading).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Disconnected;
+
+/// Assembles typed bytes into lines.
+#[derive(Clone, Debug, Default)]
+pub struct LineEditor {
+    line: Vec<u8, MAX_LINE>,
+    /// The line outgrew [`MAX_LINE`]: refuse it at its end.
+    overflowed: bool,
+    /// The previous byte ended a line with CR: an LF right after it is the same end.
+    after_cr: bool,
+}
+
+/// A finished line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Edited {
+    /// The line's bytes, without its end.
+    Line(Vec<u8, MAX_LINE>),
+    /// The line was longer than [`MAX_LINE`].
+    TooLong,
+}
+
+impl LineEditor {
+    /// An empty line.
+    pub const fn new() -> Self {
+        LineEditor {
+            line: Vec::new(),
+            overflowed: false,
+            after_cr: false,
+        }
+    }
+
+    /// Takes one byte; returns the line when the byte ends one.
+    pub fn push(&mut self, byte: u8) -> Option<Edited> {
+        let after_cr = core::mem::replace(&mut self.after_cr, byte == b'\r');
+        match byte {
+            b'\n' if after_cr => None,
+            b'\r' | b'\n' => {
+                let line = core::mem::take(&mut self.line);
+                if core::mem::replace(&mut self.overflowed, false) {
+                    Some(Edited::TooLong)
+                } else {
+                    Some(Edited::Line(line))
+                }
+            }
+            0x08 | 0x7f => {
+                self.line.pop();
+                None
+            }
+            _ => {
+                if self.line.push(byte).is_err() {
+                    self.overflowed = true;
+                }
+                None
+            }
+        }
+    }
+}
+
+/// Serves one connection until the host goes away.
+pub async fn serve<R: Read, W: Write>(shared: &Shared, rx: &mut R, tx: &mut W) -> Disconnected {
+    let mut server = Server {
+        shared,
+        tx,
+        editor: LineEditor::new(),
+        upload: None,
+    };
+    let mut packet = [0_u8; 64];
+    let mut pending: Vec<u8, 64> = Vec::new();
+    loop {
+        if pending.is_empty() {
+            match rx.read(&mut packet).await {
+                Ok(0) | Err(_) => return Disconnected,
+                Ok(n) => {
+                    let _ = pending.extend_from_slice(packet.get(..n).unwrap_or(&[]));
+                }
+            }
+        }
+        let bytes = core::mem::take(&mut pending);
+        for (i, &byte) in bytes.iter().enumerate() {
+            let Some(edited) = server.editor.push(byte) else {
+                continue;
+            };
+            match server.line(edited).await {
+                Ok(Next::Line) => {}
+                Ok(Next::Live) => {
+                    // The rest of this packet is typed during `live`: it stops it.
+                    let rest = bytes.get(i + 1..).unwrap_or(&[]);
+                    match server.live(rx, rest).await {
+                        Ok(left) => {
+                            // What follows the stop key is the next command's start.
+                            let _ = pending.extend_from_slice(&left);
+                        }
+                        Err(gone) => return gone,
+                    }
+                    break;
+                }
+                Err(gone) => return gone,
+            }
+        }
+    }
+}
+
+/// What a line asks of the read loop.
+enum Next {
+    /// Read on.
+    Line,
+    /// Stream readings until a key.
+    Live,
+}
+
+struct Server<'a, W> {
+    shared: &'a Shared,
+    tx: &'a mut W,
+    editor: LineEditor,
+    /// `Some` between `plan set` and `end` (or an error).
+    upload: Option<PlanUpload<f32>>,
+}
+
+impl<W: Write> Server<'_, W> {
+    async fn write_line(&mut self, text: &[u8]) -> Result<(), Disconnected> {
+        let tx = &mut *self.tx;
+        let write = async {
+            tx.write_all(text).await?;
+            tx.write_all(b"\r\n").await?;
+            tx.flush().await
+        };
+        match with_timeout(WRITE_TIMEOUT, write).await {
+            Ok(Ok(())) => Ok(()),
+            _ => Err(Disconnected),
+        }
+    }
+
+    async fn write_fmt(&mut self, args: core::fmt::Arguments<'_>) -> Result<(), Disconnected> {
+        let mut line = Line::new();
+        if line.write_fmt(args).is_err() {
+            return self.write_line(b"error: line too long").await;
+        }
+        self.write_line(line.as_bytes()).await
+    }
+
+    async fn line(&mut self, edited: Edited) -> Result<Next, Disconnected> {
+        let line = match edited {
+            Edited::TooLong => {
+                // An over-long row ends an upload like any bad row.
+                self.upload = None;
+                self.write_line(b"error: line too long; nothing changed")
+                    .await?;
+                return Ok(Next::Line);
+            }
+            Edited::Line(line) => line,
+        };
+        let Ok(text) = core::str::from_utf8(&line) else {
+            self.upload = None;
+            self.write_line(b"error: not text; nothing changed").await?;
+            return Ok(Next::Line);
+        };
+        self.answer(text).await
+    }
+
+    /// Answers one line: a plan row while an upload is open, else a command.
+    async fn answer(&mut self, line: &str) -> Result<Next, Disconnected> {
+        if let Some(rows) = self.upload.as_mut() {
+            match rows.feed(line) {
+                Ok(UploadStep::More) => {}
+                Ok(UploadStep::Done(plan)) => {
+                    self.upload = None;
+                    let poses = plan.len();
+                    match self.request(LinkRequest::SetPlan(plan)).await {
+                        LinkReply::Done => {
+                            self.write_fmt(format_args!("ok: plan set, {poses} poses"))
+                                .await?
+                        }
+                        LinkReply::PlanLocked => {
+                            self.write_line(
+                                b"error: plan locked by stage-2 captures; 'clear' first",
+                            )
+                            .await?
+                        }
+                        LinkReply::StoreFailed => {
+                            self.write_line(b"error: plan set but the flash write failed")
+                                .await?
+                        }
+                        LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                    }
+                }
+                Err(error) => {
+                    self.upload = None;
+                    self.write_fmt(format_args!("error: {error}")).await?;
+                }
+            }
+            return Ok(Next::Line);
+        }
+        if line.trim().is_empty() {
+            return Ok(Next::Line);
+        }
+        let command = match parse_command(line) {
+            Ok(command) => command,
+            Err(error) => {
+                self.write_fmt(format_args!("error: {error}")).await?;
+                return Ok(Next::Line);
+            }
+        };
+        match command {
+            Command::Help => {
+                for help in HELP {
+                    self.write_line(help.as_bytes()).await?;
+                }
+            }
+            Command::Status => self.status().await?,
+            Command::Plan => {
+                let procedure = self.shared.procedure.lock().await;
+                for i in 0.. {
+                    match plan_line(procedure.session.plan(), i) {
+                        None => break,
+                        Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
+                        Some(Err(_)) => self.write_line(b"error: line too long").await?,
+                    }
+                }
+            }
+            Command::PlanSet => {
+                let joints = {
+                    let procedure = self.shared.procedure.lock().await;
+                    let q = procedure.config.stage1_joints_rad;
+                    [q[0], q[1]]
+                };
+                self.upload = Some(PlanUpload::new(joints));
+                self.write_line(
+                    b"ok: send poses as j3,j4,j5,j6 in degrees, one a line, then 'end'",
+                )
+                .await?;
+            }
+            Command::Export => self.export().await?,
+            Command::Live => return Ok(Next::Live),
+            Command::Clear => match self.request(LinkRequest::Clear).await {
+                LinkReply::Done | LinkReply::PlanLocked => {
+                    self.write_line(b"ok: session cleared (bias and plan kept)")
+                        .await?
+                }
+                LinkReply::StoreFailed => {
+                    self.write_line(b"error: cleared but the flash write failed")
+                        .await?
+                }
+                LinkReply::NotReady => self.write_line(NOT_READY).await?,
+            },
+        }
+        Ok(Next::Line)
+    }
+
+    /// Sends a change to the procedure task and waits until it is stored.
+    async fn request(&mut self, request: LinkRequest) -> LinkReply {
+        self.shared.link_requests.send(request).await;
+        self.shared.link_replies.receive().await
+    }
+
+    /// Core's status lines, then the pendant's own.
+    async fn status(&mut self) -> Result<(), Disconnected> {
+        {
+            let procedure = self.shared.procedure.lock().await;
+            for i in 0.. {
+                match status(&procedure.session, i) {
+                    None => break,
+                    Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
+                    Some(Err(_)) => self.write_line(b"error: line too long").await?,
+                }
+            }
+        }
+        let shared = self.shared;
+        self.write_fmt(format_args!(
+            "pendant: sensor frames dropped {}, display faults {}",
+            shared.dropped_frames.load(Ordering::Relaxed),
+            shared.display_faults.load(Ordering::Relaxed),
+        ))
+        .await
+    }
+
+    /// Streams `export`, the session held for the whole of it.
+    async fn export(&mut self) -> Result<(), Disconnected> {
+        let procedure = self.shared.procedure.lock().await;
+        for item in export(&procedure.session, &procedure.config) {
+            match item {
+                Ok(text) => self.write_line(text.as_bytes()).await?,
+                Err(_) => self.write_line(b"error: line too long").await?,
+            }
+        }
+        Ok(())
+    }
+
+    /// Streams `x_deg,y_deg` until a key (in `typed`, or read); returns the bytes after
+    /// the stop key, which begin the next line.
+    async fn live<R: Read>(
+        &mut self,
+        rx: &mut R,
+        typed: &[u8],
+    ) -> Result<Vec<u8, 64>, Disconnected> {
+        if let Some(left) = stop_key(typed) {
+            return Ok(left);
+        }
+        let mut ticker = Ticker::every(LIVE_PERIOD);
+        let mut packet = [0_u8; 64];
+        let mut had_reading = true;
+        let received = {
+            // One read for the whole stream, never dropped half-way: a key typed
+            // between two ticks is not lost.
+            let mut read = pin!(rx.read(&mut packet));
+            loop {
+                match select(read.as_mut(), ticker.next()).await {
+                    Either::First(Ok(n)) if n > 0 => break n,
+                    Either::First(_) => return Err(Disconnected),
+                    Either::Second(()) => {
+                        let reading = self.shared.procedure.lock().await.session.view().live;
+                        match reading {
+                            Some(tilt) => {
+                                let (x_deg, y_deg) = tilt.to_deg();
+                                // Integer formatting: core's float formatting costs
+                                // ~8 KiB of flash.
+                                let x = Fixed::signed(x_deg.into(), 4);
+                                let y = Fixed::signed(y_deg.into(), 4);
+                                self.write_fmt(format_args!("{x},{y}")).await?;
+                                had_reading = true;
+                            }
+                            None if had_reading => {
+                                self.write_line(b"# no reading").await?;
+                                had_reading = false;
+                            }
+                            None => {}
+                        }
+                    }
+                }
+            }
+        };
+        stop_key(packet.get(..received).unwrap_or(&[])).ok_or(Disconnected)
+    }
+}
+
+/// The bytes typed during `live`, if any: the stop key used up (CR, LF, Ctrl-C, ESC)
+/// or kept (anything else), and what follows it.
+fn stop_key(typed: &[u8]) -> Option<Vec<u8, 64>> {
+    let (&first, rest) = typed.split_first()?;
+    let keep = if matches!(first, b'\r' | b'\n' | 0x03 | 0x1b) {
+        // A CR LF pair is one key.
+        match (first, rest.split_first()) {
+            (b'\r', Some((b'\n', after))) => after,
+            _ => rest,
+        }
+    } else {
+        typed
+    };
+    let mut left = Vec::new();
+    let _ = left.extend_from_slice(keep.get(..keep.len().min(64)).unwrap_or(&[]));
+    Some(left)
+}
+
+/// The answer while the storage reset or restart screen waits for OK.
+const NOT_READY: &[u8] = b"error: press OK on the pendant first";
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn feed(editor: &mut LineEditor, bytes: &[u8]) -> std::vec::Vec<Edited> {
+        bytes.iter().filter_map(|b| editor.push(*b)).collect()
+    }
+
+    #[test]
+    fn line_ends_and_editing() {
+        let mut e = LineEditor::new();
+        let lines = feed(&mut e, b"stat\x08\x08atus\r\nplan\nhelp\r\r");
+        let text: std::vec::Vec<_> = lines
+            .iter()
+            .map(|l| match l {
+                Edited::Line(b) => std::string::String::from_utf8(b.to_vec()).unwrap(),
+                Edited::TooLong => "TOO LONG".into(),
+            })
+            .collect();
+        assert_eq!(text, ["status", "plan", "help", ""]);
+    }
+
+    #[test]
+    fn an_over_long_line_is_refused_whole_and_the_next_is_fine() {
+        let mut e = LineEditor::new();
+        let mut bytes = std::vec![b'x'; 10 * MAX_LINE];
+        bytes.extend_from_slice(b"\nstatus\n");
+        let lines = feed(&mut e, &bytes);
+        assert_eq!(lines.len(), 2);
+        assert_eq!(lines[0], Edited::TooLong);
+        assert_eq!(lines[1], Edited::Line(Vec::from_slice(b"status").unwrap()));
+    }
+
+    #[test]
+    fn the_stop_key_of_live_is_used_up_or_kept() {
+        assert_eq!(stop_key(b""), None);
+        assert_eq!(stop_key(b"\r\nstatus").unwrap(), b"status"[..]);
+        assert_eq!(stop_key(b"\x03").unwrap(), b""[..]);
+        // Any other key stops live and is the first letter of the next command.
+        assert_eq!(stop_key(b"status\r").unwrap(), b"status\r"[..]);
+    }
+}

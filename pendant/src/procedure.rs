@@ -1,0 +1,253 @@
+//! The procedure task: `zerocal-core`'s calibration procedure, wired to the pendant. It
+//! turns sensor reports, button presses and link requests into core `Event`s, calls
+//! `step`, writes the records core asks for to the store, and only then publishes the
+//! new [`Screen`]: whatever the operator has seen survives a power cut.
+//!
+//! No procedure logic lives here: when to capture, what BACK undoes, what a plan may
+//! replace, the fit and its verdict are core's. This task adds what only a pendant has:
+//! the power-up (store, storage reset, the restart note), which press means what on
+//! which screen, the info screen, the result's pages, and the sensor's and store's
+//! faults on the screen.
+
+use core::ops::Range;
+
+use embassy_futures::select::{select3, Either3};
+use embassy_time::Instant;
+use embedded_storage_async::nor_flash::NorFlash;
+use zerocal_core::model::Tilt;
+use zerocal_core::plan::PoseList;
+use zerocal_core::procedure::{step, Event, Notice, Phase, ProcedureState};
+use zerocal_core::stillness::Stillness;
+
+use crate::buttons::{Button, ButtonEvent, Press};
+use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
+use crate::config::STILL_MOVING_MS;
+use crate::screen::{Extras, RestartNote, Screen};
+use crate::sensor::SensorReport;
+use crate::store::{Restored, Store};
+
+/// What the board hands the procedure at power-up.
+pub struct Boot<'a, F> {
+    /// The flash holding the store.
+    pub flash: F,
+    /// The store's range in it.
+    pub store_range: Range<u32>,
+    /// The stage-2 plan to use when none is stored (θ1..θ6, rad).
+    pub default_plan: &'a [[f32; 6]],
+    /// Why the board restarted, if a panic or the watchdog did it.
+    pub restart: Option<RestartNote>,
+}
+
+/// The presentation state this task keeps beside core's session.
+#[derive(Clone, Copy, Debug, Default)]
+struct Presentation {
+    extras: Extras,
+    /// Since when (ms) the armed pendant has not been still.
+    unsettled_since_ms: Option<u64>,
+    /// The last sample's stillness was `Moving`: the next `Moving` is no news.
+    was_moving: bool,
+}
+
+/// Runs forever.
+pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
+    shared.screen.signal(Screen::Starting);
+    let mut store = Store::new(boot.flash, boot.store_range).ok();
+    let mut presentation = Presentation::default();
+    let mut reset = None;
+    {
+        let mut procedure = shared.procedure.lock().await;
+        let Procedure { config, session } = &mut *procedure;
+        match store.as_mut() {
+            Some(s) => match restore(s, config, session) {
+                Ok(()) => {}
+                Err(reason) => reset = Some(reason),
+            },
+            None => presentation.extras.store_failed = true,
+        }
+    }
+    if let (Some(reason), Some(s)) = (reset, store.as_mut()) {
+        shared.screen.signal(Screen::StorageReset(reason));
+        wait_for_ok(shared).await;
+        presentation.extras.store_failed = s.erase().await.is_err();
+    }
+    {
+        let mut procedure = shared.procedure.lock().await;
+        let Procedure { config, session } = &mut *procedure;
+        if session.plan().is_empty() {
+            // Through core, like an upload: it decides and lists the records to store.
+            if let Ok(plan) = PoseList::from_slice(boot.default_plan) {
+                let output = step(config, session, Event::SetPlan(plan));
+                if !persist(&mut store, &output.persist).await {
+                    presentation.extras.store_failed = true;
+                }
+            }
+        }
+    }
+    if let Some(note) = boot.restart {
+        shared.screen.signal(Screen::Restarted(note));
+        wait_for_ok(shared).await;
+    }
+    publish(shared, &*shared.procedure.lock().await, &presentation);
+
+    loop {
+        let input = select3(
+            shared.sensor_reports.receive(),
+            shared.button_events.receive(),
+            shared.link_requests.receive(),
+        )
+        .await;
+        let from_link = matches!(input, Either3::Third(_));
+        let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
+        let mut procedure = shared.procedure.lock().await;
+        let Procedure { config, session } = &mut *procedure;
+        let event = match input {
+            Either3::First(SensorReport::Reading {
+                t_ms,
+                tilt,
+                temperature_c,
+            }) => {
+                presentation.extras.fault = None;
+                Some(Event::Sample {
+                    t_ms,
+                    reading: Tilt::new(tilt.x_rad, tilt.y_rad),
+                    temperature_c: Some(temperature_c),
+                })
+            }
+            Either3::First(SensorReport::Fault(fault)) => {
+                presentation.extras.fault = Some(fault);
+                Some(Event::SensorFault)
+            }
+            Either3::Second(press) => on_press(&mut presentation, session.phase(), press),
+            Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
+            Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
+        };
+        let phase_before = session.phase();
+        let mut stored = true;
+        if let Some(event) = event {
+            let output = step(config, session, event);
+            if !output.persist.is_empty() {
+                stored = persist(&mut store, &output.persist).await;
+                presentation.extras.store_failed = !stored;
+            }
+        }
+        let phase = session.phase();
+        if phase != Phase::Done || phase_before != Phase::Done {
+            presentation.extras.result_page = 0;
+        }
+        if from_link {
+            let reply = if !stored {
+                LinkReply::StoreFailed
+            } else if session.view().notice == Some(Notice::PlanLocked) {
+                LinkReply::PlanLocked
+            } else {
+                LinkReply::Done
+            };
+            shared.link_replies.send(reply).await;
+        }
+        if sampled {
+            let moving = watch_stillness(&mut presentation, session);
+            // The robot is on its way to the next pose (or the session is over): the
+            // moment for a page change and its erase, if one is due.
+            if moving {
+                if let Some(s) = store.as_mut() {
+                    if s.make_room_when_idle().await.is_err() {
+                        presentation.extras.store_failed = true;
+                    }
+                }
+            }
+        }
+        publish(shared, &procedure, &presentation);
+    }
+}
+
+/// Reads the store into `session`. Driven to completion on the spot rather than
+/// awaited: reading flash is a memory copy that never waits, and this keeps the
+/// record table (~4.5 KiB) on the stack at power-up instead of in the task's state for
+/// good. Only a fresh store's first write (its marker) waits for the flash, briefly.
+fn restore<F: NorFlash>(
+    store: &mut Store<F>,
+    config: &zerocal_core::procedure::ProcedureConfig<f32>,
+    session: &mut ProcedureState<f32>,
+) -> Result<(), crate::store::ResetReason> {
+    let mut restored = Restored::default();
+    let opened = embassy_futures::block_on(store.open(&mut restored));
+    // A store to be reset restores nothing: the session starts afresh.
+    *session = ProcedureState::restore(config, restored.records());
+    opened
+}
+
+/// Waits for a short or long OK, dropping everything else (answering the link).
+async fn wait_for_ok(shared: &Shared) {
+    loop {
+        match select3(
+            shared.button_events.receive(),
+            shared.link_requests.receive(),
+            shared.sensor_reports.receive(),
+        )
+        .await
+        {
+            Either3::First(ButtonEvent {
+                button: Button::Ok, ..
+            }) => return,
+            Either3::Second(_) => shared.link_replies.send(LinkReply::NotReady).await,
+            Either3::First(_) | Either3::Third(_) => {}
+        }
+    }
+}
+
+/// What a press means on the screen shown: core's event, or a change of presentation.
+fn on_press(p: &mut Presentation, phase: Phase, press: ButtonEvent) -> Option<Event<f32>> {
+    let ButtonEvent { button, press } = press;
+    match (button, press, phase) {
+        // The result stays until OK is held: a brush of OK must not lose it.
+        (Button::Ok, Press::Short, Phase::Done) => None,
+        (Button::Ok, Press::Long, Phase::Done) => Some(Event::Ok),
+        (Button::Next, Press::Short | Press::Repeat, Phase::Done) => {
+            p.extras.result_page = p.extras.result_page.wrapping_add(1);
+            None
+        }
+        (Button::Ok, _, _) => Some(Event::Ok),
+        (Button::Back, _, _) => Some(Event::Back),
+        (Button::Next, Press::Short, _) => Some(Event::Next),
+        // A held NEXT must not skip pose after pose.
+        (Button::Next, _, _) => None,
+    }
+}
+
+/// Tracks how long an armed pendant has not been still; returns whether the reading
+/// has just started moving (the robot left its pose).
+fn watch_stillness(p: &mut Presentation, session: &ProcedureState<f32>) -> bool {
+    let view = session.view();
+    let now_ms = Instant::now().as_millis();
+    let unsettled =
+        view.phase.captures() && view.armed && !matches!(view.stillness, Stillness::Still { .. });
+    if unsettled {
+        let since = *p.unsettled_since_ms.get_or_insert(now_ms);
+        p.extras.still_moving = now_ms.saturating_sub(since) > STILL_MOVING_MS;
+    } else {
+        p.unsettled_since_ms = None;
+        p.extras.still_moving = false;
+    }
+    let moving = matches!(view.stillness, Stillness::Moving) || view.phase == Phase::Done;
+    let started = moving && !p.was_moving;
+    p.was_moving = moving;
+    started
+}
+
+/// Writes `records`; false if the store is missing or a write failed.
+async fn persist<F: NorFlash>(
+    store: &mut Option<Store<F>>,
+    records: &[zerocal_core::procedure::Record<f32>],
+) -> bool {
+    match store {
+        Some(store) => store.write(records).await.is_ok(),
+        None => false,
+    }
+}
+
+/// Sends the screen for the session as it is now.
+fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
+    shared
+        .screen
+        .signal(Screen::from_view(&procedure.session.view(), p.extras));
+}

@@ -1,0 +1,451 @@
+//! What the display shows, as a value: the seam between the procedure task, which
+//! builds a [`Screen`] from `zerocal-core`'s `View` of the session, and the UI task,
+//! which only draws it ([`crate::draw`]). Nothing here touches hardware or decides
+//! anything procedural: every field is a copy of what core says, converted to degrees,
+//! plus the pendant's own state (sensor faults, the store, the last restart).
+//!
+//! A `Screen` owns its data (`View` borrows the session), so it can travel through a
+//! `Signal`. [`Screen::kind`] names each distinct screen: the host runner writes one
+//! picture per kind, and the README's gallery is those pictures.
+
+use zerocal_core::model::WRIST_JOINTS;
+use zerocal_core::procedure::{Notice, Outcome, Phase, View};
+use zerocal_core::real::rad_to_deg;
+use zerocal_core::report::{Warning, MAX_WARNINGS};
+use zerocal_core::session::SessionError;
+use zerocal_core::stillness::Stillness;
+
+use crate::sensor::SensorFault;
+use crate::store::ResetReason;
+
+/// A whole screen's content.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Screen {
+    /// Power-up: the store is being read.
+    Starting,
+    /// The store held something this firmware cannot read: OK erases it.
+    StorageReset(ResetReason),
+    /// The pendant restarted after a fault (panic or watchdog): what it was.
+    Restarted(RestartNote),
+    /// Stages 0-2: what to do, the live reading and whether it will be captured.
+    Capture(CaptureScreen),
+    /// The session's result, one page at a time (NEXT turns the page).
+    Result(ResultScreen),
+}
+
+/// Why the pendant restarted, kept across the reset by the board.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RestartNote {
+    /// What stopped it: `panic` or `watchdog`.
+    pub cause: RestartCause,
+    /// The panic's location and message, cut to fit.
+    pub message: heapless::String<64>,
+}
+
+/// What reset the pendant.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RestartCause {
+    /// A panic: the release build resets instead of halting.
+    Panic,
+    /// The independent watchdog: the executor stopped running.
+    Watchdog,
+}
+
+/// Why the result screen shows no numbers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Refusal {
+    /// The session solver's refusal.
+    Session(SessionError),
+    /// Phase `Done` without an outcome (core never does this).
+    NoOutcome,
+}
+
+/// The step a capture screen prompts for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Prompt {
+    /// Stage 0, pendant on a bench: first reading.
+    Stage0First,
+    /// Stage 0: pendant turned 180° on the same spot.
+    Stage0Second,
+    /// Stage 1, pendant on the upper arm, axis 1 at its mark.
+    Stage1Before,
+    /// Stage 1: axis 1 turned by 180°.
+    Stage1After,
+    /// Stage 2: the pose to go to.
+    Pose {
+        /// 1-based pose number.
+        number: usize,
+        /// Poses in the plan.
+        of: usize,
+        /// θ3..θ6 targets (deg).
+        joints_deg: [f32; WRIST_JOINTS],
+    },
+    /// Stage 2 without a pose to take (no plan).
+    NoPose,
+}
+
+/// How still the pendant is, as the stillness filter says.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Settle {
+    /// The reading moves more than the threshold.
+    Moving,
+    /// Still so far, for this share of the window.
+    Settling(u8),
+    /// Still for the whole window.
+    Still,
+}
+
+/// A screen of stages 0-2.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaptureScreen {
+    /// What to do.
+    pub prompt: Prompt,
+    /// Latest raw reading (x, y) in degrees; `None` without a sensor.
+    pub live_deg: Option<(f32, f32)>,
+    /// Stillness of the current window.
+    pub settle: Settle,
+    /// Whether the next still window is captured (else OK or moving arms it).
+    pub armed: bool,
+    /// Stage-2 captures so far.
+    pub captured: usize,
+    /// What core wants the operator to see.
+    pub notice: Option<Notice>,
+    /// The sensor task's reason when there is no reading.
+    pub fault: Option<SensorFault>,
+    /// Armed but not still for longer than [`crate::config::STILL_MOVING_MS`].
+    pub still_moving: bool,
+    /// The last flash write failed: what is shown may not survive a power cut.
+    pub store_failed: bool,
+}
+
+/// One joint's result (deg).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Offset {
+    /// Δθ = true − commanded.
+    pub value_deg: f32,
+    /// Its 1σ.
+    pub sigma_deg: f32,
+}
+
+/// A fit's numbers, in degrees.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FitSummary {
+    /// Δθ2 from stage 1.
+    pub j2: Option<Offset>,
+    /// Δθ3..Δθ6.
+    pub wrist: [Offset; WRIST_JOINTS],
+    /// Base tilt α, β from stage 1.
+    pub base_tilt_deg: Option<(f32, f32)>,
+    /// Residual RMS.
+    pub residual_rms_deg: f32,
+    /// Poses used.
+    pub poses: usize,
+    /// Iterations.
+    pub iterations: u32,
+    /// Condition number of the Jacobian.
+    pub condition_number: f32,
+    /// What to distrust (empty: PASS).
+    pub warnings: heapless::Vec<Warning, MAX_WARNINGS>,
+}
+
+/// The result screen.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ResultScreen {
+    /// Page shown, already within `0..pages()`.
+    pub page: usize,
+    /// The numbers, or why there are none.
+    pub fit: Result<FitSummary, Refusal>,
+    /// The last flash write failed.
+    pub store_failed: bool,
+}
+
+impl ResultScreen {
+    /// Pages: offsets, details, one per warning; a refusal has one.
+    pub fn pages(fit: &Result<FitSummary, Refusal>) -> usize {
+        match fit {
+            Ok(summary) => 2 + summary.warnings.len(),
+            Err(_) => 1,
+        }
+    }
+}
+
+/// What the pendant adds to core's view: presentation and the hardware's own state.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Extras {
+    /// The result page the operator turned to (wraps).
+    pub result_page: usize,
+    /// The sensor task's last fault (cleared by the next reading).
+    pub fault: Option<SensorFault>,
+    /// Armed and not still for too long.
+    pub still_moving: bool,
+    /// The last flash write failed.
+    pub store_failed: bool,
+}
+
+/// Each distinct screen, by name: the gallery has one picture of each.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum ScreenKind {
+    /// [`Screen::Starting`].
+    Boot,
+    /// [`Screen::StorageReset`].
+    StorageReset,
+    /// [`Screen::Restarted`].
+    Restarted,
+    /// Stage 0, first reading.
+    Stage0Bench,
+    /// Stage 0, after the half turn.
+    Stage0Turned,
+    /// Stage 1, axis 1 at its mark.
+    Stage1Arm,
+    /// Stage 1, axis 1 turned.
+    Stage1Turned,
+    /// A stage-2 pose.
+    Pose,
+    /// Stage 2 without a plan.
+    NoPlan,
+    /// The sensor does not answer.
+    SensorAbsent,
+    /// Frames keep failing their CRC or echo.
+    SensorBadFrames,
+    /// The sensor reports an error status.
+    SensorError,
+    /// The sensor's output stopped changing.
+    SensorFrozen,
+    /// Another chip, or a sensor that never finishes starting.
+    SensorOther,
+    /// The still reading is outside the sensor's ±10° range.
+    OutOfRange,
+    /// Armed but the robot does not come to rest.
+    StillMoving,
+    /// Stage 0 or 1 refused its readings.
+    StageRefused,
+    /// Result page 1: the offsets.
+    ResultOffsets,
+    /// Result page 2: fit details.
+    ResultDetails,
+    /// A result warning page.
+    ResultWarning,
+    /// No result, and why.
+    NoResult,
+}
+
+impl ScreenKind {
+    /// A short file-name-friendly name.
+    pub fn name(self) -> &'static str {
+        match self {
+            ScreenKind::Boot => "boot",
+            ScreenKind::StorageReset => "storage-reset",
+            ScreenKind::Restarted => "restarted",
+            ScreenKind::Stage0Bench => "stage0-bench",
+            ScreenKind::Stage0Turned => "stage0-turned",
+            ScreenKind::Stage1Arm => "stage1-arm",
+            ScreenKind::Stage1Turned => "stage1-turned",
+            ScreenKind::Pose => "pose",
+            ScreenKind::NoPlan => "no-plan",
+            ScreenKind::SensorAbsent => "sensor-absent",
+            ScreenKind::SensorBadFrames => "sensor-bad-frames",
+            ScreenKind::SensorError => "sensor-error",
+            ScreenKind::SensorFrozen => "sensor-frozen",
+            ScreenKind::SensorOther => "sensor-other",
+            ScreenKind::OutOfRange => "out-of-range",
+            ScreenKind::StillMoving => "still-moving",
+            ScreenKind::StageRefused => "stage-refused",
+            ScreenKind::ResultOffsets => "result-offsets",
+            ScreenKind::ResultDetails => "result-details",
+            ScreenKind::ResultWarning => "result-warning",
+            ScreenKind::NoResult => "no-result",
+        }
+    }
+
+    /// What the operator does on this screen: one line of the README's gallery.
+    pub fn operator_does(self) -> &'static str {
+        match self {
+            ScreenKind::Boot => "nothing: the pendant reads its store (well under a second)",
+            ScreenKind::StorageReset => {
+                "reads why the store is unusable, then presses OK to erase it and start afresh"
+            }
+            ScreenKind::Restarted => {
+                "notes the fault (report it with the message), then presses OK to resume the session"
+            }
+            ScreenKind::Stage0Bench => {
+                "puts the pendant on a stable bench and lets go (NEXT skips stage 0)"
+            }
+            ScreenKind::Stage0Turned => {
+                "turns the pendant 180° on the same spot, lets go, then presses OK"
+            }
+            ScreenKind::Stage1Arm => {
+                "clips the pendant to the upper arm, x along joint 2, axis 1 at its mark; lets it settle"
+            }
+            ScreenKind::Stage1Turned => {
+                "turns axis 1 by 180°, all else locked, then presses OK; capture follows on stillness"
+            }
+            ScreenKind::Pose => {
+                "clips the pendant to the flange and jogs j3-j6 to the targets shown; capture is automatic"
+            }
+            ScreenKind::NoPlan => "uploads a plan over USB (`plan set`) or presses BACK",
+            ScreenKind::SensorAbsent => {
+                "checks the sensor cable and its 3.3 V; the pendant retries every second"
+            }
+            ScreenKind::SensorBadFrames => {
+                "checks the sensor cable (shielding, length); corrupted frames are dropped, never averaged"
+            }
+            ScreenKind::SensorError => {
+                "keeps the pendant away from knocks and checks the supply; the sensor is restarted"
+            }
+            ScreenKind::SensorFrozen => {
+                "power-cycles the pendant: the sensor's output stopped changing"
+            }
+            ScreenKind::SensorOther => "checks that the board carries an SCL3300",
+            ScreenKind::OutOfRange => {
+                "moves the robot so both readings are within the sensor's ±10° range"
+            }
+            ScreenKind::StillMoving => {
+                "checks that the robot has stopped (brakes, program finished); the capture waits"
+            }
+            ScreenKind::StageRefused => "redoes the step: the two readings did not agree",
+            ScreenKind::ResultOffsets => {
+                "enters minus each offset on the controller; NEXT for details, hold OK for a new session"
+            }
+            ScreenKind::ResultDetails => "checks residual and conditioning; NEXT for warnings",
+            ScreenKind::ResultWarning => "reads what to distrust before entering the offsets",
+            ScreenKind::NoResult => "reads why, then BACK to retake poses",
+        }
+    }
+}
+
+impl Screen {
+    /// Which distinct screen this is.
+    pub fn kind(&self) -> ScreenKind {
+        match self {
+            Screen::Starting => ScreenKind::Boot,
+            Screen::StorageReset(_) => ScreenKind::StorageReset,
+            Screen::Restarted(_) => ScreenKind::Restarted,
+            Screen::Result(result) => match (&result.fit, result.page) {
+                (Err(_), _) => ScreenKind::NoResult,
+                (Ok(_), 0) => ScreenKind::ResultOffsets,
+                (Ok(_), 1) => ScreenKind::ResultDetails,
+                (Ok(_), _) => ScreenKind::ResultWarning,
+            },
+            Screen::Capture(capture) => {
+                if let Some(fault) = capture.fault {
+                    return match fault {
+                        SensorFault::NotResponding => ScreenKind::SensorAbsent,
+                        SensorFault::FrameErrors => ScreenKind::SensorBadFrames,
+                        SensorFault::ErrorStatus { .. } => ScreenKind::SensorError,
+                        SensorFault::Frozen => ScreenKind::SensorFrozen,
+                        SensorFault::NotPresent { .. }
+                        | SensorFault::NotReady
+                        | SensorFault::Bus => ScreenKind::SensorOther,
+                    };
+                }
+                match capture.notice {
+                    Some(Notice::ReadingOutOfRange { .. }) => return ScreenKind::OutOfRange,
+                    Some(Notice::StageRefused(_)) => return ScreenKind::StageRefused,
+                    _ => {}
+                }
+                if capture.still_moving {
+                    return ScreenKind::StillMoving;
+                }
+                match capture.prompt {
+                    Prompt::Stage0First => ScreenKind::Stage0Bench,
+                    Prompt::Stage0Second => ScreenKind::Stage0Turned,
+                    Prompt::Stage1Before => ScreenKind::Stage1Arm,
+                    Prompt::Stage1After => ScreenKind::Stage1Turned,
+                    Prompt::Pose { .. } => ScreenKind::Pose,
+                    Prompt::NoPose => ScreenKind::NoPlan,
+                }
+            }
+        }
+    }
+
+    /// The screen for core's view of the session.
+    pub fn from_view(view: &View<'_, f32>, extras: Extras) -> Screen {
+        if view.phase == Phase::Done {
+            let fit = match view.outcome {
+                Some(outcome) => summarize(outcome),
+                // Core always has an outcome in `Done`; say so if it ever does not.
+                None => Err(Refusal::NoOutcome),
+            };
+            let page = extras.result_page % ResultScreen::pages(&fit);
+            return Screen::Result(ResultScreen {
+                page,
+                fit,
+                store_failed: extras.store_failed,
+            });
+        }
+        let prompt = match view.phase {
+            Phase::Stage0First => Prompt::Stage0First,
+            Phase::Stage0Second => Prompt::Stage0Second,
+            Phase::Stage1Before => Prompt::Stage1Before,
+            Phase::Stage1After => Prompt::Stage1After,
+            Phase::Stage2 | Phase::Done => match view.pose {
+                Some((index, of, joints_rad)) => Prompt::Pose {
+                    number: index + 1,
+                    of,
+                    // The wrist's targets: joints 1 and 2 stay where stage 1 had them.
+                    joints_deg: [
+                        rad_to_deg(joints_rad[2]),
+                        rad_to_deg(joints_rad[3]),
+                        rad_to_deg(joints_rad[4]),
+                        rad_to_deg(joints_rad[5]),
+                    ],
+                },
+                None => Prompt::NoPose,
+            },
+        };
+        let settle = match view.stillness {
+            Stillness::Moving => Settle::Moving,
+            Stillness::Settling { percent } => Settle::Settling(percent),
+            Stillness::Still { .. } => Settle::Still,
+        };
+        Screen::Capture(CaptureScreen {
+            prompt,
+            live_deg: view.live.map(|t| t.to_deg()),
+            settle,
+            armed: view.armed,
+            captured: view.captured,
+            notice: view.notice,
+            fault: extras.fault,
+            still_moving: extras.still_moving,
+            store_failed: extras.store_failed,
+        })
+    }
+}
+
+/// The outcome in degrees.
+fn summarize(outcome: &Outcome<f32>) -> Result<FitSummary, Refusal> {
+    let fit = &outcome
+        .result
+        .as_ref()
+        .map_err(|e| Refusal::Session(*e))?
+        .fit;
+    let mut wrist = [Offset {
+        value_deg: 0.0,
+        sigma_deg: 0.0,
+    }; WRIST_JOINTS];
+    for ((offset, value_rad), sigma_rad) in wrist.iter_mut().zip(fit.offsets_rad).zip(fit.sigma_rad)
+    {
+        *offset = Offset {
+            value_deg: rad_to_deg(value_rad),
+            sigma_deg: rad_to_deg(sigma_rad),
+        };
+    }
+    Ok(FitSummary {
+        j2: outcome.stage1.map(|s1| Offset {
+            value_deg: rad_to_deg(s1.delta_theta2_rad),
+            sigma_deg: rad_to_deg(s1.delta_theta2_sigma_rad(fit.noise_sigma_rad)),
+        }),
+        wrist,
+        base_tilt_deg: outcome.stage1.map(|s1| {
+            (
+                rad_to_deg(s1.base_tilt.alpha_rad),
+                rad_to_deg(s1.base_tilt.beta_rad),
+            )
+        }),
+        residual_rms_deg: rad_to_deg(fit.residual_rms_rad),
+        poses: fit.poses,
+        iterations: fit.iterations,
+        condition_number: fit.condition_number,
+        warnings: outcome.verdict.warnings.clone(),
+    })
+}

@@ -1,0 +1,195 @@
+//! The pendant's application on the desktop, end to end: a whole session, each fault
+//! with its screen, the link's faults, and power cuts. The figures asserted here are
+//! the ones `cargo xtask pendant-sim` prints.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use zerocal_core::log::{LogLine, LogReader};
+use zerocal_pendant::host::flash::CutPoint;
+use zerocal_pendant::host::runner::{self, StoreContents};
+use zerocal_pendant::host::world::WorldConfig;
+use zerocal_pendant::screen::ScreenKind;
+use zerocal_sim::scl3300_device::{Fault, STATUS_SAT};
+
+#[test]
+fn a_whole_session_identifies_the_offsets_within_three_sigma() {
+    let (report, panel) = runner::session(WorldConfig::default(), true).unwrap();
+    let id = report.identified.expect("a result");
+    for k in 0..5 {
+        let error = id.offsets_deg[k] - report.truth.offsets_deg[k];
+        // 3σ of the session's own covariance: a Gaussian estimate stays inside 99.7 %
+        // of the time; seed 1 is one such session.
+        assert!(
+            error.abs() <= 3.0 * id.sigma_deg[k],
+            "j{}: error {error} sigma {}",
+            k + 2,
+            id.sigma_deg[k]
+        );
+        // The mean of 41 samples of mode 4's noise, and the stage 0-1 hand-over: the
+        // 1σ is a few 1e-4 degrees, not more than 0.002°.
+        assert!(id.sigma_deg[k] > 0.0 && id.sigma_deg[k] < 0.002, "{id:?}");
+    }
+    assert!(report.second_export_equal);
+    // The export reads back as a log: 12 poses, every row valid.
+    let text = String::from_utf8(report.export.clone()).unwrap();
+    let mut reader = LogReader::new();
+    let mut poses = 0;
+    for line in text.lines() {
+        if let LogLine::Pose(_) = reader.feed::<f64>(line, |s| s.trim().parse().ok()).unwrap() {
+            poses += 1;
+        }
+    }
+    assert_eq!(poses, report.poses);
+    assert!(text.contains("# stage2 offsets_deg"), "{text}");
+    // Every screen of the tour showed.
+    let panel = panel.borrow();
+    for kind in [
+        ScreenKind::Boot,
+        ScreenKind::Stage0Bench,
+        ScreenKind::Stage0Turned,
+        ScreenKind::Stage1Arm,
+        ScreenKind::Stage1Turned,
+        ScreenKind::Pose,
+        ScreenKind::ResultOffsets,
+        ScreenKind::ResultDetails,
+    ] {
+        assert!(panel.seen(kind), "{kind:?} not shown");
+    }
+    // A normal session shows no fault screen.
+    assert!(!panel.seen(ScreenKind::StillMoving));
+}
+
+#[test]
+fn sensor_faults_show_their_screens_and_capture_nothing() {
+    for (fault, kind) in [
+        (Fault::StuckHigh, ScreenKind::SensorAbsent),
+        (Fault::StuckLow, ScreenKind::SensorAbsent),
+        (Fault::BadCrc, ScreenKind::SensorBadFrames),
+        (Fault::ErrorStatus(STATUS_SAT), ScreenKind::SensorError),
+    ] {
+        let report = runner::sensor_fault("test", fault, kind).unwrap();
+        assert!(report.panel.borrow().seen(kind), "{fault:?}");
+        assert_eq!(report.progress, 0, "{fault:?}: captured while faulty");
+    }
+}
+
+#[test]
+fn a_frozen_output_is_named_within_fifteen_seconds() {
+    let report = runner::frozen_output().unwrap();
+    assert!(report.panel.borrow().seen(ScreenKind::SensorFrozen));
+    // Frozen during stage 0's second reading: the first stays, no second.
+    assert_eq!(report.progress, 1);
+}
+
+#[test]
+fn readings_past_the_window_and_a_robot_that_never_stops_are_not_captured() {
+    let report = runner::out_of_range().unwrap();
+    assert!(report.panel.borrow().seen(ScreenKind::OutOfRange));
+    assert_eq!(report.progress, 0);
+    let report = runner::still_moving().unwrap();
+    assert!(report.panel.borrow().seen(ScreenKind::StillMoving));
+    assert_eq!(report.progress, 0);
+}
+
+#[test]
+fn foreign_or_older_stores_are_reset_by_name_and_then_work() {
+    for contents in [
+        StoreContents::OtherImage,
+        StoreContents::Random,
+        StoreContents::OlderFormat,
+    ] {
+        let report = runner::storage_reset(contents).unwrap();
+        assert!(report.panel.borrow().seen(ScreenKind::StorageReset));
+        // After OK the store works: stage 0's first reading is captured and kept.
+        assert_eq!(report.progress, 1, "{contents:?}");
+    }
+}
+
+#[test]
+fn a_restart_note_is_shown_then_the_session_goes_on() {
+    let report = runner::restarted().unwrap();
+    assert!(report.panel.borrow().seen(ScreenKind::Restarted));
+    assert_eq!(report.progress, 1);
+}
+
+#[test]
+fn a_hung_display_is_timed_out_counted_and_reported_over_usb() {
+    let report = runner::display_hang().unwrap();
+    assert_eq!(report.display_faults, 3);
+    assert!(
+        report.link_text.contains("display faults 3"),
+        "{}",
+        report.link_text
+    );
+    assert_eq!(report.progress, 1);
+}
+
+#[test]
+fn skipped_stage0_warns_and_skipped_poses_refuse() {
+    let report = runner::without_stage0().unwrap();
+    assert!(report.panel.borrow().seen(ScreenKind::ResultWarning));
+    let report = runner::skip_everything().unwrap();
+    assert!(report.panel.borrow().seen(ScreenKind::NoResult));
+}
+
+#[test]
+fn the_link_survives_garbage_long_lines_unplugging_and_live() {
+    let (_, f) = runner::link_faults().unwrap();
+    assert!(
+        f.garbage_answer.matches("error:").count() >= 2,
+        "{}",
+        f.garbage_answer
+    );
+    assert!(
+        f.long_answer.contains("error: line too long"),
+        "{}",
+        f.long_answer
+    );
+    // The line after the long one is served.
+    assert!(f.long_answer.contains("pose,j3_deg"), "{}", f.long_answer);
+    // Enter stops `live` and the command typed after it in the same packet is answered.
+    assert!(f.live_answer.contains("phase "), "{}", f.live_answer);
+    assert!(f.unplug_first_bytes > 0);
+    assert!(f.export_after_unplug_equal);
+    assert!(f.second_export_equal);
+    assert!(f.session_unchanged);
+}
+
+#[test]
+fn power_cuts_lose_and_duplicate_nothing() {
+    // 40 cut points spread over each of the two sessions (a fresh board; a store whose
+    // page fills, so records migrate and a sector is erased); the xtask runs every one.
+    let report = runner::power_cuts(3, Some(40), |_, _| {}).unwrap();
+    assert_eq!(report.cut_points, 80);
+    assert!(report.erases >= 1, "no erase in the campaign");
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    assert_eq!(report.captures_lost, 0);
+    assert_eq!(report.duplicated, 0);
+    assert_eq!(report.equal_results, 80);
+    // A power cut never makes the store look foreign.
+    assert_eq!(report.storage_resets, 0, "{:?}", report.reset_points);
+}
+
+#[test]
+fn an_erase_cut_half_way_is_finished_at_power_up() {
+    // The filled store's session erases a sector; cut before it and half-way through
+    // it (some words erased, some not): the regression the whole campaign found.
+    let erases = runner::erase_operations(3).unwrap();
+    assert!(!erases.is_empty());
+    let cuts: Vec<(bool, CutPoint)> = erases
+        .iter()
+        .flat_map(|&operation| {
+            [false, true].map(|half_done| {
+                (
+                    true,
+                    CutPoint {
+                        operation,
+                        half_done,
+                    },
+                )
+            })
+        })
+        .collect();
+    let report = runner::power_cuts_at(3, &cuts).unwrap();
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    assert_eq!(report.equal_results, cuts.len());
+}
