@@ -1,7 +1,14 @@
 //! What stops the pendant and how it comes back: a panic resets it in release builds
-//! (after keeping its message for the next boot's screen), the independent watchdog
-//! resets it if the executor stops running; debug builds keep panic-probe's halt for
-//! the debugger.
+//! (after keeping where it happened for the next boot's screen), the independent
+//! watchdog resets it if the executor stops running; debug builds keep panic-probe's
+//! halt for the debugger.
+//!
+//! The release build made by `cargo xtask firmware` with the build-std toolchain aborts
+//! on panic at once (`-Cpanic=immediate-abort`: no panic messages or locations in
+//! flash, 15 KiB of the 128 KiB budget): the abort is a HardFault, whose handler keeps
+//! the faulting address instead (`arm-none-eabi-addr2line -e zerocal-firmware ADDR`
+//! names the line). A stable-toolchain build keeps the panic handler below, which
+//! keeps the file and line.
 
 #[cfg(not(debug_assertions))]
 use core::fmt::Write as _;
@@ -111,10 +118,59 @@ fn panic(info: &core::panic::PanicInfo) -> ! {
         bytes: &mut note.bytes,
         len: 0,
     };
+    // The place only: formatting the message would link every panic site's argument
+    // formatting (floats included, ~6 KiB) into a 128 KiB budget; file and line name
+    // the check that failed.
     if let Some(location) = info.location() {
-        let _ = write!(writer, "{}:{} ", location.file(), location.line());
+        let _ = writer.write_str(location.file());
+        let _ = writer.write_str(":");
+        let mut digits = [0u8; 10];
+        let mut n = location.line();
+        let mut i = digits.len();
+        loop {
+            i -= 1;
+            digits[i] = b'0' + (n % 10) as u8;
+            n /= 10;
+            if n == 0 || i == 0 {
+                break;
+            }
+        }
+        if let Ok(text) = core::str::from_utf8(&digits[i..]) {
+            let _ = writer.write_str(text);
+        }
     }
-    let _ = write!(writer, "{}", info.message());
+    note.len = writer.len as u32;
+    note.magic = MAGIC;
+    cortex_m::peripheral::SCB::sys_reset()
+}
+
+/// Release builds: a HardFault (an immediate-abort panic, or a fault) keeps the
+/// faulting instruction's address in the note and resets.
+#[cfg(not(debug_assertions))]
+#[cortex_m_rt::exception]
+unsafe fn HardFault(frame: &cortex_m_rt::ExceptionFrame) -> ! {
+    cortex_m::interrupt::disable();
+    // SAFETY: interrupts are off and this never returns: nothing else touches the note.
+    let note = unsafe { &mut *core::ptr::addr_of_mut!(PANIC_NOTE) };
+    let note = note.write(PanicNote {
+        magic: 0,
+        len: 0,
+        bytes: [0; 64],
+    });
+    let mut writer = NoteWriter {
+        bytes: &mut note.bytes,
+        len: 0,
+    };
+    let _ = writer.write_str("fault at 0x");
+    let pc = frame.pc();
+    let mut hex = [0u8; 8];
+    for (i, h) in hex.iter_mut().enumerate() {
+        let nibble = (pc >> (28 - 4 * i)) & 0xF;
+        *h = b"0123456789abcdef"[nibble as usize];
+    }
+    if let Ok(text) = core::str::from_utf8(&hex) {
+        let _ = writer.write_str(text);
+    }
     note.len = writer.len as u32;
     note.magic = MAGIC;
     cortex_m::peripheral::SCB::sys_reset()

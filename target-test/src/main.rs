@@ -65,7 +65,9 @@ use cortex_m_semihosting::{debug, hprintln};
 use zerocal_core::error::Terse;
 use zerocal_core::model::{Arm, Convention};
 use zerocal_core::real::rad_to_deg;
-use zerocal_core::session::{self, BiasSource, SessionError, SessionOutcome, SessionReadings};
+use zerocal_core::session::{
+    self, BiasSource, SessionError, SessionOutcome, SessionReadings, StageTemperatures,
+};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{FitConfig, PoseReading};
 
@@ -128,6 +130,8 @@ fn run(case: &Case) {
         bias: case.bias,
         stage1: case.stage1,
         poses: case.poses,
+        temperatures: StageTemperatures::default(),
+        closing: None,
     };
     let config = FitConfig::default();
     let outcome = if name == vectors::MEASURED {

@@ -122,7 +122,11 @@ fn build_firmware(root: &Path) -> Result<(size::MemoryUsage, size::MemoryCapacit
     let toolchain = tools.thumb()?;
     // The firmware's own .cargo/config.toml selects the target; its own [workspace]
     // keeps host features out.
-    toolchain.cargo_build(&firmware_dir, &["--release"])?;
+    toolchain.cargo_build_with(
+        &firmware_dir,
+        &["--release"],
+        toolchain::Panics::ImmediateAbort,
+    )?;
     let elf = firmware_dir
         .join("target")
         .join(toolchain::THUMB_TARGET)

@@ -353,6 +353,17 @@ impl ThumbToolchain {
     /// # Errors
     /// When cargo cannot start or the build fails.
     pub fn cargo_build(&self, dir: &Path, args: &[&str]) -> Result<()> {
+        self.cargo_build_with(dir, args, Panics::Handler)
+    }
+
+    /// As [`cargo_build`](Self::cargo_build); with [`Panics::ImmediateAbort`] and the
+    /// build-std toolchain, panics abort at once (`-Cpanic=immediate-abort`): no panic
+    /// messages or locations in the image. The stable rustup toolchain cannot rebuild
+    /// `core` that way and keeps its panic handler.
+    ///
+    /// # Errors
+    /// As [`cargo_build`](Self::cargo_build).
+    pub fn cargo_build_with(&self, dir: &Path, args: &[&str], panics: Panics) -> Result<()> {
         let mut command = Command::new(&self.cargo);
         command.current_dir(dir).arg("build").args(args);
         for variable in LEAKED_VARIABLES {
@@ -375,7 +386,11 @@ impl ThumbToolchain {
         // image neither depends on where it was built nor spends ~3 KiB of flash on
         // `/root/.cargo/registry/src/index.crates.io-…/` 47 times.
         // Encoded (0x1f-separated) so that a path with spaces stays one argument.
-        command.env("CARGO_ENCODED_RUSTFLAGS", remap_flags(dir));
+        let mut flags = remap_flags(dir);
+        if panics == Panics::ImmediateAbort && self.rustc.is_some() {
+            flags.push_str("\u{1f}-Zunstable-options\u{1f}-Cpanic=immediate-abort");
+        }
+        command.env("CARGO_ENCODED_RUSTFLAGS", flags);
         if let Some(rustc) = &self.rustc {
             command
                 .env("RUSTC", rustc)
@@ -404,6 +419,16 @@ impl ThumbToolchain {
     }
 }
 
+/// What a thumb build does on panic.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Panics {
+    /// The panic handler runs (the target's `panic = "abort"` after it).
+    Handler,
+    /// Abort at once where the toolchain can rebuild `core` for it (the firmware: its
+    /// HardFault handler keeps the address).
+    ImmediateAbort,
+}
+
 /// `--remap-path-prefix` flags for the registry sources and the repository, in
 /// `CARGO_ENCODED_RUSTFLAGS` form.
 fn remap_flags(dir: &Path) -> String {
@@ -412,10 +437,17 @@ fn remap_flags(dir: &Path) -> String {
         .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".cargo")));
     let mut flags = Vec::new();
     if let Some(home) = cargo_home {
-        flags.push(format!(
-            "--remap-path-prefix={}=/deps",
-            home.join("registry").join("src").display()
-        ));
+        // Each registry's own directory to nothing: a panic location then reads
+        // `embassy-usb-0.6.0/src/lib.rs`, and the ~40 bytes of prefix on each of the
+        // firmware's ~60 locations stay out of its 128 KiB.
+        // (rustc applies the last matching prefix: the general one goes first.)
+        let src = home.join("registry").join("src");
+        flags.push(format!("--remap-path-prefix={}=/deps", src.display()));
+        if let Ok(entries) = std::fs::read_dir(&src) {
+            for e in entries.flatten() {
+                flags.push(format!("--remap-path-prefix={}/=", e.path().display()));
+            }
+        }
     }
     if let Some(repo) = dir.parent() {
         flags.push(format!("--remap-path-prefix={}=/zerocal", repo.display()));

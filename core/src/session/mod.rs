@@ -16,6 +16,7 @@ pub use budget::{
     COVERAGE_FACTOR, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
 };
 
+use crate::decimal::Fixed;
 use crate::error::{FitError, StageError};
 use crate::model::{Arm, Convention, Gain, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
 use crate::plan::MAX_POSES;
@@ -183,9 +184,11 @@ impl fmt::Display for SessionError {
                 drift_measured: false,
             } => write!(
                 f,
-                "warm box: the pendant's temperature moved {kelvin:.1} K from stage 0's during \
-                 stage 2 (limit {limit_k:.1} K without a closing reversal): reverse it on the \
-                 bench again after stage 2 so that its drift is measured"
+                "warm box: the pendant's temperature moved {} K from stage 0's during stage 2 \
+                 (limit {} K without a closing reversal): reverse it on the bench again after \
+                 stage 2 so that its drift is measured",
+                Fixed::new(f64::from(*kelvin), 1),
+                Fixed::new(f64::from(*limit_k), 1)
             ),
             SessionError::Warmed {
                 kelvin,
@@ -193,8 +196,10 @@ impl fmt::Display for SessionError {
                 drift_measured: true,
             } => write!(
                 f,
-                "warm box: the pendant's temperature moved {kelvin:.1} K beyond what the two \
-                 reversals' linear drift follows (limit {limit_k:.1} K): let it settle and repeat"
+                "warm box: the pendant's temperature moved {} K beyond what the two reversals' \
+                 linear drift follows (limit {} K): let it settle and repeat",
+                Fixed::new(f64::from(*kelvin), 1),
+                Fixed::new(f64::from(*limit_k), 1)
             ),
         }
     }
