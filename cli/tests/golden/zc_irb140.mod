@@ -14,9 +14,9 @@ MODULE ZC_IRB140
     ! (plan set).
     ! Speed: joint moves at 10 % of each joint's maximum speed, exact stops. Backlash: every target is
     ! reached with each joint moving J1+ J2+ J3+ J4+ J5- J6-.
-    ! Dwell 3.2 s at each capture: settling 1 s (stated default) + the pendant's 2 s still window + 2
+    ! Dwell 3.1 s at each capture: settling 1 s (stated default) + the pendant's 2 s still window + 2
     ! sensor periods.
-    ! Predicted robot time 5.4 min (motion 111 s, dwell 83 s, remount 120 s, operator OKs 10 s).
+    ! Predicted robot time 5.4 min (motion 111 s, dwell 81 s, remount 120 s, operator OKs 10 s).
     ! WARNING: the path is NOT checked for collisions with the cell, the pendant or its bracket. Check
     ! the cell, then step through the program once at reduced speed (T1) before running it.
     CONST jointtarget zc_t1:=[[-91.00000,-46.00000,-91.00000,-1.00000,1.00000,1.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -81,10 +81,10 @@ MODULE ZC_IRB140
         TPWrite "continue.";
         STOP;
         MoveAbsJ zc_t3,v100 \T:=2.164,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 1: joint 1 turned by 180 deg
         MoveAbsJ zc_t4,v100 \T:=7.564,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         TPWrite "zerocal: press OK on the pendant, wait";
         TPWrite "for its POSE screen, then continue.";
         STOP;
@@ -96,97 +96,97 @@ MODULE ZC_IRB140
         STOP;
         ! zerocal stage 2: pose 1 of 24
         MoveAbsJ zc_t7,v100 \T:=2.109,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 2 of 24
         MoveAbsJ zc_t8,v100 \T:=3.664,fine,tool0;
         MoveAbsJ zc_t9,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 3 of 24
         MoveAbsJ zc_t10,v100 \T:=5.627,fine,tool0;
         MoveAbsJ zc_t11,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 4 of 24
         MoveAbsJ zc_t12,v100 \T:=4.714,fine,tool0;
         MoveAbsJ zc_t13,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 5 of 24
         MoveAbsJ zc_t14,v100 \T:=3.549,fine,tool0;
         MoveAbsJ zc_t15,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 6 of 24
         MoveAbsJ zc_t16,v100 \T:=6.098,fine,tool0;
         MoveAbsJ zc_t17,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 7 of 24
         MoveAbsJ zc_t18,v100 \T:=3.309,fine,tool0;
         MoveAbsJ zc_t19,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 8 of 24
         MoveAbsJ zc_t20,v100 \T:=2.983,fine,tool0;
         MoveAbsJ zc_t21,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 9 of 24
         MoveAbsJ zc_t22,v100 \T:=2.792,fine,tool0;
         MoveAbsJ zc_t23,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 10 of 24
         MoveAbsJ zc_t24,v100 \T:=4.227,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 11 of 24
         MoveAbsJ zc_t25,v100 \T:=7.209,fine,tool0;
         MoveAbsJ zc_t26,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 12 of 24
         MoveAbsJ zc_t27,v100 \T:=2.221,fine,tool0;
         MoveAbsJ zc_t28,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 13 of 24
         MoveAbsJ zc_t29,v100 \T:=2.096,fine,tool0;
         MoveAbsJ zc_t30,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 14 of 24
         MoveAbsJ zc_t31,v100 \T:=2.844,fine,tool0;
         MoveAbsJ zc_t32,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 15 of 24
         MoveAbsJ zc_t33,v100 \T:=2.492,fine,tool0;
         MoveAbsJ zc_t34,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 16 of 24
         MoveAbsJ zc_t35,v100 \T:=2.823,fine,tool0;
         MoveAbsJ zc_t36,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 17 of 24
         MoveAbsJ zc_t37,v100 \T:=2.208,fine,tool0;
         MoveAbsJ zc_t38,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 18 of 24
         MoveAbsJ zc_t39,v100 \T:=4.445,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 19 of 24
         MoveAbsJ zc_t40,v100 \T:=2.827,fine,tool0;
         MoveAbsJ zc_t41,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 20 of 24
         MoveAbsJ zc_t42,v100 \T:=2.293,fine,tool0;
         MoveAbsJ zc_t43,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 21 of 24
         MoveAbsJ zc_t44,v100 \T:=3.091,fine,tool0;
         MoveAbsJ zc_t45,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 22 of 24
         MoveAbsJ zc_t46,v100 \T:=3.344,fine,tool0;
         MoveAbsJ zc_t47,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 23 of 24
         MoveAbsJ zc_t48,v100 \T:=7.443,fine,tool0;
         MoveAbsJ zc_t49,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal stage 2: pose 24 of 24
         MoveAbsJ zc_t50,v100 \T:=3.550,fine,tool0;
         MoveAbsJ zc_t51,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.200;
+        WaitTime 3.100;
         ! zerocal: session done; the pendant shows the result
     ENDPROC
 ENDMODULE
