@@ -7,186 +7,344 @@ MODULE ZC_IRB140
     ! zerocal robot program: a joint-zero calibration session.
     ! Robot ABB IRB 140T-6/0.81 (IRB 140T; ROS-I model irb140t_6_81) (profile abb-irb140); 24 stage-2
     ! poses. Written by zerocal 0.1.0; targets in the controller's joint degrees.
+    ! Every pose is captured twice: first with every joint arriving moving positive (from 1 deg
+    ! below), then, after every joint has gone 4 deg past it, moving negative (from above). The
+    ! pendant averages the two: the middle of every gear's backlash.
     ! Stop: clip the pendant to the upper arm (the robot stands with the pendant tilted past its
-    ! range, so it cannot capture early). Stage 1: the stage-1 pose, then joint 1 turned by 180 deg
-    ! (an OK on the pendant takes that reading). Stop: joint 1 back, clip the pendant to the flange
-    ! (tilted again). Stage 2: the plan's poses in its order; load the same plan into the pendant
+    ! range, so it cannot capture early). Stage 1: the stage-1 pose twice, then joint 1 turned by 180
+    ! deg twice (an OK on the pendant arms the first). Stop: move the pendant to the flange (tilted
+    ! again). Stage 2: the plan's poses in its order, twice each; load the same plan into the pendant
     ! (plan set).
-    ! Speed: joint moves at 10 % of each joint's maximum speed, exact stops. Backlash: every target is
-    ! reached with each joint moving J1+ J2+ J3+ J4+ J5- J6-.
+    ! Closing reversal: the robot parks where the pendant went on the flange and stops; take the
+    ! pendant off and reverse it on the bench as in stage 0 (two readings, turned 180 deg on the same
+    ! spot between them). The program ends there.
+    ! Speed: joint moves at 10 % of each joint's maximum speed, exact stops.
     ! Dwell 3.1 s at each capture: settling 1 s (stated default) + the pendant's 2 s still window + 2
-    ! sensor periods.
-    ! Predicted robot time 5.4 min (motion 111 s, dwell 81 s, remount 120 s, operator OKs 10 s).
+    ! sensor periods of 0.05 s.
+    ! Predicted robot time 8.6 min, the closing reversal included: motion 149 s, dwell 167 s (54
+    ! captures), 3 mountings 180 s, operator OKs 20 s.
     ! WARNING: the path is NOT checked for collisions with the cell, the pendant or its bracket. Check
     ! the cell, then step through the program once at reduced speed (T1) before running it.
-    CONST jointtarget zc_t1:=[[-91.00000,-46.00000,-91.00000,-1.00000,1.00000,1.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t2:=[[-90.00000,-45.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t1:=[[-90.00000,-45.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t2:=[[-91.00000,-1.00000,-91.00000,-1.00000,-1.00000,-1.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t3:=[[-90.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t4:=[[90.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t5:=[[-91.00000,0.00000,-17.24796,-96.78035,-101.14702,-116.03872],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t6:=[[-90.00000,0.00000,-17.24796,-95.78035,-101.14702,-116.03872],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t7:=[[-90.00000,0.00000,27.75204,-95.78035,-101.14702,-116.03872],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t8:=[[-90.00000,0.00000,9.34017,-174.96593,11.90847,-5.32973],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t9:=[[-90.00000,0.00000,10.34017,-173.96593,10.90847,-6.32973],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t10:=[[-90.00000,0.00000,47.85089,-117.08203,-114.31798,217.44832],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t11:=[[-90.00000,0.00000,47.85089,-117.08203,-114.31798,216.44832],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t12:=[[-90.00000,0.00000,-38.45207,-2.90447,36.54074,184.39434],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t13:=[[-90.00000,0.00000,-37.45207,-2.90447,35.54074,184.39434],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t14:=[[-90.00000,0.00000,43.21657,-72.10469,111.77749,314.62760],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t15:=[[-90.00000,0.00000,43.21657,-71.10469,110.77749,313.62760],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t16:=[[-90.00000,0.00000,-68.16156,129.56635,111.82786,161.59757],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t17:=[[-90.00000,0.00000,-67.16156,129.56635,110.82786,161.59757],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t18:=[[-90.00000,0.00000,-143.36343,87.55256,84.54316,225.95293],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t19:=[[-90.00000,0.00000,-142.36343,88.55256,84.54316,224.95293],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t20:=[[-90.00000,0.00000,-210.08119,50.96740,44.70794,317.44251],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t21:=[[-90.00000,0.00000,-209.08119,51.96740,44.70794,316.44251],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t22:=[[-90.00000,0.00000,-190.51155,-29.69813,14.32819,392.43319],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t23:=[[-90.00000,0.00000,-190.51155,-28.69813,14.32819,391.43319],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t24:=[[-90.00000,0.00000,-152.18140,104.62146,-111.96481,298.49844],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t25:=[[-90.00000,0.00000,-102.90694,194.61726,-101.22002,3.52495],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t26:=[[-90.00000,0.00000,-102.90694,194.61726,-102.22002,3.52495],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t27:=[[-90.00000,0.00000,-115.40342,133.52800,-106.47603,-17.22632],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t28:=[[-90.00000,0.00000,-114.40342,134.52800,-106.47603,-17.22632],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t29:=[[-90.00000,0.00000,-159.05854,82.74943,-60.50261,-74.79644],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t30:=[[-90.00000,0.00000,-158.05854,83.74943,-61.50261,-74.79644],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t31:=[[-90.00000,0.00000,-219.96282,167.27133,-39.49869,-165.76418],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t32:=[[-90.00000,0.00000,-218.96282,167.27133,-40.49869,-165.76418],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t33:=[[-90.00000,0.00000,-164.00855,144.23296,21.25469,-148.65343],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t34:=[[-90.00000,0.00000,-164.00855,145.23296,20.25469,-149.65343],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t35:=[[-90.00000,0.00000,-112.16869,65.99251,103.02787,-158.83474],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t36:=[[-90.00000,0.00000,-112.16869,66.99251,102.02787,-158.83474],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t37:=[[-90.00000,0.00000,-98.96408,6.34233,101.38964,-181.57480],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t38:=[[-90.00000,0.00000,-98.96408,7.34233,101.38964,-181.57480],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t39:=[[-90.00000,0.00000,-25.66353,148.51094,-27.40497,-332.55282],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t40:=[[-90.00000,0.00000,-30.01506,80.92512,-110.31498,-298.17294],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t41:=[[-90.00000,0.00000,-29.01506,81.92512,-110.31498,-299.17294],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t42:=[[-90.00000,0.00000,-71.15342,18.22845,-105.76483,-349.23925],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t43:=[[-90.00000,0.00000,-70.15342,19.22845,-106.76483,-349.23925],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t44:=[[-90.00000,0.00000,-46.22883,-73.20478,-109.19206,-399.34010],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t45:=[[-90.00000,0.00000,-46.22883,-72.20478,-109.19206,-399.34010],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t46:=[[-90.00000,0.00000,0.30015,-139.76500,-7.65313,-392.84274],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t47:=[[-90.00000,0.00000,0.30015,-138.76500,-8.65313,-393.84274],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t48:=[[-90.00000,0.00000,-183.38631,-24.09578,-3.76432,-341.34354],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t49:=[[-90.00000,0.00000,-182.38631,-24.09578,-4.76432,-342.34354],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t50:=[[-90.00000,0.00000,-213.43986,-82.83680,-113.73258,-228.76975],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t51:=[[-90.00000,0.00000,-212.43986,-81.83680,-113.73258,-229.76975],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t4:=[[-86.00000,4.00000,-86.00000,4.00000,4.00000,4.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t5:=[[-90.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t6:=[[89.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t7:=[[89.00000,-1.00000,-91.00000,-1.00000,-1.00000,-1.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t8:=[[90.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t9:=[[94.00000,4.00000,-86.00000,4.00000,4.00000,4.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t10:=[[90.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t11:=[[-90.00000,-45.00000,-19.16889,94.83039,104.05166,110.98035],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t12:=[[-91.00000,-1.00000,-20.16889,93.83039,103.05166,109.98035],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t13:=[[-90.00000,0.00000,-19.16889,94.83039,104.05166,110.98035],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t14:=[[-86.00000,4.00000,-15.16889,98.83039,108.05166,114.98035],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t15:=[[-90.00000,0.00000,-19.16889,94.83039,104.05166,110.98035],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t16:=[[-91.00000,-1.00000,-25.67044,2.19103,26.41266,171.97206],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t17:=[[-90.00000,0.00000,-24.67044,3.19103,27.41266,172.97206],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t18:=[[-86.00000,4.00000,-20.67044,7.19103,31.41266,176.97206],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t19:=[[-90.00000,0.00000,-24.67044,3.19103,27.41266,172.97206],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t20:=[[-91.00000,-1.00000,-2.09337,-2.56013,1.48730,186.77091],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t21:=[[-90.00000,0.00000,-1.09337,-1.56013,2.48730,187.77091],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t22:=[[-86.00000,4.00000,2.90663,2.43987,6.48730,191.77091],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t23:=[[-90.00000,0.00000,-1.09337,-1.56013,2.48730,187.77091],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t24:=[[-91.00000,-1.00000,-53.21437,-88.51552,88.48241,213.19171],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t25:=[[-90.00000,0.00000,-52.21437,-87.51552,89.48241,214.19171],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t26:=[[-86.00000,4.00000,-48.21437,-83.51552,93.48241,218.19171],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t27:=[[-90.00000,0.00000,-52.21437,-87.51552,89.48241,214.19171],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t28:=[[-91.00000,-1.00000,38.33770,-72.71588,105.86928,309.16743],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t29:=[[-90.00000,0.00000,39.33770,-71.71588,106.86928,310.16743],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t30:=[[-86.00000,4.00000,43.33770,-67.71588,110.86928,314.16743],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t31:=[[-90.00000,0.00000,39.33770,-71.71588,106.86928,310.16743],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t32:=[[-91.00000,-1.00000,-78.64869,-76.33375,-101.04751,354.77932],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t33:=[[-90.00000,0.00000,-77.64869,-75.33375,-100.04751,355.77932],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t34:=[[-86.00000,4.00000,-73.64869,-71.33375,-96.04751,359.77932],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t35:=[[-90.00000,0.00000,-77.64869,-75.33375,-100.04751,355.77932],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t36:=[[-91.00000,-1.00000,-90.62176,12.15658,-89.17884,359.67736],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t37:=[[-90.00000,0.00000,-89.62176,13.15658,-88.17884,360.67736],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t38:=[[-86.00000,4.00000,-85.62176,17.15658,-84.17884,364.67736],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t39:=[[-90.00000,0.00000,-89.62176,13.15658,-88.17884,360.67736],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t40:=[[-91.00000,-1.00000,-191.21671,-30.83940,11.51670,386.48673],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t41:=[[-90.00000,0.00000,-190.21671,-29.83940,12.51670,387.48673],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t42:=[[-86.00000,4.00000,-186.21671,-25.83940,16.51670,391.48673],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t43:=[[-90.00000,0.00000,-190.21671,-29.83940,12.51670,387.48673],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t44:=[[-91.00000,-1.00000,-193.43445,-172.16400,-5.61262,170.82178],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t45:=[[-90.00000,0.00000,-192.43445,-171.16400,-4.61262,171.82178],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t46:=[[-86.00000,4.00000,-188.43445,-167.16400,-0.61262,175.82178],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t47:=[[-90.00000,0.00000,-192.43445,-171.16400,-4.61262,171.82178],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t48:=[[-91.00000,-1.00000,-174.17328,-23.85584,-11.23747,24.07104],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t49:=[[-90.00000,0.00000,-173.17328,-22.85584,-10.23747,25.07104],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t50:=[[-86.00000,4.00000,-169.17328,-18.85584,-6.23747,29.07104],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t51:=[[-90.00000,0.00000,-173.17328,-22.85584,-10.23747,25.07104],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t52:=[[-91.00000,-1.00000,-193.64876,86.97330,70.27491,-80.38238],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t53:=[[-90.00000,0.00000,-192.64876,87.97330,71.27491,-79.38238],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t54:=[[-86.00000,4.00000,-188.64876,91.97330,75.27491,-75.38238],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t55:=[[-90.00000,0.00000,-192.64876,87.97330,71.27491,-79.38238],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t56:=[[-91.00000,-1.00000,-151.22036,126.40599,45.33632,-136.76417],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t57:=[[-90.00000,0.00000,-150.22036,127.40599,46.33632,-135.76417],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t58:=[[-86.00000,4.00000,-146.22036,131.40599,50.33632,-131.76417],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t59:=[[-90.00000,0.00000,-150.22036,127.40599,46.33632,-135.76417],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t60:=[[-91.00000,-1.00000,-114.27282,63.65511,97.30987,-160.34202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t61:=[[-90.00000,0.00000,-113.27282,64.65511,98.30987,-159.34202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t62:=[[-86.00000,4.00000,-109.27282,68.65511,102.30987,-155.34202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t63:=[[-90.00000,0.00000,-113.27282,64.65511,98.30987,-159.34202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t64:=[[-91.00000,-1.00000,24.03607,86.07064,99.92730,-299.24383],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t65:=[[-90.00000,0.00000,25.03607,87.07064,100.92730,-298.24383],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t66:=[[-86.00000,4.00000,29.03607,91.07064,104.92730,-294.24383],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t67:=[[-90.00000,0.00000,25.03607,87.07064,100.92730,-298.24383],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t68:=[[-91.00000,-1.00000,-110.28114,57.91905,-88.77235,-385.42713],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t69:=[[-90.00000,0.00000,-109.28114,58.91905,-87.77235,-384.42713],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t70:=[[-86.00000,4.00000,-105.28114,62.91905,-83.77235,-380.42713],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t71:=[[-90.00000,0.00000,-109.28114,58.91905,-87.77235,-384.42713],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t72:=[[-91.00000,-1.00000,-32.60407,78.40106,-110.41682,-299.80311],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t73:=[[-90.00000,0.00000,-31.60407,79.40106,-109.41682,-298.80311],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t74:=[[-86.00000,4.00000,-27.60407,83.40106,-105.41682,-294.80311],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t75:=[[-90.00000,0.00000,-31.60407,79.40106,-109.41682,-298.80311],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t76:=[[-91.00000,-1.00000,23.14932,-97.08309,-101.44817,-117.81348],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t77:=[[-90.00000,0.00000,24.14932,-96.08309,-100.44817,-116.81348],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t78:=[[-86.00000,4.00000,28.14932,-92.08309,-96.44817,-112.81348],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t79:=[[-90.00000,0.00000,24.14932,-96.08309,-100.44817,-116.81348],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t80:=[[-91.00000,-1.00000,6.04839,-174.29135,8.17133,-8.79017],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t81:=[[-90.00000,0.00000,7.04839,-173.29135,9.17133,-7.79017],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t82:=[[-86.00000,4.00000,11.04839,-169.29135,13.17133,-3.79017],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t83:=[[-90.00000,0.00000,7.04839,-173.29135,9.17133,-7.79017],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t84:=[[-91.00000,-1.00000,-37.22287,-192.56337,-37.36648,5.55533],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t85:=[[-90.00000,0.00000,-36.22287,-191.56337,-36.36648,6.55533],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t86:=[[-86.00000,4.00000,-32.22287,-187.56337,-32.36648,10.55533],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t87:=[[-90.00000,0.00000,-36.22287,-191.56337,-36.36648,6.55533],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t88:=[[-91.00000,-1.00000,-190.81507,-173.10646,-16.36686,-195.26995],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t89:=[[-90.00000,0.00000,-189.81507,-172.10646,-15.36686,-194.26995],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t90:=[[-86.00000,4.00000,-185.81507,-168.10646,-11.36686,-190.26995],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t91:=[[-90.00000,0.00000,-189.81507,-172.10646,-15.36686,-194.26995],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t92:=[[-91.00000,-1.00000,-216.48393,73.67778,-111.60339,-127.80898],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t93:=[[-90.00000,0.00000,-215.48393,74.67778,-110.60339,-126.80898],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t94:=[[-86.00000,4.00000,-211.48393,78.67778,-106.60339,-122.80898],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t95:=[[-90.00000,0.00000,-215.48393,74.67778,-110.60339,-126.80898],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t96:=[[-91.00000,-1.00000,-216.79282,77.51682,-103.92885,-126.37356],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t97:=[[-90.00000,0.00000,-215.79282,78.51682,-102.92885,-125.37356],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t98:=[[-86.00000,4.00000,-211.79282,82.51682,-98.92885,-121.37356],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t99:=[[-90.00000,0.00000,-215.79282,78.51682,-102.92885,-125.37356],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t100:=[[-91.00000,-1.00000,-116.46765,130.34640,-106.66134,-19.61866],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t101:=[[-90.00000,0.00000,-115.46765,131.34640,-105.66134,-18.61866],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t102:=[[-86.00000,4.00000,-111.46765,135.34640,-101.66134,-14.61866],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t103:=[[-90.00000,0.00000,-115.46765,131.34640,-105.66134,-18.61866],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t104:=[[-91.00000,-1.00000,-167.67732,161.86998,10.03017,196.68202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t105:=[[-90.00000,0.00000,-166.67732,162.86998,11.03017,197.68202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t106:=[[-86.00000,4.00000,-162.67732,166.86998,15.03017,201.68202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t107:=[[-90.00000,0.00000,-166.67732,162.86998,11.03017,197.68202],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t108:=[[-90.00000,-45.00000,-19.16889,94.83039,104.05166,110.98035],[9E9,9E9,9E9,9E9,9E9,9E9]];
     PROC main()
         ! zerocal stage 1: the pendant goes on the upper arm here, tilted past its range so that it cannot
         ! capture yet
         ! from wherever the robot stands: speeddata v100, step through it
         MoveAbsJ zc_t1,v100,fine,tool0;
-        MoveAbsJ zc_t2,v100 \T:=0.241,fine,tool0;
         TPWrite "zerocal: clip the pendant to the upper";
         TPWrite "arm (its screen at STAGE 1), then";
         TPWrite "continue.";
         STOP;
-        MoveAbsJ zc_t3,v100 \T:=2.164,fine,tool0;
+        ! zerocal stage 1: the stage-1 pose, captured from below, then from above
+        MoveAbsJ zc_t2,v100 \T:=2.124,fine,tool0;
+        MoveAbsJ zc_t3,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 1: joint 1 turned by 180 deg
-        MoveAbsJ zc_t4,v100 \T:=7.564,fine,tool0;
+        MoveAbsJ zc_t4,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t5,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        TPWrite "zerocal: press OK on the pendant, wait";
-        TPWrite "for its POSE screen, then continue.";
+        ! zerocal stage 1: joint 1 turned by 180 deg, captured from below, then from above
+        MoveAbsJ zc_t6,v100 \T:=7.524,fine,tool0;
+        MoveAbsJ zc_t7,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t8,v100 \T:=0.241,fine,tool0;
+        TPWrite "zerocal: press OK on the pendant (after";
+        TPWrite "the half turn only OK arms it), then";
+        TPWrite "continue.";
         STOP;
-        ! zerocal: joint 1 back; the pendant goes on the flange here, tilted past its range
-        MoveAbsJ zc_t5,v100 \T:=7.604,fine,tool0;
-        MoveAbsJ zc_t6,v100 \T:=0.241,fine,tool0;
-        TPWrite "zerocal: clip the pendant to the flange";
-        TPWrite "(its screen at POSE 1), then continue.";
+        WaitTime 3.100;
+        MoveAbsJ zc_t9,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t10,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal: joint 1 back; the pendant goes from the upper arm to the flange here, both tilted past
+        ! its range
+        MoveAbsJ zc_t11,v100 \T:=7.564,fine,tool0;
+        TPWrite "zerocal: move the pendant from the upper";
+        TPWrite "arm to the flange (its screen at POSE";
+        TPWrite "1), then continue.";
         STOP;
-        ! zerocal stage 2: pose 1 of 24
-        MoveAbsJ zc_t7,v100 \T:=2.109,fine,tool0;
-        WaitTime 3.100;
-        ! zerocal stage 2: pose 2 of 24
-        MoveAbsJ zc_t8,v100 \T:=3.664,fine,tool0;
-        MoveAbsJ zc_t9,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.100;
-        ! zerocal stage 2: pose 3 of 24
-        MoveAbsJ zc_t10,v100 \T:=5.627,fine,tool0;
-        MoveAbsJ zc_t11,v100 \T:=0.241,fine,tool0;
-        WaitTime 3.100;
-        ! zerocal stage 2: pose 4 of 24
-        MoveAbsJ zc_t12,v100 \T:=4.714,fine,tool0;
+        ! zerocal stage 2: pose 1 of 24, captured from below, then from above
+        MoveAbsJ zc_t12,v100 \T:=2.124,fine,tool0;
         MoveAbsJ zc_t13,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 5 of 24
-        MoveAbsJ zc_t14,v100 \T:=3.549,fine,tool0;
-        MoveAbsJ zc_t15,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t14,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t15,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 6 of 24
-        MoveAbsJ zc_t16,v100 \T:=6.098,fine,tool0;
+        ! zerocal stage 2: pose 2 of 24, captured from below, then from above
+        MoveAbsJ zc_t16,v100 \T:=3.097,fine,tool0;
         MoveAbsJ zc_t17,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 7 of 24
-        MoveAbsJ zc_t18,v100 \T:=3.309,fine,tool0;
-        MoveAbsJ zc_t19,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t18,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t19,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 8 of 24
-        MoveAbsJ zc_t20,v100 \T:=2.983,fine,tool0;
+        ! zerocal stage 2: pose 3 of 24, captured from below, then from above
+        MoveAbsJ zc_t20,v100 \T:=1.247,fine,tool0;
         MoveAbsJ zc_t21,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 9 of 24
-        MoveAbsJ zc_t22,v100 \T:=2.792,fine,tool0;
-        MoveAbsJ zc_t23,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t22,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t23,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 10 of 24
-        MoveAbsJ zc_t24,v100 \T:=4.227,fine,tool0;
+        ! zerocal stage 2: pose 4 of 24, captured from below, then from above
+        MoveAbsJ zc_t24,v100 \T:=2.939,fine,tool0;
+        MoveAbsJ zc_t25,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 11 of 24
-        MoveAbsJ zc_t25,v100 \T:=7.209,fine,tool0;
-        MoveAbsJ zc_t26,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t26,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t27,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 12 of 24
-        MoveAbsJ zc_t27,v100 \T:=2.221,fine,tool0;
-        MoveAbsJ zc_t28,v100 \T:=0.241,fine,tool0;
+        ! zerocal stage 2: pose 5 of 24, captured from below, then from above
+        MoveAbsJ zc_t28,v100 \T:=3.861,fine,tool0;
+        MoveAbsJ zc_t29,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 13 of 24
-        MoveAbsJ zc_t29,v100 \T:=2.096,fine,tool0;
-        MoveAbsJ zc_t30,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t30,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t31,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 14 of 24
-        MoveAbsJ zc_t31,v100 \T:=2.844,fine,tool0;
-        MoveAbsJ zc_t32,v100 \T:=0.241,fine,tool0;
+        ! zerocal stage 2: pose 6 of 24, captured from below, then from above
+        MoveAbsJ zc_t32,v100 \T:=6.299,fine,tool0;
+        MoveAbsJ zc_t33,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 15 of 24
-        MoveAbsJ zc_t33,v100 \T:=2.492,fine,tool0;
-        MoveAbsJ zc_t34,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t34,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t35,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 16 of 24
-        MoveAbsJ zc_t35,v100 \T:=2.823,fine,tool0;
-        MoveAbsJ zc_t36,v100 \T:=0.241,fine,tool0;
+        ! zerocal stage 2: pose 7 of 24, captured from below, then from above
+        MoveAbsJ zc_t36,v100 \T:=2.954,fine,tool0;
+        MoveAbsJ zc_t37,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 17 of 24
-        MoveAbsJ zc_t37,v100 \T:=2.208,fine,tool0;
-        MoveAbsJ zc_t38,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t38,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t39,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 18 of 24
-        MoveAbsJ zc_t39,v100 \T:=4.445,fine,tool0;
-        WaitTime 3.100;
-        ! zerocal stage 2: pose 19 of 24
-        MoveAbsJ zc_t40,v100 \T:=2.827,fine,tool0;
+        ! zerocal stage 2: pose 8 of 24, captured from below, then from above
+        MoveAbsJ zc_t40,v100 \T:=4.286,fine,tool0;
         MoveAbsJ zc_t41,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 20 of 24
-        MoveAbsJ zc_t42,v100 \T:=2.293,fine,tool0;
-        MoveAbsJ zc_t43,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t42,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t43,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 21 of 24
-        MoveAbsJ zc_t44,v100 \T:=3.091,fine,tool0;
+        ! zerocal stage 2: pose 9 of 24, captured from below, then from above
+        MoveAbsJ zc_t44,v100 \T:=5.469,fine,tool0;
         MoveAbsJ zc_t45,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 22 of 24
-        MoveAbsJ zc_t46,v100 \T:=3.344,fine,tool0;
-        MoveAbsJ zc_t47,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t46,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t47,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 23 of 24
-        MoveAbsJ zc_t48,v100 \T:=7.443,fine,tool0;
+        ! zerocal stage 2: pose 10 of 24, captured from below, then from above
+        MoveAbsJ zc_t48,v100 \T:=4.615,fine,tool0;
         MoveAbsJ zc_t49,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
-        ! zerocal stage 2: pose 24 of 24
-        MoveAbsJ zc_t50,v100 \T:=3.550,fine,tool0;
-        MoveAbsJ zc_t51,v100 \T:=0.241,fine,tool0;
+        MoveAbsJ zc_t50,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t51,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
+        ! zerocal stage 2: pose 11 of 24, captured from below, then from above
+        MoveAbsJ zc_t52,v100 \T:=3.574,fine,tool0;
+        MoveAbsJ zc_t53,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t54,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t55,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 12 of 24, captured from below, then from above
+        MoveAbsJ zc_t56,v100 \T:=1.972,fine,tool0;
+        MoveAbsJ zc_t57,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t58,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t59,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 13 of 24, captured from below, then from above
+        MoveAbsJ zc_t60,v100 \T:=2.294,fine,tool0;
+        MoveAbsJ zc_t61,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t62,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t63,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 14 of 24, captured from below, then from above
+        MoveAbsJ zc_t64,v100 \T:=5.659,fine,tool0;
+        MoveAbsJ zc_t65,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t66,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t67,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 15 of 24, captured from below, then from above
+        MoveAbsJ zc_t68,v100 \T:=5.793,fine,tool0;
+        MoveAbsJ zc_t69,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t70,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t71,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 16 of 24, captured from below, then from above
+        MoveAbsJ zc_t72,v100 \T:=3.327,fine,tool0;
+        MoveAbsJ zc_t73,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t74,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t75,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 17 of 24, captured from below, then from above
+        MoveAbsJ zc_t76,v100 \T:=5.426,fine,tool0;
+        MoveAbsJ zc_t77,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t78,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t79,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 18 of 24, captured from below, then from above
+        MoveAbsJ zc_t80,v100 \T:=3.541,fine,tool0;
+        MoveAbsJ zc_t81,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t82,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t83,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 19 of 24, captured from below, then from above
+        MoveAbsJ zc_t84,v100 \T:=2.081,fine,tool0;
+        MoveAbsJ zc_t85,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t86,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t87,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 20 of 24, captured from below, then from above
+        MoveAbsJ zc_t88,v100 \T:=6.324,fine,tool0;
+        MoveAbsJ zc_t89,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t90,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t91,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 21 of 24, captured from below, then from above
+        MoveAbsJ zc_t92,v100 \T:=7.351,fine,tool0;
+        MoveAbsJ zc_t93,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t94,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t95,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 22 of 24, captured from below, then from above
+        MoveAbsJ zc_t96,v100 \T:=0.623,fine,tool0;
+        MoveAbsJ zc_t97,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t98,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t99,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 23 of 24, captured from below, then from above
+        MoveAbsJ zc_t100,v100 \T:=4.198,fine,tool0;
+        MoveAbsJ zc_t101,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t102,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t103,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal stage 2: pose 24 of 24, captured from below, then from above
+        MoveAbsJ zc_t104,v100 \T:=5.439,fine,tool0;
+        MoveAbsJ zc_t105,v100 \T:=0.241,fine,tool0;
+        WaitTime 3.100;
+        MoveAbsJ zc_t106,v100 \T:=0.482,fine,tool0;
+        MoveAbsJ zc_t107,v100 \T:=0.482,fine,tool0;
+        WaitTime 3.100;
+        ! zerocal: stage 2 done; the robot parks where the pendant went on the flange (tilted past its
+        ! range) for the closing reversal
+        MoveAbsJ zc_t108,v100 \T:=6.052,fine,tool0;
+        TPWrite "zerocal: closing reversal: take the";
+        TPWrite "pendant off the flange to the bench of";
+        TPWrite "stage 0, let it capture, turn it 180 deg";
+        TPWrite "on the same spot, press OK, let it";
+        TPWrite "capture. Then continue.";
+        STOP;
         ! zerocal: session done; the pendant shows the result
     ENDPROC
 ENDMODULE
