@@ -3,12 +3,13 @@
 //! uncertainty per joint, the worst correlation between the parameters (naming the
 //! poorly separated ones), and the session's robot time (`crate::timing`).
 //!
-//! The poses come in the order that makes the session short (a joint-space tour that
-//! keeps every joint's approach direction, `crate::timing::time_order`): the order
-//! the pendant's plan and the robot program (`zerocal program`) must both follow.
-//! `--target-k2-deg U` asks for the fewest poses whose predicted k = 2 uncertainty
-//! is at most U on every joint (j2 from stage 1, j3-j6 from the plan), through one
-//! function, [`predicted_k2_deg`], which a fuller uncertainty budget replaces.
+//! The poses come in the order that makes the session short (a joint-space tour,
+//! `crate::timing::time_order`): the order the pendant's plan and the robot program
+//! (`zerocal program`) must both follow. They lie inside the joint limits less the room
+//! the two captures of a pose need (`crate::timing::planner_limits`: every pose is
+//! captured from below and from above on every joint). `--target-k2-deg U` asks for the
+//! fewest poses whose predicted k = 2 uncertainty is at most U on every joint, through
+//! one function, [`predicted_k2_deg`] (core's `predict_budget`).
 //!
 //! Output: a table (default), `--csv` (header `j1_deg,...,j6_deg`, model degrees, one
 //! row per pose, nothing else on stdout) or `--json` (one object: `poses_deg`,
@@ -37,7 +38,7 @@ use serde::Serialize;
 use std::fmt::Write;
 use std::path::PathBuf;
 use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
-use zerocal_core::plan::time::SessionTime;
+use zerocal_core::plan::time::{SessionTime, CAPTURES_PER_POSE};
 use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError, MAX_POSES};
 use zerocal_core::real::{deg_to_rad, rad_to_deg};
 use zerocal_core::session::{
@@ -220,10 +221,14 @@ pub struct RobotTimeJson {
     pub remount_s: f64,
     /// Operator OKs at the pendant (s).
     pub operator_s: f64,
-    /// Moves, approach moves included.
+    /// Moves.
     pub moves: u16,
-    /// Moves that turn round to arrive in the approach direction.
-    pub approach_moves: u16,
+    /// Captures: two per pose (stage 1's two and every stage-2 pose), the closing
+    /// reversal's two.
+    pub captures: u16,
+    /// Mountings of the pendant (upper arm, flange, the bench for the closing
+    /// reversal).
+    pub mountings: u16,
     /// Stops for an operator's OK.
     pub ok_stops: u16,
     /// Joint speed, % of each joint's maximum.
@@ -236,11 +241,20 @@ pub struct RobotTimeJson {
     pub accel_deg_s2: [f64; JOINTS],
     /// Settling per pose (s).
     pub settle_s: f64,
-    /// The wait at each captured pose (s): settling, still window, two sensor periods.
-    pub dwell_per_pose_s: f64,
-    /// Each joint's approach direction (+1 from below, −1 from above), in the
-    /// controller's joint terms.
-    pub approach: [i8; JOINTS],
+    /// The wait at each capture (s): settling, still window, two sensor periods.
+    pub dwell_per_capture_s: f64,
+    /// Captures of every pose: first with every joint arriving from below, then from
+    /// above.
+    pub captures_per_pose: usize,
+    /// How far below a pose every joint starts the last move to its first capture
+    /// (controller degrees).
+    pub approach_deg: f64,
+    /// How far above a pose every joint goes before coming back for its second capture
+    /// (controller degrees).
+    pub overshoot_deg: f64,
+    /// Why `zerocal program` would refuse this session (a capture pose without room
+    /// on both sides inside the joint limits, say), if it would.
+    pub program_refused: Option<String>,
 }
 
 /// The `--json` output.
@@ -273,13 +287,14 @@ pub struct PlanJson {
     pub window_deg: f64,
     /// Margin (deg).
     pub margin_deg: f64,
-    /// Limits used (deg).
+    /// Limits the poses were planned inside (model degrees): the profile's or
+    /// `--limits`', less the room the approach from below and the overshoot above need.
     pub limits_deg: LimitsDeg,
     /// The capture noise assumed, 1σ (deg).
     pub noise_sigma_deg: f64,
     /// What the plan separates besides the offsets.
     pub fitted: Vec<&'static str>,
-    /// Captures per pose.
+    /// Captures per pose the prediction assumes.
     pub captures_per_pose: usize,
     /// Criterion ("a" or "d").
     pub criterion: &'static str,
@@ -339,24 +354,29 @@ impl PlanArgs {
         }
     }
 
-    /// The planner settings the flags give.
+    /// The planner settings the flags give: the limits less the room the two captures
+    /// of a pose need on either side (`crate::timing::planner_limits`).
     pub fn config(&self, profile: &Profile) -> Result<PlanConfig<f64>, CliError> {
-        let limits = self.limits_deg(profile)?;
+        let full = self.limits_deg(profile)?;
+        let limits = timing::planner_limits(profile, &full);
+        for (k, ((lo, hi), (flo, fhi))) in limits.iter().zip(&full).enumerate() {
+            if lo > hi {
+                return Err(CliError::Input(format!(
+                    "limits of joint {}: {flo}..{fhi} deg leave no room for the two captures of a pose (every joint reached from {} deg below it and from {} deg above it: {:.3} deg below and {:.3} deg above in model angles)",
+                    k + 3,
+                    timing::APPROACH_DEG,
+                    timing::OVERSHOOT_DEG,
+                    lo - flo,
+                    fhi - hi
+                )));
+            }
+        }
         let q1 = profile.stage1_joints_rad;
         Ok(PlanConfig {
             poses: self.poses,
             window_rad: deg_to_rad(self.window_deg),
             margin_rad: deg_to_rad(self.margin_deg),
-            // The robot reaches each pose from past it on either side: the poses keep
-            // that far inside the limits (a joint pinned by a limits file stays pinned).
-            limits_rad: limits.map(|(lo, hi)| {
-                let a = if hi - lo > 2.0 * timing::APPROACH_DEG {
-                    timing::APPROACH_DEG
-                } else {
-                    0.0
-                };
-                (deg_to_rad(lo + a), deg_to_rad(hi - a))
-            }),
+            limits_rad: limits.map(|(lo, hi)| (deg_to_rad(lo), deg_to_rad(hi))),
             fixed_joints_rad: [q1[0], q1[1]],
             seed: self.seed,
             candidates: self.candidates,
@@ -486,12 +506,15 @@ pub struct SessionPlan {
     pub plan: Plan<f64>,
     /// The poses in the controller's terms.
     pub poses: SessionPoses,
-    /// The time model (approach directions chosen inside the limits).
+    /// The time model.
     pub timing: Timing,
     /// The robot time in this order.
     pub time: SessionTime<f64>,
     /// The same poses' robot time in the planner's own order.
     pub time_unordered: SessionTime<f64>,
+    /// Why `zerocal program` would refuse the session, if it would
+    /// (`crate::timing::check_room`).
+    pub program_refused: Option<String>,
     /// [`predicted_k2_deg`].
     pub k2_deg: [f64; WRIST_JOINTS + 1],
     /// The correlations.
@@ -523,14 +546,23 @@ pub fn session_plan(
     mut p: Plan<f64>,
 ) -> Result<SessionPlan, CliError> {
     let model = args.model(&profile);
-    let unordered = SessionPoses::new(&profile, &p.poses_rad);
-    let approach = timing::approach_directions(&profile, &unordered.captures())?;
-    let unordered = unordered.with_mounts(&profile, &approach)?;
-    let t = Timing::new(&profile, &args.timing, approach)?;
+    let unordered = SessionPoses::new(&profile, &p.poses_rad).with_mounts(&profile)?;
+    let t = Timing::new(&profile, &args.timing)?;
     let pendant = Pendant::new(&profile);
     let time_unordered = timing::session_time(&pendant, &t.model, &unordered);
-    let order = timing::time_order(&pendant, &t.model, &unordered);
-    let poses = unordered.reordered(&profile, &order, &approach)?;
+    let toured = timing::time_order(&pendant, &t.model, &unordered);
+    let candidate = unordered.reordered(&profile, &toured)?;
+    // The tour leaves out the legs that depend on the first and last pose (the
+    // flange's mounting, the park): keep the planner's order if it is shorter in all.
+    let (order, poses) =
+        if timing::session_time(&pendant, &t.model, &candidate).total_s <= time_unordered.total_s {
+            (toured, candidate)
+        } else {
+            ((0..unordered.poses.len()).collect(), unordered)
+        };
+    let program_refused = timing::check_room(&profile, &poses).err().map(|e| match e {
+        CliError::Input(m) | CliError::Refused(m) => m,
+    });
     let original = p.poses_rad.clone();
     p.poses_rad.clear();
     for &i in &order {
@@ -557,6 +589,7 @@ pub fn session_plan(
         timing: t,
         time,
         time_unordered,
+        program_refused,
         k2_deg,
         correlation,
     })
@@ -659,15 +692,19 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
         remount_s: t.remount_s,
         operator_s: t.operator_s,
         moves: t.moves,
-        approach_moves: t.approach_moves,
+        captures: t.captures,
+        mountings: t.mountings,
         ok_stops: t.ok_stops,
         speed_percent: tm.speed_percent,
         max_speed_deg_s: tm.max_speed_deg_s,
         max_speed_source: tm.speed_source,
         accel_deg_s2: tm.model.accel_deg_s2,
         settle_s: tm.model.settle_s,
-        dwell_per_pose_s: tm.model.dwell_s(),
-        approach: tm.model.approach,
+        dwell_per_capture_s: tm.model.dwell_s(),
+        captures_per_pose: CAPTURES_PER_POSE,
+        approach_deg: tm.model.approach_deg,
+        overshoot_deg: tm.model.overshoot_deg,
+        program_refused: sp.program_refused.clone(),
     };
     if args.json {
         let j = PlanJson {
@@ -778,16 +815,24 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
         .collect();
     let _ = writeln!(
         out,
-        "robot time {}: motion {:.0} s, dwell {:.0} s ({} captures x {:.1} s), pendant mountings {:.0} s, operator OKs {:.0} s ({} stops); planner's order {}",
+        "robot time {}: motion {:.0} s, dwell {:.0} s ({} captures x {:.1} s), pendant mountings {:.0} s ({}), operator OKs {:.0} s ({} stops); planner's order {}",
         minutes(t.total_s),
         t.motion_s,
         t.dwell_s,
-        p.poses_rad.len() + 2,
+        t.captures,
         tm.model.dwell_s(),
         t.remount_s,
+        t.mountings,
         t.operator_s,
         t.ok_stops,
         minutes(sp.time_unordered.total_s),
+    );
+    let _ = writeln!(
+        out,
+        "  every pose captured twice (stage 1's two and the {} of the plan): every joint arriving from {} deg below, then from {} deg above; then the closing reversal on the bench (a mounting, 2 captures, 1 OK)",
+        p.poses_rad.len(),
+        tm.model.approach_deg,
+        tm.model.overshoot_deg,
     );
     let _ = writeln!(
         out,
@@ -807,6 +852,9 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
         tm.model.remount_s,
         tm.model.operator_ok_s,
     );
+    if let Some(why) = &sp.program_refused {
+        let _ = writeln!(out, "zerocal program would refuse this session: {why}");
+    }
     Ok(out)
 }
 
@@ -867,6 +915,9 @@ mod tests {
         let text = run(&args(&[])).unwrap_or_else(|e| panic!("{e}"));
         println!("{text}");
         assert!(text.contains("predicted 1-sigma"), "{text}");
+        // The paper's wrist (the default robot) turns joint 1 from -90° to +90°: the
+        // program it would write has room for every capture.
+        assert!(!text.contains("zerocal program would refuse"), "{text}");
     }
 
     /// The session's order moves the poses, never the prediction: the same poses'
@@ -922,6 +973,16 @@ mod tests {
             .sum();
         let total = t["total_s"].as_f64().unwrap_or(f64::NAN);
         assert!((parts - total).abs() < 1e-9, "{parts} vs {total}");
+        // Two captures of stage 1's two poses and of every planned pose, the closing
+        // reversal's two; three mountings; each capture's dwell 3.1 s.
+        let poses = v["poses_deg"].as_array().map_or(0, Vec::len) as u64;
+        let captures = t["captures"].as_u64().unwrap_or(0);
+        assert_eq!(captures, 2 * (poses + 2) + 2);
+        assert_eq!(t["mountings"].as_u64(), Some(3));
+        let dwell = t["dwell_per_capture_s"].as_f64().unwrap_or(f64::NAN);
+        assert!((dwell - 3.1).abs() < 1e-12, "{dwell}");
+        assert!((t["dwell_s"].as_f64().unwrap_or(f64::NAN) - captures as f64 * dwell).abs() < 1e-9);
+        assert!(t["program_refused"].is_null(), "{}", t["program_refused"]);
         let m = &v["correlation"]["matrix"];
         for i in 0..4 {
             assert!((m[i][i].as_f64().unwrap_or(0.0) - 1.0).abs() < 1e-12);
@@ -991,12 +1052,22 @@ mod tests {
         // A margin within its own range but not below the window: status 2 as well.
         let e = run(&args(&["--window-deg", "5", "--margin-deg", "6"])).unwrap_err();
         assert_eq!(e.exit_code(), 2, "{e}");
-        // θ4 pinned: j3 and j5 inseparable, refused with status 3 naming them.
+        // θ4 pinned: no room for the two captures of a pose, status 2 naming joint 4.
         let dir = std::env::temp_dir().join(format!("zerocal-plan-{}", std::process::id()));
         let _ = std::fs::create_dir_all(&dir);
         let f = dir.join("limits.csv");
         let _ = std::fs::write(&f, "4,0,0\n");
         let path = f.to_string_lossy().into_owned();
+        let e = run(&args(&["--limits", &path])).unwrap_err();
+        assert_eq!(e.exit_code(), 2, "{e}");
+        assert!(
+            e.to_string().contains("joint 4") && e.to_string().contains("no room"),
+            "{e}"
+        );
+        // θ4 within -1..4: the room of the approach (1°) and the overshoot (4°) pins it
+        // at 0 (the paper's wrist: no signs, no coupling): j3 and j5 inseparable,
+        // refused with status 3 naming them.
+        let _ = std::fs::write(&f, "4,-1,4\n");
         let e = run(&args(&["--limits", &path])).unwrap_err();
         assert_eq!(e.exit_code(), 3, "{e}");
         assert!(e.to_string().contains("j3+j5"), "{e}");

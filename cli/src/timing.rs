@@ -1,7 +1,16 @@
 //! The robot side of a session for `zerocal plan` and `zerocal program`: core's
 //! robot-time model (`zerocal_core::plan::time`) filled in from a robot profile and
-//! the options, the approach directions that keep every target inside the joint
-//! limits, and the pendant's capture rule checked along every move.
+//! the options, the room every capture needs on both sides of the backlash inside the
+//! joint limits, the mounting and parking poses, and the pendant's capture rule
+//! checked along every move.
+//!
+//! The procedure (issue 15): every pose (stage 1's two and every stage-2 pose) is
+//! captured twice, first with every joint arriving moving in its positive direction
+//! (from [`APPROACH_DEG`] below), then with every joint arriving moving negative (from
+//! [`OVERSHOOT_DEG`] above); the overshoot is also the move that re-arms the pendant.
+//! Joint values here are the controller's: "positive" is the controller's positive.
+//! After stage 2 the robot parks at the flange's mounting pose and the pendant is
+//! reversed on the bench (the closing reversal).
 //!
 //! What is a source's figure and what is a stated default:
 //!
@@ -11,18 +20,21 @@
 //! - the reduced speed, the settling, the remount, an operator's OK and the approach
 //!   distance: stated defaults ([`DEFAULT_SPEED_PERCENT`], [`DEFAULT_SETTLE_S`],
 //!   [`DEFAULT_REMOUNT_S`], [`OPERATOR_OK_S`], [`APPROACH_DEG`]);
+//! - the overshoot: the smallest round figure that re-arms the pendant at every pose of
+//!   the built-in plans ([`OVERSHOOT_DEG`]);
 //! - the still window and its threshold, and the move that arms the next capture:
 //!   the pendant's own (core's `StillnessConfig` and `ProcedureConfig` defaults);
-//!   the sensor period: the firmware's read period, [`SAMPLE_PERIOD_S`].
+//!   the sensor period: the pendant's 20 Hz read rate, [`SAMPLE_PERIOD_S`]; the
+//!   sensor's range: mode 4's ±10° (core's `MEMS_RANGE_DEG`).
 
 use crate::args::{CountIn, RealIn};
 use crate::error::CliError;
 use clap::Args;
 use serde::Serialize;
-use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS};
-use zerocal_core::plan::time::{shortest_tour, SessionPath, SessionTime, TimeModel};
+use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
+use zerocal_core::plan::time::{shortest_tour, Mounting, SessionPath, SessionTime, TimeModel};
 use zerocal_core::procedure::ProcedureConfig;
-use zerocal_core::stage2::{FitConfig, Stage2Model};
+use zerocal_core::stage2::{Stage2Model, MEMS_RANGE_DEG};
 use zerocal_core::stillness::StillnessConfig;
 use zerocal_profile::Profile;
 
@@ -48,23 +60,32 @@ pub const DEFAULT_ACCEL_DEG_S2: f64 = 1.2 * 180.0 / std::f64::consts::PI;
 /// it, and `--settle-s` takes the measured figure.
 pub const DEFAULT_SETTLE_S: f64 = 1.0;
 
-/// Clipping the pendant on, at each of its two mountings (the upper arm; from there to
-/// the flange) (s): a stated default.
+/// Each of the pendant's three mountings (s): clipping it to the upper arm, moving it
+/// to the flange, taking it off to the bench for the closing reversal. A stated
+/// default.
 pub const DEFAULT_REMOUNT_S: f64 = 60.0;
 
 /// An operator's OK on the pendant at a stop of the program, and the restart (s): a
 /// stated default.
 pub const OPERATOR_OK_S: f64 = 10.0;
 
-/// How far short of a target a joint turns round to arrive in its approach direction
+/// How far below a pose every joint starts the last move to the pose's first capture
 /// (deg): a stated default, 50× the order of gear backlash named in the controller
 /// leads (0.01-0.02°, `../shared/CONTROLLERS.md`, not verified).
 pub const APPROACH_DEG: f64 = 1.0;
 
-/// The pendant's sensor period (s): the firmware reads the SCL3300 every 100 ms
-/// (`firmware/src/tasks/sensor.rs`, `READ_PERIOD`; the README says 20 Hz): the slower
-/// figure, so the dwell is not too short.
-pub const SAMPLE_PERIOD_S: f64 = 0.1;
+/// How far above a pose every joint goes before coming back to it for the pose's
+/// second capture (deg). The excursion must also re-arm the pendant: move its reading
+/// by [`ARM_MARGIN`] × its 0.2° re-arm threshold, 0.4°. 4° does at every pose of every
+/// built-in profile's default plan and at stage 1; the smallest change is 0.49° (a
+/// FANUC M-20iA pose, whose J2/J3 coupling moves the forearm little when J2 and J3 turn
+/// together), against 0.36° at 3° and 0.23° at 2° (`overshoot_rearms_every_builtin_plan`).
+/// Where a plan of the user's is not re-armed, the program stops for an OK instead.
+pub const OVERSHOOT_DEG: f64 = 4.0;
+
+/// The pendant's sensor period (s): the SCL3300 is read at 20 Hz (issue 15's decision:
+/// 40 samples of its 10 Hz output make one 2 s capture; core's `MEMS_CAPTURE_NOISE_DEG`).
+pub const SAMPLE_PERIOD_S: f64 = 0.05;
 
 /// A move arms the next capture if the predicted reading leaves the last capture by
 /// this many times the pendant's re-arm threshold: the margin covers the offsets not
@@ -76,12 +97,13 @@ pub const ARM_MARGIN: f64 = 2.0;
 /// arrives (stated margin, for the arm's vibration and the sensor noise).
 pub const EARLY_STILL_MARGIN: f64 = 2.0;
 
-/// How far a mounting pose turns one joint from the pose that follows it (deg): enough
-/// to tilt the pendant past its range (stated).
+/// How far a mounting pose turns joint 2 from the stage-1 pose (deg): enough to tilt
+/// the pendant past its range on the upper arm and on the flange (stated).
 pub const MOUNT_TURN_DEG: f64 = 45.0;
 
-/// A mounting pose's predicted reading must be at least this far past the pendant's
-/// range (deg; stated margin for the base tilt and the bracket's seating).
+/// A mounting pose's predicted reading must be at least this far past the sensor's
+/// range, mode 4's ±10° (deg; stated margin for the base tilt, the sensor's offset and
+/// the bracket's seating).
 pub const MOUNT_MARGIN_DEG: f64 = 5.0;
 
 /// The session options `zerocal plan` and `zerocal program` share.
@@ -96,8 +118,9 @@ pub struct TimingArgs {
     /// Range: [0, 60] s.
     #[arg(long, default_value_t = DEFAULT_SETTLE_S, value_parser = RealIn::closed(0.0, 60.0, "s"))]
     pub settle_s: f64,
-    /// Time to clip the pendant on, at each of its two mountings (the upper arm, then
-    /// the flange) (s; stated default). Range: [0, 3600] s.
+    /// Time for each of the pendant's three mountings (clipped to the upper arm, moved
+    /// to the flange, taken off to the bench for the closing reversal) (s; stated
+    /// default). Range: [0, 3600] s.
     #[arg(long, default_value_t = DEFAULT_REMOUNT_S, value_parser = RealIn::closed(0.0, 3600.0, "s"))]
     pub remount_s: f64,
 }
@@ -126,11 +149,9 @@ pub enum SpeedSource {
 ///
 /// The pendant captures by itself once it has moved and then stays still (core's
 /// procedure): clipped on at a pose it reads within its range, it would capture that
-/// pose before the robot goes where the session wants it, and the clipping may push
-/// the joints inside their backlash. So the robot stands at a *mounting pose* while
-/// the pendant is clipped on, a pose that tilts the pendant past its range (no
-/// capture there), then goes to the next capture pose, arriving in the approach
-/// direction ([`mount_poses`]).
+/// pose before the robot goes where the session wants it. So the robot stands at a
+/// *mounting pose* while the pendant is clipped on or taken off, a pose that tilts the
+/// pendant past its range ([`mount_poses`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SessionPoses {
     /// Where the pendant is clipped to the upper arm.
@@ -139,41 +160,44 @@ pub struct SessionPoses {
     pub stage1: [f64; JOINTS],
     /// The same with joint 1 turned by 180° (in the model's direction).
     pub turned: [f64; JOINTS],
-    /// Where the pendant is clipped to the flange.
+    /// Where the pendant is moved to the flange.
     pub mount2: [f64; JOINTS],
     /// The stage-2 poses, in the plan's order.
     pub poses: Vec<[f64; JOINTS]>,
+    /// Where the robot parks while the pendant is taken off for the closing reversal:
+    /// the flange's mounting pose (the operator reached the flange there, and the
+    /// pendant reads past its range there, so it cannot capture while it is taken off).
+    pub park: [f64; JOINTS],
 }
 
 impl SessionPoses {
     /// From model angles (rad) through the profile's controller conventions; the
-    /// mounting poses are set by [`with_mounts`](Self::with_mounts) once the approach
-    /// directions are known.
+    /// mounting poses are set by [`with_mounts`](Self::with_mounts).
     pub fn new(profile: &Profile, poses_rad: &[[f64; JOINTS]]) -> Self {
         let q1 = profile.stage1_joints_rad;
         let mut turned = q1;
         turned[0] += std::f64::consts::PI;
         let stage1 = profile.shown_deg(&q1);
         let poses: Vec<[f64; JOINTS]> = poses_rad.iter().map(|q| profile.shown_deg(q)).collect();
+        let first = poses.first().copied().unwrap_or(stage1);
         SessionPoses {
             mount1: stage1,
             stage1,
             turned: profile.shown_deg(&turned),
-            mount2: poses.first().copied().unwrap_or(stage1),
+            mount2: first,
             poses,
+            park: first,
         }
     }
 
-    /// The same with the mounting poses ([`mount_poses`]).
+    /// The same with the mounting poses ([`mount_poses`]); the robot parks at the
+    /// flange's.
     ///
     /// # Errors
     /// No mounting pose inside the joint limits tilts the pendant past its range.
-    pub fn with_mounts(
-        mut self,
-        profile: &Profile,
-        approach: &[i8; JOINTS],
-    ) -> Result<Self, CliError> {
-        (self.mount1, self.mount2) = mount_poses(&Pendant::new(profile), &self, approach)?;
+    pub fn with_mounts(mut self, profile: &Profile) -> Result<Self, CliError> {
+        (self.mount1, self.mount2) = mount_poses(&Pendant::new(profile), &self)?;
+        self.park = self.mount2;
         Ok(self)
     }
 
@@ -182,18 +206,13 @@ impl SessionPoses {
     ///
     /// # Errors
     /// As [`with_mounts`](Self::with_mounts).
-    pub fn reordered(
-        &self,
-        profile: &Profile,
-        order: &[usize],
-        approach: &[i8; JOINTS],
-    ) -> Result<Self, CliError> {
+    pub fn reordered(&self, profile: &Profile, order: &[usize]) -> Result<Self, CliError> {
         let mut s = self.clone();
         s.poses = order
             .iter()
             .filter_map(|&i| self.poses.get(i).copied())
             .collect();
-        s.with_mounts(profile, approach)
+        s.with_mounts(profile)
     }
 
     /// Core's view of the session.
@@ -204,14 +223,26 @@ impl SessionPoses {
             turned: self.turned,
             mount2: self.mount2,
             poses: &self.poses,
+            park: self.park,
         }
     }
 
-    /// Every pose the pendant captures at, each reached in the approach direction:
-    /// stage 1's two, then stage 2's.
-    pub fn captures(&self) -> Vec<[f64; JOINTS]> {
-        let mut v = vec![self.stage1, self.turned];
-        v.extend_from_slice(&self.poses);
+    /// Every pose the pendant captures at, once each (each is captured twice): stage 1's
+    /// two, then stage 2's, with what each is.
+    pub fn capture_poses(&self) -> Vec<(String, [f64; JOINTS])> {
+        let mut v = vec![
+            ("the stage-1 pose".to_owned(), self.stage1),
+            (
+                "the stage-1 pose with joint 1 turned by 180 deg".to_owned(),
+                self.turned,
+            ),
+        ];
+        v.extend(
+            self.poses
+                .iter()
+                .enumerate()
+                .map(|(i, q)| (format!("stage-2 pose {}", i + 1), *q)),
+        );
         v
     }
 }
@@ -230,15 +261,11 @@ pub struct Timing {
 }
 
 impl Timing {
-    /// The model for `profile` with the options and approach directions.
+    /// The model for `profile` with the options.
     ///
     /// # Errors
     /// A setting core's model refuses (cannot come from the options' ranges).
-    pub fn new(
-        profile: &Profile,
-        args: &TimingArgs,
-        approach: [i8; JOINTS],
-    ) -> Result<Self, CliError> {
+    pub fn new(profile: &Profile, args: &TimingArgs) -> Result<Self, CliError> {
         let mut max_speed_deg_s = [DEFAULT_JOINT_SPEED_DEG_S; JOINTS];
         let mut speed_source = [SpeedSource::StatedDefault; JOINTS];
         for (k, j) in profile.joints.iter().enumerate().take(JOINTS) {
@@ -252,8 +279,8 @@ impl Timing {
         let model = TimeModel {
             speed_deg_s: max_speed_deg_s.map(|v| v * fraction),
             accel_deg_s2: [DEFAULT_ACCEL_DEG_S2; JOINTS],
-            approach,
             approach_deg: APPROACH_DEG,
+            overshoot_deg: OVERSHOOT_DEG,
             settle_s: args.settle_s,
             window_s: f64::from(stillness.window_ms) / 1000.0,
             sample_period_s: SAMPLE_PERIOD_S,
@@ -301,113 +328,117 @@ pub fn check_limits(
     Ok(())
 }
 
-/// The two mounting poses: the stage-1 pose with joint 2 turned by
-/// [`MOUNT_TURN_DEG`] (the upper-arm pendant tilts with it), and the first stage-2
-/// pose with joint 5, 3, 4 or 6 turned by as much (the first that fits): each inside
-/// the joint limits and tilting the pendant at least [`MOUNT_MARGIN_DEG`] past its
-/// range, so that it cannot capture there. The turn goes against the joint's approach
-/// direction first, so that the move on to the capture pose arrives the right way.
+/// Refuses a capture pose without room on both sides of the backlash: the point
+/// [`APPROACH_DEG`] below it and the point [`OVERSHOOT_DEG`] above it on every joint
+/// must be inside the limits, or that pose cannot be captured from both sides.
 ///
 /// # Errors
-/// No such pose inside the limits (naming the joints tried).
+/// The first such pose, naming the side, the joint, its value and the limits.
+pub fn check_room(profile: &Profile, poses: &SessionPoses) -> Result<(), CliError> {
+    for (what, q) in poses.capture_poses() {
+        check_limits(profile, &q, &what)?;
+        for (side, d) in [("below", -APPROACH_DEG), ("above", OVERSHOOT_DEG)] {
+            let p = q.map(|v| v + d);
+            check_limits(
+                profile,
+                &p,
+                &format!(
+                    "{what} cannot be captured from {side} (every pose is captured from both sides of the backlash, reached from {} deg {side} on every joint)",
+                    d.abs()
+                ),
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// The limits (model degrees) of joints 3-6 the planner keeps its poses inside:
+/// `limits_deg` less the room the two captures of a pose need, the model angles the
+/// approach from [`APPROACH_DEG`] below and the overshoot to [`OVERSHOOT_DEG`] above
+/// (controller degrees, on every joint) reach through the profile's signs and
+/// coupling. So every planned pose passes [`check_room`] on joints 3-6 (joints 1 and
+/// 2 stand at the stage-1 pose, which the planner does not choose).
+pub fn planner_limits(
+    profile: &Profile,
+    limits_deg: &[(f64, f64); WRIST_JOINTS],
+) -> [(f64, f64); WRIST_JOINTS] {
+    let origin = profile.model_rad(&[0.0; JOINTS]);
+    let mut below = [0.0f64; WRIST_JOINTS];
+    let mut above = [0.0f64; WRIST_JOINTS];
+    for d in [-APPROACH_DEG, OVERSHOOT_DEG] {
+        let m = profile.model_rad(&[d; JOINTS]);
+        for k in 0..WRIST_JOINTS {
+            let change = (m[k + 2] - origin[k + 2]).to_degrees();
+            above[k] = above[k].max(change);
+            below[k] = below[k].max(-change);
+        }
+    }
+    core::array::from_fn(|k| (limits_deg[k].0 + below[k], limits_deg[k].1 - above[k]))
+}
+
+/// The two mounting poses, each inside the joint limits and tilting the pendant at
+/// least [`MOUNT_MARGIN_DEG`] past mode 4's ±10°, so that it cannot capture there:
+///
+/// - for the upper arm, the stage-1 pose with joint 2 turned by [`MOUNT_TURN_DEG`]
+///   (downwards first);
+/// - for the flange, the first stage-2 pose with joint 2 where the first mounting
+///   pose has it, and if that leaves the flange within the range, joint 5, 3, 4 or 6
+///   turned by as much too. The pendant is moved from the upper arm to the flange there: both
+///   places read past the range, so it can capture neither before it is on the flange (its last reading on the
+///   upper arm could otherwise look like a still pose once the half turn has moved it
+///   by the base tilt).
+///
+/// # Errors
+/// No such pair inside the limits, naming joint 2.
 pub fn mount_poses(
     pendant: &Pendant<'_>,
     s: &SessionPoses,
-    approach: &[i8; JOINTS],
 ) -> Result<([f64; JOINTS], [f64; JOINTS]), CliError> {
     let profile = pendant.profile;
-    let range = FitConfig::<f64>::default().sensor_range_rad.to_degrees() + MOUNT_MARGIN_DEG;
+    let range = MEMS_RANGE_DEG + MOUNT_MARGIN_DEG;
     let past = |t: Tilt<f64>| t.x_rad.to_degrees().abs().max(t.y_rad.to_degrees().abs()) > range;
-    // The pose and the point short of it on every joint (where a move to it may turn
-    // round) inside the limits.
-    let inside = |q: &[f64; JOINTS]| {
-        let short: [f64; JOINTS] =
-            core::array::from_fn(|k| q[k] - f64::from(approach[k]) * APPROACH_DEG);
-        [q, &short]
-            .iter()
-            .all(|p| profile.outside_limits(&profile.model_rad(p)).is_none())
-    };
-    let find =
-        |from: &[f64; JOINTS], joints: &[usize], read: &dyn Fn(&[f64; JOINTS]) -> Tilt<f64>| {
-            for &k in joints {
-                let back = -f64::from(approach[k]);
-                for sign in [back, -back] {
-                    let mut q = *from;
-                    q[k] += sign * MOUNT_TURN_DEG;
-                    if inside(&q) && past(read(&q)) {
-                        return Some(q);
-                    }
-                }
-            }
-            None
-        };
-    let names = |joints: &[usize]| {
-        joints
-            .iter()
-            .map(|&k| joint_label(profile, k))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let m1 = find(&s.stage1, &[1], &|q: &[f64; JOINTS]| pendant.upper_reading(q)).ok_or_else(|| {
-        CliError::Refused(format!(
-            "no mounting pose for the upper arm: {} turned {MOUNT_TURN_DEG} deg either way from the stage-1 pose leaves its limits or keeps the pendant within its {range:.0} deg",
-            names(&[1])
-        ))
-    })?;
+    let inside = |q: &[f64; JOINTS]| profile.outside_limits(&profile.model_rad(q)).is_none();
     let first = s.poses.first().copied().unwrap_or(s.stage1);
-    let order = [4, 2, 3, 5];
-    let m2 = find(&first, &order, &|q: &[f64; JOINTS]| pendant.reading(q)).ok_or_else(|| {
-        CliError::Refused(format!(
-            "no mounting pose for the flange: {} turned {MOUNT_TURN_DEG} deg either way from the first stage-2 pose leaves the limits or keeps the pendant within {range:.0} deg",
-            names(&order)
-        ))
-    })?;
-    Ok((m1, m2))
-}
-
-/// Each joint's approach direction: +1 (from below) unless a target's approach point
-/// on that joint would leave its limits and −1 keeps it inside.
-///
-/// # Errors
-/// A joint whose approach point leaves the limits either way, named with the target,
-/// the value and the limits.
-pub fn approach_directions(
-    profile: &Profile,
-    targets: &[[f64; JOINTS]],
-) -> Result<[i8; JOINTS], CliError> {
-    let mut dirs = [1i8; JOINTS];
-    for k in 0..JOINTS {
-        let fits = |dir: i8| -> Result<(), CliError> {
-            for (i, t) in targets.iter().enumerate() {
-                let mut p = *t;
-                p[k] -= f64::from(dir) * APPROACH_DEG;
-                check_limits(
-                    profile,
-                    &p,
-                    &format!(
-                        "the approach to capture pose {} ({APPROACH_DEG} deg short of it on {}, from {})",
-                        i + 1,
-                        joint_label(profile, k),
-                        if dir > 0 { "below" } else { "above" }
-                    ),
-                )?;
+    // Joint 2 alone, then with joint 5, 3, 4 or 6 turned as well (a controller whose
+    // joint 3 is measured from the horizontal, FANUC's, keeps the forearm's tilt when
+    // joint 2 alone turns).
+    let extra: [Option<(usize, f64)>; 9] = [
+        None,
+        Some((4, -1.0)),
+        Some((4, 1.0)),
+        Some((2, -1.0)),
+        Some((2, 1.0)),
+        Some((3, -1.0)),
+        Some((3, 1.0)),
+        Some((5, -1.0)),
+        Some((5, 1.0)),
+    ];
+    for sign in [-1.0, 1.0] {
+        let mut m1 = s.stage1;
+        m1[1] += sign * MOUNT_TURN_DEG;
+        if !(inside(&m1) && past(pendant.upper_reading(&m1))) {
+            continue;
+        }
+        for e in extra {
+            let mut m2 = first;
+            m2[1] = m1[1];
+            if let Some((k, s)) = e {
+                m2[k] += s * MOUNT_TURN_DEG;
             }
-            Ok(())
-        };
-        match fits(1) {
-            Ok(()) => dirs[k] = 1,
-            Err(below) => match fits(-1) {
-                Ok(()) => dirs[k] = -1,
-                Err(_) => return Err(below),
-            },
+            if inside(&m2) && past(pendant.upper_reading(&m2)) && past(pendant.reading(&m2)) {
+                return Ok((m1, m2));
+            }
         }
     }
-    Ok(dirs)
+    Err(CliError::Refused(format!(
+        "no mounting poses: {} turned {MOUNT_TURN_DEG} deg either way from the stage-1 pose (with the first stage-2 pose's joints 3-6, one of them turned as much, for the flange) leaves the limits or keeps the pendant within {range:.0} deg; nothing was written",
+        joint_label(profile, 1)
+    )))
 }
 
-/// The pendant's view of a move: whether it arms the next capture, and whether a
+/// The pendant's view of a path: whether it arms the next capture, and whether a
 /// stretch of it looks still long enough to be captured before the robot arrives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LegCheck {
     /// The predicted reading leaves the last capture by the re-arm threshold (with
     /// [`ARM_MARGIN`]).
@@ -415,10 +446,13 @@ pub struct LegCheck {
     /// After arming, a stretch as long as the still window stays within the stillness
     /// threshold (with [`EARLY_STILL_MARGIN`]) before the robot arrives.
     pub early_still: bool,
+    /// The largest change of the predicted reading from the last capture along the
+    /// path, either axis (deg).
+    pub largest_change_deg: f64,
 }
 
-/// The flange pendant as the planner sees it: readings predicted at zero offsets on a
-/// level base, in the SCL3300's `axis` convention.
+/// The pendant as the planner sees it: readings predicted at zero offsets on a level
+/// base, in the SCL3300's `axis` convention, on the flange or on the upper arm.
 #[derive(Clone, Debug)]
 pub struct Pendant<'a> {
     profile: &'a Profile,
@@ -448,7 +482,7 @@ fn fraction_at(t: f64, total_s: f64, v: f64, a: f64, d: f64) -> f64 {
 }
 
 impl<'a> Pendant<'a> {
-    /// The pendant on `profile`'s flange.
+    /// The pendant on `profile`.
     pub fn new(profile: &'a Profile) -> Self {
         let procedure = ProcedureConfig::<f64>::default();
         Pendant {
@@ -482,10 +516,19 @@ impl<'a> Pendant<'a> {
             .predict(&self.profile.model_rad(pose_deg), &[0.0; 4])
     }
 
+    /// The predicted reading where the pendant is mounted.
+    pub fn reading_on(&self, mounting: Mounting, pose_deg: &[f64; JOINTS]) -> Tilt<f64> {
+        match mounting {
+            Mounting::UpperArm => self.upper_reading(pose_deg),
+            Mounting::Flange => self.reading(pose_deg),
+        }
+    }
+
     /// Readings every sensor period along one move (the last sample at arrival).
     fn samples(
         &self,
         time: &TimeModel<f64>,
+        mounting: Mounting,
         from: &[f64; JOINTS],
         to: &[f64; JOINTS],
         out: &mut Vec<Tilt<f64>>,
@@ -506,31 +549,43 @@ impl<'a> Pendant<'a> {
             let t = (i as f64 * time.sample_period_s).min(total);
             let s = fraction_at(t, total, v, a, d);
             let p: [f64; JOINTS] = core::array::from_fn(|k| from[k] + (to[k] - from[k]) * s);
-            out.push(self.reading(&p));
+            out.push(self.reading_on(mounting, &p));
         }
     }
 
-    /// What the pendant makes of the move `from` → `to` (through the approach point
-    /// if there is one), `from` being where it last captured.
-    pub fn leg(&self, time: &TimeModel<f64>, from: &[f64; JOINTS], to: &[f64; JOINTS]) -> LegCheck {
+    /// What the pendant makes of driving `path` (the moves through its points in
+    /// turn), its first point being where it last captured.
+    pub fn leg(
+        &self,
+        time: &TimeModel<f64>,
+        mounting: Mounting,
+        path: &[[f64; JOINTS]],
+    ) -> LegCheck {
         let mut samples = Vec::new();
-        match time.via(from, to) {
-            Some(v) => {
-                self.samples(time, from, &v, &mut samples);
-                self.samples(time, &v, to, &mut samples);
-            }
-            None => self.samples(time, from, to, &mut samples),
+        for w in path.windows(2) {
+            self.samples(time, mounting, &w[0], &w[1], &mut samples);
         }
-        let last = self.reading(from);
-        let arm_at = samples.iter().position(|r| {
+        let Some(start) = path.first() else {
+            return LegCheck {
+                armed: false,
+                early_still: false,
+                largest_change_deg: 0.0,
+            };
+        };
+        let last = self.reading_on(mounting, start);
+        let change = |r: &Tilt<f64>| {
             let m = r.minus(&last);
-            m.x_rad.abs() > ARM_MARGIN * self.rearm_rad
-                || m.y_rad.abs() > ARM_MARGIN * self.rearm_rad
-        });
+            m.x_rad.abs().max(m.y_rad.abs())
+        };
+        let largest_change_deg = samples.iter().map(change).fold(0.0, f64::max).to_degrees();
+        let arm_at = samples
+            .iter()
+            .position(|r| change(r) > ARM_MARGIN * self.rearm_rad);
         let Some(arm_at) = arm_at else {
             return LegCheck {
                 armed: false,
                 early_still: false,
+                largest_change_deg,
             };
         };
         // Samples spanning the still window, all within the threshold, before arrival.
@@ -560,6 +615,7 @@ impl<'a> Pendant<'a> {
         LegCheck {
             armed: true,
             early_still,
+            largest_change_deg,
         }
     }
 }
@@ -569,9 +625,9 @@ impl<'a> Pendant<'a> {
 const EARLY_PENALTY_S: f64 = 1e6;
 
 /// The order of the stage-2 poses that makes the session short (core's
-/// [`shortest_tour`] on the legs' robot times, an operator's OK where a move does not
-/// arm the next capture, and moves that could be captured early avoided): indices
-/// into `poses.poses`.
+/// [`shortest_tour`] on the robot times from one pose's second capture to the next
+/// pose's first, an operator's OK where that does not arm the next capture, and moves
+/// that could be captured early avoided): indices into `poses.poses`.
 pub fn time_order(
     pendant: &Pendant<'_>,
     time: &TimeModel<f64>,
@@ -579,8 +635,9 @@ pub fn time_order(
 ) -> Vec<usize> {
     let n = poses.poses.len();
     let leg = |a: &[f64; JOINTS], b: &[f64; JOINTS]| {
-        let check = pendant.leg(time, a, b);
-        let mut c = time.leg_s(a, b);
+        let path = time.first_capture_path(a, b);
+        let check = pendant.leg(time, Mounting::Flange, &path);
+        let mut c = time.path_s(&path);
         if !check.armed {
             c += time.operator_ok_s;
         }
@@ -594,7 +651,7 @@ pub fn time_order(
     let start: Vec<f64> = poses
         .poses
         .iter()
-        .map(|q| time.leg_s(&poses.turned, q))
+        .map(|q| time.path_s(&time.first_capture_path(&poses.turned, q)))
         .collect();
     let cost: Vec<Vec<f64>> = poses
         .poses
@@ -617,7 +674,7 @@ pub fn session_time(
     time: &TimeModel<f64>,
     poses: &SessionPoses,
 ) -> SessionTime<f64> {
-    time.session_time(&poses.path(), |a, b| !pendant.leg(time, a, b).armed)
+    time.session_time(&poses.path(), |m, p| !pendant.leg(time, m, p).armed)
 }
 
 #[cfg(test)]
@@ -646,40 +703,158 @@ mod tests {
     #[test]
     fn small_moves_do_not_arm_the_next_capture() {
         let profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
-        let t = Timing::new(&profile, &TimingArgs::default(), [1; JOINTS])
-            .unwrap_or_else(|e| panic!("{e}"));
+        let t = Timing::new(&profile, &TimingArgs::default()).unwrap_or_else(|e| panic!("{e}"));
         let pendant = Pendant::new(&profile);
         let mut a = profile.shown_deg(&profile.stage1_joints_rad);
         a[2] = -90.0;
         let mut b = a;
         b[5] += 0.05;
-        assert!(!pendant.leg(&t.model, &a, &b).armed);
+        let f = Mounting::Flange;
+        assert!(!pendant.leg(&t.model, f, &[a, b]).armed);
         b = a;
         b[4] += 20.0;
-        let check = pendant.leg(&t.model, &a, &b);
+        let check = pendant.leg(&t.model, f, &[a, b]);
         assert!(check.armed && !check.early_still, "{check:?}");
-        // Either way round: the way back arrives against A5's approach direction and
-        // goes through the approach point, still arming.
-        assert!(pendant.leg(&t.model, &b, &a).armed);
+        assert!(
+            pendant
+                .leg(&t.model, f, &t.model.first_capture_path(&b, &a))
+                .armed
+        );
+        // Out and back by a few hundredths: not armed either.
+        let mut c = a;
+        c[4] += 0.05;
+        assert!(!pendant.leg(&t.model, f, &[a, c, a]).armed);
+    }
+
+    /// The overshoot re-arms the pendant between the two captures of every pose of
+    /// every built-in profile's default plan, and at stage 1 (on the upper arm): the
+    /// reading leaves the first capture by more than twice the 0.2° re-arm threshold,
+    /// with nothing still for a window before the robot is back. Smaller overshoots
+    /// would not do everywhere: the smallest change at each is printed.
+    #[test]
+    fn overshoot_rearms_every_builtin_plan() {
+        let figures = [1.0, 2.0, 3.0, OVERSHOOT_DEG];
+        let mut smallest: [(f64, String); 4] =
+            core::array::from_fn(|_| (f64::INFINITY, String::new()));
+        for name in zerocal_profile::builtin_names() {
+            let profile = zerocal_profile::builtin(name).unwrap_or_else(|e| panic!("{e}"));
+            let plan = match crate::program::default_plan(name, &TimingArgs::default()) {
+                Ok(p) => p,
+                // The planner refuses the UR5e (joints 2-4 parallel).
+                Err(_) if name == "ur5e" => continue,
+                Err(e) => panic!("{name}: {e}"),
+            };
+            let t = Timing::new(&profile, &TimingArgs::default()).unwrap_or_else(|e| panic!("{e}"));
+            let pendant = Pendant::new(&profile);
+            let poses = SessionPoses::new(&profile, &plan);
+            let cases = [
+                (Mounting::UpperArm, poses.stage1),
+                (Mounting::UpperArm, poses.turned),
+            ]
+            .into_iter()
+            .chain(poses.poses.iter().map(|q| (Mounting::Flange, *q)));
+            for (i, (m, q)) in cases.enumerate() {
+                let what = match i {
+                    0 => format!("{name} stage 1"),
+                    1 => format!("{name} stage 1 turned"),
+                    _ => format!("{name} stage-2 pose {}", i - 1),
+                };
+                for (f, low) in figures.iter().zip(smallest.iter_mut()) {
+                    let mut model = t.model;
+                    model.overshoot_deg = *f;
+                    let c = pendant.leg(&model, m, &model.second_capture_path(&q));
+                    if c.largest_change_deg < low.0 {
+                        *low = (c.largest_change_deg, what.clone());
+                    }
+                    if *f == OVERSHOOT_DEG {
+                        assert!(c.armed && !c.early_still, "{what}: {c:?}");
+                    }
+                }
+            }
+        }
+        for (f, (d, at)) in figures.iter().zip(&smallest) {
+            println!("overshoot {f} deg: smallest reading change {d:.3} deg ({at})");
+        }
+        // Re-armed at the chosen figure, not at 3°.
+        assert!(smallest[3].0 > ARM_MARGIN * 0.2, "{:?}", smallest[3]);
+        assert!(
+            smallest[2].0 <= ARM_MARGIN * 0.2 * 1.2,
+            "{:?}: 3 deg would do",
+            smallest[2]
+        );
+    }
+
+    /// The planner's limits leave the approach's and the overshoot's room, through the
+    /// controller's signs and coupling: a pose at a shrunk limit has its two points at
+    /// the profile's limit at most.
+    #[test]
+    fn planner_limits_leave_room_for_both_sides() {
+        for name in ["kuka-kr16", "fanuc-m20ia", "abb-irb140"] {
+            let profile = zerocal_profile::builtin(name).unwrap_or_else(|e| panic!("{e}"));
+            let full: [(f64, f64); WRIST_JOINTS] = core::array::from_fn(|k| {
+                (profile.joints[k + 2].min_deg, profile.joints[k + 2].max_deg)
+            });
+            let shrunk = planner_limits(&profile, &full);
+            for k in 0..WRIST_JOINTS {
+                // At least the approach and the overshoot, at most twice (J2/J3 coupled).
+                let (lo, hi) = (shrunk[k].0 - full[k].0, full[k].1 - shrunk[k].1);
+                assert!(
+                    (APPROACH_DEG - 1e-9..=2.0 * OVERSHOOT_DEG + 1e-9).contains(&lo)
+                        && (APPROACH_DEG - 1e-9..=2.0 * OVERSHOOT_DEG + 1e-9).contains(&hi),
+                    "{name} j{}: {lo} {hi}",
+                    k + 3
+                );
+            }
+            // Every corner of the shrunk box, at the stage-1 joints 1-2, has room.
+            for corner in 0..16u32 {
+                let mut q = profile.stage1_joints_rad;
+                for k in 0..WRIST_JOINTS {
+                    let (lo, hi) = shrunk[k];
+                    q[k + 2] = if corner >> k & 1 == 1 { hi } else { lo }.to_radians();
+                }
+                let shown = profile.shown_deg(&q);
+                for d in [-APPROACH_DEG, OVERSHOOT_DEG] {
+                    let m = profile.model_rad(&shown.map(|v| v + d));
+                    for (k, (q, j)) in m.iter().zip(&profile.joints).enumerate().skip(2) {
+                        let v = q.to_degrees();
+                        assert!(
+                            v >= j.min_deg - 1e-9 && v <= j.max_deg + 1e-9,
+                            "{name} corner {corner} j{}: {v}",
+                            k + 1
+                        );
+                    }
+                }
+            }
+        }
     }
 
     #[test]
-    fn approach_turns_round_at_a_limit() {
+    fn a_pose_without_room_on_one_side_is_refused() {
         let profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
-        // A5 at its lower limit, -130: from below it would start at -131, outside.
-        let mut t = profile.shown_deg(&profile.stage1_joints_rad);
-        t[4] = -130.0;
-        let dirs = approach_directions(&profile, &[t]).unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(dirs, [1, 1, 1, 1, -1, 1]);
-        // Both limits within the approach distance: refused, naming A5 and the limit.
-        let mut narrow = profile.clone();
-        narrow.joints[4].min_deg = -130.0;
-        narrow.joints[4].max_deg = -129.5;
-        let e = approach_directions(&narrow, &[t]).unwrap_err();
+        let mut poses = SessionPoses::new(&profile, &[profile.stage1_joints_rad]);
+        assert!(check_room(&profile, &poses).is_ok());
+        // A5 at -129.5: 1 deg below it is past the -130 limit.
+        poses.poses[0][4] = -129.5;
+        let e = check_room(&profile, &poses).unwrap_err();
         assert_eq!(e.exit_code(), 3);
+        let m = e.to_string();
         assert!(
-            e.to_string().contains("A5 (joint 5)") && e.to_string().contains("-130"),
-            "{e}"
+            m.contains("stage-2 pose 1")
+                && m.contains("from below")
+                && m.contains("A5 (joint 5)")
+                && m.contains("-130..130"),
+            "{m}"
+        );
+        // At 127 the overshoot reaches 131.
+        poses.poses[0][4] = 127.0;
+        let m = check_room(&profile, &poses).unwrap_err().to_string();
+        assert!(m.contains("from above") && m.contains("131.000"), "{m}");
+        // Outside the limits itself: named with its own value.
+        poses.poses[0][4] = 131.5;
+        let m = check_room(&profile, &poses).unwrap_err().to_string();
+        assert!(
+            m.starts_with("refused: stage-2 pose 1: A5") && m.contains("131.500"),
+            "{m}"
         );
     }
 }

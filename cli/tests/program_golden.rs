@@ -129,8 +129,10 @@ fn one_program_per_family_matches_its_golden_file() {
     let _ = std::fs::remove_dir_all(&tmp);
 }
 
-/// The golden files themselves read back through the readers: the stage-2 captures
-/// are the plan's eight poses plus stage 1's two.
+/// The golden files themselves read back through the readers: every pose (stage 1's
+/// two and the plan's) captured twice, four operator stops (clip on, the OK after the
+/// half turn, to the flange, the closing reversal), the last one the closing
+/// reversal's, after the last move.
 #[test]
 fn golden_files_read_back() {
     let g = golden();
@@ -159,7 +161,14 @@ fn golden_files_read_back() {
         };
         assert_eq!(
             moves.iter().filter(|m| m.dwell_s.is_some()).count(),
-            2 + poses
+            2 * (2 + poses)
+        );
+        assert_eq!(moves.iter().filter(|m| m.stop.is_some()).count(), 4);
+        let last = moves.last().unwrap_or_else(|| panic!("file {i}: no moves"));
+        let closing = last.stop.clone().unwrap_or_default().to_lowercase();
+        assert!(
+            last.dwell_s.is_none() && closing.contains("closing reversal"),
+            "file {i}: {closing}"
         );
     }
     // INFORM's line ends are CRLF (docs/controllers/yaskawa.md [Y3]).

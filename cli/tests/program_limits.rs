@@ -43,6 +43,19 @@ fn kr16_plan_deg() -> Vec<[f64; 6]> {
         .collect()
 }
 
+fn run_kr16(plan: &Path, out: &Path) -> Output {
+    program(&[
+        "--robot",
+        "kuka-kr16",
+        "--format",
+        "krl",
+        "--plan",
+        plan.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
 #[test]
 fn a_pose_outside_the_limits_is_refused_naming_joint_and_limit() {
     let mut poses = kr16_plan_deg();
@@ -51,62 +64,68 @@ fn a_pose_outside_the_limits_is_refused_naming_joint_and_limit() {
     let plan = tmp("outside.csv");
     write_plan(&plan, &poses);
     let out = tmp("outside.src");
-    let run = program(&[
-        "--robot",
-        "kuka-kr16",
-        "--format",
-        "krl",
-        "--plan",
-        plan.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let run = run_kr16(&plan, &out);
     let err = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(3), "{err}");
     assert!(
-        err.contains("A5 (joint 5)") && err.contains("-130..130"),
+        err.contains("stage-2 pose 4") && err.contains("A5 (joint 5)") && err.contains("-130..130"),
         "{err}"
     );
     assert!(err.contains("131.5"), "{err}");
     assert!(!out.exists(), "a refused program must not be written");
 
-    // At the lower limit a pose is still fine: A5 is then approached from above, so
-    // that the approach point stays inside. A pose with A5 at -130 that the pendant
-    // can read (within ±9°), drawn seeded:
+    // Inside the limits but without room for one side of the backlash: A5 at -129.5
+    // cannot be reached from 1 deg below, nor at 127 from 4 deg above. A pose with A5
+    // there that the pendant can read (within ±8°), drawn seeded:
     let profile = zerocal_profile::builtin("kuka-kr16").unwrap();
     let pendant = zerocal_cli::timing::Pendant::new(&profile);
     let mut rng = zerocal_core::plan::Xorshift64Star::new(3);
-    poses[3] = loop {
-        let mut q = poses[3];
+    let base = poses[3];
+    let mut readable = |a5: f64| loop {
+        let mut q = base;
         for k in [2, 3, 5] {
             let j = &profile.joints[k];
-            q[k] = rng.uniform(j.min_deg, j.max_deg);
+            q[k] = rng.uniform(j.min_deg + 5.0, j.max_deg - 5.0);
         }
-        q[4] = -130.0;
+        q[4] = a5;
         let t = pendant.reading(&profile.shown_deg(&q.map(f64::to_radians)));
-        if t.x_rad.to_degrees().abs() < 9.0 && t.y_rad.to_degrees().abs() < 9.0 {
+        if t.x_rad.to_degrees().abs() < 8.0 && t.y_rad.to_degrees().abs() < 8.0 {
             break q;
         }
     };
-    write_plan(&plan, &poses);
-    let run = program(&[
-        "--robot",
-        "kuka-kr16",
-        "--format",
-        "krl",
-        "--plan",
-        plan.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert_eq!(
-        run.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
-    let text = std::fs::read_to_string(&out).unwrap();
-    assert!(text.contains("A5-"), "A5 approached from above:\n{text}");
+    for (a5, side, reaches) in [
+        (-129.5, "from below", "-130.500"),
+        (127.0, "from above", "131.000"),
+    ] {
+        poses[3] = readable(a5);
+        write_plan(&plan, &poses);
+        let run = run_kr16(&plan, &out);
+        let err = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(3), "{err}");
+        assert!(
+            err.contains("stage-2 pose 4 cannot be captured")
+                && err.contains(side)
+                && err.contains("A5 (joint 5)")
+                && err.contains(reaches)
+                && err.contains("-130..130"),
+            "{err}"
+        );
+        assert!(!out.exists());
+    }
+    // With room on both sides (-129 and 126: 1 deg below, 4 deg above): written.
+    for a5 in [-129.0, 126.0] {
+        poses[3] = readable(a5);
+        write_plan(&plan, &poses);
+        let run = run_kr16(&plan, &out);
+        assert_eq!(
+            run.status.code(),
+            Some(0),
+            "A5 at {a5}: {}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        assert!(out.exists());
+        std::fs::remove_file(&out).unwrap();
+    }
 }
 
 #[test]

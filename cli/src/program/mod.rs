@@ -1,22 +1,28 @@
 //! `zerocal program`: a robot program that drives the whole session, in the
-//! controller's own language: the stage-1 pose, joint 1 turned by 180° (an OK on the
-//! pendant takes that reading) and back, a stop to clip the pendant to the flange,
-//! then every stage-2 pose of the plan, in the plan's order (the pendant's).
+//! controller's own language, as issue 15's procedure has it: a stop to clip the
+//! pendant to the upper arm; the stage-1 pose captured twice, then joint 1 turned by
+//! 180° (an OK on the pendant arms the first reading) and that pose captured twice; a
+//! stop to move the pendant to the flange; every stage-2 pose of the plan captured
+//! twice, in the plan's order (the pendant's); then the robot parks and stops for the
+//! closing reversal on the bench. Every pose's first capture is reached with every
+//! joint moving in its positive direction, its second with every joint moving
+//! negative: the session averages the two, the middle of each gear's backlash.
 //!
 //! The session is built once, as a list of [`Step`]s in the controller's joint
 //! degrees ([`Session`]), and written by one module per family (`krl`, `rapid`, `tp`,
 //! `inform`, `val3`, `urscript`, syntax cited in `docs/controllers/`); [`read`] holds
-//! a small reader per family that takes the joint targets back out of a written
-//! program, for the tests.
+//! a small reader per family that takes the joint targets, waits and stops back out of
+//! a written program, for the tests.
 //!
 //! Physics the program respects (`crate::timing`): joint moves at a reduced speed
-//! with exact stops; every target reached with each joint moving in its approach
-//! direction (backlash); a dwell at every capture long enough for the arm to settle
-//! and the pendant's still window to complete; a stop with a message wherever the
-//! pendant needs an OK (stage 1's second reading, a move too small to arm the next
-//! capture); every point (approach points included) inside the profile's joint limits
-//! before anything is written; a header saying what the program does, at what speed,
-//! and that the cell must be checked for collisions with the pendant and its bracket.
+//! with exact stops; both sides of the backlash at every pose, each capture's last
+//! move moving every joint (by the approach distance up, or the overshoot down); a
+//! dwell at every capture long enough for the arm to settle and the pendant's still
+//! window to complete; a stop with a message wherever the pendant needs an OK (after
+//! the half turn, after a move too small to arm the next capture); room for both sides
+//! of every capture pose, and every point, inside the profile's joint limits before
+//! anything is written; a header saying what the program does, at what speed, and that
+//! the cell must be checked for collisions with the pendant and its bracket.
 
 pub mod inform;
 pub mod krl;
@@ -35,7 +41,9 @@ use clap::{Args, Parser};
 use std::fmt;
 use std::path::{Path, PathBuf};
 use zerocal_core::model::JOINTS;
+use zerocal_core::plan::time::Mounting;
 use zerocal_core::plan::time::SessionTime;
+use zerocal_core::stage2::MEMS_RANGE_DEG;
 use zerocal_profile::{Family, OffsetUnit, Profile};
 
 /// A controller family's program format.
@@ -156,16 +164,30 @@ pub enum Capture {
     Pose(usize),
 }
 
+/// Which side of the backlash a capture is taken from: every joint's last move before
+/// it is positive (`Below`) or negative (`Above`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// The pose's first capture: every joint arrives moving in its positive direction.
+    Below,
+    /// The pose's second capture: every joint arrives moving negative.
+    Above,
+}
+
 /// Why the robot goes to a point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Role {
-    /// Where the pendant is clipped on: `true` for the flange, `false` for the upper
-    /// arm (`crate::timing::mount_poses`).
-    Mount(bool),
-    /// Short of the next target on the joints that must turn round (backlash).
-    Approach,
-    /// A pose the pendant captures at.
-    Capture(Capture),
+    /// Where the pendant is clipped on (`crate::timing::mount_poses`).
+    Mount(Mounting),
+    /// Where the robot parks for the closing reversal (the flange's mounting pose).
+    Park,
+    /// Joint 1 turned by 180° (short of the turned pose by the approach distance).
+    Turn,
+    /// The point a capture's last move starts from: the approach distance below the
+    /// pose on every joint (`Below`), or the overshoot above it (`Above`).
+    Approach(Side),
+    /// A pose the pendant captures at, from one side.
+    Capture(Capture, Side),
 }
 
 /// One statement of the session.
@@ -204,23 +226,33 @@ pub struct Session {
     pub timing: Timing,
     /// The predicted robot time.
     pub time: SessionTime<f64>,
-    /// The stage-2 poses in the controller's degrees, in order.
+    /// The session's poses in the controller's degrees, stage 2's in order.
     pub poses: SessionPoses,
 }
 
 impl Session {
-    /// Each move's target with the dwell that follows it, if any: what a reader gives.
-    pub fn moves(&self) -> Vec<([f64; JOINTS], Option<f64>)> {
-        let mut out: Vec<([f64; JOINTS], Option<f64>)> = Vec::new();
+    /// Each move's target with the dwell and the stop that follow it, if any: what a
+    /// reader gives back (a stop's message lines joined by spaces).
+    pub fn moves(&self) -> Vec<ReadMove> {
+        let mut out: Vec<ReadMove> = Vec::new();
         for s in &self.steps {
             match s {
-                Step::Move { target_deg, .. } => out.push((*target_deg, None)),
+                Step::Move { target_deg, .. } => out.push(ReadMove {
+                    joints_deg: *target_deg,
+                    dwell_s: None,
+                    stop: None,
+                }),
                 Step::Dwell(t) => {
                     if let Some(last) = out.last_mut() {
-                        last.1 = Some(*t);
+                        last.dwell_s = Some(*t);
                     }
                 }
-                _ => {}
+                Step::Stop(lines) => {
+                    if let Some(last) = out.last_mut() {
+                        last.stop = Some(lines.join(" "));
+                    }
+                }
+                Step::Comment(_) => {}
             }
         }
         out
@@ -484,29 +516,23 @@ pub fn default_plan(robot: &str, timing: &TimingArgs) -> Result<Vec<[f64; JOINTS
     Ok(sp.plan.poses_rad.iter().copied().collect())
 }
 
-fn signed_list(profile: &Profile, approach: &[i8; JOINTS]) -> String {
-    (0..JOINTS)
-        .map(|k| {
-            format!(
-                "{}{}",
-                profile
-                    .joints
-                    .get(k)
-                    .map_or_else(|| format!("J{}", k + 1), |j| j.name.clone()),
-                if approach[k] > 0 { "+" } else { "-" }
-            )
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
+/// The lines of a stop asking for an OK on the pendant after `what`.
+fn ok_stop(what: &str) -> Step {
+    Step::Stop(vec![
+        "zerocal: press OK on the pendant".into(),
+        format!("({what} is too small to arm it), then continue."),
+    ])
 }
 
 /// Builds the session a program drives: the steps, checked against the joint limits
 /// and the pendant's capture rule.
 ///
 /// # Errors
-/// A point outside the joint limits (naming the joint and the limit), a move the
-/// pendant could capture before the robot arrives, an INFORM job without pulses per
-/// degree, a format of another family.
+/// A capture pose without room on both sides of the backlash inside the joint limits,
+/// or any other point outside them (naming the joint and the limit); a capture pose
+/// the pendant would read past mode 4's ±10°; a move the pendant could capture before
+/// the robot arrives; an INFORM job without pulses per degree; a format of another
+/// family.
 pub fn build(
     profile: Profile,
     poses_rad: &[[f64; JOINTS]],
@@ -529,123 +555,193 @@ pub fn build(
             profile.name
         )));
     }
-    let poses = SessionPoses::new(&profile, poses_rad);
-    let approach = timing::approach_directions(&profile, &poses.captures())?;
-    let poses = poses.with_mounts(&profile, &approach)?;
-    let t = Timing::new(&profile, timing_args, approach)?;
+    let poses = SessionPoses::new(&profile, poses_rad).with_mounts(&profile)?;
+    timing::check_room(&profile, &poses)?;
+    let t = Timing::new(&profile, timing_args)?;
     let tm = t.model;
     let pendant = Pendant::new(&profile);
+    // Every capture pose read inside mode 4's range.
+    for (i, (what, q)) in poses.capture_poses().into_iter().enumerate() {
+        let mounting = if i < 2 {
+            Mounting::UpperArm
+        } else {
+            Mounting::Flange
+        };
+        let r = pendant.reading_on(mounting, &q);
+        let worst = r.x_rad.to_degrees().abs().max(r.y_rad.to_degrees().abs());
+        if worst > MEMS_RANGE_DEG {
+            return Err(CliError::Refused(format!(
+                "{what}: the pendant would read {worst:.1} deg there, past its {MEMS_RANGE_DEG:.0} deg range (the SCL3300's mode 4): it cannot capture that pose (plan with zerocal plan); nothing was written"
+            )));
+        }
+    }
     let time = timing::session_time(&pendant, &tm, &poses);
     let dwell = tm.dwell_s();
     let j1 = timing::joint_label(&profile, 0);
 
     let mut steps = Vec::new();
-    // A move to a capture pose: through the approach point when a joint must turn
-    // round.
-    let go = |steps: &mut Vec<Step>, from: &[f64; JOINTS], to: [f64; JOINTS], role: Role| {
-        if let Some(v) = tm.via(from, &to) {
+    // Drives `path` (its first point is where the robot stands), the moves' roles in
+    // turn, after checking that the pendant cannot capture before the robot arrives;
+    // says whether the path arms the next capture.
+    let drive = |steps: &mut Vec<Step>,
+                 path: &[[f64; JOINTS]],
+                 roles: &[Role],
+                 mounting: Mounting,
+                 what: &str|
+     -> Result<bool, CliError> {
+        let check = pendant.leg(&tm, mounting, path);
+        if check.early_still {
+            return Err(CliError::Refused(format!(
+                "the moves to {what} keep the pendant's reading still for {} s before the robot arrives: the pendant could capture early. Plan again (another --seed) or change the order; nothing was written",
+                tm.window_s
+            )));
+        }
+        for (w, role) in path.windows(2).zip(roles) {
             steps.push(Step::Move {
-                target_deg: v,
-                role: Role::Approach,
-                time_s: Some(tm.move_s(from, &v)),
-            });
-            steps.push(Step::Move {
-                target_deg: to,
-                role,
-                time_s: Some(tm.move_s(&v, &to)),
-            });
-        } else {
-            steps.push(Step::Move {
-                target_deg: to,
-                role,
-                time_s: Some(tm.move_s(from, &to)),
+                target_deg: w[1],
+                role: *role,
+                time_s: Some(tm.move_s(&w[0], &w[1])),
             });
         }
+        Ok(check.armed)
     };
+    let below = Role::Approach(Side::Below);
+    let above = Role::Approach(Side::Above);
+    let upper = Mounting::UpperArm;
+    let flange = Mounting::Flange;
 
+    // Stage 1.
     steps.push(Step::Comment(
         "zerocal stage 1: the pendant goes on the upper arm here, tilted past its range so that it cannot capture yet".into(),
     ));
-    let entry = tm.entry(&poses.mount1);
-    steps.push(Step::Move {
-        target_deg: entry,
-        role: Role::Approach,
-        time_s: None,
-    });
     steps.push(Step::Move {
         target_deg: poses.mount1,
-        role: Role::Mount(false),
-        time_s: Some(tm.move_s(&entry, &poses.mount1)),
+        role: Role::Mount(upper),
+        time_s: None,
     });
     steps.push(Step::Stop(vec![
         "zerocal: clip the pendant to the upper arm".into(),
         "(its screen at STAGE 1), then continue.".into(),
     ]));
-    go(
+    steps.push(Step::Comment(
+        "zerocal stage 1: the stage-1 pose, captured from below, then from above".into(),
+    ));
+    let what = describe(Capture::Stage1);
+    drive(
         &mut steps,
-        &poses.mount1,
-        poses.stage1,
-        Role::Capture(Capture::Stage1),
-    );
+        &tm.first_capture_path(&poses.mount1, &poses.stage1),
+        &[below, Role::Capture(Capture::Stage1, Side::Below)],
+        upper,
+        &what,
+    )?;
+    steps.push(Step::Dwell(dwell));
+    if !drive(
+        &mut steps,
+        &tm.second_capture_path(&poses.stage1),
+        &[above, Role::Capture(Capture::Stage1, Side::Above)],
+        upper,
+        &what,
+    )? {
+        steps.push(ok_stop("the overshoot"));
+    }
     steps.push(Step::Dwell(dwell));
     steps.push(Step::Comment(format!(
-        "zerocal stage 1: {j1} turned by 180 deg"
+        "zerocal stage 1: {j1} turned by 180 deg, captured from below, then from above"
     )));
-    go(
+    let what = describe(Capture::Stage1Turned);
+    drive(
         &mut steps,
-        &poses.stage1,
-        poses.turned,
-        Role::Capture(Capture::Stage1Turned),
-    );
+        &tm.turn_path(&poses.stage1, &poses.turned),
+        &[
+            Role::Turn,
+            below,
+            Role::Capture(Capture::Stage1Turned, Side::Below),
+        ],
+        upper,
+        &what,
+    )?;
+    steps.push(Step::Stop(vec![
+        "zerocal: press OK on the pendant (after the".into(),
+        "half turn only OK arms it), then continue.".into(),
+    ]));
     steps.push(Step::Dwell(dwell));
-    steps.push(Step::Stop(vec![
-        "zerocal: press OK on the pendant,".into(),
-        "wait for its POSE screen, then continue.".into(),
-    ]));
+    if !drive(
+        &mut steps,
+        &tm.second_capture_path(&poses.turned),
+        &[above, Role::Capture(Capture::Stage1Turned, Side::Above)],
+        upper,
+        &what,
+    )? {
+        steps.push(ok_stop("the overshoot"));
+    }
+    steps.push(Step::Dwell(dwell));
+
+    // The pendant to the flange.
     steps.push(Step::Comment(format!(
-        "zerocal: {j1} back; the pendant goes on the flange here, tilted past its range"
+        "zerocal: {j1} back; the pendant goes from the upper arm to the flange here, both tilted past its range"
     )));
-    go(&mut steps, &poses.turned, poses.mount2, Role::Mount(true));
+    drive(
+        &mut steps,
+        &[poses.turned, poses.mount2],
+        &[Role::Mount(flange)],
+        upper,
+        "the mounting pose for the flange",
+    )?;
     steps.push(Step::Stop(vec![
-        "zerocal: clip the pendant to the flange".into(),
-        "(its screen at POSE 1), then continue.".into(),
+        "zerocal: move the pendant from the upper arm".into(),
+        "to the flange (its screen at POSE 1), then continue.".into(),
     ]));
-    let range_deg = zerocal_core::stage2::FitConfig::<f64>::default()
-        .sensor_range_rad
-        .to_degrees();
+
+    // Stage 2.
+    let n = poses.poses.len();
     let mut last = poses.mount2;
     for (i, q) in poses.poses.iter().enumerate() {
-        let r = pendant.reading(q);
-        let worst = r.x_rad.to_degrees().abs().max(r.y_rad.to_degrees().abs());
-        if worst > range_deg {
-            return Err(CliError::Refused(format!(
-                "stage-2 pose {}: the pendant would read {worst:.1} deg there, past its {range_deg:.0} deg range: it cannot capture that pose (plan with zerocal plan); nothing was written",
-                i + 1
-            )));
-        }
-        let check = pendant.leg(&tm, &last, q);
-        if check.early_still {
-            return Err(CliError::Refused(format!(
-                "the move to stage-2 pose {} keeps the pendant's reading still for {} s before the robot arrives: the pendant could capture it early. Plan again (another --seed) or change the order; nothing was written",
-                i + 1,
-                tm.window_s
-            )));
-        }
         steps.push(Step::Comment(format!(
-            "zerocal stage 2: pose {} of {}",
-            i + 1,
-            poses.poses.len()
+            "zerocal stage 2: pose {} of {n}, captured from below, then from above",
+            i + 1
         )));
-        go(&mut steps, &last, *q, Role::Capture(Capture::Pose(i)));
-        if i > 0 && !check.armed {
-            steps.push(Step::Stop(vec![
-                "zerocal: press OK on the pendant".into(),
-                "(this move is too small to arm it), then continue.".into(),
-            ]));
+        let what = describe(Capture::Pose(i));
+        let armed = drive(
+            &mut steps,
+            &tm.first_capture_path(&last, q),
+            &[below, Role::Capture(Capture::Pose(i), Side::Below)],
+            flange,
+            &what,
+        )?;
+        if i > 0 && !armed {
+            steps.push(ok_stop("this move"));
+        }
+        steps.push(Step::Dwell(dwell));
+        if !drive(
+            &mut steps,
+            &tm.second_capture_path(q),
+            &[above, Role::Capture(Capture::Pose(i), Side::Above)],
+            flange,
+            &what,
+        )? {
+            steps.push(ok_stop("the overshoot"));
         }
         steps.push(Step::Dwell(dwell));
         last = *q;
     }
+
+    // The closing reversal.
+    steps.push(Step::Comment(
+        "zerocal: stage 2 done; the robot parks where the pendant went on the flange (tilted past its range) for the closing reversal".into(),
+    ));
+    drive(
+        &mut steps,
+        &[last, poses.park],
+        &[Role::Park],
+        flange,
+        "the park",
+    )?;
+    steps.push(Step::Stop(vec![
+        "zerocal: closing reversal: take the pendant off".into(),
+        "the flange to the bench of stage 0, let it".into(),
+        "capture, turn it 180 deg on the same spot,".into(),
+        "press OK, let it capture. Then continue.".into(),
+    ]));
     steps.push(Step::Comment(
         "zerocal: session done; the pendant shows the result".into(),
     ));
@@ -656,26 +752,26 @@ pub fn build(
             target_deg, role, ..
         } = s
         {
+            let next_capture = steps[n + 1..].iter().find_map(|s| match s {
+                Step::Move {
+                    role: Role::Capture(c, _),
+                    ..
+                } => Some(*c),
+                _ => None,
+            });
+            let next = next_capture.map_or_else(|| "a pose".to_owned(), describe);
             let what = match role {
-                Role::Mount(false) => "the mounting pose for the upper arm".to_owned(),
-                Role::Mount(true) => "the mounting pose for the flange".to_owned(),
-                Role::Approach => match steps.get(n + 1) {
-                    Some(Step::Move {
-                        role: Role::Capture(c),
-                        ..
-                    }) => {
-                        format!("the approach point of {}", describe(Some(*c)))
-                    }
-                    Some(Step::Move {
-                        role: Role::Mount(flange),
-                        ..
-                    }) => format!(
-                        "the approach point of the mounting pose for the {}",
-                        if *flange { "flange" } else { "upper arm" }
-                    ),
-                    _ => "an approach point".to_owned(),
-                },
-                Role::Capture(c) => describe(Some(*c)),
+                Role::Mount(Mounting::UpperArm) => "the mounting pose for the upper arm".to_owned(),
+                Role::Mount(Mounting::Flange) => "the mounting pose for the flange".to_owned(),
+                Role::Park => "the park for the closing reversal".to_owned(),
+                Role::Turn => format!("{j1}'s half turn"),
+                Role::Approach(Side::Below) => {
+                    format!("the point {} deg below {next}", tm.approach_deg)
+                }
+                Role::Approach(Side::Above) => {
+                    format!("the point {} deg above {next}", tm.overshoot_deg)
+                }
+                Role::Capture(c, _) => describe(*c),
             };
             timing::check_limits(&profile, target_deg, &what)?;
         }
@@ -689,29 +785,34 @@ pub fn build(
     let header = vec![
         "zerocal robot program: a joint-zero calibration session.".to_owned(),
         format!(
-            "Robot {} (profile {}); {} stage-2 poses. Written by zerocal {}; targets in the controller's joint {unit}.",
+            "Robot {} (profile {}); {n} stage-2 poses. Written by zerocal {}; targets in the controller's joint {unit}.",
             profile.title,
             profile.name,
-            poses.poses.len(),
             env!("CARGO_PKG_VERSION")
         ),
         format!(
-            "Stop: clip the pendant to the upper arm (the robot stands with the pendant tilted past its range, so it cannot capture early). Stage 1: the stage-1 pose, then {j1} turned by 180 deg (an OK on the pendant takes that reading). Stop: {j1} back, clip the pendant to the flange (tilted again). Stage 2: the plan's poses in its order; load the same plan into the pendant (plan set)."
+            "Every pose is captured twice: first with every joint arriving moving positive (from {} deg below), then, after every joint has gone {} deg past it, moving negative (from above). The pendant averages the two: the middle of every gear's backlash.",
+            tm.approach_deg, tm.overshoot_deg
         ),
         format!(
-            "Speed: joint moves at {} % of each joint's maximum speed, exact stops. Backlash: every target is reached with each joint moving {}.",
-            t.speed_percent,
-            signed_list(&profile, &approach)
+            "Stop: clip the pendant to the upper arm (the robot stands with the pendant tilted past its range, so it cannot capture early). Stage 1: the stage-1 pose twice, then {j1} turned by 180 deg twice (an OK on the pendant arms the first). Stop: move the pendant to the flange (tilted again). Stage 2: the plan's poses in its order, twice each; load the same plan into the pendant (plan set)."
+        ),
+        "Closing reversal: the robot parks where the pendant went on the flange and stops; take the pendant off and reverse it on the bench as in stage 0 (two readings, turned 180 deg on the same spot between them). The program ends there.".to_owned(),
+        format!(
+            "Speed: joint moves at {} % of each joint's maximum speed, exact stops.",
+            t.speed_percent
         ),
         format!(
-            "Dwell {dwell:.1} s at each capture: settling {} s (stated default) + the pendant's {} s still window + 2 sensor periods.",
-            tm.settle_s, tm.window_s
+            "Dwell {dwell:.1} s at each capture: settling {} s (stated default) + the pendant's {} s still window + 2 sensor periods of {} s.",
+            tm.settle_s, tm.window_s, tm.sample_period_s
         ),
         format!(
-            "Predicted robot time {:.1} min (motion {:.0} s, dwell {:.0} s, remount {:.0} s, operator OKs {:.0} s).",
+            "Predicted robot time {:.1} min, the closing reversal included: motion {:.0} s, dwell {:.0} s ({} captures), {} mountings {:.0} s, operator OKs {:.0} s.",
             time.total_s / 60.0,
             time.motion_s,
             time.dwell_s,
+            time.captures,
+            time.mountings,
             time.remount_s,
             time.operator_s
         ),
@@ -728,11 +829,11 @@ pub fn build(
     })
 }
 
-fn describe(c: Option<Capture>) -> String {
+fn describe(c: Capture) -> String {
     match c {
-        Some(Capture::Stage1) | None => "the stage-1 pose".to_owned(),
-        Some(Capture::Stage1Turned) => "the stage-1 pose with joint 1 turned by 180 deg".to_owned(),
-        Some(Capture::Pose(i)) => format!("stage-2 pose {}", i + 1),
+        Capture::Stage1 => "the stage-1 pose".to_owned(),
+        Capture::Stage1Turned => "the stage-1 pose with joint 1 turned by 180 deg".to_owned(),
+        Capture::Pose(i) => format!("stage-2 pose {}", i + 1),
     }
 }
 
@@ -792,7 +893,7 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
     }
     let t = &session.time;
     Ok(format!(
-        "wrote {}: {} program {} for {} ({} stage-2 poses, {} moves), predicted robot time {:.1} min at {} % speed.\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
+        "wrote {}: {} program {} for {} ({} stage-2 poses, each captured twice; {} moves), predicted robot time {:.1} min at {} % speed, the closing reversal included.\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
         written.join(", "),
         args.format,
         session.name,

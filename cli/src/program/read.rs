@@ -1,7 +1,8 @@
 //! Small readers of each family's joint targets: they take a written program apart
 //! by the controller language's own syntax (not by the writer's code) and give every
-//! joint move's target, in the controller's joint degrees, with the dwell that
-//! follows it. The tests read every program back through them.
+//! joint move's target, in the controller's joint degrees, with the dwell and the
+//! operator stop (its message) that follow it. The tests read every program back
+//! through them.
 
 use std::collections::HashMap;
 
@@ -12,6 +13,9 @@ pub struct ReadMove {
     pub joints_deg: [f64; 6],
     /// The wait right after it (s), if any.
     pub dwell_s: Option<f64>,
+    /// The message of the stop for the operator after it, before the next move, if
+    /// any (the message's pieces joined by spaces).
+    pub stop: Option<String>,
 }
 
 fn six(values: &[f64], what: &str) -> Result<[f64; 6], String> {
@@ -44,17 +48,36 @@ fn dwell(moves: &mut [ReadMove], t: f64, line: usize) -> Result<(), String> {
     }
 }
 
-/// KRL: `PTP {AXIS: A1 v,A2 v,…}` and `WAIT SEC t` (case-insensitive; `;` starts a
-/// comment).
+fn stop(moves: &mut [ReadMove], message: &[String], line: usize) -> Result<(), String> {
+    match moves.last_mut() {
+        Some(m) if m.stop.is_none() => {
+            m.stop = Some(message.join(" "));
+            Ok(())
+        }
+        Some(_) => Err(format!("line {line}: a second stop after one move")),
+        None => Err(format!("line {line}: a stop before any move")),
+    }
+}
+
+/// KRL: `PTP {AXIS: A1 v,A2 v,…}`, `WAIT SEC t` and `HALT`, whose message is the
+/// comment lines right above it (case-insensitive; `;` starts a comment).
 ///
 /// # Errors
 /// A malformed target or wait, naming the line.
 pub fn krl(text: &str) -> Result<Vec<ReadMove>, String> {
     let mut moves = Vec::new();
+    let mut comments: Vec<String> = Vec::new();
     for (i, raw) in text.lines().enumerate() {
+        if let Some(c) = raw.trim().strip_prefix(';') {
+            comments.push(c.trim().to_owned());
+            continue;
+        }
+        let above = std::mem::take(&mut comments);
         let line = raw.split(';').next().unwrap_or("").trim();
         let upper = line.to_ascii_uppercase();
-        if upper.starts_with("PTP") && upper.contains("{AXIS:") {
+        if upper == "HALT" {
+            stop(&mut moves, &above, i + 1)?;
+        } else if upper.starts_with("PTP") && upper.contains("{AXIS:") {
             let inner = between(&upper, "{AXIS:", "}")
                 .ok_or(format!("line {}: no closing brace", i + 1))?;
             let mut q = [f64::NAN; 6];
@@ -76,6 +99,7 @@ pub fn krl(text: &str) -> Result<Vec<ReadMove>, String> {
             moves.push(ReadMove {
                 joints_deg: q,
                 dwell_s: None,
+                stop: None,
             });
         } else if let Some(t) = upper.strip_prefix("WAIT SEC") {
             dwell(&mut moves, number(t, &format!("line {}", i + 1))?, i + 1)?;
@@ -84,18 +108,31 @@ pub fn krl(text: &str) -> Result<Vec<ReadMove>, String> {
     Ok(moves)
 }
 
-/// RAPID: `CONST jointtarget name:=[[6 values],[…]];`, `MoveAbsJ name,…;` and
-/// `WaitTime t;` (`!` starts a comment).
+/// RAPID: `CONST jointtarget name:=[[6 values],[…]];`, `MoveAbsJ name,…;`,
+/// `WaitTime t;` and `STOP;`, whose message is the `TPWrite "…";` lines right above
+/// it (`!` starts a comment).
 ///
 /// # Errors
 /// A malformed target, a move to an undeclared target, naming the line.
 pub fn rapid(text: &str) -> Result<Vec<ReadMove>, String> {
     let mut targets: HashMap<String, [f64; 6]> = HashMap::new();
     let mut moves = Vec::new();
+    let mut written: Vec<String> = Vec::new();
     for (i, raw) in text.lines().enumerate() {
         let line = raw.split('!').next().unwrap_or("").trim();
         let at = format!("line {}", i + 1);
-        if let Some(rest) = line.strip_prefix("CONST jointtarget ") {
+        if line.is_empty() {
+            continue;
+        }
+        if let Some(rest) = line.strip_prefix("TPWrite ") {
+            let s = between(rest, "\"", "\"").ok_or(format!("{at}: TPWrite without a string"))?;
+            written.push(s.to_owned());
+            continue;
+        }
+        let above = std::mem::take(&mut written);
+        if line == "STOP;" {
+            stop(&mut moves, &above, i + 1)?;
+        } else if let Some(rest) = line.strip_prefix("CONST jointtarget ") {
             let (name, value) = rest.split_once(":=").ok_or(format!("{at}: no ':='"))?;
             let robax = between(value, "[[", "]").ok_or(format!("{at}: no [[robax]"))?;
             let v: Vec<f64> = robax
@@ -111,6 +148,7 @@ pub fn rapid(text: &str) -> Result<Vec<ReadMove>, String> {
             moves.push(ReadMove {
                 joints_deg: *q,
                 dwell_s: None,
+                stop: None,
             });
         } else if let Some(rest) = line.strip_prefix("WaitTime ") {
             dwell(&mut moves, number(rest.trim_end_matches(';'), &at)?, i + 1)?;
@@ -119,8 +157,8 @@ pub fn rapid(text: &str) -> Result<Vec<ReadMove>, String> {
     Ok(moves)
 }
 
-/// FANUC LS: `/MN` lines `J P[n] …` and `WAIT t(sec)`, `/POS` points `P[n]{ … J1=
-/// v deg, … }`.
+/// FANUC LS: `/MN` lines `J P[n] …`, `WAIT t(sec)` and `PAUSE`, whose message is the
+/// `MESSAGE[…]` lines right above it; `/POS` points `P[n]{ … J1= v deg, … }`.
 ///
 /// # Errors
 /// A malformed line or point, a move to a point `/POS` does not hold.
@@ -142,11 +180,26 @@ pub fn tp(text: &str) -> Result<Vec<ReadMove>, String> {
         points.insert(n, q);
     }
     let mut moves = Vec::new();
+    let mut messages: Vec<String> = Vec::new();
     let body = main.split_once("/MN").map_or("", |(_, b)| b);
     for (i, raw) in body.lines().enumerate() {
         let line = raw.split_once(':').map_or("", |(_, l)| l).trim();
         let at = format!("/MN line {}", i + 1);
-        if let Some(rest) = line.strip_prefix("J P[") {
+        if line.is_empty() || line.starts_with('!') {
+            continue;
+        }
+        if let Some(rest) = line.strip_prefix("MESSAGE[") {
+            let m = rest
+                .rsplit_once(']')
+                .ok_or(format!("{at}: MESSAGE without ']'"))?
+                .0;
+            messages.push(m.to_owned());
+            continue;
+        }
+        let above = std::mem::take(&mut messages);
+        if line.trim_end_matches(';').trim() == "PAUSE" {
+            stop(&mut moves, &above, i + 1)?;
+        } else if let Some(rest) = line.strip_prefix("J P[") {
             let n: usize = rest
                 .split(']')
                 .next()
@@ -158,6 +211,7 @@ pub fn tp(text: &str) -> Result<Vec<ReadMove>, String> {
             moves.push(ReadMove {
                 joints_deg: *q,
                 dwell_s: None,
+                stop: None,
             });
         } else if let Some(rest) = line.strip_prefix("WAIT") {
             let t = rest.split("(sec)").next().unwrap_or("");
@@ -167,18 +221,31 @@ pub fn tp(text: &str) -> Result<Vec<ReadMove>, String> {
     Ok(moves)
 }
 
-/// INFORM: `Cnnnnn=p1,…,p6` pulses, `MOVJ Cnnnnn …` and `TIMER T=t`; degrees are
-/// pulses / `pulses_per_deg`.
+/// INFORM: `Cnnnnn=p1,…,p6` pulses, `MOVJ Cnnnnn …`, `TIMER T=t` and `PAUSE`, whose
+/// message is the `MSG "…"` lines right above it; degrees are pulses /
+/// `pulses_per_deg`.
 ///
 /// # Errors
 /// A malformed line, a move to an undefined position.
 pub fn inform(text: &str, pulses_per_deg: &[f64; 6]) -> Result<Vec<ReadMove>, String> {
     let mut points: HashMap<String, [f64; 6]> = HashMap::new();
     let mut moves = Vec::new();
+    let mut messages: Vec<String> = Vec::new();
     for (i, raw) in text.lines().enumerate() {
         let line = raw.trim_end_matches('\r').trim();
         let at = format!("line {}", i + 1);
-        if line.starts_with('C') && line.contains('=') && !line.starts_with("//") {
+        if line.starts_with('\'') {
+            continue;
+        }
+        if let Some(rest) = line.strip_prefix("MSG ") {
+            let m = between(rest, "\"", "\"").ok_or(format!("{at}: MSG without a string"))?;
+            messages.push(m.to_owned());
+            continue;
+        }
+        let above = std::mem::take(&mut messages);
+        if line == "PAUSE" {
+            stop(&mut moves, &above, i + 1)?;
+        } else if line.starts_with('C') && line.contains('=') && !line.starts_with("//") {
             let (name, v) = line.split_once('=').ok_or(format!("{at}: no '='"))?;
             let p: Vec<f64> = v
                 .split(',')
@@ -202,6 +269,7 @@ pub fn inform(text: &str, pulses_per_deg: &[f64; 6]) -> Result<Vec<ReadMove>, St
             moves.push(ReadMove {
                 joints_deg: *q,
                 dwell_s: None,
+                stop: None,
             });
         } else if let Some(rest) = line.strip_prefix("TIMER T=") {
             dwell(&mut moves, number(rest, &at)?, i + 1)?;
@@ -211,7 +279,7 @@ pub fn inform(text: &str, pulses_per_deg: &[f64; 6]) -> Result<Vec<ReadMove>, St
 }
 
 /// VAL3: the `jointRx` array `jZc` of the `.dtx` (`<Value key="k" j1="…" …/>`) and
-/// `movej(jZc[k],…)` / `delay(t)` in `start.pgx`.
+/// `movej(jZc[k],…)` / `delay(t)` / `popUpMsg("…")` in `start.pgx`.
 ///
 /// # Errors
 /// A malformed value or call, a key the data does not hold.
@@ -245,7 +313,10 @@ pub fn val3(dtx: &str, start: &str) -> Result<Vec<ReadMove>, String> {
             moves.push(ReadMove {
                 joints_deg: *q,
                 dwell_s: None,
+                stop: None,
             });
+        } else if let Some(m) = between(line, "popUpMsg(\"", "\")") {
+            stop(&mut moves, &[m.to_owned()], i + 1)?;
         } else if let Some(t) = between(line, "delay(", ")") {
             dwell(&mut moves, number(t, &at)?, i + 1)?;
         }
@@ -253,8 +324,8 @@ pub fn val3(dtx: &str, start: &str) -> Result<Vec<ReadMove>, String> {
     Ok(moves)
 }
 
-/// URScript: `movej([q1, …, q6], …)` in radians and `sleep(t)` (`#` starts a
-/// comment).
+/// URScript: `movej([q1, …, q6], …)` in radians, `sleep(t)` and `popup("…", …)` (`#`
+/// starts a comment).
 ///
 /// # Errors
 /// A malformed call, naming the line.
@@ -274,7 +345,13 @@ pub fn urscript(text: &str) -> Result<Vec<ReadMove>, String> {
             moves.push(ReadMove {
                 joints_deg: six(&v, &at)?,
                 dwell_s: None,
+                stop: None,
             });
+        } else if let Some(m) = line
+            .strip_prefix("popup(\"")
+            .and_then(|r| r.split('"').next())
+        {
+            stop(&mut moves, &[m.to_owned()], i + 1)?;
         } else if let Some(t) = line
             .strip_prefix("sleep(")
             .and_then(|r| r.strip_suffix(')'))

@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use zerocal_cli::program::{read, Files, Format, ReadMove};
-use zerocal_cli::timing::{Pendant, TimingArgs};
+use zerocal_cli::timing::{planner_limits, Pendant, TimingArgs};
 use zerocal_core::model::JOINTS;
 use zerocal_core::plan::Xorshift64Star;
 use zerocal_profile::Profile;
@@ -20,22 +20,26 @@ pub fn gp7_with_pulses() -> Profile {
 }
 
 /// Eight poses for a profile the planner refuses (UR5e: joints 2-4 parallel, j3+j4
-/// inseparable): joints 3-6 drawn inside the limits (seeded), kept where the
-/// predicted reading stays within ±9°, joints 1-2 at stage 1. A program drives any
-/// poses; whether they separate the zeros is the planner's business.
+/// inseparable): joints 3-6 drawn inside the limits less the room the two captures
+/// need (`planner_limits`, as the planner draws; seeded), kept where the predicted
+/// reading stays within ±8°, joints 1-2 at stage 1. A program drives any poses;
+/// whether they separate the zeros is the planner's business.
 pub fn window_poses(profile: &Profile, n: usize, seed: u64) -> Vec<[f64; JOINTS]> {
     let pendant = Pendant::new(profile);
     let mut rng = Xorshift64Star::new(seed);
     let q1 = profile.stage1_joints_rad;
+    let full: [(f64, f64); 4] =
+        core::array::from_fn(|k| (profile.joints[k + 2].min_deg, profile.joints[k + 2].max_deg));
+    let limits = planner_limits(profile, &full);
     let mut out = Vec::new();
     while out.len() < n {
         let mut q = q1;
         for k in 2..JOINTS {
-            let j = &profile.joints[k];
-            q[k] = rng.uniform(j.min_deg, j.max_deg).to_radians();
+            let (lo, hi) = limits[k - 2];
+            q[k] = rng.uniform(lo, hi).to_radians();
         }
         let t = pendant.reading(&profile.shown_deg(&q));
-        if t.x_rad.to_degrees().abs() <= 9.0 && t.y_rad.to_degrees().abs() <= 9.0 {
+        if t.x_rad.to_degrees().abs() <= 8.0 && t.y_rad.to_degrees().abs() <= 8.0 {
             out.push(q);
         }
     }

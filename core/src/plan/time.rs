@@ -1,27 +1,42 @@
 //! Robot time of a calibration session, and the stage-2 pose order that shortens it.
 //!
-//! The session a robot program drives (`zerocal program`): a stop to clip the pendant
-//! to the upper arm, the stage-1 pose, joint 1 turned by 180°, joint 1 back with a
-//! stop to clip the pendant to the flange, then every stage-2 pose of the plan. Its
-//! robot time is modelled as:
+//! The session a robot program drives (`zerocal program`), as issue 15 decided it:
+//!
+//! 1. **Stage 1.** The robot stands at a mounting pose (the pendant tilted past its
+//!    range, so it cannot capture while it is clipped on) and the pendant is clipped to
+//!    the upper arm. The stage-1 pose is captured twice: first with every joint arriving
+//!    moving in its positive direction (from below), then, after every joint has gone
+//!    past it, with every joint arriving moving negative (from above). Joint 1 is turned
+//!    by 180° and the turned pose is captured twice the same way; an operator's OK arms
+//!    the first of these (a half turn barely moves the reading: the pendant's rule).
+//! 2. **Stage 2.** The robot goes to a second mounting pose, the pendant is moved to the
+//!    flange, and every pose of the plan is captured twice the same way. The session
+//!    solver averages the two captures of a pose (`crate::session::merge_repeats`): the
+//!    reading at the middle of every gear's play.
+//! 3. **The closing reversal.** The robot parks, the pendant is taken off and reversed on
+//!    the bench as in stage 0 (two captures, turned 180° on the same spot between them,
+//!    an OK arming the second): a third mounting. The robot does not move for it.
+//!
+//! Its robot time is modelled as:
 //!
 //! - **Moves.** Every move is a joint move that ends in an exact stop. Each joint runs
 //!   a trapezoidal profile (constant acceleration `a` up to the speed `v`, cruise,
 //!   constant deceleration) and the move lasts as long as its slowest joint:
 //!   `t = d/v + v/a` for `d ≥ v²/a`, else `2·sqrt(d/a)`. A controller that
 //!   synchronises the joints (all start and stop together) takes the same time.
-//! - **Approach direction.** Gear backlash makes the stopping point depend on the
-//!   direction a joint last moved: every target is reached with each joint's final
-//!   motion in one direction, `approach[k]` (+1: from below). A move in which some
-//!   joint would arrive the other way first goes to a point `approach_deg` short of
-//!   the target on those joints, then on to the target ([`TimeModel::via`]).
-//! - **Dwell.** At every captured pose the robot waits for the pendant: the settling
-//!   of the arm after the stop, then the pendant's still window (core's
+//! - **Both sides of the backlash.** A pose's first capture is reached through the point
+//!   `approach_deg` below it on every joint ([`TimeModel::below`]), its second through the
+//!   point `overshoot_deg` above it ([`TimeModel::above`]): the last move before each
+//!   capture moves every joint, in one direction. The overshoot is also what re-arms the
+//!   pendant between the two captures (it must move the reading by the pendant's re-arm
+//!   threshold: the caller checks, `needs_ok`).
+//! - **Dwell.** At every capture the robot waits for the pendant: the settling of the arm
+//!   after the stop, then the pendant's still window (core's
 //!   [`crate::stillness::StillnessConfig`]), plus two sensor periods (the window
 //!   completes on the first sample past its length; one more as margin).
-//! - **Operator.** The two mountings of the pendant, and an OK on the
-//!   pendant where its capture rule needs one (stage 1's second reading, and any
-//!   stage-2 move that does not move the reading enough to arm the next capture).
+//! - **Operator.** The three mountings of the pendant (upper arm, flange, bench), and an
+//!   OK on the pendant where its capture rule needs one (after the half turns, and after
+//!   any move that does not move the reading enough to arm the next capture).
 //!
 //! Poses here are in the joint coordinates the controller interpolates in and its
 //! speed limits apply to (its own joint degrees): the caller converts. The functions
@@ -31,6 +46,10 @@ use super::MAX_POSES;
 use crate::model::JOINTS;
 use crate::real::Real;
 use core::fmt;
+
+/// Captures of every pose (stage 1's two and stage 2's): one from each side of the
+/// backlash.
+pub const CAPTURES_PER_POSE: usize = 2;
 
 /// Below this a joint's move counts as none (deg): rounding of the caller's
 /// conversions, far below any controller's resolution (0.001°).
@@ -48,19 +67,19 @@ pub struct TimeModel<T> {
     pub speed_deg_s: [T; JOINTS],
     /// Each joint's acceleration and deceleration (deg/s²).
     pub accel_deg_s2: [T; JOINTS],
-    /// Each joint's final direction of motion at every target: +1 (approached from
-    /// below) or −1 (from above).
-    pub approach: [i8; JOINTS],
-    /// How far short of a target a joint stops when it must turn round to arrive in
-    /// its approach direction (deg).
+    /// How far below a pose every joint starts the last move to its first capture (deg).
     pub approach_deg: T,
+    /// How far above a pose every joint goes before coming back for its second capture
+    /// (deg): the excursion that re-arms the pendant.
+    pub overshoot_deg: T,
     /// From the robot's stop to the start of the pendant's still window (s).
     pub settle_s: T,
     /// The pendant's still window (s).
     pub window_s: T,
     /// The sensor's reading period (s).
     pub sample_period_s: T,
-    /// Clipping the pendant on (to the upper arm; from there to the flange) (s).
+    /// Clipping the pendant on or taking it off to the bench, each of the three
+    /// mountings (s).
     pub remount_s: T,
     /// An operator's OK on the pendant at a stop of the program (s).
     pub operator_ok_s: T,
@@ -81,12 +100,7 @@ pub enum TimeSetting {
         /// Robot joint number.
         joint: u8,
     },
-    /// `approach` of a joint (1..=6).
-    Approach {
-        /// Robot joint number.
-        joint: u8,
-    },
-    /// `approach_deg`.
+    /// `approach_deg` or `overshoot_deg`.
     ApproachDistance,
     /// `settle_s`, `window_s`, `sample_period_s`, `remount_s` or `operator_ok_s`.
     Duration,
@@ -102,11 +116,8 @@ impl fmt::Display for TimeSetting {
                 f,
                 "acceleration of joint {joint}: must be a positive finite deg/s²"
             ),
-            TimeSetting::Approach { joint } => {
-                write!(f, "approach direction of joint {joint}: must be +1 or -1")
-            }
             TimeSetting::ApproachDistance => {
-                f.write_str("approach distance: must be a positive finite angle")
+                f.write_str("approach and overshoot distances: must be positive finite angles")
             }
             TimeSetting::Duration => {
                 f.write_str("settle, window, sample period, remount and OK times: must be finite and >= 0 (window and period > 0)")
@@ -115,26 +126,56 @@ impl fmt::Display for TimeSetting {
     }
 }
 
+/// Where the pendant is while the robot drives a path: which reading the caller's
+/// `needs_ok` predicts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mounting {
+    /// On the upper arm (stage 1).
+    UpperArm,
+    /// On the flange (stage 2).
+    Flange,
+}
+
 /// The robot time of a session, by part (s).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SessionTime<T> {
     /// The robot moving.
     pub motion_s: T,
-    /// The robot standing at captured poses for settling and the still window.
+    /// Standing for settling and the still window at every capture (the closing
+    /// reversal's two on the bench included).
     pub dwell_s: T,
-    /// The pendant's two mountings (upper arm, then flange).
+    /// The pendant's three mountings (upper arm, flange, bench).
     pub remount_s: T,
     /// Operator OKs at the pendant.
     pub operator_s: T,
     /// All of it.
     pub total_s: T,
-    /// Moves, approach moves included.
+    /// Moves.
     pub moves: u16,
-    /// Moves that stop short of a target to arrive in the approach direction.
-    pub approach_moves: u16,
-    /// Stops for an operator's OK (stage 1's second reading included).
+    /// Captures (stage 1's four, two per stage-2 pose, the closing reversal's two).
+    pub captures: u16,
+    /// Mountings of the pendant.
+    pub mountings: u16,
+    /// Stops for an operator's OK.
     pub ok_stops: u16,
+}
+
+/// The poses of a session, in the controller's joint coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SessionPath<'a, T> {
+    /// Where the robot stands while the pendant is clipped to the upper arm.
+    pub mount1: [T; JOINTS],
+    /// The stage-1 pose.
+    pub stage1: [T; JOINTS],
+    /// The stage-1 pose with joint 1 turned by 180°.
+    pub turned: [T; JOINTS],
+    /// Where the robot stands while the pendant is moved to the flange.
+    pub mount2: [T; JOINTS],
+    /// The stage-2 poses, in order.
+    pub poses: &'a [[T; JOINTS]],
+    /// Where the robot parks while the pendant is taken off for the closing reversal.
+    pub park: [T; JOINTS],
 }
 
 impl<T: Real> TimeModel<T> {
@@ -153,11 +194,11 @@ impl<T: Real> TimeModel<T> {
             if !(a.is_finite() && a > T::zero()) {
                 return Err(TimeSetting::Acceleration { joint });
             }
-            if self.approach[k] != 1 && self.approach[k] != -1 {
-                return Err(TimeSetting::Approach { joint });
-            }
         }
-        if !(self.approach_deg.is_finite() && self.approach_deg > T::zero()) {
+        if [self.approach_deg, self.overshoot_deg]
+            .iter()
+            .any(|d| !(d.is_finite() && *d > T::zero()))
+        {
             return Err(TimeSetting::ApproachDistance);
         }
         let non_negative = [self.settle_s, self.remount_s, self.operator_ok_s];
@@ -172,8 +213,8 @@ impl<T: Real> TimeModel<T> {
         Ok(())
     }
 
-    /// The robot's wait at a captured pose (s): settling, the still window and two
-    /// sensor periods.
+    /// The robot's wait at a capture (s): settling, the still window and two sensor
+    /// periods.
     pub fn dwell_s(&self) -> T {
         self.settle_s + self.window_s + self.sample_period_s * T::lit(2.0)
     }
@@ -201,110 +242,129 @@ impl<T: Real> TimeModel<T> {
         })
     }
 
-    /// Whether joint `k` moving from `from` to `to` arrives against its approach
-    /// direction.
-    fn against(&self, k: usize, from: T, to: T) -> bool {
-        let d = to - from;
-        d.abs() > T::lit(NO_MOVE_DEG) && (d * T::lit(f64::from(self.approach[k]))) < T::zero()
+    /// Time of the moves through `points` in turn.
+    pub fn path_s(&self, points: &[[T; JOINTS]]) -> T {
+        points
+            .windows(2)
+            .fold(T::zero(), |t, w| t + self.move_s(&w[0], &w[1]))
     }
 
-    /// The point short of `to` that a move from `from` must pass so that every joint
-    /// arrives at `to` in its approach direction: `None` if the move already does.
-    /// Joints that would arrive the wrong way stop `approach_deg` short of the
-    /// target (on the approach side); the others go straight to it.
-    pub fn via(&self, from: &[T; JOINTS], to: &[T; JOINTS]) -> Option<[T; JOINTS]> {
-        let mut any = false;
-        let mut v = *to;
-        for k in 0..JOINTS {
-            if self.against(k, from[k], to[k]) {
-                any = true;
-                v[k] = to[k] - self.approach_deg * T::lit(f64::from(self.approach[k]));
-            }
-        }
-        any.then_some(v)
+    /// The point [`approach_deg`](Self::approach_deg) below `q` on every joint: where the
+    /// last move to a pose's first capture starts.
+    pub fn below(&self, q: &[T; JOINTS]) -> [T; JOINTS] {
+        q.map(|v| v - self.approach_deg)
     }
 
-    /// The point `approach_deg` short of `to` on every joint: where a session starts
-    /// from a pose it does not know.
-    pub fn entry(&self, to: &[T; JOINTS]) -> [T; JOINTS] {
-        core::array::from_fn(|k| to[k] - self.approach_deg * T::lit(f64::from(self.approach[k])))
+    /// The point [`overshoot_deg`](Self::overshoot_deg) above `q` on every joint: where
+    /// the last move to a pose's second capture starts.
+    pub fn above(&self, q: &[T; JOINTS]) -> [T; JOINTS] {
+        q.map(|v| v + self.overshoot_deg)
     }
 
-    /// Time from `from` to `to`, through [`via`](Self::via) when needed.
-    pub fn leg_s(&self, from: &[T; JOINTS], to: &[T; JOINTS]) -> T {
-        match self.via(from, to) {
-            Some(v) => self.move_s(from, &v) + self.move_s(&v, to),
-            None => self.move_s(from, to),
-        }
+    /// The path from `from` to the first capture of `q`: through [`below`](Self::below),
+    /// so that every joint arrives moving in its positive direction.
+    pub fn first_capture_path(&self, from: &[T; JOINTS], q: &[T; JOINTS]) -> [[T; JOINTS]; 3] {
+        [*from, self.below(q), *q]
     }
 
-    /// The robot time of a whole session along `path`: from the
-    /// [`entry`](Self::entry) point of the first mounting pose (the move to the entry
-    /// point starts from a pose unknown here and is not counted) to that pose, the
-    /// pendant clipped to the upper arm there, the stage-1 pose, joint 1 turned (an
-    /// OK arms that reading), the second mounting pose and the remount, then the
-    /// stage-2 poses in order. Every move arrives in the approach direction, so that
-    /// a joint a later move leaves alone stays on the right side of its backlash. `needs_ok(a, b)` says whether a move between stage-2 poses `a` → `b`
-    /// leaves the pendant's next capture unarmed (an operator's OK then arms it); the
-    /// first stage-2 pose is armed by the remount.
+    /// The path from the first capture of `q` to its second: past it to
+    /// [`above`](Self::above) and back, every joint arriving moving negative.
+    pub fn second_capture_path(&self, q: &[T; JOINTS]) -> [[T; JOINTS]; 3] {
+        [*q, self.above(q), *q]
+    }
+
+    /// The path from the stage-1 pose's second capture to the turned pose's first:
+    /// joint 1 alone turns (to [`approach_deg`](Self::approach_deg) short of its
+    /// target), so that the reading stays put while it turns, then every joint comes up
+    /// from [`below`](Self::below).
+    pub fn turn_path(&self, stage1: &[T; JOINTS], turned: &[T; JOINTS]) -> [[T; JOINTS]; 4] {
+        let mut turn = *stage1;
+        turn[0] = turned[0] - self.approach_deg;
+        [*stage1, turn, self.below(turned), *turned]
+    }
+
+    /// The robot time of a whole session along `path` (see the module's list): the
+    /// pendant clipped to the upper arm at `mount1` (the move to it starts from a pose
+    /// unknown here and is not counted), stage 1's four captures, the pendant moved to
+    /// the flange at `mount2`, two captures of every stage-2 pose in order, then the
+    /// robot parked at `park` for the closing reversal on the bench (a mounting, two
+    /// captures and an OK).
+    ///
+    /// `needs_ok(mounting, path)` says whether driving `path` from the last capture
+    /// (its first point) leaves the pendant's next capture unarmed, so that an
+    /// operator's OK must arm it. The first capture after a mounting is armed by the
+    /// mounting, the first after joint 1's half turn always by an OK.
     pub fn session_time(
         &self,
         path: &SessionPath<'_, T>,
-        needs_ok: impl Fn(&[T; JOINTS], &[T; JOINTS]) -> bool,
+        needs_ok: impl Fn(Mounting, &[[T; JOINTS]]) -> bool,
     ) -> SessionTime<T> {
         let mut s = SessionTime::default();
-        let go = |s: &mut SessionTime<T>, from: &[T; JOINTS], to: &[T; JOINTS]| {
-            if let Some(v) = self.via(from, to) {
-                s.motion_s += self.move_s(from, &v) + self.move_s(&v, to);
-                s.moves += 2;
-                s.approach_moves += 1;
-            } else {
-                s.motion_s += self.move_s(from, to);
-                s.moves += 1;
-            }
+        let run = |s: &mut SessionTime<T>, points: &[[T; JOINTS]]| {
+            s.motion_s += self.path_s(points);
+            s.moves += points.len().saturating_sub(1) as u16;
         };
-        // Stage 1: clip the pendant on, its pose, joint 1 turned (an OK arms that
-        // reading).
-        go(&mut s, &self.entry(&path.mount1), &path.mount1);
-        s.remount_s += self.remount_s;
-        go(&mut s, &path.mount1, &path.stage1);
-        s.dwell_s += self.dwell_s();
-        go(&mut s, &path.stage1, &path.turned);
-        s.dwell_s += self.dwell_s();
-        s.operator_s += self.operator_ok_s;
-        s.ok_stops += 1;
+        let capture = |s: &mut SessionTime<T>| {
+            s.dwell_s += self.dwell_s();
+            s.captures += 1;
+        };
+        let ok = |s: &mut SessionTime<T>| {
+            s.operator_s += self.operator_ok_s;
+            s.ok_stops += 1;
+        };
+        let mount = |s: &mut SessionTime<T>| {
+            s.remount_s += self.remount_s;
+            s.mountings += 1;
+        };
+        // Stage 1 on the upper arm.
+        mount(&mut s);
+        run(&mut s, &self.first_capture_path(&path.mount1, &path.stage1));
+        capture(&mut s);
+        let p = self.second_capture_path(&path.stage1);
+        run(&mut s, &p);
+        capture(&mut s);
+        if needs_ok(Mounting::UpperArm, &p) {
+            ok(&mut s);
+        }
+        run(&mut s, &self.turn_path(&path.stage1, &path.turned));
+        ok(&mut s);
+        capture(&mut s);
+        let p = self.second_capture_path(&path.turned);
+        run(&mut s, &p);
+        capture(&mut s);
+        if needs_ok(Mounting::UpperArm, &p) {
+            ok(&mut s);
+        }
         // The pendant to the flange.
-        go(&mut s, &path.turned, &path.mount2);
-        s.remount_s += self.remount_s;
+        run(&mut s, &[path.turned, path.mount2]);
+        mount(&mut s);
         // Stage 2.
         let mut here = path.mount2;
         for (i, q) in path.poses.iter().enumerate() {
-            go(&mut s, &here, q);
-            s.dwell_s += self.dwell_s();
-            if i > 0 && needs_ok(&here, q) {
-                s.operator_s += self.operator_ok_s;
-                s.ok_stops += 1;
+            let p = self.first_capture_path(&here, q);
+            run(&mut s, &p);
+            if i > 0 && needs_ok(Mounting::Flange, &p) {
+                ok(&mut s);
             }
+            capture(&mut s);
+            let p = self.second_capture_path(q);
+            run(&mut s, &p);
+            if needs_ok(Mounting::Flange, &p) {
+                ok(&mut s);
+            }
+            capture(&mut s);
             here = *q;
         }
+        // The closing reversal: park, the pendant to the bench, two captures (an OK
+        // arms the one after the half turn).
+        run(&mut s, &[here, path.park]);
+        mount(&mut s);
+        capture(&mut s);
+        ok(&mut s);
+        capture(&mut s);
         s.total_s = s.motion_s + s.dwell_s + s.remount_s + s.operator_s;
         s
     }
-}
-
-/// The poses of a session, in the controller's joint coordinates.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SessionPath<'a, T> {
-    /// Where the robot stands while the pendant is clipped to the upper arm.
-    pub mount1: [T; JOINTS],
-    /// The stage-1 pose.
-    pub stage1: [T; JOINTS],
-    /// The stage-1 pose with joint 1 turned by 180°.
-    pub turned: [T; JOINTS],
-    /// Where the robot stands while the pendant is moved to the flange.
-    pub mount2: [T; JOINTS],
-    /// The stage-2 poses, in order.
-    pub poses: &'a [[T; JOINTS]],
 }
 
 /// A visiting order of at most [`MAX_POSES`] poses (indices into the caller's list).
@@ -441,8 +501,8 @@ mod tests {
         TimeModel {
             speed_deg_s: [10.0, 10.0, 20.0, 30.0, 30.0, 60.0],
             accel_deg_s2: [100.0; JOINTS],
-            approach: [1; JOINTS],
             approach_deg: 1.0,
+            overshoot_deg: 2.0,
             settle_s: 1.0,
             window_s: 2.0,
             sample_period_s: 0.05,
@@ -467,31 +527,49 @@ mod tests {
         assert!(isclose(m.joint_move_s(0, 1.0), 0.2, 0.0, 1e-12));
         // The slowest joint sets the move: 90° on joint 1 (9.1 s) beats 90° on joint 6.
         let a = [0.0; JOINTS];
-        let b = [90.0, 0.0, 0.0, 0.0, 0.0, 90.0];
-        assert!(isclose(m.move_s(&a, &b), 9.1, 0.0, 1e-12));
+        let b = [90.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let c = [90.0, 0.0, 0.0, 0.0, 0.0, 90.0];
+        assert!(isclose(m.move_s(&a, &c), 9.1, 0.0, 1e-12));
         assert_eq!(m.move_s(&a, &a), 0.0);
+        assert!(isclose(m.path_s(&[a, b, a]), 18.2, 0.0, 1e-12));
     }
 
+    /// Every capture's last move moves every joint, by the approach distance in the
+    /// positive direction (first capture) or by the overshoot in the negative one
+    /// (second); the half turn moves joint 1 alone.
     #[test]
-    fn moves_arriving_the_wrong_way_go_through_an_approach_point() {
-        let mut m = model();
-        m.approach = [1, -1, 1, 1, 1, 1];
+    fn captures_are_reached_from_both_sides_on_every_joint() {
+        let m = model();
         let from = [0.0, 0.0, 10.0, 0.0, 0.0, 0.0];
-        let to = [5.0, 5.0, 0.0, 0.0, 0.0, 0.0];
-        let v = m.via(&from, &to).unwrap_or([f64::NAN; JOINTS]);
-        // Joint 2 (from above) moves up and joint 3 (from below) moves down: both stop
-        // 1° beyond on their approach side; joint 1 goes straight to its target.
-        assert_eq!(v, [5.0, 6.0, -1.0, 0.0, 0.0, 0.0]);
+        let q = [5.0, 5.0, 0.0, -3.0, 0.0, 7.0];
+        let first = m.first_capture_path(&from, &q);
+        let second = m.second_capture_path(&q);
+        assert_eq!(first[0], from);
         for k in 0..JOINTS {
-            let last = to[k] - v[k];
-            assert!(last * f64::from(m.approach[k]) >= 0.0, "joint {}", k + 1);
+            assert!(
+                isclose(first[2][k] - first[1][k], 1.0, 0.0, 1e-12),
+                "j{}",
+                k + 1
+            );
+            assert!(
+                isclose(second[2][k] - second[1][k], -2.0, 0.0, 1e-12),
+                "j{}",
+                k + 1
+            );
+            assert!(
+                isclose(second[1][k] - second[0][k], 2.0, 0.0, 1e-12),
+                "j{}",
+                k + 1
+            );
         }
-        assert!(m
-            .via(&[0.0; JOINTS], &[1.0, -1.0, 1.0, 0.0, 0.0, 0.0])
-            .is_none());
-        let e = m.entry(&to);
-        assert_eq!(e, [4.0, 6.0, -1.0, -1.0, -1.0, -1.0]);
-        assert!(m.leg_s(&from, &to) > m.move_s(&from, &to));
+        assert_eq!((first[2], second[0], second[2]), (q, q, q));
+        let s1 = [-90.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let turned = [90.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let t = m.turn_path(&s1, &turned);
+        // Joint 1 alone turns (to 89°), the others stand.
+        assert_eq!(t[1], [89.0, 0.0, 0.0, 0.0, 0.0, 0.0]);
+        assert_eq!(t[2], [89.0, -1.0, -1.0, -1.0, -1.0, -1.0]);
+        assert_eq!(t[3], turned);
     }
 
     #[test]
@@ -511,35 +589,44 @@ mod tests {
             turned,
             mount2,
             poses: &poses,
+            park: mount2,
         };
         let t = m.session_time(&path, |_, _| true);
-        // Entry (1° on every joint: the slowest, 10°/s joints, take 0.2 s); joint 2
-        // down 45° from above: through -1°, 46° then 1°; the turn 18.1 s; back to the
-        // flange mount: joint 1 -180° through -1° (181° then 1°), 30° on joint 3 and
-        // 45° on joint 5 meanwhile; then joint 5 down 45° to pose 1 through -1° (46°
-        // at 30°/s and 1°); 30° on joint 3 (1.5 + 0.2 s, 20°/s loses 0.2 s).
         let j = |k, d| m.joint_move_s(k, d);
-        let expect_motion = 0.2
-            + (j(1, 46.0) + j(1, 1.0))
-            + 18.1
-            + (j(0, 181.0) + j(0, 1.0))
-            + (j(4, 46.0) + j(4, 1.0))
-            + 1.7;
+        // Every approach move is 1° on every joint (0.2 s on each: the slowest joints'
+        // boundary, the others' triangles), every overshoot 2° out and back (joint 1's
+        // 0.3 s each way).
+        let up = 0.2;
+        let over = 2.0 * j(0, 2.0);
+        let expect_motion = j(1, 46.0) + up           // mount1 (joint 2 at 45°) to stage 1
+            + over                                    // stage 1's second capture
+            + j(0, 179.0) + up + up                   // the half turn, then up from below
+            + over                                    // the turned pose's second
+            + j(0, 180.0)                             // to the flange's mount (joint 1 slowest)
+            + j(4, 46.0) + up + over                  // pose 1: joint 5 down 45° and 1° more
+            + j(2, 29.0) + up + over                  // pose 2: joint 3 up 29°, then 1°
+            + j(4, 45.0); // park at the flange's mount
         assert!(isclose(t.motion_s, expect_motion, 0.0, 1e-9), "{t:?}");
-        assert!(isclose(t.dwell_s, 4.0 * m.dwell_s(), 0.0, 1e-12));
-        // Stage 1's OK and the second stage-2 pose's (the first is armed by the remount).
-        assert_eq!(t.ok_stops, 2);
-        assert_eq!(t.approach_moves, 3);
+        assert_eq!(t.moves, 2 + 2 + 3 + 2 + 1 + 2 * 4 + 1);
+        // Stage 1's four captures, two per pose, the closing reversal's two.
+        assert_eq!(t.captures, 4 + 2 * 2 + 2);
+        assert!(isclose(t.dwell_s, 10.0 * 3.1, 0.0, 1e-12));
+        assert_eq!(t.mountings, 3);
+        // The half turn's and the closing reversal's OKs, and one after every move that
+        // may need one: stage 1's two seconds, pose 1's second, pose 2's both.
+        assert_eq!(t.ok_stops, 2 + 5);
         assert!(isclose(
             t.total_s,
-            t.motion_s + t.dwell_s + 120.0 + 20.0,
+            t.motion_s + t.dwell_s + 3.0 * 60.0 + 7.0 * 10.0,
             0.0,
             1e-9
         ));
+        // Nothing needs an OK but the two half turns.
+        assert_eq!(m.session_time(&path, |_, _| false).ok_stops, 2);
         assert!(m.validate().is_ok());
         let mut bad = m;
-        bad.approach[3] = 0;
-        assert_eq!(bad.validate(), Err(TimeSetting::Approach { joint: 4 }));
+        bad.overshoot_deg = 0.0;
+        assert_eq!(bad.validate(), Err(TimeSetting::ApproachDistance));
         bad = m;
         bad.speed_deg_s[5] = f64::NAN;
         assert_eq!(bad.validate(), Err(TimeSetting::Speed { joint: 6 }));
@@ -579,10 +666,11 @@ mod tests {
             p.poses_rad.iter().map(|q| q.map(f64::to_degrees)).collect();
         let m = model();
         let start = [0.0; JOINTS];
+        let leg = |a: &[f64; JOINTS], b: &[f64; JOINTS]| m.path_s(&m.first_capture_path(a, b));
         let order = shortest_tour(
             deg.len(),
-            |i| m.leg_s(&start, &deg[i]),
-            |i, j| m.leg_s(&deg[i], &deg[j]),
+            |i| leg(&start, &deg[i]),
+            |i, j| leg(&deg[i], &deg[j]),
         );
         let tour: std::vec::Vec<[f64; JOINTS]> =
             order.iter().map(|&i| deg[usize::from(i)]).collect();
@@ -592,6 +680,7 @@ mod tests {
             turned: [180.0, 0.0, 0.0, 0.0, 0.0, 0.0],
             mount2: start,
             poses,
+            park: start,
         };
         let t0 = m.session_time(&path(&deg), |_, _| false);
         let t1 = m.session_time(&path(&tour), |_, _| false);
