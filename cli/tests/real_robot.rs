@@ -203,3 +203,71 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
         }
     }
 }
+
+/// The hand-over trap of issue 12: stage 1's tilt passed to `identify` with a log that
+/// does not record joints 1 and 2 is refused (it composes with them), never a silent
+/// error of degrees in Δθ3.
+#[test]
+fn identify_refuses_a_tilt_it_cannot_compose() {
+    let path = dir().join("no-j1j2.csv");
+    std::fs::write(
+        &path,
+        "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg\n1,2,3,4,0.1,0.2\n5,-6,7,8,0.3,-0.2\n",
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_zerocal"))
+        .args([
+            "identify",
+            "--convention",
+            "axis",
+            path.to_str().unwrap(),
+            "--base-tilt-deg",
+            "0.3,-0.2",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("no j1_deg and j2_deg columns") && err.contains("zerocal session"),
+        "{err}"
+    );
+}
+
+/// Joint 1 standing 5° off its stage-1 angle during stage 2: the export records it and
+/// the model uses it, so the zeros come out right (docs/mounting.md). Taken as still at
+/// its stage-1 angle, the 0.5° base tilt would turn by 5° against the arm: 0.04° in Δθ3.
+#[test]
+fn a_joint_1_off_its_mark_in_stage_2_is_followed() {
+    let kr6 = zerocal_profile::builtin("kuka-kr6-r900-sixx").unwrap();
+    let (mut plan, _) = setup(&kr6, Method::Compensated, DEFAULT_POSES).unwrap();
+    for q in &mut plan {
+        q[0] += 5f64.to_radians();
+    }
+    let world = WorldConfig {
+        max_base_tilt_deg: 0.5,
+        ..WorldConfig::real()
+    };
+    let s = RealSession::simulate(&kr6, &plan, &world, 21);
+    let path = dir().join("kr6-j1.csv");
+    std::fs::write(&path, s.export_text(&kr6.name)).unwrap();
+    let out = session(&path, &[]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let truth = s.truth_rad().map(f64::to_degrees);
+    for k in 0..5 {
+        let f = v["joints"][k]["offset_deg"].as_f64().unwrap();
+        let u = v["joints"][k]["expanded_k2_deg"].as_f64().unwrap();
+        // Within the session's own k = 2 budget.
+        assert!(
+            (f - truth[k]).abs() <= u,
+            "j{}: {f} vs {} (U {u})",
+            k + 2,
+            truth[k]
+        );
+    }
+}
