@@ -58,6 +58,15 @@ fn run(cli: &Cli) -> Result<String, CliError> {
                 args.seed,
             )?;
             let mut out = real::render(&run, &world, args.seed);
+            if let Some(path) = &args.real.export {
+                std::fs::write(path, run.session.export_text(&run.profile.name))
+                    .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+                out.push_str(&format!(
+                    "wrote {} (read it with `zerocal session {}`)\n",
+                    path.display(),
+                    path.display()
+                ));
+            }
             match real::accuracy(&run, args.accuracy_points, args.seed) {
                 Ok(report) => {
                     out.push_str(&format!(

@@ -126,6 +126,10 @@ pub struct WorldArgs {
     /// Skip the closing reversal (the bias' drift is then unmeasured).
     #[arg(long)]
     pub no_closing_reversal: bool,
+    /// Also write the simulated session as the pendant exports it, for `zerocal session`
+    /// to read (a rehearsal before a real robot).
+    #[arg(long, value_name = "FILE")]
+    pub export: Option<std::path::PathBuf>,
 }
 
 impl WorldArgs {

@@ -144,7 +144,7 @@ pub fn write_report<T: Real, W: Write>(
     )?;
     writeln!(
         w,
-        "enter on the controller: minus each offset (offset = true - commanded)"
+        "offset = true - commanded: the controller's reading of each joint must rise by it (docs/controllers/ says where)"
     )?;
     if verdict.is_pass() {
         writeln!(w, "verdict: PASS")

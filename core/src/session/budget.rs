@@ -307,12 +307,40 @@ pub fn predict_budget<T: Real>(
         temperatures: super::StageTemperatures::default(),
         closing: None,
     };
-    // σ from the noise figure: noiseless readings leave no residuals to take it from.
+    // σ as the session's residuals will show it: the sensor's noise, and the part of
+    // the robot's repeatability the fit leaves in them (a joint's error at one pose is
+    // no offset, so it is not fitted away: all but the fit's share p/2N of it stays).
+    // Noiseless readings leave no residuals to take σ from.
     let per_row = T::lit(captures_per_pose.max(1) as f64);
+    let power = crate::stage2::joint_sensitivity_power(
+        &crate::session::handover(
+            &crate::stage1::Stage1Result {
+                base_tilt: BaseTilt::level(),
+                bias_y_rad: T::zero(),
+                delta_theta2_rad: T::zero(),
+                bias_x_known: true,
+                covariance: [[T::zero(); 5]; 5],
+                covariance_from_stage0: [[T::zero(); 5]; 5],
+            },
+            *arm,
+            convention,
+            None,
+            robot.masses,
+        )
+        .model,
+        config.extras,
+        poses,
+        &[T::zero(); WRIST_JOINTS],
+    );
+    let n_readings = T::lit(2.0 * poses.len() as f64);
+    let kept = (T::one() - T::lit(config.extras.layout().len() as f64) / n_readings).max(T::zero());
+    let rep2 = inputs.repeatability_rad * inputs.repeatability_rad;
+    let sigma2 =
+        config.sensor_noise_rad * config.sensor_noise_rad / per_row + rep2 / per_row * power * kept;
     let config = crate::stage2::FitConfig {
         min_residual_dof: usize::MAX,
         max_residual_rms_rad: T::zero(),
-        sensor_noise_rad: config.sensor_noise_rad / per_row.sqrt(),
+        sensor_noise_rad: sigma2.sqrt(),
         ..*config
     };
     let solution = super::solve(&readings, &config).result?;

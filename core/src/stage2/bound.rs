@@ -153,3 +153,44 @@ pub fn joint_error_covariance<T: Real>(
     }
     Ok(cov)
 }
+
+/// The mean over readings of Σₖ (∂reading/∂θₖ)² for joints 2-6: how strongly a joint
+/// error of unit variance, independent at each pose, moves a reading. With the robot's
+/// repeatability it gives the part of the residuals a session should expect beyond
+/// the sensor's noise ([`crate::session::predict_budget`]).
+pub fn joint_sensitivity_power<T: Real>(
+    model: &Stage2Model<T>,
+    extras: Extras,
+    joints_rad: &[[T; JOINTS]],
+    offsets_rad: &[T; WRIST_JOINTS],
+) -> T {
+    let layout = extras.layout();
+    let estimate = super::Estimate {
+        offsets_rad: *offsets_rad,
+        ..super::Estimate::default()
+    };
+    let pass = model.pass(&estimate);
+    let mut sum = T::zero();
+    let mut readings = 0u32;
+    for q in joints_rad {
+        let pose = PoseReading {
+            joints_rad: *q,
+            reading: crate::model::Tilt::default(),
+            temperature_c: None,
+        };
+        let p = model.predict_rows(&pass, &layout, &estimate, &pose, true);
+        for axis in 0..2 {
+            let mut s = p.handover_rows[axis][2] * p.handover_rows[axis][2];
+            for k in 0..WRIST_JOINTS {
+                s += p.rows[axis][k] * p.rows[axis][k];
+            }
+            sum += s;
+            readings += 1;
+        }
+    }
+    if readings == 0 {
+        T::zero()
+    } else {
+        sum / T::lit(f64::from(readings))
+    }
+}

@@ -13,7 +13,8 @@ mod model;
 pub mod params;
 
 pub use bound::{
-    covariance_bound, joint_error_covariance, repeatability_covariance, CovarianceBound,
+    covariance_bound, joint_error_covariance, joint_sensitivity_power, repeatability_covariance,
+    CovarianceBound,
 };
 pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
 pub use model::{Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT};
@@ -131,6 +132,7 @@ impl<T: Real> FitConfig<T> {
             sensor_noise_rad: deg_to_rad(T::lit(MEMS_CAPTURE_NOISE_DEG)),
             sensor_range_rad: deg_to_rad(T::lit(MEMS_RANGE_DEG)),
             max_residual_rms_rad: deg_to_rad(T::lit(MEMS_MAX_RESIDUAL_DEG)),
+            handover_noise_rad: deg_to_rad(T::lit(MEMS_CAPTURE_NOISE_DEG)),
             ..FitConfig::default()
         }
     }
@@ -551,6 +553,9 @@ fn finish<T: Real>(
     let variance = noise_sigma_rad * noise_sigma_rad;
     // The larger of the stated figure and what this session's residuals show: a
     // session noisier than the data sheet is budgeted as it is.
+    // The larger of the stated figure and what this session's residuals show: a
+    // session noisier than the data sheet is budgeted as it is (the residuals also hold
+    // part of the robot's repeatability, so this errs on the safe side).
     let handover_variance = (config.handover_noise_rad * config.handover_noise_rad).max(variance);
     let cov_of =
         |r: usize, c: usize| inv.m[r][c] * variance + handover_part.m[r][c] * handover_variance;
