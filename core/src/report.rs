@@ -78,8 +78,17 @@ impl Verdict {
         let mut v = Verdict::default();
         let rms = fit.residual_rms_rad.to_f64();
         let noise = config.sensor_noise_rad.to_f64();
+        // With a residual ceiling (a real sensor on a real robot, whose repeatability
+        // leaves part of itself in the residuals), warn when the residuals come within
+        // 80 % of the refusal; else at three times the sensor's noise.
+        let ceiling = config.max_residual_rms_rad.to_f64();
+        let warn_above = if ceiling > 0.0 {
+            0.8 * ceiling
+        } else {
+            RESIDUAL_WARN_FACTOR * noise
+        };
         // Capacity is MAX_WARNINGS and each variant is pushed at most once.
-        if rms > RESIDUAL_WARN_FACTOR * noise {
+        if rms > warn_above {
             let _ = v.warnings.push(Warning::ResidualHigh {
                 residual_rms_deg: rms.to_degrees(),
                 sensor_noise_deg: noise.to_degrees(),
