@@ -1,5 +1,7 @@
 //! One 30-pose stage-2 solve on the paper's Table 4 setup, in f64 (desktop) and f32
-//! (the pendant's precision, here on the host CPU).
+//! (the pendant's precision, here on the host CPU); and one whole real-world session
+//! on the KR 6 (stages 0-2 with the SCL3300's model: 48 captures, 18 parameters, the
+//! second pass after stage 1 is solved again with the gains).
 
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -44,6 +46,32 @@ fn bench(c: &mut Criterion) {
     });
     c.bench_function("solve_30_poses_f32", |b| {
         b.iter(|| fit(black_box(&m32), black_box(&p32), &c32))
+    });
+
+    let kr6 = zerocal_profile::builtin("kuka-kr6-r900-sixx").unwrap();
+    let (plan, config) = zerocal_sim::montecarlo::setup(
+        &kr6,
+        zerocal_sim::montecarlo::Method::Compensated,
+        zerocal_sim::montecarlo::DEFAULT_POSES,
+    )
+    .unwrap();
+    let world = zerocal_sim::world::WorldConfig::real();
+    let s = zerocal_sim::world::RealSession::simulate(&kr6, &plan, &world, 1);
+    let readings = zerocal_core::session::SessionReadings {
+        convention: Convention::Axis,
+        arm: kr6.arm,
+        masses: kr6.mass_model(),
+        bias: zerocal_core::session::BiasSource::Reversal(s.stage0),
+        stage1: s.stage1,
+        poses: &s.poses,
+        temperatures: zerocal_core::session::StageTemperatures {
+            stage0_c: Some(s.stage0_temperature_c),
+            stage1_c: Some(s.stage1_temperature_c),
+        },
+        closing: Some(s.closing),
+    };
+    c.bench_function("session_kr6_real_f64", |b| {
+        b.iter(|| zerocal_core::session::solve(black_box(&readings), &config))
     });
 }
 
