@@ -135,7 +135,7 @@ fn a_sensor_out_of_its_mode_range_is_refused() {
         margin_rad: 0.0,
         ..zerocal_core::plan::PlanConfig::default()
     };
-    let wide = zerocal_sim::montecarlo::plan_for(&profile, &config, 0.0).unwrap();
+    let wide = zerocal_sim::montecarlo::plan_for(&profile, &config).unwrap();
     let plan: Vec<_> = wide.poses_rad.iter().copied().collect();
     let s = RealSession::simulate(&profile, &plan, &WorldConfig::real(), 4);
     assert!(s.outside_range > 0, "the wide plan stayed inside ±10°");

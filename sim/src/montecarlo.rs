@@ -44,11 +44,7 @@ impl SessionOutcome {
 ///
 /// # Errors
 /// The planner's refusal.
-pub fn plan_for(
-    profile: &Profile,
-    config: &PlanConfig<f64>,
-    j3_half_range_deg: f64,
-) -> Result<Plan<f64>, PlanError> {
+pub fn plan_for(profile: &Profile, config: &PlanConfig<f64>) -> Result<Plan<f64>, PlanError> {
     let model = Stage2Model {
         arm: profile.arm,
         sensor: SensorModel::new(Convention::Axis, Tilt::default()),
@@ -61,12 +57,6 @@ pub fn plan_for(
     for k in 0..WRIST_JOINTS {
         let j = &profile.joints[k + 2];
         config.limits_rad[k] = (j.min_deg.to_radians(), j.max_deg.to_radians());
-    }
-    if j3_half_range_deg > 0.0 {
-        let c = profile.stage1_joints_rad[2];
-        let h = j3_half_range_deg.to_radians();
-        let (lo, hi) = config.limits_rad[0];
-        config.limits_rad[0] = ((c - h).max(lo), (c + h).min(hi));
     }
     let mut pool = vec![Candidate::default(); config.candidates];
     plan(&model, &config, &mut pool)
@@ -269,7 +259,7 @@ pub fn setup(
         margin_rad: 0.0,
         ..PlanConfig::default()
     };
-    let plan = plan_for(profile, &config, 0.0)?;
+    let plan = plan_for(profile, &config)?;
     Ok((plan.poses_rad.iter().copied().collect(), fit))
 }
 
