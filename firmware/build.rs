@@ -37,7 +37,7 @@ fn main() {
 
 /// `OUT_DIR/default_plan.rs`: `DEFAULT_PLAN_RAD`, the f32 bits of each angle (exact).
 fn write_default_plan(out_dir: &std::path::Path) {
-    let config = ProcedureConfig::<f32>::default();
+    let config = ProcedureConfig::<f32>::for_mems();
     let mut pool = vec![Candidate::<f32>::default(); DEFAULT_POOL];
     let plan = match pendant_default(&config, &mut pool) {
         Ok(plan) => plan,

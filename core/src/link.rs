@@ -6,8 +6,8 @@
 //! | `status` | phase, captures, bias, stage-1 and last results |
 //! | `live` | streams readings until any key |
 //! | `plan` | prints the pose list |
-//! | `plan set` | uploads a pose list: `j3,j4,j5,j6` (deg) a line, then `end` |
-//! | `export` | the session as the CSV `zerocal identify` reads, with stages 0-2 |
+//! | `plan set` | uploads a pose list: `j1,…,j6` or `j3,…,j6` (deg) a line (`zerocal plan --csv`), then `end` |
+//! | `export` | the whole session, as `zerocal session` reads it |
 //! | `clear` | clears the session in progress |
 //!
 //! Unknown or malformed lines get an `error:` line and change nothing. Parsing and
@@ -17,7 +17,8 @@ use crate::decimal;
 use crate::decimal::{deg_fixed, deg_signed};
 use crate::log::result_line;
 use crate::model::{JOINTS, WRIST_JOINTS};
-use crate::plan::{PoseList, MAX_POSES};
+use crate::plan::PoseList;
+use crate::procedure::MAX_PLAN_POSES;
 use crate::procedure::{Phase, ProcedureState};
 use crate::real::{deg_to_rad, Real};
 use core::fmt::{self, Write};
@@ -31,8 +32,8 @@ pub const HELP: &[&str] = &[
     "  status     phase, captures, bias, results",
     "  live       stream readings until a key is pressed",
     "  plan       show the pose list",
-    "  plan set   upload a pose list: j3,j4,j5,j6 in degrees, one pose a line, then 'end'",
-    "  export     the session as CSV for 'zerocal identify'",
+    "  plan set   upload a pose list: j1..j6 or j3..j6 in degrees, one pose a line, then 'end'",
+    "  export     the whole session for 'zerocal session'",
     "  clear      clear the session in progress",
 ];
 
@@ -71,7 +72,7 @@ pub enum LinkError {
         /// Row number (1-based).
         row: usize,
     },
-    /// A `plan set` angle is outside ±360°.
+    /// A `plan set` angle is outside ±[`crate::log::MAX_JOINT_DEG`].
     AngleOutOfRange {
         /// Row number (1-based).
         row: usize,
@@ -99,11 +100,15 @@ impl fmt::Display for LinkError {
             LinkError::AngleOutOfRange { row } => {
                 write!(
                     f,
-                    "plan row {row}: an angle is outside +/-360 deg; plan unchanged"
+                    "plan row {row}: an angle is outside +/-{} deg; plan unchanged",
+                    crate::log::MAX_JOINT_DEG
                 )
             }
             LinkError::PlanTooLong => {
-                write!(f, "a plan holds at most {MAX_POSES} poses; plan unchanged")
+                write!(
+                    f,
+                    "a plan holds at most {MAX_PLAN_POSES} poses (each is captured twice); plan unchanged"
+                )
             }
             LinkError::PlanTooShort { rows } => write!(
                 f,
@@ -186,15 +191,15 @@ impl<T: Real> PlanUpload<T> {
             return Ok(UploadStep::Done(core::mem::take(&mut self.rows)));
         }
         let row = self.rows.len() + 1;
-        // The CSV header `zerocal plan --csv` writes.
-        if line.starts_with("j3") {
+        // The CSV headers `zerocal plan --csv` writes (`j1_deg,…` or `j3_deg,…`).
+        if line.starts_with('j') {
             return Ok(UploadStep::More);
         }
         let mut values = [T::zero(); JOINTS];
         let mut count = 0;
         for field in line.split(',') {
             let deg = decimal::parse(field).ok_or(LinkError::BadPlanRow { row })?;
-            if deg.abs() > 360.0 {
+            if !(deg.abs() <= crate::log::MAX_JOINT_DEG) {
                 return Err(LinkError::AngleOutOfRange { row });
             }
             let slot = values.get_mut(count).ok_or(LinkError::BadPlanRow { row })?;
@@ -211,6 +216,9 @@ impl<T: Real> PlanUpload<T> {
             }
             _ => return Err(LinkError::BadPlanRow { row }),
         };
+        if self.rows.len() >= MAX_PLAN_POSES {
+            return Err(LinkError::PlanTooLong);
+        }
         self.rows.push(q).map_err(|_| LinkError::PlanTooLong)?;
         Ok(UploadStep::More)
     }
@@ -275,22 +283,20 @@ pub fn status<T: Real>(
     Some(r.map(|()| w))
 }
 
-/// The lines of `plan`.
+/// The lines of `plan`: every joint, as `zerocal plan --csv` writes them.
 pub fn plan_line<T: Real>(plan: &PoseList<T>, line: usize) -> Option<Result<Line, fmt::Error>> {
     let mut w = Line::new();
     let r = if line == 0 {
-        w.write_str("pose,j3_deg,j4_deg,j5_deg,j6_deg")
+        w.write_str("pose,j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg")
     } else {
         let q = plan.get(line - 1)?;
-        write!(
-            w,
-            "{},{},{},{},{}",
-            line,
-            deg_fixed(q[0], 3),
-            deg_fixed(q[1], 3),
-            deg_fixed(q[2], 3),
-            deg_fixed(q[3], 3)
-        )
+        (|| {
+            write!(w, "{line}")?;
+            for v in q {
+                write!(w, ",{}", deg_fixed(*v, 3))?;
+            }
+            Ok(())
+        })()
     };
     Some(r.map(|()| w))
 }
@@ -303,6 +309,8 @@ pub fn phase_name(p: Phase) -> &'static str {
         Phase::Stage1Before => "stage 1 (axis 1 at mark)",
         Phase::Stage1After => "stage 1 (axis 1 turned 180 deg)",
         Phase::Stage2 => "stage 2 (flange poses)",
+        Phase::ClosingFirst => "closing reversal (first reading)",
+        Phase::ClosingSecond => "closing reversal (after 180 deg turn)",
         Phase::Done => "done",
     }
 }
@@ -357,12 +365,12 @@ mod tests {
         assert_eq!(up.feed("1,2,x,4"), Err(LinkError::BadPlanRow { row: 1 }));
         assert_eq!(up.feed("1,2,nan,4"), Err(LinkError::BadPlanRow { row: 1 }));
         assert_eq!(
-            up.feed("1,2,400,4"),
+            up.feed("1,2,800,4"),
             Err(LinkError::AngleOutOfRange { row: 1 })
         );
         assert_eq!(up.feed("end"), Err(LinkError::PlanTooShort { rows: 0 }));
         let mut up = PlanUpload::<f32>::new([0.0; 2]);
-        for _ in 0..MAX_POSES {
+        for _ in 0..MAX_PLAN_POSES {
             assert_eq!(up.feed("1,2,3,4"), Ok(UploadStep::More));
         }
         assert_eq!(up.feed("1,2,3,4"), Err(LinkError::PlanTooLong));

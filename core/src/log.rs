@@ -24,7 +24,7 @@
 
 use crate::decimal::Fixed;
 use crate::model::{Convention, Tilt};
-use crate::procedure::{ProcedureConfig, ProcedureState};
+use crate::procedure::{ProcedureConfig, ProcedureState, ReadingSlot};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
 use crate::stage0::{ClosingReversal, Reversal};
 use crate::stage1::AxisOneTurn;
@@ -94,7 +94,14 @@ pub fn export<'a, T: Real>(
     }
 }
 
-const EXPORT_HEAD: usize = 7;
+const EXPORT_HEAD: usize = 11;
+
+/// Writes `x,y` in degrees.
+fn pair<T: Real>(w: &mut Line, t: &Tilt<T>) -> fmt::Result {
+    deg(w, t.x_rad)?;
+    w.write_char(',')?;
+    deg(w, t.y_rad)
+}
 
 impl<T: Real> Export<'_, T> {
     fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
@@ -107,33 +114,65 @@ impl<T: Real> Export<'_, T> {
                 self.config.robot,
                 self.config.convention.name()
             ),
-            2 => match s.bias() {
-                Some(b) => {
+            // This session's reversal when it ran (the bias and its temperature follow
+            // from it); else the bias an earlier session stored, if any.
+            2 => match (s.stage0_skipped(), s.stage0_reversal(), s.bias()) {
+                (false, Some(r), _) => write_reversal(w, "stage0_reversal_deg", &r),
+                (_, _, Some(b)) => {
                     w.write_str("# stage0_bias_deg ")?;
-                    deg(w, b.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, b.y_rad)
+                    pair(w, &b)
                 }
-                None => w.write_str("# stage0_bias_deg none"),
+                _ => w.write_str("# stage0_bias_deg none"),
             },
             3 => match s.stage1_readings() {
-                (Some(a), Some(b)) => {
+                Some((a, b)) => {
                     w.write_str("# stage1_readings_deg before ")?;
-                    deg(w, a.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, a.y_rad)?;
+                    pair(w, &a.reading)?;
                     w.write_str(" after ")?;
-                    deg(w, b.x_rad)?;
-                    w.write_char(',')?;
-                    deg(w, b.y_rad)?;
+                    pair(w, &b.reading)?;
                     w.write_str(" j1_deg ")?;
                     deg(w, self.config.stage1_joints_rad[0])?;
                     w.write_str(" j2_deg ")?;
                     deg(w, self.config.stage1_joints_rad[1])
                 }
-                _ => w.write_str("# stage1_readings_deg none"),
+                None => w.write_str("# stage1_readings_deg none"),
             },
-            4 => match s.stage1() {
+            4 => match s.stage_temperatures().stage1_c {
+                Some(c) => write!(w, "# stage1_temp_c {}", Fixed::new(c.to_f64(), 2)),
+                None => w.write_str("# stage 1 temperature not recorded"),
+            },
+            // Every capture of stage 1, for the record: the line above holds the means
+            // of each pair, which is what the solver takes.
+            5 | 6 => {
+                let (name, below, above) = if i == 5 {
+                    (
+                        "before",
+                        ReadingSlot::Stage1BeforeBelow,
+                        ReadingSlot::Stage1BeforeAbove,
+                    )
+                } else {
+                    (
+                        "after",
+                        ReadingSlot::Stage1AfterBelow,
+                        ReadingSlot::Stage1AfterAbove,
+                    )
+                };
+                write!(w, "# stage1_captures_deg {name}")?;
+                for (side, slot) in [("below", below), ("above", above)] {
+                    write!(w, " {side} ")?;
+                    match s.reading(slot) {
+                        Some(c) => {
+                            pair(w, &c.reading)?;
+                            if let Some(t) = c.temperature_c {
+                                write!(w, " temp_c {}", Fixed::new(t.to_f64(), 2))?;
+                            }
+                        }
+                        None => w.write_str("none")?,
+                    }
+                }
+                Ok(())
+            }
+            7 => match s.stage1() {
                 Some(r) => {
                     w.write_str("# stage1 delta_theta2_deg ")?;
                     deg(w, r.delta_theta2_rad)?;
@@ -146,7 +185,11 @@ impl<T: Real> Export<'_, T> {
                 }
                 None => w.write_str("# stage1 none"),
             },
-            5 => write_fit_extras(w, self.config.fit.extras),
+            8 => match s.closing_reversal() {
+                Some(r) => write_reversal(w, "closing_reversal_deg", &r),
+                None => w.write_str("# closing reversal not made"),
+            },
+            9 => write_fit_extras(w, self.config.fit.extras),
             _ => w.write_str(LOG_HEADER),
         }
     }

@@ -8,7 +8,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use zerocal_core::model::Tilt;
-use zerocal_core::procedure::{Event, Notice, Phase};
+use zerocal_core::procedure::{Approach, Event, Notice, Phase};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::SessionError;
 use zerocal_core::{FitResult, Real};
@@ -34,7 +34,8 @@ fn z_scores<T: Real>(p: &SimPendant<T>) -> (f64, [f64; 4], FitResult<T>) {
 
 fn check_session<T: Real>(label: &str, p: &SimPendant<T>, poses: usize) {
     assert_eq!(p.session.phase(), Phase::Done, "{label}");
-    assert_eq!(p.session.captures().len(), poses, "{label}");
+    // Two captures a pose: from below and from above.
+    assert_eq!(p.session.captures().len(), 2 * poses, "{label}");
     let (z2, z, fit) = z_scores(p);
     println!(
         "{label}: offsets_deg {:?} sigma_deg {:?} residual_rms_deg {:.5}; error/sigma j2 {z2:+.2} j3..j6 {:+.2?}",
@@ -71,26 +72,38 @@ fn back_undoes_the_last_capture_at_every_stage() {
     p.event(Event::Ok);
     p.hold(HOLD_MS);
     assert_eq!(p.session.phase(), Phase::Stage1Before);
+    // Stage 1's four captures, BACK through each.
     scenario::stage1(&mut p);
     assert_eq!(p.session.phase(), Phase::Stage2);
-    // Three poses, BACK, the third again.
-    for _ in 0..3 {
-        let (_, _, q) = p.session.view().pose.expect("pose");
-        p.move_to(
-            Mount::Flange {
-                joints_rad: q.map(f64::from),
-            },
-            2500,
+    for (phase, approach) in [
+        (Phase::Stage1After, Approach::FromAbove),
+        (Phase::Stage1After, Approach::FromBelow),
+        (Phase::Stage1Before, Approach::FromAbove),
+        (Phase::Stage1Before, Approach::FromBelow),
+    ] {
+        p.event(Event::Back);
+        assert_eq!(
+            (p.session.phase(), p.session.view().approach),
+            (phase, Some(approach))
         );
+    }
+    scenario::stage1(&mut p);
+    assert_eq!(p.session.phase(), Phase::Stage2);
+    // Three captures (pose 1 from both sides, pose 2 from below), BACK, the third again.
+    for _ in 0..3 {
+        assert!(scenario::approach_next(&mut p));
         p.hold(HOLD_MS);
     }
     assert_eq!(p.session.captures().len(), 3);
     p.event(Event::Back);
     assert_eq!(p.session.captures().len(), 2);
     assert_eq!(
-        p.session.view().pose.map(|v| v.0),
-        Some(2),
-        "back to the third pose"
+        (
+            p.session.view().pose.map(|v| v.0),
+            p.session.view().approach
+        ),
+        (Some(1), Some(Approach::FromBelow)),
+        "back to the second pose, from below"
     );
     // Holding still where the undone pose was does not capture it again unarmed...
     p.hold(HOLD_MS);
@@ -100,11 +113,25 @@ fn back_undoes_the_last_capture_at_every_stage() {
     p.hold(HOLD_MS);
     assert_eq!(p.session.captures().len(), 3);
     scenario::stage2(&mut p);
+    assert_eq!(p.session.phase(), Phase::ClosingFirst);
+    scenario::closing(&mut p);
     check_session("after BACKs", &p, 8);
-    // BACK on the result returns to the last pose with its capture undone.
+    // BACK on the result undoes the closing reversal's readings, then the last pose's
+    // capture.
+    p.event(Event::Back);
+    assert_eq!(p.session.phase(), Phase::ClosingSecond);
+    p.event(Event::Back);
+    assert_eq!(p.session.phase(), Phase::ClosingFirst);
     p.event(Event::Back);
     assert_eq!(p.session.phase(), Phase::Stage2);
-    assert_eq!(p.session.captures().len(), 7);
+    assert_eq!(p.session.captures().len(), 15);
+    // NEXT skips the closing reversal: the result without it.
+    scenario::stage2(&mut p);
+    p.event(Event::Next);
+    assert_eq!(p.session.phase(), Phase::Done);
+    assert!(p.session.closing_reversal().is_none());
+    p.event(Event::Back);
+    assert_eq!(p.session.phase(), Phase::ClosingFirst, "BACK un-skips it");
 }
 
 #[test]
@@ -127,21 +154,17 @@ fn power_cut_at_any_moment_loses_nothing() {
         before,
         "stage 1 survives"
     );
-    let mut visits = 20;
-    while p.session.phase() == Phase::Stage2 && visits > 0 {
+    let mut visits = 80;
+    while visits > 0 && scenario::approach_next(&mut p) {
         visits -= 1;
-        let (_, _, q) = p.session.view().pose.expect("pose");
-        p.move_to(
-            Mount::Flange {
-                joints_rad: q.map(f64::from),
-            },
-            2500,
-        );
+        let before_visit = p.session.captures().len();
         // Hold in short stretches, cutting power between them.
         for _ in 0..(HOLD_MS / 250) {
             p.hold(250);
             steps += 1;
-            if steps.is_multiple_of(7) {
+            // Every 2.75 s: a 2 s stillness window fits between two cuts, at a
+            // different moment of each capture's hold.
+            if steps.is_multiple_of(11) {
                 let captured = p.session.captures().to_vec();
                 let phase = p.session.phase();
                 p.power_cycle();
@@ -152,16 +175,27 @@ fn power_cut_at_any_moment_loses_nothing() {
                     "captures survive a cut"
                 );
                 assert_eq!(p.session.phase(), phase);
-                // After a reset the pendant may have been moved: OK re-arms (on the
-                // result screen OK would start a new session instead).
-                if p.session.phase() == Phase::Stage2 {
+                // After a reset the pendant may have been moved: OK re-arms, if the
+                // robot stands where the screen asks (not once this visit's capture is
+                // in: the screen then asks for the next one). On the result screen OK
+                // would start a new session instead.
+                if p.session.phase() == Phase::Stage2 && p.session.captures().len() == before_visit
+                {
                     p.event(Event::Ok);
                 }
             }
         }
     }
-    println!("{cuts} power cuts during stage 2");
+    println!(
+        "{cuts} power cuts during stage 2; {} captures, cursor at {:?}",
+        p.session.captures().len(),
+        p.session.view().pose
+    );
     assert!(cuts >= 5);
+    assert_eq!(p.session.phase(), Phase::ClosingFirst);
+    p.power_cycle();
+    assert_eq!(p.session.phase(), Phase::ClosingFirst);
+    scenario::closing(&mut p);
     check_session("with power cuts", &p, 8);
     // The result itself survives a cut...
     let result = p.session.outcome().and_then(|o| o.result.ok());
@@ -192,13 +226,7 @@ fn sensor_dropouts_and_faults_never_reach_a_result() {
     let mut p = pendant::<f32>(8, 4).expect("the planner plans 8 poses");
     scenario::stage0(&mut p);
     scenario::stage1(&mut p);
-    let (_, _, q) = p.session.view().pose.expect("pose");
-    p.move_to(
-        Mount::Flange {
-            joints_rad: q.map(f64::from),
-        },
-        2500,
-    );
+    assert!(scenario::approach_next(&mut p));
     for fault in [
         Fault::BadCrc,
         Fault::SelfTestRunning,
@@ -244,6 +272,7 @@ fn sensor_dropouts_and_faults_never_reach_a_result() {
     p.hold(HOLD_MS);
     assert_eq!(p.session.captures().len(), 1);
     scenario::stage2(&mut p);
+    scenario::closing(&mut p);
     check_session("with dropouts", &p, 8);
     println!("sensor errors counted and dropped: {}", p.sensor_errors);
 }
@@ -274,8 +303,9 @@ fn a_pose_out_of_range_is_not_captured_and_can_be_skipped() {
     // NEXT skips the pose; the rest of the plan completes.
     p.event(Event::Next);
     scenario::stage2(&mut p);
+    scenario::closing(&mut p);
     assert_eq!(p.session.phase(), Phase::Done);
-    assert_eq!(p.session.captures().len(), 7);
+    assert_eq!(p.session.captures().len(), 14);
     let (z2, z, _) = z_scores(&p);
     assert!(z2.abs() < 4.0 && z.iter().all(|v| v.abs() < 4.0));
 }
@@ -317,6 +347,7 @@ fn a_degenerate_plan_gives_the_named_refusal_not_numbers() {
     // θ3 + θ5 is the same at every pose: the tilt never changes, so the operator
     // presses OK at each (as the screen asks when a capture is not armed).
     scenario::stage2_pressing_ok(&mut p, true);
+    scenario::closing(&mut p);
     assert_eq!(
         p.session.phase(),
         Phase::Done,

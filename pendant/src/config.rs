@@ -3,18 +3,10 @@
 
 use zerocal_core::procedure::ProcedureConfig;
 use zerocal_core::real::deg_to_rad;
-use zerocal_core::Real;
 
 /// Mode 4 is specified for inclinations within ±10° (deg): a reading beyond is flagged
 /// and not captured.
 pub const SENSOR_RANGE_DEG: f32 = 10.0;
-
-/// One sample's noise in mode 4 (deg, 1σ): 0.08 mg RMS on the noisier axis (the mode
-/// table in `SCL3300.md`) is 8e-5 rad of tilt near level.
-pub const SAMPLE_NOISE_DEG: f32 = 0.0046;
-
-/// Samples in a capture: a 2 s window at 20 Hz, both ends included.
-pub const WINDOW_SAMPLES: f32 = 41.0;
 
 /// Armed and not still for this long: the screen says the robot does not come to rest.
 /// Longer than the longest move of a plan (180° on a joint at 30°/s peak is 9 s) plus
@@ -25,12 +17,10 @@ pub const STILL_MOVING_MS: u64 = 30_000;
 /// at 400 kHz, and a person reads nothing faster.
 pub const REDRAW_PERIOD_MS: u64 = 100;
 
-/// The procedure's configuration on the pendant: core's defaults, the sensor range of
-/// mode 4, and the noise of a captured mean (one sample's over √41, the samples being
-/// nearly independent at 20 Hz behind the 10 Hz filter).
+/// The procedure's configuration on the pendant: core's for a MEMS sensor
+/// ([`ProcedureConfig::for_mems`]) with mode 4's range.
 pub fn procedure_config() -> ProcedureConfig<f32> {
-    let mut config = ProcedureConfig::default();
+    let mut config = ProcedureConfig::for_mems();
     config.fit.sensor_range_rad = deg_to_rad(SENSOR_RANGE_DEG);
-    config.fit.sensor_noise_rad = deg_to_rad(SAMPLE_NOISE_DEG / WINDOW_SAMPLES.fast_sqrt());
     config
 }

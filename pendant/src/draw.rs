@@ -16,7 +16,7 @@ use embedded_graphics::primitives::Rectangle;
 use heapless::String;
 use zerocal_core::decimal::Fixed;
 use zerocal_core::error::{FitError, StageError};
-use zerocal_core::procedure::Notice;
+use zerocal_core::procedure::{Approach, Notice, MAX_PLAN_POSES};
 use zerocal_core::report::Warning;
 use zerocal_core::session::SessionError;
 
@@ -218,25 +218,54 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
             "same spot, then OK",
             "BACK: redo 1st",
         ),
-        Prompt::Stage1Before => (
-            fixed("STAGE 1: upper arm"),
-            "sensor x along j2,",
-            "axis 1 at its mark",
+        Prompt::Stage1Before(Approach::FromBelow) => (
+            fixed("STAGE 1: at mark"),
+            "x along j2, axis 1 at",
+            "mark; arrive moving +",
             "BACK: redo stage 0",
         ),
-        Prompt::Stage1After => (
-            fixed("STAGE 1: 2nd reading"),
-            "turn axis 1 by 180\u{b0},",
-            "all else locked; OK",
+        Prompt::Stage1Before(Approach::FromAbove) => (
+            fixed("STAGE 1: at mark"),
+            "go past the pose and",
+            "back: arrive moving -",
+            "BACK: undo",
+        ),
+        Prompt::Stage1After(Approach::FromBelow) => (
+            fixed("STAGE 1: turned"),
+            "axis 1 by 180\u{b0}, rest",
+            "locked; moving +; OK",
+            "BACK: undo",
+        ),
+        Prompt::Stage1After(Approach::FromAbove) => (
+            fixed("STAGE 1: turned"),
+            "go past the pose and",
+            "back: arrive moving -",
+            "BACK: undo",
+        ),
+        Prompt::ClosingFirst => (
+            fixed("CLOSING: bench again"),
+            "pendant on stage 0's",
+            "spot, let go",
+            "NEXT: skip closing",
+        ),
+        Prompt::ClosingSecond => (
+            fixed("CLOSING: 2nd reading"),
+            "turn pendant 180\u{b0} on",
+            "same spot, then OK",
             "BACK: redo 1st",
         ),
         Prompt::Pose {
             number,
             of,
+            approach,
             joints_deg: [j3, j4, j5, j6],
         } => {
+            let side = match approach {
+                Approach::FromBelow => "below",
+                Approach::FromAbove => "above",
+            };
             let title = line(format_args!(
-                "POSE {number}/{of}  ({} done)",
+                "POSE {number}/{of} {side} ({})",
                 screen.captured
             ));
             return [
@@ -365,6 +394,7 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
         Notice::Refused(_) => fixed("! refused"),
         Notice::NoPlan => fixed("! no plan: 'plan set'"),
         Notice::PlanLocked => fixed("! plan locked: clear"),
+        Notice::PlanTooLong => line(format_args!("! plan > {MAX_PLAN_POSES} poses")),
         Notice::Captured => fixed("captured"),
     }
 }

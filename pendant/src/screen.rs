@@ -9,7 +9,7 @@
 //! picture per kind, and the README's gallery is those pictures.
 
 use zerocal_core::model::WRIST_JOINTS;
-use zerocal_core::procedure::{Notice, Outcome, Phase, View};
+use zerocal_core::procedure::{Approach, Notice, Outcome, Phase, View};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::report::{Warning, MAX_WARNINGS};
 use zerocal_core::session::SessionError;
@@ -68,20 +68,26 @@ pub enum Prompt {
     /// Stage 0: pendant turned 180° on the same spot.
     Stage0Second,
     /// Stage 1, pendant on the upper arm, axis 1 at its mark.
-    Stage1Before,
+    Stage1Before(Approach),
     /// Stage 1: axis 1 turned by 180°.
-    Stage1After,
+    Stage1After(Approach),
     /// Stage 2: the pose to go to.
     Pose {
         /// 1-based pose number.
         number: usize,
         /// Poses in the plan.
         of: usize,
+        /// The side every joint arrives from.
+        approach: Approach,
         /// θ3..θ6 targets (deg).
         joints_deg: [f32; WRIST_JOINTS],
     },
     /// Stage 2 without a pose to take (no plan).
     NoPose,
+    /// The closing reversal: pendant back on stage 0's bench.
+    ClosingFirst,
+    /// The closing reversal: turned 180° on the same spot.
+    ClosingSecond,
 }
 
 /// How still the pendant is, as the stillness filter says.
@@ -195,12 +201,20 @@ pub enum ScreenKind {
     Stage0Bench,
     /// Stage 0, after the half turn.
     Stage0Turned,
-    /// Stage 1, axis 1 at its mark.
+    /// Stage 1, axis 1 at its mark, from below.
     Stage1Arm,
+    /// Stage 1, axis 1 at its mark, from above.
+    Stage1ArmAbove,
     /// Stage 1, axis 1 turned.
     Stage1Turned,
-    /// A stage-2 pose.
+    /// A stage-2 pose, from below.
     Pose,
+    /// A stage-2 pose, from above.
+    PoseAbove,
+    /// The closing reversal, first reading.
+    ClosingBench,
+    /// The closing reversal, after the half turn.
+    ClosingTurned,
     /// Stage 2 without a plan.
     NoPlan,
     /// The sensor does not answer.
@@ -239,8 +253,12 @@ impl ScreenKind {
             ScreenKind::Stage0Bench => "stage0-bench",
             ScreenKind::Stage0Turned => "stage0-turned",
             ScreenKind::Stage1Arm => "stage1-arm",
+            ScreenKind::Stage1ArmAbove => "stage1-arm-above",
             ScreenKind::Stage1Turned => "stage1-turned",
             ScreenKind::Pose => "pose",
+            ScreenKind::PoseAbove => "pose-above",
+            ScreenKind::ClosingBench => "closing-bench",
+            ScreenKind::ClosingTurned => "closing-turned",
             ScreenKind::NoPlan => "no-plan",
             ScreenKind::SensorAbsent => "sensor-absent",
             ScreenKind::SensorBadFrames => "sensor-bad-frames",
@@ -274,13 +292,25 @@ impl ScreenKind {
                 "turns the pendant 180° on the same spot, lets go, then presses OK"
             }
             ScreenKind::Stage1Arm => {
-                "clips the pendant to the upper arm, x along joint 2, axis 1 at its mark; lets it settle"
+                "clips the pendant to the upper arm, x along joint 2; brings axis 1 to its mark and joint 2 to the stage-1 pose, every joint arriving moving positive; capture follows on stillness"
+            }
+            ScreenKind::Stage1ArmAbove => {
+                "takes every joint past the pose and back, arriving moving negative; capture follows on stillness (the two captures straddle each gear's backlash)"
             }
             ScreenKind::Stage1Turned => {
-                "turns axis 1 by 180°, all else locked, then presses OK; capture follows on stillness"
+                "turns axis 1 by 180°, all else locked, arriving moving positive, then presses OK; then past and back from above"
             }
             ScreenKind::Pose => {
-                "clips the pendant to the flange and jogs j3-j6 to the targets shown; capture is automatic"
+                "clips the pendant to the flange and jogs to the targets shown, every joint arriving moving positive; capture is automatic"
+            }
+            ScreenKind::PoseAbove => {
+                "takes every joint past the same targets and back, arriving moving negative; capture is automatic"
+            }
+            ScreenKind::ClosingBench => {
+                "puts the pendant back on stage 0's bench, same spot, and lets go; capture follows on stillness (NEXT skips: the bias' drift is then not measured)"
+            }
+            ScreenKind::ClosingTurned => {
+                "turns the pendant 180° on the same spot, lets go, then presses OK"
             }
             ScreenKind::NoPlan => "uploads a plan over USB (`plan set`) or presses BACK",
             ScreenKind::SensorAbsent => {
@@ -304,7 +334,7 @@ impl ScreenKind {
             }
             ScreenKind::StageRefused => "redoes the step: the two readings did not agree",
             ScreenKind::ResultOffsets => {
-                "enters minus each offset on the controller; NEXT for details, hold OK for a new session"
+                "reads each offset (true − commanded: the joint's reading must rise by it) and enters it as its controller takes it (`zerocal session`, docs/controllers/); NEXT for details, hold OK for a new session"
             }
             ScreenKind::ResultDetails => "checks residual and conditioning; NEXT for warnings",
             ScreenKind::ResultWarning => "reads what to distrust before entering the offsets",
@@ -349,10 +379,20 @@ impl Screen {
                 match capture.prompt {
                     Prompt::Stage0First => ScreenKind::Stage0Bench,
                     Prompt::Stage0Second => ScreenKind::Stage0Turned,
-                    Prompt::Stage1Before => ScreenKind::Stage1Arm,
-                    Prompt::Stage1After => ScreenKind::Stage1Turned,
-                    Prompt::Pose { .. } => ScreenKind::Pose,
+                    Prompt::Stage1Before(Approach::FromBelow) => ScreenKind::Stage1Arm,
+                    Prompt::Stage1Before(Approach::FromAbove) => ScreenKind::Stage1ArmAbove,
+                    Prompt::Stage1After(_) => ScreenKind::Stage1Turned,
+                    Prompt::Pose {
+                        approach: Approach::FromBelow,
+                        ..
+                    } => ScreenKind::Pose,
+                    Prompt::Pose {
+                        approach: Approach::FromAbove,
+                        ..
+                    } => ScreenKind::PoseAbove,
                     Prompt::NoPose => ScreenKind::NoPlan,
+                    Prompt::ClosingFirst => ScreenKind::ClosingBench,
+                    Prompt::ClosingSecond => ScreenKind::ClosingTurned,
                 }
             }
         }
@@ -373,15 +413,19 @@ impl Screen {
                 store_failed: extras.store_failed,
             });
         }
+        let approach = view.approach.unwrap_or(Approach::FromBelow);
         let prompt = match view.phase {
             Phase::Stage0First => Prompt::Stage0First,
             Phase::Stage0Second => Prompt::Stage0Second,
-            Phase::Stage1Before => Prompt::Stage1Before,
-            Phase::Stage1After => Prompt::Stage1After,
+            Phase::Stage1Before => Prompt::Stage1Before(approach),
+            Phase::Stage1After => Prompt::Stage1After(approach),
+            Phase::ClosingFirst => Prompt::ClosingFirst,
+            Phase::ClosingSecond => Prompt::ClosingSecond,
             Phase::Stage2 | Phase::Done => match view.pose {
                 Some((index, of, joints_rad)) => Prompt::Pose {
                     number: index + 1,
                     of,
+                    approach,
                     // The wrist's targets: joints 1 and 2 stay where stage 1 had them.
                     joints_deg: [
                         rad_to_deg(joints_rad[2]),

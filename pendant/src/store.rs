@@ -35,8 +35,7 @@ use sequential_storage::cache::page_pointers::ArrayPagePointers;
 use sequential_storage::cache::page_states::ArrayPageStates;
 use sequential_storage::cache::{Cache, Uncached};
 use sequential_storage::map::{MapConfig, MapStorage};
-use zerocal_core::plan::MAX_POSES;
-use zerocal_core::procedure::record::{key, Record, RecordError, FORMAT, MAX_RECORD_LEN};
+use zerocal_core::procedure::record::{Record, RecordError, FORMAT, MAX_RECORD_LEN};
 
 /// The key of the format marker.
 pub const FORMAT_KEY: u16 = 0;
@@ -103,8 +102,7 @@ impl<E> From<sequential_storage::Error<E>> for StoreError {
     }
 }
 
-/// Keys a restore can use: the fixed records, a capture slot and a plan pose per pose.
-pub const STORED_KEYS: usize = 7 + 2 * MAX_POSES;
+pub use zerocal_core::procedure::record::STORED_KEYS;
 
 /// The newest record of each key, as read at power-up.
 pub struct Restored {
@@ -124,17 +122,7 @@ impl Default for Restored {
 impl Restored {
     /// The slot of `key`, if it is one of core's.
     fn slot(key_value: u16) -> Option<usize> {
-        let poses = MAX_POSES as u16;
-        match key_value {
-            key::BIAS..=key::PLAN_LEN => Some(usize::from(key_value - key::BIAS)),
-            k if (key::CAPTURE..key::CAPTURE + poses).contains(&k) => {
-                Some(7 + usize::from(k - key::CAPTURE))
-            }
-            k if (key::PLAN_POSE..key::PLAN_POSE + poses).contains(&k) => {
-                Some(7 + MAX_POSES + usize::from(k - key::PLAN_POSE))
-            }
-            _ => None,
-        }
+        zerocal_core::procedure::record::key_index(key_value)
     }
 
     /// The records, one per key.

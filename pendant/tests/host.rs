@@ -29,7 +29,8 @@ fn a_whole_session_identifies_the_offsets_within_three_sigma() {
         assert!(id.sigma_deg[k] > 0.0 && id.sigma_deg[k] < 0.002, "{id:?}");
     }
     assert!(report.second_export_equal);
-    // The export reads back as a log: 12 poses, every row valid.
+    // The export reads back as a log: two rows a pose (from below, from above), every
+    // row valid, with stage 0's reversal, stage 1's temperature and the closing reversal.
     let text = String::from_utf8(report.export.clone()).unwrap();
     let mut reader = LogReader::new();
     let mut poses = 0;
@@ -38,8 +39,17 @@ fn a_whole_session_identifies_the_offsets_within_three_sigma() {
             poses += 1;
         }
     }
-    assert_eq!(poses, report.poses);
+    assert_eq!(poses, 2 * report.poses);
     assert!(text.contains("# stage2 offsets_deg"), "{text}");
+    for key in [
+        "# stage0_reversal_deg first",
+        "# stage1_temp_c ",
+        "# stage1_captures_deg before below",
+        "# closing_reversal_deg first",
+        "# fit_extras gain,cross_z",
+    ] {
+        assert!(text.contains(key), "{key}: {text}");
+    }
     // Every screen of the tour showed.
     let panel = panel.borrow();
     for kind in [
@@ -47,8 +57,12 @@ fn a_whole_session_identifies_the_offsets_within_three_sigma() {
         ScreenKind::Stage0Bench,
         ScreenKind::Stage0Turned,
         ScreenKind::Stage1Arm,
+        ScreenKind::Stage1ArmAbove,
         ScreenKind::Stage1Turned,
         ScreenKind::Pose,
+        ScreenKind::PoseAbove,
+        ScreenKind::ClosingBench,
+        ScreenKind::ClosingTurned,
         ScreenKind::ResultOffsets,
         ScreenKind::ResultDetails,
     ] {
@@ -145,7 +159,7 @@ fn the_link_survives_garbage_long_lines_unplugging_and_live() {
         f.long_answer
     );
     // The line after the long one is served.
-    assert!(f.long_answer.contains("pose,j3_deg"), "{}", f.long_answer);
+    assert!(f.long_answer.contains("pose,j1_deg"), "{}", f.long_answer);
     // Enter stops `live` and the command typed after it in the same packet is answered.
     assert!(f.live_answer.contains("phase "), "{}", f.live_answer);
     assert!(f.unplug_first_bytes > 0);

@@ -209,12 +209,19 @@ impl<T: Real> SimPendant<T> {
                         joints_rad: core::array::from_fn(|k| a[k] + f * (b[k] - a[k])),
                     }
                 }
-                (Mount::UpperArm { j1_rad: a, c2_rad }, Mount::UpperArm { j1_rad: b, .. }) => {
+                (
                     Mount::UpperArm {
-                        j1_rad: a + f * (b - a),
-                        c2_rad,
-                    }
-                }
+                        j1_rad: a,
+                        c2_rad: c_a,
+                    },
+                    Mount::UpperArm {
+                        j1_rad: b,
+                        c2_rad: c_b,
+                    },
+                ) => Mount::UpperArm {
+                    j1_rad: a + f * (b - a),
+                    c2_rad: c_a + f * (c_b - c_a),
+                },
                 (
                     Mount::Bench {
                         surface,

@@ -5,7 +5,7 @@ use crate::pendant::{Mount, SimPendant};
 use crate::SimRobot;
 use zerocal_core::model::{rot_x, rot_y, Convention, SensorModel, Tilt};
 use zerocal_core::plan::{plan, Candidate, PlanConfig, PlanError, PoseList};
-use zerocal_core::procedure::{Event, Phase, ProcedureConfig};
+use zerocal_core::procedure::{Approach, Event, Phase, ProcedureConfig};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::stage2::Stage2Model;
 use zerocal_core::Real;
@@ -64,48 +64,51 @@ pub fn pendant<T: Real>(n: usize, seed: u64) -> Result<SimPendant<T>, PlanError>
 /// a margin.
 pub const HOLD_MS: u32 = 3000;
 
+/// The bench of stages 0 and the closing reversal: tilted by ~1°.
+fn bench(heading_rad: f64) -> Mount {
+    Mount::Bench {
+        surface: rot_y(deg_to_rad(0.8)) * rot_x(deg_to_rad(-1.1)),
+        heading_rad,
+    }
+}
+
+/// How far past a pose a joint goes before arriving from one side (deg): the
+/// pendant re-arms on a reading moved by more than 0.2°.
+pub const APPROACH_DEG: f64 = 1.0;
+
 /// Stage 0: a bench tilted by ~1°, a reading, a half turn on the spot (then OK), a reading.
 pub fn stage0<T: Real>(p: &mut SimPendant<T>) {
-    let surface = rot_y(deg_to_rad(0.8)) * rot_x(deg_to_rad(-1.1));
-    p.move_to(
-        Mount::Bench {
-            surface,
-            heading_rad: 0.4,
-        },
-        500,
-    );
+    p.move_to(bench(0.4), 500);
     p.hold(HOLD_MS);
-    p.move_to(
-        Mount::Bench {
-            surface,
-            heading_rad: 0.4 + std::f64::consts::PI,
-        },
-        2000,
-    );
+    p.move_to(bench(0.4 + std::f64::consts::PI), 2000);
     p.event(Event::Ok);
     p.hold(HOLD_MS);
 }
 
-/// Stage 1: clip to the upper arm, read, turn axis 1 by 180° (then OK), read.
+/// Stage 1 at one position of axis 1: every joint arriving from below, a capture,
+/// past the pose and back from above, a capture. `ok_first` presses OK before the
+/// first (after the half turn, which the pendant does not take for a move).
+fn stage1_pair<T: Real>(p: &mut SimPendant<T>, j1_rad: f64, move_ms: u32, ok_first: bool) {
+    let at = |c2_deg: f64| Mount::UpperArm {
+        j1_rad,
+        c2_rad: deg_to_rad(c2_deg),
+    };
+    p.move_to(at(-APPROACH_DEG), move_ms);
+    p.move_to(at(0.0), 500);
+    if ok_first {
+        p.event(Event::Ok);
+    }
+    p.hold(HOLD_MS);
+    p.move_to(at(APPROACH_DEG), 500);
+    p.move_to(at(0.0), 500);
+    p.hold(HOLD_MS);
+}
+
+/// Stage 1: clip to the upper arm, read from below and from above, turn axis 1 by
+/// 180° (then OK), read from below and from above.
 pub fn stage1<T: Real>(p: &mut SimPendant<T>) {
-    let c2 = 0.0;
-    p.move_to(
-        Mount::UpperArm {
-            j1_rad: 0.0,
-            c2_rad: c2,
-        },
-        1500,
-    );
-    p.hold(HOLD_MS);
-    p.move_to(
-        Mount::UpperArm {
-            j1_rad: std::f64::consts::PI,
-            c2_rad: c2,
-        },
-        4000,
-    );
-    p.event(Event::Ok);
-    p.hold(HOLD_MS);
+    stage1_pair(p, 0.0, 1500, false);
+    stage1_pair(p, std::f64::consts::PI, 4000, true);
 }
 
 /// Stage 2: clip to the flange and visit the remaining plan poses in order; capture
@@ -114,23 +117,14 @@ pub fn stage2<T: Real>(p: &mut SimPendant<T>) {
     stage2_pressing_ok(p, false);
 }
 
-/// Stage 2, pressing OK at each pose when `press_ok` (poses whose readings barely
+/// Stage 2, pressing OK at each capture when `press_ok` (poses whose readings barely
 /// differ do not arm the capture by motion).
 pub fn stage2_pressing_ok<T: Real>(p: &mut SimPendant<T>, press_ok: bool) {
-    // Each visit captures one pose; a script that captures nothing stops instead of
+    // Each visit captures once; a script that captures nothing stops instead of
     // looping, and the test's own checks then fail.
-    let mut visits = 2 * p.session.plan().len() + 2;
-    while p.session.phase() == Phase::Stage2 && visits > 0 {
+    let mut visits = 4 * p.session.plan().len() + 2;
+    while visits > 0 && approach_next(p) {
         visits -= 1;
-        let Some((_, _, q)) = p.session.view().pose else {
-            break;
-        };
-        p.move_to(
-            Mount::Flange {
-                joints_rad: q.map(|v| v.to_f64()),
-            },
-            2500,
-        );
         if press_ok {
             p.event(Event::Ok);
         }
@@ -138,9 +132,54 @@ pub fn stage2_pressing_ok<T: Real>(p: &mut SimPendant<T>, press_ok: bool) {
     }
 }
 
+/// Takes the robot to the next stage-2 capture's pose from the side the pendant asks
+/// for, starting [`APPROACH_DEG`] away on every joint; false outside stage 2. Like an
+/// operator watching the screen: if a capture lands while the robot is leaving (a
+/// window that filled just as it started), it goes where the screen asks now.
+pub fn approach_next<T: Real>(p: &mut SimPendant<T>) -> bool {
+    for _ in 0..4 {
+        let view = p.session.view();
+        let (Phase::Stage2, Some((_, _, q)), Some(approach)) =
+            (view.phase, view.pose, view.approach)
+        else {
+            return false;
+        };
+        let captured = view.captured;
+        let side = match approach {
+            Approach::FromBelow => -1.0,
+            Approach::FromAbove => 1.0,
+        };
+        let q = q.map(|v| v.to_f64());
+        p.move_to(
+            Mount::Flange {
+                joints_rad: q.map(|v| v + side * deg_to_rad(APPROACH_DEG)),
+            },
+            2000,
+        );
+        if p.session.captures().len() != captured {
+            continue;
+        }
+        p.move_to(Mount::Flange { joints_rad: q }, 500);
+        return true;
+    }
+    false
+}
+
+/// The closing reversal: the pendant back on stage 0's bench (OK), a reading, a half
+/// turn (OK), a reading.
+pub fn closing<T: Real>(p: &mut SimPendant<T>) {
+    p.move_to(bench(0.4), 3000);
+    p.event(Event::Ok);
+    p.hold(HOLD_MS);
+    p.move_to(bench(0.4 + std::f64::consts::PI), 2000);
+    p.event(Event::Ok);
+    p.hold(HOLD_MS);
+}
+
 /// A whole calibration.
 pub fn whole_session<T: Real>(p: &mut SimPendant<T>) {
     stage0(p);
     stage1(p);
     stage2(p);
+    closing(p);
 }

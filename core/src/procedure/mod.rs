@@ -6,12 +6,27 @@
 //! [`ProcedureState::view`]. The numbers come from [`crate::session`]. Nothing here waits, allocates or touches hardware, so whole
 //! sessions run in host tests.
 //!
+//! The captures, in order (docs/error-budget.md says why each is there):
+//!
+//! 1. stage 0: the pendant on a bench, then turned 180° on the same spot (its bias);
+//! 2. stage 1: on the upper arm with axis 1 at its mark, captured twice, every joint
+//!    arriving first from below (moving positive), then from above; then axis 1 turned
+//!    by 180°, again from below and from above. Each pair is averaged: the middle of
+//!    every gear's backlash;
+//! 3. stage 2: on the flange, every pose of the plan from below, then from above (two
+//!    captures a pose; the solver merges them);
+//! 4. the closing reversal: the pendant back on the bench, the two readings of stage 0
+//!    again, so the bias' drift with temperature over the session is measured (NEXT
+//!    skips it; without stage 0 there is nothing to close).
+//!
 //! Capture rule: a capture is *armed* by OK, or by the reading having moved by more than
-//! `rearm_motion_rad` since the last capture (the robot went to the next pose; not
-//! after the half turns of stages 0 and 1, which only OK arms); an armed
-//! capture fires when the stillness filter reports the window still, and stores the
-//! window's mean. So a robot still moving is never captured, and one that has not moved
-//! yet is not captured twice. BACK undoes the last capture, whatever the stage.
+//! `rearm_motion_rad` since the last capture (the robot went to the next pose or to
+//! the other side of the backlash, or the pendant was carried to the bench; not after
+//! the half turns of stage 0, stage 1 and the closing reversal, which only OK arms); an
+//! armed capture fires when the stillness filter reports the window still, and stores
+//! the window's mean reading and temperature. So a robot still moving is never
+//! captured, and one that has not moved yet is not captured twice. BACK undoes the last
+//! capture, whatever the stage.
 
 pub mod record;
 mod state;
@@ -22,7 +37,6 @@ use crate::plan::{plan, Candidate, PlanConfig, PlanError, PoseList, MAX_POSES};
 use crate::real::{deg_to_rad, Real};
 use crate::report::Verdict;
 use crate::session::{SessionError, SessionSolution};
-use crate::stage0::Reversal;
 use crate::stage1::Stage1Result;
 use crate::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessConfig};
@@ -74,6 +88,20 @@ impl<T: Real> Default for ProcedureConfig<T> {
     }
 }
 
+impl<T: Real> ProcedureConfig<T> {
+    /// The pendant's configuration: these defaults with the fit of a MEMS sensor on a
+    /// real robot ([`FitConfig::for_mems`]: the sensor's gain and cross-axis terms, its
+    /// ±10° mode-4 range, the per-capture noise the Monte-Carlo of
+    /// docs/error-budget.md uses), so the pendant's numbers are the ones
+    /// `zerocal session` computes from its export. The firmware's build plans its
+    /// default poses on it too.
+    pub fn for_mems() -> Self {
+        let mut config = Self::default();
+        config.fit = FitConfig::for_mems(&config.arm, config.masses.is_some());
+        config
+    }
+}
+
 /// Where the operator is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -83,12 +111,16 @@ pub enum Phase {
     Stage0First,
     /// Stage 0: pendant turned 180° on the same spot.
     Stage0Second,
-    /// Stage 1: on the upper arm, axis 1 at its mark.
+    /// Stage 1: on the upper arm, axis 1 at its mark (from below, then from above).
     Stage1Before,
-    /// Stage 1: axis 1 turned by 180°.
+    /// Stage 1: axis 1 turned by 180° (from below, then from above).
     Stage1After,
-    /// Stage 2: on the flange, the plan's poses.
+    /// Stage 2: on the flange, the plan's poses, each from below, then from above.
     Stage2,
+    /// The closing reversal: the pendant back on stage 0's bench, first reading.
+    ClosingFirst,
+    /// The closing reversal: turned 180° on the same spot.
+    ClosingSecond,
     /// The result (or why there is none).
     Done,
 }
@@ -103,6 +135,8 @@ impl Phase {
             Phase::Stage1After => 3,
             Phase::Stage2 => 4,
             Phase::Done => 5,
+            Phase::ClosingFirst => 6,
+            Phase::ClosingSecond => 7,
         }
     }
 
@@ -115,6 +149,8 @@ impl Phase {
             3 => Phase::Stage1After,
             4 => Phase::Stage2,
             5 => Phase::Done,
+            6 => Phase::ClosingFirst,
+            7 => Phase::ClosingSecond,
             _ => return None,
         })
     }
@@ -122,6 +158,128 @@ impl Phase {
     /// Whether this phase captures readings.
     pub fn captures(self) -> bool {
         self != Phase::Done
+    }
+
+    /// Whether the pendant sits on the bench (stage 0 and the closing reversal).
+    pub fn on_bench(self) -> bool {
+        matches!(
+            self,
+            Phase::Stage0First | Phase::Stage0Second | Phase::ClosingFirst | Phase::ClosingSecond
+        )
+    }
+}
+
+/// The side every joint arrives from before a capture: the two captures of a pose sit
+/// on the two sides of each gear's backlash, and their mean in its middle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Approach {
+    /// Every joint arriving moving positive.
+    FromBelow,
+    /// Every joint arriving moving negative (after going past the pose).
+    FromAbove,
+}
+
+impl Approach {
+    /// The approach of capture `index` of a pose or stage-1 reading (0 below, 1 above).
+    pub fn of(index: usize) -> Self {
+        if index % 2 == 0 {
+            Approach::FromBelow
+        } else {
+            Approach::FromAbove
+        }
+    }
+}
+
+/// A capture of stages 0 and 1 or of the closing reversal: the stillness window's mean
+/// reading and temperature.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Capture<T> {
+    /// The mean reading (raw, bias included).
+    pub reading: Tilt<T>,
+    /// The mean temperature (°C), if the sensor reports one.
+    pub temperature_c: Option<T>,
+}
+
+/// Which capture of stages 0 and 1 or of the closing reversal, in the order they are
+/// taken.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum ReadingSlot {
+    /// Stage 0, first.
+    Stage0First,
+    /// Stage 0, turned.
+    Stage0Second,
+    /// Stage 1 at the mark, from below.
+    Stage1BeforeBelow,
+    /// Stage 1 at the mark, from above.
+    Stage1BeforeAbove,
+    /// Stage 1 turned, from below.
+    Stage1AfterBelow,
+    /// Stage 1 turned, from above.
+    Stage1AfterAbove,
+    /// Closing reversal, first.
+    ClosingFirst,
+    /// Closing reversal, turned.
+    ClosingSecond,
+}
+
+/// How many [`ReadingSlot`]s there are.
+pub const READING_SLOTS: usize = 8;
+
+impl ReadingSlot {
+    /// Every slot, in capture order.
+    pub const ALL: [ReadingSlot; READING_SLOTS] = [
+        ReadingSlot::Stage0First,
+        ReadingSlot::Stage0Second,
+        ReadingSlot::Stage1BeforeBelow,
+        ReadingSlot::Stage1BeforeAbove,
+        ReadingSlot::Stage1AfterBelow,
+        ReadingSlot::Stage1AfterAbove,
+        ReadingSlot::ClosingFirst,
+        ReadingSlot::ClosingSecond,
+    ];
+
+    /// Its place in [`ALL`](Self::ALL) (also its storage code).
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// Inverse of [`index`](Self::index).
+    pub fn from_index(i: usize) -> Option<Self> {
+        Self::ALL.get(i).copied()
+    }
+
+    /// The slot captured in `phase` at `cursor` (stage 1: 0 from below, 1 from above).
+    pub fn at(phase: Phase, cursor: usize) -> Option<Self> {
+        let side = cursor.min(1);
+        Some(match phase {
+            Phase::Stage0First => ReadingSlot::Stage0First,
+            Phase::Stage0Second => ReadingSlot::Stage0Second,
+            Phase::Stage1Before => Self::ALL[2 + side],
+            Phase::Stage1After => Self::ALL[4 + side],
+            Phase::ClosingFirst => ReadingSlot::ClosingFirst,
+            Phase::ClosingSecond => ReadingSlot::ClosingSecond,
+            Phase::Stage2 | Phase::Done => return None,
+        })
+    }
+
+    /// Where the procedure stands when this slot is the next to take.
+    pub fn phase_cursor(self) -> (Phase, usize) {
+        match self {
+            ReadingSlot::Stage0First => (Phase::Stage0First, 0),
+            ReadingSlot::Stage0Second => (Phase::Stage0Second, 0),
+            ReadingSlot::Stage1BeforeBelow => (Phase::Stage1Before, 0),
+            ReadingSlot::Stage1BeforeAbove => (Phase::Stage1Before, 1),
+            ReadingSlot::Stage1AfterBelow => (Phase::Stage1After, 0),
+            ReadingSlot::Stage1AfterAbove => (Phase::Stage1After, 1),
+            ReadingSlot::ClosingFirst => (Phase::ClosingFirst, 0),
+            ReadingSlot::ClosingSecond => (Phase::ClosingSecond, 0),
+        }
     }
 }
 
@@ -173,6 +331,8 @@ pub enum Notice {
     NoPlan,
     /// A new plan was refused: stage 2 already has captures (clear first).
     PlanLocked,
+    /// A new plan was refused: it has more than [`MAX_PLAN_POSES`] poses.
+    PlanTooLong,
     /// Captured (briefly shown).
     Captured,
 }
@@ -218,14 +378,23 @@ pub struct LastResult<T> {
     pub residual_rms_rad: T,
 }
 
-/// Poses in the pendant's default plan: three times the fit's minimum, a few minutes of
-/// jogging (`zerocal plan --poses 12` prints the 1σ it predicts).
-pub const PENDANT_PLAN_POSES: usize = 12;
+/// Most poses a pendant plan holds: each is captured twice (from below and from
+/// above) and the captures fill [`MAX_POSES`].
+pub const MAX_PLAN_POSES: usize = MAX_POSES / 2;
 
-/// The plan the pendant uses when none was uploaded: this planner with its default
-/// settings on the pendant's wrist and convention, a level base and no bias (the real
-/// ones are not known before stages 0-1; the planner's 1° margin inside the ±10°
-/// window absorbs them), and the fit's own conditioning limit.
+/// Poses in the pendant's default plan: 24, each captured twice, chosen by Monte-Carlo
+/// on a real sensor and robot (docs/error-budget.md; `zerocal plan --poses 24` prints
+/// the 1σ it predicts).
+pub const PENDANT_PLAN_POSES: usize = MAX_PLAN_POSES;
+
+/// The planning window (deg) inside the sensor's ±10° mode-4 range: 3° are left for the
+/// sensor's offset (up to 1.45°), the base tilt and the offsets not yet known.
+pub const PENDANT_PLAN_MARGIN_DEG: f64 = 3.0;
+
+/// The plan the pendant uses when none was uploaded: this planner on the pendant's arm
+/// and convention with the fit's own terms, a level base and no bias (the real ones are
+/// not known before stages 0-1; [`PENDANT_PLAN_MARGIN_DEG`] inside the sensor's range
+/// absorbs them), and the fit's own conditioning limit.
 ///
 /// Seeded, so the same every time: the firmware computes it when it is built.
 ///
@@ -247,6 +416,9 @@ pub fn pendant_default<T: Real>(
         max_condition_number: config.fit.max_condition_number,
         fixed_joints_rad: [config.stage1_joints_rad[0], config.stage1_joints_rad[1]],
         extras: config.fit.extras,
+        noise_sigma_rad: config.fit.sensor_noise_rad,
+        window_rad: config.fit.sensor_range_rad,
+        margin_rad: deg_to_rad(T::lit(PENDANT_PLAN_MARGIN_DEG)),
         ..PlanConfig::default()
     };
     Ok(plan(&model, &plan_config, pool)?.poses_rad)
@@ -286,15 +458,22 @@ pub fn step<T: Real>(
         },
         Event::Next => match s.phase {
             Phase::Stage0First | Phase::Stage0Second => {
-                s.stage0_first = None;
+                s.clear_slots(ReadingSlot::Stage0First..=ReadingSlot::Stage0Second);
                 s.stage0_skipped = true;
-                s.enter(Phase::Stage1Before, false);
+                s.enter(Phase::Stage1Before, 0);
                 out.push(s.progress());
             }
-            Phase::Stage2 if s.next_pose < s.plan.len() => {
-                s.next_pose += 1;
+            Phase::Stage2 if s.cursor < s.plan_captures() => {
+                // Skips the pose whole: a capture already taken from below stays.
+                s.cursor = (s.cursor / 2 + 1) * 2;
                 s.armed = false;
-                finish_if_done(config, s, &mut out);
+                after_capture_in_stage2(config, s, &mut out);
+                out.push(s.progress());
+            }
+            Phase::ClosingFirst | Phase::ClosingSecond => {
+                s.clear_slots(ReadingSlot::ClosingFirst..=ReadingSlot::ClosingSecond);
+                s.closing_skipped = true;
+                finish(config, s, &mut out);
                 out.push(s.progress());
             }
             _ => {}
@@ -304,7 +483,9 @@ pub fn step<T: Real>(
             out.push(s.progress());
         }
         Event::SetPlan(plan) => {
-            if s.captures.is_empty() && s.phase != Phase::Done {
+            if plan.len() > MAX_PLAN_POSES {
+                s.notice = Some(Notice::PlanTooLong);
+            } else if s.captures.is_empty() && s.phase != Phase::Done {
                 // A power cut in the middle must not leave new poses mixed with old:
                 // no plan until the new length is written last.
                 out.push(Record::PlanLen(0));
@@ -316,7 +497,9 @@ pub fn step<T: Real>(
                 }
                 out.push(Record::PlanLen(plan.len() as u8));
                 s.plan = plan;
-                s.next_pose = 0;
+                if s.phase == Phase::Stage2 {
+                    s.cursor = 0;
+                }
                 s.notice = None;
             } else {
                 s.notice = Some(Notice::PlanLocked);
@@ -348,10 +531,7 @@ fn on_sample<T: Real>(
         // No capture to measure motion from (after a reset, say): from here, then.
         s.last_capture = Some(reading);
     }
-    // After a half turn (stage 0's second reading, stage 1's second) the reading moves
-    // little, and a slow turn can look still near its end: only OK arms those.
-    let needs_ok = matches!(s.phase, Phase::Stage0Second | Phase::Stage1After);
-    if let (Some(last), false) = (s.last_capture, needs_ok) {
+    if let (Some(last), false) = (s.last_capture, s.needs_ok()) {
         let moved = reading.minus(&last);
         if moved.x_rad.abs() > config.rearm_motion_rad
             || moved.y_rad.abs() > config.rearm_motion_rad
@@ -380,112 +560,135 @@ fn on_sample<T: Real>(
         });
         return;
     }
-    capture(config, s, mean, temperature_c, out);
+    capture(
+        config,
+        s,
+        Capture {
+            reading: mean,
+            temperature_c,
+        },
+        out,
+    );
 }
 
 fn capture<T: Real>(
     config: &ProcedureConfig<T>,
     s: &mut ProcedureState<T>,
-    mean: Tilt<T>,
-    temperature_c: Option<T>,
+    c: Capture<T>,
     out: &mut Output<T>,
 ) {
-    s.notice = Some(Notice::Captured);
-    s.last_capture = Some(mean);
     match s.phase {
-        Phase::Stage0First => {
-            s.stage0_first = Some(mean);
-            out.push(Record::Stage0First(mean));
-            s.enter(Phase::Stage0Second, false);
-        }
-        Phase::Stage0Second => {
-            let first = s.stage0_first.unwrap_or(mean);
-            match (Reversal {
-                first,
-                second: mean,
-            })
-            .bias(config.convention, config.fit.sensor_range_rad)
-            {
-                Ok(b) => {
-                    s.bias = Some(b);
-                    s.stage0_skipped = false;
-                    out.push(Record::Bias(b));
-                    s.enter(Phase::Stage1Before, false);
-                }
-                Err(e) => {
-                    s.notice = Some(Notice::StageRefused(e));
-                    return;
-                }
-            }
-        }
-        Phase::Stage1Before => {
-            s.stage1_before = Some(mean);
-            out.push(Record::Stage1Before(mean));
-            s.enter(Phase::Stage1After, false);
-        }
-        Phase::Stage1After => {
-            s.stage1_after = Some(mean);
-            match s.solve_stage1(config) {
-                Some(Ok(r)) => {
-                    s.stage1 = Some(r);
-                    out.push(Record::Stage1After(mean));
-                    s.next_pose = 0;
-                    s.enter(Phase::Stage2, false);
-                    if s.plan.is_empty() {
-                        s.notice = Some(Notice::NoPlan);
-                    }
-                }
-                refused => {
-                    s.stage1_after = None;
-                    s.notice = Some(match refused {
-                        Some(Err(SessionError::Stage0(e) | SessionError::Stage1(e))) => {
-                            Notice::StageRefused(e)
-                        }
-                        Some(Err(e)) => Notice::Refused(e),
-                        // Both readings are in: cannot happen.
-                        _ => Notice::StageRefused(StageError::NonFiniteReading),
-                    });
-                    return;
-                }
-            }
-        }
+        Phase::Done => return,
         Phase::Stage2 => {
-            let Some(q) = s.plan.get(s.next_pose).copied() else {
+            let Some(q) = s.plan.get(s.cursor / 2).copied() else {
                 s.notice = Some(Notice::NoPlan);
                 return;
             };
             let slot = s.captures.len() as u8;
             let pose = PoseReading {
                 joints_rad: q,
-                reading: mean,
-                // The window's mean, like the reading's.
-                temperature_c,
+                reading: c.reading,
+                temperature_c: c.temperature_c,
             };
-            if s.captures.push((s.next_pose as u8, pose)).is_err() {
+            if s.captures.push((s.cursor as u8, pose)).is_err() {
                 return;
             }
+            s.notice = Some(Notice::Captured);
+            s.last_capture = Some(c.reading);
             out.push(Record::Capture {
                 slot,
-                plan_index: s.next_pose as u8,
+                index: s.cursor as u8,
                 pose,
             });
-            s.next_pose += 1;
-            s.enter(Phase::Stage2, false);
-            finish_if_done(config, s, out);
+            s.cursor += 1;
+            s.enter(Phase::Stage2, s.cursor);
+            after_capture_in_stage2(config, s, out);
         }
-        Phase::Done => return,
+        phase => {
+            let Some(slot) = ReadingSlot::at(phase, s.cursor) else {
+                return;
+            };
+            s.readings[slot.index()] = Some(c);
+            // The two checks stages 0 and 1 allow before going on: a refused reading is
+            // taken again, never stored.
+            match slot {
+                ReadingSlot::Stage0Second => match s
+                    .reversal()
+                    .map(|r| r.bias(config.convention, config.fit.sensor_range_rad))
+                {
+                    Some(Ok(b)) => {
+                        s.bias = Some(b);
+                        s.stage0_skipped = false;
+                        out.push(Record::Bias(b));
+                    }
+                    refused => {
+                        s.readings[slot.index()] = None;
+                        s.notice = Some(Notice::StageRefused(match refused {
+                            Some(Err(e)) => e,
+                            _ => StageError::NonFiniteReading,
+                        }));
+                        return;
+                    }
+                },
+                ReadingSlot::Stage1AfterAbove => match s.solve_stage1(config) {
+                    Some(Ok(r)) => s.stage1 = Some(r),
+                    refused => {
+                        s.readings[slot.index()] = None;
+                        s.notice = Some(match refused {
+                            Some(Err(SessionError::Stage0(e) | SessionError::Stage1(e))) => {
+                                Notice::StageRefused(e)
+                            }
+                            Some(Err(e)) => Notice::Refused(e),
+                            // Every reading is in: cannot happen.
+                            _ => Notice::StageRefused(StageError::NonFiniteReading),
+                        });
+                        return;
+                    }
+                },
+                _ => {}
+            }
+            s.notice = Some(Notice::Captured);
+            s.last_capture = Some(c.reading);
+            out.push(Record::Reading { slot, capture: c });
+            match slot {
+                ReadingSlot::Stage0First => s.enter(Phase::Stage0Second, 0),
+                ReadingSlot::Stage0Second => s.enter(Phase::Stage1Before, 0),
+                ReadingSlot::Stage1BeforeBelow => s.enter(Phase::Stage1Before, 1),
+                ReadingSlot::Stage1BeforeAbove => s.enter(Phase::Stage1After, 0),
+                ReadingSlot::Stage1AfterBelow => s.enter(Phase::Stage1After, 1),
+                ReadingSlot::Stage1AfterAbove => {
+                    s.enter(Phase::Stage2, 0);
+                    if s.plan.is_empty() {
+                        s.notice = Some(Notice::NoPlan);
+                    }
+                }
+                ReadingSlot::ClosingFirst => s.enter(Phase::ClosingSecond, 0),
+                ReadingSlot::ClosingSecond => finish(config, s, out),
+            }
+        }
     }
     out.push(s.progress());
 }
 
-fn finish_if_done<T: Real>(
+/// After a stage-2 capture or skip: the closing reversal once every pose is done (the
+/// result at once if stage 0 was skipped: there is no reversal to close).
+fn after_capture_in_stage2<T: Real>(
     config: &ProcedureConfig<T>,
     s: &mut ProcedureState<T>,
     out: &mut Output<T>,
 ) {
-    if s.next_pose < s.plan.len() {
+    if s.cursor < s.plan_captures() {
         return;
     }
+    if s.stage0_skipped {
+        finish(config, s, out);
+    } else {
+        s.enter(Phase::ClosingFirst, 0);
+    }
+}
+
+/// Solves the session and shows its result.
+fn finish<T: Real>(config: &ProcedureConfig<T>, s: &mut ProcedureState<T>, out: &mut Output<T>) {
     let outcome = s.compute(config);
     if let Ok(r) = &outcome.result {
         let last = LastResult {
@@ -506,7 +709,7 @@ fn finish_if_done<T: Real>(
         s.notice = Some(Notice::Refused(*e));
     }
     s.outcome = Some(outcome);
-    s.enter(Phase::Done, false);
+    s.enter(Phase::Done, 0);
 }
 
 fn back<T: Real>(s: &mut ProcedureState<T>) {
@@ -516,44 +719,58 @@ fn back<T: Real>(s: &mut ProcedureState<T>) {
     // still where it was taken, so it re-arms only on a move away from there or OK.
     let undone = match s.phase {
         Phase::Stage0First => None,
-        Phase::Stage0Second => {
-            let first = s.stage0_first.take();
-            s.enter(Phase::Stage0First, false);
-            first
-        }
-        Phase::Stage1Before => {
-            if s.stage0_skipped {
-                s.stage0_skipped = false;
-                s.enter(Phase::Stage0First, false);
-            } else {
-                // Redo the second reversal reading.
-                s.enter(Phase::Stage0Second, false);
-            }
+        Phase::Stage1Before if s.cursor == 0 && s.stage0_skipped => {
+            s.stage0_skipped = false;
+            s.enter(Phase::Stage0First, 0);
             None
         }
-        Phase::Stage1After => {
-            let before = s.stage1_before.take();
-            s.enter(Phase::Stage1Before, false);
-            before
+        Phase::Stage2 | Phase::ClosingFirst => undo_stage2(s),
+        Phase::Done if s.stage0_skipped => undo_stage2(s),
+        Phase::Done if s.closing_skipped => {
+            s.closing_skipped = false;
+            s.enter(Phase::ClosingFirst, 0);
+            None
         }
-        Phase::Stage2 | Phase::Done => match s.captures.pop() {
-            Some((plan_index, pose)) => {
-                s.next_pose = usize::from(plan_index);
-                s.enter(Phase::Stage2, false);
-                Some(pose.reading)
+        phase => {
+            // The slot taken last: the one before where the procedure stands.
+            let next = match phase {
+                Phase::Done => READING_SLOTS,
+                _ => ReadingSlot::at(phase, s.cursor).map_or(0, ReadingSlot::index),
+            };
+            match next.checked_sub(1).and_then(ReadingSlot::from_index) {
+                Some(slot) => {
+                    if slot == ReadingSlot::Stage1AfterAbove {
+                        s.stage1 = None;
+                    }
+                    let (phase, cursor) = slot.phase_cursor();
+                    s.enter(phase, cursor);
+                    s.readings[slot.index()].take().map(|c| c.reading)
+                }
+                None => None,
             }
-            None if s.phase == Phase::Done => {
-                // Every pose was skipped: back to the last pose.
-                s.next_pose = s.plan.len().saturating_sub(1);
-                s.enter(Phase::Stage2, false);
-                None
-            }
-            None => {
-                s.stage1 = None;
-                s.enter(Phase::Stage1After, false);
-                s.stage1_after.take()
-            }
-        },
+        }
     };
     s.last_capture = undone.or(s.live);
+}
+
+/// BACK in stage 2 (or just after it): undoes the last capture; with none, back to the
+/// last pose (every pose was skipped) or to stage 1's last capture.
+fn undo_stage2<T: Real>(s: &mut ProcedureState<T>) -> Option<Tilt<T>> {
+    match s.captures.pop() {
+        Some((index, pose)) => {
+            s.enter(Phase::Stage2, usize::from(index));
+            Some(pose.reading)
+        }
+        None if s.phase != Phase::Stage2 && !s.plan.is_empty() => {
+            s.enter(Phase::Stage2, (s.plan.len() - 1) * 2);
+            None
+        }
+        None => {
+            s.stage1 = None;
+            s.enter(Phase::Stage1After, 1);
+            s.readings[ReadingSlot::Stage1AfterAbove.index()]
+                .take()
+                .map(|c| c.reading)
+        }
+    }
 }

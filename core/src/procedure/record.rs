@@ -4,11 +4,12 @@
 //! so "undo" overwrites a count rather than deleting (the STM32F4 flash cannot delete).
 //!
 //! Encoding: a format byte, then little-endian fields; every angle as an `f64` of
-//! radians (exact for the pendant's `f32`). Format 2 holds all six joints and the
-//! temperature of each capture; format 1 (the wrist's four joints) is refused as
-//! `WrongFormat` and the pendant starts afresh.
+//! radians (exact for the pendant's `f32`). Format 3 (issue 15's procedure) keeps every
+//! capture of stages 0 and 1 and of the closing reversal with its temperature, and two
+//! stage-2 captures per plan pose (each under the index of its approach); formats 1
+//! and 2 are refused as `WrongFormat` and the pendant starts afresh.
 
-use super::Phase;
+use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
 use crate::model::{Tilt, JOINTS, WRIST_JOINTS};
 use crate::plan::MAX_POSES;
 use crate::real::Real;
@@ -20,7 +21,7 @@ pub const MAX_RECORD_LEN: usize = 1 + 8 * 10;
 
 /// The record format this build writes and reads (the first byte of every value). A
 /// store holding another format is reset by the pendant, never misread.
-pub const FORMAT: u8 = 2;
+pub const FORMAT: u8 = 3;
 
 /// One stored fact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,25 +32,30 @@ pub enum Record<T> {
     Progress {
         /// Phase.
         phase: Phase,
-        /// Plan index of the next stage-2 pose.
-        next_pose: u8,
+        /// Stage 1: the approach of the next capture (0 from below, 1 from above);
+        /// stage 2: the index of the next capture in the plan's list (two a pose).
+        cursor: u8,
         /// Valid stage-2 captures (slots 0..captures).
         captures: u8,
         /// Whether stage 0 was skipped this session.
         stage0_skipped: bool,
+        /// Whether the closing reversal was skipped this session.
+        closing_skipped: bool,
     },
-    /// First reversal reading of stage 0.
-    Stage0First(Tilt<T>),
-    /// Stage-1 reading before the half turn.
-    Stage1Before(Tilt<T>),
-    /// Stage-1 reading after the half turn.
-    Stage1After(Tilt<T>),
+    /// A capture of stage 0, stage 1 or the closing reversal.
+    Reading {
+        /// Which one.
+        slot: ReadingSlot,
+        /// The window's mean reading and temperature.
+        capture: Capture<T>,
+    },
     /// A stage-2 capture.
     Capture {
         /// Slot (capture order).
         slot: u8,
-        /// The plan pose it answers.
-        plan_index: u8,
+        /// Its index in the plan's capture list: `2 × pose + approach` (0 from below,
+        /// 1 from above).
+        index: u8,
         /// The commanded joints, the averaged reading and the temperature.
         pose: PoseReading<T>,
     },
@@ -92,42 +98,59 @@ pub enum RecordError {
     BufferTooSmall,
 }
 
-/// Keys: fixed ones, then a range for capture slots and one for plan poses.
+/// Keys: fixed ones, then a range for the readings of stages 0-1 and the closing
+/// reversal, one for capture slots and one for plan poses.
 pub mod key {
     /// [`super::Record::Bias`].
     pub const BIAS: u16 = 1;
     /// [`super::Record::Progress`].
     pub const PROGRESS: u16 = 2;
-    /// [`super::Record::Stage0First`].
-    pub const STAGE0_FIRST: u16 = 3;
-    /// [`super::Record::Stage1Before`].
-    pub const STAGE1_BEFORE: u16 = 4;
-    /// [`super::Record::Stage1After`].
-    pub const STAGE1_AFTER: u16 = 5;
     /// [`super::Record::LastResult`].
     pub const LAST_RESULT: u16 = 6;
     /// [`super::Record::PlanLen`].
     pub const PLAN_LEN: u16 = 7;
+    /// [`super::Record::Reading`] of slot s is `READING + s`.
+    pub const READING: u16 = 0x10;
     /// [`super::Record::Capture`] of slot s is `CAPTURE + s`.
     pub const CAPTURE: u16 = 0x100;
     /// [`super::Record::PlanPose`] of index i is `PLAN_POSE + i`.
     pub const PLAN_POSE: u16 = 0x200;
 }
 
+/// The fixed keys, in the order a restore reads them.
+const FIXED_KEYS: [u16; 4] = [key::BIAS, key::PROGRESS, key::LAST_RESULT, key::PLAN_LEN];
+
+/// How many keys the procedure uses: the fixed ones, the readings, a capture slot per
+/// capture and a plan pose per plan pose.
+pub const STORED_KEYS: usize = FIXED_KEYS.len() + READING_SLOTS + MAX_POSES + MAX_POSES;
+
 /// Every key a restore may need, in the order to read them.
 pub fn all_keys() -> impl Iterator<Item = u16> {
-    [
-        key::BIAS,
-        key::PROGRESS,
-        key::STAGE0_FIRST,
-        key::STAGE1_BEFORE,
-        key::STAGE1_AFTER,
-        key::LAST_RESULT,
-        key::PLAN_LEN,
-    ]
-    .into_iter()
-    .chain((0..MAX_POSES as u16).map(|s| key::CAPTURE + s))
-    .chain((0..MAX_POSES as u16).map(|i| key::PLAN_POSE + i))
+    FIXED_KEYS
+        .into_iter()
+        .chain((0..READING_SLOTS as u16).map(|s| key::READING + s))
+        .chain((0..MAX_POSES as u16).map(|s| key::CAPTURE + s))
+        .chain((0..MAX_POSES as u16).map(|i| key::PLAN_POSE + i))
+}
+
+/// The place of `key` in [`all_keys`] (`0..STORED_KEYS`), if it is one of the
+/// procedure's: a restore keeps one record per place.
+pub fn key_index(k: u16) -> Option<usize> {
+    let poses = MAX_POSES as u16;
+    let fixed = FIXED_KEYS.len();
+    if let Some(i) = FIXED_KEYS.iter().position(|f| *f == k) {
+        return Some(i);
+    }
+    if (key::READING..key::READING + READING_SLOTS as u16).contains(&k) {
+        return Some(fixed + usize::from(k - key::READING));
+    }
+    if (key::CAPTURE..key::CAPTURE + poses).contains(&k) {
+        return Some(fixed + READING_SLOTS + usize::from(k - key::CAPTURE));
+    }
+    if (key::PLAN_POSE..key::PLAN_POSE + poses).contains(&k) {
+        return Some(fixed + READING_SLOTS + MAX_POSES + usize::from(k - key::PLAN_POSE));
+    }
+    None
 }
 
 struct Writer<'a> {
@@ -148,6 +171,15 @@ impl Writer<'_> {
     }
     fn f<T: Real>(&mut self, v: T) -> Result<(), RecordError> {
         self.put(&v.to_f64().to_le_bytes())
+    }
+    fn temperature<T: Real>(&mut self, c: Option<T>) -> Result<(), RecordError> {
+        match c {
+            Some(c) => {
+                self.put(&[1])?;
+                self.f(c)
+            }
+            None => self.put(&[0]),
+        }
     }
 }
 
@@ -178,6 +210,13 @@ impl Reader<'_> {
             Err(RecordError::BadField)
         }
     }
+    fn temperature<T: Real>(&mut self) -> Result<Option<T>, RecordError> {
+        match self.u8()? {
+            0 => Ok(None),
+            1 => Ok(Some(self.f()?)),
+            _ => Err(RecordError::BadField),
+        }
+    }
     fn tilt<T: Real>(&mut self) -> Result<Tilt<T>, RecordError> {
         Ok(Tilt::new(self.f()?, self.f()?))
     }
@@ -202,9 +241,7 @@ impl<T: Real> Record<T> {
         match self {
             Record::Bias(_) => key::BIAS,
             Record::Progress { .. } => key::PROGRESS,
-            Record::Stage0First(_) => key::STAGE0_FIRST,
-            Record::Stage1Before(_) => key::STAGE1_BEFORE,
-            Record::Stage1After(_) => key::STAGE1_AFTER,
+            Record::Reading { slot, .. } => key::READING + slot.index() as u16,
             Record::LastResult { .. } => key::LAST_RESULT,
             Record::PlanLen(_) => key::PLAN_LEN,
             Record::Capture { slot, .. } => key::CAPTURE + u16::from(*slot),
@@ -220,37 +257,36 @@ impl<T: Real> Record<T> {
         let mut w = Writer { buf, len: 0 };
         w.put(&[FORMAT])?;
         match *self {
-            Record::Bias(t)
-            | Record::Stage0First(t)
-            | Record::Stage1Before(t)
-            | Record::Stage1After(t) => {
+            Record::Bias(t) => {
                 w.f(t.x_rad)?;
                 w.f(t.y_rad)?;
             }
             Record::Progress {
                 phase,
-                next_pose,
+                cursor,
                 captures,
                 stage0_skipped,
-            } => w.put(&[phase.code(), next_pose, captures, u8::from(stage0_skipped)])?,
-            Record::Capture {
-                slot,
-                plan_index,
-                pose,
-            } => {
-                w.put(&[slot, plan_index])?;
+                closing_skipped,
+            } => w.put(&[
+                phase.code(),
+                cursor,
+                captures,
+                u8::from(stage0_skipped) | u8::from(closing_skipped) << 1,
+            ])?,
+            Record::Reading { slot, capture } => {
+                w.put(&[slot.index() as u8])?;
+                w.f(capture.reading.x_rad)?;
+                w.f(capture.reading.y_rad)?;
+                w.temperature(capture.temperature_c)?;
+            }
+            Record::Capture { slot, index, pose } => {
+                w.put(&[slot, index])?;
                 for q in pose.joints_rad {
                     w.f(q)?;
                 }
                 w.f(pose.reading.x_rad)?;
                 w.f(pose.reading.y_rad)?;
-                match pose.temperature_c {
-                    Some(c) => {
-                        w.put(&[1])?;
-                        w.f(c)?;
-                    }
-                    None => w.put(&[0])?,
-                }
+                w.temperature(pose.temperature_c)?;
             }
             Record::PlanLen(n) => w.put(&[n])?,
             Record::PlanPose { index, joints_rad } => {
@@ -285,26 +321,39 @@ impl<T: Real> Record<T> {
         if format != FORMAT {
             return Err(RecordError::WrongFormat(format));
         }
+        let reading_range = key::READING..key::READING + READING_SLOTS as u16;
         let slot_range = key::CAPTURE..key::CAPTURE + MAX_POSES as u16;
         let plan_range = key::PLAN_POSE..key::PLAN_POSE + MAX_POSES as u16;
         Ok(match key {
             key::BIAS => Record::Bias(r.tilt()?),
-            key::STAGE0_FIRST => Record::Stage0First(r.tilt()?),
-            key::STAGE1_BEFORE => Record::Stage1Before(r.tilt()?),
-            key::STAGE1_AFTER => Record::Stage1After(r.tilt()?),
             key::PROGRESS => {
                 let phase = Phase::from_code(r.u8()?).ok_or(RecordError::BadField)?;
-                let next_pose = r.u8()?;
+                let cursor = r.u8()?;
                 let captures = r.u8()?;
-                let stage0_skipped = r.u8()? != 0;
-                if usize::from(next_pose) > MAX_POSES || usize::from(captures) > MAX_POSES {
+                let flags = r.u8()?;
+                if usize::from(cursor) > MAX_POSES || usize::from(captures) > MAX_POSES || flags > 3
+                {
                     return Err(RecordError::BadField);
                 }
                 Record::Progress {
                     phase,
-                    next_pose,
+                    cursor,
                     captures,
-                    stage0_skipped,
+                    stage0_skipped: flags & 1 != 0,
+                    closing_skipped: flags & 2 != 0,
+                }
+            }
+            k if reading_range.contains(&k) => {
+                let slot = ReadingSlot::from_index(usize::from(r.u8()?))
+                    .filter(|s| s.index() == usize::from(k - key::READING))
+                    .ok_or(RecordError::BadField)?;
+                let reading = r.tilt()?;
+                Record::Reading {
+                    slot,
+                    capture: Capture {
+                        reading,
+                        temperature_c: r.temperature()?,
+                    },
                 }
             }
             key::PLAN_LEN => {
@@ -326,20 +375,16 @@ impl<T: Real> Record<T> {
             }
             k if slot_range.contains(&k) => {
                 let slot = r.u8()?;
-                let plan_index = r.u8()?;
-                if u16::from(slot) != k - key::CAPTURE || usize::from(plan_index) >= MAX_POSES {
+                let index = r.u8()?;
+                if u16::from(slot) != k - key::CAPTURE || usize::from(index) >= MAX_POSES {
                     return Err(RecordError::BadField);
                 }
                 let joints_rad = r.joints()?;
                 let reading = r.tilt()?;
-                let temperature_c = match r.u8()? {
-                    0 => None,
-                    1 => Some(r.f()?),
-                    _ => return Err(RecordError::BadField),
-                };
+                let temperature_c = r.temperature()?;
                 Record::Capture {
                     slot,
-                    plan_index,
+                    index,
                     pose: PoseReading {
                         joints_rad,
                         reading,
@@ -383,18 +428,34 @@ mod tests {
     fn every_kind_round_trips_bit_exactly() {
         let t = Tilt::new(0.123_456_79_f32, -1.0e-7);
         round_trip(Record::Bias(t));
-        round_trip(Record::Stage0First(t));
-        round_trip(Record::Stage1Before(t));
-        round_trip(Record::Stage1After(t));
-        round_trip(Record::Progress {
-            phase: Phase::Stage2,
-            next_pose: 7,
-            captures: 6,
-            stage0_skipped: true,
+        for slot in ReadingSlot::ALL {
+            round_trip(Record::Reading {
+                slot,
+                capture: Capture {
+                    reading: t,
+                    temperature_c: Some(23.25),
+                },
+            });
+        }
+        round_trip(Record::Reading {
+            slot: ReadingSlot::ClosingSecond,
+            capture: Capture {
+                reading: t,
+                temperature_c: None,
+            },
         });
+        for (stage0_skipped, closing_skipped) in [(true, false), (false, true), (true, true)] {
+            round_trip(Record::Progress {
+                phase: Phase::ClosingSecond,
+                cursor: 7,
+                captures: 6,
+                stage0_skipped,
+                closing_skipped,
+            });
+        }
         round_trip(Record::Capture {
             slot: 5,
-            plan_index: 9,
+            index: 9,
             pose: PoseReading {
                 joints_rad: [0.0, -1.5, 0.1, -3.1, 2.0, 1e-9],
                 reading: t,
@@ -403,7 +464,7 @@ mod tests {
         });
         round_trip(Record::Capture {
             slot: 6,
-            plan_index: 10,
+            index: 10,
             pose: PoseReading {
                 joints_rad: [0.0; 6],
                 reading: t,
@@ -428,7 +489,7 @@ mod tests {
         let mut buf = [0u8; MAX_RECORD_LEN];
         let r = Record::Capture {
             slot: 2,
-            plan_index: 1,
+            index: 1,
             pose: PoseReading::<f32>::default(),
         };
         let n = r.encode(&mut buf).unwrap();
@@ -444,6 +505,16 @@ mod tests {
         assert_eq!(
             Record::<f32>::decode(r.key(), &buf[..n]),
             Err(RecordError::WrongFormat(9))
+        );
+        // A reading stored under another slot's key.
+        let r = Record::Reading {
+            slot: ReadingSlot::Stage1AfterBelow,
+            capture: Capture::<f32>::default(),
+        };
+        let n = r.encode(&mut buf).unwrap();
+        assert_eq!(
+            Record::<f32>::decode(key::READING, &buf[..n]),
+            Err(RecordError::BadField)
         );
         let nan = Record::Bias(Tilt::new(f32::NAN, 0.0));
         let n = nan.encode(&mut buf).unwrap();

@@ -1,14 +1,20 @@
 //! What the procedure remembers, how it is rebuilt from flash after a power cut, and
 //! what the display shows of it.
 
+use core::ops::RangeInclusive;
+
 use super::record::Record;
-use super::{LastResult, Notice, Outcome, Phase, ProcedureConfig};
+use super::{
+    Approach, Capture, LastResult, Notice, Outcome, Phase, ProcedureConfig, ReadingSlot,
+    READING_SLOTS,
+};
 use crate::error::StageError;
 use crate::model::{Tilt, JOINTS};
 use crate::plan::{PoseList, MAX_POSES};
 use crate::real::Real;
 use crate::report::Verdict;
 use crate::session::{self, BiasSource, SessionError, SessionReadings, StageTemperatures};
+use crate::stage0::{ClosingReversal, Reversal};
 use crate::stage1::{AxisOneTurn, Stage1Result};
 use crate::stage2::{PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessFilter};
@@ -19,13 +25,17 @@ use crate::stillness::{Stillness, StillnessFilter};
 pub struct ProcedureState<T: Real> {
     pub(super) phase: Phase,
     pub(super) plan: PoseList<T>,
+    /// The bias in use: this session's stage 0, or the one an earlier session stored.
     pub(super) bias: Option<Tilt<T>>,
     pub(super) stage0_skipped: bool,
-    pub(super) stage0_first: Option<Tilt<T>>,
-    pub(super) stage1_before: Option<Tilt<T>>,
-    pub(super) stage1_after: Option<Tilt<T>>,
+    pub(super) closing_skipped: bool,
+    /// The captures of stages 0 and 1 and of the closing reversal.
+    pub(super) readings: [Option<Capture<T>>; READING_SLOTS],
     pub(super) stage1: Option<Stage1Result<T>>,
-    pub(super) next_pose: usize,
+    /// Stage 1: the approach of the next capture (0 from below, 1 from above); stage 2:
+    /// the index of the next capture in the plan's list (`2 × pose + approach`).
+    pub(super) cursor: usize,
+    /// Stage-2 captures: (index in the plan's capture list, pose).
     pub(super) captures: heapless::Vec<(u8, PoseReading<T>), MAX_POSES>,
     pub(super) outcome: Option<Outcome<T>>,
     pub(super) last_result: Option<LastResult<T>>,
@@ -52,6 +62,8 @@ pub struct View<'a, T: Real> {
     pub stillness: Stillness<T>,
     /// Whether the next still window will be captured.
     pub armed: bool,
+    /// In stages 1 and 2: the side every joint must arrive from.
+    pub approach: Option<Approach>,
     /// In stage 2: (index, plan length, joint targets in rad) of the pose to take.
     pub pose: Option<(usize, usize, [T; JOINTS])>,
     /// Stage-2 captures so far.
@@ -64,6 +76,22 @@ pub struct View<'a, T: Real> {
     pub outcome: Option<&'a Outcome<T>>,
 }
 
+/// The mean of two captures (`None` unless both are in).
+fn mean<T: Real>(a: Option<Capture<T>>, b: Option<Capture<T>>) -> Option<Capture<T>> {
+    let (a, b) = (a?, b?);
+    let half = T::lit(0.5);
+    Some(Capture {
+        reading: Tilt::new(
+            half * (a.reading.x_rad + b.reading.x_rad),
+            half * (a.reading.y_rad + b.reading.y_rad),
+        ),
+        temperature_c: match (a.temperature_c, b.temperature_c) {
+            (Some(x), Some(y)) => Some(half * (x + y)),
+            _ => None,
+        },
+    })
+}
+
 impl<T: Real> ProcedureState<T> {
     /// A new session at stage 0 with `plan` for stage 2 and the stored `bias`, if any.
     pub fn new(plan: PoseList<T>, bias: Option<Tilt<T>>) -> Self {
@@ -72,11 +100,10 @@ impl<T: Real> ProcedureState<T> {
             plan,
             bias,
             stage0_skipped: false,
-            stage0_first: None,
-            stage1_before: None,
-            stage1_after: None,
+            closing_skipped: false,
+            readings: [None; READING_SLOTS],
             stage1: None,
-            next_pose: 0,
+            cursor: 0,
             captures: heapless::Vec::new(),
             outcome: None,
             last_result: None,
@@ -106,25 +133,21 @@ impl<T: Real> ProcedureState<T> {
                 Record::Bias(b) => s.bias = Some(b),
                 Record::Progress {
                     phase,
-                    next_pose,
+                    cursor,
                     captures,
                     stage0_skipped,
+                    closing_skipped,
                 } => {
                     s.phase = phase;
-                    s.next_pose = usize::from(next_pose);
+                    s.cursor = usize::from(cursor);
                     count = usize::from(captures);
                     s.stage0_skipped = stage0_skipped;
+                    s.closing_skipped = closing_skipped;
                 }
-                Record::Stage0First(t) => s.stage0_first = Some(t),
-                Record::Stage1Before(t) => s.stage1_before = Some(t),
-                Record::Stage1After(t) => s.stage1_after = Some(t),
-                Record::Capture {
-                    slot,
-                    plan_index,
-                    pose,
-                } => {
+                Record::Reading { slot, capture } => s.readings[slot.index()] = Some(capture),
+                Record::Capture { slot, index, pose } => {
                     if let Some(x) = slots.get_mut(usize::from(slot)) {
-                        *x = Some((plan_index, pose));
+                        *x = Some((index, pose));
                     }
                 }
                 Record::PlanLen(n) => plan_len = usize::from(n),
@@ -160,43 +183,78 @@ impl<T: Real> ProcedureState<T> {
                 }
             }
         }
-        for slot in slots.iter().take(count).flatten() {
-            let _ = s.captures.push(*slot);
-        }
-        // Only what the phase needs survives: a stale stage-1 reading from before a
-        // BACK stays ignored.
-        match s.phase {
-            Phase::Stage0First => {
-                s.stage0_first = None;
-                s.stage1_before = None;
-                s.stage1_after = None;
+        // Captures hold their pose's joints: one beyond the plan or out of order is
+        // from another plan, and ends the list there.
+        let mut last = None;
+        for (index, pose) in slots.iter().take(count).flatten() {
+            if usize::from(*index) >= s.plan_captures() || last.is_some_and(|l| *index <= l) {
+                break;
             }
-            Phase::Stage0Second | Phase::Stage1Before => {
-                s.stage1_before = None;
-                s.stage1_after = None;
-            }
-            Phase::Stage1After => s.stage1_after = None,
-            Phase::Stage2 | Phase::Done => {}
+            last = Some(*index);
+            let _ = s.captures.push((*index, *pose));
         }
-        if s.phase == Phase::Stage0Second && s.stage0_first.is_none() {
-            s.phase = Phase::Stage0First;
-        }
-        if matches!(s.phase, Phase::Stage2 | Phase::Done) {
-            s.stage1 = s.solve_stage1(config).and_then(Result::ok);
-            if s.stage1.is_none() {
-                s.phase = Phase::Stage1Before;
-                s.captures.clear();
-                s.next_pose = 0;
-            }
-        }
-        if s.phase == Phase::Done {
-            s.outcome = Some(s.compute(config));
-        }
+        s.settle_restored(config);
         // After a reset the pendant may have been moved: re-arm only on motion (from
         // the first reading after power-up) or OK.
         s.armed = s.phase == Phase::Stage0First;
         s.last_capture = None;
         s
+    }
+
+    /// Keeps what the restored phase needs and falls back to the first capture missing
+    /// (a power cut between a capture and its progress record, a stale reading from
+    /// before a BACK).
+    fn settle_restored(&mut self, config: &ProcedureConfig<T>) {
+        if self.phase.on_bench() || matches!(self.phase, Phase::Stage1Before | Phase::Stage1After) {
+            self.cursor = self.cursor.min(1);
+        }
+        let closing_taken = !self.stage0_skipped && !self.closing_skipped;
+        // How many slots the phase has taken.
+        let taken = match self.phase {
+            Phase::Done if closing_taken => READING_SLOTS,
+            Phase::Stage2 | Phase::Done => ReadingSlot::ClosingFirst.index(),
+            phase => ReadingSlot::at(phase, self.cursor).map_or(0, ReadingSlot::index),
+        };
+        let needed = |slot: ReadingSlot| {
+            slot.index() < taken
+                && !(self.stage0_skipped && slot <= ReadingSlot::Stage0Second)
+                && !(self.closing_skipped && slot >= ReadingSlot::ClosingFirst)
+        };
+        for slot in ReadingSlot::ALL {
+            if !needed(slot) {
+                self.readings[slot.index()] = None;
+            }
+        }
+        let missing = ReadingSlot::ALL
+            .into_iter()
+            .find(|slot| needed(*slot) && self.readings[slot.index()].is_none());
+        if let Some(slot) = missing {
+            let (phase, cursor) = slot.phase_cursor();
+            self.phase = phase;
+            self.cursor = cursor;
+            self.clear_slots(slot..=ReadingSlot::ClosingSecond);
+            if slot < ReadingSlot::ClosingFirst {
+                self.captures.clear();
+            }
+            if slot <= ReadingSlot::Stage0Second {
+                self.stage0_skipped = false;
+            }
+        }
+        if self.phase == Phase::Stage2 {
+            self.cursor = self.cursor.min(self.plan_captures());
+        }
+        if self.readings[ReadingSlot::Stage1AfterAbove.index()].is_some() {
+            self.stage1 = self.solve_stage1(config).and_then(Result::ok);
+            if self.stage1.is_none() {
+                self.phase = Phase::Stage1Before;
+                self.cursor = 0;
+                self.clear_slots(ReadingSlot::Stage1BeforeBelow..=ReadingSlot::ClosingSecond);
+                self.captures.clear();
+            }
+        }
+        if self.phase == Phase::Done {
+            self.outcome = Some(self.compute(config));
+        }
     }
 
     /// The current phase.
@@ -209,7 +267,8 @@ impl<T: Real> ProcedureState<T> {
         &self.plan
     }
 
-    /// Stage-2 captures: (plan index, pose).
+    /// Stage-2 captures: (index in the plan's capture list, pose); pose `index / 2`,
+    /// approached as [`Approach::of`]`(index)`.
     pub fn captures(&self) -> &[(u8, PoseReading<T>)] {
         &self.captures
     }
@@ -219,9 +278,66 @@ impl<T: Real> ProcedureState<T> {
         self.bias
     }
 
-    /// Stage-1 readings (before, after), once taken.
-    pub fn stage1_readings(&self) -> (Option<Tilt<T>>, Option<Tilt<T>>) {
-        (self.stage1_before, self.stage1_after)
+    /// A capture of stages 0 and 1 or of the closing reversal, once taken.
+    pub fn reading(&self, slot: ReadingSlot) -> Option<Capture<T>> {
+        self.readings[slot.index()]
+    }
+
+    /// Whether stage 0 was skipped this session (the stored bias is used).
+    pub fn stage0_skipped(&self) -> bool {
+        self.stage0_skipped
+    }
+
+    /// Stage 0's reversal, once both readings are in (with its mean temperature).
+    pub fn stage0_reversal(&self) -> Option<ClosingReversal<T>> {
+        self.reversal_of(ReadingSlot::Stage0First, ReadingSlot::Stage0Second)
+    }
+
+    /// The closing reversal, once both readings are in (with its mean temperature).
+    pub fn closing_reversal(&self) -> Option<ClosingReversal<T>> {
+        self.reversal_of(ReadingSlot::ClosingFirst, ReadingSlot::ClosingSecond)
+    }
+
+    fn reversal_of(&self, a: ReadingSlot, b: ReadingSlot) -> Option<ClosingReversal<T>> {
+        let (first, second) = (self.reading(a)?, self.reading(b)?);
+        Some(ClosingReversal {
+            reversal: Reversal {
+                first: first.reading,
+                second: second.reading,
+            },
+            temperature_c: mean(Some(first), Some(second)).and_then(|m| m.temperature_c),
+        })
+    }
+
+    pub(super) fn reversal(&self) -> Option<Reversal<T>> {
+        self.stage0_reversal().map(|r| r.reversal)
+    }
+
+    /// Stage 1's readings (before, after), once both pairs are in: each the mean of
+    /// its captures from below and from above, with their mean temperature.
+    pub fn stage1_readings(&self) -> Option<(Capture<T>, Capture<T>)> {
+        let r = |s: ReadingSlot| self.reading(s);
+        Some((
+            mean(
+                r(ReadingSlot::Stage1BeforeBelow),
+                r(ReadingSlot::Stage1BeforeAbove),
+            )?,
+            mean(
+                r(ReadingSlot::Stage1AfterBelow),
+                r(ReadingSlot::Stage1AfterAbove),
+            )?,
+        ))
+    }
+
+    /// The sensor's temperature during stages 0 and 1, where recorded.
+    pub fn stage_temperatures(&self) -> StageTemperatures<T> {
+        StageTemperatures {
+            stage0_c: self.stage0_reversal().and_then(|r| r.temperature_c),
+            stage1_c: self
+                .stage1_readings()
+                .and_then(|(a, b)| mean(Some(a), Some(b)))
+                .and_then(|m| m.temperature_c),
+        }
     }
 
     /// Stage-1 result, once solved.
@@ -247,6 +363,30 @@ impl<T: Real> ProcedureState<T> {
         self.last_result = last;
     }
 
+    /// Captures the plan asks for: two a pose.
+    pub(super) fn plan_captures(&self) -> usize {
+        2 * self.plan.len()
+    }
+
+    /// Whether only OK arms the next capture: after the half turns (stage 0's and the
+    /// closing reversal's on the bench, stage 1's of axis 1) the reading moves little,
+    /// and a slow turn can look still near its end.
+    pub(super) fn needs_ok(&self) -> bool {
+        match self.phase {
+            Phase::Stage0Second | Phase::ClosingSecond => true,
+            Phase::Stage1After => self.cursor == 0,
+            _ => false,
+        }
+    }
+
+    pub(super) fn clear_slots(&mut self, range: RangeInclusive<ReadingSlot>) {
+        for slot in ReadingSlot::ALL {
+            if range.contains(&slot) {
+                self.readings[slot.index()] = None;
+            }
+        }
+    }
+
     /// The stage-2 model stages 0-1 produced (the one the fit uses).
     pub fn stage2_model(&self, config: &ProcedureConfig<T>) -> Option<Stage2Model<T>> {
         let s1 = self.stage1.as_ref()?;
@@ -262,8 +402,8 @@ impl<T: Real> ProcedureState<T> {
         )
     }
 
-    /// The session's readings of stages 0-1 and the captured poses, as the session
-    /// solver takes them (`None` before stage 1 is complete).
+    /// The session's readings of stages 0-1, the captured poses and the closing
+    /// reversal, as the session solver takes them (`None` before stage 1 is complete).
     pub(super) fn readings<'a>(
         &self,
         config: &ProcedureConfig<T>,
@@ -276,21 +416,24 @@ impl<T: Real> ProcedureState<T> {
             bias: self.bias_source(),
             stage1: self.axis_one_turn(config)?,
             poses,
-            // The pendant keeps stage 0's bias, not its temperature: the drift model
-            // needs the closing reversal, which this procedure does not yet take.
-            temperatures: StageTemperatures::default(),
-            closing: None,
+            temperatures: self.stage_temperatures(),
+            closing: self.closing_reversal(),
         })
     }
 
     fn bias_source(&self) -> BiasSource<T> {
-        self.bias.map_or(BiasSource::Unknown, BiasSource::Stored)
+        match (self.stage0_skipped, self.reversal(), self.bias) {
+            (false, Some(r), _) => BiasSource::Reversal(r),
+            (_, _, Some(b)) => BiasSource::Stored(b),
+            _ => BiasSource::Unknown,
+        }
     }
 
     fn axis_one_turn(&self, config: &ProcedureConfig<T>) -> Option<AxisOneTurn<T>> {
+        let (before, after) = self.stage1_readings()?;
         Some(AxisOneTurn {
-            before: self.stage1_before?,
-            after: self.stage1_after?,
+            before: before.reading,
+            after: after.reading,
             j1_rad: config.stage1_joints_rad[0],
             j2_rad: config.stage1_joints_rad[1],
         })
@@ -298,18 +441,24 @@ impl<T: Real> ProcedureState<T> {
 
     /// What to draw.
     pub fn view(&self) -> View<'_, T> {
+        let pose = (self.phase == Phase::Stage2)
+            .then(|| {
+                let i = self.cursor / 2;
+                self.plan.get(i).map(|q| (i, self.plan.len(), *q))
+            })
+            .flatten();
         View {
             phase: self.phase,
             live: self.live,
             stillness: self.stillness,
             armed: self.armed,
-            pose: (self.phase == Phase::Stage2)
-                .then(|| {
-                    self.plan
-                        .get(self.next_pose)
-                        .map(|q| (self.next_pose, self.plan.len(), *q))
-                })
-                .flatten(),
+            approach: match self.phase {
+                Phase::Stage1Before | Phase::Stage1After | Phase::Stage2 => {
+                    Some(Approach::of(self.cursor))
+                }
+                _ => None,
+            },
+            pose,
             captured: self.captures.len(),
             bias: self.bias,
             notice: self.notice,
@@ -320,13 +469,14 @@ impl<T: Real> ProcedureState<T> {
     pub(super) fn progress(&self) -> Record<T> {
         Record::Progress {
             phase: self.phase,
-            next_pose: self.next_pose as u8,
+            cursor: self.cursor as u8,
             captures: self.captures.len() as u8,
             stage0_skipped: self.stage0_skipped,
+            closing_skipped: self.closing_skipped,
         }
     }
 
-    /// Stage 1 on the bias in use; `None` until both readings are in.
+    /// Stage 1 on the bias in use; `None` until every reading is in.
     pub(super) fn solve_stage1(
         &self,
         config: &ProcedureConfig<T>,
@@ -368,9 +518,11 @@ impl<T: Real> ProcedureState<T> {
         }
     }
 
-    pub(super) fn enter(&mut self, phase: Phase, armed: bool) {
+    /// Goes to `phase` at `cursor`, disarmed, with a fresh stillness window.
+    pub(super) fn enter(&mut self, phase: Phase, cursor: usize) {
         self.phase = phase;
-        self.armed = armed;
+        self.cursor = cursor;
+        self.armed = false;
         self.filter.reset();
         self.stillness = Stillness::Moving;
     }

@@ -15,6 +15,7 @@ use super::world::Place;
 use super::Rig;
 use crate::buttons::Button;
 use crate::screen::{Prompt, Screen};
+use zerocal_core::procedure::Approach;
 
 /// How often the operator looks at the screen (ms).
 pub const LOOK_MS: u64 = 100;
@@ -104,8 +105,15 @@ fn wanted(rig: &Rig, prompt: &Prompt) -> Result<(Place, Option<[f64; JOINTS]>), 
             },
             None,
         ),
-        Prompt::Stage1Before => (Place::UpperArm, Some(stage1_pose(rig, false))),
-        Prompt::Stage1After => (Place::UpperArm, Some(stage1_pose(rig, true))),
+        Prompt::Stage1Before(_) => (Place::UpperArm, Some(stage1_pose(rig, false))),
+        Prompt::Stage1After(_) => (Place::UpperArm, Some(stage1_pose(rig, true))),
+        Prompt::ClosingFirst => (Place::Bench { heading_rad: 0.0 }, None),
+        Prompt::ClosingSecond => (
+            Place::Bench {
+                heading_rad: core::f64::consts::PI,
+            },
+            None,
+        ),
         Prompt::Pose { number, .. } => {
             let pose = rig
                 .plan
@@ -127,6 +135,8 @@ fn wanted(rig: &Rig, prompt: &Prompt) -> Result<(Place, Option<[f64; JOINTS]>), 
 pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptError> {
     let mut last_change = Instant::now();
     let mut last_kind = None;
+    // The prompt whose pose the robot was last brought to from its side.
+    let mut approached: Option<Prompt> = None;
     loop {
         Timer::after(Duration::from_millis(LOOK_MS)).await;
         let Some(screen) = rig.panel.borrow().shown.clone() else {
@@ -155,12 +165,24 @@ pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptEr
                 }
                 let (place, joints) = wanted(rig, &capture.prompt)?;
                 let t = t_ms();
+                let mut second_leg = None;
                 let until = {
                     let mut world = rig.world.borrow_mut();
                     if world.place() != place {
                         // Robot places: the robot stays where it is while the pendant is
                         // clipped on; then it moves.
                         Some(world.carry(t, place))
+                    } else if let (Some(q), Some(side), true) = (
+                        joints,
+                        approach_sign(&capture.prompt),
+                        approached != Some(capture.prompt),
+                    ) {
+                        // A new capture: to the point the approach starts from, then
+                        // to the pose, every joint arriving from the side shown.
+                        approached = Some(capture.prompt);
+                        let via = q.map(|v| v + side * APPROACH_DEG.to_radians());
+                        second_leg = Some(q);
+                        Some(world.move_joints(t, via))
                     } else {
                         joints
                             .filter(|q| world.target() != *q)
@@ -171,6 +193,12 @@ pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptEr
                     Some(end_ms) => {
                         let wait = (end_ms - t).max(0.0) as u64;
                         Timer::after(Duration::from_millis(wait)).await;
+                        if let Some(q) = second_leg {
+                            let t = t_ms();
+                            let end_ms = rig.world.borrow_mut().move_joints(t, q);
+                            let wait = (end_ms - t).max(0.0) as u64;
+                            Timer::after(Duration::from_millis(wait)).await;
+                        }
                     }
                     None => {
                         let rested = t - rig.world.borrow().rest_since_ms();
@@ -184,6 +212,22 @@ pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptEr
             }
         }
     }
+}
+
+/// How far from the pose an approach starts (deg): one degree on every joint, past
+/// any gear's backlash (arc-minutes), and a move the pendant sees (it re-arms at 0.2°).
+pub const APPROACH_DEG: f64 = 1.0;
+
+/// −1 for a capture approached from below, +1 from above, `None` for no robot pose.
+fn approach_sign(prompt: &Prompt) -> Option<f64> {
+    let approach = match *prompt {
+        Prompt::Stage1Before(a) | Prompt::Stage1After(a) | Prompt::Pose { approach: a, .. } => a,
+        _ => return None,
+    };
+    Some(match approach {
+        Approach::FromBelow => -1.0,
+        Approach::FromAbove => 1.0,
+    })
 }
 
 /// Stage-2 captures a screen shows (0 elsewhere).

@@ -8,7 +8,7 @@ use std::rc::Rc;
 use embassy_time::{Duration, Instant, Timer};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::procedure::{Phase, ProcedureState};
+use zerocal_core::procedure::{Approach, Phase, ProcedureState};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::SESSION_JOINTS;
 use zerocal_sim::scl3300_device::Fault;
@@ -180,28 +180,35 @@ pub fn session(
     Ok((report, rig.panel.clone()))
 }
 
-/// Where a screen stands in the session: 0-3 stages 0-1, then 4 + captures.
+/// Where a screen stands in the session: 0-1 stage 0, 2-5 stage 1's four captures,
+/// then 6 + stage-2 captures, the closing reversal's two, the result.
 fn screen_progress(screen: Option<&Screen>, poses: usize) -> usize {
+    let side = |a: Approach| usize::from(a == Approach::FromAbove);
     match screen {
         Some(Screen::Capture(c)) => match c.prompt {
             Prompt::Stage0First => 0,
             Prompt::Stage0Second => 1,
-            Prompt::Stage1Before => 2,
-            Prompt::Stage1After => 3,
-            Prompt::Pose { .. } | Prompt::NoPose => 4 + c.captured,
+            Prompt::Stage1Before(a) => 2 + side(a),
+            Prompt::Stage1After(a) => 4 + side(a),
+            Prompt::Pose { .. } | Prompt::NoPose | Prompt::ClosingFirst => 6 + c.captured,
+            Prompt::ClosingSecond => 7 + c.captured,
         },
-        Some(Screen::Result(_)) => 4 + poses,
+        Some(Screen::Result(_)) => 8 + 2 * poses,
         _ => 0,
     }
 }
 
 fn session_progress(session: &ProcedureState<f32>) -> usize {
+    let view = session.view();
+    let side = usize::from(view.approach == Some(Approach::FromAbove));
     match session.phase() {
         Phase::Stage0First => 0,
         Phase::Stage0Second => 1,
-        Phase::Stage1Before => 2,
-        Phase::Stage1After => 3,
-        Phase::Stage2 | Phase::Done => 4 + session.captures().len(),
+        Phase::Stage1Before => 2 + side,
+        Phase::Stage1After => 4 + side,
+        Phase::Stage2 | Phase::ClosingFirst => 6 + view.captured,
+        Phase::ClosingSecond => 7 + view.captured,
+        Phase::Done => 8 + view.captured,
     }
 }
 

@@ -260,6 +260,11 @@ impl World {
             };
         } else {
             self.hand_until_ms = end;
+            if let Place::Bench { heading_rad } = place {
+                // Put down at that heading (the closing reversal's bench after the
+                // flange).
+                self.heading = Motion::at_rest(heading_rad);
+            }
         }
         self.place = place;
         self.ring_from_ms = end;
