@@ -199,7 +199,7 @@ impl<T: Real> PlanUpload<T> {
         let mut count = 0;
         for field in line.split(',') {
             let deg = decimal::parse(field).ok_or(LinkError::BadPlanRow { row })?;
-            if !(deg.abs() <= crate::log::MAX_JOINT_DEG) {
+            if deg.abs() > crate::log::MAX_JOINT_DEG {
                 return Err(LinkError::AngleOutOfRange { row });
             }
             let slot = values.get_mut(count).ok_or(LinkError::BadPlanRow { row })?;

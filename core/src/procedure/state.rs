@@ -527,3 +527,90 @@ impl<T: Real> ProcedureState<T> {
         self.stillness = Stillness::Moving;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn reading(slot: ReadingSlot) -> Record<f64> {
+        Record::Reading {
+            slot,
+            capture: Capture {
+                reading: Tilt::new(0.001 * slot.index() as f64, -0.002),
+                temperature_c: Some(23.0),
+            },
+        }
+    }
+
+    fn progress(phase: Phase, cursor: u8, closing_skipped: bool) -> Record<f64> {
+        Record::Progress {
+            phase,
+            cursor,
+            captures: 0,
+            stage0_skipped: false,
+            closing_skipped,
+        }
+    }
+
+    fn restored(records: &[Record<f64>]) -> ProcedureState<f64> {
+        ProcedureState::restore(&ProcedureConfig::default(), records.iter().copied())
+    }
+
+    #[test]
+    fn a_missing_capture_sends_the_restore_back_to_it() {
+        // A cut between stage 1's last reading and its progress record: the progress
+        // already says stage 2, the reading is not there.
+        let mut records: Vec<_> = ReadingSlot::ALL[..5].iter().map(|s| reading(*s)).collect();
+        records.push(progress(Phase::Stage2, 0, false));
+        let s = restored(&records);
+        assert_eq!((s.phase(), s.cursor), (Phase::Stage1After, 1));
+        assert!(s.reading(ReadingSlot::Stage1AfterBelow).is_some());
+        // The closing reversal's second reading missing under a `Done`.
+        let mut records: Vec<_> = ReadingSlot::ALL[..7].iter().map(|s| reading(*s)).collect();
+        records.push(progress(Phase::Done, 0, false));
+        let s = restored(&records);
+        assert_eq!(s.phase(), Phase::ClosingSecond);
+        assert!(s.outcome().is_none());
+    }
+
+    #[test]
+    fn a_stale_reading_beyond_the_progress_is_dropped() {
+        // Slots 4 and 5 from before a BACK: the progress says stage 1 turned, below.
+        let mut records: Vec<_> = ReadingSlot::ALL[..6].iter().map(|s| reading(*s)).collect();
+        records.push(progress(Phase::Stage1After, 0, false));
+        let s = restored(&records);
+        assert_eq!((s.phase(), s.cursor), (Phase::Stage1After, 0));
+        assert!(s.reading(ReadingSlot::Stage1AfterBelow).is_none());
+        assert!(s.reading(ReadingSlot::Stage1AfterAbove).is_none());
+        assert!(s.stage1_readings().is_none());
+        // A skipped closing reversal keeps none of its readings.
+        let mut records: Vec<_> = ReadingSlot::ALL.iter().map(|s| reading(*s)).collect();
+        records.push(progress(Phase::Done, 0, true));
+        let s = restored(&records);
+        assert!(s.closing_reversal().is_none());
+        assert!(s.stage0_reversal().is_some());
+    }
+
+    #[test]
+    fn stage_1_pairs_are_averaged_with_their_temperatures() {
+        let mut s = ProcedureState::<f64>::new(PoseList::new(), None);
+        for (slot, x, t) in [
+            (ReadingSlot::Stage1BeforeBelow, 0.010, 22.0),
+            (ReadingSlot::Stage1BeforeAbove, 0.012, 23.0),
+            (ReadingSlot::Stage1AfterBelow, -0.004, 24.0),
+            (ReadingSlot::Stage1AfterAbove, -0.002, 25.0),
+        ] {
+            s.readings[slot.index()] = Some(Capture {
+                reading: Tilt::new(x, 0.0),
+                temperature_c: Some(t),
+            });
+        }
+        let (before, after) = s.stage1_readings().unwrap();
+        assert!((before.reading.x_rad - 0.011).abs() < 1e-15);
+        assert!((after.reading.x_rad + 0.003).abs() < 1e-15);
+        assert_eq!(s.stage_temperatures().stage1_c, Some(23.5));
+        // One pair incomplete: no stage-1 reading yet.
+        s.readings[ReadingSlot::Stage1AfterAbove.index()] = None;
+        assert!(s.stage1_readings().is_none());
+    }
+}
