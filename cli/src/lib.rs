@@ -6,6 +6,7 @@ pub mod diagnose;
 pub mod error;
 pub mod identify;
 pub mod log;
+pub mod pendant;
 pub mod plan;
 pub mod plots;
 pub mod program;

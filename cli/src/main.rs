@@ -6,6 +6,7 @@
 //! - `zerocal session EXPORT`: stages 0-2 on a pendant export, in the controller's terms.
 //! - `zerocal program --robot R --format F --out FILE`: a robot program that drives the
 //!   whole session.
+//! - `zerocal pendant --port P status|load-profile R|export|erase`: the pendant's link.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -45,6 +46,9 @@ enum Command {
     /// Write a robot program (KRL, RAPID, TP, INFORM, VAL3, URScript) that drives the
     /// whole session: stage 1, the remount stop, every planned pose.
     Program(ProgramArgs),
+    /// Talk to a pendant over its USB serial port: status, load a robot profile and its
+    /// plan, export the session, erase the store.
+    Pendant(zerocal_cli::pendant::PendantArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
@@ -113,6 +117,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Plan(args) => plan::run(args),
         Command::Session(args) => session::run(args),
         Command::Program(args) => program::run(args),
+        Command::Pendant(args) => zerocal_cli::pendant::run(args),
     }
 }
 

@@ -117,8 +117,9 @@ fn parse_range(text: &str) -> Option<Stated> {
 }
 
 /// Value names of options that take text, not a number.
-const TEXT_VALUES: [&str; 6] = [
+const TEXT_VALUES: [&str; 7] = [
     "<FILE>",
+    "<PORT>",
     "<DIR>",
     "<PATH>",
     "<NAME>",
@@ -249,6 +250,14 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
             "krl".into(),
             "--out".into(),
             log.with_file_name("walk.src").display().to_string(),
+        ],
+        // No pendant on the walk's machine: the port does not open (exit 2); the walk
+        // only checks its options' help.
+        "pendant" => vec![
+            "pendant".into(),
+            "--port".into(),
+            "/nonexistent/zerocal-walk".into(),
+            "status".into(),
         ],
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }

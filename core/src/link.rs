@@ -9,6 +9,9 @@
 //! | `plan set` | uploads a pose list: `j1,…,j6` or `j3,…,j6` (deg) a line (`zerocal plan --csv`), then `end` |
 //! | `export` | the whole session, as `zerocal session` reads it |
 //! | `clear` | clears the session in progress |
+//! | `profile` | the robot profile in use, as the lines `profile set` takes |
+//! | `profile set` | uploads a robot profile (`zerocal pendant load-profile` writes it), then `end` |
+//! | `erase all` | erases the store: session, bias, last result, profile and plan |
 //!
 //! Unknown or malformed lines get an `error:` line and change nothing. Parsing and
 //! formatting live here; the firmware's link task only moves bytes.
@@ -35,6 +38,9 @@ pub const HELP: &[&str] = &[
     "  plan set   upload a pose list: j1..j6 or j3..j6 in degrees, one pose a line, then 'end'",
     "  export     the whole session for 'zerocal session'",
     "  clear      clear the session in progress",
+    "  profile    the robot profile in use",
+    "  profile set  upload a robot profile (zerocal pendant load-profile), then 'end'",
+    "  erase all  erase session, bias, last result, profile and plan",
 ];
 
 /// A parsed command.
@@ -56,6 +62,12 @@ pub enum Command {
     Export,
     /// `clear`
     Clear,
+    /// `profile`
+    Profile,
+    /// `profile set`
+    ProfileSet,
+    /// `erase all`
+    Erase,
 }
 
 /// What is wrong with a line.
@@ -79,6 +91,8 @@ pub enum LinkError {
     },
     /// More rows than a plan holds.
     PlanTooLong,
+    /// `erase` without `all`.
+    EraseNeedsAll,
     /// `end` before enough rows.
     PlanTooShort {
         /// Rows given.
@@ -104,6 +118,9 @@ impl fmt::Display for LinkError {
                     crate::log::MAX_JOINT_DEG
                 )
             }
+            LinkError::EraseNeedsAll => f.write_str(
+                "'erase all' erases the session, bias, last result, profile and plan; nothing erased",
+            ),
             LinkError::PlanTooLong => {
                 write!(
                     f,
@@ -134,7 +151,11 @@ pub fn parse_command(line: &str) -> Result<Command, LinkError> {
         ("plan", Some("set")) => Command::PlanSet,
         ("export", None) => Command::Export,
         ("clear", None) => Command::Clear,
-        ("help" | "?" | "status" | "live" | "export" | "clear" | "plan", Some(_)) => {
+        ("profile", None) => Command::Profile,
+        ("profile", Some("set")) => Command::ProfileSet,
+        ("erase", Some("all")) => Command::Erase,
+        ("erase", _) => return Err(LinkError::EraseNeedsAll),
+        ("help" | "?" | "status" | "live" | "export" | "clear" | "plan" | "profile", Some(_)) => {
             return Err(LinkError::UnexpectedArgument)
         }
         _ => return Err(LinkError::UnknownCommand),
@@ -336,6 +357,13 @@ mod tests {
             Err(LinkError::UnexpectedArgument)
         );
         assert_eq!(parse_command("\u{1b}[A"), Err(LinkError::UnknownCommand));
+        assert_eq!(parse_command("profile set"), Ok(Command::ProfileSet));
+        assert_eq!(parse_command("erase all"), Ok(Command::Erase));
+        assert_eq!(parse_command("erase"), Err(LinkError::EraseNeedsAll));
+        assert_eq!(
+            parse_command("erase everything"),
+            Err(LinkError::EraseNeedsAll)
+        );
     }
 
     #[test]

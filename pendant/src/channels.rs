@@ -21,7 +21,7 @@ use embassy_sync::channel::Channel;
 use embassy_sync::mutex::Mutex;
 use embassy_sync::signal::Signal;
 use zerocal_core::plan::PoseList;
-use zerocal_core::procedure::{ProcedureConfig, ProcedureState};
+use zerocal_core::procedure::{PendantProfile, ProcedureConfig, ProcedureState};
 
 use crate::buttons::ButtonEvent;
 use crate::screen::Screen;
@@ -37,6 +37,8 @@ pub struct Procedure {
     pub config: ProcedureConfig<f32>,
     /// Everything the procedure remembers.
     pub session: ProcedureState<f32>,
+    /// The stored profile's generation (0: none stored, the built-in one in use).
+    pub profile_generation: u8,
 }
 
 /// A change the USB host asks for.
@@ -49,6 +51,10 @@ pub enum LinkRequest {
     SetPlan(PoseList<f32>),
     /// `clear`.
     Clear,
+    /// `profile set` … `end`: the new robot profile.
+    SetProfile(PendantProfile<f32>),
+    /// `erase all`.
+    Erase,
 }
 
 /// What became of a [`LinkRequest`].
@@ -62,6 +68,8 @@ pub enum LinkReply {
     StoreFailed,
     /// The pendant is not ready (storage reset or restart screen pending).
     NotReady,
+    /// A new profile was refused: a session is in progress (`clear` first).
+    SessionInProgress,
 }
 
 /// The pendant's shared state.
@@ -94,6 +102,7 @@ impl Shared {
             procedure: Mutex::new(Procedure {
                 config,
                 session: ProcedureState::new(PoseList::new(), None),
+                profile_generation: 0,
             }),
             sensor_reports: Channel::new(),
             button_events: Channel::new(),

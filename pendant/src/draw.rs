@@ -53,11 +53,17 @@ fn line(args: core::fmt::Arguments<'_>) -> Text {
 /// The six lines of `screen`.
 pub fn lines(screen: &Screen) -> [Text; 6] {
     match screen {
-        Screen::Starting => [
+        Screen::Starting(robot) => [
             fixed("zerocal pendant"),
             Text::new(),
-            fixed("reading store..."),
-            Text::new(),
+            match robot {
+                Some(_) => fixed("robot profile:"),
+                None => fixed("reading store..."),
+            },
+            match robot {
+                Some(name) => line(format_args!("{name}")),
+                None => Text::new(),
+            },
             Text::new(),
             line(format_args!("fw {VERSION}")),
         ],
@@ -258,6 +264,7 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
             number,
             of,
             approach,
+            ref names,
             joints_deg: [j3, j4, j5, j6],
         } => {
             let side = match approach {
@@ -270,8 +277,20 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
             ));
             return [
                 title,
-                line(format_args!("j3{:>7} j4{:>7}", sgn(j3, 2), sgn(j4, 2))),
-                line(format_args!("j5{:>7} j6{:>7}", sgn(j5, 2), sgn(j6, 2))),
+                line(format_args!(
+                    "{:<3}{:>7} {:<3}{:>7}",
+                    names[0],
+                    sgn(j3, 2),
+                    names[1],
+                    sgn(j4, 2)
+                )),
+                line(format_args!(
+                    "{:<3}{:>7} {:<3}{:>7}",
+                    names[2],
+                    sgn(j5, 2),
+                    names[3],
+                    sgn(j6, 2)
+                )),
                 live_line(screen),
                 settle_line(screen),
                 // Stage 2's model has axis 1 at its mark and joint 2 where stage 1
@@ -649,7 +668,7 @@ mod tests {
     #[test]
     fn lines_fit_the_display() {
         let screens = [
-            Screen::Starting,
+            Screen::Starting(None),
             Screen::StorageReset(ResetReason::OtherFormat(1)),
             Screen::StorageReset(ResetReason::Unreadable),
             Screen::StorageReset(ResetReason::ForeignBytes),

@@ -31,6 +31,7 @@ use zerocal_core::link::{
     parse_command, plan_line, status, Command, Line, PlanUpload, UploadStep, HELP,
 };
 use zerocal_core::log::export;
+use zerocal_core::procedure::profile::{ProfileStep, ProfileUpload};
 
 use crate::channels::{LinkReply, LinkRequest, Shared};
 
@@ -160,8 +161,18 @@ struct Server<'a, W> {
     shared: &'a Shared,
     tx: &'a mut W,
     editor: LineEditor,
-    /// `Some` between `plan set` and `end` (or an error).
-    upload: Option<PlanUpload<f32>>,
+    /// `Some` between `plan set` or `profile set` and `end` (or an error).
+    upload: Option<Upload>,
+}
+
+/// An upload in progress.
+// One at a time, so they share the task's memory.
+#[allow(clippy::large_enum_variant)]
+enum Upload {
+    /// `plan set`.
+    Plan(PlanUpload<f32>),
+    /// `profile set`.
+    Profile(ProfileUpload<f32>),
 }
 
 impl<W: Write> Server<'_, W> {
@@ -207,7 +218,41 @@ impl<W: Write> Server<'_, W> {
 
     /// Answers one line: a plan row while an upload is open, else a command.
     async fn answer(&mut self, line: &str) -> Result<Next, Disconnected> {
-        if let Some(rows) = self.upload.as_mut() {
+        if let Some(Upload::Profile(lines)) = self.upload.as_mut() {
+            match lines.feed(line) {
+                Ok(ProfileStep::More) => {}
+                Ok(ProfileStep::Done(profile)) => {
+                    self.upload = None;
+                    let mut name = zerocal_core::procedure::RobotName::new();
+                    let _ = name.push_str(&profile.robot);
+                    match self.request(LinkRequest::SetProfile(profile)).await {
+                        LinkReply::Done => {
+                            self.write_fmt(format_args!(
+                                "ok: profile {name} stored; session cleared; plan cleared: send one with 'plan set'"
+                            ))
+                            .await?
+                        }
+                        LinkReply::SessionInProgress => {
+                            self.write_line(
+                                b"error: a session is in progress; 'clear' first (profile unchanged)",
+                            )
+                            .await?
+                        }
+                        LinkReply::PlanLocked | LinkReply::StoreFailed => {
+                            self.write_line(b"error: profile taken but the flash write failed")
+                                .await?
+                        }
+                        LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                    }
+                }
+                Err(error) => {
+                    self.upload = None;
+                    self.write_fmt(format_args!("error: {error}")).await?;
+                }
+            }
+            return Ok(Next::Line);
+        }
+        if let Some(Upload::Plan(rows)) = self.upload.as_mut() {
             match rows.feed(line) {
                 Ok(UploadStep::More) => {}
                 Ok(UploadStep::Done(plan)) => {
@@ -229,6 +274,10 @@ impl<W: Write> Server<'_, W> {
                                 .await?
                         }
                         LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                        LinkReply::SessionInProgress => {
+                            self.write_line(b"error: a session is in progress; 'clear' first")
+                                .await?
+                        }
                     }
                 }
                 Err(error) => {
@@ -271,12 +320,39 @@ impl<W: Write> Server<'_, W> {
                     let q = procedure.config.stage1_joints_rad;
                     [q[0], q[1]]
                 };
-                self.upload = Some(PlanUpload::new(joints));
+                self.upload = Some(Upload::Plan(PlanUpload::new(joints)));
                 self.write_line(
-                    b"ok: send poses as j3,j4,j5,j6 in degrees, one a line, then 'end'",
+                    b"ok: send poses as j1,...,j6 or j3,...,j6 in degrees, one a line, then 'end'",
                 )
                 .await?;
             }
+            Command::Profile => {
+                let procedure = self.shared.procedure.lock().await;
+                let profile = procedure.config.profile();
+                for i in 0.. {
+                    match profile.line(i) {
+                        None => break,
+                        Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
+                        Some(Err(_)) => self.write_line(b"error: line too long").await?,
+                    }
+                }
+            }
+            Command::ProfileSet => {
+                self.upload = Some(Upload::Profile(ProfileUpload::default()));
+                self.write_line(b"ok: send the profile's lines, then 'end'")
+                    .await?;
+            }
+            Command::Erase => match self.request(LinkRequest::Erase).await {
+                LinkReply::Done => {
+                    self.write_line(b"ok: store erased; built-in profile and default plan in use")
+                        .await?
+                }
+                LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                _ => {
+                    self.write_line(b"error: the erase or the default plan's write failed")
+                        .await?
+                }
+            },
             Command::Export => self.export().await?,
             Command::Live => return Ok(Next::Live),
             Command::Clear => match self.request(LinkRequest::Clear).await {
@@ -289,6 +365,7 @@ impl<W: Write> Server<'_, W> {
                         .await?
                 }
                 LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                LinkReply::SessionInProgress => {}
             },
         }
         Ok(Next::Line)

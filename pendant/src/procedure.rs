@@ -12,11 +12,13 @@
 use core::ops::Range;
 
 use embassy_futures::select::{select3, Either3};
-use embassy_time::Instant;
+use embassy_time::{Duration, Instant, Timer};
 use embedded_storage_async::nor_flash::NorFlash;
 use zerocal_core::model::Tilt;
 use zerocal_core::plan::PoseList;
-use zerocal_core::procedure::{step, Event, Notice, Phase, ProcedureState};
+use zerocal_core::procedure::{
+    step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot,
+};
 use zerocal_core::stillness::Stillness;
 
 use crate::buttons::{Button, ButtonEvent, Press};
@@ -50,21 +52,24 @@ struct Presentation {
 
 /// Runs forever.
 pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
-    shared.screen.signal(Screen::Starting);
     let mut store = Store::new(boot.flash, boot.store_range).ok();
     let mut presentation = Presentation::default();
     let mut reset = None;
     {
         let mut procedure = shared.procedure.lock().await;
-        let Procedure { config, session } = &mut *procedure;
         match store.as_mut() {
-            Some(s) => match restore(s, config, session) {
+            Some(s) => match restore(s, &mut procedure) {
                 Ok(()) => {}
                 Err(reason) => reset = Some(reason),
             },
             None => presentation.extras.store_failed = true,
         }
+        // The boot screen names the robot the pendant is set up for.
+        shared
+            .screen
+            .signal(Screen::Starting(Some(procedure.config.robot.clone())));
     }
+    Timer::after(Duration::from_millis(BOOT_SCREEN_MS)).await;
     if let (Some(reason), Some(s)) = (reset, store.as_mut()) {
         shared.screen.signal(Screen::StorageReset(reason));
         wait_for_ok(shared).await;
@@ -72,8 +77,10 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     }
     {
         let mut procedure = shared.procedure.lock().await;
-        let Procedure { config, session } = &mut *procedure;
-        if session.plan().is_empty() {
+        let Procedure {
+            config, session, ..
+        } = &mut *procedure;
+        if session.plan().is_empty() && procedure_is_builtin(config) {
             // Through core, like an upload: it decides and lists the records to store.
             if let Ok(plan) = PoseList::from_slice(boot.default_plan) {
                 let output = step(config, session, Event::SetPlan(plan));
@@ -99,43 +106,72 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
         let from_link = matches!(input, Either3::Third(_));
         let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
         let mut procedure = shared.procedure.lock().await;
-        let Procedure { config, session } = &mut *procedure;
-        let event = match input {
-            Either3::First(SensorReport::Reading {
-                t_ms,
-                tilt,
-                temperature_c,
-            }) => {
-                presentation.extras.fault = None;
-                Some(Event::Sample {
-                    t_ms,
-                    reading: Tilt::new(tilt.x_rad, tilt.y_rad),
-                    temperature_c: Some(temperature_c),
-                })
+        // `erase all` empties the store before anything is written anew.
+        let mut erase_failed = false;
+        if matches!(input, Either3::Third(LinkRequest::Erase)) {
+            erase_failed = match store.as_mut() {
+                Some(s) => s.erase().await.is_err(),
+                None => true,
+            };
+        }
+        let phase_before = procedure.session.phase();
+        // One set of records to write, whatever asked for it: a single buffer lives
+        // across the write (the task's state is static RAM on the board).
+        let output = match input {
+            Either3::Third(LinkRequest::SetProfile(profile)) => {
+                set_profile(&mut procedure, &profile)
             }
-            Either3::First(SensorReport::Fault(fault)) => {
-                presentation.extras.fault = Some(fault);
-                Some(Event::SensorFault)
+            Either3::Third(LinkRequest::Erase) => {
+                Some(reset_to_builtin(&mut procedure, boot.default_plan))
             }
-            Either3::Second(press) => on_press(&mut presentation, session.phase(), press),
-            Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
-            Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
+            input => {
+                let Procedure {
+                    config, session, ..
+                } = &mut *procedure;
+                let event = match input {
+                    Either3::First(SensorReport::Reading {
+                        t_ms,
+                        tilt,
+                        temperature_c,
+                    }) => {
+                        presentation.extras.fault = None;
+                        Some(Event::Sample {
+                            t_ms,
+                            reading: Tilt::new(tilt.x_rad, tilt.y_rad),
+                            temperature_c: Some(temperature_c),
+                        })
+                    }
+                    Either3::First(SensorReport::Fault(fault)) => {
+                        presentation.extras.fault = Some(fault);
+                        Some(Event::SensorFault)
+                    }
+                    Either3::Second(press) => on_press(&mut presentation, session.phase(), press),
+                    Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
+                    Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
+                    Either3::Third(LinkRequest::SetProfile(_) | LinkRequest::Erase) => None,
+                };
+                event.map(|e| step(config, session, e))
+            }
         };
-        let phase_before = session.phase();
-        let mut stored = true;
-        if let Some(event) = event {
-            let output = step(config, session, event);
+        let refused = output.is_none() && from_link;
+        let mut stored = !erase_failed;
+        if let Some(output) = output {
             if !output.persist.is_empty() {
-                stored = persist(&mut store, &output.persist).await;
+                stored &= persist(&mut store, &output.persist).await;
                 presentation.extras.store_failed = !stored;
             }
         }
+        let Procedure {
+            config: _, session, ..
+        } = &mut *procedure;
         let phase = session.phase();
         if phase != Phase::Done || phase_before != Phase::Done {
             presentation.extras.result_page = 0;
         }
         if from_link {
-            let reply = if !stored {
+            let reply = if refused {
+                LinkReply::SessionInProgress
+            } else if !stored {
                 LinkReply::StoreFailed
             } else if session.view().notice == Some(Notice::PlanLocked) {
                 LinkReply::PlanLocked
@@ -166,14 +202,76 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
 /// good. Only a fresh store's first write (its marker) waits for the flash, briefly.
 fn restore<F: NorFlash>(
     store: &mut Store<F>,
-    config: &zerocal_core::procedure::ProcedureConfig<f32>,
-    session: &mut ProcedureState<f32>,
+    procedure: &mut Procedure,
 ) -> Result<(), crate::store::ResetReason> {
     let mut restored = Restored::default();
     let opened = embassy_futures::block_on(store.open(&mut restored));
+    // The stored profile first: the session's stage 1 is solved on its arm.
+    if let Some((profile, generation)) = PendantProfile::from_records(restored.records()) {
+        procedure.config.apply(&profile);
+        procedure.profile_generation = generation;
+    }
     // A store to be reset restores nothing: the session starts afresh.
-    *session = ProcedureState::restore(config, restored.records());
+    procedure.session = ProcedureState::restore(&procedure.config, restored.records());
     opened
+}
+
+/// How long the boot screen (with the robot's name) stays (ms).
+const BOOT_SCREEN_MS: u64 = 1500;
+
+/// Whether the built-in profile is in use (no profile stored): only then does the
+/// firmware's default plan, planned for it, apply.
+fn procedure_is_builtin(config: &zerocal_core::procedure::ProcedureConfig<f32>) -> bool {
+    config.robot == crate::config::procedure_config().robot
+}
+
+/// `profile set`: the configuration changes, and with it the session and the plan (a
+/// plan belongs to its robot). `None` (refused) while a session is in progress.
+///
+/// The records go in this order: the session's reset, the old plan's end, the
+/// profile's parts and its head last. A cut anywhere leaves the old profile or the new
+/// one, each without a plan; never a plan on the wrong robot.
+fn set_profile(procedure: &mut Procedure, profile: &PendantProfile<f32>) -> Option<Output<f32>> {
+    let Procedure {
+        config,
+        session,
+        profile_generation,
+    } = procedure;
+    let idle = session.phase() == Phase::Done
+        || (session.phase() == Phase::Stage0First
+            && session.captures().is_empty()
+            && session.reading(ReadingSlot::Stage0First).is_none());
+    if !idle {
+        return None;
+    }
+    let mut output = step(config, session, Event::Clear);
+    let cleared = step(config, session, Event::SetPlan(PoseList::new()));
+    let generation = profile_generation.wrapping_add(1).max(1);
+    for r in cleared
+        .persist
+        .into_iter()
+        .chain(profile.to_records(generation))
+    {
+        // 1 + 2 + 11 records in a buffer of a whole plan's.
+        let _ = output.persist.push(r);
+    }
+    config.apply(profile);
+    *profile_generation = generation;
+    Some(output)
+}
+
+/// `erase all` (the store already erased): the built-in profile, no bias or result,
+/// the firmware's default plan, which the records returned store again.
+fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
+    procedure.config = crate::config::procedure_config();
+    procedure.profile_generation = 0;
+    procedure.session = ProcedureState::new(PoseList::new(), None);
+    let plan = PoseList::from_slice(default_plan).unwrap_or_default();
+    step(
+        &procedure.config,
+        &mut procedure.session,
+        Event::SetPlan(plan),
+    )
 }
 
 /// Waits for a short or long OK, dropping everything else (answering the link).
@@ -247,7 +345,9 @@ async fn persist<F: NorFlash>(
 
 /// Sends the screen for the session as it is now.
 fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
-    shared
-        .screen
-        .signal(Screen::from_view(&procedure.session.view(), p.extras));
+    shared.screen.signal(Screen::from_view(
+        &procedure.session.view(),
+        &procedure.config.display,
+        p.extras,
+    ));
 }

@@ -9,7 +9,10 @@
 //! picture per kind, and the README's gallery is those pictures.
 
 use zerocal_core::model::WRIST_JOINTS;
-use zerocal_core::procedure::{Approach, Notice, Outcome, Phase, View};
+use zerocal_core::procedure::profile::JointName;
+use zerocal_core::procedure::{
+    Approach, ControllerDisplay, Notice, Outcome, Phase, RobotName, View,
+};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::report::{Warning, MAX_WARNINGS};
 use zerocal_core::session::SessionError;
@@ -21,8 +24,8 @@ use crate::store::ResetReason;
 /// A whole screen's content.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Screen {
-    /// Power-up: the store is being read.
-    Starting,
+    /// Power-up: the store is being read; then the robot the pendant is set up for.
+    Starting(Option<RobotName>),
     /// The store held something this firmware cannot read: OK erases it.
     StorageReset(ResetReason),
     /// The pendant restarted after a fault (panic or watchdog): what it was.
@@ -61,7 +64,7 @@ pub enum Refusal {
 }
 
 /// The step a capture screen prompts for.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Prompt {
     /// Stage 0, pendant on a bench: first reading.
     Stage0First,
@@ -79,7 +82,9 @@ pub enum Prompt {
         of: usize,
         /// The side every joint arrives from.
         approach: Approach,
-        /// θ3..θ6 targets (deg).
+        /// Joints 3-6 as the controller names them.
+        names: [JointName; WRIST_JOINTS],
+        /// θ3..θ6 targets as the controller shows them (deg).
         joints_deg: [f32; WRIST_JOINTS],
     },
     /// Stage 2 without a pose to take (no plan).
@@ -191,8 +196,10 @@ pub struct Extras {
 /// Each distinct screen, by name: the gallery has one picture of each.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum ScreenKind {
-    /// [`Screen::Starting`].
+    /// [`Screen::Starting`], reading the store.
     Boot,
+    /// [`Screen::Starting`] with the robot profile's name.
+    BootRobot,
     /// [`Screen::StorageReset`].
     StorageReset,
     /// [`Screen::Restarted`].
@@ -248,6 +255,7 @@ impl ScreenKind {
     pub fn name(self) -> &'static str {
         match self {
             ScreenKind::Boot => "boot",
+            ScreenKind::BootRobot => "boot-robot",
             ScreenKind::StorageReset => "storage-reset",
             ScreenKind::Restarted => "restarted",
             ScreenKind::Stage0Bench => "stage0-bench",
@@ -279,6 +287,9 @@ impl ScreenKind {
     pub fn operator_does(self) -> &'static str {
         match self {
             ScreenKind::Boot => "nothing: the pendant reads its store (well under a second)",
+            ScreenKind::BootRobot => {
+                "checks that the robot named is the one in front of it (`zerocal pendant load-profile` sets it)"
+            }
             ScreenKind::StorageReset => {
                 "reads why the store is unusable, then presses OK to erase it and start afresh"
             }
@@ -347,7 +358,8 @@ impl Screen {
     /// Which distinct screen this is.
     pub fn kind(&self) -> ScreenKind {
         match self {
-            Screen::Starting => ScreenKind::Boot,
+            Screen::Starting(None) => ScreenKind::Boot,
+            Screen::Starting(Some(_)) => ScreenKind::BootRobot,
             Screen::StorageReset(_) => ScreenKind::StorageReset,
             Screen::Restarted(_) => ScreenKind::Restarted,
             Screen::Result(result) => match (&result.fit, result.page) {
@@ -399,7 +411,11 @@ impl Screen {
     }
 
     /// The screen for core's view of the session.
-    pub fn from_view(view: &View<'_, f32>, extras: Extras) -> Screen {
+    pub fn from_view(
+        view: &View<'_, f32>,
+        display: &ControllerDisplay<f32>,
+        extras: Extras,
+    ) -> Screen {
         if view.phase == Phase::Done {
             let fit = match view.outcome {
                 Some(outcome) => summarize(outcome),
@@ -422,18 +438,17 @@ impl Screen {
             Phase::ClosingFirst => Prompt::ClosingFirst,
             Phase::ClosingSecond => Prompt::ClosingSecond,
             Phase::Stage2 | Phase::Done => match view.pose {
-                Some((index, of, joints_rad)) => Prompt::Pose {
-                    number: index + 1,
-                    of,
-                    approach,
+                Some((index, of, joints_rad)) => {
                     // The wrist's targets: joints 1 and 2 stay where stage 1 had them.
-                    joints_deg: [
-                        rad_to_deg(joints_rad[2]),
-                        rad_to_deg(joints_rad[3]),
-                        rad_to_deg(joints_rad[4]),
-                        rad_to_deg(joints_rad[5]),
-                    ],
-                },
+                    let shown = display.shown_deg(&joints_rad);
+                    Prompt::Pose {
+                        number: index + 1,
+                        of,
+                        approach,
+                        names: core::array::from_fn(|k| display.names[k + 2].clone()),
+                        joints_deg: [shown[2], shown[3], shown[4], shown[5]],
+                    }
+                }
                 None => Prompt::NoPose,
             },
         };
@@ -492,4 +507,66 @@ fn summarize(outcome: &Outcome<f32>) -> Result<FitSummary, Refusal> {
         condition_number: fit.condition_number,
         warnings: outcome.verdict.warnings.clone(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use zerocal_core::real::deg_to_rad;
+
+    #[test]
+    fn pose_targets_are_shown_as_the_controller_shows_them() {
+        // A KUKA-like display: A3 shows +90° at the model's zero, A4 and A6 turn the
+        // other way.
+        let mut display = ControllerDisplay::<f32> {
+            sign: [-1, 1, 1, -1, 1, -1],
+            zero_deg: [0.0, -90.0, 90.0, 0.0, 0.0, 0.0],
+            ..Default::default()
+        };
+        for (k, n) in display.names.iter_mut().enumerate() {
+            n.clear();
+            let _ = core::fmt::Write::write_fmt(n, format_args!("A{}", k + 1));
+        }
+        let joints = [
+            0.0,
+            deg_to_rad(-90.0),
+            deg_to_rad(10.0),
+            deg_to_rad(20.0),
+            0.0,
+            deg_to_rad(-5.0),
+        ];
+        let view = View {
+            phase: Phase::Stage2,
+            live: None,
+            stillness: Stillness::Moving,
+            armed: false,
+            approach: Some(Approach::FromAbove),
+            pose: Some((2, 24, joints)),
+            captured: 5,
+            bias: None,
+            notice: None,
+            outcome: None,
+        };
+        let Screen::Capture(c) = Screen::from_view(&view, &display, Extras::default()) else {
+            panic!("a capture screen");
+        };
+        let Prompt::Pose {
+            number,
+            approach,
+            names,
+            joints_deg,
+            ..
+        } = c.prompt
+        else {
+            panic!("{:?}", c.prompt);
+        };
+        assert_eq!((number, approach), (3, Approach::FromAbove));
+        assert_eq!(
+            names.each_ref().map(|n| n.as_str()),
+            ["A3", "A4", "A5", "A6"]
+        );
+        for (got, want) in joints_deg.iter().zip([100.0, -20.0, 0.0, 5.0]) {
+            assert!((got - want).abs() < 1e-4, "{joints_deg:?}");
+        }
+    }
 }

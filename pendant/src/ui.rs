@@ -41,7 +41,7 @@ pub trait Panel: DrawTarget<Color = BinaryColor> {
 
 /// Draws screens forever.
 pub async fn run<P: Panel>(shared: &Shared, mut panel: P) -> ! {
-    let mut screen = Screen::Starting;
+    let mut screen = Screen::Starting(None);
     let mut ready = false;
     loop {
         if !ready {

@@ -54,6 +54,7 @@ fn a_whole_session_identifies_the_offsets_within_three_sigma() {
     let panel = panel.borrow();
     for kind in [
         ScreenKind::Boot,
+        ScreenKind::BootRobot,
         ScreenKind::Stage0Bench,
         ScreenKind::Stage0Turned,
         ScreenKind::Stage1Arm,

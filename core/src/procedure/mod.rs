@@ -28,6 +28,7 @@
 //! captured, and one that has not moved yet is not captured twice. BACK undoes the last
 //! capture, whatever the stage.
 
+pub mod profile;
 pub mod record;
 mod state;
 
@@ -40,6 +41,7 @@ use crate::session::{SessionError, SessionSolution};
 use crate::stage1::Stage1Result;
 use crate::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessConfig};
+pub use profile::{ControllerDisplay, PendantProfile};
 pub use record::{Record, RecordError};
 pub use state::{ProcedureState, View};
 
@@ -66,6 +68,8 @@ pub struct ProcedureConfig<T: Real> {
     pub stage1_joints_rad: [T; JOINTS],
     /// Stage-2 fit settings, including the sensor's range and noise.
     pub fit: FitConfig<T>,
+    /// How the controller shows the joints (the pose screens' targets).
+    pub display: ControllerDisplay<T>,
 }
 
 impl<T: Real> Default for ProcedureConfig<T> {
@@ -84,6 +88,7 @@ impl<T: Real> Default for ProcedureConfig<T> {
             rearm_motion_rad: deg_to_rad(T::lit(0.2)),
             stage1_joints_rad: [T::zero(); JOINTS],
             fit: FitConfig::default(),
+            display: ControllerDisplay::default(),
         }
     }
 }
@@ -99,6 +104,33 @@ impl<T: Real> ProcedureConfig<T> {
         let mut config = Self::default();
         config.fit = FitConfig::for_mems(&config.arm, config.masses.is_some());
         config
+    }
+
+    /// Takes a robot profile: its kinematics, convention, stage-1 pose and display,
+    /// and the fit of a MEMS sensor on that arm (no sag term: the pendant has no
+    /// masses). The sensor's range and the stillness settings stay.
+    pub fn apply(&mut self, p: &PendantProfile<T>) {
+        let range = self.fit.sensor_range_rad;
+        self.robot = p.robot.clone();
+        self.convention = p.convention;
+        self.arm = p.arm;
+        self.masses = None;
+        self.stage1_joints_rad = [T::zero(); JOINTS];
+        self.stage1_joints_rad[..2].copy_from_slice(&p.stage1_rad);
+        self.fit = FitConfig::for_mems(&self.arm, false);
+        self.fit.sensor_range_rad = range;
+        self.display = p.display.clone();
+    }
+
+    /// The profile this configuration holds.
+    pub fn profile(&self) -> PendantProfile<T> {
+        PendantProfile {
+            robot: self.robot.clone(),
+            convention: self.convention,
+            arm: self.arm,
+            stage1_rad: [self.stage1_joints_rad[0], self.stage1_joints_rad[1]],
+            display: self.display.clone(),
+        }
     }
 }
 

@@ -10,7 +10,7 @@
 //! and 2 are refused as `WrongFormat` and the pendant starts afresh.
 
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
-use crate::model::{Tilt, JOINTS, WRIST_JOINTS};
+use crate::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
 use crate::plan::MAX_POSES;
 use crate::real::Real;
 use crate::stage2::PoseReading;
@@ -68,6 +68,55 @@ pub enum Record<T> {
         /// Joint targets θ1..θ6 (rad).
         joints_rad: [T; JOINTS],
     },
+    /// The robot profile's head, written last of its parts: the parts are the profile
+    /// only when all carry its `generation`.
+    ProfileHead {
+        /// Which `profile set` wrote it.
+        generation: u8,
+        /// The profile's name, UTF-8, `name_len` bytes.
+        name: [u8; 32],
+        /// Bytes of `name` used.
+        name_len: u8,
+        /// The sensor convention.
+        convention: Convention,
+        /// Joints 1 and 2 at stage 1 (rad).
+        stage1_rad: [T; 2],
+        /// The controller's J3 is θ3 − θ2.
+        j3_minus_j2: bool,
+    },
+    /// A joint's frame (parts 0-5) or the flange's (part 6).
+    ProfilePlacement {
+        /// As the head's.
+        generation: u8,
+        /// Which.
+        part: u8,
+        /// The joint's axis (`JointAxis` code; 0 for the flange).
+        axis: u8,
+        /// Orientation, a unit quaternion `w,x,y,z`.
+        rotation: [T; 4],
+        /// Origin (m).
+        translation_m: [T; 3],
+    },
+    /// A bracket's orientation: the upper arm's or the flange's.
+    ProfileMount {
+        /// As the head's.
+        generation: u8,
+        /// The flange bracket (else the upper arm's).
+        flange: bool,
+        /// A unit quaternion `w,x,y,z`.
+        rotation: [T; 4],
+    },
+    /// How the controller shows the joints.
+    ProfileDisplay {
+        /// As the head's.
+        generation: u8,
+        /// Names, UTF-8, zero-padded.
+        names: [[u8; 3]; JOINTS],
+        /// +1 or −1 each.
+        sign: [i8; JOINTS],
+        /// Shown at the model's zero (deg).
+        zero_deg: [T; JOINTS],
+    },
     /// The last completed result.
     LastResult {
         /// Δθ3..Δθ6 (rad).
@@ -115,14 +164,35 @@ pub mod key {
     pub const CAPTURE: u16 = 0x100;
     /// [`super::Record::PlanPose`] of index i is `PLAN_POSE + i`.
     pub const PLAN_POSE: u16 = 0x200;
+    /// [`super::Record::ProfileHead`].
+    pub const PROFILE_HEAD: u16 = 0x20;
+    /// [`super::Record::ProfilePlacement`] of part p is `PROFILE_PLACEMENT + p`.
+    pub const PROFILE_PLACEMENT: u16 = 0x21;
+    /// [`super::Record::ProfileMount`]: the upper arm's, then the flange's.
+    pub const PROFILE_MOUNT: u16 = 0x28;
+    /// [`super::Record::ProfileDisplay`].
+    pub const PROFILE_DISPLAY: u16 = 0x2A;
 }
+
+/// Placements of a profile: six joints and the flange.
+pub const PROFILE_PLACEMENTS: usize = 7;
+
+/// The profile's keys: head, placements, two mounts, display.
+const PROFILE_KEYS: usize = 1 + PROFILE_PLACEMENTS + 2 + 1;
 
 /// The fixed keys, in the order a restore reads them.
 const FIXED_KEYS: [u16; 4] = [key::BIAS, key::PROGRESS, key::LAST_RESULT, key::PLAN_LEN];
 
+fn profile_key(k: u16) -> Option<usize> {
+    (key::PROFILE_HEAD..key::PROFILE_HEAD + PROFILE_KEYS as u16)
+        .contains(&k)
+        .then(|| usize::from(k - key::PROFILE_HEAD))
+}
+
 /// How many keys the procedure uses: the fixed ones, the readings, a capture slot per
 /// capture and a plan pose per plan pose.
-pub const STORED_KEYS: usize = FIXED_KEYS.len() + READING_SLOTS + MAX_POSES + MAX_POSES;
+pub const STORED_KEYS: usize =
+    FIXED_KEYS.len() + READING_SLOTS + MAX_POSES + MAX_POSES + PROFILE_KEYS;
 
 /// Every key a restore may need, in the order to read them.
 pub fn all_keys() -> impl Iterator<Item = u16> {
@@ -131,6 +201,7 @@ pub fn all_keys() -> impl Iterator<Item = u16> {
         .chain((0..READING_SLOTS as u16).map(|s| key::READING + s))
         .chain((0..MAX_POSES as u16).map(|s| key::CAPTURE + s))
         .chain((0..MAX_POSES as u16).map(|i| key::PLAN_POSE + i))
+        .chain((0..PROFILE_KEYS as u16).map(|i| key::PROFILE_HEAD + i))
 }
 
 /// The place of `key` in [`all_keys`] (`0..STORED_KEYS`), if it is one of the
@@ -150,7 +221,32 @@ pub fn key_index(k: u16) -> Option<usize> {
     if (key::PLAN_POSE..key::PLAN_POSE + poses).contains(&k) {
         return Some(fixed + READING_SLOTS + MAX_POSES + usize::from(k - key::PLAN_POSE));
     }
-    None
+    profile_key(k).map(|i| fixed + READING_SLOTS + 2 * MAX_POSES + i)
+}
+
+/// The storage code of a joint axis (1-6).
+pub fn axis_code(a: JointAxis) -> u8 {
+    match a {
+        JointAxis::X => 1,
+        JointAxis::Y => 2,
+        JointAxis::Z => 3,
+        JointAxis::NegX => 4,
+        JointAxis::NegY => 5,
+        JointAxis::NegZ => 6,
+    }
+}
+
+/// Inverse of [`axis_code`].
+pub fn axis_of(code: u8) -> Option<JointAxis> {
+    Some(match code {
+        1 => JointAxis::X,
+        2 => JointAxis::Y,
+        3 => JointAxis::Z,
+        4 => JointAxis::NegX,
+        5 => JointAxis::NegY,
+        6 => JointAxis::NegZ,
+        _ => return None,
+    })
 }
 
 struct Writer<'a> {
@@ -246,6 +342,10 @@ impl<T: Real> Record<T> {
             Record::PlanLen(_) => key::PLAN_LEN,
             Record::Capture { slot, .. } => key::CAPTURE + u16::from(*slot),
             Record::PlanPose { index, .. } => key::PLAN_POSE + u16::from(*index),
+            Record::ProfileHead { .. } => key::PROFILE_HEAD,
+            Record::ProfilePlacement { part, .. } => key::PROFILE_PLACEMENT + u16::from(*part),
+            Record::ProfileMount { flange, .. } => key::PROFILE_MOUNT + u16::from(*flange),
+            Record::ProfileDisplay { .. } => key::PROFILE_DISPLAY,
         }
     }
 
@@ -289,6 +389,61 @@ impl<T: Real> Record<T> {
                 w.temperature(pose.temperature_c)?;
             }
             Record::PlanLen(n) => w.put(&[n])?,
+            Record::ProfileHead {
+                generation,
+                name,
+                name_len,
+                convention,
+                stage1_rad,
+                j3_minus_j2,
+            } => {
+                w.put(&[generation, name_len])?;
+                w.put(&name)?;
+                w.put(&[
+                    u8::from(convention == Convention::Rpy),
+                    u8::from(j3_minus_j2),
+                ])?;
+                for v in stage1_rad {
+                    w.f(v)?;
+                }
+            }
+            Record::ProfilePlacement {
+                generation,
+                part,
+                axis,
+                rotation,
+                translation_m,
+            } => {
+                w.put(&[generation, part, axis])?;
+                for v in rotation.iter().chain(&translation_m) {
+                    w.f(*v)?;
+                }
+            }
+            Record::ProfileMount {
+                generation,
+                flange,
+                rotation,
+            } => {
+                w.put(&[generation, u8::from(flange)])?;
+                for v in rotation {
+                    w.f(v)?;
+                }
+            }
+            Record::ProfileDisplay {
+                generation,
+                names,
+                sign,
+                zero_deg,
+            } => {
+                w.put(&[generation])?;
+                for n in names {
+                    w.put(&n)?;
+                }
+                w.put(&sign.map(|s| s as u8))?;
+                for v in zero_deg {
+                    w.f(v)?;
+                }
+            }
             Record::PlanPose { index, joints_rad } => {
                 w.put(&[index])?;
                 for q in joints_rad {
@@ -400,6 +555,81 @@ impl<T: Real> Record<T> {
                 Record::PlanPose {
                     index,
                     joints_rad: r.joints()?,
+                }
+            }
+            key::PROFILE_HEAD => {
+                let generation = r.u8()?;
+                let name_len = r.u8()?;
+                let name = r.take::<32>()?;
+                let convention = match r.u8()? {
+                    0 => Convention::Axis,
+                    1 => Convention::Rpy,
+                    _ => return Err(RecordError::BadField),
+                };
+                let j3_minus_j2 = match r.u8()? {
+                    0 => false,
+                    1 => true,
+                    _ => return Err(RecordError::BadField),
+                };
+                let ok_name = name
+                    .get(..usize::from(name_len))
+                    .is_some_and(|n| core::str::from_utf8(n).is_ok());
+                if !ok_name {
+                    return Err(RecordError::BadField);
+                }
+                Record::ProfileHead {
+                    generation,
+                    name,
+                    name_len,
+                    convention,
+                    stage1_rad: [r.f()?, r.f()?],
+                    j3_minus_j2,
+                }
+            }
+            k if (key::PROFILE_PLACEMENT..key::PROFILE_MOUNT).contains(&k) => {
+                let generation = r.u8()?;
+                let part = r.u8()?;
+                let axis = r.u8()?;
+                if u16::from(part) != k - key::PROFILE_PLACEMENT
+                    || (usize::from(part) < JOINTS && axis_of(axis).is_none())
+                {
+                    return Err(RecordError::BadField);
+                }
+                Record::ProfilePlacement {
+                    generation,
+                    part,
+                    axis,
+                    rotation: [r.f()?, r.f()?, r.f()?, r.f()?],
+                    translation_m: [r.f()?, r.f()?, r.f()?],
+                }
+            }
+            key::PROFILE_MOUNT | 0x29 => {
+                let generation = r.u8()?;
+                let flange = r.u8()?;
+                if u16::from(flange) != key - key::PROFILE_MOUNT {
+                    return Err(RecordError::BadField);
+                }
+                Record::ProfileMount {
+                    generation,
+                    flange: flange == 1,
+                    rotation: [r.f()?, r.f()?, r.f()?, r.f()?],
+                }
+            }
+            key::PROFILE_DISPLAY => {
+                let generation = r.u8()?;
+                let mut names = [[0_u8; 3]; JOINTS];
+                for n in &mut names {
+                    *n = r.take::<3>()?;
+                }
+                let sign = r.take::<JOINTS>()?.map(|b| b as i8);
+                if sign.iter().any(|s| s.abs() != 1) {
+                    return Err(RecordError::BadField);
+                }
+                Record::ProfileDisplay {
+                    generation,
+                    names,
+                    sign,
+                    zero_deg: r.joints()?,
                 }
             }
             k => return Err(RecordError::UnknownKey(k)),

@@ -169,6 +169,11 @@ impl<T: Real> ProcedureState<T> {
                         residual_rms_rad,
                     })
                 }
+                // The configuration's, read by `PendantProfile::from_records`.
+                Record::ProfileHead { .. }
+                | Record::ProfilePlacement { .. }
+                | Record::ProfileMount { .. }
+                | Record::ProfileDisplay { .. } => {}
             }
         }
         for p in plan.iter().take(plan_len) {

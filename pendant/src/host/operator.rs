@@ -154,7 +154,7 @@ pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptEr
             )));
         }
         match &screen {
-            Screen::Starting => {}
+            Screen::Starting(_) => {}
             Screen::StorageReset(_) | Screen::Restarted(_) => {
                 press(rig, Button::Ok, PRESS_MS).await
             }
@@ -175,11 +175,11 @@ pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptEr
                     } else if let (Some(q), Some(side), true) = (
                         joints,
                         approach_sign(&capture.prompt),
-                        approached != Some(capture.prompt),
+                        approached.as_ref() != Some(&capture.prompt),
                     ) {
                         // A new capture: to the point the approach starts from, then
                         // to the pose, every joint arriving from the side shown.
-                        approached = Some(capture.prompt);
+                        approached = Some(capture.prompt.clone());
                         let via = q.map(|v| v + side * APPROACH_DEG.to_radians());
                         second_leg = Some(q);
                         Some(world.move_joints(t, via))

@@ -251,7 +251,7 @@ async fn cut_script(rig: &Rig, mut started: bool) -> Result<Vec<u8>, ScriptError
     loop {
         let shown = rig.panel.borrow().shown.clone();
         match shown {
-            None | Some(Screen::Starting) => Timer::after(Duration::from_millis(50)).await,
+            None | Some(Screen::Starting(_)) => Timer::after(Duration::from_millis(50)).await,
             Some(Screen::Result(_)) if !started => {
                 press(rig, Button::Ok, super::operator::LONG_PRESS_MS).await;
                 started = true;
@@ -322,7 +322,7 @@ fn cut_one(
     let started = fresh
         || !matches!(
             shown,
-            Some(Screen::Result(_)) | Some(Screen::Starting) | None
+            Some(Screen::Result(_)) | Some(Screen::Starting(_)) | None
         );
     exec::advance(REBOOT);
     rig.flash.power_on();
@@ -332,7 +332,7 @@ fn cut_one(
         let restored = loop {
             let shown = rig.panel.borrow().shown.clone();
             match shown {
-                Some(Screen::Starting) | None => Timer::after(Duration::from_millis(50)).await,
+                Some(Screen::Starting(_)) | None => Timer::after(Duration::from_millis(50)).await,
                 Some(screen) => {
                     let reset = screen.kind() == ScreenKind::StorageReset;
                     let session = &shared.procedure.lock().await.session;
@@ -357,7 +357,7 @@ fn cut_one(
             rig,
             "the result after a reboot",
             Duration::from_secs(10),
-            |s| s.kind() != ScreenKind::Boot,
+            |s| !matches!(s, Screen::Starting(_)),
         )
         .await?;
         Ok::<_, ScriptError>(command(rig, b"export\r\n", SILENCE).await)
@@ -1142,4 +1142,74 @@ pub fn gallery(session: &PanelLog, scenarios: &[ScenarioReport]) -> Vec<(ScreenK
 /// Stage-2 captures shown on a screen (for tests).
 pub fn captured(screen: &Screen) -> usize {
     capture_count(screen)
+}
+
+/// What [`converse`] saw.
+#[derive(Clone, Debug, Default)]
+pub struct Conversation {
+    /// The answer to each request, as text.
+    pub answers: Vec<String>,
+    /// The boot screen after a power cycle that followed the requests.
+    pub boot_after_reboot: Option<Screen>,
+    /// The first screen after it.
+    pub screen_after_reboot: Option<Screen>,
+    /// The answers to `after_reboot`, sent once that screen showed.
+    pub answers_after_reboot: Vec<String>,
+}
+
+/// A fresh pendant answers `requests` over its link, one at a time (each answer is
+/// what it sends until it has been silent for half a second); then the power is
+/// cycled, the boot screen and the screen after it are kept, and `after_reboot` is
+/// answered. The desktop's `zerocal pendant` is tested through this: the same bytes
+/// through the pendant's own link task.
+///
+/// # Errors
+/// The run did not finish.
+pub fn converse(requests: &[Vec<u8>], after_reboot: &[Vec<u8>]) -> Result<Conversation, String> {
+    exec::reset_clock();
+    let rig = Rig::new(WorldConfig::default(), 1)?;
+    let mut conversation = Conversation::default();
+    let first = rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| async {
+        wait_for(&rig, "the first screen", Duration::from_secs(10), |s| {
+            !matches!(s, Screen::Starting(_))
+        })
+        .await?;
+        let mut answers = Vec::new();
+        for request in requests {
+            let answer = command(&rig, request, SILENCE).await;
+            answers.push(String::from_utf8_lossy(&answer).into_owned());
+        }
+        Ok::<_, ScriptError>(answers)
+    });
+    conversation.answers = match first {
+        Ok(Ok(answers)) => answers,
+        other => return Err(format!("conversation: {other:?}")),
+    };
+    exec::advance(REBOOT);
+    let rig = &rig;
+    let second = rig.run(Instant::from_secs(0) + RUN_LIMIT * 2, |_| async move {
+        let boot = wait_for(rig, "the boot screen", Duration::from_secs(10), |s| {
+            matches!(s, Screen::Starting(Some(_)))
+        })
+        .await?;
+        let next = wait_for(rig, "the screen after boot", Duration::from_secs(10), |s| {
+            !matches!(s, Screen::Starting(_))
+        })
+        .await?;
+        let mut answers = Vec::new();
+        for request in after_reboot {
+            let answer = command(rig, request, SILENCE).await;
+            answers.push(String::from_utf8_lossy(&answer).into_owned());
+        }
+        Ok::<_, ScriptError>((boot, next, answers))
+    });
+    match second {
+        Ok(Ok((boot, next, answers))) => {
+            conversation.boot_after_reboot = Some(boot);
+            conversation.screen_after_reboot = Some(next);
+            conversation.answers_after_reboot = answers;
+        }
+        other => return Err(format!("conversation after the reboot: {other:?}")),
+    }
+    Ok(conversation)
 }
