@@ -188,11 +188,12 @@ impl<T: Real> ProcedureState<T> {
                 }
             }
         }
-        // Captures hold their pose's joints: one beyond the plan or out of order is
-        // from another plan, and ends the list there.
+        // Captures hold their own joints, so they stand without the plan (a plan lost
+        // from the store loses no capture); one out of order is not this session's
+        // and ends the list there.
         let mut last = None;
         for (index, pose) in slots.iter().take(count).flatten() {
-            if usize::from(*index) >= s.plan_captures() || last.is_some_and(|l| *index <= l) {
+            if last.is_some_and(|l| *index <= l) {
                 break;
             }
             last = Some(*index);
