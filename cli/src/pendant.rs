@@ -19,9 +19,9 @@ use std::time::{Duration, Instant};
 
 use clap::{Args, Subcommand};
 use zerocal_core::model::JOINTS;
-use zerocal_core::procedure::profile::{ControllerDisplay, JointName, PendantProfile};
+use zerocal_core::procedure::profile::{JointName, PendantProfile};
 use zerocal_core::procedure::{RobotName, MAX_PLAN_POSES};
-use zerocal_profile::{Coupling, Profile};
+use zerocal_profile::Profile;
 
 use crate::error::CliError;
 
@@ -80,21 +80,18 @@ pub fn pendant_profile(profile: &Profile) -> Result<PendantProfile<f64>, CliErro
             ))
         })?;
     }
-    let c = &profile.controller;
     Ok(PendantProfile {
         robot,
         // The pendant's SCL3300 reads in the `axis` convention.
         convention: zerocal_core::model::Convention::Axis,
         arm: profile.arm,
         stage1_rad: [profile.stage1_joints_rad[0], profile.stage1_joints_rad[1]],
-        display: ControllerDisplay {
-            names,
-            sign: c.sign,
-            zero_deg: c.zero_deg,
-            j3_minus_j2: c.coupling == Coupling::J3MinusJ2,
-        },
+        display: profile.controller.display(names),
     })
 }
+
+/// The longest line the pendant's link takes (bytes): `zerocal_pendant::link::MAX_LINE`.
+const LINK_LINE_BYTES: usize = 128;
 
 /// The bytes of `profile set` … `end`.
 ///
@@ -105,11 +102,12 @@ pub fn profile_request(p: &PendantProfile<f64>) -> Result<Vec<u8>, CliError> {
     for i in 0.. {
         match p.line(i) {
             None => break,
-            Some(Ok(line)) => {
+            // The pendant's line editor holds 128 bytes, the line ending included.
+            Some(Ok(line)) if line.len() + 2 <= LINK_LINE_BYTES => {
                 out.extend_from_slice(line.as_bytes());
                 out.extend_from_slice(b"\r\n");
             }
-            Some(Err(_)) => {
+            Some(_) => {
                 return Err(CliError::Input(format!(
                     "profile line {} does not fit the pendant's line",
                     i + 1
@@ -141,15 +139,33 @@ pub fn plan_request(poses_rad: &[[f64; JOINTS]]) -> Result<Vec<u8>, CliError> {
     Ok(out)
 }
 
-/// The requests of an action, in order.
+/// One request: its bytes, and the line that ends its answer (`None`: the answer ends
+/// when the pendant falls silent).
+#[derive(Clone, Debug)]
+pub struct Request {
+    /// What is sent.
+    pub bytes: Vec<u8>,
+    /// The start of the answer's last line on success (an `error:` line ends it too).
+    pub done: Option<&'static str>,
+}
+
+/// The requests of an action, in order. A request is sent only once the one before it
+/// was answered without an error (a plan must not follow a refused profile).
 ///
 /// # Errors
 /// An unknown robot, a plan that does not read or does not fit.
-pub fn requests(action: &PendantAction) -> Result<Vec<Vec<u8>>, CliError> {
+pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
+    let silent = |bytes: &[u8]| Request {
+        bytes: bytes.to_vec(),
+        done: None,
+    };
     Ok(match action {
-        PendantAction::Status => vec![b"status\r\n".to_vec()],
-        PendantAction::Export { .. } => vec![b"export\r\n".to_vec()],
-        PendantAction::Erase => vec![b"erase all\r\n".to_vec()],
+        PendantAction::Status => vec![silent(b"status\r\n")],
+        PendantAction::Export { .. } => vec![silent(b"export\r\n")],
+        PendantAction::Erase => vec![Request {
+            bytes: b"erase all\r\n".to_vec(),
+            done: Some("ok: store erased"),
+        }],
         PendantAction::LoadProfile { robot, plan } => {
             let profile = crate::robot::load(robot)?;
             let poses = match plan {
@@ -157,10 +173,24 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Vec<u8>>, CliError> {
                 None => crate::program::default_plan(robot, &default_timing()?)?,
             };
             vec![
-                profile_request(&pendant_profile(&profile)?)?,
-                plan_request(&poses)?,
+                Request {
+                    bytes: profile_request(&pendant_profile(&profile)?)?,
+                    done: Some("ok: profile "),
+                },
+                Request {
+                    bytes: plan_request(&poses)?,
+                    done: Some("ok: plan set"),
+                },
             ]
         }
+    })
+}
+
+/// Whether `answer` is complete for `request`: its success line or an `error:` line.
+pub fn answered(request: &Request, answer: &str) -> bool {
+    answer.lines().any(|l| {
+        let l = l.trim();
+        l.starts_with("error:") || request.done.is_some_and(|d| l.starts_with(d))
     })
 }
 
@@ -226,18 +256,19 @@ pub fn check(action: &PendantAction, answers: &[String]) -> Result<String, CliEr
     })
 }
 
-/// Sends `request` and collects the answer until the pendant has been silent for
-/// `silence` (or `limit` has passed).
+/// Sends `request` and collects the answer until it is [`answered`] or, for a request
+/// without a success line, the pendant has been silent for `silence`; at most `limit`
+/// (a flash erase may hold a reply for half a second).
 ///
 /// # Errors
 /// The port's own errors.
 pub fn exchange(
     port: &mut (impl Read + Write),
-    request: &[u8],
+    request: &Request,
     silence: Duration,
     limit: Duration,
 ) -> std::io::Result<Vec<u8>> {
-    port.write_all(request)?;
+    port.write_all(&request.bytes)?;
     port.flush()?;
     let start = Instant::now();
     let mut last = Instant::now();
@@ -249,13 +280,16 @@ pub fn exchange(
             Ok(n) => {
                 answer.extend_from_slice(&buf[..n]);
                 last = Instant::now();
+                if request.done.is_some() && answered(request, &String::from_utf8_lossy(&answer)) {
+                    break;
+                }
                 continue;
             }
             Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {}
             Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
             Err(e) => return Err(e),
         }
-        if !answer.is_empty() && last.elapsed() >= silence {
+        if request.done.is_none() && !answer.is_empty() && last.elapsed() >= silence {
             break;
         }
         if answer.is_empty() && start.elapsed() >= silence * 6 {
@@ -263,6 +297,30 @@ pub fn exchange(
         }
     }
     Ok(answer)
+}
+
+/// Sends the requests in turn and returns each answer, stopping after the first that
+/// failed (an `error:` line, or no success line): a plan must not follow a refused
+/// profile.
+///
+/// # Errors
+/// The port's own errors.
+pub fn talk(
+    port: &mut (impl Read + Write),
+    requests: &[Request],
+    silence: Duration,
+) -> std::io::Result<Vec<String>> {
+    let mut answers = Vec::new();
+    for r in requests {
+        let bytes = exchange(port, r, silence, Duration::from_secs(60))?;
+        let answer = String::from_utf8_lossy(&bytes).into_owned();
+        let failed = pendant_error(&answer).is_some() || !answered(r, &answer);
+        answers.push(answer);
+        if failed {
+            break;
+        }
+    }
+    Ok(answers)
 }
 
 /// Runs `zerocal pendant`.
@@ -276,17 +334,8 @@ pub fn run(args: &PendantArgs) -> Result<String, CliError> {
         .timeout(Duration::from_millis(50))
         .open()
         .map_err(|e| CliError::Input(format!("{}: {e}", args.port)))?;
-    let mut answers = Vec::new();
-    for r in &requests {
-        let bytes = exchange(
-            &mut port,
-            r,
-            Duration::from_millis(500),
-            Duration::from_secs(60),
-        )
+    let answers = talk(&mut port, &requests, Duration::from_millis(500))
         .map_err(|e| CliError::Input(format!("{}: {e}", args.port)))?;
-        answers.push(String::from_utf8_lossy(&bytes).into_owned());
-    }
     let out = check(&args.action, &answers)?;
     if let PendantAction::Export { out: Some(path) } = &args.action {
         std::fs::write(path, &out)
@@ -298,4 +347,98 @@ pub fn run(args: &PendantArgs) -> Result<String, CliError> {
         ));
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::VecDeque;
+
+    /// A port that answers each request with the next scripted reply, and times out
+    /// when it has nothing to say.
+    struct Scripted {
+        replies: VecDeque<&'static [u8]>,
+        pending: VecDeque<u8>,
+        written: Vec<u8>,
+    }
+
+    impl Write for Scripted {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            self.written.extend_from_slice(buf);
+            if let Some(r) = self.replies.pop_front() {
+                self.pending.extend(r.iter().copied());
+            }
+            Ok(buf.len())
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    impl Read for Scripted {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            if self.pending.is_empty() {
+                std::thread::sleep(Duration::from_millis(2));
+                return Err(std::io::ErrorKind::TimedOut.into());
+            }
+            let n = buf.len().min(self.pending.len());
+            for b in buf.iter_mut().take(n) {
+                *b = self.pending.pop_front().unwrap_or(0);
+            }
+            Ok(n)
+        }
+    }
+
+    #[test]
+    fn a_refused_profile_stops_before_the_plan() {
+        let requests = requests(&PendantAction::LoadProfile {
+            robot: "abb-irb140".into(),
+            plan: None,
+        })
+        .unwrap();
+        assert_eq!(requests.len(), 2);
+        let mut port = Scripted {
+            replies: VecDeque::from([
+                &b"ok: send the profile's lines, then 'end'\r\nerror: a session is in progress; 'clear' first (profile unchanged)\r\n"[..],
+                &b"ok: plan set, 24 poses\r\n"[..],
+            ]),
+            pending: VecDeque::new(),
+            written: Vec::new(),
+        };
+        let answers = talk(&mut port, &requests, Duration::from_millis(20)).unwrap();
+        assert_eq!(answers.len(), 1, "the plan was not sent");
+        assert!(!String::from_utf8_lossy(&port.written).contains("plan set"));
+        let e = check(
+            &PendantAction::LoadProfile {
+                robot: "abb-irb140".into(),
+                plan: None,
+            },
+            &answers,
+        )
+        .unwrap_err();
+        assert_eq!(e.exit_code(), 3);
+        assert!(e.to_string().contains("session is in progress"), "{e}");
+    }
+
+    #[test]
+    fn an_upload_waits_for_its_line_past_a_silence() {
+        // The first 'ok:' of 'profile set' is not the answer's end: the exchange goes on
+        // through a pause (a flash erase) to 'ok: profile'.
+        let request = Request {
+            bytes: b"profile set\r\n".to_vec(),
+            done: Some("ok: profile "),
+        };
+        assert!(!answered(
+            &request,
+            "ok: send the profile's lines, then 'end'\r\n"
+        ));
+        assert!(answered(
+            &request,
+            "ok: send ...\r\nok: profile x stored\r\n"
+        ));
+        assert!(answered(
+            &request,
+            "error: profile line 2: bad 'joint' values\r\n"
+        ));
+    }
 }

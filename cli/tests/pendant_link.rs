@@ -18,7 +18,11 @@ fn load(robot: &str) -> PendantAction {
 #[test]
 fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
     let action = load("kuka-kr6-r900-sixx");
-    let requests = pendant::requests(&action).unwrap();
+    let requests: Vec<Vec<u8>> = pendant::requests(&action)
+        .unwrap()
+        .into_iter()
+        .map(|r| r.bytes)
+        .collect();
     let c = converse(&requests, &[b"profile\r\n".to_vec(), b"plan\r\n".to_vec()]).unwrap();
     let out = pendant::check(&action, &c.answers).unwrap();
     assert!(
@@ -71,11 +75,18 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
 
 #[test]
 fn erase_status_export_and_refusals() {
+    let bytes = |a: &PendantAction| -> Vec<Vec<u8>> {
+        pendant::requests(a)
+            .unwrap()
+            .into_iter()
+            .map(|r| r.bytes)
+            .collect()
+    };
     let requests: Vec<Vec<u8>> = [
-        pendant::requests(&load("abb-irb140")).unwrap(),
-        pendant::requests(&PendantAction::Erase).unwrap(),
-        pendant::requests(&PendantAction::Status).unwrap(),
-        pendant::requests(&PendantAction::Export { out: None }).unwrap(),
+        bytes(&load("abb-irb140")),
+        bytes(&PendantAction::Erase),
+        bytes(&PendantAction::Status),
+        bytes(&PendantAction::Export { out: None }),
         vec![b"profile set\r\nname x convention axis\r\nend\r\n".to_vec()],
     ]
     .concat();

@@ -28,6 +28,10 @@ use core::fmt::{self, Write};
 
 pub use crate::log::Line;
 
+/// How far a six-joint `plan set` row's joints 1 and 2 may lie from stage 1's (deg):
+/// the link's 3 decimals, and an `f32` of a few hundred degrees.
+pub const STAGE1_JOINT_TOLERANCE_DEG: f64 = 1e-3;
+
 /// The text of `help`.
 pub const HELP: &[&str] = &[
     "commands:",
@@ -93,6 +97,11 @@ pub enum LinkError {
     PlanTooLong,
     /// `erase` without `all`.
     EraseNeedsAll,
+    /// A six-joint `plan set` row whose joints 1 or 2 are not stage 1's.
+    JointsOneTwoMoved {
+        /// Row number (1-based).
+        row: usize,
+    },
     /// `end` before enough rows.
     PlanTooShort {
         /// Rows given.
@@ -118,6 +127,10 @@ impl fmt::Display for LinkError {
                     crate::log::MAX_JOINT_DEG
                 )
             }
+            LinkError::JointsOneTwoMoved { row } => write!(
+                f,
+                "plan row {row}: joints 1 and 2 must stay at stage 1's (the profile's stage-1 pose); plan unchanged"
+            ),
             LinkError::EraseNeedsAll => f.write_str(
                 "'erase all' erases the session, bias, last result, profile and plan; nothing erased",
             ),
@@ -196,8 +209,9 @@ impl<T: Real> PlanUpload<T> {
     /// Feeds one line. Blank lines and `#` comments are skipped.
     ///
     /// # Errors
-    /// A malformed row, an angle beyond ±360°, too many or too few rows. The upload is
-    /// then over and the plan unchanged.
+    /// A malformed row, an angle beyond ±[`crate::log::MAX_JOINT_DEG`], joints 1-2 away
+    /// from stage 1's, too many or too few rows. The upload is then over and the plan
+    /// unchanged.
     pub fn feed(&mut self, line: &str) -> Result<UploadStep<T>, LinkError> {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {
@@ -212,8 +226,9 @@ impl<T: Real> PlanUpload<T> {
             return Ok(UploadStep::Done(core::mem::take(&mut self.rows)));
         }
         let row = self.rows.len() + 1;
-        // The CSV headers `zerocal plan --csv` writes (`j1_deg,…` or `j3_deg,…`).
-        if line.starts_with('j') {
+        // The CSV header `zerocal plan --csv` writes (`j1_deg,…` or `j3_deg,…`), before
+        // the first row only.
+        if self.rows.is_empty() && (line.starts_with("j1_deg,") || line.starts_with("j3_deg,")) {
             return Ok(UploadStep::More);
         }
         let mut values = [T::zero(); JOINTS];
@@ -228,7 +243,17 @@ impl<T: Real> PlanUpload<T> {
             count += 1;
         }
         let q = match count {
-            JOINTS => values,
+            // Stage 2's model and screens keep joints 1 and 2 where stage 1 had them: a row
+            // that moves them would be recorded at angles the robot never took.
+            JOINTS => {
+                let tolerance = deg_to_rad(T::lit(STAGE1_JOINT_TOLERANCE_DEG));
+                if (values[0] - self.stage1_joints_rad[0]).abs() > tolerance
+                    || (values[1] - self.stage1_joints_rad[1]).abs() > tolerance
+                {
+                    return Err(LinkError::JointsOneTwoMoved { row });
+                }
+                values
+            }
             WRIST_JOINTS => {
                 let mut q = [T::zero(); JOINTS];
                 q[..2].copy_from_slice(&self.stage1_joints_rad);
@@ -397,6 +422,23 @@ mod tests {
             Err(LinkError::AngleOutOfRange { row: 1 })
         );
         assert_eq!(up.feed("end"), Err(LinkError::PlanTooShort { rows: 0 }));
+        let mut up = PlanUpload::<f32>::new([0.0, 0.5]);
+        assert_eq!(
+            up.feed("0,28.6479,1,2,3,4"),
+            Ok(UploadStep::More),
+            "joint 2 at 0.5 rad"
+        );
+        assert_eq!(
+            up.feed("0,30,1,2,3,4"),
+            Err(LinkError::JointsOneTwoMoved { row: 2 })
+        );
+        let mut up = PlanUpload::<f32>::new([0.0; 2]);
+        assert_eq!(up.feed("1,2,3,4"), Ok(UploadStep::More));
+        assert_eq!(
+            up.feed("j3_deg,j4_deg,j5_deg,j6_deg"),
+            Err(LinkError::BadPlanRow { row: 2 }),
+            "a header after the first row is not skipped"
+        );
         let mut up = PlanUpload::<f32>::new([0.0; 2]);
         for _ in 0..MAX_PLAN_POSES {
             assert_eq!(up.feed("1,2,3,4"), Ok(UploadStep::More));

@@ -77,10 +77,11 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     }
     {
         let mut procedure = shared.procedure.lock().await;
+        let builtin = procedure_is_builtin(&procedure);
         let Procedure {
             config, session, ..
         } = &mut *procedure;
-        if session.plan().is_empty() && procedure_is_builtin(config) {
+        if session.plan().is_empty() && builtin {
             // Through core, like an upload: it decides and lists the records to store.
             if let Ok(plan) = PoseList::from_slice(boot.default_plan) {
                 let output = step(config, session, Event::SetPlan(plan));
@@ -121,6 +122,8 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             Either3::Third(LinkRequest::SetProfile(profile)) => {
                 set_profile(&mut procedure, &profile)
             }
+            // An erase that failed changes nothing: what the store holds stays in use.
+            Either3::Third(LinkRequest::Erase) if erase_failed => None,
             Either3::Third(LinkRequest::Erase) => {
                 Some(reset_to_builtin(&mut procedure, boot.default_plan))
             }
@@ -153,7 +156,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                 event.map(|e| step(config, session, e))
             }
         };
-        let refused = output.is_none() && from_link;
+        let refused = output.is_none() && from_link && !erase_failed;
         let mut stored = !erase_failed;
         if let Some(output) = output {
             if !output.persist.is_empty() {
@@ -207,10 +210,11 @@ fn restore<F: NorFlash>(
     let mut restored = Restored::default();
     let opened = embassy_futures::block_on(store.open(&mut restored));
     // The stored profile first: the session's stage 1 is solved on its arm.
-    if let Some((profile, generation)) = PendantProfile::from_records(restored.records()) {
+    if let Some((profile, _)) = PendantProfile::from_records(restored.records()) {
         procedure.config.apply(&profile);
-        procedure.profile_generation = generation;
     }
+    // The newest of any part, whole or torn: the next profile takes a newer one.
+    procedure.profile_generation = PendantProfile::newest_generation(restored.records());
     // A store to be reset restores nothing: the session starts afresh.
     procedure.session = ProcedureState::restore(&procedure.config, restored.records());
     opened
@@ -219,18 +223,20 @@ fn restore<F: NorFlash>(
 /// How long the boot screen (with the robot's name) stays (ms).
 const BOOT_SCREEN_MS: u64 = 1500;
 
-/// Whether the built-in profile is in use (no profile stored): only then does the
-/// firmware's default plan, planned for it, apply.
-fn procedure_is_builtin(config: &zerocal_core::procedure::ProcedureConfig<f32>) -> bool {
-    config.robot == crate::config::procedure_config().robot
+/// Whether nothing of a profile was ever stored (generation 0): only then does the
+/// firmware's default plan, planned for the built-in profile, apply. After a torn
+/// profile write the built-in profile is in use but the plan is left to the operator.
+fn procedure_is_builtin(procedure: &Procedure) -> bool {
+    procedure.profile_generation == 0
 }
 
 /// `profile set`: the configuration changes, and with it the session and the plan (a
 /// plan belongs to its robot). `None` (refused) while a session is in progress.
 ///
 /// The records go in this order: the session's reset, the old plan's end, the
-/// profile's parts and its head last. A cut anywhere leaves the old profile or the new
-/// one, each without a plan; never a plan on the wrong robot.
+/// profile's parts and its head last. A cut before the plan's end leaves the old
+/// profile with its plan; one after it, the old or no whole profile (the built-in one
+/// then, named on the boot screen) without a plan; never a plan on the wrong robot.
 fn set_profile(procedure: &mut Procedure, profile: &PendantProfile<f32>) -> Option<Output<f32>> {
     let Procedure {
         config,

@@ -7,6 +7,7 @@
 //! (`Δq·gear ratio`) or encoder counts (`Δq·counts per degree`).
 
 use zerocal_core::model::JOINTS;
+use zerocal_core::procedure::profile::{ControllerDisplay, JointName};
 
 /// The joint coupling of the controller's display.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -79,13 +80,19 @@ impl Controller {
         }
     }
 
-    /// The shown values (deg) of model angles (rad).
-    pub fn shown_deg(&self, model_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
-        let mut d = model_rad.map(f64::to_degrees);
-        if self.coupling == Coupling::J3MinusJ2 {
-            d[2] -= d[1];
+    /// How the pendant shows this controller's joints, under these names.
+    pub fn display(&self, names: [JointName; JOINTS]) -> ControllerDisplay<f64> {
+        ControllerDisplay {
+            names,
+            sign: self.sign,
+            zero_deg: self.zero_deg,
+            j3_minus_j2: self.coupling == Coupling::J3MinusJ2,
         }
-        core::array::from_fn(|k| f64::from(self.sign[k]) * d[k] + self.zero_deg[k])
+    }
+
+    /// The shown values (deg) of model angles (rad): the pendant's own conversion.
+    pub fn shown_deg(&self, model_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
+        self.display(Default::default()).shown_deg(model_rad)
     }
 
     /// The model angles (rad) of shown values (deg).

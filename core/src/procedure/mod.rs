@@ -517,7 +517,9 @@ pub fn step<T: Real>(
         Event::SetPlan(plan) => {
             if plan.len() > MAX_PLAN_POSES {
                 s.notice = Some(Notice::PlanTooLong);
-            } else if s.captures.is_empty() && s.phase != Phase::Done {
+            } else if (s.captures.is_empty() || s.plan.is_empty()) && s.phase != Phase::Done {
+                // With captures, only a plan lost from the store is replaced: the
+                // captures keep their joints and the cursor stays where they left it.
                 // A power cut in the middle must not leave new poses mixed with old:
                 // no plan until the new length is written last.
                 out.push(Record::PlanLen(0));
@@ -529,8 +531,9 @@ pub fn step<T: Real>(
                 }
                 out.push(Record::PlanLen(plan.len() as u8));
                 s.plan = plan;
-                if s.phase == Phase::Stage2 {
+                if s.phase == Phase::Stage2 && s.captures.is_empty() {
                     s.cursor = 0;
+                    out.push(s.progress());
                 }
                 s.notice = None;
             } else {

@@ -265,8 +265,10 @@ type StoredPlacement<T> = (u8, u8, [T; 4], [T; 3]);
 pub const PROFILE_RECORDS: usize = 11;
 
 impl<T: Real> PendantProfile<T> {
-    /// The records that store it, the head last (so a power cut in the middle leaves
-    /// the previous profile whole: its parts no longer match, and none is used).
+    /// The records that store it, the head last. A power cut in the middle leaves no
+    /// whole profile (the store keeps the newest record of each part): the parts no
+    /// longer match one head's generation, none is used, and the pendant falls back to
+    /// the built-in profile, which its boot screen names.
     pub fn to_records(&self, generation: u8) -> [Record<T>; PROFILE_RECORDS] {
         let placement = |part: usize| {
             let (p, axis) = match self.arm.joints.get(part) {
@@ -321,6 +323,22 @@ impl<T: Real> PendantProfile<T> {
                 j3_minus_j2: self.display.j3_minus_j2,
             },
         ]
+    }
+
+    /// The newest generation any stored profile part carries (0: none): a new profile
+    /// takes the next, so no part left by a torn write can match its head.
+    pub fn newest_generation(records: impl IntoIterator<Item = Record<T>>) -> u8 {
+        records
+            .into_iter()
+            .filter_map(|r| match r {
+                Record::ProfileHead { generation, .. }
+                | Record::ProfilePlacement { generation, .. }
+                | Record::ProfileMount { generation, .. }
+                | Record::ProfileDisplay { generation, .. } => Some(generation),
+                _ => None,
+            })
+            .max()
+            .unwrap_or(0)
     }
 
     /// The stored profile and its generation: `None` unless the head and every part

@@ -190,7 +190,7 @@ fn profile_key(k: u16) -> Option<usize> {
 }
 
 /// How many keys the procedure uses: the fixed ones, the readings, a capture slot per
-/// capture and a plan pose per plan pose.
+/// capture, a plan pose per plan pose and the robot profile's parts.
 pub const STORED_KEYS: usize =
     FIXED_KEYS.len() + READING_SLOTS + MAX_POSES + MAX_POSES + PROFILE_KEYS;
 
@@ -205,7 +205,7 @@ pub fn all_keys() -> impl Iterator<Item = u16> {
 }
 
 /// The place of `key` in [`all_keys`] (`0..STORED_KEYS`), if it is one of the
-/// procedure's: a restore keeps one record per place.
+/// procedure's (the profile's parts included): a restore keeps one record per place.
 pub fn key_index(k: u16) -> Option<usize> {
     let poses = MAX_POSES as u16;
     let fixed = FIXED_KEYS.len();
@@ -603,10 +603,10 @@ impl<T: Real> Record<T> {
                     translation_m: [r.f()?, r.f()?, r.f()?],
                 }
             }
-            key::PROFILE_MOUNT | 0x29 => {
+            k if k == key::PROFILE_MOUNT || k == key::PROFILE_MOUNT + 1 => {
                 let generation = r.u8()?;
                 let flange = r.u8()?;
-                if u16::from(flange) != key - key::PROFILE_MOUNT {
+                if u16::from(flange) != k - key::PROFILE_MOUNT {
                     return Err(RecordError::BadField);
                 }
                 Record::ProfileMount {
@@ -622,7 +622,7 @@ impl<T: Real> Record<T> {
                     *n = r.take::<3>()?;
                 }
                 let sign = r.take::<JOINTS>()?.map(|b| b as i8);
-                if sign.iter().any(|s| s.abs() != 1) {
+                if sign.iter().any(|s| !matches!(s, 1 | -1)) {
                     return Err(RecordError::BadField);
                 }
                 Record::ProfileDisplay {

@@ -246,7 +246,9 @@ impl<T: Real> ProcedureState<T> {
                 self.stage0_skipped = false;
             }
         }
-        if self.phase == Phase::Stage2 {
+        // Without a plan (one lost from the store) the cursor stays where the captures
+        // left it, for the plan sent again.
+        if self.phase == Phase::Stage2 && !self.plan.is_empty() {
             self.cursor = self.cursor.min(self.plan_captures());
         }
         if self.readings[ReadingSlot::Stage1AfterAbove.index()].is_some() {
