@@ -600,6 +600,42 @@ mod tests {
     }
 
     #[test]
+    fn a_plan_lost_from_the_store_loses_no_capture_and_can_be_sent_again() {
+        let mut records: Vec<_> = ReadingSlot::ALL[..6].iter().map(|s| reading(*s)).collect();
+        records.push(Record::Progress {
+            phase: Phase::Stage2,
+            cursor: 3,
+            captures: 3,
+            stage0_skipped: false,
+            closing_skipped: false,
+        });
+        for i in 0..3_u8 {
+            records.push(Record::Capture {
+                slot: i,
+                index: i,
+                pose: PoseReading {
+                    joints_rad: [0.0, 0.0, 0.1 * f64::from(i), 0.2, 0.3, 0.4],
+                    reading: Tilt::new(0.01, 0.02),
+                    temperature_c: Some(23.0),
+                },
+            });
+        }
+        let config = ProcedureConfig::default();
+        let mut s = ProcedureState::restore(&config, records.iter().copied());
+        // No `PlanLen`: the captures stand on their own joints, the cursor stays.
+        assert_eq!(s.phase(), Phase::Stage2);
+        assert_eq!((s.captures().len(), s.cursor), (3, 3));
+        let mut plan = PoseList::new();
+        for i in 0..4 {
+            let _ = plan.push([0.0, 0.0, 0.1 * f64::from(i), 0.2, 0.3, 0.4]);
+        }
+        let out = super::super::step(&config, &mut s, super::super::Event::SetPlan(plan));
+        assert_eq!(s.plan().len(), 4, "{:?}", s.view().notice);
+        assert_eq!((s.captures().len(), s.cursor), (3, 3));
+        assert!(out.persist.iter().any(|r| *r == Record::PlanLen(4)));
+    }
+
+    #[test]
     fn stage_1_pairs_are_averaged_with_their_temperatures() {
         let mut s = ProcedureState::<f64>::new(PoseList::new(), None);
         for (slot, x, t) in [
