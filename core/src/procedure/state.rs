@@ -632,7 +632,7 @@ mod tests {
         let out = super::super::step(&config, &mut s, super::super::Event::SetPlan(plan));
         assert_eq!(s.plan().len(), 4, "{:?}", s.view().notice);
         assert_eq!((s.captures().len(), s.cursor), (3, 3));
-        assert!(out.persist.iter().any(|r| *r == Record::PlanLen(4)));
+        assert!(out.persist.contains(&Record::PlanLen(4)));
     }
 
     #[test]
