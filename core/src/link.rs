@@ -281,15 +281,16 @@ pub fn plan_line<T: Real>(plan: &PoseList<T>, line: usize) -> Option<Result<Line
     let r = if line == 0 {
         w.write_str("pose,j3_deg,j4_deg,j5_deg,j6_deg")
     } else {
+        // Joints 3-6, as the header says: what `plan set` takes back.
         let q = plan.get(line - 1)?;
         write!(
             w,
             "{},{},{},{},{}",
             line,
-            deg_fixed(q[0], 3),
-            deg_fixed(q[1], 3),
             deg_fixed(q[2], 3),
-            deg_fixed(q[3], 3)
+            deg_fixed(q[3], 3),
+            deg_fixed(q[4], 3),
+            deg_fixed(q[5], 3)
         )
     };
     Some(r.map(|()| w))
@@ -366,5 +367,39 @@ mod tests {
             assert_eq!(up.feed("1,2,3,4"), Ok(UploadStep::More));
         }
         assert_eq!(up.feed("1,2,3,4"), Err(LinkError::PlanTooLong));
+    }
+
+    /// Found by the `link_lines` fuzz target: `plan` printed joints 1-4 under the
+    /// header j3..j6, so `plan set` of what `plan` printed changed the plan.
+    #[test]
+    fn the_plan_reply_reads_back_as_the_same_plan() {
+        let stage1 = [0.25_f32, -0.5];
+        let mut plan = PoseList::<f32>::new();
+        for k in 0..4 {
+            let d = k as f32;
+            let q = [0.25, -0.5, 10.0 + d, 20.0 - d, -30.0 + d, 40.0 * d];
+            plan.push(q.map(|v| v.to_radians())).unwrap();
+            plan[k][..2].copy_from_slice(&stage1);
+        }
+        assert_eq!(
+            plan_line(&plan, 1).unwrap().unwrap().as_str(),
+            "1,10.000,20.000,-30.000,0.000"
+        );
+        let mut up = PlanUpload::<f32>::new(stage1);
+        for i in 1..=plan.len() {
+            let line = plan_line(&plan, i).unwrap().unwrap();
+            let (_, row) = line.split_once(',').unwrap();
+            assert_eq!(up.feed(row), Ok(UploadStep::More));
+        }
+        match up.feed("end") {
+            Ok(UploadStep::Done(back)) => {
+                for (a, b) in plan.iter().zip(&back) {
+                    for (x, y) in a.iter().zip(b) {
+                        assert!((x - y).abs() < 1e-5, "{a:?} -> {b:?}");
+                    }
+                }
+            }
+            other => panic!("{other:?}"),
+        }
     }
 }
