@@ -159,9 +159,21 @@ type Map<F> = MapStorage<
     Cache<ArrayPageStates<MAX_PAGES>, ArrayPagePointers<MAX_PAGES>, Uncached, u16>,
 >;
 
+/// The map on `range` of `flash`, with an empty cache.
+fn new_map<F: NorFlash>(flash: F, range: Range<u32>) -> Result<Map<F>, BadRange> {
+    let config = MapConfig::try_new(range).map_err(|_| BadRange)?;
+    Ok(MapStorage::new(
+        flash,
+        config,
+        Cache::new(ArrayPageStates::new(), ArrayPagePointers::new(), Uncached),
+    ))
+}
+
 /// The store on a flash range.
 pub struct Store<F: NorFlash> {
-    map: Map<F>,
+    /// `None` only if [`Self::erase`] could not rebuild it (it always can: the range
+    /// was valid before); every operation then fails.
+    map: Option<Map<F>>,
     buffer: [u8; ITEM_BUFFER_BYTES],
 }
 
@@ -180,20 +192,15 @@ impl<F: NorFlash> Store<F> {
         if pages > MAX_PAGES {
             return Err(BadRange);
         }
-        let config = MapConfig::try_new(range).map_err(|_| BadRange)?;
         Ok(Store {
-            map: MapStorage::new(
-                flash,
-                config,
-                Cache::new(ArrayPageStates::new(), ArrayPagePointers::new(), Uncached),
-            ),
+            map: Some(new_map(flash, range)?),
             buffer: [0; ITEM_BUFFER_BYTES],
         })
     }
 
-    /// Gives the flash back (the host runner's power cut).
-    pub fn release(self) -> F {
-        self.map.destroy().0
+    /// Gives the flash back (a power cut), if the store still has it.
+    pub fn release(self) -> Option<F> {
+        self.map.map(|map| map.destroy().0)
     }
 
     /// Reads the store at power-up into `restored`.
@@ -211,7 +218,8 @@ impl<F: NorFlash> Store<F> {
             // See `Scan::wreck_end`.
             let marker = [0_u8; 16];
             let word = marker.get(..F::WRITE_SIZE).ok_or(ResetReason::Unreadable)?;
-            if self.map.flash().write(wreck_end, word).await.is_err() {
+            let map = self.map.as_mut().ok_or(ResetReason::Unreadable)?;
+            if map.flash().write(wreck_end, word).await.is_err() {
                 return Err(ResetReason::Unreadable);
             }
         }
@@ -220,6 +228,8 @@ impl<F: NorFlash> Store<F> {
         {
             let mut iter = self
                 .map
+                .as_mut()
+                .ok_or(ResetReason::Unreadable)?
                 .fetch_all_items(&mut self.buffer)
                 .await
                 .map_err(|_| ResetReason::Unreadable)?;
@@ -280,7 +290,17 @@ impl<F: NorFlash> Store<F> {
     /// # Errors
     /// The flash's.
     pub async fn erase(&mut self) -> Result<(), StoreError> {
-        self.map.erase_all().await?;
+        let mut map = self.map.take().ok_or(StoreError::Map)?;
+        let erased = map.erase_all().await;
+        // sequential-storage's `erase_all` erases the flash and nothing else: the map's
+        // cache kept the old pages' states and write position, so the marker and the
+        // records after it went into a page whose own marker said erased, and the next
+        // power-up found a foreign store (found by the `store_model` fuzz target). A
+        // fresh cache reads the erased pages as they are.
+        let range = map.flash_range();
+        let (flash, _stale) = map.destroy();
+        self.map = Some(new_map(flash, range).map_err(|BadRange| StoreError::Map)?);
+        erased?;
         self.write_marker().await
     }
 
@@ -292,6 +312,8 @@ impl<F: NorFlash> Store<F> {
 
     async fn write_marker(&mut self) -> Result<(), StoreError> {
         self.map
+            .as_mut()
+            .ok_or(StoreError::Map)?
             .store_item(&mut self.buffer, &FORMAT_KEY, &&MARKER[..])
             .await?;
         Ok(())
@@ -309,6 +331,8 @@ impl<F: NorFlash> Store<F> {
                 .get(..len)
                 .ok_or(StoreError::Encode(RecordError::BufferTooSmall))?;
             self.map
+                .as_mut()
+                .ok_or(StoreError::Map)?
                 .store_item(&mut self.buffer, &record.key(), &value)
                 .await?;
         }
@@ -333,6 +357,8 @@ impl<F: NorFlash> Store<F> {
             match free {
                 Some(free) if free < IDLE_HEADROOM_BYTES => {
                     self.map
+                        .as_mut()
+                        .ok_or(StoreError::Map)?
                         .store_item(&mut self.buffer, &FILLER_KEY, &&filler[..])
                         .await?;
                     moved = true;
@@ -346,9 +372,10 @@ impl<F: NorFlash> Store<F> {
     /// Reads the whole store once: how much was ever written, and an interrupted
     /// erase to finish (see [`Scan::wreck_end`]).
     async fn scan(&mut self) -> Result<Scan, ()> {
-        let range = self.map.flash_range();
+        let map = self.map.as_mut().ok_or(())?;
+        let range = map.flash_range();
         let page = F::ERASE_SIZE as u32;
-        let flash = self.map.flash();
+        let flash = map.flash();
         let mut chunk = [0_u8; 64];
         let mut scan = Scan::default();
         let mut previous_open: Option<u32> = None;
@@ -434,5 +461,37 @@ mod tests {
         assert_eq!(Restored::slot(FORMAT_KEY), None);
         assert_eq!(Restored::slot(FILLER_KEY), None);
         assert_eq!(Restored::slot(0x300), None);
+    }
+
+    #[cfg(feature = "host")]
+    fn power_up(
+        flash: &crate::host::flash::SimFlash,
+    ) -> (
+        Store<crate::host::flash::SimFlash>,
+        Result<Restored, ResetReason>,
+    ) {
+        let mut store = Store::new(flash.clone(), crate::host::flash::STORE_RANGE).unwrap();
+        let mut restored = Restored::default();
+        let result = embassy_futures::block_on(store.open(&mut restored)).map(|()| restored);
+        (store, result)
+    }
+
+    /// Found by the `store_model` fuzz target: after the storage reset's erase, the
+    /// next power-up called the store foreign.
+    #[cfg(feature = "host")]
+    #[test]
+    fn a_store_erased_then_written_opens_at_the_next_power_up() {
+        let flash = crate::host::flash::SimFlash::new(1);
+        let (mut store, restored) = power_up(&flash);
+        assert!(restored.unwrap().is_empty());
+        embassy_futures::block_on(store.erase()).unwrap();
+        let pose = Record::<f32>::PlanPose {
+            index: 1,
+            joints_rad: [0.0; 6],
+        };
+        embassy_futures::block_on(store.write(&[pose])).unwrap();
+        let (_, restored) = power_up(&flash);
+        let restored = restored.unwrap();
+        assert_eq!(restored.records().collect::<std::vec::Vec<_>>(), [pose]);
     }
 }
