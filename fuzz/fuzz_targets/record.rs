@@ -1,0 +1,107 @@
+//! Records read back from flash (core's `Record::decode`, the pendant's `f32`): a
+//! decoded record re-encodes to one that decodes the same (round trip), under the same
+//! key; a session rebuilt from any decoded records (`ProcedureState::restore`, what the
+//! pendant does at power-up) answers `status` and `export` within link lines, and the
+//! desktop (`zerocal session`'s reader) reads its export whenever the values are within
+//! the log's bounds.
+#![no_main]
+use arbitrary::{Arbitrary, Unstructured};
+use libfuzzer_sys::fuzz_target;
+use zerocal_core::link::status;
+use zerocal_core::log::{export, MAX_JOINT_DEG, MAX_READING_DEG, TEMPERATURE_RANGE_C};
+use zerocal_core::procedure::record::{Record, MAX_RECORD_LEN};
+use zerocal_core::procedure::ProcedureState;
+use zerocal_core::stage2::PoseReading;
+use zerocal_pendant::config::procedure_config;
+
+#[derive(Arbitrary, Debug)]
+struct Stored {
+    /// Mostly one of core's keys.
+    key_choice: u8,
+    key: u16,
+    value: Vec<u8>,
+}
+
+fn key_of(s: &Stored) -> u16 {
+    match s.key_choice % 4 {
+        0 => 1 + s.key % 7,
+        1 => 0x100 + s.key % 64,
+        2 => 0x200 + s.key % 64,
+        _ => s.key,
+    }
+}
+
+fn in_bounds(r: &Record<f32>) -> bool {
+    let reading = |x: f32, y: f32| {
+        x.to_degrees().abs() <= MAX_READING_DEG as f32
+            && y.to_degrees().abs() <= MAX_READING_DEG as f32
+    };
+    match r {
+        Record::Bias(t)
+        | Record::Stage0First(t)
+        | Record::Stage1Before(t)
+        | Record::Stage1After(t) => reading(t.x_rad, t.y_rad),
+        Record::Capture { pose, .. } => pose_in_bounds(pose),
+        Record::PlanPose { joints_rad, .. } => joints_rad
+            .iter()
+            .all(|q| q.to_degrees().abs() <= MAX_JOINT_DEG as f32),
+        _ => true,
+    }
+}
+
+fn pose_in_bounds(p: &PoseReading<f32>) -> bool {
+    p.joints_rad
+        .iter()
+        .all(|q| q.to_degrees().abs() <= MAX_JOINT_DEG as f32)
+        && p.reading.x_rad.to_degrees().abs() <= MAX_READING_DEG as f32
+        && p.reading.y_rad.to_degrees().abs() <= MAX_READING_DEG as f32
+        && p.temperature_c.is_none_or(|t| {
+            (TEMPERATURE_RANGE_C.0 as f32..=TEMPERATURE_RANGE_C.1 as f32).contains(&t)
+        })
+}
+
+fuzz_target!(|data: &[u8]| {
+    let Ok(stored) = Vec::<Stored>::arbitrary(&mut Unstructured::new(data)) else {
+        return;
+    };
+    let mut records = Vec::new();
+    for s in &stored {
+        let key = key_of(s);
+        let Ok(record) = Record::<f32>::decode(key, &s.value) else {
+            continue;
+        };
+        assert_eq!(record.key(), key, "{record:?}");
+        let mut buf = [0_u8; MAX_RECORD_LEN];
+        let n = record.encode(&mut buf).expect("a decoded record encodes");
+        assert_eq!(
+            Record::<f32>::decode(key, &buf[..n]),
+            Ok(record),
+            "{key:#x} {:?}",
+            s.value
+        );
+        records.push(record);
+    }
+    let all_in_bounds = records.iter().all(in_bounds);
+    let config = procedure_config();
+    let session = ProcedureState::restore(&config, records.iter().copied());
+    for i in 0.. {
+        match status(&session, i) {
+            None => break,
+            Some(line) => assert!(line.is_ok(), "status line {i} overflows"),
+        }
+    }
+    let mut text = String::new();
+    for (i, line) in export(&session, &config).enumerate() {
+        let line = line.unwrap_or_else(|_| panic!("export line {i} overflows"));
+        text.push_str(&line);
+        text.push('\n');
+    }
+    if all_in_bounds {
+        if let Err(e) = zerocal_cli::session::read_export(&text) {
+            assert!(
+                e.contains("no poses") && session.captures().is_empty(),
+                "the desktop refuses the export: {e}\n{text}"
+            );
+        }
+    }
+});
