@@ -6,8 +6,8 @@
 //!   takes over [`TIMEOUT_SECONDS`]) or allocation over [`MALLOC_LIMIT_MB`]. New inputs
 //!   go to `target/fuzz/`, so the committed corpus stays as it is.
 //! - `TARGET… --time SECS` (or `--runs N`): a campaign; new inputs go into
-//!   `fuzz/corpus/TARGET`. `--minimize` then merges that corpus down (`-merge=1`)
-//!   before it is committed.
+//!   `fuzz/corpus/TARGET`. `--minimize` then merges that corpus down
+//!   (`-set_cover_merge=1 -use_counters=0`: every edge kept) before it is committed.
 //!
 //! libFuzzer needs nightly flags (`-Zsanitizer=address`, coverage instrumentation):
 //! the build runs on the stable toolchain with `RUSTC_BOOTSTRAP=1`. cargo-fuzz is
@@ -299,7 +299,7 @@ fn fuzz(
     })
 }
 
-/// Merges `fuzz/corpus/TARGET` down to the inputs that add coverage.
+/// Merges `fuzz/corpus/TARGET` down to a set of inputs that covers the same edges.
 fn minimize(fuzz_dir: &Path, work: &Path, target: &str) -> Result<()> {
     let corpus = fuzz_dir.join("corpus").join(target);
     if !corpus.is_dir() {
@@ -310,8 +310,11 @@ fn minimize(fuzz_dir: &Path, work: &Path, target: &str) -> Result<()> {
         fs::remove_dir_all(&merged)?;
     }
     fs::create_dir_all(&merged)?;
+    // The smallest set of inputs that covers every edge the corpus covers (hit counts
+    // aside): the committed corpus stays small (~1.5 MB for all targets) and a run
+    // regains the counts within seconds.
     let status = Command::new(binary(fuzz_dir, target))
-        .arg("-merge=1")
+        .args(["-set_cover_merge=1", "-use_counters=0"])
         .arg(format!("-timeout={TIMEOUT_SECONDS}"))
         .arg(&merged)
         .arg(&corpus)
