@@ -59,13 +59,17 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
     // (the listing's decimals).
     let rows: Vec<&str> = c.answers_after_reboot[1]
         .lines()
-        .filter(|l| l.chars().next().is_some_and(|ch| ch.is_ascii_digit()))
+        .filter(|l| {
+            l.chars()
+                .next()
+                .is_some_and(|ch| ch.is_ascii_digit() || ch == '-')
+        })
         .collect();
     assert_eq!(rows.len(), 24);
     let expected = requests[1].clone();
     let expected = String::from_utf8(expected).unwrap();
     for (row, sent_row) in rows.iter().zip(expected.lines().skip(1)) {
-        let got: Vec<f64> = row.split(',').skip(1).map(|v| v.parse().unwrap()).collect();
+        let got: Vec<f64> = row.split(',').map(|v| v.parse().unwrap()).collect();
         let want: Vec<f64> = sent_row.split(',').map(|v| v.parse().unwrap()).collect();
         for (g, w) in got.iter().zip(&want) {
             assert!((g - w).abs() <= 0.0005 + 1e-9, "{row} vs {sent_row}");

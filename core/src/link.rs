@@ -329,17 +329,18 @@ pub fn status<T: Real>(
     Some(r.map(|()| w))
 }
 
-/// The lines of `plan`: every joint, as `zerocal plan --csv` writes them.
+/// The lines of `plan`: every joint in degrees under the header `zerocal plan --csv`
+/// writes, so that what `plan` shows, sent back with `plan set`, is the same plan.
 pub fn plan_line<T: Real>(plan: &PoseList<T>, line: usize) -> Option<Result<Line, fmt::Error>> {
     let mut w = Line::new();
     let r = if line == 0 {
-        w.write_str("pose,j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg")
+        w.write_str("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg")
     } else {
         let q = plan.get(line - 1)?;
         (|| {
-            write!(w, "{line}")?;
-            for v in q {
-                write!(w, ",{}", deg_fixed(*v, 3))?;
+            for (k, v) in q.iter().enumerate() {
+                let sep = if k == 0 { "" } else { "," };
+                write!(w, "{sep}{}", deg_fixed(*v, 3))?;
             }
             Ok(())
         })()
@@ -444,5 +445,39 @@ mod tests {
             assert_eq!(up.feed("1,2,3,4"), Ok(UploadStep::More));
         }
         assert_eq!(up.feed("1,2,3,4"), Err(LinkError::PlanTooLong));
+    }
+
+    /// Found by the `link_lines` fuzz target: `plan` printed joints 1-4 under the
+    /// header j3..j6, so `plan set` of what `plan` printed changed the plan.
+    #[test]
+    fn the_plan_reply_reads_back_as_the_same_plan() {
+        let stage1 = [0.25_f32, -0.5];
+        let mut plan = PoseList::<f32>::new();
+        for k in 0..4 {
+            let d = k as f32;
+            let q = [0.25, -0.5, 10.0 + d, 20.0 - d, -30.0 + d, 40.0 * d];
+            plan.push(q.map(|v| v.to_radians())).unwrap();
+            plan[k][..2].copy_from_slice(&stage1);
+        }
+        assert_eq!(
+            plan_line(&plan, 1).unwrap().unwrap().as_str(),
+            "14.324,-28.648,10.000,20.000,-30.000,0.000"
+        );
+        // Header and rows, fed back as they came.
+        let mut up = PlanUpload::<f32>::new(stage1);
+        for i in 0..=plan.len() {
+            let line = plan_line(&plan, i).unwrap().unwrap();
+            assert_eq!(up.feed(&line), Ok(UploadStep::More), "{line}");
+        }
+        match up.feed("end") {
+            Ok(UploadStep::Done(back)) => {
+                for (a, b) in plan.iter().zip(&back) {
+                    for (x, y) in a.iter().zip(b) {
+                        assert!((x - y).abs() < 1e-5, "{a:?} -> {b:?}");
+                    }
+                }
+            }
+            other => panic!("{other:?}"),
+        }
     }
 }

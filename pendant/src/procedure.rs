@@ -237,7 +237,10 @@ fn procedure_is_builtin(procedure: &Procedure) -> bool {
 /// profile's parts and its head last. A cut before the plan's end leaves the old
 /// profile with its plan; one after it, the old or no whole profile (the built-in one
 /// then, named on the boot screen) without a plan; never a plan on the wrong robot.
-fn set_profile(procedure: &mut Procedure, profile: &PendantProfile<f32>) -> Option<Output<f32>> {
+pub fn set_profile(
+    procedure: &mut Procedure,
+    profile: &PendantProfile<f32>,
+) -> Option<Output<f32>> {
     let Procedure {
         config,
         session,
@@ -268,7 +271,7 @@ fn set_profile(procedure: &mut Procedure, profile: &PendantProfile<f32>) -> Opti
 
 /// `erase all` (the store already erased): the built-in profile, no bias or result,
 /// the firmware's default plan, which the records returned store again.
-fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
+pub fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
     procedure.config = crate::config::procedure_config();
     procedure.profile_generation = 0;
     procedure.session = ProcedureState::new(PoseList::new(), None);

@@ -160,7 +160,7 @@ fn the_link_survives_garbage_long_lines_unplugging_and_live() {
         f.long_answer
     );
     // The line after the long one is served.
-    assert!(f.long_answer.contains("pose,j1_deg"), "{}", f.long_answer);
+    assert!(f.long_answer.contains("j1_deg,j2_deg"), "{}", f.long_answer);
     // Enter stops `live` and the command typed after it in the same packet is answered.
     assert!(f.live_answer.contains("phase "), "{}", f.live_answer);
     assert!(f.unplug_first_bytes > 0);

@@ -6,6 +6,7 @@
 //! linked by Debian's ld.lld, installed with apt-get when missing. [`toolchain`] is the
 //! one owner of that knowledge; `cargo xtask setup` runs it alone.
 
+mod fuzz;
 mod pendant_sim;
 mod size;
 mod target_test;
@@ -69,6 +70,28 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         write_gallery: Option<PathBuf>,
     },
+    /// Fuzz the parsers of outside bytes (fuzz/, cargo-fuzz and libFuzzer on the stable
+    /// toolchain with RUSTC_BOOTSTRAP=1; installs cargo-fuzz if missing). `--smoke`
+    /// runs every target for 20 s from the committed corpus and fails on any crash,
+    /// hang or runaway allocation; `TARGET... --time SECS` is a campaign that adds to
+    /// fuzz/corpus; `--minimize` merges the corpus down before it is committed.
+    Fuzz {
+        /// The targets (default: all).
+        #[arg(value_name = "TARGET")]
+        targets: Vec<String>,
+        /// Every target for a short fixed time (CI).
+        #[arg(long, conflicts_with_all = ["time", "runs", "minimize"])]
+        smoke: bool,
+        /// Seconds per target.
+        #[arg(long, value_name = "SECS")]
+        time: Option<u32>,
+        /// Executions per target.
+        #[arg(long, value_name = "N")]
+        runs: Option<u64>,
+        /// Merge each target's corpus (fuzz/corpus/TARGET) down to what adds coverage.
+        #[arg(long)]
+        minimize: bool,
+    },
 }
 
 fn main() -> Result<()> {
@@ -93,6 +116,22 @@ fn main() -> Result<()> {
                 cut_limit,
                 check_gallery,
                 write_gallery,
+            },
+        ),
+        Command::Fuzz {
+            targets,
+            smoke,
+            time,
+            runs,
+            minimize,
+        } => fuzz::run(
+            &repo_root(),
+            &fuzz::Options {
+                smoke,
+                targets,
+                time,
+                runs,
+                minimize,
             },
         ),
     }

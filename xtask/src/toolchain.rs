@@ -307,6 +307,59 @@ fn output_of(command: &mut Command) -> Option<String> {
         .then(|| String::from_utf8_lossy(&output.stdout).into_owned())
 }
 
+/// Removes from `command` the variables cargo and rustup set for xtask's own run, so
+/// that a child cargo builds with its own toolchain, flags and target directory. Cargo
+/// also sets CARGO_PKG_*, CARGO_BIN_* and CARGO_CRATE_NAME for xtask's own run: the
+/// child cargo sets its own, but none should be inherited.
+pub fn remove_leaked_variables(command: &mut Command) {
+    for variable in LEAKED_VARIABLES {
+        command.env_remove(variable);
+    }
+    for (variable, _) in std::env::vars_os() {
+        let name = variable.to_string_lossy();
+        if name.starts_with("CARGO_PKG_")
+            || name.starts_with("CARGO_BIN_")
+            || name == "CARGO_CRATE_NAME"
+            || name == "CARGO_PRIMARY_PACKAGE"
+        {
+            command.env_remove(&variable);
+        }
+    }
+}
+
+/// cargo-fuzz at `version`, in cargo's bin directory: installed there with
+/// `cargo install --locked` (from crates.io) when missing or another version.
+///
+/// # Errors
+/// No cargo home, or the installation fails.
+pub fn cargo_fuzz(version: &str) -> Result<PathBuf> {
+    let home = std::env::var_os("CARGO_HOME")
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".cargo")))
+        .context("neither CARGO_HOME nor HOME is set: where is cargo's bin directory?")?;
+    let path = home.join("bin").join("cargo-fuzz");
+    let installed = output_of(Command::new(&path).args(["fuzz", "--version"]));
+    if installed.is_some_and(|v| v.trim() == format!("cargo-fuzz {version}")) {
+        return Ok(path);
+    }
+    eprintln!("xtask: installing cargo-fuzz {version} (cargo install --locked)");
+    let mut command = Command::new("cargo");
+    command.args([
+        "install",
+        "cargo-fuzz",
+        "--locked",
+        "--force",
+        "--version",
+        version,
+    ]);
+    remove_leaked_variables(&mut command);
+    run(&mut command)?;
+    if !path.exists() {
+        bail!("cargo install put no cargo-fuzz at {}", path.display());
+    }
+    Ok(path)
+}
+
 /// `apt-get update`, then installs `packages`. Root only: anyone else gets the command
 /// to run.
 fn install(packages: &[&Package]) -> Result<()> {
@@ -366,21 +419,7 @@ impl ThumbToolchain {
     pub fn cargo_build_with(&self, dir: &Path, args: &[&str], panics: Panics) -> Result<()> {
         let mut command = Command::new(&self.cargo);
         command.current_dir(dir).arg("build").args(args);
-        for variable in LEAKED_VARIABLES {
-            command.env_remove(variable);
-        }
-        // Cargo also sets CARGO_PKG_*, CARGO_BIN_* and CARGO_CRATE_NAME for xtask's own
-        // run: the child cargo sets its own, but none should be inherited.
-        for (variable, _) in std::env::vars_os() {
-            let name = variable.to_string_lossy();
-            if name.starts_with("CARGO_PKG_")
-                || name.starts_with("CARGO_BIN_")
-                || name == "CARGO_CRATE_NAME"
-                || name == "CARGO_PRIMARY_PACKAGE"
-            {
-                command.env_remove(&variable);
-            }
-        }
+        remove_leaked_variables(&mut command);
         command.env(LINKER_VARIABLE, &self.linker);
         // Panic locations embed source paths; cut the machine-specific prefixes, so the
         // image neither depends on where it was built nor spends ~3 KiB of flash on

@@ -405,10 +405,22 @@ pub fn pieces(text: &str, max: usize) -> Vec<String> {
 pub fn read_plan(path: &Path, profile: &Profile) -> Result<Vec<[f64; JOINTS]>, CliError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
+    parse_plan(&text, path, profile)
+}
+
+/// Parses a plan file's text (`path` names it in errors): as [`read_plan`].
+///
+/// # Errors
+/// A malformed row (naming the line), another robot's plan.
+pub fn parse_plan(
+    text: &str,
+    path: &Path,
+    profile: &Profile,
+) -> Result<Vec<[f64; JOINTS]>, CliError> {
     let bad = |m: String| CliError::Input(format!("{}: {m}", path.display()));
     let poses_deg: Vec<[f64; JOINTS]> = if text.trim_start().starts_with('{') {
         let v: serde_json::Value =
-            serde_json::from_str(&text).map_err(|e| bad(format!("not JSON: {e}")))?;
+            serde_json::from_str(text).map_err(|e| bad(format!("not JSON: {e}")))?;
         if let Some(robot) = v.get("robot").and_then(|r| r.as_str()) {
             if robot != profile.name {
                 return Err(bad(format!(

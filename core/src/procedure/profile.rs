@@ -545,7 +545,10 @@ impl<T: Real> ProfileUpload<T> {
                     .flatten();
                 let mut robot = RobotName::new();
                 let ok = match (name, conv) {
-                    (Some(name), Some(c)) if robot.push_str(name).is_ok() => {
+                    (Some(name), Some(c))
+                        if name.bytes().all(|b| b.is_ascii_graphic())
+                            && robot.push_str(name).is_ok() =>
+                    {
                         p.robot = robot;
                         p.convention = c;
                         true
@@ -607,7 +610,11 @@ impl<T: Real> ProfileUpload<T> {
                 let mut ok = true;
                 for name in words.next().unwrap_or("").split(',') {
                     let taken = match names.get_mut(count) {
-                        Some(slot) => !name.is_empty() && slot.push_str(name).is_ok(),
+                        Some(slot) => {
+                            !name.is_empty()
+                                && name.bytes().all(|b| b.is_ascii_graphic())
+                                && slot.push_str(name).is_ok()
+                        }
                         None => false,
                     };
                     ok &= taken;

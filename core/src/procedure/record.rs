@@ -141,7 +141,8 @@ pub enum RecordError {
     WrongFormat(u8),
     /// Shorter than its kind needs.
     Truncated,
-    /// A field is out of its range (phase code, index, non-finite angle).
+    /// A field is out of its range (phase code, index, an angle not finite in the
+    /// reader's float).
     BadField,
     /// The buffer given to `encode` is too small.
     BufferTooSmall,
@@ -300,8 +301,10 @@ impl Reader<'_> {
     }
     fn f<T: Real>(&mut self) -> Result<T, RecordError> {
         let v = f64::from_le_bytes(self.take::<8>()?);
-        if v.is_finite() {
-            Ok(T::lit(v))
+        // Finite in the reader's float too: 1e300 is an f32 infinity.
+        let t = T::lit(v);
+        if v.is_finite() && t.to_f64().is_finite() {
+            Ok(t)
         } else {
             Err(RecordError::BadField)
         }
@@ -571,9 +574,10 @@ impl<T: Real> Record<T> {
                     1 => true,
                     _ => return Err(RecordError::BadField),
                 };
+                // A name goes into export and link lines as one word: printable ASCII.
                 let ok_name = name
                     .get(..usize::from(name_len))
-                    .is_some_and(|n| core::str::from_utf8(n).is_ok());
+                    .is_some_and(|n| !n.is_empty() && n.iter().all(u8::is_ascii_graphic));
                 if !ok_name {
                     return Err(RecordError::BadField);
                 }
@@ -620,6 +624,15 @@ impl<T: Real> Record<T> {
                 let mut names = [[0_u8; 3]; JOINTS];
                 for n in &mut names {
                     *n = r.take::<3>()?;
+                    // Printable ASCII, zero-padded at the end.
+                    let len = n.iter().position(|c| *c == 0).unwrap_or(3);
+                    let (name, pad) = n.split_at(len);
+                    if name.is_empty()
+                        || !name.iter().all(u8::is_ascii_graphic)
+                        || pad.iter().any(|c| *c != 0)
+                    {
+                        return Err(RecordError::BadField);
+                    }
                 }
                 let sign = r.take::<JOINTS>()?.map(|b| b as i8);
                 if sign.iter().any(|s| !matches!(s, 1 | -1)) {
@@ -756,5 +769,21 @@ mod tests {
             Record::Bias(Tilt::new(0.0f32, 0.0)).encode(&mut [0u8; 4]),
             Err(RecordError::BufferTooSmall)
         );
+    }
+
+    /// Found by the `record` fuzz target: a finite `f64` beyond `f32`'s range (a
+    /// stored 1e300) decoded into the pendant's `f32` as an infinity, which the export
+    /// then printed as "huge".
+    #[test]
+    fn a_value_beyond_the_readers_float_is_refused() {
+        let mut value = [FORMAT; 17];
+        value[1..9].copy_from_slice(&1e-3_f64.to_le_bytes());
+        value[9..17].copy_from_slice(&(-1e300_f64).to_le_bytes());
+        assert_eq!(
+            Record::<f32>::decode(key::BIAS, &value),
+            Err(RecordError::BadField)
+        );
+        // The same value is fine in f64.
+        assert!(Record::<f64>::decode(key::BIAS, &value).is_ok());
     }
 }

@@ -1,0 +1,148 @@
+//! The export's writers read back by its readers: `write_row` by `LogReader::feed`,
+//! `write_reversal` and `write_fit_extras` by `parse_meta`, with both number parsers
+//! (core's and the desktop's): parse(write(x)) == x to the export's 1e-12 deg.
+#![no_main]
+use arbitrary::{Arbitrary, Unstructured};
+use libfuzzer_sys::fuzz_target;
+use zerocal_core::log::{
+    parse_meta, write_fit_extras, write_reversal, write_row, Line, LogLine, LogReader, MetaItem,
+    LOG_HEADER,
+};
+use zerocal_core::model::Tilt;
+use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage2::{Extras, PoseReading};
+
+/// A value in `[-limit, limit]` from a fuzzed fraction (an f32, as the pendant holds).
+fn within(u: &mut Unstructured<'_>, limit: f64) -> arbitrary::Result<f64> {
+    let raw = u32::arbitrary(u)?;
+    let fraction = f64::from(raw) / f64::from(u32::MAX) * 2.0 - 1.0;
+    Ok(f64::from((fraction * limit) as f32))
+}
+
+fn tilt(u: &mut Unstructured<'_>) -> arbitrary::Result<Tilt<f64>> {
+    Ok(Tilt::from_deg(within(u, 180.0)?, within(u, 180.0)?))
+}
+
+fn temperature(u: &mut Unstructured<'_>) -> arbitrary::Result<Option<f64>> {
+    Ok(if bool::arbitrary(u)? {
+        // Hundredths of a kelvin in the export: what the writer can say exactly.
+        Some((within(u, 1.0)? * 10_000.0).round() / 100.0 + 45.0)
+    } else {
+        None
+    })
+}
+
+type Parser = fn(&str) -> Option<f64>;
+const PARSERS: [Parser; 2] = [zerocal_core::decimal::parse, zerocal_cli::log::parse_number];
+/// The export's last decimal of a degree (half of it for the rounding, the rest for
+/// f64's rounding of values up to 720 deg on the way), in radians.
+const ANGLE_TOLERANCE_RAD: f64 = 1e-12 / 57.29577951308232;
+
+fn close_tilt(a: Tilt<f64>, b: Tilt<f64>) -> bool {
+    (a.x_rad - b.x_rad).abs() <= ANGLE_TOLERANCE_RAD
+        && (a.y_rad - b.y_rad).abs() <= ANGLE_TOLERANCE_RAD
+}
+
+fn close_temperature(a: Option<f64>, b: Option<f64>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(a), Some(b)) => (a - b).abs() <= 1e-9,
+        _ => false,
+    }
+}
+
+fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
+    // A row.
+    let mut joints = [0.0; 6];
+    for q in &mut joints {
+        *q = within(u, 720.0)?.to_radians();
+    }
+    let pose = PoseReading {
+        joints_rad: joints,
+        reading: tilt(u)?,
+        temperature_c: temperature(u)?,
+    };
+    let mut line = Line::new();
+    write_row(&mut line, &pose).expect("a row fits a line");
+    for parse in PARSERS {
+        let mut reader = LogReader::new();
+        assert_eq!(reader.feed::<f64>(LOG_HEADER, parse), Ok(LogLine::Header));
+        match reader.feed::<f64>(&line, parse) {
+            Ok(LogLine::Pose(back)) => {
+                for (a, b) in pose.joints_rad.iter().zip(back.joints_rad) {
+                    assert!(
+                        (a - b).abs() <= ANGLE_TOLERANCE_RAD,
+                        "{line}: {pose:?} -> {back:?}"
+                    );
+                }
+                assert!(
+                    close_tilt(pose.reading, back.reading),
+                    "{line}: {pose:?} -> {back:?}"
+                );
+                assert!(
+                    close_temperature(pose.temperature_c, back.temperature_c),
+                    "{line}"
+                );
+            }
+            other => panic!("{line}: {other:?}"),
+        }
+    }
+    // A reversal.
+    let reversal = ClosingReversal {
+        reversal: Reversal {
+            first: tilt(u)?,
+            second: tilt(u)?,
+        },
+        temperature_c: temperature(u)?,
+    };
+    let closing = bool::arbitrary(u)?;
+    let key = if closing {
+        "closing_reversal_deg"
+    } else {
+        "stage0_reversal_deg"
+    };
+    let mut line = Line::new();
+    write_reversal(&mut line, key, &reversal).expect("a reversal fits a line");
+    let comment = line.trim_start_matches('#').trim();
+    for parse in PARSERS {
+        match parse_meta::<f64>(comment, 1, parse) {
+            Ok(Some(MetaItem::Closing(back) | MetaItem::Stage0Reversal(back))) => {
+                assert!(
+                    close_tilt(reversal.reversal.first, back.reversal.first),
+                    "{line}"
+                );
+                assert!(
+                    close_tilt(reversal.reversal.second, back.reversal.second),
+                    "{line}"
+                );
+                assert!(
+                    close_temperature(reversal.temperature_c, back.temperature_c),
+                    "{line}"
+                );
+            }
+            other => panic!("{line}: {other:?}"),
+        }
+    }
+    // The fit's extras.
+    let extras = Extras {
+        gain: bool::arbitrary(u)?,
+        cross_z: bool::arbitrary(u)?,
+        sag: bool::arbitrary(u)?,
+        bias_x: bool::arbitrary(u)?,
+        bias_y: bool::arbitrary(u)?,
+        drift: bool::arbitrary(u)?,
+        held: [false; 4],
+    };
+    let mut line = Line::new();
+    write_fit_extras(&mut line, extras).expect("extras fit a line");
+    let comment = line.trim_start_matches('#').trim();
+    match parse_meta::<f64>(comment, 1, zerocal_core::decimal::parse) {
+        Ok(Some(MetaItem::FitExtras(back))) => assert_eq!(back, extras, "{line}"),
+        other => panic!("{line}: {other:?}"),
+    }
+    Ok(())
+}
+
+fuzz_target!(|data: &[u8]| {
+    let _ = check(&mut Unstructured::new(data));
+});

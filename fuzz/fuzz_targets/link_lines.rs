@@ -1,0 +1,123 @@
+//! The pendant's command lines, `plan set` rows and `profile set` lines (core's `link`
+//! and `procedure::profile`), as the firmware parses them; the `plan` reply read back
+//! by `plan set` gives the same poses, and the `profile` reply read back by `profile
+//! set` the same profile.
+#![no_main]
+use libfuzzer_sys::fuzz_target;
+use zerocal_core::link::{parse_command, plan_line, PlanUpload, UploadStep};
+use zerocal_core::plan::PoseList;
+use zerocal_core::procedure::profile::{PendantProfile, ProfileStep, ProfileUpload};
+
+/// The `profile` reply of an uploaded profile reads back as the same profile (names,
+/// display, axes exactly; frames to the lines' decimals), every line within the link's
+/// 128 bytes.
+fn profile_round_trip(p: &PendantProfile<f32>) {
+    let mut back = ProfileUpload::<f32>::default();
+    let mut done = None;
+    for i in 0.. {
+        let Some(line) = p.line(i) else { break };
+        let line = line.expect("a profile line fits a link line");
+        assert!(line.len() + 2 <= 128, "{line}");
+        match back.feed(&line) {
+            Ok(ProfileStep::More) => {}
+            Ok(ProfileStep::Done(q)) => done = Some(q),
+            Err(e) => panic!("line {i} {line:?}: {e}"),
+        }
+    }
+    let q = done.expect("the reply ends with 'end'");
+    assert_eq!((&q.robot, q.convention), (&p.robot, p.convention));
+    assert_eq!(
+        (&q.display.names, q.display.sign),
+        (&p.display.names, p.display.sign)
+    );
+    for (a, b) in q.arm.joints.iter().zip(&p.arm.joints) {
+        assert_eq!(a.axis, b.axis);
+        assert!((a.origin.rotation.matrix() - b.origin.rotation.matrix()).norm() < 1e-5);
+        assert!((a.origin.translation_m - b.origin.translation_m).norm() < 1e-5);
+    }
+}
+
+fuzz_target!(|data: &[u8]| {
+    let Ok(text) = core::str::from_utf8(data) else {
+        return;
+    };
+    let mut upload = PlanUpload::<f32>::new([0.25, -0.5]);
+    let mut profile = ProfileUpload::<f32>::default();
+    for line in text.split(['\n', '\r']) {
+        let _ = parse_command(line);
+        match profile.feed(line) {
+            Ok(ProfileStep::More) => {}
+            Ok(ProfileStep::Done(p)) => {
+                profile_round_trip(&p);
+                profile = ProfileUpload::default();
+            }
+            Err(error) => {
+                let mut line = zerocal_core::link::Line::new();
+                assert!(
+                    core::fmt::Write::write_fmt(&mut line, format_args!("error: {error}")).is_ok()
+                );
+                profile = ProfileUpload::default();
+            }
+        }
+        match upload.feed(line) {
+            Ok(UploadStep::More) => {}
+            Ok(UploadStep::Done(plan)) => {
+                check_plan(&plan);
+                round_trip(&plan);
+                upload = PlanUpload::new([0.25, -0.5]);
+            }
+            Err(error) => {
+                // Every error prints within a link line.
+                let mut line = zerocal_core::link::Line::new();
+                assert!(
+                    core::fmt::Write::write_fmt(&mut line, format_args!("error: {error}")).is_ok()
+                );
+                upload = PlanUpload::new([0.25, -0.5]);
+            }
+        }
+    }
+});
+
+fn check_plan(plan: &PoseList<f32>) {
+    assert!(plan.len() >= zerocal_core::stage2::MIN_POSES);
+    for q in plan {
+        for v in q {
+            assert!(
+                v.is_finite()
+                    && v.abs()
+                        <= (zerocal_core::log::MAX_JOINT_DEG as f32).to_radians() * 1.000_001,
+                "{q:?}"
+            );
+        }
+    }
+}
+
+/// `plan` prints j1..j6 with 3 decimals under `zerocal plan --csv`'s header; `plan set`
+/// takes the lines back as they are.
+fn round_trip(plan: &PoseList<f32>) {
+    let mut upload = PlanUpload::<f32>::new([0.25, -0.5]);
+    for i in 0.. {
+        let Some(line) = plan_line(plan, i) else {
+            break;
+        };
+        let Ok(line) = line else {
+            panic!("plan line {i} does not fit a link line");
+        };
+        match upload.feed(&line) {
+            Ok(UploadStep::More) => {}
+            other => panic!("plan line {i} {line:?}: {other:?}"),
+        }
+    }
+    let back = match upload.feed("end") {
+        Ok(UploadStep::Done(p)) => p,
+        other => panic!("end: {other:?}"),
+    };
+    assert_eq!(back.len(), plan.len());
+    for (a, b) in plan.iter().zip(&back) {
+        for k in 0..6 {
+            // 3 decimals of a degree, then f32.
+            let error_deg = (a[k] - b[k]).abs().to_degrees();
+            assert!(error_deg <= 0.0005 + 1e-4, "{a:?} -> {b:?}");
+        }
+    }
+}
