@@ -167,9 +167,10 @@ fn new_map<F: NorFlash>(flash: View<F>, range: Range<u32>) -> Result<Map<F>, Bad
 /// The flash as the map reads it: the flash itself, or, while [`Store::open`] looks
 /// at an interrupted erase, a read-only view with some pages shown erased and one
 /// shown closed. Through a view sequential-storage's own reading tells which records
-/// a page holds, so the store never parses the map's layout itself. A view is one
-/// type with the flash, so the firmware holds one copy of the map's code.
-pub struct View<F> {
+/// a page holds, so the store never parses the map's layout itself. The map always
+/// runs on a `View` (unmasked but for that look), so the firmware holds one copy of
+/// the map's code.
+struct View<F> {
     flash: F,
     /// The store's first address.
     start: u32,
@@ -188,7 +189,7 @@ struct Mask {
 
 /// A [`View`]'s error: the flash's, or a write through a view.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ViewError<E> {
+enum ViewError<E> {
     /// The flash's error.
     Flash(E),
     /// A view is read only.
