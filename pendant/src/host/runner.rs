@@ -263,6 +263,34 @@ async fn cut_script(rig: &Rig, mut started: bool) -> Result<Vec<u8>, ScriptError
     Ok(command(rig, b"export\r\n", SILENCE).await)
 }
 
+/// What the uncut run left: its export and the plan its session held.
+struct Uncut {
+    export: Vec<u8>,
+    plan: Vec<[f32; 6]>,
+}
+
+/// The plan `shared`'s session holds (as restored or set).
+async fn session_plan(shared: &Shared) -> Vec<[f32; 6]> {
+    shared.procedure.lock().await.session.plan().to_vec()
+}
+
+/// The campaign's session on `rig`, uncut: what every cut run is compared with.
+fn uncut_run(rig: &Rig, fresh: bool) -> Result<Uncut, String> {
+    match rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| async move {
+        let export = cut_script(rig, fresh).await?;
+        Ok::<_, ScriptError>(Uncut {
+            export,
+            plan: session_plan(shared).await,
+        })
+    }) {
+        Ok(Ok(uncut)) => Ok(uncut),
+        other => Err(format!(
+            "the uncut run failed: {:?}",
+            other.map(|r| r.map(|u| u.export.len()))
+        )),
+    }
+}
+
 /// A rig whose flash holds `image` (or is erased).
 fn campaign_rig(world: WorldConfig, image: Option<&[u8]>, flash_seed: u64) -> Result<Rig, String> {
     let rig = Rig::new(world, flash_seed)?;
@@ -299,7 +327,7 @@ fn cut_one(
     world: WorldConfig,
     image: Option<&[u8]>,
     cut: CutPoint,
-    reference: &[u8],
+    reference: &Uncut,
     poses: usize,
 ) -> Result<CutOutcome, String> {
     exec::reset_clock();
@@ -352,7 +380,10 @@ fn cut_one(
     });
     // One more power cycle: the finished session must come back from flash as it was.
     exec::advance(REBOOT);
-    let stored = rig.run(Instant::from_secs(0) + RUN_LIMIT * 3, |_| async move {
+    // The plan too: it is written once, at `plan set`, so it is the store's oldest
+    // record, the one a page change must carry over; a store that lost it restores no
+    // capture, but an export could still match by chance (a campaign once missed it).
+    let stored = rig.run(Instant::from_secs(0) + RUN_LIMIT * 3, |shared| async move {
         wait_for(
             rig,
             "the result after a reboot",
@@ -360,7 +391,8 @@ fn cut_one(
             |s| !matches!(s, Screen::Starting(_)),
         )
         .await?;
-        Ok::<_, ScriptError>(command(rig, b"export\r\n", SILENCE).await)
+        let plan = session_plan(shared).await;
+        Ok::<_, ScriptError>((command(rig, b"export\r\n", SILENCE).await, plan))
     });
     match resumed {
         Ok(Ok(((restored, reset), export, duplicated))) => {
@@ -369,8 +401,8 @@ fn cut_one(
             } else {
                 0
             };
-            let export = match stored {
-                Ok(Ok(from_flash)) if from_flash == export => export,
+            let (export, plan) = match stored {
+                Ok(Ok((from_flash, plan))) if from_flash == export => (export, plan),
                 Ok(Ok(from_flash)) => from_flash,
                 other => {
                     return Err(format!(
@@ -378,23 +410,37 @@ fn cut_one(
                     ))
                 }
             };
-            let difference = (export != reference).then(|| {
-                let (ours, uncut) = (
-                    String::from_utf8_lossy(&export).into_owned(),
-                    String::from_utf8_lossy(reference).into_owned(),
-                );
-                ours.lines()
-                    .zip(uncut.lines())
-                    .find(|(a, b)| a != b)
-                    .map(|(a, b)| format!("{a} | uncut: {b}"))
-                    .unwrap_or_else(|| {
-                        format!(
-                            "{} lines against the uncut {}; last: {:?}",
-                            ours.lines().count(),
-                            uncut.lines().count(),
-                            ours.lines().last()
-                        )
-                    })
+            let plan_difference = (plan != reference.plan).then(|| {
+                format!(
+                    "the plan at the last boot: {} poses{} | uncut: {} poses",
+                    plan.len(),
+                    if plan.len() == reference.plan.len() {
+                        ", not the same"
+                    } else {
+                        ""
+                    },
+                    reference.plan.len()
+                )
+            });
+            let difference = plan_difference.or_else(|| {
+                (export != reference.export).then(|| {
+                    let (ours, uncut) = (
+                        String::from_utf8_lossy(&export).into_owned(),
+                        String::from_utf8_lossy(&reference.export).into_owned(),
+                    );
+                    ours.lines()
+                        .zip(uncut.lines())
+                        .find(|(a, b)| a != b)
+                        .map(|(a, b)| format!("{a} | uncut: {b}"))
+                        .unwrap_or_else(|| {
+                            format!(
+                                "{} lines against the uncut {}; last: {:?}",
+                                ours.lines().count(),
+                                uncut.lines().count(),
+                                ours.lines().last()
+                            )
+                        })
+                })
             });
             Ok(CutOutcome {
                 lost,
@@ -443,12 +489,7 @@ pub fn power_cuts(
     for image in [None, Some(prefilled.as_slice())] {
         exec::reset_clock();
         let reference_rig = campaign_rig(world, image, seed)?;
-        let reference = match reference_rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| {
-            cut_script(&reference_rig, image.is_none())
-        }) {
-            Ok(Ok(export)) => export,
-            other => return Err(format!("the uncut run failed: {other:?}")),
-        };
+        let reference = uncut_run(&reference_rig, image.is_none())?;
         let (operations, erases) = {
             let m = reference_rig.flash.memory();
             (m.operations, m.erases)
@@ -576,12 +617,7 @@ pub fn power_cuts_at(seed: u64, cuts: &[(bool, CutPoint)]) -> Result<CutReport, 
         let image = filled.then_some(prefilled.as_slice());
         exec::reset_clock();
         let reference_rig = campaign_rig(world, image, seed)?;
-        let reference = match reference_rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| {
-            cut_script(&reference_rig, image.is_none())
-        }) {
-            Ok(Ok(export)) => export,
-            other => return Err(format!("the uncut run failed: {other:?}")),
-        };
+        let reference = uncut_run(&reference_rig, image.is_none())?;
         let poses = reference_rig.plan.len();
         report.cut_points += 1;
         match cut_one(world, image, cut, &reference, poses) {
