@@ -62,11 +62,11 @@ enum Command {
         /// At most this many cut points, spread over the session (default: all).
         #[arg(long, value_name = "N")]
         cut_limit: Option<usize>,
-        /// Fail if the gallery in DIR (and README.md's table) differs from what the
+        /// Fail if the gallery in DIR (and docs/pendant.md's table) differs from what the
         /// code draws.
         #[arg(long, value_name = "DIR")]
         check_gallery: Option<PathBuf>,
-        /// Write the gallery into DIR and README.md's table.
+        /// Write the gallery into DIR and docs/pendant.md's table.
         #[arg(long, value_name = "DIR")]
         write_gallery: Option<PathBuf>,
     },

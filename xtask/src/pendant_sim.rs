@@ -4,9 +4,9 @@
 //!
 //! Writes `DIR/export` (the bytes the link sent for `export`), `DIR/screens/NN-name.png`
 //! (the first frame of every distinct screen, 128×64 scaled ×4 in the OLED's colours),
-//! `DIR/screens/gallery.md` (the README's gallery table) and `DIR/truth.json`, and
+//! `DIR/screens/gallery.md` (the gallery table of docs/pendant.md) and `DIR/truth.json`, and
 //! prints the identified offsets beside the truth. `--check-gallery DIR` fails when
-//! the committed gallery (pictures and the README's table) differs from what the code
+//! the committed gallery (pictures and docs/pendant.md's table) differs from what the code
 //! draws now; `--write-gallery DIR` updates it.
 
 use std::fmt::Write as _;
@@ -24,7 +24,11 @@ use zerocal_pendant::screen::ScreenKind;
 /// Pictures are 128×64 pixels scaled by this.
 const SCALE: usize = 4;
 
-/// The README's gallery lies between these lines.
+/// The file whose gallery table the pendant-sim writes and checks, from the
+/// repository root; the table's pictures are relative to it (`screens/NN-name.png`).
+const GALLERY_PAGE: &str = "docs/pendant.md";
+
+/// The gallery table lies between these lines of [`GALLERY_PAGE`].
 const GALLERY_START: &str = "<!-- gallery: written by cargo xtask pendant-sim; do not edit -->";
 const GALLERY_END: &str = "<!-- gallery end -->";
 
@@ -38,9 +42,9 @@ pub struct Options {
     pub power_cuts: bool,
     /// Cap the cut points (all by default).
     pub cut_limit: Option<usize>,
-    /// Compare the gallery with this directory (and the README).
+    /// Compare the gallery with this directory (and docs/pendant.md's table).
     pub check_gallery: Option<PathBuf>,
-    /// Write the gallery into this directory (and the README).
+    /// Write the gallery into this directory (and docs/pendant.md's table).
     pub write_gallery: Option<PathBuf>,
 }
 
@@ -77,7 +81,7 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
         fs::write(screens_dir.join(&name), &bytes)?;
         let _ = writeln!(
             table,
-            "| ![{}](docs/screens/{name}) | {} |",
+            "| ![{}](screens/{name}) | {} |",
             kind.name(),
             kind.operator_does()
         );
@@ -261,16 +265,17 @@ fn check_session(report: &SessionReport, problems: &mut Vec<String>) {
     }
 }
 
-fn readme_with(readme: &str, table: &str) -> Option<String> {
-    let start = readme.find(GALLERY_START)?;
-    let end = readme.find(GALLERY_END)?;
+/// `page` with the gallery table between its markers replaced by `table`.
+fn page_with(page: &str, table: &str) -> Option<String> {
+    let start = page.find(GALLERY_START)?;
+    let end = page.find(GALLERY_END)?;
     if end < start {
         return None;
     }
     Some(format!(
         "{}{GALLERY_START}\n{table}{}",
-        &readme[..start],
-        &readme[end..]
+        &page[..start],
+        &page[end..]
     ))
 }
 
@@ -285,13 +290,14 @@ fn write_gallery(root: &Path, dir: &Path, files: &[(String, Vec<u8>)], table: &s
     for (name, bytes) in files {
         fs::write(dir.join(name), bytes)?;
     }
-    let readme_path = root.join("README.md");
-    let readme = fs::read_to_string(&readme_path)?;
-    let Some(updated) = readme_with(&readme, table) else {
-        bail!("README.md has no gallery markers ({GALLERY_START} ... {GALLERY_END})");
+    let page_path = root.join(GALLERY_PAGE);
+    let page = fs::read_to_string(&page_path)
+        .with_context(|| format!("reading {}", page_path.display()))?;
+    let Some(updated) = page_with(&page, table) else {
+        bail!("{GALLERY_PAGE} has no gallery markers ({GALLERY_START} ... {GALLERY_END})");
     };
-    fs::write(&readme_path, updated)?;
-    println!("gallery written to {} and README.md", dir.display());
+    fs::write(&page_path, updated)?;
+    println!("gallery written to {} and {GALLERY_PAGE}", dir.display());
     Ok(())
 }
 
@@ -323,9 +329,12 @@ fn check_gallery(
             )),
         }
     }
-    let readme = fs::read_to_string(root.join("README.md"))?;
-    if readme_with(&readme, table).as_deref() != Some(readme.as_str()) {
-        problems.push("README.md's gallery table differs from the screens".into());
+    let page = fs::read_to_string(root.join(GALLERY_PAGE))
+        .with_context(|| format!("reading {GALLERY_PAGE}"))?;
+    if page_with(&page, table).as_deref() != Some(page.as_str()) {
+        problems.push(format!(
+            "{GALLERY_PAGE}'s gallery table differs from the screens"
+        ));
     }
     if problems.is_empty() {
         println!("gallery: {} screens match {}", files.len(), dir.display());
