@@ -14,8 +14,8 @@
 //!   precompiled `core` keeps panic messages and locations in the image.
 //! - **Debian's toolchain**: `rustc-web` and `cargo-web`, `rust-web-src` (the library
 //!   sources for `-Zbuild-std=core`) and the `lld-N` of the LLVM that Debian's rustc is
-//!   built on (`rustc -vV`: bookworm's rustc-web 1.85 is on LLVM 19, so `lld-19` and
-//!   `ld.lld-19`). Rebuilding `core` lets panics abort at once. Installed without
+//!   built on (`rustc -vV`: Debian 12's rustc-web 1.96 is on LLVM 22, so `lld-22` and
+//!   `ld.lld-22`; its 1.85 was on LLVM 19). Rebuilding `core` lets panics abort at once. Installed without
 //!   recommends: `rustc-web` merely recommends `rust-web-llvm`, the package with a
 //!   `/usr/bin/rust-lld` symlink, so a build that relied on rustc finding `rust-lld` by
 //!   itself passed where apt had installed recommends and failed where it had not.
@@ -273,12 +273,17 @@ fn debian_thumb_toolchain() -> Result<ThumbToolchain> {
         rustc: Some(DEBIAN_RUSTC.into()),
         rustc_version: verbose.lines().next().unwrap_or_default().to_owned(),
         linker: lld.provides,
-        immediate_abort: Some(if minor >= PANIC_STRATEGY_SINCE_MINOR {
-            ImmediateAbort::PanicStrategy
-        } else {
-            ImmediateAbort::StdFeature
-        }),
+        immediate_abort: Some(immediate_abort_for(minor)),
     })
+}
+
+/// How a build-std rustc 1.`minor` makes panics abort at once.
+fn immediate_abort_for(minor: u32) -> ImmediateAbort {
+    if minor >= PANIC_STRATEGY_SINCE_MINOR {
+        ImmediateAbort::PanicStrategy
+    } else {
+        ImmediateAbort::StdFeature
+    }
 }
 
 /// `(minor, LLVM major)` from `rustc -vV`: `rustc 1.85.0 (…)` and `LLVM version: 19.1.7`.
@@ -671,13 +676,21 @@ mod tests {
 
     #[test]
     fn reads_the_minor_version_and_llvm_major_of_rustc() {
-        let bookworm = "rustc 1.85.0 (4d91de4e4 2025-02-17) (built from a source tarball)\n\
-                        binary: rustc\ncommit-hash: 4d91de4e48198da2e33413efdcd9cd2cc0c46688\n\
-                        host: x86_64-unknown-linux-gnu\nrelease: 1.85.0\nLLVM version: 19.1.7\n";
-        assert_eq!(parse_rustc_verbose_version(bookworm).ok(), Some((85, 19)));
-        // Its lld is lld-19, with ld.lld-19.
-        assert_eq!(debian_lld(19).name, "lld-19");
-        assert_eq!(debian_lld(19).provides, Path::new("/usr/bin/ld.lld-19"));
+        // Debian 12's rustc-web, `rustc -vV`, before and after its update.
+        let old = "rustc 1.85.0 (4d91de4e4 2025-02-17) (built from a source tarball)\n\
+                   binary: rustc\nhost: x86_64-unknown-linux-gnu\nrelease: 1.85.0\n\
+                   LLVM version: 19.1.7\n";
+        let new = "rustc 1.96.0 (ac68faa20 2026-05-25) (built from a source tarball)\n\
+                   binary: rustc\ncommit-hash: ac68faa20c58cbccd01ee7208bf3b6e93a7d7f96\n\
+                   commit-date: 2026-05-25\nhost: x86_64-unknown-linux-gnu\n\
+                   release: 1.96.0\nLLVM version: 22.1.8\n";
+        assert_eq!(parse_rustc_verbose_version(old).ok(), Some((85, 19)));
+        assert_eq!(parse_rustc_verbose_version(new).ok(), Some((96, 22)));
+        // 1.85 takes the std feature, 1.96 the panic strategy.
+        assert_eq!(immediate_abort_for(85), ImmediateAbort::StdFeature);
+        assert_eq!(immediate_abort_for(96), ImmediateAbort::PanicStrategy);
+        assert_eq!(debian_lld(22).name, "lld-22");
+        assert_eq!(debian_lld(22).provides, Path::new("/usr/bin/ld.lld-22"));
         assert!(parse_rustc_verbose_version("rustc 1.85.0\nrelease: 1.85.0\n").is_err());
         assert!(parse_rustc_verbose_version("release: 2.0.0\nLLVM version: 19\n").is_err());
     }
