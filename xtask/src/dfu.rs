@@ -484,6 +484,10 @@ pub fn run(root: &Path, choice: ToolchainChoice) -> Result<DfuImage> {
         .with_context(|| format!("reading the segments of {}", built.elf.display()))?;
     let file = write_dfuse(&elements(&segments, &layout)?)?;
     let dir = root.join("target").join("dfu");
+    // Only this run's files: an element file of an earlier build must not linger.
+    if dir.exists() {
+        fs::remove_dir_all(&dir).with_context(|| format!("removing {}", dir.display()))?;
+    }
     fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     let dfu = dir.join("zerocal.dfu");
     fs::write(&dfu, &file).with_context(|| format!("writing {}", dfu.display()))?;
