@@ -199,8 +199,9 @@ pub struct ThumbToolchain {
     pub kind: ToolchainKind,
     /// The `cargo` to run.
     pub cargo: PathBuf,
-    /// The `rustc` it must use (Debian's), or `None` for the rustup proxy's choice.
-    pub rustc: Option<PathBuf>,
+    /// The `rustc` it must use, named to cargo (`RUSTC`): cargo would otherwise run the
+    /// first `rustc` on PATH, which in CI is Debian's even for rustup's cargo.
+    pub rustc: PathBuf,
     /// `rustc -V` of the compiler used.
     pub rustc_version: String,
     /// The linker, named to cargo explicitly.
@@ -270,7 +271,7 @@ fn debian_thumb_toolchain() -> Result<ThumbToolchain> {
     Ok(ThumbToolchain {
         kind: ToolchainKind::Debian,
         cargo: DEBIAN_CARGO.into(),
-        rustc: Some(DEBIAN_RUSTC.into()),
+        rustc: DEBIAN_RUSTC.into(),
         rustc_version: verbose.lines().next().unwrap_or_default().to_owned(),
         linker: lld.provides,
         immediate_abort: Some(immediate_abort_for(minor)),
@@ -329,9 +330,7 @@ pub fn setup(choice: ToolchainChoice) -> Result<()> {
     let thumb = tools.thumb()?;
     println!("thumb toolchain: {}", thumb.describe());
     println!("  cargo:  {}", thumb.cargo.display());
-    if let Some(rustc) = &thumb.rustc {
-        println!("  rustc:  {}", rustc.display());
-    }
+    println!("  rustc:  {}", thumb.rustc.display());
     println!("  linker: {}", thumb.linker.display());
     println!("qemu:     {}", tools.qemu()?.display());
     Ok(())
@@ -400,20 +399,27 @@ fn rustup_thumb_toolchain() -> Result<Option<ThumbToolchain>> {
     if !targets.lines().any(|line| line.trim() == THUMB_TARGET) {
         return Ok(None);
     }
+    // rustup's own rustc by absolute path: `rustc` on PATH may be Debian's
+    // (/usr/bin comes first in CI's PATH), whose sysroot has no rust-lld.
+    let rustc = output_of(
+        Command::new("rustup")
+            .args(["which", "rustc"])
+            .env_remove("RUSTUP_TOOLCHAIN"),
+    )
+    .context("rustup lists the thumb target but `rustup which rustc` fails")?;
+    let rustc = PathBuf::from(rustc.trim());
     let sysroot = output_of(
-        Command::new("rustc")
+        Command::new(&rustc)
             .args(["--print", "sysroot"])
-            .env_remove("RUSTUP_TOOLCHAIN")
-            .env_remove("RUSTC"),
+            .env_remove("RUSTUP_TOOLCHAIN"),
     )
-    .context("rustup lists the thumb target but `rustc --print sysroot` fails")?;
+    .with_context(|| format!("`{} --print sysroot` fails", rustc.display()))?;
     let version = output_of(
-        Command::new("rustc")
+        Command::new(&rustc)
             .arg("-vV")
-            .env_remove("RUSTUP_TOOLCHAIN")
-            .env_remove("RUSTC"),
+            .env_remove("RUSTUP_TOOLCHAIN"),
     )
-    .context("`rustc -vV` fails")?;
+    .with_context(|| format!("`{} -vV` fails", rustc.display()))?;
     let host = version
         .lines()
         .find_map(|l| l.strip_prefix("host: "))
@@ -438,7 +444,7 @@ fn rustup_thumb_toolchain() -> Result<Option<ThumbToolchain>> {
     Ok(Some(ThumbToolchain {
         kind: ToolchainKind::Rustup,
         cargo: PathBuf::from(cargo.trim()),
-        rustc: None,
+        rustc,
         rustc_version: version.lines().next().unwrap_or_default().to_owned(),
         linker,
         immediate_abort: None,
@@ -603,11 +609,10 @@ impl ThumbToolchain {
             flags.push_str("\u{1f}-Zunstable-options\u{1f}-Cpanic=immediate-abort");
         }
         command.env("CARGO_ENCODED_RUSTFLAGS", flags);
-        if let Some(rustc) = &self.rustc {
-            command
-                .env("RUSTC", rustc)
-                .env("RUSTC_BOOTSTRAP", "1")
-                .arg("-Zbuild-std=core");
+        command.env("RUSTC", &self.rustc);
+        if self.kind == ToolchainKind::Debian {
+            // No thumb std in Debian: `core` from rust-web-src's sources.
+            command.env("RUSTC_BOOTSTRAP", "1").arg("-Zbuild-std=core");
         }
         if immediate_abort == Some(ImmediateAbort::StdFeature) {
             command.arg("-Zbuild-std-features=panic_immediate_abort");
