@@ -5,9 +5,9 @@
 //!
 //! The release build made by `cargo xtask firmware` with the build-std toolchain aborts
 //! on panic at once (`-Cpanic=immediate-abort`: no panic messages or locations in
-//! flash, 15 KiB of the 128 KiB budget): the abort is a HardFault, whose handler keeps
-//! the faulting address instead (`arm-none-eabi-addr2line -e zerocal-firmware ADDR`
-//! names the line). A stable-toolchain build keeps the panic handler below, which
+//! flash: `RUSTUP_PANIC_MACHINERY_BYTES` in xtask). The abort is a HardFault, whose
+//! handler keeps the faulting address instead (`arm-none-eabi-addr2line -e
+//! zerocal-firmware ADDR` names the line). A stable-toolchain build keeps the panic handler below, which
 //! keeps the file and line.
 
 #[cfg(not(debug_assertions))]

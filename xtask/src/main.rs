@@ -6,6 +6,8 @@
 //! linked by Debian's ld.lld, installed with apt-get when missing. [`toolchain`] is the
 //! one owner of that knowledge; `cargo xtask setup` runs it alone.
 
+mod dfu;
+mod dist;
 mod fuzz;
 mod pendant_sim;
 mod size;
@@ -17,10 +19,16 @@ use std::path::{Path, PathBuf};
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
+use toolchain::ToolchainChoice;
+
 /// zerocal's build tasks.
 #[derive(Parser)]
 #[command(name = "cargo xtask", about)]
 struct Cli {
+    /// The thumb toolchain: `auto` takes rustup's when its thumb target is installed,
+    /// else Debian's (installed with apt-get when missing, as root).
+    #[arg(long, value_enum, global = true, default_value_t = ToolchainChoice::Auto)]
+    toolchain: ToolchainChoice,
     #[command(subcommand)]
     command: Command,
 }
@@ -29,12 +37,21 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Install and check what the thumb build and the QEMU check need (rustup's thumb
-    /// target with its own rust-lld, else Debian's rustc-web, cargo-web, rust-web-src and
-    /// lld-22; qemu-system-arm), and print which tools are used.
+    /// target with its own rust-lld, `rustup target add` tried when missing; else
+    /// Debian's rustc-web, cargo-web, rust-web-src and the lld-N of its LLVM;
+    /// qemu-system-arm), and print which tools are used.
     Setup,
     /// Build the release firmware (firmware/, thumbv7em-none-eabihf) and print its
     /// flash and static RAM use.
     Firmware,
+    /// Build the release firmware and write target/dfu/zerocal.dfu, a DfuSe image for
+    /// the STM32's ROM bootloader (`dfu-util -a 0 -D zerocal.dfu`): the vector table and
+    /// the program as two elements, the calibration store left alone. Reads the file
+    /// back and checks it against the ELF.
+    Dfu,
+    /// A release bundle in target/dist/zerocal-VERSION/ (and .tar.gz): the firmware ELF
+    /// and DFU image, the `zerocal` release binary, README.md, docs/ and SHA256SUMS.
+    Dist,
     /// Build zerocal-core alone for thumbv7em-none-eabihf, without features and with
     /// `defmt,serde`: proves it is no_std (a host build cannot, std being always there).
     CoreThumb,
@@ -95,11 +112,14 @@ enum Command {
 }
 
 fn main() -> Result<()> {
-    match Cli::parse().command {
-        Command::Setup => toolchain::setup(),
-        Command::Firmware => firmware(),
-        Command::CoreThumb => core_thumb(),
-        Command::TargetTest => target_test::run(&repo_root()),
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Setup => toolchain::setup(cli.toolchain),
+        Command::Firmware => firmware(cli.toolchain),
+        Command::Dfu => dfu::run(&repo_root(), cli.toolchain).map(|_| ()),
+        Command::Dist => dist::run(&repo_root(), cli.toolchain),
+        Command::CoreThumb => core_thumb(cli.toolchain),
+        Command::TargetTest => target_test::run(&repo_root(), cli.toolchain),
         Command::PendantSim {
             out,
             seed,
@@ -145,19 +165,32 @@ fn repo_root() -> PathBuf {
         .map_or_else(|| manifest_dir.to_path_buf(), Path::to_path_buf)
 }
 
-fn firmware() -> Result<()> {
-    let (usage, capacity) = build_firmware(&repo_root())?;
-    println!("{}", usage.report(&capacity));
+fn firmware(choice: ToolchainChoice) -> Result<()> {
+    let built = build_firmware(&repo_root(), choice)?;
+    println!("firmware toolchain: {}", built.toolchain.describe());
+    println!("{}", built.usage.report(&built.capacity));
     Ok(())
+}
+
+/// A release firmware build and what it takes.
+struct FirmwareBuild {
+    /// The toolchain that built it.
+    toolchain: toolchain::ThumbToolchain,
+    /// The ELF.
+    elf: PathBuf,
+    /// Its flash and static RAM.
+    usage: size::MemoryUsage,
+    /// The capacities of `memory.x`.
+    capacity: size::MemoryCapacity,
 }
 
 /// Builds the release firmware and measures it against the capacities of `memory.x`.
 ///
 /// # Errors
 /// No toolchain, a failed build, an unreadable ELF or `memory.x`.
-fn build_firmware(root: &Path) -> Result<(size::MemoryUsage, size::MemoryCapacity)> {
+fn build_firmware(root: &Path, choice: ToolchainChoice) -> Result<FirmwareBuild> {
     let firmware_dir = root.join("firmware");
-    let tools = toolchain::provision(toolchain::Needs::THUMB)?;
+    let tools = toolchain::provision(toolchain::Needs::THUMB, choice)?;
     let toolchain = tools.thumb()?;
     // The firmware's own .cargo/config.toml selects the target; its own [workspace]
     // keeps host features out.
@@ -166,19 +199,24 @@ fn build_firmware(root: &Path) -> Result<(size::MemoryUsage, size::MemoryCapacit
         &["--release"],
         toolchain::Panics::ImmediateAbort,
     )?;
-    let elf = firmware_dir
-        .join("target")
+    let elf = toolchain
+        .target_dir(&firmware_dir)
         .join(toolchain::THUMB_TARGET)
         .join("release")
         .join("zerocal-firmware");
     let capacity = size::MemoryCapacity::from_memory_x(&root.join("memory.x"))?;
     let usage = size::MemoryUsage::of_elf(&elf)?;
-    Ok((usage, capacity))
+    Ok(FirmwareBuild {
+        toolchain: toolchain.clone(),
+        elf,
+        usage,
+        capacity,
+    })
 }
 
-fn core_thumb() -> Result<()> {
+fn core_thumb(choice: ToolchainChoice) -> Result<()> {
     let root = repo_root();
-    let tools = toolchain::provision(toolchain::Needs::THUMB)?;
+    let tools = toolchain::provision(toolchain::Needs::THUMB, choice)?;
     let toolchain = tools.thumb()?;
     // Only zerocal-core is selected, so no other member's features (std) unify into
     // it; its own target dir keeps the host build's cache intact. Built as the firmware

@@ -56,7 +56,7 @@ fn region_length(memory_x: &str, name: &str) -> Result<u64> {
 }
 
 /// `(ORIGIN, LENGTH)` of `region` in a linker MEMORY block.
-fn region(memory_x: &str, region: &str) -> Result<(u64, u64)> {
+pub(crate) fn region(memory_x: &str, region: &str) -> Result<(u64, u64)> {
     for line in memory_x.lines() {
         let line = line.trim();
         let Some((name, rest)) = line.split_once(':') else {
