@@ -403,8 +403,7 @@ pub fn pieces(text: &str, max: usize) -> Vec<String> {
 /// # Errors
 /// An unreadable file, a malformed row (naming the line), another robot's plan.
 pub fn read_plan(path: &Path, profile: &Profile) -> Result<Vec<[f64; JOINTS]>, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
+    let text = crate::input::read_capped(path, crate::input::MAX_PLAN_BYTES, "plan")?;
     parse_plan(&text, path, profile)
 }
 
