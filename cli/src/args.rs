@@ -12,6 +12,21 @@ use clap::error::ErrorKind;
 use std::ffi::OsStr;
 use std::fmt;
 
+/// Parses the command line of `P` with every command and subcommand taking a
+/// negative number as a value (`--noise-deg -1`, as `--noise-deg=-1`), so it reaches
+/// the option's range check and its message instead of being taken for a flag.
+/// A parse error exits as clap's do (status 2, naming the option).
+pub fn parse<P: clap::Parser>() -> P {
+    let matches = negative_numbers(P::command()).get_matches();
+    P::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+}
+
+/// `cmd` and all its subcommands, each taking negative numbers as values.
+pub fn negative_numbers(cmd: clap::Command) -> clap::Command {
+    cmd.allow_negative_numbers(true)
+        .mut_subcommands(negative_numbers)
+}
+
 /// The sensor's reading convention: `rpy` or `axis` (METHOD.md), listed in the help.
 pub fn convention() -> impl TypedValueParser<Value = zerocal_core::model::Convention> {
     clap::builder::PossibleValuesParser::new(["rpy", "axis"])
