@@ -886,29 +886,39 @@ pub fn render(session: &Session, format: Format) -> Result<Files, CliError> {
     })
 }
 
-/// Where each of a program's files goes, the same way for every format: `--out`
-/// itself for a one-file format, files inside the project folder `--out` for VAL3
-/// (made if missing). The folder `--out` lies in must exist, for every format: zerocal
-/// makes no folders but VAL3's own, so a mistyped path is refused, not created.
+/// Refuses an output path whose folder does not exist, for every format alike:
+/// zerocal makes no folders but a VAL3 project's own, so a mistyped path is refused,
+/// not created. Checked before anything is planned.
 ///
 /// # Errors
-/// A missing folder, or a VAL3 project folder that cannot be made.
+/// The folder `out` lies in does not exist.
+pub fn output_folder(out: &Path) -> Result<(), CliError> {
+    let folder = out
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    if folder.is_dir() {
+        Ok(())
+    } else {
+        Err(CliError::Input(format!(
+            "cannot write {}: the folder {} does not exist (zerocal makes none); nothing was written",
+            out.display(),
+            folder.display()
+        )))
+    }
+}
+
+/// Where each of a program's files goes, the same way for every format: `--out`
+/// itself for a one-file format, files inside the project folder `--out` for VAL3
+/// (made if missing, in a folder [`output_folder`] checked).
+///
+/// # Errors
+/// A VAL3 project folder that cannot be made.
 pub fn destinations<'a>(
     out: &Path,
     format: Format,
     files: &'a Files,
 ) -> Result<Vec<(PathBuf, &'a str)>, CliError> {
-    let folder = out
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if !folder.is_dir() {
-        return Err(CliError::Input(format!(
-            "cannot write {}: the folder {} does not exist (zerocal makes none); nothing was written",
-            out.display(),
-            folder.display()
-        )));
-    }
     if format != Format::Val3 {
         return Ok(files
             .first()
@@ -931,6 +941,7 @@ pub fn destinations<'a>(
 /// # Errors
 /// As [`build`]; an unreadable plan; a file that cannot be written.
 pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
+    output_folder(&args.out)?;
     let profile = crate::robot::load(&args.robot)?;
     let poses_rad: Vec<[f64; JOINTS]> = match &args.plan {
         Some(path) => read_plan(path, &profile)?
