@@ -12,6 +12,48 @@ use clap::error::ErrorKind;
 use std::ffi::OsStr;
 use std::fmt;
 
+/// Parses the command line of `P` with every command and subcommand taking a
+/// negative number as a value (`--noise-deg -1`, as `--noise-deg=-1`), so it reaches
+/// the option's range check and its message instead of being taken for a flag.
+/// A parse error exits as clap's do (status 2, naming the option).
+pub fn parse<P: clap::Parser>() -> P {
+    let matches = negative_numbers(P::command()).get_matches();
+    P::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+}
+
+/// `cmd` and all its subcommands, each numeric option taking a value that starts
+/// with `-` (`-1`, and `-inf`, which clap's own negative-number test does not take
+/// for a number), so that its range check refuses it by name.
+pub fn negative_numbers(cmd: clap::Command) -> clap::Command {
+    cmd.allow_negative_numbers(true)
+        .mut_args(|a| {
+            if is_numeric(&a) {
+                a.allow_hyphen_values(true)
+            } else {
+                a
+            }
+        })
+        .mut_subcommands(negative_numbers)
+}
+
+/// Whether an option parses into a number or a pair of numbers (the types of
+/// [`RealIn`], [`CountIn`] and [`PairIn`]).
+fn is_numeric(a: &clap::Arg) -> bool {
+    use std::any::TypeId;
+    let t = a.get_value_parser().type_id();
+    [
+        TypeId::of::<f64>(),
+        TypeId::of::<(f64, f64)>(),
+        TypeId::of::<u8>(),
+        TypeId::of::<u16>(),
+        TypeId::of::<u32>(),
+        TypeId::of::<u64>(),
+        TypeId::of::<usize>(),
+    ]
+    .into_iter()
+    .any(|id| t == id)
+}
+
 /// The sensor's reading convention: `rpy` or `axis` (METHOD.md), listed in the help.
 pub fn convention() -> impl TypedValueParser<Value = zerocal_core::model::Convention> {
     clap::builder::PossibleValuesParser::new(["rpy", "axis"])
@@ -259,6 +301,42 @@ mod tests {
             assert!(e.contains("(0, 1] deg"), "{bad}: {e}");
         }
         assert!(RealIn::closed(0.0, 1.0, "").check("0").is_ok());
+    }
+
+    /// `--a -1` and `--a -inf` as two arguments reach the range check (clap alone
+    /// takes them for flags); a text option still does not swallow a flag.
+    #[test]
+    fn separate_negative_values_reach_the_range_check() {
+        let cmd = negative_numbers(
+            clap::Command::new("x")
+                .arg(
+                    clap::Arg::new("a")
+                        .long("a")
+                        .value_parser(RealIn::above(0.0, 1.0, "deg")),
+                )
+                .arg(
+                    clap::Arg::new("n")
+                        .long("n")
+                        .value_parser(CountIn::<u8>::new(1, 9)),
+                )
+                .arg(clap::Arg::new("out").long("out")),
+        );
+        for (flag, v, range) in [
+            ("--a", "-1", "(0, 1] deg"),
+            ("--a", "-inf", "(0, 1] deg"),
+            ("--n", "-1", "[1, 9]"),
+        ] {
+            let e = cmd
+                .clone()
+                .try_get_matches_from(["x", flag, v])
+                .unwrap_err();
+            assert_eq!(e.kind(), ErrorKind::ValueValidation, "{flag} {v}: {e}");
+            assert!(e.to_string().contains(range), "{flag} {v}: {e}");
+        }
+        let e = cmd
+            .try_get_matches_from(["x", "--out", "--a", "0.5"])
+            .unwrap_err();
+        assert_ne!(e.kind(), ErrorKind::ValueValidation, "{e}");
     }
 
     #[test]

@@ -117,10 +117,9 @@ fn refusal(e: FitError, log: &Log) -> CliError {
 
 /// Runs the identification and returns what to print.
 pub fn run(args: &IdentifyArgs) -> Result<String, CliError> {
-    let file = std::fs::File::open(&args.log)
+    let text = crate::input::read_capped(&args.log, crate::input::MAX_LOG_BYTES, "stage-2 log")?;
+    let log = read_log(text.as_bytes())
         .map_err(|e| CliError::Input(format!("{}: {e}", args.log.display())))?;
-    let log =
-        read_log(file).map_err(|e| CliError::Input(format!("{}: {e}", args.log.display())))?;
     if (args.base_tilt_deg.is_some() || args.delta_theta2_deg.is_some()) && !log.has_j1_j2 {
         // Stage 1's tilt and Δθ2 compose with joint 2's recorded angle: without it the
         // tilt of the frame joint 3 turns in would be wrong by joint 2's angle, a silent

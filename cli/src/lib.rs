@@ -5,6 +5,7 @@ pub mod args;
 pub mod diagnose;
 pub mod error;
 pub mod identify;
+pub mod input;
 pub mod log;
 pub mod pendant;
 pub mod plan;

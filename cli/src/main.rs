@@ -122,7 +122,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli: Cli = zerocal_cli::args::parse();
     match run(&cli) {
         Ok(out) => {
             let mut stdout = std::io::stdout().lock();

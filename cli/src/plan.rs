@@ -15,17 +15,18 @@
 //! row per pose, nothing else on stdout) or `--json` (one object: `poses_deg`,
 //! `predicted_sigma_deg`, `predicted_k2_deg`, `correlation`, `robot_time`, settings).
 //!
-//! `--limits FILE` gives the joint limits as CSV, one joint per line, degrees:
+//! `--limits FILE` narrows the profile's joint limits: CSV, one joint per line, by
+//! number (1-6) or by the profile's name for it (`A5`), model degrees:
 //!
 //! ```text
 //! # joint,min_deg,max_deg     (a header line and '#' comments are allowed)
 //! joint,min_deg,max_deg
 //! 3,-170,170
-//! 4,-185,185
-//! 5,-120,120
-//! 6,-350,350
+//! A5,-100,100
 //! ```
-//! Joints not listed keep ±180°. A bad line is named by its number and field.
+//! Joints not listed keep the profile's limits; a listed joint's limits must lie
+//! within the profile's (a wider range is the profile's to state: `zerocal program`
+//! checks every point against it). A bad line is named by its number and field.
 //!
 //! `--noise-deg A` is the half-width of uniform reading noise ±A, as for `simulate`
 //! (the paper's Table 4: 0.002): the predicted 1σ uses σ = A/√3 per reading.
@@ -68,8 +69,9 @@ pub struct PlanArgs {
     /// be smaller than W. Range: [0, 90] deg.
     #[arg(long, default_value_t = 10.0 - zerocal_sim::montecarlo::PLAN_WINDOW_DEG, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
     pub margin_deg: f64,
-    /// Joint limits of joints 3-6: CSV lines `joint,min_deg,max_deg` (default: the
-    /// robot profile's).
+    /// Narrower joint limits than the profile's: CSV lines `joint,min_deg,max_deg`,
+    /// the joint by number (1-6) or name (`A5`), model degrees; joints not listed keep
+    /// the profile's.
     #[arg(long, value_name = "FILE")]
     pub limits: Option<PathBuf>,
     /// Reading noise: uniform in ±A degrees (σ = A/√3). Default: for `axis`, one
@@ -121,10 +123,13 @@ pub struct PlanArgs {
 /// Per-joint (min, max) limits of joints 3-6 (deg).
 pub type LimitsDeg = [(f64, f64); WRIST_JOINTS];
 
-/// Parses a limits file (format in the module doc). Errors name the line and field.
-pub fn parse_limits(text: &str) -> Result<LimitsDeg, String> {
-    let mut limits = [(-180.0, 180.0); WRIST_JOINTS];
-    let mut seen = [false; WRIST_JOINTS];
+/// The limits a limits file lists (format in the module doc), per joint 1-6 (model
+/// degrees); `names` are the profile's joint names. Errors name the line and field.
+pub fn parse_limits(
+    text: &str,
+    names: &[String; JOINTS],
+) -> Result<[Option<(f64, f64)>; JOINTS], String> {
+    let mut limits = [None; JOINTS];
     for (i, raw) in text.lines().enumerate() {
         let line_no = i + 1;
         let line = raw.split('#').next().unwrap_or("").trim();
@@ -144,25 +149,28 @@ pub fn parse_limits(text: &str) -> Result<LimitsDeg, String> {
                 fields.len()
             ));
         }
-        let joint: usize = fields[0]
-            .parse()
+        let k = fields[0]
+            .parse::<usize>()
             .ok()
-            .filter(|j| (3..=6).contains(j))
+            .filter(|j| (1..=JOINTS).contains(j))
+            .map(|j| j - 1)
+            .or_else(|| names.iter().position(|n| n.eq_ignore_ascii_case(fields[0])))
             .ok_or_else(|| {
                 format!(
-                    "limits line {line_no}: field joint: '{}' is not a joint 3-6",
-                    fields[0]
+                    "limits line {line_no}: field joint: '{}' is not a joint 1-6 or one of the profile's {}",
+                    fields[0].chars().take(16).collect::<String>(),
+                    names.join(", ")
                 )
             })?;
-        let num = |k: usize, name: &str| -> Result<f64, String> {
-            fields[k]
+        let num = |f: usize, name: &str| -> Result<f64, String> {
+            fields[f]
                 .parse::<f64>()
                 .ok()
                 .filter(|v| v.is_finite())
                 .ok_or_else(|| {
                     format!(
                         "limits line {line_no}: field {name}: '{}' is not a finite number",
-                        fields[k]
+                        fields[f].chars().take(32).collect::<String>()
                     )
                 })
         };
@@ -172,16 +180,43 @@ pub fn parse_limits(text: &str) -> Result<LimitsDeg, String> {
                 "limits line {line_no}: min_deg {lo} is above max_deg {hi}"
             ));
         }
-        let k = joint - 3;
-        if seen[k] {
+        if limits[k].is_some() {
             return Err(format!(
-                "limits line {line_no}: joint {joint} is listed twice"
+                "limits line {line_no}: joint {} is listed twice",
+                k + 1
             ));
         }
-        seen[k] = true;
-        limits[k] = (lo, hi);
+        limits[k] = Some((lo, hi));
     }
     Ok(limits)
+}
+
+/// `profile` with the limits a limits file lists (`name` names the file in
+/// messages); the joints it does not list keep the profile's.
+///
+/// # Errors
+/// A malformed line; a listed range wider than the profile's (naming the joint).
+pub fn narrow_limits(mut profile: Profile, text: &str, name: &str) -> Result<Profile, CliError> {
+    let names: [String; JOINTS] = core::array::from_fn(|k| {
+        profile
+            .joints
+            .get(k)
+            .map_or_else(|| format!("J{}", k + 1), |j| j.name.clone())
+    });
+    let labels: [String; JOINTS] = core::array::from_fn(|k| timing::joint_label(&profile, k));
+    let listed = parse_limits(text, &names).map_err(|e| CliError::Input(format!("{name}: {e}")))?;
+    let robot = profile.name.clone();
+    for ((j, l), label) in profile.joints.iter_mut().zip(listed).zip(labels) {
+        let Some((lo, hi)) = l else { continue };
+        if lo < j.min_deg || hi > j.max_deg {
+            return Err(CliError::Input(format!(
+                "{name}: {label}: {lo}..{hi} deg reaches outside profile {robot}'s limits {}..{} deg; --limits only narrows them (a wider range belongs in the profile, which zerocal program checks every point against)",
+                j.min_deg, j.max_deg
+            )));
+        }
+        (j.min_deg, j.max_deg) = (lo, hi);
+    }
+    Ok(profile)
 }
 
 /// The worst correlation between two parameters of the plan.
@@ -303,19 +338,27 @@ pub struct PlanJson {
 }
 
 impl PlanArgs {
-    /// The limits of joints 3-6: the file's, else the profile's.
-    pub fn limits_deg(&self, profile: &Profile) -> Result<LimitsDeg, CliError> {
+    /// The robot profile `--robot` names, its limits narrowed by `--limits`.
+    ///
+    /// # Errors
+    /// A profile or a limits file that does not read; limits wider than the profile's.
+    pub fn profile(&self) -> Result<Profile, CliError> {
+        let profile = crate::robot::load(&self.robot)?;
         match &self.limits {
-            None => Ok(core::array::from_fn(|k| {
-                let j = &profile.joints[k + 2];
-                (j.min_deg, j.max_deg)
-            })),
+            None => Ok(profile),
             Some(path) => {
-                let text = std::fs::read_to_string(path)
-                    .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
-                parse_limits(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+                let text =
+                    crate::input::read_capped(path, crate::input::MAX_LIMITS_BYTES, "limits file")?;
+                narrow_limits(profile, &text, &path.display().to_string())
             }
         }
+    }
+
+    /// The limits of joints 3-6: the profile's (narrowed by `--limits` in
+    /// [`profile`](Self::profile)).
+    pub fn limits_deg(profile: &Profile) -> LimitsDeg {
+        // A profile has six joints (checked when it is read).
+        core::array::from_fn(|k| (profile.joints[k + 2].min_deg, profile.joints[k + 2].max_deg))
     }
 
     /// The stage-2 model the plan is made for: the profile's arm, the given base tilt,
@@ -357,7 +400,7 @@ impl PlanArgs {
     /// The planner settings the flags give: the limits less the room the two captures
     /// of a pose need on either side (`crate::timing::planner_limits`).
     pub fn config(&self, profile: &Profile) -> Result<PlanConfig<f64>, CliError> {
-        let full = self.limits_deg(profile)?;
+        let full = Self::limits_deg(profile);
         let limits = timing::planner_limits(profile, &full);
         for (k, ((lo, hi), (flo, fhi))) in limits.iter().zip(&full).enumerate() {
             if lo > hi {
@@ -614,7 +657,7 @@ pub fn fewest_poses(fit: &FitConfig<f64>) -> usize {
 /// Bad flags or limits file (status 2); a plan that cannot separate the parameters or
 /// reach the window inside the limits, or a target no plan reaches (status 3).
 pub fn make_plan(args: &PlanArgs) -> Result<SessionPlan, CliError> {
-    let profile = crate::robot::load(&args.robot)?;
+    let profile = args.profile()?;
     let Some(target) = args.target_k2_deg else {
         let (config, p) = plan_n(args, &profile, args.poses)?;
         return session_plan(args, profile, config, p);
@@ -892,26 +935,99 @@ mod tests {
 
     #[test]
     fn limits_file_parses_and_names_bad_lines() {
-        let ok = parse_limits("# KR 6\njoint,min_deg,max_deg\n3,-170,170\n4, -30 , 30\n");
+        let names: [String; JOINTS] = core::array::from_fn(|k| format!("A{}", k + 1));
+        let ok = parse_limits(
+            "# KR 6\njoint,min_deg,max_deg\n3,-170,170\na4, -30 , 30\n",
+            &names,
+        );
         assert_eq!(
             ok,
             Ok([
-                (-170.0, 170.0),
-                (-30.0, 30.0),
-                (-180.0, 180.0),
-                (-180.0, 180.0)
+                None,
+                None,
+                Some((-170.0, 170.0)),
+                Some((-30.0, 30.0)),
+                None,
+                None
             ])
         );
-        let e = parse_limits("3,-170,170\n5,-10,abc\n").unwrap_err();
+        let e = parse_limits("3,-170,170\n5,-10,abc\n", &names).unwrap_err();
         assert!(e.contains("line 2") && e.contains("max_deg"), "{e}");
-        let e = parse_limits("7,0,1\n").unwrap_err();
+        let e = parse_limits("7,0,1\n", &names).unwrap_err();
         assert!(e.contains("line 1") && e.contains("joint"), "{e}");
-        let e = parse_limits("3,1,0\n").unwrap_err();
+        let e = parse_limits("3,1,0\n", &names).unwrap_err();
         assert!(e.contains("above"), "{e}");
-        let e = parse_limits("3,0,1\n3,0,1\n").unwrap_err();
+        let e = parse_limits("3,0,1\nA3,0,1\n", &names).unwrap_err();
         assert!(e.contains("twice"), "{e}");
-        let e = parse_limits("3,0\n").unwrap_err();
+        let e = parse_limits("3,0\n", &names).unwrap_err();
         assert!(e.contains("3 fields"), "{e}");
+    }
+
+    /// A limits file listing only A1 leaves the KR 6's A5 at its own ±120° (not ±180°),
+    /// and `zerocal program` takes the plan made with it; a range wider than the
+    /// profile's is refused naming the joint.
+    #[test]
+    fn a_partial_limits_file_keeps_the_profiles_other_limits() {
+        let dir = std::env::temp_dir().join(format!("zerocal-plan-a1-{}", std::process::id()));
+        let _ = std::fs::create_dir_all(&dir);
+        let f = dir.join("limits.csv");
+        let _ = std::fs::write(&f, "joint,min_deg,max_deg\nA1,-160,160\n");
+        let path = f.to_string_lossy().into_owned();
+        let a = args(&["--robot", "kuka-kr6-r900-sixx", "--limits", &path]);
+        let sp = make_plan(&a).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            (sp.profile.joints[0].min_deg, sp.profile.joints[0].max_deg),
+            (-160.0, 160.0)
+        );
+        for q in &sp.plan.poses_rad {
+            let a5 = q[4].to_degrees();
+            // The planner keeps the approach's 1° and the overshoot's 4° inside ±120°.
+            assert!((-119.0..=116.0).contains(&a5), "A5 at {a5} deg");
+        }
+        assert!(sp.program_refused.is_none(), "{:?}", sp.program_refused);
+        let csv = dir.join("plan.csv");
+        let rows: String = sp
+            .plan
+            .poses_rad
+            .iter()
+            .map(|q| {
+                let r: Vec<String> = q.iter().map(|v| format!("{:.6}", v.to_degrees())).collect();
+                r.join(",") + "\n"
+            })
+            .collect();
+        let _ = std::fs::write(
+            &csv,
+            format!("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg\n{rows}"),
+        );
+        let program = crate::program::ProgramArgs {
+            robot: "kuka-kr6-r900-sixx".into(),
+            plan: Some(csv),
+            format: crate::program::Format::Krl,
+            out: dir.join("zc.src"),
+            timing: TimingArgs::default(),
+        };
+        let wrote = crate::program::run(&program).unwrap_or_else(|e| panic!("{e}"));
+        assert!(wrote.starts_with("wrote"), "{wrote}");
+        let _ = std::fs::write(&f, "A5,-150,150\n");
+        let e = make_plan(&a).unwrap_err().to_string();
+        assert!(
+            e.contains("A5 (joint 5)") && e.contains("-120..120") && e.contains("only narrows"),
+            "{e}"
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// `zerocal plan --json` of the most poses, its largest output, uses a quarter of
+    /// the plan file's cap at most: the rest is room for hand edits.
+    #[test]
+    fn plan_files_of_the_most_poses_fit_their_cap() {
+        let json = run(&args(&["--poses", "48", "--json"])).unwrap_or_else(|e| panic!("{e}"));
+        println!("zerocal plan --poses 48 --json: {} bytes", json.len());
+        assert!(
+            json.len() * 4 <= crate::input::MAX_PLAN_BYTES,
+            "{}",
+            json.len()
+        );
     }
 
     #[test]

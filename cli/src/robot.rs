@@ -13,7 +13,19 @@ pub const ROBOT_HELP: &str =
 /// # Errors
 /// An unknown name, an unreadable file, a profile the checks refuse.
 pub fn load(name_or_path: &str) -> Result<Profile, CliError> {
-    zerocal_profile::load(name_or_path).map_err(|e| CliError::Input(format!("--robot: {e}")))
+    let refused = |e: zerocal_profile::ProfileError| CliError::Input(format!("--robot: {e}"));
+    if !zerocal_profile::is_file(name_or_path) {
+        return zerocal_profile::builtin(name_or_path).map_err(refused);
+    }
+    let text = crate::input::read_capped(
+        std::path::Path::new(name_or_path),
+        zerocal_profile::bounds::MAX_PROFILE_BYTES,
+        "robot profile",
+    )
+    .map_err(|e| match e {
+        CliError::Input(m) | CliError::Refused(m) => CliError::Input(format!("--robot: {m}")),
+    })?;
+    zerocal_profile::parse_file(name_or_path, &text).map_err(refused)
 }
 
 /// Arguments of `zerocal robots`.

@@ -15,6 +15,10 @@ use zerocal_sim::positioning::{self, AccuracyReport};
 use zerocal_sim::session::{fit_config_for, SessionConfig, SessionResult};
 use zerocal_sim::{Noise, SimSession};
 
+/// `--noise-deg`'s range (deg): from a millionth of a degree, where noise still sets
+/// the fit's error rather than rounding, to 1°.
+pub const NOISE_DEG: RealIn = RealIn::closed(1e-6, 1.0, "deg");
+
 /// Which world `zerocal simulate` simulates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum World {
@@ -46,8 +50,10 @@ pub struct SimulateArgs {
     #[arg(long, value_parser = CountIn::<usize>::new(4, 10_000))]
     pub poses: Option<usize>,
     /// Ideal world: reading noise, uniform in ±A degrees (the paper's Table 4: 0.002).
-    /// Range: [0, 1] deg.
-    #[arg(long, default_value_t = 0.002, value_name = "A", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
+    /// Below a millionth of a degree rounding, not noise, sets the fit's error and its
+    /// 1-sigma, and the report's ratios (error/1-sigma, the accuracy gain) would divide
+    /// rounding by rounding. Range: [0.000001, 1] deg.
+    #[arg(long, default_value_t = 0.002, value_name = "A", value_parser = NOISE_DEG)]
     pub noise_deg: f64,
     /// Ideal world: sensor convention of the simulated sensor and of the model (the
     /// real world's SCL3300 is `axis`).
@@ -77,12 +83,8 @@ pub struct SimulateArgs {
 impl SimulateArgs {
     /// The reading noise the flags ask for.
     pub fn noise(&self) -> Noise {
-        if self.noise_deg > 0.0 {
-            Noise::Uniform {
-                half_width_rad: deg_to_rad(self.noise_deg),
-            }
-        } else {
-            Noise::None
+        Noise::Uniform {
+            half_width_rad: deg_to_rad(self.noise_deg),
         }
     }
 

@@ -36,7 +36,7 @@ use zerocal_core::plan::time::{shortest_tour, Mounting, SessionPath, SessionTime
 use zerocal_core::procedure::ProcedureConfig;
 use zerocal_core::stage2::{Stage2Model, MEMS_RANGE_DEG};
 use zerocal_core::stillness::StillnessConfig;
-use zerocal_profile::Profile;
+use zerocal_profile::{Coupling, Profile};
 
 /// The session's joint speed, percent of each joint's maximum (stated default: slow
 /// enough to stop short of a collision the first run reveals, as the controller
@@ -105,6 +105,18 @@ pub const MOUNT_TURN_DEG: f64 = 45.0;
 /// range, mode 4's ±10° (deg; stated margin for the base tilt, the sensor's offset and
 /// the bracket's seating).
 pub const MOUNT_MARGIN_DEG: f64 = 5.0;
+
+/// Longest time one move of a session may take (s): a stated bound. The pendant's
+/// capture rule is checked along every move at the sensor's 20 Hz
+/// ([`SAMPLE_PERIOD_S`]), so this bounds that check to [`MAX_MOVE_SAMPLES`] readings
+/// a move; a move across a joint's whole range that takes longer comes from a speed
+/// too low for a session (a profile's figure in the wrong unit, or a tiny
+/// `--speed-percent`), and is refused before anything is planned.
+pub const MAX_MOVE_S: f64 = 600.0;
+
+/// Readings of the capture rule's check along one move at most: [`MAX_MOVE_S`] at
+/// [`SAMPLE_PERIOD_S`].
+pub const MAX_MOVE_SAMPLES: usize = (MAX_MOVE_S / SAMPLE_PERIOD_S) as usize;
 
 /// The session options `zerocal plan` and `zerocal program` share.
 #[derive(Args, Debug, Clone)]
@@ -290,6 +302,27 @@ impl Timing {
         model
             .validate()
             .map_err(|e| CliError::Input(format!("time model: {e}")))?;
+        for (k, max_speed) in max_speed_deg_s.iter().enumerate() {
+            let range = |j: usize| {
+                profile
+                    .joints
+                    .get(j)
+                    .map_or(0.0, |info| info.max_deg - info.min_deg)
+            };
+            // The controller's J3 of a coupled display moves with J2 as well.
+            let coupled = k == 2 && profile.controller.coupling == Coupling::J3MinusJ2;
+            let across =
+                range(k) + if coupled { range(1) } else { 0.0 } + APPROACH_DEG + OVERSHOOT_DEG;
+            let t = model.joint_move_s(k, across);
+            if t.is_nan() || t > MAX_MOVE_S {
+                return Err(CliError::Input(format!(
+                    "{}: at {} % of {} deg/s a move across its limits ({across:.0} deg) takes {t:.0} s, longer than the {MAX_MOVE_S} s a session's move may take; raise --speed-percent or check the profile's max_speed_deg_s",
+                    joint_label(profile, k),
+                    args.speed_percent,
+                    max_speed
+                )));
+            }
+        }
         Ok(Timing {
             model,
             max_speed_deg_s,
@@ -544,9 +577,17 @@ impl<'a> Pendant<'a> {
         }
         let d = (to[slow] - from[slow]).abs();
         let (v, a) = (time.speed_deg_s[slow], time.accel_deg_s2[slow]);
-        let steps = (total / time.sample_period_s).ceil().max(1.0) as usize;
+        // Timing::new bounds every move to MAX_MOVE_S; the bound here keeps a model
+        // built otherwise from allocating without end (its samples then spread out).
+        let needed = (total / time.sample_period_s).ceil().max(1.0);
+        let steps = (needed as usize).clamp(1, MAX_MOVE_SAMPLES);
+        let dt = if needed > steps as f64 {
+            total / steps as f64
+        } else {
+            time.sample_period_s
+        };
         for i in 1..=steps {
-            let t = (i as f64 * time.sample_period_s).min(total);
+            let t = (i as f64 * dt).min(total);
             let s = fraction_at(t, total, v, a, d);
             let p: [f64; JOINTS] = core::array::from_fn(|k| from[k] + (to[k] - from[k]) * s);
             out.push(self.reading_on(mounting, &p));
@@ -826,6 +867,53 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A speed at which a move across a joint's range would take longer than
+    /// [`MAX_MOVE_S`] is refused naming the joint and what to change; the slowest
+    /// accepted move's check takes at most [`MAX_MOVE_SAMPLES`] readings.
+    #[test]
+    fn moves_longer_than_the_bound_are_refused() {
+        // No built-in profile is refused, at the lowest --speed-percent either.
+        for name in zerocal_profile::builtin_names() {
+            let profile = zerocal_profile::builtin(name).unwrap_or_else(|e| panic!("{e}"));
+            let args = TimingArgs {
+                speed_percent: 1,
+                ..TimingArgs::default()
+            };
+            assert!(Timing::new(&profile, &args).is_ok(), "{name}");
+        }
+        let mut profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
+        // A5 at 0.2 deg/s (inside the profile's plausible range), 1 %: 0.002 deg/s.
+        profile.joints[4].max_speed_deg_s = Some(0.2);
+        let slow = TimingArgs {
+            speed_percent: 1,
+            ..TimingArgs::default()
+        };
+        let e = Timing::new(&profile, &slow).unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+        let m = e.to_string();
+        assert!(
+            m.contains("A5 (joint 5)") && m.contains("--speed-percent") && m.contains("600 s"),
+            "{m}"
+        );
+        // The slowest speed accepted for A5's 265 deg (limits, approach, overshoot): the
+        // move's check stays within the bound.
+        let across = profile.joints[4].max_deg - profile.joints[4].min_deg + 5.0;
+        profile.joints[4].max_speed_deg_s = Some(100.0 * across / (MAX_MOVE_S - 1.0));
+        let t = Timing::new(&profile, &slow).unwrap_or_else(|e| panic!("{e}"));
+        let pendant = Pendant::new(&profile);
+        let mut a = profile.shown_deg(&profile.stage1_joints_rad);
+        a[4] = profile.joints[4].min_deg;
+        let mut b = a;
+        b[4] = profile.joints[4].max_deg;
+        let mut samples = Vec::new();
+        pendant.samples(&t.model, Mounting::Flange, &a, &b, &mut samples);
+        assert!(
+            samples.len() <= MAX_MOVE_SAMPLES && samples.len() > MAX_MOVE_SAMPLES / 2,
+            "{}",
+            samples.len()
+        );
     }
 
     #[test]

@@ -1,5 +1,6 @@
 //! Every numeric option of every subcommand, walked through the values that break
-//! careless parsers: 0, a negative, 1e308, NaN and ±inf.
+//! careless parsers: 0, a negative, 1e308, NaN and ±inf; the negatives both as
+//! `--flag=-1` and as two arguments `--flag -1`.
 //!
 //! The valid range of each option is read back from its `--help` (`Range: [a, b]`, as
 //! `zerocal_cli::args` states it), so the help, the parser and this test cannot drift
@@ -288,7 +289,14 @@ fn every_numeric_option_refuses_what_is_outside_its_stated_range() {
                 );
                 continue;
             };
-            for v in WALK {
+            // A negative value is walked as `--flag=-1` and as two arguments
+            // `--flag -1`: both must reach the range check, not clap's unknown flag.
+            let forms = WALK.iter().flat_map(|v| {
+                [(*v, false)]
+                    .into_iter()
+                    .chain(v.starts_with('-').then_some((*v, true)))
+            });
+            for (v, separate) in forms {
                 let value = if range.pair {
                     format!("{v},{v}")
                 } else {
@@ -296,7 +304,12 @@ fn every_numeric_option_refuses_what_is_outside_its_stated_range() {
                 };
                 let mut args = base.clone();
                 args.retain(|a| !a.starts_with(&format!("{flag}=")));
-                args.push(format!("{flag}={value}"));
+                if separate {
+                    args.push(flag.clone());
+                    args.push(value);
+                } else {
+                    args.push(format!("{flag}={value}"));
+                }
                 let run = zerocal(&args);
                 walked += 1;
                 let code = run.code;
@@ -341,7 +354,7 @@ fn every_numeric_option_refuses_what_is_outside_its_stated_range() {
     // simulate 6, identify 5, plan 10, program 3 numeric options at the time of
     // writing.
     assert!(
-        walked >= 24 * WALK.len(),
+        walked >= 24 * (WALK.len() + 2),
         "only {walked} runs: options lost?"
     );
 }

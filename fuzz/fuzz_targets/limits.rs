@@ -1,6 +1,7 @@
-//! The planner's limits file (`zerocal plan --limits`, `parse_limits`) and the plan
-//! file `zerocal program` reads (`parse_plan`, CSV or JSON): an error naming the line,
-//! never a panic; accepted limits are finite and ordered, accepted poses finite.
+//! The planner's limits file (`zerocal plan --limits`, `narrow_limits` through
+//! `parse_limits`) and the plan file `zerocal program` reads (`parse_plan`, CSV or
+//! JSON): an error naming the line, never a panic; accepted limits are finite, ordered
+//! and within the profile's, accepted poses finite.
 #![no_main]
 use std::path::Path;
 use std::sync::OnceLock;
@@ -22,9 +23,15 @@ fuzz_target!(|data: &[u8]| {
     let Ok(text) = core::str::from_utf8(data) else {
         return;
     };
-    if let Ok(limits) = zerocal_cli::plan::parse_limits(text) {
-        for (lo, hi) in limits {
-            assert!(lo.is_finite() && hi.is_finite() && lo <= hi, "{limits:?}");
+    let original = profile();
+    if let Ok(narrowed) = zerocal_cli::plan::narrow_limits(original.clone(), text, "limits") {
+        for (j, o) in narrowed.joints.iter().zip(&original.joints) {
+            let (lo, hi) = (j.min_deg, j.max_deg);
+            assert!(lo.is_finite() && hi.is_finite() && lo <= hi, "{lo}..{hi}");
+            assert!(
+                lo >= o.min_deg && hi <= o.max_deg,
+                "{lo}..{hi} wider than the profile's"
+            );
         }
     }
     if let Ok(poses) = zerocal_cli::program::parse_plan(text, Path::new("plan"), profile()) {

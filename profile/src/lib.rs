@@ -10,6 +10,7 @@
 //!
 //! Built-in profiles are the files of `data/robots/`, compiled in ([`builtin`]).
 
+pub mod bounds;
 mod controller;
 mod raw;
 
@@ -214,22 +215,50 @@ pub fn builtin(name: &str) -> Result<Profile, ProfileError> {
     parse(text)
 }
 
-/// Reads a profile: a built-in name, or a TOML file's path.
-///
-/// # Errors
-/// An unreadable file, or what [`parse`] refuses.
-pub fn load(name_or_path: &str) -> Result<Profile, ProfileError> {
+/// Whether [`load`] reads `name_or_path` as a file: not a built-in name, and a path
+/// ending in `.toml` or naming something that exists.
+pub fn is_file(name_or_path: &str) -> bool {
     if builtin_names().any(|n| n == name_or_path) {
-        return builtin(name_or_path);
+        return false;
     }
     let path = std::path::Path::new(name_or_path);
-    if path.extension().is_some_and(|e| e == "toml") || path.exists() {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| ProfileError::new(name_or_path, format!("cannot read: {e}")))?;
-        return parse(&text)
-            .map_err(|e| ProfileError::new(format!("{name_or_path}: {}", e.key), e.reason));
+    path.extension().is_some_and(|e| e == "toml") || path.exists()
+}
+
+/// Parses the text of the profile file `path`: as [`parse`], each key prefixed by the
+/// path.
+///
+/// # Errors
+/// What [`parse`] refuses.
+pub fn parse_file(path: &str, text: &str) -> Result<Profile, ProfileError> {
+    parse(text).map_err(|e| ProfileError::new(format!("{path}: {}", e.key), e.reason))
+}
+
+/// Reads a profile: a built-in name, or a TOML file's path (at most
+/// [`bounds::MAX_PROFILE_BYTES`], read no further).
+///
+/// # Errors
+/// An unreadable or too long file, or what [`parse`] refuses.
+pub fn load(name_or_path: &str) -> Result<Profile, ProfileError> {
+    if !is_file(name_or_path) {
+        return builtin(name_or_path);
     }
-    builtin(name_or_path)
+    let cap = bounds::MAX_PROFILE_BYTES;
+    let mut bytes = Vec::new();
+    std::fs::File::open(name_or_path)
+        .and_then(|f| {
+            std::io::Read::read_to_end(&mut std::io::Read::take(f, cap as u64 + 1), &mut bytes)
+        })
+        .map_err(|e| ProfileError::new(name_or_path, format!("cannot read: {e}")))?;
+    if bytes.len() > cap {
+        return Err(ProfileError::new(
+            name_or_path,
+            format!("longer than {cap} bytes, the most a profile file holds; not read"),
+        ));
+    }
+    let text =
+        String::from_utf8(bytes).map_err(|_| ProfileError::new(name_or_path, "not UTF-8 text"))?;
+    parse_file(name_or_path, &text)
 }
 
 /// Parses and checks a profile.

@@ -1,5 +1,6 @@
 //! The TOML as written, with every key known (`deny_unknown_fields`), and its checks.
 
+use crate::bounds::{self, symmetric, text};
 use crate::controller::{Controller, Coupling, OffsetUnit};
 use crate::{
     flange_mount, kinematics, upper_arm_mount, Family, JointInfo, ProfileError, Source, FORMAT,
@@ -106,6 +107,7 @@ impl Profile {
                 ),
             ));
         }
+        self.check_bounds()?;
         let name_ok = !self.name.is_empty()
             && self
                 .name
@@ -210,6 +212,130 @@ impl Profile {
             controller,
             stage1_joints_rad,
         })
+    }
+
+    /// Every text within its length and every number within its plausible range
+    /// (`crate::bounds`), each refusal naming the key.
+    fn check_bounds(&self) -> Result<(), ProfileError> {
+        if self.name.len() > bounds::MAX_NAME_BYTES {
+            return Err(ProfileError::new(
+                "name",
+                format!(
+                    "longer than {} bytes (what the pendant stores)",
+                    bounds::MAX_NAME_BYTES
+                ),
+            ));
+        }
+        text("title", &self.title, bounds::MAX_TITLE_CHARS)?;
+        text("family", &self.family, bounds::MAX_TEXT_CHARS)?;
+        bounds::list("missing", self.missing.len())?;
+        for m in &self.missing {
+            text("missing", m, bounds::MAX_TEXT_CHARS)?;
+        }
+        bounds::list("source", self.source.len())?;
+        for s in &self.source {
+            text("source.id", &s.id, bounds::MAX_TEXT_CHARS)?;
+            text("source.cite", &s.cite, bounds::MAX_TEXT_CHARS)?;
+        }
+        text(
+            "kinematics.form",
+            &self.kinematics.form,
+            bounds::MAX_TEXT_CHARS,
+        )?;
+        text(
+            "kinematics.source",
+            &self.kinematics.source,
+            bounds::MAX_TEXT_CHARS,
+        )?;
+        let (deg, m) = ("deg", "m");
+        for (k, j) in self.joint.iter().enumerate().take(JOINTS) {
+            let key = |what: &str| format!("joint {}: {what}", k + 1);
+            text(&key("name"), &j.name, bounds::MAX_JOINT_NAME_CHARS)?;
+            if j.name.is_empty() {
+                return Err(ProfileError::new(key("name"), "empty"));
+            }
+            let three = |v: Option<[f64; 3]>| v.map_or_else(Vec::new, |a| a.to_vec());
+            let one = |v: Option<f64>| v.map_or_else(Vec::new, |x| vec![x]);
+            for (what, v) in [
+                ("xyz_m", three(j.xyz_m)),
+                ("com_m", three(j.com_m)),
+                ("a_m", one(j.a_m)),
+                ("d_m", one(j.d_m)),
+            ] {
+                symmetric(&key(what), &v, bounds::MAX_LENGTH_M, m)?;
+            }
+            for (what, v) in [
+                ("rpy_deg", three(j.rpy_deg)),
+                ("alpha_deg", one(j.alpha_deg)),
+                ("theta_deg", one(j.theta_deg)),
+            ] {
+                symmetric(&key(what), &v, bounds::MAX_ROTATION_DEG, deg)?;
+            }
+            symmetric(&key("min_deg"), &[j.min_deg], bounds::MAX_JOINT_DEG, deg)?;
+            symmetric(&key("max_deg"), &[j.max_deg], bounds::MAX_JOINT_DEG, deg)?;
+            if let Some(v) = j.max_speed_deg_s {
+                let (lo, hi) = bounds::SPEED_DEG_S;
+                bounds::number(&key("max_speed_deg_s"), v, lo, hi, "deg/s")?;
+            }
+            if let Some(v) = j.mass_kg {
+                bounds::number(&key("mass_kg"), v, 0.0, bounds::MAX_MASS_KG, "kg")?;
+            }
+            if let Some(id) = &j.limits_source {
+                text(&key("limits_source"), id, bounds::MAX_TEXT_CHARS)?;
+            }
+        }
+        if let Some(f) = &self.flange {
+            symmetric(
+                "flange.xyz_m",
+                &f.xyz_m.unwrap_or_default(),
+                bounds::MAX_LENGTH_M,
+                m,
+            )?;
+            symmetric(
+                "flange.rpy_deg",
+                &f.rpy_deg.unwrap_or_default(),
+                bounds::MAX_ROTATION_DEG,
+                deg,
+            )?;
+        }
+        let c = &self.controller;
+        symmetric(
+            "controller.zero_deg",
+            &c.zero_deg,
+            bounds::MAX_JOINT_DEG,
+            deg,
+        )?;
+        if let Some(r) = &c.gear_ratio {
+            let (lo, hi) = bounds::GEAR_RATIO;
+            bounds::numbers(
+                "controller.gear_ratio",
+                r,
+                lo,
+                hi,
+                "motor turns per joint turn",
+            )?;
+        }
+        if let Some(r) = &c.counts_per_deg {
+            let (lo, hi) = bounds::COUNTS_PER_DEG;
+            bounds::numbers("controller.counts_per_deg", r, lo, hi, "counts/deg")?;
+        }
+        for (key, t) in [
+            ("controller.coupling", &c.coupling),
+            ("controller.source", &c.source),
+            ("controller.offset_unit", &c.offset_unit),
+            ("controller.offset_where", &c.offset_where),
+            ("controller.offset_source", &c.offset_source),
+            ("stage2.mount_z", &self.stage2.mount_z),
+            ("stage2.mount_x", &self.stage2.mount_x),
+        ] {
+            text(key, t, bounds::MAX_TEXT_CHARS)?;
+        }
+        symmetric(
+            "stage1.pose_deg",
+            &self.stage1.pose_deg,
+            bounds::MAX_JOINT_DEG,
+            deg,
+        )
     }
 
     fn controller(&self) -> Result<Controller, ProfileError> {

@@ -112,3 +112,117 @@ fn broken_profiles_name_the_key() {
         assert!(e.to_string().contains(key), "{what}: {e}");
     }
 }
+
+/// Every built-in is well inside the bounds: its file under a quarter of the size cap,
+/// its name within what the pendant stores.
+#[test]
+fn every_builtin_fits_the_bounds() {
+    for (name, text) in BUILTIN {
+        assert!(
+            text.len() * 4 <= bounds::MAX_PROFILE_BYTES,
+            "{name}: {} bytes",
+            text.len()
+        );
+    }
+    let robot = zerocal_core::procedure::RobotName::new();
+    assert_eq!(robot.capacity(), bounds::MAX_NAME_BYTES);
+}
+
+/// A number outside its plausible range or a text past its length is refused at load,
+/// naming the key and the range; never a panic, an infinity or a silently odd number
+/// later on.
+#[test]
+fn out_of_range_numbers_and_long_texts_name_the_key() {
+    let kr6 = include_str!("../../data/robots/kuka-kr6-r900-sixx.toml");
+    let cases: Vec<(&str, String, &str)> = vec![
+        (
+            "limits of ±1e308",
+            kr6.replacen("min_deg = -170.0\nmax_deg = 170.0", "min_deg = -1e308\nmax_deg = 1e308", 1),
+            "joint 1: min_deg: -1e308 is outside the plausible range [-720, 720] deg",
+        ),
+        (
+            "a slow joint",
+            kr6.replacen("max_speed_deg_s = 360.0", "max_speed_deg_s = 1e-6", 1),
+            "joint 1: max_speed_deg_s: 1e-6 is outside the plausible range [0.1, 10000] deg/s",
+        ),
+        (
+            "a length in millimetres",
+            kr6.replacen("xyz_m = [0.0, 0.0, 0.400]", "xyz_m = [0.0, 0.0, 400.0]", 1),
+            "joint 1: xyz_m: 400 is outside the plausible range [-10, 10] m",
+        ),
+        (
+            "a rotation past a turn",
+            kr6.replacen("rpy_deg = [0.0, 90.0, 0.0]", "rpy_deg = [0.0, 900.0, 0.0]", 1),
+            "flange.rpy_deg: 900",
+        ),
+        (
+            "a zero past two turns",
+            kr6.replacen("zero_deg = [0.0,", "zero_deg = [1e300,", 1),
+            "controller.zero_deg",
+        ),
+        (
+            "a stage-1 angle past two turns",
+            kr6.replacen("pose_deg = [-90.0,", "pose_deg = [-9000.0,", 1),
+            "stage1.pose_deg",
+        ),
+        (
+            "counts per degree of 1e308",
+            kr6.replacen(
+                "offset_unit = \"deg\"",
+                "offset_unit = \"counts\"\ncounts_per_deg = [1e308, 1, 1, 1, 1, 1]",
+                1,
+            ),
+            "controller.counts_per_deg: 1e308 is outside the plausible range [0.001, 1000000000] counts/deg",
+        ),
+        (
+            "a gear ratio of 0",
+            kr6.replacen(
+                "offset_unit = \"deg\"",
+                "offset_unit = \"motor_rad\"\ngear_ratio = [0, 1, 1, 1, 1, 1]",
+                1,
+            ),
+            "controller.gear_ratio: 0 is outside",
+        ),
+        (
+            "a ten-megabyte name",
+            kr6.replacen(
+                "name = \"kuka-kr6-r900-sixx\"",
+                &format!("name = \"{}\"", "k".repeat(10 << 20)),
+                1,
+            ),
+            "name: longer than 32 bytes",
+        ),
+        (
+            "a long title",
+            kr6.replacen("title = \"", &format!("title = \"{}", "T".repeat(200)), 1),
+            "title: longer than 120 characters",
+        ),
+        (
+            "a long joint name",
+            kr6.replacen("name = \"A5\"", &format!("name = \"{}\"", "A".repeat(17)), 1),
+            "joint 5: name: longer than 16 characters",
+        ),
+        (
+            "a heavy link",
+            kr6.replacen(
+                "max_speed_deg_s = 388.0",
+                "max_speed_deg_s = 388.0\nmass_kg = 2e4\ncom_m = [0, 0, 0]",
+                1,
+            ),
+            "joint 5: mass_kg: 20000",
+        ),
+    ];
+    for (what, text, expected) in cases {
+        assert!(parse(kr6).is_ok(), "the KR 6 itself reads");
+        let e = parse(&text)
+            .err()
+            .unwrap_or_else(|| panic!("{what}: accepted"));
+        let e = e.to_string();
+        assert!(e.contains(expected), "{what}: {e}");
+        assert!(
+            e.len() < 300,
+            "{what}: the message repeats the input: {} bytes",
+            e.len()
+        );
+    }
+}

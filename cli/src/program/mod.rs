@@ -370,26 +370,43 @@ impl Stamp {
 }
 
 /// Splits `text` into pieces of at most `max` characters at spaces where it can.
+///
+/// Linear in the text: each character is looked at a fixed number of times (a word
+/// longer than `max` is cut as it is read, never re-counted).
 pub fn pieces(text: &str, max: usize) -> Vec<String> {
+    let max = max.max(1);
     let mut out = Vec::new();
     let mut line = String::new();
+    let mut line_chars = 0;
     for word in text.split_whitespace() {
-        let mut w = word.to_owned();
-        while w.chars().count() > max {
+        let word_chars = word.chars().count();
+        if word_chars > max {
             if !line.is_empty() {
                 out.push(std::mem::take(&mut line));
             }
-            let head: String = w.chars().take(max).collect();
-            w = w.chars().skip(max).collect();
-            out.push(head);
-        }
-        if line.is_empty() {
-            line = w;
-        } else if line.chars().count() + 1 + w.chars().count() <= max {
+            let mut head = String::new();
+            let mut head_chars = 0;
+            for c in word.chars() {
+                if head_chars == max {
+                    out.push(std::mem::take(&mut head));
+                    head_chars = 0;
+                }
+                head.push(c);
+                head_chars += 1;
+            }
+            // The word's tail starts the next line.
+            line = head;
+            line_chars = head_chars;
+        } else if line.is_empty() {
+            line.push_str(word);
+            line_chars = word_chars;
+        } else if line_chars + 1 + word_chars <= max {
             line.push(' ');
-            line.push_str(&w);
+            line.push_str(word);
+            line_chars += 1 + word_chars;
         } else {
-            out.push(std::mem::replace(&mut line, w));
+            out.push(std::mem::replace(&mut line, word.to_owned()));
+            line_chars = word_chars;
         }
     }
     if !line.is_empty() {
@@ -403,8 +420,7 @@ pub fn pieces(text: &str, max: usize) -> Vec<String> {
 /// # Errors
 /// An unreadable file, a malformed row (naming the line), another robot's plan.
 pub fn read_plan(path: &Path, profile: &Profile) -> Result<Vec<[f64; JOINTS]>, CliError> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
+    let text = crate::input::read_capped(path, crate::input::MAX_PLAN_BYTES, "plan")?;
     parse_plan(&text, path, profile)
 }
 
@@ -870,11 +886,62 @@ pub fn render(session: &Session, format: Format) -> Result<Files, CliError> {
     })
 }
 
+/// Refuses an output path whose folder does not exist, for every format alike:
+/// zerocal makes no folders but a VAL3 project's own, so a mistyped path is refused,
+/// not created. Checked before anything is planned.
+///
+/// # Errors
+/// The folder `out` lies in does not exist.
+pub fn output_folder(out: &Path) -> Result<(), CliError> {
+    let folder = out
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    if folder.is_dir() {
+        Ok(())
+    } else {
+        Err(CliError::Input(format!(
+            "cannot write {}: the folder {} does not exist (zerocal makes none); nothing was written",
+            out.display(),
+            folder.display()
+        )))
+    }
+}
+
+/// Where each of a program's files goes, the same way for every format: `--out`
+/// itself for a one-file format, files inside the project folder `--out` for VAL3
+/// (made if missing, in a folder [`output_folder`] checked).
+///
+/// # Errors
+/// A VAL3 project folder that cannot be made.
+pub fn destinations<'a>(
+    out: &Path,
+    format: Format,
+    files: &'a Files,
+) -> Result<Vec<(PathBuf, &'a str)>, CliError> {
+    if format != Format::Val3 {
+        return Ok(files
+            .first()
+            .map(|(_, text)| (out.to_path_buf(), text.as_str()))
+            .into_iter()
+            .collect());
+    }
+    if !out.is_dir() {
+        std::fs::create_dir(out)
+            .map_err(|e| CliError::Input(format!("cannot create {}: {e}", out.display())))?;
+    }
+    Ok(files
+        .iter()
+        .map(|(file, text)| (out.join(file), text.as_str()))
+        .collect())
+}
+
 /// Runs `zerocal program`: writes the program and says what it wrote.
 ///
 /// # Errors
 /// As [`build`]; an unreadable plan; a file that cannot be written.
 pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
+    output_folder(&args.out)?;
     let profile = crate::robot::load(&args.robot)?;
     let poses_rad: Vec<[f64; JOINTS]> = match &args.plan {
         Some(path) => read_plan(path, &profile)?
@@ -886,22 +953,11 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
     let name = program_name(&args.out, args.format.max_name());
     let session = build(profile, &poses_rad, args.format, name, &args.timing)?;
     let files = render(&session, args.format)?;
-    let write = |path: &Path, text: &str| {
-        std::fs::write(path, text)
-            .map_err(|e| CliError::Input(format!("cannot write {}: {e}", path.display())))
-    };
     let mut written = Vec::new();
-    if args.format == Format::Val3 {
-        std::fs::create_dir_all(&args.out)
-            .map_err(|e| CliError::Input(format!("cannot create {}: {e}", args.out.display())))?;
-        for (file, text) in &files {
-            let p = args.out.join(file);
-            write(&p, text)?;
-            written.push(p.display().to_string());
-        }
-    } else if let Some((_, text)) = files.first() {
-        write(&args.out, text)?;
-        written.push(args.out.display().to_string());
+    for (path, text) in destinations(&args.out, args.format, &files)? {
+        std::fs::write(&path, text)
+            .map_err(|e| CliError::Input(format!("cannot write {}: {e}", path.display())))?;
+        written.push(path.display().to_string());
     }
     let t = &session.time;
     Ok(format!(
@@ -968,5 +1024,14 @@ mod tests {
         for p in pieces(&"word ".repeat(40), 20) {
             assert!(p.chars().count() <= 20);
         }
+        assert_eq!(pieces("ab abcdefgh x", 3), ["ab", "abc", "def", "gh", "x"]);
+        // Ten million characters in one word (a long name): linear, so well under a
+        // second where the quadratic cut took minutes; nothing lost.
+        let long = "k".repeat(10_000_000);
+        let start = std::time::Instant::now();
+        let cut = pieces(&long, 60);
+        assert!(start.elapsed().as_secs_f64() < 5.0, "{:?}", start.elapsed());
+        assert_eq!(cut.concat(), long);
+        assert!(cut.iter().all(|p| p.chars().count() <= 60));
     }
 }
