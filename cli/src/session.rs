@@ -115,8 +115,8 @@ pub fn read_export(text: &str) -> Result<Export, String> {
                 approaches.extend(reader.approach());
             }
             LogLine::Comment(c) => {
-                let item = parse_meta::<f64>(c, reader.line(), parse_number)
-                    .map_err(|e| e.to_string())?;
+                let item =
+                    parse_meta::<f64>(c, reader.line(), parse_number).map_err(|e| e.to_string())?;
                 if let Some(item) = &item {
                     keys.note(item, reader.line()).map_err(|e| e.to_string())?;
                 }
@@ -317,8 +317,8 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         }
     };
     let verdict = Verdict::judge(&solution.fit, &config, outcome.stage1.as_ref());
-    let unknown_offset = unknown_offset_half_width(&readings, &config)
-        .map_err(|e| refused(e, &export))?;
+    let unknown_offset =
+        unknown_offset_half_width(&readings, &config).map_err(|e| refused(e, &export))?;
     let mut budget = budget(
         &solution,
         &export.poses,

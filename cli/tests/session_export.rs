@@ -135,7 +135,10 @@ fn an_unknown_metadata_key_is_refused_by_name_and_line() {
     refused(
         "misspelt.csv",
         &text.replacen("# stage0_reversal_deg", "# stage0_reversal_dge", 1),
-        &[&format!("line {n}"), "unknown metadata key 'stage0_reversal_dge'"],
+        &[
+            &format!("line {n}"),
+            "unknown metadata key 'stage0_reversal_dge'",
+        ],
     );
     // Free comments (no '_' or digit in the first word) stay allowed.
     let commented = text.replacen(
@@ -243,10 +246,7 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
     refused(
         "lone.csv",
         &edited,
-        &[
-            &format!("line {}", header + 5),
-            "captured only from below",
-        ],
+        &[&format!("line {}", header + 5), "captured only from below"],
     );
 }
 
@@ -294,14 +294,20 @@ fn a_byte_order_mark_is_dropped_and_non_utf8_is_named() {
     let out = session(&write("latin1.csv", &latin1), &[]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("line 2, byte 11") && err.contains("not UTF-8"), "{err}");
+    assert!(
+        err.contains("line 2, byte 11") && err.contains("not UTF-8"),
+        "{err}"
+    );
 }
 
 /// Another robot's profile is refused by name before solving.
 #[test]
 fn another_robots_profile_is_refused_by_name() {
     let text = simulated(&WorldConfig::real(), 38).export_text("kuka-kr6-r900-sixx");
-    let out = session(&write("robot.csv", text.as_bytes()), &["--robot", "abb-irb140"]);
+    let out = session(
+        &write("robot.csv", text.as_bytes()),
+        &["--robot", "abb-irb140"],
+    );
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(

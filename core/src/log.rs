@@ -1306,4 +1306,133 @@ mod tests {
             );
         }
     }
+
+    #[test]
+    fn the_export_reader_refuses_unknown_columns_and_reads_the_approach() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        let row = "0,-90,1,2,3,4,0.1,0.2,25.00";
+        let mut r = LogReader::for_export();
+        assert_eq!(r.feed::<f64>(EXPORT_HEADER, parse), Ok(LogLine::Header));
+        for (side, approach) in [
+            ("below", Approach::FromBelow),
+            ("above", Approach::FromAbove),
+        ] {
+            assert!(matches!(
+                r.feed::<f64>(&format!("{row},{side}"), parse),
+                Ok(LogLine::Pose(_))
+            ));
+            assert_eq!(r.approach(), Some(approach));
+        }
+        assert_eq!(
+            r.feed::<f64>(&format!("{row},sideways"), parse),
+            Err(LogError::BadApproach { line: 4 })
+        );
+        // A stage-2 log ignores a column it does not know; an export names it.
+        let header = format!("{LOG_HEADER},j7_deg");
+        assert_eq!(
+            LogReader::new().feed::<f64>(&header, parse),
+            Ok(LogLine::Header)
+        );
+        let e = LogReader::for_export().feed::<f64>(&header, parse);
+        assert_eq!(
+            e,
+            Err(LogError::UnknownColumn {
+                line: 1,
+                column: ShortText::new("j7_deg")
+            })
+        );
+        let text = e.unwrap_err().to_string();
+        assert!(
+            text.contains("line 1") && text.contains("'j7_deg'"),
+            "{text}"
+        );
+        // A row written by the pendant's writer reads back with its side.
+        let p = PoseReading {
+            joints_rad: [0.0, -1.5, 0.1, -2.9, 0.3, 3.0],
+            reading: Tilt::new(0.01, -0.02),
+            temperature_c: None,
+        };
+        let mut w = Line::new();
+        write_export_row(&mut w, &p, Approach::FromAbove).unwrap();
+        let mut r = LogReader::for_export();
+        r.feed::<f64>(EXPORT_HEADER, parse).unwrap();
+        assert!(matches!(r.feed::<f64>(&w, parse), Ok(LogLine::Pose(_))));
+        assert_eq!(r.approach(), Some(Approach::FromAbove));
+    }
+
+    #[test]
+    fn keys_are_known_once_and_free_comments_stay_free() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        // The free lines the pendant writes, and a user's.
+        for free in [
+            "zerocal pendant export: read it with 'zerocal session'",
+            "stage 1 temperature not recorded",
+            "closing reversal not made",
+            "refused: stage 2: too few poses",
+            "Messung am Montag",
+        ] {
+            assert_eq!(metadata_key(free), None, "{free}");
+            assert_eq!(parse_meta::<f64>(free, 1, parse), Ok(None), "{free}");
+        }
+        // The informational keys are known, and not needed.
+        assert_eq!(
+            parse_meta::<f64>("stage2 offsets_deg 1,2,3,4", 1, parse),
+            Ok(None)
+        );
+        for misspelt in [
+            "stage0_bias_dge 1,2",
+            "stage0bias_deg none",
+            "fit_extra none",
+        ] {
+            let e = parse_meta::<f64>(misspelt, 9, parse);
+            let key = misspelt.split(' ').next().unwrap();
+            assert_eq!(
+                e,
+                Err(LogError::UnknownKey {
+                    line: 9,
+                    key: ShortText::new(key)
+                }),
+                "{misspelt}"
+            );
+        }
+        let mut keys = MetaKeys::default();
+        let bias = MetaItem::<f64>::Bias(None);
+        assert_eq!(keys.note(&bias, 3), Ok(()));
+        assert_eq!(keys.note(&MetaItem::Stage1Temperature(20.0), 4), Ok(()));
+        let reversal = MetaItem::Stage0Reversal(ClosingReversal {
+            reversal: Reversal {
+                first: Tilt::new(0.0, 0.0),
+                second: Tilt::new(0.0, 0.0),
+            },
+            temperature_c: None,
+        });
+        // Stage 0 twice, whichever key the second uses.
+        assert_eq!(
+            keys.note(&reversal, 7),
+            Err(LogError::DuplicateKey {
+                line: 7,
+                key: "stage0_reversal_deg",
+                first_line: 3
+            })
+        );
+        assert!(keys.note(&MetaItem::Stage1Temperature(21.0), 8).is_err());
+    }
+
+    #[test]
+    fn text_drops_a_byte_order_mark_and_names_a_bad_byte() {
+        assert_eq!(text_of(b"\xEF\xBB\xBF# a\nb"), Ok("# a\nb"));
+        assert_eq!(strip_bom("\u{feff}x"), "x");
+        assert_eq!(
+            text_of(b"# a\nj3_deg,\xE9\n"),
+            Err(LogError::NotUtf8 { line: 2, column: 8 })
+        );
+        assert_eq!(
+            text_of(b"\xFF"),
+            Err(LogError::NotUtf8 { line: 1, column: 1 })
+        );
+        // A quoted word keeps at most its capacity, cut at a character boundary.
+        let long = "\u{e9}".repeat(40);
+        assert_eq!(ShortText::new(&long).as_str().len(), ShortText::CAPACITY);
+        assert_eq!(ShortText::new("ab\u{20ac}").as_str(), "ab\u{20ac}");
+    }
 }

@@ -501,8 +501,7 @@ pub fn step<T: Real>(
                 // gear's backlash, half the lost motion off the middle the two sides'
                 // mean finds (docs/error-budget.md), and nothing downstream could tell.
                 if s.cursor % 2 == 1
-                    && s
-                        .captures
+                    && s.captures
                         .last()
                         .is_some_and(|(index, _)| usize::from(*index) + 1 == s.cursor)
                 {

@@ -576,11 +576,8 @@ pub fn one_sided_pose<T: Real>(
         let same = |j: &usize| poses[*j].joints_rad == poses[i].joints_rad;
         match approaches {
             Some(a) => {
-                let side = |s: Approach| {
-                    (0..poses.len())
-                        .filter(same)
-                        .any(|j| a.get(j) == Some(&s))
-                };
+                let side =
+                    |s: Approach| (0..poses.len()).filter(same).any(|j| a.get(j) == Some(&s));
                 !(side(Approach::FromBelow) && side(Approach::FromAbove))
             }
             None => (0..poses.len()).filter(same).count() < 2,
@@ -679,5 +676,55 @@ fn combine<T: Real>(
         offsets_rad,
         covariance_rad2: cov,
         variance_shares_rad2: shares,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(joints_deg: [f64; 6]) -> PoseReading<f64> {
+        PoseReading {
+            joints_rad: joints_deg.map(f64::to_radians),
+            reading: Tilt::new(0.0, 0.0),
+            temperature_c: None,
+        }
+    }
+
+    #[test]
+    fn a_pose_needs_both_sides() {
+        use Approach::{FromAbove as Up, FromBelow as Down};
+        let (a, b) = (
+            at([0.0, -90.0, 10.0, 0.0, 0.0, 0.0]),
+            at([0.0, -90.0, 20.0, 0.0, 0.0, 0.0]),
+        );
+        let poses = [a, a, b, b];
+        assert_eq!(one_sided_pose(&poses, Some(&[Down, Up, Down, Up])), None);
+        // Two captures of the second pose, both from below.
+        assert_eq!(
+            one_sided_pose(&poses, Some(&[Down, Up, Down, Down])),
+            Some(2)
+        );
+        // Without the column: a pose captured once has no second side.
+        assert_eq!(one_sided_pose(&poses, None), None);
+        assert_eq!(one_sided_pose(&[a, a, b], None), Some(2));
+    }
+
+    #[test]
+    fn joint_2_must_stay_where_stage_1_had_it() {
+        let turn = AxisOneTurn {
+            before: Tilt::new(0.0, 0.0),
+            after: Tilt::new(0.0, 0.0),
+            j1_rad: 0.0,
+            j2_rad: (-90.0f64).to_radians(),
+        };
+        // Within the tolerance, and joint 1 elsewhere (the model follows joint 1).
+        let near = -90.0 + 0.5 * STAGE1_JOINT2_TOLERANCE_DEG;
+        let poses = [
+            at([5.0, near, 10.0, 0.0, 0.0, 0.0]),
+            at([0.0, -89.5, 10.0, 0.0, 0.0, 0.0]),
+        ];
+        assert_eq!(stage1_joint2_mismatch(&turn, &poses[..1]), None);
+        assert_eq!(stage1_joint2_mismatch(&turn, &poses), Some(1));
     }
 }
