@@ -602,9 +602,11 @@ pub fn stage1_joint2_mismatch<T: Real>(
     poses: &[PoseReading<T>],
 ) -> Option<usize> {
     let tolerance = crate::real::deg_to_rad(T::lit(STAGE1_JOINT2_TOLERANCE_DEG));
-    poses
-        .iter()
-        .position(|p| !((p.joints_rad[1] - stage1.j2_rad).abs() <= tolerance))
+    poses.iter().position(|p| {
+        let off = (p.joints_rad[1] - stage1.j2_rad).abs();
+        // A non-finite joint disagrees too.
+        !off.is_finite() || off > tolerance
+    })
 }
 
 /// The gain and cross-axis terms a fit estimated (zero where not estimated).
