@@ -153,7 +153,9 @@ pub fn read_export(text: &str) -> Result<Export, String> {
 fn check_rows(export: &Export, stage1: &AxisOneTurn<f64>) -> Result<(), String> {
     if let Some(i) = stage1_joint2_mismatch(stage1, &export.poses) {
         return Err(format!(
-            "line {}: joint 2 at {} deg, but stage 1's j2_deg (line {}) says {} deg: stage 2 runs              with joint 2 where stage 1 had it (tolerance {STAGE1_JOINT2_TOLERANCE_DEG} deg), and a wrong              record would move Δθ2 and Δθ3 by its error unseen; correct the export",
+            "line {}: joint 2 at {} deg, but stage 1's j2_deg (line {}) says {} deg: stage 2 runs \
+             with joint 2 where stage 1 had it (tolerance {STAGE1_JOINT2_TOLERANCE_DEG} deg), and a wrong \
+             record would move Δθ2 and Δθ3 by its error unseen; correct the export",
             export.lines.get(i).copied().unwrap_or(0),
             export.poses[i].joints_rad[1].to_degrees(),
             export.stage1_line,
@@ -164,13 +166,17 @@ fn check_rows(export: &Export, stage1: &AxisOneTurn<f64>) -> Result<(), String> 
         let how = match &export.approaches {
             Some(a) => format!(
                 "captured only from {}",
-                a.get(i).map_or("one side", |s| zerocal_core::log::approach_name(*s))
+                a.get(i)
+                    .map_or("one side", |s| zerocal_core::log::approach_name(*s))
             ),
-            None => "captured once (an export without the approach column: every pose must be                      captured twice, from below and from above)"
+            None => "captured once (an export without the approach column: every pose must be \
+             captured twice, from below and from above)"
                 .to_owned(),
         };
         return Err(format!(
-            "line {}: the pose there is {how}: its reading sits on one side of every gear's              backlash, up to half the lost motion off its zero, which no budget term covers;              capture it from both sides or leave it out",
+            "line {}: the pose there is {how}: its reading sits on one side of every gear's \
+             backlash, up to half the lost motion off its zero, which no budget term covers; \
+             capture it from both sides or leave it out",
             export.lines.get(i).copied().unwrap_or(0)
         ));
     }
@@ -317,8 +323,14 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         }
     };
     let verdict = Verdict::judge(&solution.fit, &config, outcome.stage1.as_ref());
-    let unknown_offset =
-        unknown_offset_half_width(&readings, &config).map_err(|e| refused(e, &export))?;
+    let unknown_offset = unknown_offset_half_width(&readings, &config).map_err(|e| {
+        CliError::Refused(name(&format!(
+            "no stage-0 reversal, and with the sensor's x offset at either end of its \
+                 specification (+/-{:.3} deg) the session is refused ({e}), so how far the \
+                 offsets move with it is not known: run stage 0 (the bench reversal)",
+            sensor_offset_x_spec_deg()
+        )))
+    })?;
     let mut budget = budget(
         &solution,
         &export.poses,
@@ -344,7 +356,10 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             .map(|(k, v)| format!("j{} +/-{:.3} deg", k + 2, v.to_degrees()))
             .collect();
         notes.push(format!(
-            "no stage-0 reversal: the sensor's x offset is unknown, within +/-{:.2} deg (the              SCL3300's offset specification), and the offsets were solved taking it as 0; across              that range they move by {}, which the budget carries as the term '{}' (uniform).              Run stage 0 (the bench reversal) to measure it",
+            "no stage-0 reversal: the sensor's x offset is unknown, within +/-{:.2} deg (the \
+             SCL3300's offset specification), and the offsets were solved taking it as 0; across \
+             that range they move by {}, which the budget carries as the term '{}' (uniform). \
+             Run stage 0 (the bench reversal) to measure it",
             sensor_offset_x_spec_deg(),
             if names.is_empty() {
                 "less than 0.0005 deg".to_owned()
