@@ -5,8 +5,14 @@
 //!
 //! Everything comes from the file: the robot, the convention, stage 0's bias and
 //! stage 1's readings with the joints they were taken at. Nothing is retyped, so the
-//! hand-over cannot be got wrong (METHOD.md: stage 1's tilt composes with joint 2's
-//! recorded angle).
+//! hand-over cannot be got wrong (stage 1's tilt composes with joint 2's recorded
+//! angle).
+//!
+//! Nothing in the file is ignored or guessed at: an unknown column or metadata key, a
+//! key given twice, rows whose joint 2 is not stage 1's, a pose captured from one side
+//! only, another robot's `--robot` and bytes that are not UTF-8 are refused, naming the
+//! line (and key, column or byte). A session without a stage-0 reversal is solved, with
+//! the sensor's unknown x offset in its budget and a note saying so.
 
 use crate::args::RealIn;
 use crate::error::CliError;
