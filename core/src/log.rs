@@ -996,7 +996,7 @@ pub fn metadata_key(comment: &str) -> Option<&str> {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MetaKeys {
     /// The line each item was first given on (0: not yet).
-    first_line: [usize; 7],
+    first_line: [usize; 6],
 }
 
 impl MetaKeys {
