@@ -3,7 +3,7 @@
 //! standard library's correctly rounded number parser.
 
 use std::io::Read;
-use zerocal_core::log::{LogLine, LogReader};
+use zerocal_core::log::{text_of, LogLine, LogReader};
 use zerocal_core::stage2::PoseReading;
 
 /// A parsed log: the poses and the file line of each (for error messages).
@@ -22,15 +22,17 @@ pub fn parse_number(text: &str) -> Option<f64> {
     text.parse().ok()
 }
 
-/// Reads a log. Errors name the line and the column.
+/// Reads a log (UTF-8, a leading byte-order mark dropped). Errors name the line and
+/// the column.
 ///
 /// # Errors
 /// An unreadable file, or what [`LogReader`] refuses.
 pub fn read_log(mut input: impl Read) -> Result<Log, String> {
-    let mut text = String::new();
+    let mut bytes = Vec::new();
     input
-        .read_to_string(&mut text)
+        .read_to_end(&mut bytes)
         .map_err(|e| format!("cannot read the log: {e}"))?;
+    let text = text_of(&bytes).map_err(|e| e.to_string())?;
     let mut reader = LogReader::new();
     let mut log = Log::default();
     for line in text.lines() {

@@ -5,8 +5,14 @@
 //!
 //! Everything comes from the file: the robot, the convention, stage 0's bias and
 //! stage 1's readings with the joints they were taken at. Nothing is retyped, so the
-//! hand-over cannot be got wrong (METHOD.md: stage 1's tilt composes with joint 2's
-//! recorded angle).
+//! hand-over cannot be got wrong (stage 1's tilt composes with joint 2's recorded
+//! angle).
+//!
+//! Nothing in the file is ignored or guessed at: an unknown column or metadata key, a
+//! key given twice, rows whose joint 2 is not stage 1's, a pose captured from one side
+//! only, another robot's `--robot` and bytes that are not UTF-8 are refused, naming the
+//! line (and key, column or byte). A session without a stage-0 reversal is solved, with
+//! the sensor's unknown x offset in its budget and a note saying so.
 
 use crate::args::RealIn;
 use crate::error::CliError;
@@ -15,13 +21,15 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use zerocal_core::log::{parse_meta, LogLine, LogReader, MetaItem};
+use zerocal_core::log::{parse_meta, strip_bom, text_of, LogLine, LogReader, MetaItem, MetaKeys};
 use zerocal_core::model::{Convention, JOINTS};
+use zerocal_core::procedure::Approach;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
-    budget, solve, BiasSource, Budget, BudgetInputs, BudgetTerm, SessionError, SessionReadings,
-    SessionSolution, StageTemperatures, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
-    SESSION_JOINTS,
+    budget, one_sided_pose, sensor_offset_x_spec_deg, solve, stage1_joint2_mismatch,
+    unknown_offset_half_width, BiasSource, Budget, BudgetInputs, BudgetTerm, SessionError,
+    SessionReadings, SessionSolution, StageTemperatures, DEFAULT_LOST_MOTION_DEG,
+    DEFAULT_REPEATABILITY_DEG, SESSION_JOINTS, STAGE1_JOINT2_TOLERANCE_DEG,
 };
 use zerocal_core::stage0::ClosingReversal;
 use zerocal_core::stage1::AxisOneTurn;
@@ -70,18 +78,28 @@ pub struct Export {
     pub closing: Option<ClosingReversal<f64>>,
     /// `# fit_extras`: the pendant's model.
     pub extras: Option<zerocal_core::stage2::Extras>,
+    /// The line of `# stage1_readings_deg` (0: none).
+    pub stage1_line: usize,
     /// The stage-2 rows.
     pub poses: Vec<PoseReading<f64>>,
     /// Their lines.
     pub lines: Vec<usize>,
+    /// Each row's `approach`, where the export has the column (exports written before
+    /// it have not).
+    pub approaches: Option<Vec<Approach>>,
 }
 
-/// Reads a pendant export.
+/// Reads a pendant export, strictly ([`LogReader::for_export`], [`MetaKeys`]): an
+/// unknown column or metadata key, or a key given twice, is refused by name and line.
+/// A leading byte-order mark is dropped.
 ///
 /// # Errors
 /// A malformed row or metadata line (naming the line).
 pub fn read_export(text: &str) -> Result<Export, String> {
-    let mut reader = LogReader::new();
+    let text = strip_bom(text);
+    let mut reader = LogReader::for_export();
+    let mut keys = MetaKeys::default();
+    let mut approaches = Vec::new();
     let mut export = Export {
         robot: None,
         bias: None,
@@ -90,24 +108,33 @@ pub fn read_export(text: &str) -> Result<Export, String> {
         stage1_temperature_c: None,
         closing: None,
         extras: None,
+        stage1_line: 0,
         poses: Vec::new(),
         lines: Vec::new(),
+        approaches: None,
     };
     for line in text.lines() {
         match reader.feed(line, parse_number).map_err(|e| e.to_string())? {
             LogLine::Pose(p) => {
                 export.poses.push(p);
                 export.lines.push(reader.line());
+                approaches.extend(reader.approach());
             }
             LogLine::Comment(c) => {
-                match parse_meta::<f64>(c, reader.line(), parse_number)
-                    .map_err(|e| e.to_string())?
-                {
+                let item =
+                    parse_meta::<f64>(c, reader.line(), parse_number).map_err(|e| e.to_string())?;
+                if let Some(item) = &item {
+                    keys.note(item, reader.line()).map_err(|e| e.to_string())?;
+                }
+                match item {
                     Some(MetaItem::Robot(name, conv)) => {
                         export.robot = Some((name.as_str().to_owned(), conv));
                     }
                     Some(MetaItem::Bias(b)) => export.bias = Some(b),
-                    Some(MetaItem::Stage1(s)) => export.stage1 = Some(s),
+                    Some(MetaItem::Stage1(s)) => {
+                        export.stage1 = Some(s);
+                        export.stage1_line = reader.line();
+                    }
                     Some(MetaItem::Stage0Reversal(r)) => export.stage0 = Some(r),
                     Some(MetaItem::Stage1Temperature(t)) => export.stage1_temperature_c = Some(t),
                     Some(MetaItem::Closing(r)) => export.closing = Some(r),
@@ -119,7 +146,47 @@ pub fn read_export(text: &str) -> Result<Export, String> {
         }
     }
     reader.finish().map_err(|e| e.to_string())?;
+    // The reader has the column for every row or for none.
+    if reader.has_column("approach") {
+        export.approaches = Some(approaches);
+    }
     Ok(export)
+}
+
+/// Refuses an export whose rows contradict its metadata or that the solver would get
+/// silently wrong: rows at another joint 2 than stage 1's, a pose captured from one
+/// side only.
+fn check_rows(export: &Export, stage1: &AxisOneTurn<f64>) -> Result<(), String> {
+    if let Some(i) = stage1_joint2_mismatch(stage1, &export.poses) {
+        return Err(format!(
+            "line {}: joint 2 at {} deg, but stage 1's j2_deg (line {}) says {} deg: stage 2 runs \
+             with joint 2 where stage 1 had it (tolerance {STAGE1_JOINT2_TOLERANCE_DEG} deg), and a wrong \
+             record would move Δθ2 and Δθ3 by its error unseen; correct the export",
+            export.lines.get(i).copied().unwrap_or(0),
+            export.poses[i].joints_rad[1].to_degrees(),
+            export.stage1_line,
+            stage1.j2_rad.to_degrees()
+        ));
+    }
+    if let Some(i) = one_sided_pose(&export.poses, export.approaches.as_deref()) {
+        let how = match &export.approaches {
+            Some(a) => format!(
+                "captured only from {}",
+                a.get(i)
+                    .map_or("one side", |s| zerocal_core::log::approach_name(*s))
+            ),
+            None => "captured once (an export without the approach column: every pose must be \
+             captured twice, from below and from above)"
+                .to_owned(),
+        };
+        return Err(format!(
+            "line {}: the pose there is {how}: its reading sits on one side of every gear's \
+             backlash, up to half the lost motion off its zero, which no budget term covers; \
+             capture it from both sides or leave it out",
+            export.lines.get(i).copied().unwrap_or(0)
+        ));
+    }
+    Ok(())
 }
 
 /// One joint in the `--json` output.
@@ -200,20 +267,29 @@ pub struct SessionJson {
 /// An unreadable or malformed export, an unknown robot (status 2); a session the solver
 /// refuses (status 3).
 pub fn run(args: &SessionArgs) -> Result<String, CliError> {
-    let text = std::fs::read_to_string(&args.export)
-        .map_err(|e| CliError::Input(format!("{}: {e}", args.export.display())))?;
-    let export = read_export(&text)
+    let bytes = std::fs::read(&args.export)
         .map_err(|e| CliError::Input(format!("{}: {e}", args.export.display())))?;
     let name = |what: &str| format!("{}: {what}", args.export.display());
+    let text = text_of(&bytes).map_err(|e| CliError::Input(name(&e.to_string())))?;
+    let export = read_export(text).map_err(|e| CliError::Input(name(&e)))?;
     let (robot_name, convention) = export.robot.clone().ok_or_else(|| {
         CliError::Input(name(
             "no `# robot … convention …` line: not a pendant export",
         ))
     })?;
     let profile = crate::robot::load(args.robot.as_deref().unwrap_or(&robot_name))?;
+    // Another robot's profile fits another arm: the solver would fail to converge or,
+    // worse, converge on wrong numbers. A profile file of the same robot is welcome.
+    if profile.name != robot_name {
+        return Err(CliError::Input(name(&format!(
+            "export is for robot {robot_name}, --robot says {}",
+            profile.name
+        ))));
+    }
     let stage1 = export.stage1.flatten().ok_or_else(|| {
         CliError::Refused(name("stage 1 was not completed (no stage-1 readings)"))
     })?;
+    check_rows(&export, &stage1).map_err(|e| CliError::Input(name(&e)))?;
     // The reversal's own readings where the export has them (the drift model needs
     // their temperature), else the bias it computed.
     let bias = match (export.stage0, export.bias.flatten()) {
@@ -253,7 +329,15 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         }
     };
     let verdict = Verdict::judge(&solution.fit, &config, outcome.stage1.as_ref());
-    let budget = budget(
+    let unknown_offset = unknown_offset_half_width(&readings, &config).map_err(|e| {
+        CliError::Refused(name(&format!(
+            "no stage-0 reversal, and with the sensor's x offset at either end of its \
+                 specification (+/-{:.3} deg) the session is refused ({e}), so how far the \
+                 offsets move with it is not known: run stage 0 (the bench reversal)",
+            sensor_offset_x_spec_deg()
+        )))
+    })?;
+    let mut budget = budget(
         &solution,
         &export.poses,
         &BudgetInputs {
@@ -269,10 +353,26 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         profile.title,
         convention.name()
     )];
-    if args.robot.as_deref().is_some_and(|r| r != robot_name) {
+    if let Some(w) = unknown_offset {
+        budget.add_unknown_sensor_offset(&w);
+        let names: Vec<String> = w
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.to_degrees() >= 0.0005)
+            .map(|(k, v)| format!("j{} +/-{:.3} deg", k + 2, v.to_degrees()))
+            .collect();
         notes.push(format!(
-            "the export names {robot_name}; --robot {} was used instead",
-            profile.name
+            "no stage-0 reversal: the sensor's x offset is unknown, within +/-{:.2} deg (the \
+             SCL3300's offset specification), and the offsets were solved taking it as 0; across \
+             that range they move by {}, which the budget carries as the term '{}' (uniform). \
+             Run stage 0 (the bench reversal) to measure it",
+            sensor_offset_x_spec_deg(),
+            if names.is_empty() {
+                "less than 0.0005 deg".to_owned()
+            } else {
+                names.join(", ")
+            },
+            BudgetTerm::UnknownSensorOffset.name()
         ));
     }
     notes.extend(profile.missing.iter().map(|m| format!("profile: {m}")));

@@ -19,12 +19,20 @@
 //! after stage 2 that measures the bias' drift), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
 //! [`MetaItem`] the metadata the session solver needs.
 //!
+//! The export is read strictly, because a line it ignores can make a session silently
+//! wrong ([`LogReader::for_export`], [`MetaKeys`]): its header [`EXPORT_HEADER`] adds the
+//! `approach` column (`below` or `above`: the side every joint arrived from) and no
+//! other column may appear; a comment whose first word has the form of a key (lowercase
+//! letters, digits and `_`, with at least one digit or `_`, see [`metadata_key`]) is a
+//! metadata line, and must be a key of [`METADATA_KEYS`], given once; any other comment
+//! (the export's first line, `# closing reversal not made`, a user's note) is free text.
+//!
 //! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
 //! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
 
 use crate::decimal::Fixed;
 use crate::model::{Convention, Tilt};
-use crate::procedure::{ProcedureConfig, ProcedureState, ReadingSlot};
+use crate::procedure::{Approach, ProcedureConfig, ProcedureState, ReadingSlot};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
 use crate::stage0::{ClosingReversal, Reversal};
 use crate::stage1::AxisOneTurn;
@@ -36,16 +44,38 @@ pub type Line = heapless::String<192>;
 
 /// The columns a stage-2 log has, in the order the pendant writes them. The first six
 /// are required; `j1_deg` and `j2_deg` default to 0 (joints 1 and 2 where stage 1 had
-/// them, for a log of the paper's wrist), `temp_c` to unrecorded.
-pub const LOG_COLUMNS: [&str; 9] = [
+/// them, for a log of the paper's wrist), `temp_c` to unrecorded, `approach` (the
+/// export's: `below` or `above`) to unrecorded.
+pub const LOG_COLUMNS: [&str; 10] = [
     "j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg", "j1_deg", "j2_deg", "temp_c",
+    "approach",
 ];
+
+/// Index of `temp_c` in [`LOG_COLUMNS`].
+const TEMPERATURE_COLUMN: usize = 8;
+
+/// Index of `approach` in [`LOG_COLUMNS`].
+const APPROACH_COLUMN: usize = 9;
 
 /// How many of [`LOG_COLUMNS`] a log must have.
 const REQUIRED_COLUMNS: usize = 6;
 
-/// The header the pendant writes.
+/// The header of a stage-2 log.
 pub const LOG_HEADER: &str = "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c";
+
+/// The header of the pendant's export: a stage-2 log's, and the side each capture was
+/// approached from (`below` or `above`), so the desktop can tell a pose captured from
+/// one side only.
+pub const EXPORT_HEADER: &str =
+    "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c,approach";
+
+/// The `approach` column's word for each side.
+pub fn approach_name(a: Approach) -> &'static str {
+    match a {
+        Approach::FromBelow => "below",
+        Approach::FromAbove => "above",
+    }
+}
 
 /// Temperatures a log may hold (°C): the SCL3300's operating range is −40..+125 °C.
 pub const TEMPERATURE_RANGE_C: (f64, f64) = (-60.0, 150.0);
@@ -190,7 +220,7 @@ impl<T: Real> Export<'_, T> {
                 None => w.write_str("# closing reversal not made"),
             },
             9 => write_fit_extras(w, self.config.fit.extras),
-            _ => w.write_str(LOG_HEADER),
+            _ => w.write_str(EXPORT_HEADER),
         }
     }
 
@@ -236,14 +266,68 @@ impl<T: Real> Iterator for Export<'_, T> {
         let captures = self.state.captures();
         let r = if i < EXPORT_HEAD {
             self.head(i, &mut w)
-        } else if let Some((_, p)) = captures.get(i - EXPORT_HEAD) {
-            write_row(&mut w, p)
+        } else if let Some((index, p)) = captures.get(i - EXPORT_HEAD) {
+            write_export_row(&mut w, p, Approach::of(usize::from(*index)))
         } else if i == EXPORT_HEAD + captures.len() {
             self.tail(&mut w)?
         } else {
             return None;
         };
         Some(r.map(|()| w))
+    }
+}
+
+/// A word of the input quoted in an error (a key or a column name): its first
+/// [`ShortText::CAPACITY`] bytes, cut at a character boundary, so the error stays `Copy`
+/// and heap-free.
+#[derive(Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ShortText {
+    bytes: [u8; ShortText::CAPACITY],
+    len: u8,
+}
+
+impl ShortText {
+    /// Bytes kept.
+    pub const CAPACITY: usize = 32;
+
+    /// The first [`Self::CAPACITY`] bytes of `text` (fewer at a character boundary).
+    pub fn new(text: &str) -> Self {
+        let mut len = text.len().min(Self::CAPACITY);
+        while !text.is_char_boundary(len) {
+            len -= 1;
+        }
+        let mut bytes = [0; Self::CAPACITY];
+        bytes[..len].copy_from_slice(&text.as_bytes()[..len]);
+        ShortText {
+            bytes,
+            len: len as u8,
+        }
+    }
+
+    /// The text kept.
+    pub fn as_str(&self) -> &str {
+        // Cut at a character boundary of a `str`: valid UTF-8.
+        core::str::from_utf8(&self.bytes[..usize::from(self.len)]).unwrap_or("")
+    }
+}
+
+impl fmt::Debug for ShortText {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{:?}", self.as_str())
+    }
+}
+
+impl fmt::Display for ShortText {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+#[cfg(feature = "defmt")]
+impl defmt::Format for ShortText {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        defmt::write!(f, "{=str}", self.as_str());
     }
 }
 
@@ -307,6 +391,42 @@ pub enum LogError {
         /// The key.
         key: &'static str,
     },
+    /// A comment with the form of a metadata key ([`metadata_key`]) that is not one of
+    /// [`METADATA_KEYS`]: most likely a key misspelt, whose value would be lost.
+    UnknownKey {
+        /// The line.
+        line: usize,
+        /// The word.
+        key: ShortText,
+    },
+    /// A metadata key given a second time (which one holds would be a guess).
+    DuplicateKey {
+        /// The line of the second.
+        line: usize,
+        /// The key.
+        key: &'static str,
+        /// The line of the first (its key, or the other key of the same stage).
+        first_line: usize,
+    },
+    /// An export's header names a column the export does not have.
+    UnknownColumn {
+        /// The line of the header.
+        line: usize,
+        /// The column.
+        column: ShortText,
+    },
+    /// An `approach` field that is neither `below` nor `above`.
+    BadApproach {
+        /// The line.
+        line: usize,
+    },
+    /// Bytes that are not UTF-8 text.
+    NotUtf8 {
+        /// The line (1-based).
+        line: usize,
+        /// The byte offset within the line (1-based).
+        column: usize,
+    },
 }
 
 impl fmt::Display for LogError {
@@ -343,6 +463,30 @@ impl fmt::Display for LogError {
             LogError::BadMetadata { line, key } => {
                 write!(f, "line {line}: metadata '{key}' does not parse")
             }
+            LogError::UnknownKey { line, key } => write!(
+                f,
+                "line {line}: unknown metadata key '{key}' (known: {}); a free comment's first word has no '_' or digit",
+                KnownKeys
+            ),
+            LogError::DuplicateKey {
+                line,
+                key,
+                first_line,
+            } => write!(
+                f,
+                "line {line}: metadata '{key}' given again (first on line {first_line}): each may appear once"
+            ),
+            LogError::UnknownColumn { line, column } => write!(
+                f,
+                "line {line}: unknown column '{column}' (an export has {EXPORT_HEADER})"
+            ),
+            LogError::BadApproach { line } => {
+                write!(f, "line {line}: approach is neither 'below' nor 'above'")
+            }
+            LogError::NotUtf8 { line, column } => write!(
+                f,
+                "line {line}, byte {column}: not UTF-8 text (save the export as UTF-8 or ASCII)"
+            ),
         }
     }
 }
@@ -371,10 +515,14 @@ pub enum LogLine<'a, T> {
 pub struct LogReader {
     /// Field index of each of [`LOG_COLUMNS`] (`usize::MAX`: absent), once the header
     /// is read.
-    columns: Option<[usize; 9]>,
+    columns: Option<[usize; LOG_COLUMNS.len()]>,
     fields: usize,
     line: usize,
     poses: usize,
+    /// An export's reader: a column not in [`LOG_COLUMNS`] is refused.
+    strict: bool,
+    /// The `approach` of the row last read, where the log has the column.
+    approach: Option<Approach>,
 }
 
 impl Default for LogReader {
@@ -384,14 +532,30 @@ impl Default for LogReader {
 }
 
 impl LogReader {
-    /// Before the first line.
+    /// Before the first line of a stage-2 log (columns it does not know are ignored).
     pub fn new() -> Self {
         LogReader {
             columns: None,
             fields: 0,
             line: 0,
             poses: 0,
+            strict: false,
+            approach: None,
         }
+    }
+
+    /// Before the first line of the pendant's export: a column not in [`LOG_COLUMNS`]
+    /// is refused by name, as the desktop would otherwise solve without it.
+    pub fn for_export() -> Self {
+        LogReader {
+            strict: true,
+            ..Self::new()
+        }
+    }
+
+    /// The side the pose last read was approached from, where the log records it.
+    pub fn approach(&self) -> Option<Approach> {
+        self.approach
     }
 
     /// The number of the line last fed (1-based).
@@ -426,7 +590,7 @@ impl LogReader {
             return Ok(LogLine::Comment(comment.trim()));
         }
         let Some(columns) = self.columns else {
-            let mut columns = [usize::MAX; 9];
+            let mut columns = [usize::MAX; LOG_COLUMNS.len()];
             let mut fields = 0;
             for (i, name) in t.split(',').map(str::trim).enumerate() {
                 fields = i + 1;
@@ -441,6 +605,11 @@ impl LogReader {
                         });
                     }
                     columns[k] = i;
+                } else if self.strict {
+                    return Err(LogError::UnknownColumn {
+                        line,
+                        column: ShortText::new(name),
+                    });
                 }
             }
             if let Some(k) = columns[..REQUIRED_COLUMNS]
@@ -460,8 +629,9 @@ impl LogReader {
             self.fields = fields;
             return Ok(LogLine::Header);
         };
-        let mut values = [0.0f64; 9];
+        let mut values = [0.0f64; LOG_COLUMNS.len()];
         let mut temperature_given = false;
+        let mut approach = None;
         let mut got = 0;
         for (i, field) in t.split(',').enumerate() {
             got = i + 1;
@@ -470,15 +640,23 @@ impl LogReader {
             }
             if let Some(k) = columns.iter().position(|&c| c == i) {
                 let column = LOG_COLUMNS[k];
-                if k == 8 && field.trim().is_empty() {
+                if k == TEMPERATURE_COLUMN && field.trim().is_empty() {
                     // A temperature not recorded.
                     continue;
                 }
+                if k == APPROACH_COLUMN {
+                    approach = Some(match field.trim() {
+                        "below" => Approach::FromBelow,
+                        "above" => Approach::FromAbove,
+                        _ => return Err(LogError::BadApproach { line }),
+                    });
+                    continue;
+                }
                 let v = parse(field.trim()).ok_or(LogError::NotANumber { line, column })?;
-                temperature_given |= k == 8;
+                temperature_given |= k == TEMPERATURE_COLUMN;
                 let (lo, hi) = match k {
                     4 | 5 => (-MAX_READING_DEG, MAX_READING_DEG),
-                    8 => TEMPERATURE_RANGE_C,
+                    TEMPERATURE_COLUMN => TEMPERATURE_RANGE_C,
                     _ => (-MAX_JOINT_DEG, MAX_JOINT_DEG),
                 };
                 let limit_deg = hi;
@@ -500,13 +678,14 @@ impl LogReader {
             });
         }
         self.poses += 1;
+        self.approach = approach;
         let joints_deg = [
             values[6], values[7], values[0], values[1], values[2], values[3],
         ];
         Ok(LogLine::Pose(PoseReading {
             joints_rad: joints_deg.map(|d| deg_to_rad(T::lit(d))),
             reading: Tilt::from_deg(T::lit(values[4]), T::lit(values[5])),
-            temperature_c: temperature_given.then(|| T::lit(values[8])),
+            temperature_c: temperature_given.then(|| T::lit(values[TEMPERATURE_COLUMN])),
         }))
     }
 
@@ -755,9 +934,139 @@ pub fn parse_meta<T: Real>(
                 _ => return Err(bad),
             }
         }
+        // Informational lines the pendant writes (each capture of stage 1, its result,
+        // stage 2's): the solver recomputes them from the readings.
+        "stage1_captures_deg" | "stage1" | "stage2" => return Ok(None),
+        _ if metadata_key(comment).is_some() => {
+            return Err(LogError::UnknownKey {
+                line,
+                key: ShortText::new(key),
+            })
+        }
         _ => return Ok(None),
     };
     Ok(Some(item))
+}
+
+/// Every metadata key an export may hold (the first word of a `# key value…` line).
+pub const METADATA_KEYS: [&str; 10] = [
+    "robot",
+    "stage0_bias_deg",
+    "stage0_reversal_deg",
+    "stage1_readings_deg",
+    "stage1_temp_c",
+    "stage1_captures_deg",
+    "stage1",
+    "closing_reversal_deg",
+    "fit_extras",
+    "stage2",
+];
+
+/// [`METADATA_KEYS`], comma-separated, for messages.
+struct KnownKeys;
+
+impl fmt::Display for KnownKeys {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, k) in METADATA_KEYS.iter().enumerate() {
+            if i > 0 {
+                f.write_str(", ")?;
+            }
+            f.write_str(k)?;
+        }
+        Ok(())
+    }
+}
+
+/// The key of a metadata comment (the text after `#`): its first word when that is a
+/// known key or has a key's form (lowercase ASCII letters, digits and `_`, with at least
+/// one digit or `_`, as every key with a value has), so a misspelt key is refused rather
+/// than read as a free comment. `None` for free text.
+pub fn metadata_key(comment: &str) -> Option<&str> {
+    let word = comment.split_whitespace().next()?;
+    let form = word
+        .bytes()
+        .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_')
+        && word.bytes().any(|b| b.is_ascii_digit() || b == b'_');
+    (form || METADATA_KEYS.contains(&word)).then_some(word)
+}
+
+/// The metadata items an export has given so far, to refuse one given twice: with two
+/// values for one key, which one the solver used would be a guess. Stage 0's bias and
+/// its reversal are one item (the pendant writes one or the other).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MetaKeys {
+    /// The line each item was first given on (0: not yet).
+    first_line: [usize; 6],
+}
+
+impl MetaKeys {
+    /// Notes `item`, read on `line`.
+    ///
+    /// # Errors
+    /// [`LogError::DuplicateKey`] when the item was given before.
+    pub fn note<T>(&mut self, item: &MetaItem<T>, line: usize) -> Result<(), LogError> {
+        let (slot, key) = match item {
+            MetaItem::Robot(..) => (0, "robot"),
+            MetaItem::Bias(_) => (1, "stage0_bias_deg"),
+            MetaItem::Stage0Reversal(_) => (1, "stage0_reversal_deg"),
+            MetaItem::Stage1(_) => (2, "stage1_readings_deg"),
+            MetaItem::Stage1Temperature(_) => (3, "stage1_temp_c"),
+            MetaItem::Closing(_) => (4, "closing_reversal_deg"),
+            MetaItem::FitExtras(_) => (5, "fit_extras"),
+        };
+        match self.first_line[slot] {
+            0 => {
+                self.first_line[slot] = line;
+                Ok(())
+            }
+            first_line => Err(LogError::DuplicateKey {
+                line,
+                key,
+                first_line,
+            }),
+        }
+    }
+}
+
+/// The UTF-8 byte-order mark.
+const BOM: &str = "\u{feff}";
+
+/// `text` without a leading byte-order mark (which some editors write before the
+/// first line).
+pub fn strip_bom(text: &str) -> &str {
+    text.strip_prefix(BOM).unwrap_or(text)
+}
+
+/// The text of a log's bytes: UTF-8, a leading byte-order mark (which some editors
+/// write) dropped.
+///
+/// # Errors
+/// [`LogError::NotUtf8`] naming the line and byte of the first invalid byte.
+pub fn text_of(bytes: &[u8]) -> Result<&str, LogError> {
+    let bytes = bytes.strip_prefix(BOM.as_bytes()).unwrap_or(bytes);
+    core::str::from_utf8(bytes).map_err(|e| {
+        let valid = &bytes[..e.valid_up_to()];
+        let line = 1 + valid.iter().filter(|&&b| b == b'\n').count();
+        let start = valid.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+        LogError::NotUtf8 {
+            line,
+            column: valid.len() - start + 1,
+        }
+    })
+}
+
+/// Writes one capture as an export row: a log row and the side it was approached from.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_export_row<T: Real>(
+    w: &mut Line,
+    p: &PoseReading<T>,
+    approach: Approach,
+) -> fmt::Result {
+    write_row(w, p)?;
+    w.write_char(',')?;
+    w.write_str(approach_name(approach))
 }
 
 /// Writes one pose as a log row.
@@ -996,5 +1305,134 @@ mod tests {
                 "{bad}"
             );
         }
+    }
+
+    #[test]
+    fn the_export_reader_refuses_unknown_columns_and_reads_the_approach() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        let row = "0,-90,1,2,3,4,0.1,0.2,25.00";
+        let mut r = LogReader::for_export();
+        assert_eq!(r.feed::<f64>(EXPORT_HEADER, parse), Ok(LogLine::Header));
+        for (side, approach) in [
+            ("below", Approach::FromBelow),
+            ("above", Approach::FromAbove),
+        ] {
+            assert!(matches!(
+                r.feed::<f64>(&format!("{row},{side}"), parse),
+                Ok(LogLine::Pose(_))
+            ));
+            assert_eq!(r.approach(), Some(approach));
+        }
+        assert_eq!(
+            r.feed::<f64>(&format!("{row},sideways"), parse),
+            Err(LogError::BadApproach { line: 4 })
+        );
+        // A stage-2 log ignores a column it does not know; an export names it.
+        let header = format!("{LOG_HEADER},j7_deg");
+        assert_eq!(
+            LogReader::new().feed::<f64>(&header, parse),
+            Ok(LogLine::Header)
+        );
+        let e = LogReader::for_export().feed::<f64>(&header, parse);
+        assert_eq!(
+            e,
+            Err(LogError::UnknownColumn {
+                line: 1,
+                column: ShortText::new("j7_deg")
+            })
+        );
+        let text = e.unwrap_err().to_string();
+        assert!(
+            text.contains("line 1") && text.contains("'j7_deg'"),
+            "{text}"
+        );
+        // A row written by the pendant's writer reads back with its side.
+        let p = PoseReading {
+            joints_rad: [0.0, -1.5, 0.1, -2.9, 0.3, 3.0],
+            reading: Tilt::new(0.01, -0.02),
+            temperature_c: None,
+        };
+        let mut w = Line::new();
+        write_export_row(&mut w, &p, Approach::FromAbove).unwrap();
+        let mut r = LogReader::for_export();
+        r.feed::<f64>(EXPORT_HEADER, parse).unwrap();
+        assert!(matches!(r.feed::<f64>(&w, parse), Ok(LogLine::Pose(_))));
+        assert_eq!(r.approach(), Some(Approach::FromAbove));
+    }
+
+    #[test]
+    fn keys_are_known_once_and_free_comments_stay_free() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        // The free lines the pendant writes, and a user's.
+        for free in [
+            "zerocal pendant export: read it with 'zerocal session'",
+            "stage 1 temperature not recorded",
+            "closing reversal not made",
+            "refused: stage 2: too few poses",
+            "Messung am Montag",
+        ] {
+            assert_eq!(metadata_key(free), None, "{free}");
+            assert_eq!(parse_meta::<f64>(free, 1, parse), Ok(None), "{free}");
+        }
+        // The informational keys are known, and not needed.
+        assert_eq!(
+            parse_meta::<f64>("stage2 offsets_deg 1,2,3,4", 1, parse),
+            Ok(None)
+        );
+        for misspelt in [
+            "stage0_bias_dge 1,2",
+            "stage0bias_deg none",
+            "fit_extra none",
+        ] {
+            let e = parse_meta::<f64>(misspelt, 9, parse);
+            let key = misspelt.split(' ').next().unwrap();
+            assert_eq!(
+                e,
+                Err(LogError::UnknownKey {
+                    line: 9,
+                    key: ShortText::new(key)
+                }),
+                "{misspelt}"
+            );
+        }
+        let mut keys = MetaKeys::default();
+        let bias = MetaItem::<f64>::Bias(None);
+        assert_eq!(keys.note(&bias, 3), Ok(()));
+        assert_eq!(keys.note(&MetaItem::Stage1Temperature(20.0), 4), Ok(()));
+        let reversal = MetaItem::Stage0Reversal(ClosingReversal {
+            reversal: Reversal {
+                first: Tilt::new(0.0, 0.0),
+                second: Tilt::new(0.0, 0.0),
+            },
+            temperature_c: None,
+        });
+        // Stage 0 twice, whichever key the second uses.
+        assert_eq!(
+            keys.note(&reversal, 7),
+            Err(LogError::DuplicateKey {
+                line: 7,
+                key: "stage0_reversal_deg",
+                first_line: 3
+            })
+        );
+        assert!(keys.note(&MetaItem::Stage1Temperature(21.0), 8).is_err());
+    }
+
+    #[test]
+    fn text_drops_a_byte_order_mark_and_names_a_bad_byte() {
+        assert_eq!(text_of(b"\xEF\xBB\xBF# a\nb"), Ok("# a\nb"));
+        assert_eq!(strip_bom("\u{feff}x"), "x");
+        assert_eq!(
+            text_of(b"# a\nj3_deg,\xE9\n"),
+            Err(LogError::NotUtf8 { line: 2, column: 8 })
+        );
+        assert_eq!(
+            text_of(b"\xFF"),
+            Err(LogError::NotUtf8 { line: 1, column: 1 })
+        );
+        // A quoted word keeps at most its capacity, cut at a character boundary.
+        let long = "\u{e9}".repeat(40);
+        assert_eq!(ShortText::new(&long).as_str().len(), ShortText::CAPACITY);
+        assert_eq!(ShortText::new("ab\u{20ac}").as_str(), "ab\u{20ac}");
     }
 }

@@ -8,7 +8,7 @@ use std::cell::Cell;
 
 use libfuzzer_sys::fuzz_target;
 use zerocal_cli::log::parse_number;
-use zerocal_core::log::{parse_meta, LogError, LogLine, LogReader, MetaItem};
+use zerocal_core::log::{parse_meta, strip_bom, LogError, LogLine, LogReader, MetaItem, MetaKeys};
 use zerocal_core::stage2::PoseReading;
 use zerocal_fuzz::{close, same_number};
 
@@ -62,19 +62,31 @@ fn read_with(
     parse: &impl Fn(&str) -> Option<f64>,
     metadata: bool,
 ) -> Result<Read, LogError> {
-    let mut reader = LogReader::new();
+    // An export is read strictly: unknown columns, unknown or repeated keys refused.
+    let mut reader = if metadata {
+        LogReader::for_export()
+    } else {
+        LogReader::new()
+    };
+    let mut keys = MetaKeys::default();
     let mut poses = Vec::new();
     let mut seen = (false, false, false, false);
-    for line in text.lines() {
+    for line in strip_bom(text).lines() {
         match reader.feed::<f64>(line, parse)? {
             LogLine::Pose(p) => poses.push(p),
-            LogLine::Comment(c) if metadata => match parse_meta::<f64>(c, reader.line(), parse)? {
-                Some(MetaItem::Robot(..)) => seen.0 = true,
-                Some(MetaItem::Bias(_)) => seen.1 = true,
-                Some(MetaItem::Stage1(_)) => seen.2 = true,
-                Some(MetaItem::FitExtras(_)) => seen.3 = true,
-                _ => {}
-            },
+            LogLine::Comment(c) if metadata => {
+                let item = parse_meta::<f64>(c, reader.line(), parse)?;
+                if let Some(item) = &item {
+                    keys.note(item, reader.line())?;
+                }
+                match item {
+                    Some(MetaItem::Robot(..)) => seen.0 = true,
+                    Some(MetaItem::Bias(_)) => seen.1 = true,
+                    Some(MetaItem::Stage1(_)) => seen.2 = true,
+                    Some(MetaItem::FitExtras(_)) => seen.3 = true,
+                    _ => {}
+                }
+            }
             _ => {}
         }
     }

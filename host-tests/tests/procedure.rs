@@ -372,3 +372,58 @@ fn a_degenerate_plan_gives_the_named_refusal_not_numbers() {
     ));
     let _ = Tilt::<f32>::default();
 }
+
+/// NEXT on a pose's "above" screen skips the pose whole: the capture it already has from
+/// below is dropped, as one capture alone would sit on one side of every gear's backlash
+/// (half the lost motion off the middle) with nothing downstream to tell. The drop
+/// survives a power cut, and the session finishes on the other poses, both sides each.
+#[test]
+fn next_on_the_above_screen_drops_the_lone_below_capture() {
+    let mut p = pendant::<f32>(8, 12).expect("the planner plans 8 poses");
+    scenario::stage0(&mut p);
+    scenario::stage1(&mut p);
+    assert!(scenario::approach_next(&mut p));
+    p.hold(HOLD_MS);
+    assert_eq!(p.session.captures().len(), 1);
+    assert_eq!(
+        p.session.view().approach,
+        Some(Approach::FromAbove),
+        "the first pose's above screen"
+    );
+    p.event(Event::Next);
+    assert!(
+        p.session.captures().is_empty(),
+        "the lone below capture is dropped"
+    );
+    assert_eq!(
+        (
+            p.session.view().pose.map(|v| v.0),
+            p.session.view().approach
+        ),
+        (Some(1), Some(Approach::FromBelow)),
+        "on to the second pose, from below"
+    );
+    p.power_cycle();
+    assert!(
+        p.session.captures().is_empty(),
+        "the drop is persisted with the progress record"
+    );
+    scenario::stage2(&mut p);
+    scenario::closing(&mut p);
+    assert_eq!(p.session.phase(), Phase::Done);
+    // Seven poses left, each from below and from above.
+    let captures = p.session.captures();
+    assert_eq!(captures.len(), 14);
+    for pair in captures.chunks(2) {
+        assert_eq!(pair[0].1.joints_rad, pair[1].1.joints_rad);
+        assert_eq!(
+            (
+                Approach::of(pair[0].0.into()),
+                Approach::of(pair[1].0.into())
+            ),
+            (Approach::FromBelow, Approach::FromAbove)
+        );
+    }
+    let (z2, z, _) = z_scores(&p);
+    assert!(z2.abs() < 4.0 && z.iter().all(|v| v.abs() < 4.0));
+}

@@ -496,7 +496,17 @@ pub fn step<T: Real>(
                 out.push(s.progress());
             }
             Phase::Stage2 if s.cursor < s.plan_captures() => {
-                // Skips the pose whole: a capture already taken from below stays.
+                // Skips the pose whole: on its "above" screen the capture already taken
+                // from below is dropped too. Alone it would sit on one side of every
+                // gear's backlash, half the lost motion off the middle the two sides'
+                // mean finds (docs/error-budget.md), and nothing downstream could tell.
+                if s.cursor % 2 == 1
+                    && s.captures
+                        .last()
+                        .is_some_and(|(index, _)| usize::from(*index) + 1 == s.cursor)
+                {
+                    s.captures.pop();
+                }
                 s.cursor = (s.cursor / 2 + 1) * 2;
                 s.armed = false;
                 after_capture_in_stage2(config, s, &mut out);

@@ -44,6 +44,9 @@ pub enum BudgetTerm {
     LoadedBacklash,
     /// The brackets' seats (Type B, the stated tolerance).
     Mounting,
+    /// The sensor's x offset when no stage-0 reversal measured it (Type B: the
+    /// SCL3300's offset specification, propagated; see [`Budget::add_unknown_sensor_offset`]).
+    UnknownSensorOffset,
 }
 
 impl BudgetTerm {
@@ -57,6 +60,7 @@ impl BudgetTerm {
         BudgetTerm::Repeatability,
         BudgetTerm::LoadedBacklash,
         BudgetTerm::Mounting,
+        BudgetTerm::UnknownSensorOffset,
     ];
 
     /// Its name in reports and `--json`.
@@ -70,12 +74,24 @@ impl BudgetTerm {
             BudgetTerm::Repeatability => "robot repeatability (stated, propagated)",
             BudgetTerm::LoadedBacklash => "joint 3 backlash under gravity (stated)",
             BudgetTerm::Mounting => "bracket seats (stated tolerance)",
+            BudgetTerm::UnknownSensorOffset => "sensor offset, no stage 0 (specification)",
         }
     }
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 8;
+pub const BUDGET_TERMS: usize = 9;
+
+/// The SCL3300's offset specification on X (g, ±): ±20 mg, "including calibration
+/// error, temperature, supply voltage and drift over lifetime" (SCL3300 table quoted
+/// second-hand; the sister part SCA3300's data sheet, Doc. 3165 Rev. 3, Table 2 footnote
+/// A, first-hand). X is the axis stage 0 measures and stage 1 cannot separate from Δθ2.
+pub const SENSOR_OFFSET_X_SPEC_G: f64 = 0.020;
+
+/// [`SENSOR_OFFSET_X_SPEC_G`] as an angle at level (deg): asin(0.020) = 1.146°.
+pub fn sensor_offset_x_spec_deg() -> f64 {
+    crate::real::rad_to_deg(libm::asin(SENSOR_OFFSET_X_SPEC_G))
+}
 
 /// Coverage factor: 2 for about 95 % (GUM 6.3.3).
 pub const COVERAGE_FACTOR: f64 = 2.0;
@@ -227,6 +243,30 @@ pub fn budget<T: Real>(
         terms_rad: terms,
         combined_rad: combined,
         expanded_rad: combined.map(|u| u * T::lit(COVERAGE_FACTOR)),
+    }
+}
+
+impl<T: Real> Budget<T> {
+    /// Adds the sensor's unknown x offset of a session without a stage-0 reversal:
+    /// `half_width_rad[k]` is how far Δθ2+k moves when the offset goes from its
+    /// specification's −limit to +limit, halved (the solver run at both ends,
+    /// [`super::unknown_offset_half_width`]); the offset uniform within it, u = w/√3 (GUM
+    /// 4.3.7). Combined and expanded are recomputed.
+    pub fn add_unknown_sensor_offset(&mut self, half_width_rad: &[T; SESSION_JOINTS]) {
+        let term = BudgetTerm::ALL
+            .iter()
+            .position(|t| *t == BudgetTerm::UnknownSensorOffset)
+            .unwrap_or(BUDGET_TERMS - 1);
+        for k in 0..SESSION_JOINTS {
+            self.terms_rad[term][k] = half_width_rad[k].abs() / T::lit(3.0).sqrt();
+        }
+        self.combined_rad = core::array::from_fn(|k| {
+            self.terms_rad
+                .iter()
+                .fold(T::zero(), |s, t| s + t[k] * t[k])
+                .sqrt()
+        });
+        self.expanded_rad = self.combined_rad.map(|u| u * T::lit(COVERAGE_FACTOR));
     }
 }
 

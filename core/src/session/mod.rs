@@ -12,14 +12,16 @@
 mod budget;
 
 pub use budget::{
-    budget, predict_budget, Budget, BudgetInputs, BudgetTerm, PlannedRobot, BUDGET_TERMS,
-    COVERAGE_FACTOR, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
+    budget, predict_budget, sensor_offset_x_spec_deg, Budget, BudgetInputs, BudgetTerm,
+    PlannedRobot, BUDGET_TERMS, COVERAGE_FACTOR, DEFAULT_LOST_MOTION_DEG,
+    DEFAULT_REPEATABILITY_DEG, SENSOR_OFFSET_X_SPEC_G,
 };
 
 use crate::decimal::Fixed;
 use crate::error::{FitError, StageError};
 use crate::model::{Arm, Convention, Gain, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
 use crate::plan::MAX_POSES;
+use crate::procedure::Approach;
 use crate::real::Real;
 use crate::stage0::{BiasOverTemperature, ClosingReversal, Reversal};
 use crate::stage1::{AxisOneTurn, Stage1Result};
@@ -529,6 +531,84 @@ pub fn merge_repeats<T: Real>(
     )
 }
 
+/// For a session without a stage-0 reversal: how far each of Δθ2..Δθ6 moves with the
+/// sensor's unknown x offset, as half the difference between the session solved with
+/// the offset at +[`sensor_offset_x_spec_deg`] and at −it (rad). The solver then takes
+/// the offset as 0, and stage 1 cannot tell it from Δθ2 (the upper arm's tilt about
+/// joint 2 and the sensor's x offset read alike), so without this the offsets carry an
+/// error of up to a degree their noise-only σ does not show. `None` when the session
+/// has a bias (a reversal, or a stored one).
+///
+/// # Errors
+/// The solver's refusal at either end of the range.
+pub fn unknown_offset_half_width<T: Real>(
+    readings: &SessionReadings<'_, T>,
+    config: &FitConfig<T>,
+) -> Result<Option<[T; SESSION_JOINTS]>, SessionError> {
+    if readings.bias != BiasSource::Unknown {
+        return Ok(None);
+    }
+    let limit_rad = crate::real::deg_to_rad(T::lit(sensor_offset_x_spec_deg()));
+    let at = |x_rad: T| {
+        let r = SessionReadings {
+            bias: BiasSource::Stored(Tilt::new(x_rad, T::zero())),
+            ..*readings
+        };
+        solve(&r, config).result.map(|s| s.offsets_rad)
+    };
+    let (plus, minus) = (at(limit_rad)?, at(-limit_rad)?);
+    Ok(Some(core::array::from_fn(|k| {
+        ((plus[k] - minus[k]) * T::lit(0.5)).abs()
+    })))
+}
+
+/// The first capture of a pose captured from one side only: its reading sits on one
+/// side of every gear's backlash, half the lost motion off the middle the two sides'
+/// mean finds ([`merge_repeats`]), and no budget term models that. With `approaches`
+/// (one per capture: the export's `approach` column) a pose needs a capture from each
+/// side; without (an export written before the column), a pose needs at least two
+/// captures, as the two-sided procedure took them.
+pub fn one_sided_pose<T: Real>(
+    poses: &[PoseReading<T>],
+    approaches: Option<&[Approach]>,
+) -> Option<usize> {
+    (0..poses.len()).find(|&i| {
+        let same = |j: &usize| poses[*j].joints_rad == poses[i].joints_rad;
+        match approaches {
+            Some(a) => {
+                let side =
+                    |s: Approach| (0..poses.len()).filter(same).any(|j| a.get(j) == Some(&s));
+                !(side(Approach::FromBelow) && side(Approach::FromAbove))
+            }
+            None => (0..poses.len()).filter(same).count() < 2,
+        }
+    })
+}
+
+/// How far a stage-2 capture's joint 2 may lie from stage 1's (deg): the tolerance the
+/// pendant already holds a plan's joints 1-2 to against stage 1's
+/// ([`crate::link::STAGE1_JOINT_TOLERANCE_DEG`]); 5× below the 0.005° aimed at, so a
+/// difference within it moves no offset by anything that matters.
+pub const STAGE1_JOINT2_TOLERANCE_DEG: f64 = crate::link::STAGE1_JOINT_TOLERANCE_DEG;
+
+/// The first stage-2 capture whose joint 2 differs from stage 1's by more than
+/// [`STAGE1_JOINT2_TOLERANCE_DEG`]. Stage 2 runs with joint 2 where stage 1 had it, and
+/// stage 1's Δθ2 is the measured arm angle minus the recorded joint 2: a wrong record
+/// moves Δθ2 by its error, and Δθ3 takes it back (joints 2 and 3 are parallel), so the
+/// fit cannot see it. Joint 1 may differ: the model turns the base tilt with the
+/// recorded joint 1 (docs/mounting.md).
+pub fn stage1_joint2_mismatch<T: Real>(
+    stage1: &AxisOneTurn<T>,
+    poses: &[PoseReading<T>],
+) -> Option<usize> {
+    let tolerance = crate::real::deg_to_rad(T::lit(STAGE1_JOINT2_TOLERANCE_DEG));
+    poses.iter().position(|p| {
+        let off = (p.joints_rad[1] - stage1.j2_rad).abs();
+        // A non-finite joint disagrees too.
+        !off.is_finite() || off > tolerance
+    })
+}
+
 /// The gain and cross-axis terms a fit estimated (zero where not estimated).
 fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
     let v = |p: Param| r.get(p).map_or(T::zero(), |(v, _)| v);
@@ -598,5 +678,55 @@ fn combine<T: Real>(
         offsets_rad,
         covariance_rad2: cov,
         variance_shares_rad2: shares,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(joints_deg: [f64; 6]) -> PoseReading<f64> {
+        PoseReading {
+            joints_rad: joints_deg.map(f64::to_radians),
+            reading: Tilt::new(0.0, 0.0),
+            temperature_c: None,
+        }
+    }
+
+    #[test]
+    fn a_pose_needs_both_sides() {
+        use Approach::{FromAbove as Up, FromBelow as Down};
+        let (a, b) = (
+            at([0.0, -90.0, 10.0, 0.0, 0.0, 0.0]),
+            at([0.0, -90.0, 20.0, 0.0, 0.0, 0.0]),
+        );
+        let poses = [a, a, b, b];
+        assert_eq!(one_sided_pose(&poses, Some(&[Down, Up, Down, Up])), None);
+        // Two captures of the second pose, both from below.
+        assert_eq!(
+            one_sided_pose(&poses, Some(&[Down, Up, Down, Down])),
+            Some(2)
+        );
+        // Without the column: a pose captured once has no second side.
+        assert_eq!(one_sided_pose(&poses, None), None);
+        assert_eq!(one_sided_pose(&[a, a, b], None), Some(2));
+    }
+
+    #[test]
+    fn joint_2_must_stay_where_stage_1_had_it() {
+        let turn = AxisOneTurn {
+            before: Tilt::new(0.0, 0.0),
+            after: Tilt::new(0.0, 0.0),
+            j1_rad: 0.0,
+            j2_rad: (-90.0f64).to_radians(),
+        };
+        // Within the tolerance, and joint 1 elsewhere (the model follows joint 1).
+        let near = -90.0 + 0.5 * STAGE1_JOINT2_TOLERANCE_DEG;
+        let poses = [
+            at([5.0, near, 10.0, 0.0, 0.0, 0.0]),
+            at([0.0, -89.5, 10.0, 0.0, 0.0, 0.0]),
+        ];
+        assert_eq!(stage1_joint2_mismatch(&turn, &poses[..1]), None);
+        assert_eq!(stage1_joint2_mismatch(&turn, &poses), Some(1));
     }
 }
