@@ -26,6 +26,17 @@ use crate::screen::{
 use crate::sensor::SensorFault;
 use crate::store::ResetReason;
 
+/// Decimals of an offset and its 1σ on the result screen: `zerocal session`'s (its
+/// `{:+.5}`), so the two read the same.
+pub const OFFSET_DECIMALS: u8 = 5;
+
+/// Decimals of a pose target: enough to tell which pose this is and to check the
+/// robot got there; not enough to jog to, hence [`POSES_BY_PROGRAM`].
+pub const TARGET_DECIMALS: u8 = 2;
+
+/// The first pose screen's last line: the robot program drives the poses.
+pub const POSES_BY_PROGRAM: &str = "program drives poses";
+
 /// Top of each of the six text lines (10 px glyphs spread over 64 px).
 const LINE_Y: [i32; 6] = [0, 11, 22, 32, 43, 54];
 
@@ -280,29 +291,34 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
                 line(format_args!(
                     "{:<3}{:>7} {:<3}{:>7}",
                     names[0],
-                    sgn(j3, 2),
+                    sgn(j3, TARGET_DECIMALS),
                     names[1],
-                    sgn(j4, 2)
+                    sgn(j4, TARGET_DECIMALS)
                 )),
                 line(format_args!(
                     "{:<3}{:>7} {:<3}{:>7}",
                     names[2],
-                    sgn(j5, 2),
+                    sgn(j5, TARGET_DECIMALS),
                     names[3],
-                    sgn(j6, 2)
+                    sgn(j6, TARGET_DECIMALS)
                 )),
                 live_line(screen),
                 settle_line(screen),
-                // Stage 2's model has axis 1 at its mark and joint 2 where stage 1
-                // left it (core's Stage1Result::handover): say so before the first pose.
-                notice_line(
-                    screen,
-                    if screen.captured == 0 {
-                        "axis1 at mark,j2 kept"
-                    } else {
-                        "NEXT skip BACK undo"
-                    },
-                ),
+                // The session takes each capture at the plan's commanded joints, so
+                // the robot program (`zerocal program`) must drive the poses: a pose
+                // jogged to the 0.01° shown here is off by up to 0.005° per joint, the
+                // whole accuracy goal. The targets only tell which pose this is. The
+                // program also keeps axis 1 at its mark and joint 2 where stage 1 left
+                // it (core's Stage1Result::handover). Said before the first pose, over
+                // the `captured` of stage 1's last reading, which is not this pose's.
+                if screen.captured == 0
+                    && matches!(screen.notice, None | Some(Notice::Captured))
+                    && !screen.store_failed
+                {
+                    fixed(POSES_BY_PROGRAM)
+                } else {
+                    notice_line(screen, "NEXT skip BACK undo")
+                },
             ];
         }
         Prompt::NoPose => (
@@ -480,26 +496,26 @@ fn result_lines(screen: &ResultScreen) -> [Text; 6] {
     }
 }
 
-/// Page 1: Δθ2..Δθ6 with 1σ, e.g. `j3 +0.05012 ±0.00031` (NEXT: page 2).
+/// Page 1: joints 2-6's offsets as the controller takes them, in its joint degrees,
+/// with 1σ: e.g. `J3  -0.32144 ±0.00077`, the digits `zerocal session` prints in its
+/// controller-terms table (NEXT: page 2).
 fn offset_lines(summary: &FitSummary, verdict: &str, pages: usize) -> [Text; 6] {
-    let joint = |number: u8, offset: &Offset| {
+    let joint = |offset: &Offset| {
         line(format_args!(
-            "j{number}{:>9} \u{b1}{}",
-            sgn(offset.value_deg, 5),
-            fx(offset.sigma_deg, 5)
+            "{:<3}{:>9} \u{b1}{}",
+            offset.name,
+            sgn(offset.value_deg, OFFSET_DECIMALS),
+            fx(offset.sigma_deg, OFFSET_DECIMALS)
         ))
     };
-    let [j3, j4, j5, j6] = &summary.wrist;
+    let [j2, j3, j4, j5, j6] = &summary.joints;
     [
-        line(format_args!("offset\u{b0} 1sig {verdict} 1/{pages}")),
-        match &summary.j2 {
-            Some(j2) => joint(2, j2),
-            None => fixed("j2  (no stage 1)"),
-        },
-        joint(3, j3),
-        joint(4, j4),
-        joint(5, j5),
-        joint(6, j6),
+        line(format_args!("dq deg \u{b1}1sig {verdict} 1/{pages}")),
+        joint(j2),
+        joint(j3),
+        joint(j4),
+        joint(j5),
+        joint(j6),
     ]
 }
 

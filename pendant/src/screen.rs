@@ -15,7 +15,7 @@ use zerocal_core::procedure::{
 };
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::report::{Warning, MAX_WARNINGS};
-use zerocal_core::session::SessionError;
+use zerocal_core::session::{SessionError, SESSION_JOINTS};
 use zerocal_core::stillness::Stillness;
 
 use crate::sensor::SensorFault;
@@ -129,22 +129,23 @@ pub struct CaptureScreen {
     pub store_failed: bool,
 }
 
-/// One joint's result (deg).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// One joint's result as the controller takes it (core's
+/// [`ControllerDisplay::session_offsets`], the conversion `zerocal session` prints).
+#[derive(Clone, Debug, PartialEq)]
 pub struct Offset {
-    /// Δθ = true − commanded.
+    /// The controller's name for the joint.
+    pub name: JointName,
+    /// Δq = true − commanded as the controller shows the joint (deg).
     pub value_deg: f32,
-    /// Its 1σ.
+    /// Its 1σ (deg).
     pub sigma_deg: f32,
 }
 
 /// A fit's numbers, in degrees.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FitSummary {
-    /// Δθ2 from stage 1.
-    pub j2: Option<Offset>,
-    /// Δθ3..Δθ6.
-    pub wrist: [Offset; WRIST_JOINTS],
+    /// Joints 2-6's offsets in the controller's terms.
+    pub joints: [Offset; SESSION_JOINTS],
     /// Base tilt α, β from stage 1.
     pub base_tilt_deg: Option<(f32, f32)>,
     /// Residual RMS.
@@ -312,10 +313,10 @@ impl ScreenKind {
                 "turns axis 1 by 180°, all else locked, arriving moving positive, then presses OK; then past and back from above"
             }
             ScreenKind::Pose => {
-                "clips the pendant to the flange and jogs to the targets shown, every joint arriving moving positive; capture is automatic"
+                "clips the pendant to the flange and lets the robot program (`zerocal program`) drive each pose, every joint arriving moving positive: the targets (0.01°) only tell which pose; jogged to them a pose is off by up to 0.005° per joint; capture is automatic"
             }
             ScreenKind::PoseAbove => {
-                "takes every joint past the same targets and back, arriving moving negative; capture is automatic"
+                "lets the program take every joint past the same targets and back, arriving moving negative; capture is automatic"
             }
             ScreenKind::ClosingBench => {
                 "puts the pendant back on stage 0's bench, same spot, and lets go; capture follows on stillness (NEXT skips: the bias' drift is then not measured)"
@@ -345,7 +346,7 @@ impl ScreenKind {
             }
             ScreenKind::StageRefused => "redoes the step: the two readings did not agree",
             ScreenKind::ResultOffsets => {
-                "reads each offset (true − commanded: the joint's reading must rise by it) and enters it as its controller takes it (`zerocal session`, docs/controllers/); NEXT for details, hold OK for a new session"
+                "reads each offset as the controller takes it (its joint names, signs and J2-J3 coupling, in its joint degrees: the numbers of `zerocal session`'s controller-terms table) and enters it (docs/controllers/ says where; a controller taking motor radians or counts: `zerocal session` converts); NEXT for details, hold OK for a new session"
             }
             ScreenKind::ResultDetails => "checks residual and conditioning; NEXT for warnings",
             ScreenKind::ResultWarning => "reads what to distrust before entering the offsets",
@@ -418,7 +419,7 @@ impl Screen {
     ) -> Screen {
         if view.phase == Phase::Done {
             let fit = match view.outcome {
-                Some(outcome) => summarize(outcome),
+                Some(outcome) => summarize(outcome, display),
                 // Core always has an outcome in `Done`; say so if it ever does not.
                 None => Err(Refusal::NoOutcome),
             };
@@ -471,30 +472,30 @@ impl Screen {
     }
 }
 
-/// The outcome in degrees.
-fn summarize(outcome: &Outcome<f32>) -> Result<FitSummary, Refusal> {
-    let fit = &outcome
-        .result
-        .as_ref()
-        .map_err(|e| Refusal::Session(*e))?
-        .fit;
-    let mut wrist = [Offset {
-        value_deg: 0.0,
-        sigma_deg: 0.0,
-    }; WRIST_JOINTS];
-    for ((offset, value_rad), sigma_rad) in wrist.iter_mut().zip(fit.offsets_rad).zip(fit.sigma_rad)
-    {
-        *offset = Offset {
-            value_deg: rad_to_deg(value_rad),
-            sigma_deg: rad_to_deg(sigma_rad),
-        };
-    }
+/// Joints 2-6's offsets as the controller takes them, under its names, from a
+/// session's Δθ2..Δθ6 (rad) and their covariance (rad²).
+pub fn controller_offsets(
+    display: &ControllerDisplay<f32>,
+    offsets_rad: &[f32; SESSION_JOINTS],
+    covariance_rad2: &[[f32; SESSION_JOINTS]; SESSION_JOINTS],
+) -> [Offset; SESSION_JOINTS] {
+    let shown = display.session_offsets(offsets_rad, covariance_rad2);
+    core::array::from_fn(|k| Offset {
+        name: display.names[k + 1].clone(),
+        value_deg: shown[k].shown_deg,
+        sigma_deg: shown[k].sigma_deg,
+    })
+}
+
+/// The outcome in degrees, the offsets in the controller's terms.
+pub fn summarize(
+    outcome: &Outcome<f32>,
+    display: &ControllerDisplay<f32>,
+) -> Result<FitSummary, Refusal> {
+    let solution = outcome.result.as_ref().map_err(|e| Refusal::Session(*e))?;
+    let fit = &solution.fit;
     Ok(FitSummary {
-        j2: outcome.stage1.map(|s1| Offset {
-            value_deg: rad_to_deg(s1.delta_theta2_rad),
-            sigma_deg: rad_to_deg(s1.delta_theta2_sigma_rad(fit.noise_sigma_rad)),
-        }),
-        wrist,
+        joints: controller_offsets(display, &solution.offsets_rad, &solution.covariance_rad2),
         base_tilt_deg: outcome.stage1.map(|s1| {
             (
                 rad_to_deg(s1.base_tilt.alpha_rad),

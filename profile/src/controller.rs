@@ -105,42 +105,11 @@ impl Controller {
         d.map(f64::to_radians)
     }
 
-    /// Δq per joint (deg) of model offsets Δθ1..Δθ6 (rad): a zero offset is a change of
-    /// the shown angle, so signs and coupling apply, zeros do not.
+    /// Δq per joint (deg) of model offsets Δθ1..Δθ6 (rad): the pendant's conversion
+    /// ([`ControllerDisplay::offsets_deg`]), so its result screen and `zerocal session`
+    /// agree.
     pub fn offsets_deg(&self, delta_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
-        let mut d = delta_rad.map(f64::to_degrees);
-        if self.coupling == Coupling::J3MinusJ2 {
-            d[2] -= d[1];
-        }
-        core::array::from_fn(|k| f64::from(self.sign[k]) * d[k])
-    }
-
-    /// The covariance (deg²) of Δq from that of Δθ (rad²), through the same linear map.
-    pub fn offsets_covariance_deg2(
-        &self,
-        cov_rad2: &[[f64; JOINTS]; JOINTS],
-    ) -> [[f64; JOINTS]; JOINTS] {
-        // Δq = A·Δθ with A = diag(sign)·C·(180/π), C the coupling.
-        let mut a = [[0.0; JOINTS]; JOINTS];
-        for (k, row) in a.iter_mut().enumerate() {
-            row[k] = f64::from(self.sign[k]) * 180.0 / std::f64::consts::PI;
-        }
-        if self.coupling == Coupling::J3MinusJ2 {
-            a[2][1] = -a[2][2];
-        }
-        let mut out = [[0.0; JOINTS]; JOINTS];
-        for (i, oi) in out.iter_mut().enumerate() {
-            for (j, oij) in oi.iter_mut().enumerate() {
-                let mut acc = 0.0;
-                for k in 0..JOINTS {
-                    for l in 0..JOINTS {
-                        acc += a[i][k] * cov_rad2[k][l] * a[j][l];
-                    }
-                }
-                *oij = acc;
-            }
-        }
-        out
+        self.display(Default::default()).offsets_deg(delta_rad)
     }
 
     /// Each joint's offset in the controller's terms, with its 1σ, from model offsets
@@ -150,27 +119,30 @@ impl Controller {
         delta_rad: &[f64; JOINTS],
         cov_rad2: &[[f64; JOINTS]; JOINTS],
     ) -> [OffsetValue; JOINTS] {
-        let deg = self.offsets_deg(delta_rad);
-        let cov = self.offsets_covariance_deg2(cov_rad2);
+        // The joint degrees as the pendant's result screen has them; the unit on top.
+        let shown = self
+            .display(Default::default())
+            .offsets(delta_rad, cov_rad2);
         core::array::from_fn(|k| {
+            let deg = shown[k].shown_deg;
             let (in_unit, no_unit_because) = match self.unit {
-                OffsetUnit::Degrees => (Some(deg[k]), None),
+                OffsetUnit::Degrees => (Some(deg), None),
                 OffsetUnit::MotorRadians(Some(ratio)) => {
-                    (Some(deg[k].to_radians() * ratio[k]), None)
+                    (Some(deg.to_radians() * ratio[k]), None)
                 }
                 OffsetUnit::MotorRadians(None) => (
                     None,
                     Some("no public source gives the gear ratio: read it from the controller (MOC.cfg) and multiply the joint radians by it"),
                 ),
-                OffsetUnit::Counts(Some(per_deg)) => (Some(deg[k] * per_deg[k]), None),
+                OffsetUnit::Counts(Some(per_deg)) => (Some(deg * per_deg[k]), None),
                 OffsetUnit::Counts(None) => (
                     None,
                     Some("no public source gives the counts per degree: read them from the controller and multiply the joint degrees by them"),
                 ),
             };
             OffsetValue {
-                shown_deg: deg[k],
-                sigma_deg: cov[k][k].max(0.0).sqrt(),
+                shown_deg: deg,
+                sigma_deg: shown[k].sigma_deg,
                 in_unit,
                 no_unit_because,
             }

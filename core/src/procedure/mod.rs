@@ -41,7 +41,7 @@ use crate::session::{SessionError, SessionSolution};
 use crate::stage1::Stage1Result;
 use crate::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessConfig};
-pub use profile::{ControllerDisplay, PendantProfile};
+pub use profile::{ControllerDisplay, ControllerOffset, PendantProfile};
 pub use record::{Record, RecordError};
 pub use state::{ProcedureState, View};
 

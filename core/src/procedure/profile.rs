@@ -32,11 +32,17 @@ use crate::decimal::{self, Fixed};
 use crate::log::Line;
 use crate::model::{Arm, Convention, Joint, JointAxis, Placement, JOINTS};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
+use crate::session::SESSION_JOINTS;
 
 /// A joint's name on the controller (`A2`, `J2`, `S`), at most 3 bytes.
 pub type JointName = heapless::String<3>;
 
 /// How the controller shows each joint: `shown = sign × (model − coupling) + zero`.
+///
+/// The one place a model zero offset becomes the controller's: the pendant's result
+/// screen ([`ControllerDisplay::session_offsets`]) and `zerocal session`'s
+/// controller-terms table (`zerocal-profile`'s `Controller::offsets`) both go through
+/// [`ControllerDisplay::offsets`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct ControllerDisplay<T> {
     /// Each joint's name.
@@ -73,14 +79,101 @@ impl<T: Real> ControllerDisplay<T> {
         if self.j3_minus_j2 {
             d[2] -= d[1];
         }
-        core::array::from_fn(|k| {
-            let s = if self.sign[k] < 0 {
-                -T::one()
-            } else {
-                T::one()
-            };
-            s * d[k] + self.zero_deg[k]
+        core::array::from_fn(|k| self.sign_of(k) * d[k] + self.zero_deg[k])
+    }
+}
+
+/// One joint's zero offset as the controller takes it, in its joint degrees.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ControllerOffset<T> {
+    /// Δq = true − commanded as the controller shows the joint (deg).
+    pub shown_deg: T,
+    /// Its 1σ (deg), through the same signs and coupling.
+    pub sigma_deg: T,
+}
+
+impl<T: Real> ControllerDisplay<T> {
+    /// −1 or +1 for joint `k`.
+    fn sign_of(&self, k: usize) -> T {
+        if self.sign[k] < 0 {
+            -T::one()
+        } else {
+            T::one()
+        }
+    }
+
+    /// Δq per joint (deg) of model offsets Δθ1..Δθ6 (rad). A zero offset is a change
+    /// of the shown angle, so the signs and the coupling apply and the zeros do not:
+    /// with FANUC's coupling a pure Δθ2 moves the shown J3 by −Δθ2.
+    pub fn offsets_deg(&self, delta_rad: &[T; JOINTS]) -> [T; JOINTS] {
+        let mut d = delta_rad.map(rad_to_deg);
+        if self.j3_minus_j2 {
+            d[2] -= d[1];
+        }
+        core::array::from_fn(|k| self.sign_of(k) * d[k])
+    }
+
+    /// The covariance (deg²) of Δq from that of Δθ (rad²), through the same linear map
+    /// `Δq = A·Δθ`, `A = diag(sign)·C·(180/π)` with `C` the coupling: the coupled J3's
+    /// variance takes Δθ2's and their covariance too.
+    pub fn offsets_covariance_deg2(
+        &self,
+        cov_rad2: &[[T; JOINTS]; JOINTS],
+    ) -> [[T; JOINTS]; JOINTS] {
+        let deg_per_rad = rad_to_deg(T::one());
+        let mut a = [[T::zero(); JOINTS]; JOINTS];
+        for (k, row) in a.iter_mut().enumerate() {
+            row[k] = self.sign_of(k) * deg_per_rad;
+        }
+        if self.j3_minus_j2 {
+            a[2][1] = -a[2][2];
+        }
+        let mut out = [[T::zero(); JOINTS]; JOINTS];
+        for (i, oi) in out.iter_mut().enumerate() {
+            for (j, oij) in oi.iter_mut().enumerate() {
+                let mut acc = T::zero();
+                for k in 0..JOINTS {
+                    for l in 0..JOINTS {
+                        acc += a[i][k] * cov_rad2[k][l] * a[j][l];
+                    }
+                }
+                *oij = acc;
+            }
+        }
+        out
+    }
+
+    /// Each joint's offset as the controller takes it, with its 1σ, from model offsets
+    /// Δθ1..Δθ6 (rad) and their covariance (rad²).
+    pub fn offsets(
+        &self,
+        delta_rad: &[T; JOINTS],
+        cov_rad2: &[[T; JOINTS]; JOINTS],
+    ) -> [ControllerOffset<T>; JOINTS] {
+        let deg = self.offsets_deg(delta_rad);
+        let cov = self.offsets_covariance_deg2(cov_rad2);
+        core::array::from_fn(|k| ControllerOffset {
+            shown_deg: deg[k],
+            sigma_deg: cov[k][k].max(T::zero()).sqrt(),
         })
+    }
+
+    /// Joints 2-6's offsets as the controller takes them, from a session's Δθ2..Δθ6
+    /// (rad) and their covariance (rad²); joint 1 has no offset (gravity does not see
+    /// it), so it enters as zero with no variance.
+    pub fn session_offsets(
+        &self,
+        offsets_rad: &[T; SESSION_JOINTS],
+        covariance_rad2: &[[T; SESSION_JOINTS]; SESSION_JOINTS],
+    ) -> [ControllerOffset<T>; SESSION_JOINTS] {
+        let mut delta = [T::zero(); JOINTS];
+        delta[1..].copy_from_slice(offsets_rad);
+        let mut cov = [[T::zero(); JOINTS]; JOINTS];
+        for (row, from) in cov[1..].iter_mut().zip(covariance_rad2) {
+            row[1..].copy_from_slice(from);
+        }
+        let all = self.offsets(&delta, &cov);
+        core::array::from_fn(|k| all[k + 1])
     }
 }
 
@@ -781,6 +874,34 @@ mod tests {
             up.feed("end"),
             Err(ProfileError::Incomplete { missing: 12 })
         );
+    }
+
+    #[test]
+    fn a_coupled_j3_offset_takes_j2s_offset_and_variance() {
+        let fanuc = ControllerDisplay::<f64> {
+            j3_minus_j2: true,
+            ..Default::default()
+        };
+        // Δθ2 = +0.1°, Δθ3 = −0.4° with 1σ 0.0005° and 0.0008°, correlated +0.5.
+        let (s2, s3) = (deg_to_rad(0.0005), deg_to_rad(0.0008));
+        let mut cov = [[0.0; SESSION_JOINTS]; SESSION_JOINTS];
+        cov[0][0] = s2 * s2;
+        cov[1][1] = s3 * s3;
+        cov[0][1] = 0.5 * s2 * s3;
+        cov[1][0] = cov[0][1];
+        let delta = [deg_to_rad(0.1), deg_to_rad(-0.4), 0.0, 0.0, 0.0];
+        let shown = fanuc.session_offsets(&delta, &cov);
+        // J3 = Δθ3 − Δθ2 = −0.5°; its variance 0.25 + 0.64 − 2·0.2 = 0.49 (1e-3 deg)²:
+        // 1σ 0.0007°, below J3's own 0.0008° since the two move together.
+        assert!((shown[0].shown_deg - 0.1).abs() < 1e-12);
+        assert!((shown[1].shown_deg + 0.5).abs() < 1e-12);
+        assert!((shown[1].sigma_deg - 0.0007).abs() < 1e-12);
+        assert!((shown[0].sigma_deg - 0.0005).abs() < 1e-12);
+        // Signs turn an offset; zeros never enter one.
+        let kuka = kuka_like().display;
+        let shown = kuka.session_offsets(&delta.map(|d| d + deg_to_rad(0.01)), &cov);
+        assert!((shown[2].shown_deg + 0.01).abs() < 1e-12);
+        assert!((shown[1].shown_deg - (-0.39)).abs() < 1e-12);
     }
 
     #[test]
