@@ -502,10 +502,7 @@ pub fn check_reply(expect: &Expect, reply: &Reply) -> Result<String, CliError> {
     let lines: Vec<&str> = reply.lines.iter().map(String::as_str).collect();
     let cut = || {
         if reply.partial > 0 {
-            format!(
-                ", then {} bytes of a line cut off",
-                reply.partial
-            )
+            format!(", then {} bytes of a line cut off", reply.partial)
         } else {
             String::new()
         }
@@ -677,12 +674,7 @@ pub fn perform(
             Err(e @ (ReplyError::NoAnswer(_) | ReplyError::Port(_))) => {
                 return Err(CliError::Input(e.to_string()))
             }
-            Err(e) => {
-                return Err(CliError::Refused(format!(
-                    "{}: {e}",
-                    request.expect.name()
-                )))
-            }
+            Err(e) => return Err(CliError::Refused(format!("{}: {e}", request.expect.name()))),
         };
         out.push_str(&check_reply(&request.expect, &reply)?);
     }
@@ -702,11 +694,10 @@ pub fn run(args: &PendantArgs) -> Result<String, CliError> {
         .timeout(Duration::from_millis(50))
         .open()
         .map_err(|e| CliError::Input(format!("{}: {e}", args.port)))?;
-    let out = perform(&mut port, &args.action, Timeouts::LINK)
-        .map_err(|e| match e {
-            CliError::Input(m) => CliError::Input(format!("{}: {m}", args.port)),
-            refused => refused,
-        })?;
+    let out = perform(&mut port, &args.action, Timeouts::LINK).map_err(|e| match e {
+        CliError::Input(m) => CliError::Input(format!("{}: {m}", args.port)),
+        refused => refused,
+    })?;
     if let PendantAction::Export { out: Some(path) } = &args.action {
         std::fs::write(path, &out)
             .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;

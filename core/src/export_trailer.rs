@@ -181,7 +181,10 @@ pub fn parse(line: &str) -> Result<Trailer, TrailerError> {
             .then(|| u32::from_str_radix(s, radix).ok())
             .flatten()
     };
-    match (digits(lines, 10, 10), (crc.len() == 8).then(|| digits(crc, 16, 8))) {
+    match (
+        digits(lines, 10, 10),
+        (crc.len() == 8).then(|| digits(crc, 16, 8)),
+    ) {
         (Some(lines), Some(Some(crc32))) => Ok(Trailer { lines, crc32 }),
         _ => Err(TrailerError::Malformed),
     }
@@ -261,7 +264,12 @@ mod tests {
             assert!(is_trailer(junk), "{junk}");
             assert_eq!(parse(junk), Err(TrailerError::Malformed), "{junk}");
         }
-        for other in ["# end of my notes", "# endlines 3", "# ending lines", "1,2,3"] {
+        for other in [
+            "# end of my notes",
+            "# endlines 3",
+            "# ending lines",
+            "1,2,3",
+        ] {
             assert!(!is_trailer(other), "{other}");
         }
     }

@@ -89,7 +89,10 @@ pub fn plan_stored(poses: usize) -> Result<Line, fmt::Error> {
 
 /// The number of poses a [`plan_stored`] line confirms.
 pub fn parse_plan_stored(line: &str) -> Option<usize> {
-    count(line.strip_prefix(PLAN_STORED.0)?.strip_suffix(PLAN_STORED.1)?)
+    count(
+        line.strip_prefix(PLAN_STORED.0)?
+            .strip_suffix(PLAN_STORED.1)?,
+    )
 }
 
 /// The pendant's own `status` line, after core's.
@@ -539,7 +542,10 @@ impl fmt::Display for StatusError<'_> {
                 line - 1
             ),
             StatusProblem::Extra => {
-                write!(f, "line {line}: more than the {STATUS_LINES} lines of status")
+                write!(
+                    f,
+                    "line {line}: more than the {STATUS_LINES} lines of status"
+                )
             }
             StatusProblem::Pendant(words) => write!(f, "line {line}: the pendant says: {words}"),
             StatusProblem::NotTheLine { expected } => {
@@ -587,7 +593,10 @@ pub fn parse_status<'a>(lines: &[&'a str]) -> Result<Status<'a>, StatusError<'a>
             None => Ok(line),
         }
     };
-    let err = |i: usize, problem| StatusError { line: i + 1, problem };
+    let err = |i: usize, problem| StatusError {
+        line: i + 1,
+        problem,
+    };
     let not_the = |i: usize, expected| err(i, StatusProblem::NotTheLine { expected });
     let number = |i: usize, field: &'static str, text: &'a str, min: f64| {
         crate::decimal::parse(text)
@@ -598,21 +607,23 @@ pub fn parse_status<'a>(lines: &[&'a str]) -> Result<Status<'a>, StatusError<'a>
         let mut out = [0.0; 1 + WRIST_JOINTS];
         let mut n = 0;
         for v in text.split(',') {
-            let slot = out.get_mut(n).ok_or(err(i, StatusProblem::NotANumber { field, text }))?;
+            let slot = out
+                .get_mut(n)
+                .ok_or(err(i, StatusProblem::NotANumber { field, text }))?;
             *slot = number(i, field, v, min)?;
             n += 1;
         }
         Ok::<_, StatusError<'a>>((out, n))
     };
-    let wrist = |i: usize, field: &'static str, text: &'a str, min: f64| {
-        match numbers(i, field, text, min)? {
-            (v, WRIST_JOINTS) => {
-                let mut out = [0.0; WRIST_JOINTS];
-                out.copy_from_slice(&v[..WRIST_JOINTS]);
-                Ok(out)
-            }
-            _ => Err(err(i, StatusProblem::NotANumber { field, text })),
+    let wrist = |i: usize, field: &'static str, text: &'a str, min: f64| match numbers(
+        i, field, text, min,
+    )? {
+        (v, WRIST_JOINTS) => {
+            let mut out = [0.0; WRIST_JOINTS];
+            out.copy_from_slice(&v[..WRIST_JOINTS]);
+            Ok(out)
         }
+        _ => Err(err(i, StatusProblem::NotANumber { field, text })),
     };
     let a_count = |i: usize, field: &'static str, text: &'a str, max: usize| {
         count(text)
@@ -726,8 +737,9 @@ pub fn parse_status<'a>(lines: &[&'a str]) -> Result<Status<'a>, StatusError<'a>
     })()
     .ok_or(not_the(5, "pendant"))?;
     let small = |i, field, text| {
-        a_count(i, field, text, u32::MAX as usize)
-            .and_then(|n| u32::try_from(n).map_err(|_| err(i, StatusProblem::NotANumber { field, text })))
+        a_count(i, field, text, u32::MAX as usize).and_then(|n| {
+            u32::try_from(n).map_err(|_| err(i, StatusProblem::NotANumber { field, text }))
+        })
     };
     let dropped_frames = small(5, "frames dropped", d)?;
     let display_faults = small(5, "display faults", f)?;
@@ -772,7 +784,10 @@ mod tests {
         assert_eq!((s.plan_poses, s.captured), (0, 0));
         // Five decimals of a degree on the line.
         let [x, y] = s.bias_deg.unwrap();
-        assert!((x - 0.01234).abs() <= 5e-6 && (y + 0.5).abs() <= 5e-6, "{x} {y}");
+        assert!(
+            (x - 0.01234).abs() <= 5e-6 && (y + 0.5).abs() <= 5e-6,
+            "{x} {y}"
+        );
         assert_eq!(s.stage1, None);
         assert_eq!(s.stage2, Stage2Status::NotDone);
         assert_eq!(s.last_result, None);
@@ -809,8 +824,11 @@ mod tests {
             }
         );
         assert_eq!(
-            problem(&with(4, "last result: j2..j6 offsets_deg 1,2,3,4,inf sigma_deg 1,1,1,1"))
-                .problem,
+            problem(&with(
+                4,
+                "last result: j2..j6 offsets_deg 1,2,3,4,inf sigma_deg 1,1,1,1"
+            ))
+            .problem,
             StatusProblem::NotANumber {
                 field: "last result offsets",
                 text: "inf"
@@ -860,7 +878,12 @@ mod tests {
         assert_eq!(parse_profile_stored(&l), Some("kuka-kr6-r900-sixx"));
         assert_eq!(parse_plan_stored(&plan_stored(24).unwrap()), Some(24));
         assert_eq!(parse_plan_stored("ok: plan set, -3 poses"), None);
-        assert_eq!(parse_profile_stored("ok: profile  stored; session cleared; plan cleared: send one with 'plan set'"), None);
+        assert_eq!(
+            parse_profile_stored(
+                "ok: profile  stored; session cleared; plan cleared: send one with 'plan set'"
+            ),
+            None
+        );
     }
 
     #[test]

@@ -28,8 +28,8 @@ use embedded_io_async::{Read, Write};
 use heapless::Vec;
 use zerocal_core::decimal::Fixed;
 use zerocal_core::link::{
-    parse_command, pendant_status, plan_line, plan_stored, profile_stored, status, Command,
-    Line, PlanUpload, UploadStep, ERASED, HELP, NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
+    parse_command, pendant_status, plan_line, plan_stored, profile_stored, status, Command, Line,
+    PlanUpload, UploadStep, ERASED, HELP, NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
 };
 use zerocal_core::log::export;
 use zerocal_core::procedure::profile::{ProfileStep, ProfileUpload};
@@ -199,7 +199,10 @@ impl<W: Write> Server<'_, W> {
     }
 
     /// A line formatted by core, or `error: line too long` if it did not fit.
-    async fn write_text(&mut self, line: Result<Line, core::fmt::Error>) -> Result<(), Disconnected> {
+    async fn write_text(
+        &mut self,
+        line: Result<Line, core::fmt::Error>,
+    ) -> Result<(), Disconnected> {
         match line {
             Ok(text) => self.write_line(text.as_bytes()).await,
             Err(_) => self.write_line(b"error: line too long").await,
