@@ -74,6 +74,10 @@ pub struct Export {
     pub poses: Vec<PoseReading<f64>>,
     /// Their lines.
     pub lines: Vec<usize>,
+    /// The export ended with its end trailer, which matched (`zerocal_core::export_trailer`):
+    /// nothing lost or changed since the pendant wrote it. Without one (a file edited by
+    /// hand, or not from a pendant) it is read unchecked, with a note.
+    pub trailer_checked: bool,
 }
 
 /// Reads a pendant export.
@@ -92,6 +96,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
         extras: None,
         poses: Vec::new(),
         lines: Vec::new(),
+        trailer_checked: false,
     };
     for line in text.lines() {
         match reader.feed(line, parse_number).map_err(|e| e.to_string())? {
@@ -119,6 +124,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
         }
     }
     reader.finish().map_err(|e| e.to_string())?;
+    export.trailer_checked = reader.trailer().is_some();
     Ok(export)
 }
 
@@ -276,6 +282,13 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         ));
     }
     notes.extend(profile.missing.iter().map(|m| format!("profile: {m}")));
+    if !export.trailer_checked {
+        notes.push(
+            "the export has no end trailer ('# end lines N crc32 X'): edited by hand or not \
+             from a pendant, so whether lines were lost or changed is not checked"
+                .into(),
+        );
+    }
     if args.mount_tolerance_deg == 0.0 {
         notes.push(
             "the brackets' seat tolerance is not included (--mount-tolerance-deg): a turn of \

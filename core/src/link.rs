@@ -647,7 +647,8 @@ pub fn parse_status<'a>(lines: &[&'a str]) -> Result<Status<'a>, StatusError<'a>
             text: name,
         },
     ))?;
-    let plan_poses = a_count(0, "plan", plan, MAX_PLAN_POSES)?;
+    // A plan restored from the store may hold what a pose list holds.
+    let plan_poses = a_count(0, "plan", plan, crate::plan::MAX_POSES)?;
     let captured = a_count(0, "captured", captured, crate::plan::MAX_POSES)?;
 
     // 1: bias
