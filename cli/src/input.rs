@@ -61,6 +61,28 @@ pub fn read_capped(path: &Path, cap: usize, what: &str) -> Result<String, CliErr
 /// # Errors
 /// As [`read_capped`].
 pub fn read_capped_from(input: impl Read, cap: usize, name: &str) -> Result<String, CliError> {
+    let bytes = read_capped_bytes_from(input, cap, name)?;
+    String::from_utf8(bytes).map_err(|e| {
+        CliError::Input(format!(
+            "{name} is not UTF-8 text (byte {} of it)",
+            e.utf8_error().valid_up_to() + 1
+        ))
+    })
+}
+
+/// The bytes of `path`, at most `cap` of them, for a reader that names a bad byte by
+/// its line itself (`zerocal_core::log::text_of`).
+///
+/// # Errors
+/// A file that does not open or read, or is longer than `cap` (naming the cap).
+pub fn read_capped_bytes(path: &Path, cap: usize, what: &str) -> Result<Vec<u8>, CliError> {
+    let name = || format!("{} ({what})", path.display());
+    let file = std::fs::File::open(path)
+        .map_err(|e| CliError::Input(format!("cannot read {}: {e}", name())))?;
+    read_capped_bytes_from(file, cap, &name())
+}
+
+fn read_capped_bytes_from(input: impl Read, cap: usize, name: &str) -> Result<Vec<u8>, CliError> {
     let limit = u64::try_from(cap).unwrap_or(u64::MAX).saturating_add(1);
     let mut bytes = Vec::new();
     input
@@ -72,12 +94,7 @@ pub fn read_capped_from(input: impl Read, cap: usize, name: &str) -> Result<Stri
             "{name} is longer than {cap} bytes, the most such a file holds; not read"
         )));
     }
-    String::from_utf8(bytes).map_err(|e| {
-        CliError::Input(format!(
-            "{name} is not UTF-8 text (byte {} of it)",
-            e.utf8_error().valid_up_to() + 1
-        ))
-    })
+    Ok(bytes)
 }
 
 #[cfg(test)]

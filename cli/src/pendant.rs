@@ -9,24 +9,52 @@
 //! - `export [--out FILE]`: the session as `zerocal session` reads it.
 //! - `erase`: `erase all` (session, bias, last result, profile, plan).
 //!
-//! Each action is a list of requests (bytes) and a check of the answers; the I/O is
-//! a serial port opened raw. The requests and checks are tested against the pendant's
-//! own link task on the desktop (`zerocal_pendant::host::runner::converse`).
+//! Each action is a list of requests (bytes), each with the grammar its reply must
+//! have ([`Expect`]). Nothing the port sends is believed unchecked: a reply is
+//! printable ASCII lines within the link's bounds ([`read_reply`]: line length, lines
+//! and bytes of the reply, time), then exactly the lines its request has
+//! ([`check_reply`]): `status` parsed field by field and printed from the fields, the
+//! export whole by its end trailer, the changes by their confirmation lines. The I/O is
+//! any `Read + Write` (a serial port opened raw; a scripted port in the tests). The
+//! requests and checks are tested against the pendant's own link task on the desktop
+//! (`zerocal_pendant::host::runner::converse`). docs/pendant-link.md has the grammar.
 
 use std::io::{Read, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::{Args, Subcommand};
+use zerocal_core::export_trailer;
+use zerocal_core::link::{
+    parse_plan_stored, parse_profile_stored, parse_status, phase_name, Stage2Status, Status,
+    ERASED, ERROR_PREFIX, MAX_COMMAND_BYTES, PLAN_PROMPT, PROFILE_PROMPT, REPLY_LINE_BYTES,
+    STATUS_LINES,
+};
+use zerocal_core::log::{parse_meta, LogError, LogLine, LogReader, EXPORT_MAX_LINES, LOG_HEADER};
 use zerocal_core::model::JOINTS;
 use zerocal_core::procedure::profile::{JointName, PendantProfile};
 use zerocal_core::procedure::{RobotName, MAX_PLAN_POSES};
 use zerocal_profile::Profile;
 
 use crate::error::CliError;
+use crate::log::parse_number;
+
+/// The exit statuses, for `--help`.
+fn exit_statuses() -> String {
+    format!(
+        "Exit status: 0 the pendant answered as it must; 2 usage, a port that does not \
+         open, or no answer within {} s; 3 the pendant refused, or answered something \
+         else than the request's reply (not printable text, too long, not over within \
+         {} s, cut short, a field that does not parse, an export whose end trailer is \
+         missing or does not match, no confirmation). docs/pendant-link.md has the replies.",
+        Timeouts::LINK.quiet.as_secs_f64(),
+        Timeouts::LINK.reply.as_secs_f64()
+    )
+}
 
 /// `zerocal pendant`.
 #[derive(Args, Debug)]
+#[command(after_help = exit_statuses())]
 pub struct PendantArgs {
     /// The pendant's serial port (`/dev/ttyACM0`, `COM5`).
     #[arg(long, value_name = "PORT")]
@@ -90,9 +118,6 @@ pub fn pendant_profile(profile: &Profile) -> Result<PendantProfile<f64>, CliErro
     })
 }
 
-/// The longest line the pendant's link takes (bytes): `zerocal_pendant::link::MAX_LINE`.
-const LINK_LINE_BYTES: usize = 128;
-
 /// The bytes of `profile set` … `end`.
 ///
 /// # Errors
@@ -102,8 +127,8 @@ pub fn profile_request(p: &PendantProfile<f64>) -> Result<Vec<u8>, CliError> {
     for i in 0.. {
         match p.line(i) {
             None => break,
-            // The pendant's line editor holds 128 bytes, the line ending included.
-            Some(Ok(line)) if line.len() + 2 <= LINK_LINE_BYTES => {
+            // The pendant's line editor holds MAX_COMMAND_BYTES, the line end included.
+            Some(Ok(line)) if line.len() + 2 <= MAX_COMMAND_BYTES => {
                 out.extend_from_slice(line.as_bytes());
                 out.extend_from_slice(b"\r\n");
             }
@@ -139,58 +164,129 @@ pub fn plan_request(poses_rad: &[[f64; JOINTS]]) -> Result<Vec<u8>, CliError> {
     Ok(out)
 }
 
-/// One request: its bytes, and the line that ends its answer (`None`: the answer ends
-/// when the pendant falls silent).
+/// How long the desktop waits for the pendant.
+#[derive(Clone, Copy, Debug)]
+pub struct Timeouts {
+    /// Longest quiet before a reply's first byte and between its bytes. No byte in
+    /// that time: no answer (exit 2); a reply begun and then quiet: cut (exit 3).
+    pub quiet: Duration,
+    /// Longest a whole reply may take (a reply that trickles in forever).
+    pub reply: Duration,
+}
+
+impl Timeouts {
+    /// The real link's: the pendant holds an answer longest for `erase all`, whose
+    /// three sector erases take up to 1.5 s (README, the flash row of the failure
+    /// table), so twice that is quiet enough; a whole export is at most
+    /// [`EXPORT_MAX_LINES`] × [`REPLY_LINE_BYTES`] (about 12 KB), milliseconds over
+    /// USB full speed, so 10 s leaves room for a few such pauses.
+    pub const LINK: Timeouts = Timeouts {
+        quiet: Duration::from_secs(3),
+        reply: Duration::from_secs(10),
+    };
+}
+
+/// What a request's reply must be.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Expect {
+    /// The [`STATUS_LINES`] lines of `status`.
+    Status,
+    /// An export, to its end trailer.
+    Export,
+    /// [`ERASED`].
+    Erased,
+    /// [`PROFILE_PROMPT`], then the profile stored under this name.
+    ProfileStored(String),
+    /// [`PLAN_PROMPT`], then the plan stored with this many poses.
+    PlanStored(usize),
+}
+
+impl Expect {
+    /// The most lines the reply may have.
+    pub fn max_lines(&self) -> usize {
+        match self {
+            Expect::Status => STATUS_LINES,
+            Expect::Export => EXPORT_MAX_LINES,
+            Expect::Erased => 1,
+            Expect::ProfileStored(_) | Expect::PlanStored(_) => 2,
+        }
+    }
+
+    /// The most bytes the reply may have.
+    pub fn max_bytes(&self) -> usize {
+        self.max_lines() * REPLY_LINE_BYTES
+    }
+
+    /// Whether the reply is over once it has `lines`: its last line came, or a line
+    /// that cannot be followed by it (the pendant's `error:` instead of the answer).
+    fn over(&self, lines: &[String]) -> bool {
+        let Some(last) = lines.last() else {
+            return false;
+        };
+        let refused = lines.len() == 1 && last.starts_with(ERROR_PREFIX);
+        refused
+            || match self {
+                Expect::Status => lines.len() >= STATUS_LINES,
+                Expect::Export => export_trailer::is_trailer(last),
+                Expect::Erased => true,
+                Expect::ProfileStored(_) => last != PROFILE_PROMPT,
+                Expect::PlanStored(_) => last != PLAN_PROMPT,
+            }
+    }
+
+    /// What the reply is called in messages.
+    fn name(&self) -> &'static str {
+        match self {
+            Expect::Status => "status",
+            Expect::Export => "export",
+            Expect::Erased => "erase",
+            Expect::ProfileStored(_) => "profile set",
+            Expect::PlanStored(_) => "plan set",
+        }
+    }
+}
+
+/// One request: its bytes, and what its reply must be.
 #[derive(Clone, Debug)]
 pub struct Request {
     /// What is sent.
     pub bytes: Vec<u8>,
-    /// The start of the answer's last line on success (an `error:` line ends it too).
-    pub done: Option<&'static str>,
+    /// What must come back.
+    pub expect: Expect,
 }
 
 /// The requests of an action, in order. A request is sent only once the one before it
-/// was answered without an error (a plan must not follow a refused profile).
+/// was answered as it must be (a plan must not follow a refused profile).
 ///
 /// # Errors
 /// An unknown robot, a plan that does not read or does not fit.
 pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
-    let silent = |bytes: &[u8]| Request {
+    let request = |bytes: &[u8], expect| Request {
         bytes: bytes.to_vec(),
-        done: None,
+        expect,
     };
     Ok(match action {
-        PendantAction::Status => vec![silent(b"status\r\n")],
-        PendantAction::Export { .. } => vec![silent(b"export\r\n")],
-        PendantAction::Erase => vec![Request {
-            bytes: b"erase all\r\n".to_vec(),
-            done: Some("ok: store erased"),
-        }],
+        PendantAction::Status => vec![request(b"status\r\n", Expect::Status)],
+        PendantAction::Export { .. } => vec![request(b"export\r\n", Expect::Export)],
+        PendantAction::Erase => vec![request(b"erase all\r\n", Expect::Erased)],
         PendantAction::LoadProfile { robot, plan } => {
             let profile = crate::robot::load(robot)?;
             let poses = match plan {
                 Some(path) => crate::program::read_plan(path, &profile)?,
                 None => crate::program::default_plan(robot, &default_timing()?)?,
             };
+            let pendant = pendant_profile(&profile)?;
             vec![
                 Request {
-                    bytes: profile_request(&pendant_profile(&profile)?)?,
-                    done: Some("ok: profile "),
+                    bytes: profile_request(&pendant)?,
+                    expect: Expect::ProfileStored(pendant.robot.as_str().to_owned()),
                 },
                 Request {
                     bytes: plan_request(&poses)?,
-                    done: Some("ok: plan set"),
+                    expect: Expect::PlanStored(poses.len()),
                 },
             ]
         }
-    })
-}
-
-/// Whether `answer` is complete for `request`: its success line or an `error:` line.
-pub fn answered(request: &Request, answer: &str) -> bool {
-    answer.lines().any(|l| {
-        let l = l.trim();
-        l.starts_with("error:") || request.done.is_some_and(|d| l.starts_with(d))
     })
 }
 
@@ -206,137 +302,402 @@ fn default_timing() -> Result<crate::timing::TimingArgs, CliError> {
         .map_err(|e| CliError::Input(e.to_string()))
 }
 
-/// The pendant's `error:` line in an answer, if any.
-fn pendant_error(answer: &str) -> Option<&str> {
-    answer
-        .lines()
-        .find_map(|l| l.trim().strip_prefix("error:"))
+/// A reply as read: its lines (without their CR LF), and whether it ended as its
+/// grammar says (else the pendant fell quiet first).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Reply {
+    /// The whole lines.
+    pub lines: Vec<String>,
+    /// The reply's last line came.
+    pub over: bool,
+    /// Bytes after the last whole line (a line cut off).
+    pub partial: usize,
+}
+
+/// Why a reply was not read.
+#[derive(Debug)]
+pub enum ReplyError {
+    /// Not a byte within [`Timeouts::quiet`].
+    NoAnswer(Duration),
+    /// A byte that is not printable ASCII (a CR only right before LF).
+    NonPrintable {
+        /// The byte.
+        byte: u8,
+        /// Its offset in the reply.
+        at: usize,
+    },
+    /// A line longer than the pendant writes.
+    LineTooLong {
+        /// The most bytes of a line, CR LF included.
+        max: usize,
+    },
+    /// More lines than the reply has.
+    TooManyLines {
+        /// The most.
+        max: usize,
+    },
+    /// More bytes than the reply has.
+    TooLong {
+        /// The most.
+        max: usize,
+    },
+    /// Not over within [`Timeouts::reply`].
+    Deadline {
+        /// The deadline.
+        limit: Duration,
+        /// Bytes by then.
+        bytes: usize,
+    },
+    /// The port's own error.
+    Port(std::io::Error),
+}
+
+impl std::fmt::Display for ReplyError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ReplyError::NoAnswer(quiet) => write!(
+                f,
+                "the pendant did not answer within {:.1} s: is this its port, and is it on a capture or result screen?",
+                quiet.as_secs_f64()
+            ),
+            ReplyError::NonPrintable { byte, at } => {
+                write!(f, "reply has non-printable byte {byte:#04x} at {at}")
+            }
+            ReplyError::LineTooLong { max } => {
+                write!(f, "reply has a line longer than {max} bytes")
+            }
+            ReplyError::TooManyLines { max } => write!(f, "reply longer than {max} lines"),
+            ReplyError::TooLong { max } => write!(f, "reply longer than {max} bytes"),
+            ReplyError::Deadline { limit, bytes } => write!(
+                f,
+                "reply not over within {:.1} s ({bytes} bytes by then)",
+                limit.as_secs_f64()
+            ),
+            ReplyError::Port(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+/// Reads one reply: printable ASCII lines ended by CR LF (or LF), until the line that
+/// ends it ([`Expect`]), the pendant falls quiet for [`Timeouts::quiet`], or a bound
+/// is broken (a line or the reply too long, [`Timeouts::reply`] over): a port that
+/// floods bytes is refused after at most [`Expect::max_bytes`] of them.
+///
+/// # Errors
+/// [`ReplyError`].
+pub fn read_reply(
+    port: &mut impl Read,
+    expect: &Expect,
+    timeouts: Timeouts,
+) -> Result<Reply, ReplyError> {
+    let start = Instant::now();
+    let mut last = start;
+    let mut lines = Vec::new();
+    let mut line: Vec<u8> = Vec::new();
+    let mut offset = 0_usize;
+    // Offset of a CR not yet followed by its LF.
+    let mut cr = None;
+    let max_bytes = expect.max_bytes();
+    let mut buf = [0_u8; 512];
+    loop {
+        if start.elapsed() >= timeouts.reply {
+            return Err(ReplyError::Deadline {
+                limit: timeouts.reply,
+                bytes: offset,
+            });
+        }
+        let n = match port.read(&mut buf) {
+            Ok(n) => n,
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    std::io::ErrorKind::TimedOut
+                        | std::io::ErrorKind::WouldBlock
+                        | std::io::ErrorKind::Interrupted
+                ) =>
+            {
+                0
+            }
+            Err(e) => return Err(ReplyError::Port(e)),
+        };
+        if n > 0 {
+            last = Instant::now();
+        }
+        for &byte in buf.get(..n).unwrap_or(&[]) {
+            let at = offset;
+            offset += 1;
+            if offset > max_bytes {
+                return Err(ReplyError::TooLong { max: max_bytes });
+            }
+            match (byte, cr) {
+                (b'\n', _) => {
+                    cr = None;
+                    // Printable ASCII only: the bytes are text.
+                    lines.push(String::from_utf8_lossy(&line).into_owned());
+                    line.clear();
+                    if expect.over(&lines) {
+                        return Ok(Reply {
+                            lines,
+                            over: true,
+                            partial: 0,
+                        });
+                    }
+                    if lines.len() >= expect.max_lines() {
+                        return Err(ReplyError::TooManyLines {
+                            max: expect.max_lines(),
+                        });
+                    }
+                }
+                (_, Some(cr_at)) => {
+                    return Err(ReplyError::NonPrintable {
+                        byte: b'\r',
+                        at: cr_at,
+                    })
+                }
+                (b'\r', None) => cr = Some(at),
+                (0x20..=0x7e, None) => {
+                    line.push(byte);
+                    if line.len() + 2 > REPLY_LINE_BYTES {
+                        return Err(ReplyError::LineTooLong {
+                            max: REPLY_LINE_BYTES,
+                        });
+                    }
+                }
+                (_, None) => return Err(ReplyError::NonPrintable { byte, at }),
+            }
+        }
+        if n == 0 && last.elapsed() >= timeouts.quiet {
+            if offset == 0 {
+                return Err(ReplyError::NoAnswer(timeouts.quiet));
+            }
+            return Ok(Reply {
+                lines,
+                over: false,
+                partial: line.len() + usize::from(cr.is_some()),
+            });
+        }
+    }
+}
+
+/// The pendant's `error:` line as the reply's first, if so.
+fn pendant_error(reply: &Reply) -> Option<&str> {
+    reply
+        .lines
+        .first()
+        .and_then(|l| l.strip_prefix(ERROR_PREFIX))
         .map(str::trim)
 }
 
-/// Checks the answers of an action and returns what to print.
+/// Checks a reply against its grammar; returns what to print of it.
 ///
 /// # Errors
-/// No answer (exit 2: the port is not a pendant, or it is not ready); an `error:` from
-/// the pendant (exit 3, with its words).
-pub fn check(action: &PendantAction, answers: &[String]) -> Result<String, CliError> {
-    if answers.iter().any(|a| a.trim().is_empty()) {
-        return Err(CliError::Input(
-            "the pendant did not answer: is this its port, and is it on a capture or result screen?"
-                .into(),
-        ));
+/// Exit 3 ([`CliError::Refused`]), naming what is wrong: the pendant's `error:`, a
+/// reply cut short, a line that is not what the request's reply has there.
+pub fn check_reply(expect: &Expect, reply: &Reply) -> Result<String, CliError> {
+    let name = expect.name();
+    let wrong = |what: String| CliError::Refused(format!("{name}: {what}"));
+    if let Some(words) = pendant_error(reply) {
+        return Err(wrong(format!("the pendant refused: {words}")));
     }
-    if let Some(e) = answers.iter().find_map(|a| pendant_error(a)) {
-        return Err(CliError::Refused(format!("the pendant refused: {e}")));
-    }
-    let text = answers.concat().replace("\r\n", "\n");
-    Ok(match action {
-        PendantAction::LoadProfile { .. } => {
-            let oks: Vec<&str> = text
-                .lines()
-                .filter(|l| l.starts_with("ok: profile") || l.starts_with("ok: plan set"))
-                .collect();
-            if oks.len() != 2 {
-                return Err(CliError::Refused(format!(
-                    "the pendant did not confirm the profile and the plan:\n{text}"
+    let lines: Vec<&str> = reply.lines.iter().map(String::as_str).collect();
+    let cut = || {
+        if reply.partial > 0 {
+            format!(", then {} bytes of a line cut off", reply.partial)
+        } else {
+            String::new()
+        }
+    };
+    match expect {
+        Expect::Status => {
+            let status = parse_status(&lines).map_err(|e| wrong(format!("{e}{}", cut())))?;
+            Ok(render_status(&status))
+        }
+        Expect::Export => {
+            if !reply.over {
+                return Err(wrong(format!(
+                    "cut after {} lines (trailer missing){}",
+                    lines.len(),
+                    cut()
                 )));
             }
-            format!("{}\n", oks.join("\n"))
+            check_export(&lines).map_err(wrong)?;
+            let mut text = lines.join("\n");
+            text.push('\n');
+            Ok(text)
         }
-        PendantAction::Export { .. } => {
-            if !text.starts_with("# zerocal pendant export") {
-                return Err(CliError::Refused(format!(
-                    "not a pendant export:\n{}",
-                    text.lines().next().unwrap_or("")
-                )));
+        Expect::Erased => match lines.as_slice() {
+            [ERASED] => Ok(format!("{ERASED}\n")),
+            [] => Err(wrong(format!("no confirmation line{}", cut()))),
+            [other, ..] => Err(wrong(format!(
+                "the pendant did not confirm the erase: '{other}' instead of '{ERASED}'"
+            ))),
+        },
+        Expect::ProfileStored(robot) => match lines.as_slice() {
+            [PROFILE_PROMPT, stored] if parse_profile_stored(stored) == Some(robot.as_str()) => {
+                Ok(format!("{stored}\n"))
             }
-            text
-        }
-        PendantAction::Status | PendantAction::Erase => text,
-    })
+            [PROFILE_PROMPT, stored] => Err(wrong(format!(
+                "'{stored}' does not confirm the profile '{robot}' sent"
+            ))),
+            [PROFILE_PROMPT] => Err(wrong(format!(
+                "the pendant took the lines but did not confirm the profile{}",
+                cut()
+            ))),
+            _ => Err(wrong(format!(
+                "not the pendant's answer: '{}'",
+                lines.first().copied().unwrap_or("")
+            ))),
+        },
+        Expect::PlanStored(poses) => match lines.as_slice() {
+            [PLAN_PROMPT, stored] if parse_plan_stored(stored) == Some(*poses) => {
+                Ok(format!("{stored}\n"))
+            }
+            [PLAN_PROMPT, stored] => Err(wrong(format!(
+                "'{stored}' does not confirm the {poses} poses sent"
+            ))),
+            [PLAN_PROMPT] => Err(wrong(format!(
+                "the pendant took the rows but did not confirm the plan{}",
+                cut()
+            ))),
+            _ => Err(wrong(format!(
+                "not the pendant's answer: '{}'",
+                lines.first().copied().unwrap_or("")
+            ))),
+        },
+    }
 }
 
-/// Sends `request` and collects the answer until it is [`answered`] or, for a request
-/// without a success line, the pendant has been silent for `silence`; at most `limit`
-/// (a flash erase may hold a reply for half a second).
-///
-/// # Errors
-/// The port's own errors.
-pub fn exchange(
-    port: &mut (impl Read + Write),
-    request: &Request,
-    silence: Duration,
-    limit: Duration,
-) -> std::io::Result<Vec<u8>> {
-    port.write_all(&request.bytes)?;
-    port.flush()?;
-    let start = Instant::now();
-    let mut last = Instant::now();
-    let mut answer = Vec::new();
-    let mut buf = [0_u8; 512];
-    while start.elapsed() < limit {
-        match port.read(&mut buf) {
-            Ok(0) => {}
-            Ok(n) => {
-                answer.extend_from_slice(&buf[..n]);
-                last = Instant::now();
-                if request.done.is_some() && answered(request, &String::from_utf8_lossy(&answer)) {
-                    break;
+/// An export's lines, whole (its trailer checked), every row and metadata line as
+/// `zerocal session` reads them. An export of a session without captures is whole too.
+fn check_export(lines: &[&str]) -> Result<(), String> {
+    if let Some((k, l)) = lines
+        .iter()
+        .enumerate()
+        .find(|(_, l)| l.starts_with(ERROR_PREFIX))
+    {
+        return Err(format!("line {}: the pendant says: {l}", k + 1));
+    }
+    let mut reader = LogReader::new();
+    for line in lines {
+        if let LogLine::Comment(c) = reader
+            .feed::<f64>(line, parse_number)
+            .map_err(|e| e.to_string())?
+        {
+            parse_meta::<f64>(c, reader.line(), parse_number).map_err(|e| e.to_string())?;
+        }
+    }
+    if reader.trailer().is_none() {
+        return Err(format!("cut after {} lines (trailer missing)", lines.len()));
+    }
+    match reader.finish() {
+        Err(LogError::NoHeader) => Err(format!("no log header ({LOG_HEADER})")),
+        _ => Ok(()),
+    }
+}
+
+/// `status` as the desktop prints it, from the parsed fields.
+pub fn render_status(s: &Status<'_>) -> String {
+    let list = |v: &[f64], signed: bool| {
+        v.iter()
+            .map(|x| {
+                if signed {
+                    format!("{x:+.5}")
+                } else {
+                    format!("{x:.5}")
                 }
-                continue;
-            }
-            Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {}
-            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-        if request.done.is_none() && !answer.is_empty() && last.elapsed() >= silence {
-            break;
-        }
-        if answer.is_empty() && start.elapsed() >= silence * 6 {
-            break;
-        }
-    }
-    Ok(answer)
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut out = format!(
+        "phase: {}\nplan: {} poses, {} captured\n",
+        phase_name(s.phase),
+        s.plan_poses,
+        s.captured
+    );
+    out.push_str(&match s.bias_deg {
+        Some([x, y]) => format!("bias: x {x:+.5} deg, y {y:+.5} deg\n"),
+        None => "bias: none (stage 0 not run)\n".into(),
+    });
+    out.push_str(&match s.stage1 {
+        Some(r) => format!(
+            "stage 1: j2 offset {:+.5} deg, base tilt alpha {:+.5} deg, beta {:+.5} deg\n",
+            r.j2_offset_deg, r.alpha_deg, r.beta_deg
+        ),
+        None => "stage 1: not done\n".into(),
+    });
+    out.push_str(&match s.stage2 {
+        Stage2Status::NotDone => "stage 2: not done\n".into(),
+        Stage2Status::Refused(words) => format!("stage 2: refused: {words}\n"),
+        Stage2Status::Done {
+            offsets_deg,
+            sigma_deg,
+            residual_rms_deg,
+        } => format!(
+            "stage 2: j3..j6 offsets {} deg, 1-sigma {} deg, residual rms {residual_rms_deg:.5} deg\n",
+            list(&offsets_deg, true),
+            list(&sigma_deg, false)
+        ),
+    });
+    out.push_str(&match s.last_result {
+        Some(r) => format!(
+            "last result: j2..j6 offsets {} deg, j3..j6 1-sigma {} deg\n",
+            list(&r.offsets_deg, true),
+            list(&r.sigma_deg, false)
+        ),
+        None => "last result: none\n".into(),
+    });
+    out.push_str(&format!(
+        "pendant: sensor frames dropped {}, display faults {}\n",
+        s.dropped_frames, s.display_faults
+    ));
+    out
 }
 
-/// Sends the requests in turn and returns each answer, stopping after the first that
-/// failed (an `error:` line, or no success line): a plan must not follow a refused
-/// profile.
+/// Sends an action's requests in turn, each only after the one before it was answered
+/// as it must be, and returns what to print.
 ///
 /// # Errors
-/// The port's own errors.
-pub fn talk(
+/// No answer, or a port error (exit 2); a reply that is not its request's (exit 3).
+pub fn perform(
     port: &mut (impl Read + Write),
-    requests: &[Request],
-    silence: Duration,
-) -> std::io::Result<Vec<String>> {
-    let mut answers = Vec::new();
-    for r in requests {
-        let bytes = exchange(port, r, silence, Duration::from_secs(60))?;
-        let answer = String::from_utf8_lossy(&bytes).into_owned();
-        let failed = pendant_error(&answer).is_some() || !answered(r, &answer);
-        answers.push(answer);
-        if failed {
-            break;
-        }
+    action: &PendantAction,
+    timeouts: Timeouts,
+) -> Result<String, CliError> {
+    let mut out = String::new();
+    for request in requests(action)? {
+        port.write_all(&request.bytes)
+            .and_then(|()| port.flush())
+            .map_err(|e| CliError::Input(format!("the port: {e}")))?;
+        let reply = match read_reply(port, &request.expect, timeouts) {
+            Ok(reply) => reply,
+            Err(e @ (ReplyError::NoAnswer(_) | ReplyError::Port(_))) => {
+                return Err(CliError::Input(e.to_string()))
+            }
+            Err(e) => return Err(CliError::Refused(format!("{}: {e}", request.expect.name()))),
+        };
+        out.push_str(&check_reply(&request.expect, &reply)?);
     }
-    Ok(answers)
+    Ok(out)
 }
 
 /// Runs `zerocal pendant`.
 ///
 /// # Errors
-/// A port that does not open, no answer, the pendant's refusal.
+/// A port that does not open, no answer (exit 2); a reply that is not what the
+/// request's must be (exit 3).
 pub fn run(args: &PendantArgs) -> Result<String, CliError> {
-    let requests = requests(&args.action)?;
+    // Before the port: a bad robot or plan is named without a pendant.
+    requests(&args.action)?;
     // A USB CDC port ignores the baud rate; opened raw (no echo, no line editing).
     let mut port = serialport::new(&args.port, 115_200)
         .timeout(Duration::from_millis(50))
         .open()
         .map_err(|e| CliError::Input(format!("{}: {e}", args.port)))?;
-    let answers = talk(&mut port, &requests, Duration::from_millis(500))
-        .map_err(|e| CliError::Input(format!("{}: {e}", args.port)))?;
-    let out = check(&args.action, &answers)?;
+    let out = perform(&mut port, &args.action, Timeouts::LINK).map_err(|e| match e {
+        CliError::Input(m) => CliError::Input(format!("{}: {m}", args.port)),
+        refused => refused,
+    })?;
     if let PendantAction::Export { out: Some(path) } = &args.action {
         std::fs::write(path, &out)
             .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
@@ -347,98 +708,4 @@ pub fn run(args: &PendantArgs) -> Result<String, CliError> {
         ));
     }
     Ok(out)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use std::collections::VecDeque;
-
-    /// A port that answers each request with the next scripted reply, and times out
-    /// when it has nothing to say.
-    struct Scripted {
-        replies: VecDeque<&'static [u8]>,
-        pending: VecDeque<u8>,
-        written: Vec<u8>,
-    }
-
-    impl Write for Scripted {
-        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-            self.written.extend_from_slice(buf);
-            if let Some(r) = self.replies.pop_front() {
-                self.pending.extend(r.iter().copied());
-            }
-            Ok(buf.len())
-        }
-        fn flush(&mut self) -> std::io::Result<()> {
-            Ok(())
-        }
-    }
-
-    impl Read for Scripted {
-        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
-            if self.pending.is_empty() {
-                std::thread::sleep(Duration::from_millis(2));
-                return Err(std::io::ErrorKind::TimedOut.into());
-            }
-            let n = buf.len().min(self.pending.len());
-            for b in buf.iter_mut().take(n) {
-                *b = self.pending.pop_front().unwrap_or(0);
-            }
-            Ok(n)
-        }
-    }
-
-    #[test]
-    fn a_refused_profile_stops_before_the_plan() {
-        let requests = requests(&PendantAction::LoadProfile {
-            robot: "abb-irb140".into(),
-            plan: None,
-        })
-        .unwrap();
-        assert_eq!(requests.len(), 2);
-        let mut port = Scripted {
-            replies: VecDeque::from([
-                &b"ok: send the profile's lines, then 'end'\r\nerror: a session is in progress; 'clear' first (profile unchanged)\r\n"[..],
-                &b"ok: plan set, 24 poses\r\n"[..],
-            ]),
-            pending: VecDeque::new(),
-            written: Vec::new(),
-        };
-        let answers = talk(&mut port, &requests, Duration::from_millis(20)).unwrap();
-        assert_eq!(answers.len(), 1, "the plan was not sent");
-        assert!(!String::from_utf8_lossy(&port.written).contains("plan set"));
-        let e = check(
-            &PendantAction::LoadProfile {
-                robot: "abb-irb140".into(),
-                plan: None,
-            },
-            &answers,
-        )
-        .unwrap_err();
-        assert_eq!(e.exit_code(), 3);
-        assert!(e.to_string().contains("session is in progress"), "{e}");
-    }
-
-    #[test]
-    fn an_upload_waits_for_its_line_past_a_silence() {
-        // The first 'ok:' of 'profile set' is not the answer's end: the exchange goes on
-        // through a pause (a flash erase) to 'ok: profile'.
-        let request = Request {
-            bytes: b"profile set\r\n".to_vec(),
-            done: Some("ok: profile "),
-        };
-        assert!(!answered(
-            &request,
-            "ok: send the profile's lines, then 'end'\r\n"
-        ));
-        assert!(answered(
-            &request,
-            "ok: send ...\r\nok: profile x stored\r\n"
-        ));
-        assert!(answered(
-            &request,
-            "error: profile line 2: bad 'joint' values\r\n"
-        ));
-    }
 }

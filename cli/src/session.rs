@@ -87,6 +87,10 @@ pub struct Export {
     /// Each row's `approach`, where the export has the column (exports written before
     /// it have not).
     pub approaches: Option<Vec<Approach>>,
+    /// The export ended with its end trailer, which matched (`zerocal_core::export_trailer`):
+    /// nothing lost or changed since the pendant wrote it. Without one (a file edited by
+    /// hand, or not from a pendant) it is read unchecked, with a note.
+    pub trailer_checked: bool,
 }
 
 /// Reads a pendant export, strictly ([`LogReader::for_export`], [`MetaKeys`]): an
@@ -112,6 +116,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
         poses: Vec::new(),
         lines: Vec::new(),
         approaches: None,
+        trailer_checked: false,
     };
     for line in text.lines() {
         match reader.feed(line, parse_number).map_err(|e| e.to_string())? {
@@ -150,6 +155,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
     if reader.has_column("approach") {
         export.approaches = Some(approaches);
     }
+    export.trailer_checked = reader.trailer().is_some();
     Ok(export)
 }
 
@@ -267,8 +273,11 @@ pub struct SessionJson {
 /// An unreadable or malformed export, an unknown robot (status 2); a session the solver
 /// refuses (status 3).
 pub fn run(args: &SessionArgs) -> Result<String, CliError> {
-    let bytes = std::fs::read(&args.export)
-        .map_err(|e| CliError::Input(format!("{}: {e}", args.export.display())))?;
+    let bytes = crate::input::read_capped_bytes(
+        &args.export,
+        crate::input::MAX_EXPORT_BYTES,
+        "pendant export",
+    )?;
     let name = |what: &str| format!("{}: {what}", args.export.display());
     let text = text_of(&bytes).map_err(|e| CliError::Input(name(&e.to_string())))?;
     let export = read_export(text).map_err(|e| CliError::Input(name(&e)))?;
@@ -376,6 +385,13 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         ));
     }
     notes.extend(profile.missing.iter().map(|m| format!("profile: {m}")));
+    if !export.trailer_checked {
+        notes.push(
+            "the export has no end trailer ('# end lines N crc32 X'): edited by hand or not \
+             from a pendant, so whether lines were lost or changed is not checked"
+                .into(),
+        );
+    }
     if args.mount_tolerance_deg == 0.0 {
         notes.push(
             "the brackets' seat tolerance is not included (--mount-tolerance-deg): a turn of \

@@ -1,12 +1,111 @@
 //! `zerocal pendant` against the pendant's own link task, run on the desktop
-//! (`zerocal_pendant::host::runner::converse`): the requests the CLI sends, the
-//! pendant's answers, what it keeps across a power cycle.
+//! (`zerocal_pendant::host::runner::converse`), and against ports that say anything
+//! else: the desktop believes nothing it cannot check. Every wrong reply is refused
+//! with exit 3 naming what is wrong, no answer is exit 2, and a flood or a trickle is
+//! cut off within the reply's bounds.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use zerocal_cli::pendant::{self, PendantAction};
+use std::collections::VecDeque;
+use std::io::{Read, Write};
+use std::time::{Duration, Instant};
+
+use zerocal_cli::error::CliError;
+use zerocal_cli::pendant::{self, Expect, PendantAction, Timeouts};
+use zerocal_core::link::{parse_status, pendant_status, status, Stage2Status};
 use zerocal_core::procedure::profile::{ProfileStep, ProfileUpload};
 use zerocal_pendant::host::runner::converse;
 use zerocal_pendant::screen::Screen;
+
+/// Short enough for a test, long against a scripted port that answers at once.
+const FAST: Timeouts = Timeouts {
+    quiet: Duration::from_millis(50),
+    reply: Duration::from_millis(1000),
+};
+
+/// What a scripted port says after each write.
+enum Script {
+    /// These bytes, then nothing.
+    Bytes(Vec<u8>),
+    /// These bytes over and over, forever.
+    Forever(Vec<u8>),
+    /// One byte of these every few milliseconds, forever.
+    Trickle(Vec<u8>),
+}
+
+/// A port that answers each request with the next scripted reply and times out, as a
+/// serial port does, when it has nothing to say.
+struct Scripted {
+    replies: VecDeque<Script>,
+    now: Option<Script>,
+    at: usize,
+    written: Vec<u8>,
+    /// Bytes it gave.
+    given: usize,
+}
+
+impl Scripted {
+    fn new(replies: impl IntoIterator<Item = Script>) -> Self {
+        Scripted {
+            replies: replies.into_iter().collect(),
+            now: None,
+            at: 0,
+            written: Vec::new(),
+            given: 0,
+        }
+    }
+
+    fn bytes(replies: impl IntoIterator<Item = Vec<u8>>) -> Self {
+        Self::new(replies.into_iter().map(Script::Bytes))
+    }
+}
+
+impl Write for Scripted {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.written.extend_from_slice(buf);
+        self.now = self.replies.pop_front();
+        self.at = 0;
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl Read for Scripted {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let quiet = || {
+            std::thread::sleep(Duration::from_millis(1));
+            Err(std::io::ErrorKind::TimedOut.into())
+        };
+        let n = match &self.now {
+            None => return quiet(),
+            Some(Script::Bytes(b)) => {
+                let n = buf.len().min(b.len() - self.at);
+                if n == 0 {
+                    return quiet();
+                }
+                buf[..n].copy_from_slice(&b[self.at..self.at + n]);
+                self.at += n;
+                n
+            }
+            Some(Script::Forever(b)) => {
+                for (k, out) in buf.iter_mut().enumerate() {
+                    *out = b[(self.at + k) % b.len()];
+                }
+                self.at += buf.len();
+                buf.len()
+            }
+            Some(Script::Trickle(b)) => {
+                std::thread::sleep(Duration::from_millis(5));
+                buf[0] = b[self.at % b.len()];
+                self.at += 1;
+                1
+            }
+        };
+        self.given += n;
+        Ok(n)
+    }
+}
 
 fn load(robot: &str) -> PendantAction {
     PendantAction::LoadProfile {
@@ -15,16 +114,66 @@ fn load(robot: &str) -> PendantAction {
     }
 }
 
-#[test]
-fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
-    let action = load("kuka-kr6-r900-sixx");
-    let requests: Vec<Vec<u8>> = pendant::requests(&action)
+fn request_bytes(action: &PendantAction) -> Vec<Vec<u8>> {
+    pendant::requests(action)
         .unwrap()
         .into_iter()
         .map(|r| r.bytes)
+        .collect()
+}
+
+/// `action` against a port that answers with `answers`.
+fn replay(action: &PendantAction, answers: &[String]) -> Result<String, CliError> {
+    let mut port = Scripted::bytes(answers.iter().map(|a| a.as_bytes().to_vec()));
+    pendant::perform(&mut port, action, FAST)
+}
+
+/// The refusal of `action` against `port`: its exit status and words.
+fn refusal(port: &mut Scripted, action: &PendantAction) -> (i32, String) {
+    let e = pendant::perform(port, action, FAST).unwrap_err();
+    (e.exit_code(), e.to_string())
+}
+
+/// The reply a port sending `bytes` gives for `expect`.
+fn reply_of(bytes: &[u8], expect: &Expect) -> Result<pendant::Reply, pendant::ReplyError> {
+    let mut port = Scripted::bytes([bytes.to_vec()]);
+    port.write_all(b"request").unwrap();
+    pendant::read_reply(&mut port, expect, FAST)
+}
+
+fn crlf(lines: &[&str]) -> Vec<u8> {
+    lines
+        .iter()
+        .flat_map(|l| format!("{l}\r\n").into_bytes())
+        .collect()
+}
+
+/// A whole simulated session (stages 0-2, 12 poses captured twice) and its export as
+/// the pendant writes it.
+fn whole_session() -> (zerocal_sim::pendant::SimPendant<f32>, Vec<String>) {
+    let mut p = zerocal_sim::scenario::pendant::<f32>(12, 11).expect("the planner plans 12 poses");
+    zerocal_sim::scenario::whole_session(&mut p);
+    let lines = zerocal_core::log::export(&p.session, &p.config)
+        .map(|l| l.expect("line fits").as_str().to_owned())
         .collect();
+    (p, lines)
+}
+
+fn status_reply(p: &zerocal_sim::pendant::SimPendant<f32>) -> Vec<String> {
+    let mut lines: Vec<String> = (0..)
+        .map_while(|i| status(&p.session, i))
+        .map(|l| l.unwrap().as_str().to_owned())
+        .collect();
+    lines.push(pendant_status(0, 2).unwrap().as_str().to_owned());
+    lines
+}
+
+#[test]
+fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
+    let action = load("kuka-kr6-r900-sixx");
+    let requests = request_bytes(&action);
     let c = converse(&requests, &[b"profile\r\n".to_vec(), b"plan\r\n".to_vec()]).unwrap();
-    let out = pendant::check(&action, &c.answers).unwrap();
+    let out = replay(&action, &c.answers).unwrap();
     assert!(
         out.contains("ok: profile kuka-kr6-r900-sixx stored"),
         "{out}"
@@ -66,8 +215,7 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
         })
         .collect();
     assert_eq!(rows.len(), 24);
-    let expected = requests[1].clone();
-    let expected = String::from_utf8(expected).unwrap();
+    let expected = String::from_utf8(requests[1].clone()).unwrap();
     for (row, sent_row) in rows.iter().zip(expected.lines().skip(1)) {
         let got: Vec<f64> = row.split(',').map(|v| v.parse().unwrap()).collect();
         let want: Vec<f64> = sent_row.split(',').map(|v| v.parse().unwrap()).collect();
@@ -78,35 +226,34 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
 }
 
 #[test]
-fn erase_status_export_and_refusals() {
-    let bytes = |a: &PendantAction| -> Vec<Vec<u8>> {
-        pendant::requests(a)
-            .unwrap()
-            .into_iter()
-            .map(|r| r.bytes)
-            .collect()
-    };
+fn erase_status_export_and_refusals_against_the_pendant() {
     let requests: Vec<Vec<u8>> = [
-        bytes(&load("abb-irb140")),
-        bytes(&PendantAction::Erase),
-        bytes(&PendantAction::Status),
-        bytes(&PendantAction::Export { out: None }),
+        request_bytes(&load("abb-irb140")),
+        request_bytes(&PendantAction::Erase),
+        request_bytes(&PendantAction::Status),
+        request_bytes(&PendantAction::Export { out: None }),
         vec![b"profile set\r\nname x convention axis\r\nend\r\n".to_vec()],
     ]
     .concat();
     let c = converse(&requests, &[b"profile\r\n".to_vec()]).unwrap();
-    pendant::check(&load("abb-irb140"), &c.answers[..2]).unwrap();
-    let erased = pendant::check(&PendantAction::Erase, &c.answers[2..3]).unwrap();
+    replay(&load("abb-irb140"), &c.answers[..2]).unwrap();
+    let erased = replay(&PendantAction::Erase, &c.answers[2..3]).unwrap();
     assert!(erased.contains("ok: store erased"), "{erased}");
-    let status = pendant::check(&PendantAction::Status, &c.answers[3..4]).unwrap();
-    assert!(status.contains("phase stage 0"), "{status}");
-    let export = pendant::check(&PendantAction::Export { out: None }, &c.answers[4..5]).unwrap();
+    // Printed from the parsed fields.
+    let status = replay(&PendantAction::Status, &c.answers[3..4]).unwrap();
+    assert!(status.starts_with("phase: stage 0"), "{status}");
+    assert!(status.contains("bias: none"), "{status}");
+    // The export of an erased pendant: no captures, whole by its trailer.
+    let export = replay(&PendantAction::Export { out: None }, &c.answers[4..5]).unwrap();
     assert!(
         export.contains("# robot paper-wrist convention axis"),
         "{export}"
     );
+    assert!(export.lines().last().unwrap().starts_with("# end lines "));
     // A broken upload: the pendant's words, exit 3.
-    let refused = pendant::check(&load("x"), &c.answers[5..6]).unwrap_err();
+    let expect = Expect::ProfileStored("x".into());
+    let reply = reply_of(c.answers[5].as_bytes(), &expect).unwrap();
+    let refused = pendant::check_reply(&expect, &reply).unwrap_err();
     assert_eq!(refused.exit_code(), 3);
     assert!(
         refused.to_string().contains("profile incomplete"),
@@ -118,7 +265,288 @@ fn erase_status_export_and_refusals() {
         "{:?}",
         c.answers_after_reboot
     );
-    // No answer at all is named, exit 2.
-    let silent = pendant::check(&PendantAction::Status, &[String::new()]).unwrap_err();
-    assert_eq!(silent.exit_code(), 2);
+}
+
+#[test]
+fn a_refused_profile_stops_before_the_plan() {
+    let mut port = Scripted::bytes([
+        crlf(&[
+            zerocal_core::link::PROFILE_PROMPT,
+            "error: a session is in progress; 'clear' first (profile unchanged)",
+        ]),
+        crlf(&["ok: plan set, 24 poses"]),
+    ]);
+    let (code, words) = refusal(&mut port, &load("abb-irb140"));
+    assert_eq!(code, 3);
+    assert!(words.contains("session is in progress"), "{words}");
+    assert!(!String::from_utf8_lossy(&port.written).contains("plan set"));
+}
+
+#[test]
+fn status_of_a_whole_session_reads_back_to_its_decimals() {
+    let (p, _) = whole_session();
+    let lines = status_reply(&p);
+    let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
+    let s = parse_status(&refs).unwrap();
+    let fit = p.session.outcome().unwrap().result.unwrap().fit;
+    let Stage2Status::Done {
+        offsets_deg,
+        sigma_deg,
+        ..
+    } = s.stage2
+    else {
+        panic!("{:?}", s.stage2);
+    };
+    // The stage-2 line has the export's 12 decimals for offsets and 6 for 1σ; the f32
+    // to f64 conversion is exact.
+    for k in 0..4 {
+        let want = f64::from(fit.offsets_rad[k]).to_degrees();
+        assert!((offsets_deg[k] - want).abs() <= 5e-12 + 1e-15, "{k}");
+        let want = f64::from(fit.sigma_rad[k]).to_degrees();
+        assert!((sigma_deg[k] - want).abs() <= 5e-7 + 1e-12, "{k}");
+    }
+    let stage1 = p.session.stage1().unwrap();
+    // 5 decimals on the stage-1 line.
+    let want = f64::from(stage1.delta_theta2_rad).to_degrees();
+    assert!((s.stage1.unwrap().j2_offset_deg - want).abs() <= 5e-6 + 1e-12);
+    assert_eq!(s.captured, p.session.captures().len());
+    // Printed from those fields, every line.
+    let out = replay(
+        &PendantAction::Status,
+        &[format!("{}\r\n", lines.join("\r\n"))],
+    )
+    .unwrap();
+    assert_eq!(out.lines().count(), 7, "{out}");
+    assert!(out.contains("stage 2: j3..j6 offsets "), "{out}");
+    assert!(out.contains("display faults 2"), "{out}");
+}
+
+#[test]
+fn status_that_is_not_status_is_refused_naming_it() {
+    let (p, _) = whole_session();
+    let good = status_reply(&p);
+    let with = |i: usize, text: &str| {
+        let mut v = good.clone();
+        v[i] = text.to_owned();
+        v.iter()
+            .flat_map(|l| format!("{l}\r\n").into_bytes())
+            .collect::<Vec<u8>>()
+    };
+    for (bytes, words) in [
+        (
+            b"\x00\xff\xfeA\x01garbage\r\n".to_vec(),
+            "non-printable byte 0x00 at 0",
+        ),
+        (
+            b"phase \x1b[31mdone\x1b[0m; plan 0 poses; 0 captured\r\n".to_vec(),
+            "non-printable byte 0x1b at 6",
+        ),
+        (
+            b"result j2 NaN\r\n".to_vec(),
+            "status: line 1 is not the phase line",
+        ),
+        (
+            with(1, "bias x NaN deg, y 0.00000 deg"),
+            "status: line 2: field 'bias x' is not a number: NaN",
+        ),
+        (
+            with(5, "pendant: sensor frames dropped -1, display faults 0"),
+            "field 'frames dropped' is not a number: -1",
+        ),
+        (
+            // A lone CR: a terminal's overwrite, not the pendant's line end.
+            with(0, "phase done\rphase done"),
+            "non-printable byte 0x0d",
+        ),
+        (
+            crlf(&["phase done; plan 3 poses; 0 captured"]),
+            "status: reply ends after 1 lines, 6 expected",
+        ),
+    ] {
+        let (code, e) = refusal(&mut Scripted::bytes([bytes]), &PendantAction::Status);
+        assert_eq!(code, 3, "{e}");
+        assert!(e.contains(words), "{e} lacks {words}");
+    }
+}
+
+#[test]
+fn an_export_is_saved_only_whole_by_its_trailer() {
+    let (_, lines) = whole_session();
+    let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
+    assert!(refs.len() > 29, "{}", refs.len());
+    let export = PendantAction::Export { out: None };
+    let whole = pendant::perform(&mut Scripted::bytes([crlf(&refs)]), &export, FAST).unwrap();
+    assert_eq!(
+        whole,
+        format!("{}\n", refs.join("\n")),
+        "saved as sent, LF line ends"
+    );
+
+    for (bytes, words) in [
+        // Cut: the pendant stopped (cable, reset) after 29 lines.
+        (
+            crlf(&refs[..29]),
+            "export: cut after 29 lines (trailer missing)",
+        ),
+        // Cut half-way through a line.
+        (
+            crlf(&refs[..29])
+                .into_iter()
+                .chain(b"12.5,-3".iter().copied())
+                .collect(),
+            "export: cut after 29 lines (trailer missing), then 7 bytes of a line cut off",
+        ),
+        // The first line, then garbage: not even a trailer.
+        (
+            crlf(&[refs[0], "garbage", "more garbage"]),
+            "export: cut after 3 lines (trailer missing)",
+        ),
+        // The first line, a line that is not the pendant's and a made-up trailer.
+        (
+            crlf(&[refs[0], "# garbage", "# end lines 2 crc32 00000000"]),
+            "export: line 3: end trailer has crc32 00000000 but the lines before it give",
+        ),
+        // A row changed on the way.
+        (
+            crlf(
+                &refs
+                    .iter()
+                    .enumerate()
+                    .map(|(k, l)| if k == 20 { "1,2,3,4,5,6,0.1,0.2," } else { l })
+                    .collect::<Vec<_>>(),
+            ),
+            "end trailer has crc32",
+        ),
+        // A row lost on the way.
+        (
+            crlf(
+                &refs
+                    .iter()
+                    .enumerate()
+                    .filter(|(k, _)| *k != 20)
+                    .map(|(_, l)| *l)
+                    .collect::<Vec<_>>(),
+            ),
+            "lines lost or added",
+        ),
+        // The pendant's own complaint in the middle.
+        (
+            crlf(&[refs[0], "error: line too long", refs[refs.len() - 1]]),
+            "export: line 2: the pendant says: error: line too long",
+        ),
+    ] {
+        let (code, e) = refusal(&mut Scripted::bytes([bytes]), &export);
+        assert_eq!(code, 3, "{e}");
+        assert!(e.contains(words), "{e} lacks {words}");
+    }
+}
+
+#[test]
+fn a_flood_is_refused_within_the_reply_s_bounds() {
+    let export = PendantAction::Export { out: None };
+    let max = Expect::Export.max_bytes();
+    // Valid-looking rows without end: refused at the most lines an export has.
+    let mut port = Scripted::new([Script::Forever(b"1,2,3,4,5,6,0.1,0.2,20\r\n".to_vec())]);
+    let start = Instant::now();
+    let (code, e) = refusal(&mut port, &export);
+    assert_eq!(code, 3);
+    let lines = zerocal_core::log::EXPORT_MAX_LINES;
+    assert!(
+        e.contains(&format!("export: reply longer than {lines} lines")),
+        "{e}"
+    );
+    // The reader stops within one read (512 bytes) of the cap, at once.
+    assert!(port.given <= max + 512, "{} bytes read", port.given);
+    assert!(
+        start.elapsed() < Duration::from_millis(500),
+        "{:?}",
+        start.elapsed()
+    );
+    // One endless line: refused after one line's bytes.
+    let mut port = Scripted::new([Script::Forever(b"A".to_vec())]);
+    let (code, e) = refusal(&mut port, &PendantAction::Status);
+    assert_eq!(code, 3);
+    let line_max = zerocal_core::link::REPLY_LINE_BYTES;
+    assert!(
+        e.contains(&format!("a line longer than {line_max} bytes")),
+        "{e}"
+    );
+    assert!(port.given <= line_max + 512, "{} bytes read", port.given);
+    // A trickle that never ends: refused at the reply's deadline.
+    let mut port = Scripted::new([Script::Trickle(b"x".to_vec())]);
+    let start = Instant::now();
+    let (code, e) = refusal(&mut port, &PendantAction::Erase);
+    assert_eq!(code, 3);
+    assert!(e.contains("erase: reply not over within 1.0 s"), "{e}");
+    assert!(start.elapsed() < FAST.reply + Duration::from_millis(300));
+}
+
+#[test]
+fn a_silent_port_is_no_answer_within_its_timeout() {
+    for action in [
+        PendantAction::Status,
+        PendantAction::Erase,
+        PendantAction::Export { out: None },
+    ] {
+        let start = Instant::now();
+        let (code, e) = refusal(&mut Scripted::bytes([]), &action);
+        let took = start.elapsed();
+        assert_eq!(code, 2, "{e}");
+        assert!(e.contains("the pendant did not answer within"), "{e}");
+        // The quiet time, and a little for the scheduler.
+        assert!(
+            took >= FAST.quiet && took < FAST.quiet + Duration::from_millis(300),
+            "{took:?}"
+        );
+    }
+}
+
+#[test]
+fn an_erase_is_done_only_when_the_pendant_says_so() {
+    let erase = PendantAction::Erase;
+    let ok = pendant::perform(
+        &mut Scripted::bytes([crlf(&[zerocal_core::link::ERASED])]),
+        &erase,
+        FAST,
+    )
+    .unwrap();
+    assert_eq!(ok.trim(), zerocal_core::link::ERASED);
+    for (bytes, words) in [
+        (
+            crlf(&["ok"]),
+            "erase: the pendant did not confirm the erase: 'ok'",
+        ),
+        (
+            crlf(&["error: press OK on the pendant first"]),
+            "erase: the pendant refused: press OK on the pendant first",
+        ),
+        (
+            b"ok: store era".to_vec(),
+            "erase: no confirmation line, then 13 bytes of a line cut off",
+        ),
+    ] {
+        let (code, e) = refusal(&mut Scripted::bytes([bytes]), &erase);
+        assert_eq!(code, 3, "{e}");
+        assert!(e.contains(words), "{e} lacks {words}");
+    }
+    // Nothing at all: no answer.
+    let (code, _) = refusal(&mut Scripted::bytes([]), &erase);
+    assert_eq!(code, 2);
+}
+
+#[test]
+fn the_exit_statuses_are_in_the_help() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_zerocal"))
+        .args(["pendant", "--help"])
+        .output()
+        .unwrap();
+    let help = String::from_utf8_lossy(&out.stdout);
+    for words in [
+        "Exit status: 0",
+        "2 usage",
+        "3 the pendant refused",
+        "docs/pendant-link.md",
+    ] {
+        assert!(help.contains(words), "{words}: {help}");
+    }
 }

@@ -33,6 +33,7 @@
 
 pub mod decimal;
 pub mod error;
+pub mod export_trailer;
 pub mod linalg;
 pub mod link;
 pub mod log;

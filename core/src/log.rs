@@ -31,6 +31,7 @@
 //! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
 
 use crate::decimal::Fixed;
+use crate::export_trailer::{Trailer, TrailerError, TrailerSum};
 use crate::model::{Convention, Tilt};
 use crate::procedure::{Approach, ProcedureConfig, ProcedureState, ReadingSlot};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
@@ -39,8 +40,11 @@ use crate::stage1::AxisOneTurn;
 use crate::stage2::{Extras, FitResult, PoseReading};
 use core::fmt::{self, Write};
 
+/// The bytes a [`Line`] holds: the widest export line.
+pub const LINE_BYTES: usize = 192;
+
 /// A line of output: long enough for the widest export line.
-pub type Line = heapless::String<192>;
+pub type Line = heapless::String<LINE_BYTES>;
 
 /// The columns a stage-2 log has, in the order the pendant writes them. The first six
 /// are required; `j1_deg` and `j2_deg` default to 0 (joints 1 and 2 where stage 1 had
@@ -110,6 +114,10 @@ pub struct Export<'a, T: Real> {
     state: &'a ProcedureState<T>,
     config: &'a ProcedureConfig<T>,
     line: usize,
+    /// The lines written so far, for the trailer.
+    sum: TrailerSum,
+    /// The trailer is written.
+    ended: bool,
 }
 
 /// Starts an export.
@@ -121,10 +129,16 @@ pub fn export<'a, T: Real>(
         state,
         config,
         line: 0,
+        sum: TrailerSum::new(),
+        ended: false,
     }
 }
 
 const EXPORT_HEAD: usize = 11;
+
+/// Most lines an export has: the head, a row per capture, the result line and the
+/// trailer.
+pub const EXPORT_MAX_LINES: usize = EXPORT_HEAD + crate::plan::MAX_POSES + 2;
 
 /// Writes `x,y` in degrees.
 fn pair<T: Real>(w: &mut Line, t: &Tilt<T>) -> fmt::Result {
@@ -259,7 +273,28 @@ pub(crate) fn result_line<T: Real>(w: &mut Line, r: &FitResult<T>) -> fmt::Resul
 impl<T: Real> Iterator for Export<'_, T> {
     type Item = Result<Line, fmt::Error>;
 
+    /// The session's lines, then the trailer over them (a line that does not fit is
+    /// not summed: its reader sees the trailer disagree).
     fn next(&mut self) -> Option<Self::Item> {
+        if self.ended {
+            return None;
+        }
+        let line = self.session_line();
+        match &line {
+            Some(Ok(text)) => self.sum.add_line(text),
+            Some(Err(_)) => {}
+            None => {
+                self.ended = true;
+                let mut w = Line::new();
+                return Some(write!(w, "{}", self.sum.trailer()).map(|()| w));
+            }
+        }
+        line
+    }
+}
+
+impl<T: Real> Export<'_, T> {
+    fn session_line(&mut self) -> Option<Result<Line, fmt::Error>> {
         let i = self.line;
         self.line += 1;
         let mut w = Line::new();
@@ -427,6 +462,18 @@ pub enum LogError {
         /// The byte offset within the line (1-based).
         column: usize,
     },
+    /// The end trailer (`crate::export_trailer`) does not match the lines before it.
+    Trailer {
+        /// Line of the trailer.
+        line: usize,
+        /// What is wrong.
+        error: TrailerError,
+    },
+    /// Text after the end trailer.
+    AfterTrailer {
+        /// The line.
+        line: usize,
+    },
 }
 
 impl fmt::Display for LogError {
@@ -487,6 +534,10 @@ impl fmt::Display for LogError {
                 f,
                 "line {line}, byte {column}: not UTF-8 text (save the export as UTF-8 or ASCII)"
             ),
+            LogError::Trailer { line, error } => write!(f, "line {line}: {error}"),
+            LogError::AfterTrailer { line } => {
+                write!(f, "line {line}: text after the end trailer")
+            }
         }
     }
 }
@@ -523,6 +574,10 @@ pub struct LogReader {
     strict: bool,
     /// The `approach` of the row last read, where the log has the column.
     approach: Option<Approach>,
+    /// The lines so far, for the end trailer.
+    sum: TrailerSum,
+    /// The end trailer, once read.
+    trailer: Option<Trailer>,
 }
 
 impl Default for LogReader {
@@ -541,6 +596,8 @@ impl LogReader {
             poses: 0,
             strict: false,
             approach: None,
+            sum: TrailerSum::new(),
+            trailer: None,
         }
     }
 
@@ -556,6 +613,12 @@ impl LogReader {
     /// The side the pose last read was approached from, where the log records it.
     pub fn approach(&self) -> Option<Approach> {
         self.approach
+    }
+
+    /// The end trailer, if the log had one (it was checked when read). A log without
+    /// one (edited by hand, or not from a pendant) reads as before, unchecked.
+    pub fn trailer(&self) -> Option<Trailer> {
+        self.trailer
     }
 
     /// The number of the line last fed (1-based).
@@ -583,6 +646,17 @@ impl LogReader {
         self.line += 1;
         let line = self.line;
         let t = text.trim();
+        if self.trailer.is_some() && !t.is_empty() {
+            return Err(LogError::AfterTrailer { line });
+        }
+        if crate::export_trailer::is_trailer(t) {
+            let trailer = crate::export_trailer::parse(t)
+                .and_then(|said| self.sum.check(said).map(|()| said))
+                .map_err(|error| LogError::Trailer { line, error })?;
+            self.trailer = Some(trailer);
+            return Ok(LogLine::Comment(t.trim_start_matches('#').trim()));
+        }
+        self.sum.add_line(text);
         if t.is_empty() {
             return Ok(LogLine::Blank);
         }
@@ -1182,6 +1256,58 @@ mod tests {
                 column: "j3_deg"
             }
         );
+    }
+
+    #[test]
+    fn the_end_trailer_is_checked_and_ends_the_log() {
+        let body = [
+            "# zerocal pendant export: read it with 'zerocal session'",
+            "j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg",
+            "1,2,3,4,0.1,0.2",
+        ];
+        let mut sum = TrailerSum::new();
+        for line in body {
+            sum.add_line(line);
+        }
+        let trailer = std::format!("{}", sum.trailer());
+        let whole = std::format!("{}\n{trailer}\n\n", body.join("\n"));
+        let mut r = LogReader::new();
+        for line in whole.lines() {
+            r.feed::<f64>(line, |s| s.parse().ok()).unwrap();
+        }
+        assert_eq!(r.trailer(), Some(sum.trailer()));
+        // A row changed by hand: the trailer's line is named.
+        let changed = whole.replace("0.1,0.2", "0.1,0.3");
+        assert!(matches!(
+            read_all(&changed),
+            Err(LogError::Trailer {
+                line: 4,
+                error: TrailerError::CrcDiffers { .. }
+            })
+        ));
+        // A row lost.
+        let lost = whole.replace("1,2,3,4,0.1,0.2\n", "");
+        assert_eq!(
+            read_all(&lost).unwrap_err(),
+            LogError::Trailer {
+                line: 3,
+                error: TrailerError::LinesDiffer {
+                    said: 3,
+                    counted: 2
+                }
+            }
+        );
+        // Anything but blank lines after it.
+        assert_eq!(
+            read_all(&std::format!("{whole}1,2,3,4,0.1,0.2\n")).unwrap_err(),
+            LogError::AfterTrailer { line: 6 }
+        );
+        // Without a trailer the log reads as before, and says it had none.
+        let mut r = LogReader::new();
+        for line in body {
+            r.feed::<f64>(line, |s| s.parse().ok()).unwrap();
+        }
+        assert_eq!(r.trailer(), None);
     }
 
     #[test]

@@ -1,7 +1,10 @@
 //! The pendant's command lines, `plan set` rows and `profile set` lines (core's `link`
 //! and `procedure::profile`), as the firmware parses them; the `plan` reply read back
 //! by `plan set` gives the same poses, and the `profile` reply read back by `profile
-//! set` the same profile.
+//! set` the same profile. The desktop's readers of the pendant's replies
+//! (`zerocal pendant`'s reply reader and checks, core's `parse_status`, the export's
+//! end trailer) take any bytes without a panic, and what they accept is printable
+//! text with finite numbers.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 use zerocal_core::link::{parse_command, plan_line, PlanUpload, UploadStep};
@@ -37,10 +40,97 @@ fn profile_round_trip(p: &PendantProfile<f32>) {
     }
 }
 
+/// A port that answers once with the fuzzer's bytes, then stays quiet.
+struct Port<'a> {
+    bytes: &'a [u8],
+}
+
+impl std::io::Write for Port<'_> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl std::io::Read for Port<'_> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        if self.bytes.is_empty() {
+            return Err(std::io::ErrorKind::TimedOut.into());
+        }
+        let n = buf.len().min(self.bytes.len());
+        buf[..n].copy_from_slice(&self.bytes[..n]);
+        self.bytes = &self.bytes[n..];
+        Ok(n)
+    }
+}
+
+/// Any bytes as the reply to each request of `zerocal pendant`: refused or accepted,
+/// never a panic; accepted output is printable ASCII lines.
+fn desktop_reader(data: &[u8]) {
+    use zerocal_cli::pendant::{check_reply, read_reply, Expect, Timeouts};
+    // No quiet wait: the bytes are all there at once.
+    let timeouts = Timeouts {
+        quiet: std::time::Duration::ZERO,
+        reply: std::time::Duration::from_secs(10),
+    };
+    for expect in [
+        Expect::Status,
+        Expect::Export,
+        Expect::Erased,
+        Expect::ProfileStored("abb-irb140".into()),
+        Expect::PlanStored(24),
+    ] {
+        let Ok(reply) = read_reply(&mut Port { bytes: data }, &expect, timeouts) else {
+            continue;
+        };
+        assert!(reply.lines.len() <= expect.max_lines());
+        if let Ok(out) = check_reply(&expect, &reply) {
+            assert!(
+                out.bytes().all(|b| b == b'\n' || (0x20..=0x7e).contains(&b)),
+                "{out:?}"
+            );
+        }
+    }
+}
+
+/// `status` lines read back: every accepted number finite.
+fn status_reader(text: &str) {
+    let lines: Vec<&str> = text.split("\r\n").collect();
+    if let Ok(s) = zerocal_core::link::parse_status(&lines) {
+        let mut numbers = Vec::new();
+        numbers.extend(s.bias_deg.into_iter().flatten());
+        if let Some(r) = s.stage1 {
+            numbers.extend([r.j2_offset_deg, r.alpha_deg, r.beta_deg]);
+        }
+        if let zerocal_core::link::Stage2Status::Done {
+            offsets_deg,
+            sigma_deg,
+            residual_rms_deg,
+        } = s.stage2
+        {
+            numbers.extend(offsets_deg.into_iter().chain(sigma_deg).chain([residual_rms_deg]));
+        }
+        if let Some(r) = s.last_result {
+            numbers.extend(r.offsets_deg.into_iter().chain(r.sigma_deg));
+        }
+        assert!(numbers.iter().all(|v| v.is_finite()), "{s:?}");
+    }
+    // A trailer that reads writes back as itself.
+    for line in text.split(['\n', '\r']) {
+        if let Ok(t) = zerocal_core::export_trailer::parse(line) {
+            assert_eq!(zerocal_core::export_trailer::parse(&t.to_string()), Ok(t));
+        }
+    }
+}
+
 fuzz_target!(|data: &[u8]| {
+    desktop_reader(data);
     let Ok(text) = core::str::from_utf8(data) else {
         return;
     };
+    status_reader(text);
     let mut upload = PlanUpload::<f32>::new([0.25, -0.5]);
     let mut profile = ProfileUpload::<f32>::default();
     for line in text.split(['\n', '\r']) {

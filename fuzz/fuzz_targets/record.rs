@@ -114,10 +114,25 @@ fuzz_target!(|data: &[u8]| {
     // Out of bounds (a stored result of 1e14 deg), a line may outgrow the link's
     // 192 bytes: the pendant then answers `error: line too long` for it
     // (fuzz/regressions/record/crash-43b7...).
+    let mut status_lines = Vec::new();
     for i in 0.. {
         match status(&session, i) {
             None => break,
-            Some(line) => assert!(line.is_ok() || !all_in_bounds, "status line {i} overflows"),
+            Some(Ok(line)) => status_lines.push(line.as_str().to_owned()),
+            Some(Err(_)) => assert!(!all_in_bounds, "status line {i} overflows"),
+        }
+    }
+    // The desktop reads the status of any stored session back (`zerocal pendant status`);
+    // it refuses a negative 1-sigma, which no fit gives.
+    let sigmas_valid = records.iter().all(|r| match r {
+        Record::LastResult { sigma_rad, .. } => sigma_rad.iter().all(|s| *s >= 0.0),
+        _ => true,
+    });
+    if all_in_bounds && sigmas_valid {
+        status_lines.push(zerocal_core::link::pendant_status(0, 0).expect("fits").as_str().to_owned());
+        let lines: Vec<&str> = status_lines.iter().map(String::as_str).collect();
+        if let Err(e) = zerocal_core::link::parse_status(&lines) {
+            panic!("the desktop refuses the status: {e}\n{lines:#?}");
         }
     }
     let mut text = String::new();

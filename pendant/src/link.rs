@@ -28,16 +28,17 @@ use embedded_io_async::{Read, Write};
 use heapless::Vec;
 use zerocal_core::decimal::Fixed;
 use zerocal_core::link::{
-    parse_command, plan_line, status, Command, Line, PlanUpload, UploadStep, HELP,
+    parse_command, pendant_status, plan_line, plan_stored, profile_stored, status, Command, Line,
+    PlanUpload, UploadStep, ERASED, HELP, NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
 };
 use zerocal_core::log::export;
 use zerocal_core::procedure::profile::{ProfileStep, ProfileUpload};
 
 use crate::channels::{LinkReply, LinkRequest, Shared};
 
-/// Longest command line; longer lines are refused whole. A plan row of six angles with
-/// every digit fits easily.
-pub const MAX_LINE: usize = 128;
+/// Longest command line; longer lines are refused whole (core's, which the desktop
+/// writes to).
+pub const MAX_LINE: usize = zerocal_core::link::MAX_COMMAND_BYTES;
 
 /// A host that takes no bytes for this long is gone.
 pub const WRITE_TIMEOUT: Duration = Duration::from_secs(2);
@@ -197,6 +198,17 @@ impl<W: Write> Server<'_, W> {
         self.write_line(line.as_bytes()).await
     }
 
+    /// A line formatted by core, or `error: line too long` if it did not fit.
+    async fn write_text(
+        &mut self,
+        line: Result<Line, core::fmt::Error>,
+    ) -> Result<(), Disconnected> {
+        match line {
+            Ok(text) => self.write_line(text.as_bytes()).await,
+            Err(_) => self.write_line(b"error: line too long").await,
+        }
+    }
+
     async fn line(&mut self, edited: Edited) -> Result<Next, Disconnected> {
         let line = match edited {
             Edited::TooLong => {
@@ -223,15 +235,9 @@ impl<W: Write> Server<'_, W> {
                 Ok(ProfileStep::More) => {}
                 Ok(ProfileStep::Done(profile)) => {
                     self.upload = None;
-                    let mut name = zerocal_core::procedure::RobotName::new();
-                    let _ = name.push_str(&profile.robot);
+                    let confirmation = profile_stored(&profile.robot);
                     match self.request(LinkRequest::SetProfile(profile)).await {
-                        LinkReply::Done => {
-                            self.write_fmt(format_args!(
-                                "ok: profile {name} stored; session cleared; plan cleared: send one with 'plan set'"
-                            ))
-                            .await?
-                        }
+                        LinkReply::Done => self.write_text(confirmation).await?,
                         LinkReply::SessionInProgress => {
                             self.write_line(
                                 b"error: a session is in progress; 'clear' first (profile unchanged)",
@@ -242,7 +248,7 @@ impl<W: Write> Server<'_, W> {
                             self.write_line(b"error: profile taken but the flash write failed")
                                 .await?
                         }
-                        LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                        LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                     }
                 }
                 Err(error) => {
@@ -259,10 +265,7 @@ impl<W: Write> Server<'_, W> {
                     self.upload = None;
                     let poses = plan.len();
                     match self.request(LinkRequest::SetPlan(plan)).await {
-                        LinkReply::Done => {
-                            self.write_fmt(format_args!("ok: plan set, {poses} poses"))
-                                .await?
-                        }
+                        LinkReply::Done => self.write_text(plan_stored(poses)).await?,
                         LinkReply::PlanLocked => {
                             self.write_line(
                                 b"error: plan locked by stage-2 captures; 'clear' first",
@@ -273,7 +276,7 @@ impl<W: Write> Server<'_, W> {
                             self.write_line(b"error: plan set but the flash write failed")
                                 .await?
                         }
-                        LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                        LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                         LinkReply::SessionInProgress => {
                             self.write_line(b"error: a session is in progress; 'clear' first")
                                 .await?
@@ -321,10 +324,7 @@ impl<W: Write> Server<'_, W> {
                     [q[0], q[1]]
                 };
                 self.upload = Some(Upload::Plan(PlanUpload::new(joints)));
-                self.write_line(
-                    b"ok: send poses as j1,...,j6 or j3,...,j6 in degrees, one a line, then 'end'",
-                )
-                .await?;
+                self.write_line(PLAN_PROMPT.as_bytes()).await?;
             }
             Command::Profile => {
                 let procedure = self.shared.procedure.lock().await;
@@ -339,15 +339,11 @@ impl<W: Write> Server<'_, W> {
             }
             Command::ProfileSet => {
                 self.upload = Some(Upload::Profile(ProfileUpload::default()));
-                self.write_line(b"ok: send the profile's lines, then 'end'")
-                    .await?;
+                self.write_line(PROFILE_PROMPT.as_bytes()).await?;
             }
             Command::Erase => match self.request(LinkRequest::Erase).await {
-                LinkReply::Done => {
-                    self.write_line(b"ok: store erased; built-in profile and default plan in use")
-                        .await?
-                }
-                LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                LinkReply::Done => self.write_line(ERASED.as_bytes()).await?,
+                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                 _ => {
                     self.write_line(b"error: the erase or the default plan's write failed")
                         .await?
@@ -364,7 +360,7 @@ impl<W: Write> Server<'_, W> {
                     self.write_line(b"error: cleared but the flash write failed")
                         .await?
                 }
-                LinkReply::NotReady => self.write_line(NOT_READY).await?,
+                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                 LinkReply::SessionInProgress => {}
             },
         }
@@ -390,8 +386,7 @@ impl<W: Write> Server<'_, W> {
             }
         }
         let shared = self.shared;
-        self.write_fmt(format_args!(
-            "pendant: sensor frames dropped {}, display faults {}",
+        self.write_text(pendant_status(
             shared.dropped_frames.load(Ordering::Relaxed),
             shared.display_faults.load(Ordering::Relaxed),
         ))
@@ -474,9 +469,6 @@ fn stop_key(typed: &[u8]) -> Option<Vec<u8, 64>> {
     let _ = left.extend_from_slice(keep.get(..keep.len().min(64)).unwrap_or(&[]));
     Some(left)
 }
-
-/// The answer while the storage reset or restart screen waits for OK.
-const NOT_READY: &[u8] = b"error: press OK on the pendant first";
 
 #[cfg(test)]
 mod tests {
