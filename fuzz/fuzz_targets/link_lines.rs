@@ -88,7 +88,8 @@ fn desktop_reader(data: &[u8]) {
         assert!(reply.lines.len() <= expect.max_lines());
         if let Ok(out) = check_reply(&expect, &reply) {
             assert!(
-                out.bytes().all(|b| b == b'\n' || (0x20..=0x7e).contains(&b)),
+                out.bytes()
+                    .all(|b| b == b'\n' || (0x20..=0x7e).contains(&b)),
                 "{out:?}"
             );
         }
@@ -110,7 +111,12 @@ fn status_reader(text: &str) {
             residual_rms_deg,
         } = s.stage2
         {
-            numbers.extend(offsets_deg.into_iter().chain(sigma_deg).chain([residual_rms_deg]));
+            numbers.extend(
+                offsets_deg
+                    .into_iter()
+                    .chain(sigma_deg)
+                    .chain([residual_rms_deg]),
+            );
         }
         if let Some(r) = s.last_result {
             numbers.extend(r.offsets_deg.into_iter().chain(r.sigma_deg));

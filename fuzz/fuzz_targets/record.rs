@@ -129,7 +129,12 @@ fuzz_target!(|data: &[u8]| {
         _ => true,
     });
     if all_in_bounds && sigmas_valid {
-        status_lines.push(zerocal_core::link::pendant_status(0, 0).expect("fits").as_str().to_owned());
+        status_lines.push(
+            zerocal_core::link::pendant_status(0, 0)
+                .expect("fits")
+                .as_str()
+                .to_owned(),
+        );
         let lines: Vec<&str> = status_lines.iter().map(String::as_str).collect();
         if let Err(e) = zerocal_core::link::parse_status(&lines) {
             panic!("the desktop refuses the status: {e}\n{lines:#?}");
