@@ -101,14 +101,9 @@ fn endless_files_are_refused_at_their_cap() {
 fn the_largest_export_fits_a_quarter_of_its_cap() {
     let profile = zerocal_profile::builtin("kuka-kr6-r900-sixx").expect("built in");
     // Twice each of DEFAULT_POSES (24) poses: MAX_POSES (48) rows, the pendant's most.
-    let (plan, _) = zerocal_sim::montecarlo::setup(
-        &profile,
-        zerocal_sim::montecarlo::Method::Compensated,
-        zerocal_sim::montecarlo::DEFAULT_POSES,
-    )
-    .expect("plan");
     let world = zerocal_sim::world::WorldConfig::real();
-    let session = zerocal_sim::world::RealSession::simulate(&profile, &plan, &world, 5);
+    let session =
+        zerocal_sim::world::RealSession::simulate_default_plan(&profile, &world, 5).expect("plan");
     let text = session.export_text(&profile.name);
     let rows = text
         .lines()

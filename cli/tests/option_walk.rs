@@ -212,14 +212,9 @@ fn sample_export() -> PathBuf {
     std::fs::create_dir_all(&dir).expect("temp dir");
     let path = dir.join("export.csv");
     let profile = zerocal_profile::builtin("kuka-kr6-r900-sixx").expect("built in");
-    let (plan, _) = zerocal_sim::montecarlo::setup(
-        &profile,
-        zerocal_sim::montecarlo::Method::Compensated,
-        zerocal_sim::montecarlo::DEFAULT_POSES,
-    )
-    .expect("plan");
     let world = zerocal_sim::world::WorldConfig::real();
-    let session = zerocal_sim::world::RealSession::simulate(&profile, &plan, &world, 5);
+    let session =
+        zerocal_sim::world::RealSession::simulate_default_plan(&profile, &world, 5).expect("plan");
     std::fs::write(&path, session.export_text(&profile.name)).expect("write export");
     path
 }

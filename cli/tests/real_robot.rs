@@ -21,8 +21,7 @@ fn dir() -> PathBuf {
 }
 
 fn export(profile: &Profile, world: &WorldConfig, seed: u64, name: &str) -> (PathBuf, RealSession) {
-    let (plan, _) = setup(profile, Method::Compensated, DEFAULT_POSES).unwrap();
-    let s = RealSession::simulate(profile, &plan, world, seed);
+    let s = RealSession::simulate_default_plan(profile, world, seed).unwrap();
     let path = dir().join(name);
     std::fs::write(&path, s.export_text(&profile.name)).unwrap();
     (path, s)

@@ -11,7 +11,6 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use zerocal_profile::Profile;
-use zerocal_sim::montecarlo::{setup, Method, DEFAULT_POSES};
 use zerocal_sim::scenario::{self, pendant};
 use zerocal_sim::world::{Approach, RealSession, WorldConfig};
 
@@ -27,9 +26,7 @@ fn kr6() -> Profile {
 
 /// A simulated KR 6 session with every error source on.
 fn simulated(world: &WorldConfig, seed: u64) -> RealSession {
-    let profile = kr6();
-    let (plan, _) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
-    RealSession::simulate(&profile, &plan, world, seed)
+    RealSession::simulate_default_plan(&kr6(), world, seed).unwrap()
 }
 
 fn write(name: &str, bytes: &[u8]) -> PathBuf {

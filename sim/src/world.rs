@@ -163,6 +163,24 @@ fn small_rotation(rng: &mut ChaCha8Rng, half_deg: f64) -> ([f64; 3], Rotation3<f
 }
 
 impl RealSession {
+    /// Simulates a session on `profile` through the plan the pendant runs by default
+    /// (the planner's [`crate::montecarlo::DEFAULT_POSES`] poses for the compensated fit).
+    ///
+    /// # Errors
+    /// The planner refuses the profile.
+    pub fn simulate_default_plan(
+        profile: &Profile,
+        world: &WorldConfig,
+        seed: u64,
+    ) -> Result<Self, zerocal_core::plan::PlanError> {
+        let (plan, _) = crate::montecarlo::setup(
+            profile,
+            crate::montecarlo::Method::Compensated,
+            crate::montecarlo::DEFAULT_POSES,
+        )?;
+        Ok(Self::simulate(profile, &plan, world, seed))
+    }
+
     /// Simulates a session on `profile` through the stage-2 `plan` (commanded joints,
     /// model angles, rad).
     pub fn simulate(

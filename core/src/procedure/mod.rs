@@ -216,7 +216,7 @@ pub enum Approach {
 impl Approach {
     /// The approach of capture `index` of a pose or stage-1 reading (0 below, 1 above).
     pub fn of(index: usize) -> Self {
-        if index % 2 == 0 {
+        if index.is_multiple_of(2) {
             Approach::FromBelow
         } else {
             Approach::FromAbove

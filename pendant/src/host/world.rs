@@ -374,7 +374,7 @@ impl World {
         // ±0.5° flipping every 100 ms, never near zero: no sample taken on the way
         // can join a still window of samples taken at rest.
         let wobble = if self.moving(t_ms) {
-            let sign = if (t_ms / 100.0) as u64 % 2 == 0 {
+            let sign = if ((t_ms / 100.0) as u64).is_multiple_of(2) {
                 1.0
             } else {
                 -1.0
