@@ -96,7 +96,9 @@ impl Read for Scripted {
                 buf.len()
             }
             Some(Script::Trickle(b)) => {
-                std::thread::sleep(Duration::from_millis(5));
+                // 50 bytes a second: within the reply's deadline (1 s in FAST) fewer
+                // bytes than one line may hold, so only the deadline can end it.
+                std::thread::sleep(Duration::from_millis(20));
                 buf[0] = b[self.at % b.len()];
                 self.at += 1;
                 1
@@ -412,7 +414,13 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
                 &refs
                     .iter()
                     .enumerate()
-                    .map(|(k, l)| if k == 20 { "1,2,3,4,5,6,0.1,0.2," } else { l })
+                    .map(|(k, l)| {
+                        if k == 20 {
+                            "1,2,3,4,5,6,0.1,0.2,20,below"
+                        } else {
+                            l
+                        }
+                    })
                     .collect::<Vec<_>>(),
             ),
             "end trailer has crc32",
