@@ -238,8 +238,14 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    // The third pose's "above" row dropped.
-    let edited = text.replace(&format!("{}\n", rows[5]), "");
+    // The third pose's "above" row dropped, and the end trailer with it (which would
+    // refuse the edit first: lines lost): the rule for one side is what is shown.
+    let edited: String = text
+        .replace(&format!("{}\n", rows[5]), "")
+        .lines()
+        .filter(|l| !l.starts_with(zerocal_core::export_trailer::TRAILER_PREFIX))
+        .map(|l| format!("{l}\n"))
+        .collect();
     refused(
         "lone.csv",
         &edited,
