@@ -54,7 +54,7 @@ fn is_numeric(a: &clap::Arg) -> bool {
     .any(|id| t == id)
 }
 
-/// The sensor's reading convention: `rpy` or `axis` (METHOD.md), listed in the help.
+/// The sensor's reading convention: `rpy` or `axis` (docs/method.md), listed in the help.
 pub fn convention() -> impl TypedValueParser<Value = zerocal_core::model::Convention> {
     clap::builder::PossibleValuesParser::new(["rpy", "axis"])
         .try_map(|name| name.parse::<zerocal_core::model::Convention>())

@@ -17,7 +17,7 @@ use zerocal_core::FitError;
 pub struct IdentifyArgs {
     /// The log: `j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg`, one pose a row, `#` comments.
     pub log: PathBuf,
-    /// How the sensor's angles derive from gravity (METHOD.md): rpy (the paper's
+    /// How the sensor's angles derive from gravity (docs/method.md): rpy (the paper's
     /// sensor) or axis (the pendant's SCL3300). Required: the two differ by 0.15° at
     /// 10° of tilt, and a log does not say which it holds.
     #[arg(long, value_parser = crate::args::convention())]

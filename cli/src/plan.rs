@@ -50,7 +50,7 @@ use zerocal_profile::Profile;
 
 /// A parameter pair whose |correlation| exceeds this is named as poorly separated:
 /// at 0.9 the pair's difference is known √(1/(1−0.9)) ≈ 3× worse than if they were
-/// independent (issue 12's example figure).
+/// independent (a stated example figure).
 pub const POORLY_SEPARATED: f64 = 0.9;
 
 /// Arguments of `zerocal plan`.

@@ -116,7 +116,7 @@ pub struct WorldArgs {
     /// Range: [0, 1] deg.
     #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
     pub loose_bracket_deg: f64,
-    /// How far the box warms over the session (issue 15's figure: 3). Range: [0, 60] K.
+    /// How far the box warms over the session (the stated figure: 3). Range: [0, 60] K.
     #[arg(long, default_value_t = 3.0, value_name = "K", value_parser = RealIn::closed(0.0, 60.0, "K"))]
     pub warming_k: f64,
     /// Both brackets seat within ± this about each axis (0: exact); the budget takes

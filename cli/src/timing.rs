@@ -4,7 +4,7 @@
 //! joint limits, the mounting and parking poses, and the pendant's capture rule
 //! checked along every move.
 //!
-//! The procedure (issue 15): every pose (stage 1's two and every stage-2 pose) is
+//! The procedure: every pose (stage 1's two and every stage-2 pose) is
 //! captured twice, first with every joint arriving moving in its positive direction
 //! (from [`APPROACH_DEG`] below), then with every joint arriving moving negative (from
 //! [`OVERSHOOT_DEG`] above); the overshoot is also the move that re-arms the pendant.
@@ -71,7 +71,7 @@ pub const OPERATOR_OK_S: f64 = 10.0;
 
 /// How far below a pose every joint starts the last move to the pose's first capture
 /// (deg): a stated default, 50× the order of gear backlash named in the controller
-/// leads (0.01-0.02°, `../shared/CONTROLLERS.md`, not verified).
+/// leads (0.01-0.02°, calibration-practice leads, not verified against a source).
 pub const APPROACH_DEG: f64 = 1.0;
 
 /// How far above a pose every joint goes before coming back to it for the pose's
@@ -83,7 +83,7 @@ pub const APPROACH_DEG: f64 = 1.0;
 /// Where a plan of the user's is not re-armed, the program stops for an OK instead.
 pub const OVERSHOOT_DEG: f64 = 4.0;
 
-/// The pendant's sensor period (s): the SCL3300 is read at 20 Hz (issue 15's decision:
+/// The pendant's sensor period (s): the SCL3300 is read at 20 Hz (the project's decision:
 /// 40 samples of its 10 Hz output make one 2 s capture; core's `MEMS_CAPTURE_NOISE_DEG`).
 pub const SAMPLE_PERIOD_S: f64 = 0.05;
 

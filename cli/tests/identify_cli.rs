@@ -1,5 +1,5 @@
 //! `zerocal identify` as a user runs it: the binary, on CSV files written by an
-//! independent implementation of METHOD.md (plain axis-angle rotations and the
+//! independent implementation of docs/method.md (plain axis-angle rotations and the
 //! conventions' formulas written out afresh, a numeric Jacobian for the bound), so a
 //! convention slip in `zerocal-core` cannot hide behind a shared helper.
 
@@ -19,7 +19,7 @@ fn ry(a: f64) -> Rotation3<f64> {
     Rotation3::from_axis_angle(&Vector3::y_axis(), a)
 }
 
-/// METHOD.md: reading = convention(Rᵀẑ) + bias with
+/// docs/method.md: reading = convention(Rᵀẑ) + bias with
 /// R = Ry(β)Rx(α) · Rx(θ3+Δ3) Ry(θ4+Δ4) Rx(θ5+Δ5) Ry(θ6+Δ6).
 fn reading(
     q: &[f64; 4],
@@ -302,7 +302,7 @@ fn simulate_prints_report_beside_truth() {
 
 /// `zerocal plan --convention rpy --poses 8 --json` (the paper's ideal sensor) poses
 /// have a covariance bound,
-/// computed here independently (METHOD.md's model, numeric Jacobian), at least 5×
+/// computed here independently (docs/method.md's model, numeric Jacobian), at least 5×
 /// smaller per axis than 30 random poses with joints within ±30° inside the window.
 #[test]
 fn planned_poses_beat_random_ones_by_five_times() {

@@ -1,4 +1,4 @@
-//! Issue 12's traps on whole pendant exports: a profile with a joint turning the wrong
+//! Traps on whole pendant exports: a profile with a joint turning the wrong
 //! way or a bracket fitted otherwise is refused with the change that fits named; an arm
 //! with parallel joints 3 and 4 gives their sum and says which zero needs another
 //! method; and, for every built-in profile, `zerocal session` on exports written by the
@@ -124,9 +124,9 @@ fn parallel_joints_give_their_sum_and_say_so() {
     assert!(notes.contains("another method"), "{notes}");
 }
 
-/// Issue 12's acceptance: for every built-in profile, exports of simulated sessions
+/// The acceptance of the robot profiles: for every built-in profile, exports of simulated sessions
 /// (an SCL3300 with its noise, quantisation and offset on a rigid robot: the world of
-/// issue 12's own trials) read by `zerocal session`: the hidden offsets within 3σ and
+/// the profiles' own trials) read by `zerocal session`: the hidden offsets within 3σ and
 /// the reported σ within 25 % of the spread over the sessions.
 #[test]
 fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread() {
@@ -196,14 +196,14 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
         // Student's t lies beyond 3 0.54 % of the time; over 1000 cases that is 5.4 ± 2.3,
         // and 1.5 % is 15.
         assert!(share <= 0.015, "{name}: {share}");
-        // 200 sessions estimate the spread to ±5 % (1σ); 25 % is issue 12's bound.
+        // 200 sessions estimate the spread to ±5 % (1σ); 25 % is the acceptance bound.
         for r in &ratio {
             assert!((0.75..=1.25).contains(r), "{name}: {ratio:?}");
         }
     }
 }
 
-/// The hand-over trap of issue 12: stage 1's tilt passed to `identify` with a log that
+/// The hand-over trap: stage 1's tilt passed to `identify` with a log that
 /// does not record joints 1 and 2 is refused (it composes with them), never a silent
 /// error of degrees in Δθ3.
 #[test]

@@ -1,5 +1,5 @@
 //! zerocal-core: zero-offset identification of industrial-robot joints from the readings
-//! of a dual-axis inclinometer, as described in `METHOD.md`.
+//! of a dual-axis inclinometer, as described in docs/method.md.
 //!
 //! Everything here is hardware-independent and runs unchanged on the pendant's
 //! Cortex-M4F (in `f32`) and on the desktop (in `f64`): no heap, no `std` outside tests.

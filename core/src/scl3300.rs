@@ -16,7 +16,7 @@
 //! likewise `ANG_Y`, where `a` is the acceleration it measures: at rest `+1 g` on an
 //! axis pointing up, so `a` is the up vector `u` in chip coordinates.
 //!
-//! The pendant's frame (the `x`, `y`, `z` of METHOD.md) is the chip's frame turned by
+//! The pendant's frame (the `x`, `y`, `z` of docs/method.md) is the chip's frame turned by
 //! +90° about its Z axis, chip mounted component side up (chip Z up when the pendant
 //! lies level):
 //!
@@ -26,7 +26,7 @@
 //! | y | +X |
 //! | z | +Z |
 //!
-//! Then METHOD.md's `axis` convention, `x = atan2(u_y, hypot(u_x, u_z))` and
+//! Then docs/method.md's `axis` convention, `x = atan2(u_y, hypot(u_x, u_z))` and
 //! `y = atan2(−u_x, hypot(u_y, u_z))`, is exactly `x = ANG_X`, `y = ANG_Y`: no sign
 //! flips in the firmware. In words: x grows when the pendant rolls about its own
 //! x axis (its y side rising); y grows when it pitches about its y axis (its x side

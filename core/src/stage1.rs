@@ -3,7 +3,7 @@
 //! The pendant sits on the upper arm (link 2), its x along joint 2's axis. It is read
 //! with axis 1 at its mark and again after a half turn of axis 1, all else locked. A
 //! tilt of the base turns with axis 1 and changes sign between the two readings; the
-//! arm's own angle about joint 2 does not. For the paper's geometry (METHOD.md) the
+//! arm's own angle about joint 2 does not. For the paper's geometry (docs/method.md) the
 //! two `rpy` readings are `(α+φ+bx, β+by)` and `(φ−α+bx, −β+by)` exactly, so half-sums
 //! and half-differences give α, β, the y bias and φ, and Δθ2 = φ − c2.
 //!
@@ -346,7 +346,7 @@ mod tests {
 
 #[cfg(test)]
 mod properties {
-    //! Exactness of stages 0 and 1 for any tilt, bias and heading (METHOD.md: the
+    //! Exactness of stages 0 and 1 for any tilt, bias and heading (docs/method.md: the
     //! formulas are exact, not small-angle), and the closed form's covariance.
     use super::*;
     use crate::model::{rot_x, rot_y, rot_z, JointAxis};

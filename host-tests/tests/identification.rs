@@ -187,7 +187,7 @@ fn single_step_breaks_with_large_offsets_iterating_does_not() {
             "iterated fit off the bound at {magnitude} deg"
         );
         if magnitude >= 2.0 {
-            // METHOD.md: one step leaves ~0.015° at 2° offsets, ~0.8° at 10°.
+            // docs/method.md: one step leaves ~0.015° at 2° offsets, ~0.8° at 10°.
             assert!(
                 rms(&one) > 5.0 * rb,
                 "one step unexpectedly fine at {magnitude} deg"

@@ -1,4 +1,4 @@
-//! Whole sessions in the real world (issue 15): a production SCL3300 unit drawn from
+//! Whole sessions in the real world: a production SCL3300 unit drawn from
 //! the datasheet's ranges and a robot that sags, has backlash and repeats only to
 //! 0.0015° per joint, the box warming 3 K; 200 sessions per robot on the paper's wrist
 //! and three published arms, each planned and solved as the pendant does. And the
@@ -15,7 +15,7 @@ use zerocal_profile::Profile;
 use zerocal_sim::montecarlo::{run, setup, summarise, Method, DEFAULT_POSES};
 use zerocal_sim::world::{RealSession, WorldConfig};
 
-/// The target per joint (deg): issue 15's.
+/// The target per joint (deg): the accuracy goal of docs/error-budget.md.
 const TARGET_DEG: f64 = 0.005;
 
 fn readings<'a>(profile: &Profile, s: &'a RealSession, closing: bool) -> SessionReadings<'a, f64> {
@@ -62,7 +62,7 @@ fn every_error_source_on_200_sessions_per_robot() {
         // The plan keeps every capture inside mode 4's ±10°, whatever the unit's offset.
         assert_eq!(outside, 0, "{robot}: captures outside the sensor's range");
         assert_eq!(s.refused, 0, "{robot}: sessions refused");
-        // Issue 15: each joint within 0.005° in at least 95 % of sessions, and the k = 2
+        // The goal: each joint within 0.005° in at least 95 % of sessions, and the k = 2
         // budget covering the actual error in at least 95 % (a binomial 95 % over 200
         // sessions has a 1σ of 1.5 %: a true 97 % fails this 1 time in 10; the figures
         // measured are 99.5-100 %).

@@ -217,7 +217,7 @@ pub fn summarise(outcomes: &[SessionOutcome], limit_deg: f64) -> Summary {
     }
 }
 
-/// How a session is run and solved: before issue 15's compensation (the paper's model
+/// How a session is run and solved: before the compensation of the real sensor and robot (the paper's model
 /// with a MEMS sensor: offsets only, one approach direction, no closing reversal) or
 /// with it (the real-sensor model, both approach directions, the closing reversal).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -40,7 +40,7 @@ impl RobotSources {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RobotSpec {
     /// Sag of joints 2 and 3 at the largest gravity torque the arm sees (deg), drawn
-    /// per joint within this range: issue 15's figure ("0.01-0.02° at full lever"). No
+    /// per joint within this range: the stated figure ("0.01-0.02° at full lever"). No
     /// public compliance of a named arm was found (docs/error-budget.md): joint
     /// stiffness papers (Dumas et al.; Klimchik et al.) were not reachable.
     pub sag_full_lever_deg: (f64, f64),
@@ -52,7 +52,7 @@ pub struct RobotSpec {
     /// the output on the side it was driven to (approach) rather than gravity's side.
     /// A stated default: no source gives it.
     pub friction_fraction: f64,
-    /// Repeatability per joint, 1σ (deg): issue 15's 0.0015° per joint; six joints so
+    /// Repeatability per joint, 1σ (deg): the stated 0.0015° per joint; six joints so
     /// give about 0.004° of flange orientation, within the 87 µrad (0.005°) measured
     /// for an ABB IRB 1600 (Slamani, Nubiola and Bonev, Industrial Robot 39(1), 2012).
     pub repeatability_deg: f64,
@@ -287,7 +287,7 @@ impl SimRobot {
         ]
     }
 
-    /// Sets the paper robot's joint-2 direction (`s2` of METHOD.md).
+    /// Sets the paper robot's joint-2 direction (`s2` of docs/method.md).
     pub fn with_j2_direction(mut self, s2: i8) -> Self {
         self.arm.joints[1].axis = if s2 < 0 {
             JointAxis::NegX

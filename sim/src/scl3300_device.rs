@@ -7,7 +7,7 @@
 //! bits, latched STATUS flags cleared by reading STATUS, WHOAMI. The angle registers
 //! come from an up vector in the pendant's frame through the mounting documented in
 //! `zerocal_core::scl3300` (pendant x = chip −Y, y = chip X, z = chip Z), so a test
-//! states orientations in METHOD.md's `axis` convention.
+//! states orientations in docs/method.md's `axis` convention.
 //!
 //! Faults are injected with [`Fault`]; each affects the responses from the next frame
 //! on, until cleared.

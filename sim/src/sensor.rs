@@ -30,12 +30,12 @@ const DEG: f64 = core::f64::consts::PI / 180.0;
 pub struct Scl3300Spec {
     /// Sensitivity error per axis, ± (relative). SCL3300: not published in anything
     /// found; the sister part SCA3300 (Doc. 3165 Rev. 3, Table 2): ±0.7 % over
-    /// −40…+125 °C including lifetime. Issue 15's table quotes ±0.5 %; the larger is
+    /// −40…+125 °C including lifetime. The project's original requirement quotes ±0.5 %; the larger is
     /// used.
     pub sensitivity: f64,
     /// Cross-axis sensitivity of each axis to each other axis, ± (relative): SCA3300
     /// Table 2 footnote D, ±1 % (no SCL3300 figure found). It includes the sensing
-    /// axes' non-orthogonality (issue 15 quotes ±0.3° per pair = ±0.52 %).
+    /// axes' non-orthogonality (the original requirement quotes ±0.3° per pair = ±0.52 %).
     pub cross_axis: f64,
     /// Offset of X and Z, ± (g): ±20 mg = ±1.15° (SCL3300 table quoted second-hand;
     /// SCA3300 Table 2 footnote A, first-hand: "includes calibration error, temperature,
@@ -46,7 +46,7 @@ pub struct Scl3300Spec {
     /// Offset drift, ± (g per kelvin) on X and Y. No per-kelvin figure is published:
     /// ±10 mg over −40…+125 °C from +23 °C (SCL3300 second-hand, SCA3300 Table 2
     /// footnote B) averages 0.0056 °/K towards +125 °C and 0.0090 °/K towards −40 °C;
-    /// the larger, 0.009 °/K = 1.57e-4 g/K, is used (issue 15 quotes 0.005 °/K).
+    /// the larger, 0.009 °/K = 1.57e-4 g/K, is used (the original requirement quotes 0.005 °/K).
     pub drift_g_per_k: f64,
     /// Non-linearity, ± (g at 1 g, cubic): SCA3300 Table 2 footnote C, ±1 mg over ±1 g
     /// (no SCL3300 figure found). A cubic term reaches 0.005 mg within mode 4's ±10°.

@@ -13,7 +13,7 @@ use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
 use zerocal_core::stage2::{PoseReading, Stage2Model};
 use zerocal_core::{FitConfig, FitResult, StageError};
 
-/// The paper's Table 4 setup (METHOD.md, Reference figures).
+/// The paper's Table 4 setup (docs/method.md, Reference figures).
 pub struct Table4;
 
 impl Table4 {

@@ -43,7 +43,7 @@ pub struct WorldConfig {
     pub robot: RobotSources,
     /// The robot's figures.
     pub robot_spec: RobotSpec,
-    /// How the box warms over the session (K) and its time constant (s): issue 15's
+    /// How the box warms over the session (K) and its time constant (s): the stated
     /// "box warming 3 K over the session" (no source gives a handheld box's
     /// self-heating), approached exponentially with a 10-minute time constant.
     pub warming_k: f64,

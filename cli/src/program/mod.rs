@@ -1,5 +1,5 @@
 //! `zerocal program`: a robot program that drives the whole session, in the
-//! controller's own language, as issue 15's procedure has it: a stop to clip the
+//! controller's own language, as the session's procedure has it: a stop to clip the
 //! pendant to the upper arm; the stage-1 pose captured twice, then joint 1 turned by
 //! 180° (an OK on the pendant arms the first reading) and that pose captured twice; a
 //! stop to move the pendant to the flange; every stage-2 pose of the plan captured

@@ -95,7 +95,7 @@ impl<T: Real> Arm<T> {
         }
     }
 
-    /// The paper's robot (METHOD.md): joint 1 about the vertical, joint 2 about x (the
+    /// The paper's robot (docs/method.md): joint 1 about the vertical, joint 2 about x (the
     /// pendant's x on the upper arm), joints 3-6 about x, y, x, y (its eq. 2), no fixed
     /// rotations, both mountings aligned with their links. Its lengths are not given:
     /// all zero here (no sag, no positioning test without a profile).
@@ -119,7 +119,7 @@ impl<T: Real> Arm<T> {
         }
     }
 
-    /// The paper's robot with joint 2 turning the other way (`s2 = −1` of METHOD.md).
+    /// The paper's robot with joint 2 turning the other way (`s2 = −1` of docs/method.md).
     pub fn paper_with_j2_direction(j2_direction: i8) -> Self {
         let mut arm = Self::paper();
         if j2_direction < 0 {

@@ -1,4 +1,4 @@
-//! The kinematic and sensor model of `METHOD.md`.
+//! The kinematic and sensor model of docs/method.md.
 //!
 //! A reading is `convention(G·Rᵀ·ẑ) + bias`, with `R` the sensor's orientation in a
 //! level world frame and `G` the sensor's gain ([`Gain`]). The arm ([`Arm`]) is six
@@ -144,7 +144,7 @@ pub fn rot_z<T: Real>(a_rad: T) -> Rotation3<T> {
     JointAxis::Z.rotation(a_rad)
 }
 
-/// A fixed rotation given as the `rpy` angles of METHOD.md: `Rz(yaw)·Ry(pitch)·Rx(roll)`.
+/// A fixed rotation given as the `rpy` angles of docs/method.md: `Rz(yaw)·Ry(pitch)·Rx(roll)`.
 pub fn rotation_from_rpy_deg<T: Real>(roll_deg: T, pitch_deg: T, yaw_deg: T) -> Rotation3<T> {
     rot_z(deg_to_rad(yaw_deg)) * rot_y(deg_to_rad(pitch_deg)) * rot_x(deg_to_rad(roll_deg))
 }
@@ -178,7 +178,7 @@ impl<T: Real> BaseTilt<T> {
         }
     }
 
-    /// `Ry(β)·Rx(α)`, composed as a rotation (never subtracted as a reading: METHOD.md).
+    /// `Ry(β)·Rx(α)`, composed as a rotation (never subtracted as a reading: docs/method.md).
     pub fn rotation(&self) -> Rotation3<T> {
         rot_y(self.beta_rad) * rot_x(self.alpha_rad)
     }

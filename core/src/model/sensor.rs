@@ -79,7 +79,7 @@ impl<T: Real> Tilt<T> {
     }
 }
 
-/// How the two angles derive from the up vector `u = Rᵀ·ẑ` (METHOD.md, Conventions).
+/// How the two angles derive from the up vector `u = Rᵀ·ẑ` (docs/method.md, Conventions).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -373,7 +373,7 @@ mod tests {
 
     #[test]
     fn conventions_differ_by_about_a_sixth_of_a_degree_at_ten_degrees() {
-        // METHOD.md: "differ by up to ~0.15° at 10° tilt".
+        // docs/method.md: "differ by up to ~0.15° at 10° tilt".
         let r = rot_y(0.1745_f64) * rot_x(0.1745);
         let u = r.inverse() * Vector3::z();
         let d = rad_to_deg(Convention::Rpy.read(&u).x_rad - Convention::Axis.read(&u).x_rad);

@@ -2,7 +2,7 @@
 //! moves, so that the fit reaches the best accuracy the sensor window allows.
 //!
 //! How widely the joints vary inside the sensor window decides the accuracy
-//! (METHOD.md, Reference figures): 30 random poses with the joints within ±30° give
+//! (docs/method.md, Reference figures): 30 random poses with the joints within ±30° give
 //! ~0.0025° per axis, a planned handful does an order of magnitude better.
 //!
 //! The planner is an optimal experimental design on the linearised model:

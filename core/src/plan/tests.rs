@@ -43,7 +43,7 @@ fn default_plan_is_feasible_and_accurate() {
         }
     }
     let s = p.predicted_sigma_deg();
-    // METHOD.md: 30 random poses in ±30° give 0.0025°; the brief asks 8 planned
+    // docs/method.md: 30 random poses in ±30° give 0.0025°; the brief asks 8 planned
     // ones to be at least 5× better, 0.0005°.
     assert!(s.iter().all(|&x| x > 0.0 && x < 0.0005), "{s:?}");
     // Joints free over a full turn: the design is near orthogonal (JᵀJ ∝ I).

@@ -1,6 +1,6 @@
 //! Robot time of a calibration session, and the stage-2 pose order that shortens it.
 //!
-//! The session a robot program drives (`zerocal program`), as issue 15 decided it:
+//! The session a robot program drives (`zerocal program`), as the project decided it:
 //!
 //! 1. **Stage 1.** The robot stands at a mounting pose (the pendant tilted past its
 //!    range, so it cannot capture while it is clipped on) and the pendant is clipped to

@@ -4,7 +4,7 @@
 //! so "undo" overwrites a count rather than deleting (the STM32F4 flash cannot delete).
 //!
 //! Encoding: a format byte, then little-endian fields; every angle as an `f64` of
-//! radians (exact for the pendant's `f32`). Format 3 (issue 15's procedure) keeps every
+//! radians (exact for the pendant's `f32`). Format 3 (the two-sided procedure) keeps every
 //! capture of stages 0 and 1 and of the closing reversal with its temperature, and two
 //! stage-2 captures per plan pose (each under the index of its approach); formats 1
 //! and 2 are refused as `WrongFormat` and the pendant starts afresh.

@@ -210,7 +210,7 @@ impl<SPI: SpiDevice, D: DelayNs> Scl3300<SPI, D> {
 
     /// Reads both angles, and STATUS to vouch for them.
     ///
-    /// Returns METHOD.md's `axis`-convention reading for the mounting in the module
+    /// Returns docs/method.md's `axis`-convention reading for the mounting in the module
     /// documentation (`x_rad` = ANG_X, `y_rad` = ANG_Y), no bias removed. Resolution
     /// [`super::ANGLE_LSB_RAD`]. Takes four frames (~0.1 ms at 2 MHz).
     ///

@@ -324,7 +324,7 @@ impl StatusFlags {
 mod tests {
     use super::*;
 
-    /// Every example frame in SCL3300.md (and the datasheet's command table it comes
+    /// Every example frame in docs/scl3300.md (and the datasheet's command table it comes
     /// from), with the command that must encode to it.
     const EXAMPLE_FRAMES: [(Command, u32); 13] = [
         (Command::SOFTWARE_RESET, 0xB400_2098),

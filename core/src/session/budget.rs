@@ -126,7 +126,7 @@ pub struct BudgetInputs<T> {
 /// (product page: lost motion < 1 arc min).
 pub const DEFAULT_LOST_MOTION_DEG: f64 = 1.0 / 60.0;
 
-/// The robot's repeatability per joint when no figure is stated: 0.0015° (1σ), issue 15's
+/// The robot's repeatability per joint when no figure is stated: 0.0015° (1σ), the stated
 /// figure; six joints so give about 0.004° of flange orientation, inside the 87 µrad
 /// measured on an ABB IRB 1600 (Slamani, Nubiola and Bonev, Industrial Robot 39(1),
 /// 2012).

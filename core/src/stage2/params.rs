@@ -1,5 +1,5 @@
 //! What stage 2 estimates: Δθ3..Δθ6 always and, where the poses can separate them, the
-//! terms a real sensor and a real robot add (METHOD.md, "What the ideal model leaves
+//! terms a real sensor and a real robot add (docs/method.md, "What the ideal model leaves
 //! out"):
 //!
 //! - **gain**: the sensing axes' sensitivity and cross-axis errors near level, a 2×2

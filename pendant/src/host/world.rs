@@ -51,7 +51,7 @@ pub const HANDLING_MS: u64 = 3000;
 /// Mode 4's output filter: first order at 10 Hz, τ = 1/(2π·10 Hz).
 pub const FILTER_TAU_MS: f64 = 1000.0 / (2.0 * core::f64::consts::PI * 10.0);
 
-/// Mode 4's noise (RMS, in g): chip Y 0.06 mg, chip X 0.08 mg (`SCL3300.md`).
+/// Mode 4's noise (RMS, in g): chip Y 0.06 mg, chip X 0.08 mg (docs/scl3300.md).
 pub const NOISE_G: (f64, f64) = (0.06e-3, 0.08e-3);
 
 /// What the world is made of.
