@@ -11,8 +11,8 @@ use std::fmt::Write as _;
 use std::{env, fs, path::PathBuf};
 
 use zerocal_core::plan::{Candidate, DEFAULT_POOL};
-use zerocal_core::procedure::pendant_default;
-use zerocal_core::procedure::ProcedureConfig;
+use zerocal_procedure::pendant_default;
+use zerocal_procedure::ProcedureConfig;
 
 fn main() {
     let out_dir = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));

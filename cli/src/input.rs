@@ -71,7 +71,7 @@ pub fn read_capped_from(input: impl Read, cap: usize, name: &str) -> Result<Stri
 }
 
 /// The bytes of `path`, at most `cap` of them, for a reader that names a bad byte by
-/// its line itself (`zerocal_core::log::text_of`).
+/// its line itself (`zerocal_procedure::log::text_of`).
 ///
 /// # Errors
 /// A file that does not open or read, or is longer than `cap` (naming the cap).
@@ -103,7 +103,7 @@ mod tests {
 
     #[test]
     fn the_pendant_line_is_cores() {
-        let line = zerocal_core::log::Line::new();
+        let line = zerocal_procedure::log::Line::new();
         assert_eq!(line.capacity() + 2, PENDANT_LINE_BYTES);
     }
 

@@ -1,10 +1,10 @@
 //! Reading a stage-2 log or a pendant export from a file: core's reader
-//! (`zerocal_core::log`, the format's one definition) fed line by line, with the
+//! (`zerocal_procedure::log`, the format's one definition) fed line by line, with the
 //! standard library's correctly rounded number parser.
 
 use std::io::Read;
-use zerocal_core::log::{text_of, LogLine, LogReader};
 use zerocal_core::stage2::PoseReading;
+use zerocal_procedure::log::{text_of, LogLine, LogReader};
 
 /// A parsed log: the poses and the file line of each (for error messages).
 #[derive(Clone, Debug, Default)]

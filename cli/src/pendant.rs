@@ -3,7 +3,7 @@
 //!
 //! - `status`: the pendant's `status` lines.
 //! - `load-profile ROBOT [--plan FILE]`: the robot profile (`profile set`, the lines of
-//!   `zerocal_core::procedure::profile`), then the plan `zerocal program --robot ROBOT`
+//!   `zerocal_procedure::profile`), then the plan `zerocal program --robot ROBOT`
 //!   drives (or FILE, `zerocal plan --csv` output), so the pendant's screens, the
 //!   robot program and the export all name the same robot and poses.
 //! - `export [--out FILE]`: the session as `zerocal session` reads it.
@@ -24,16 +24,18 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::{Args, Subcommand};
-use zerocal_core::export_trailer;
-use zerocal_core::link::{
+use zerocal_core::model::JOINTS;
+use zerocal_procedure::export_trailer;
+use zerocal_procedure::link::{
     parse_plan_stored, parse_profile_stored, parse_status, phase_name, Stage2Status, Status,
     ERASED, ERROR_PREFIX, MAX_COMMAND_BYTES, PLAN_PROMPT, PROFILE_PROMPT, REPLY_LINE_BYTES,
     STATUS_LINES,
 };
-use zerocal_core::log::{parse_meta, LogError, LogLine, LogReader, EXPORT_MAX_LINES, LOG_HEADER};
-use zerocal_core::model::JOINTS;
-use zerocal_core::procedure::profile::{JointName, PendantProfile};
-use zerocal_core::procedure::{RobotName, MAX_PLAN_POSES};
+use zerocal_procedure::log::{
+    parse_meta, LogError, LogLine, LogReader, EXPORT_MAX_LINES, LOG_HEADER,
+};
+use zerocal_procedure::profile::{JointName, PendantProfile};
+use zerocal_procedure::{RobotName, MAX_PLAN_POSES};
 use zerocal_profile::Profile;
 
 use crate::error::CliError;

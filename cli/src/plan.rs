@@ -39,13 +39,13 @@ use serde::Serialize;
 use std::fmt::Write;
 use std::path::PathBuf;
 use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
-use zerocal_core::plan::time::{SessionTime, CAPTURES_PER_POSE};
 use zerocal_core::plan::{plan, Candidate, Criterion, Plan, PlanConfig, PlanError, MAX_POSES};
 use zerocal_core::real::{deg_to_rad, rad_to_deg};
 use zerocal_core::session::{
     predict_budget, BudgetInputs, PlannedRobot, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
 };
 use zerocal_core::stage2::{information, Extras, FitConfig, Stage2Model, MIN_POSES};
+use zerocal_procedure::robot_time::{SessionTime, CAPTURES_PER_POSE};
 use zerocal_profile::Profile;
 
 /// A parameter pair whose |correlation| exceeds this is named as poorly separated:

@@ -21,9 +21,7 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use zerocal_core::log::{parse_meta, strip_bom, text_of, LogLine, LogReader, MetaItem, MetaKeys};
 use zerocal_core::model::{Convention, JOINTS};
-use zerocal_core::procedure::Approach;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
     budget, one_sided_pose, sensor_offset_x_spec_deg, solve, stage1_joint2_mismatch,
@@ -35,6 +33,10 @@ use zerocal_core::stage0::ClosingReversal;
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{FitConfig, PoseReading};
 use zerocal_core::Tilt;
+use zerocal_procedure::log::{
+    parse_meta, strip_bom, text_of, LogLine, LogReader, MetaItem, MetaKeys,
+};
+use zerocal_procedure::Approach;
 use zerocal_profile::Profile;
 
 /// Arguments of `zerocal session`.
@@ -87,7 +89,7 @@ pub struct Export {
     /// Each row's `approach`, where the export has the column (exports written before
     /// it have not).
     pub approaches: Option<Vec<Approach>>,
-    /// The export ended with its end trailer, which matched (`zerocal_core::export_trailer`):
+    /// The export ended with its end trailer, which matched (`zerocal_procedure::export_trailer`):
     /// nothing lost or changed since the pendant wrote it. Without one (a file edited by
     /// hand, or not from a pendant) it is read unchecked, with a note.
     pub trailer_checked: bool,
@@ -179,7 +181,7 @@ fn check_rows(export: &Export, stage1: &AxisOneTurn<f64>) -> Result<(), String> 
             Some(a) => format!(
                 "captured only from {}",
                 a.get(i)
-                    .map_or("one side", |s| zerocal_core::log::approach_name(*s))
+                    .map_or("one side", |s| zerocal_procedure::log::approach_name(*s))
             ),
             None => "captured once (an export without the approach column: every pose must be \
              captured twice, from below and from above)"

@@ -1,5 +1,5 @@
 //! The robot side of a session for `zerocal plan` and `zerocal program`: core's
-//! robot-time model (`zerocal_core::plan::time`) filled in from a robot profile and
+//! robot-time model (`zerocal_procedure::robot_time`) filled in from a robot profile and
 //! the options, the room every capture needs on both sides of the backlash inside the
 //! joint limits, the mounting and parking poses, and the pendant's capture rule
 //! checked along every move.
@@ -32,10 +32,10 @@ use crate::error::CliError;
 use clap::Args;
 use serde::Serialize;
 use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
-use zerocal_core::plan::time::{shortest_tour, Mounting, SessionPath, SessionTime, TimeModel};
-use zerocal_core::procedure::ProcedureConfig;
 use zerocal_core::stage2::{Stage2Model, MEMS_RANGE_DEG};
-use zerocal_core::stillness::StillnessConfig;
+use zerocal_procedure::robot_time::{shortest_tour, Mounting, SessionPath, SessionTime, TimeModel};
+use zerocal_procedure::stillness::StillnessConfig;
+use zerocal_procedure::ProcedureConfig;
 use zerocal_profile::{Coupling, Profile};
 
 /// The session's joint speed, percent of each joint's maximum (stated default: slow

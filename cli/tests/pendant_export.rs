@@ -6,8 +6,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::process::Command;
-use zerocal_core::log::export;
 use zerocal_core::Real;
+use zerocal_procedure::log::export;
 use zerocal_sim::pendant::SimPendant;
 use zerocal_sim::scenario::{self, pendant};
 

@@ -11,10 +11,10 @@ use std::time::{Duration, Instant};
 
 use zerocal_cli::error::CliError;
 use zerocal_cli::pendant::{self, Expect, PendantAction, Timeouts};
-use zerocal_core::link::{parse_status, pendant_status, status, Stage2Status};
-use zerocal_core::procedure::profile::{ProfileStep, ProfileUpload};
 use zerocal_pendant::host::runner::converse;
 use zerocal_pendant::screen::Screen;
+use zerocal_procedure::link::{parse_status, pendant_status, status, Stage2Status};
+use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
 
 /// Short enough for a test, long against a scripted port that answers at once.
 const FAST: Timeouts = Timeouts {
@@ -155,7 +155,7 @@ fn crlf(lines: &[&str]) -> Vec<u8> {
 fn whole_session() -> (zerocal_sim::pendant::SimPendant<f32>, Vec<String>) {
     let mut p = zerocal_sim::scenario::pendant::<f32>(12, 11).expect("the planner plans 12 poses");
     zerocal_sim::scenario::whole_session(&mut p);
-    let lines = zerocal_core::log::export(&p.session, &p.config)
+    let lines = zerocal_procedure::log::export(&p.session, &p.config)
         .map(|l| l.expect("line fits").as_str().to_owned())
         .collect();
     (p, lines)
@@ -273,7 +273,7 @@ fn erase_status_export_and_refusals_against_the_pendant() {
 fn a_refused_profile_stops_before_the_plan() {
     let mut port = Scripted::bytes([
         crlf(&[
-            zerocal_core::link::PROFILE_PROMPT,
+            zerocal_procedure::link::PROFILE_PROMPT,
             "error: a session is in progress; 'clear' first (profile unchanged)",
         ]),
         crlf(&["ok: plan set, 24 poses"]),
@@ -458,7 +458,7 @@ fn a_flood_is_refused_within_the_reply_s_bounds() {
     let start = Instant::now();
     let (code, e) = refusal(&mut port, &export);
     assert_eq!(code, 3);
-    let lines = zerocal_core::log::EXPORT_MAX_LINES;
+    let lines = zerocal_procedure::log::EXPORT_MAX_LINES;
     assert!(
         e.contains(&format!("export: reply longer than {lines} lines")),
         "{e}"
@@ -474,7 +474,7 @@ fn a_flood_is_refused_within_the_reply_s_bounds() {
     let mut port = Scripted::new([Script::Forever(b"A".to_vec())]);
     let (code, e) = refusal(&mut port, &PendantAction::Status);
     assert_eq!(code, 3);
-    let line_max = zerocal_core::link::REPLY_LINE_BYTES;
+    let line_max = zerocal_procedure::link::REPLY_LINE_BYTES;
     assert!(
         e.contains(&format!("a line longer than {line_max} bytes")),
         "{e}"
@@ -513,12 +513,12 @@ fn a_silent_port_is_no_answer_within_its_timeout() {
 fn an_erase_is_done_only_when_the_pendant_says_so() {
     let erase = PendantAction::Erase;
     let ok = pendant::perform(
-        &mut Scripted::bytes([crlf(&[zerocal_core::link::ERASED])]),
+        &mut Scripted::bytes([crlf(&[zerocal_procedure::link::ERASED])]),
         &erase,
         FAST,
     )
     .unwrap();
-    assert_eq!(ok.trim(), zerocal_core::link::ERASED);
+    assert_eq!(ok.trim(), zerocal_procedure::link::ERASED);
     for (bytes, words) in [
         (
             crlf(&["ok"]),

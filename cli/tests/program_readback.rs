@@ -21,7 +21,7 @@ use zerocal_cli::timing::{
 };
 use zerocal_core::model::JOINTS;
 use zerocal_core::stage2::MEMS_RANGE_DEG;
-use zerocal_core::stillness::StillnessConfig;
+use zerocal_procedure::stillness::StillnessConfig;
 use zerocal_profile::{OffsetUnit, Profile};
 
 /// The tolerance for a target read back against the plan (deg). The formats

@@ -2,7 +2,7 @@
 //! refused with the line and key or column named, or (a session without a stage-0
 //! reversal) solved with the sensor's unknown offset in its budget. The exports are the
 //! simulator's (`RealSession::export_text`, truth known) and the simulated pendant's
-//! own (`zerocal_core::log::export`, with the `approach` column), edited as a user or a
+//! own (`zerocal_procedure::log::export`, with the `approach` column), edited as a user or a
 //! damaged file would.
 
 // A failed test panics with what it found: that is its report.
@@ -221,12 +221,12 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
     let mut p = pendant::<f64>(12, 14).expect("the planner plans 12 poses");
     scenario::whole_session(&mut p);
     let mut text = String::new();
-    for line in zerocal_core::log::export(&p.session, &p.config) {
+    for line in zerocal_procedure::log::export(&p.session, &p.config) {
         text.push_str(line.expect("line fits").as_str());
         text.push('\n');
     }
     let (header, h) = line_of(&text, "j1_deg,");
-    assert_eq!(h, zerocal_core::log::EXPORT_HEADER);
+    assert_eq!(h, zerocal_procedure::log::EXPORT_HEADER);
     let rows: Vec<&str> = text.lines().skip(header).take(24).collect();
     for (i, r) in rows.iter().enumerate() {
         let side = if i % 2 == 0 { ",below" } else { ",above" };
@@ -243,7 +243,7 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
     let edited: String = text
         .replace(&format!("{}\n", rows[5]), "")
         .lines()
-        .filter(|l| !l.starts_with(zerocal_core::export_trailer::TRAILER_PREFIX))
+        .filter(|l| !l.starts_with(zerocal_procedure::export_trailer::TRAILER_PREFIX))
         .map(|l| format!("{l}\n"))
         .collect();
     refused(

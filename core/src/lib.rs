@@ -13,11 +13,12 @@
 //!   covariance: the only place they are.
 //! - [`plan`]: the stage-2 poses, planned before the robot moves.
 //! - [`report`]: the numbers as the pendant and the CLI print them.
-//! - [`stillness`], [`procedure`]: the operator's procedure as a state machine with
-//!   automatic capture, and the records that make it survive a power cut.
-//! - [`link`]: the USB line protocol (commands, plan upload, status).
-//! - [`log`]: the stage-2 log and the pendant's export, written and parsed.
-//! - [`scl3300`]: the inclinometer's SPI protocol and driver.
+//! - [`capture`]: the capture scheme (two captures a pose, from below and above), the
+//!   capacities derived from it and the typed capture index.
+//!
+//! The operator's procedure, the link protocol and the file formats are
+//! `zerocal-procedure`'s; the inclinometer's driver is `zerocal-scl3300`'s (this crate
+//! takes only the datasheet figures from it).
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 // Also set here (not only by the workspace lints): the firmware builds core outside the
 // workspace.
@@ -31,23 +32,19 @@
 // Matrix code reads best with row and column indices, as the formulas write them.
 #![allow(clippy::needless_range_loop)]
 
+pub mod capture;
 pub mod decimal;
 pub mod error;
-pub mod export_trailer;
 pub mod linalg;
-pub mod link;
-pub mod log;
 pub mod model;
 pub mod plan;
-pub mod procedure;
 pub mod real;
 pub mod report;
-pub mod scl3300;
 pub mod session;
 pub mod stage0;
 pub mod stage1;
 pub mod stage2;
-pub mod stillness;
+#[cfg(any(test, feature = "testing"))]
 pub mod testing;
 
 pub use error::{FitError, ParamSet, StageError};

@@ -4,13 +4,13 @@
 #![no_main]
 use arbitrary::{Arbitrary, Unstructured};
 use libfuzzer_sys::fuzz_target;
-use zerocal_core::log::{
-    parse_meta, write_fit_extras, write_reversal, write_row, Line, LogLine, LogReader, MetaItem,
-    LOG_HEADER,
-};
 use zerocal_core::model::Tilt;
 use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage2::{Extras, PoseReading};
+use zerocal_procedure::log::{
+    parse_meta, write_fit_extras, write_reversal, write_row, Line, LogLine, LogReader, MetaItem,
+    LOG_HEADER,
+};
 
 /// A value in `[-limit, limit]` from a fuzzed fraction (an f32, as the pendant holds).
 fn within(u: &mut Unstructured<'_>, limit: f64) -> arbitrary::Result<f64> {

@@ -7,9 +7,9 @@
 //! text with finite numbers.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use zerocal_core::link::{parse_command, plan_line, PlanUpload, UploadStep};
 use zerocal_core::plan::PoseList;
-use zerocal_core::procedure::profile::{PendantProfile, ProfileStep, ProfileUpload};
+use zerocal_procedure::link::{parse_command, plan_line, PlanUpload, UploadStep};
+use zerocal_procedure::profile::{PendantProfile, ProfileStep, ProfileUpload};
 
 /// The `profile` reply of an uploaded profile reads back as the same profile (names,
 /// display, axes exactly; frames to the lines' decimals), every line within the link's
@@ -99,13 +99,13 @@ fn desktop_reader(data: &[u8]) {
 /// `status` lines read back: every accepted number finite.
 fn status_reader(text: &str) {
     let lines: Vec<&str> = text.split("\r\n").collect();
-    if let Ok(s) = zerocal_core::link::parse_status(&lines) {
+    if let Ok(s) = zerocal_procedure::link::parse_status(&lines) {
         let mut numbers = Vec::new();
         numbers.extend(s.bias_deg.into_iter().flatten());
         if let Some(r) = s.stage1 {
             numbers.extend([r.j2_offset_deg, r.alpha_deg, r.beta_deg]);
         }
-        if let zerocal_core::link::Stage2Status::Done {
+        if let zerocal_procedure::link::Stage2Status::Done {
             offsets_deg,
             sigma_deg,
             residual_rms_deg,
@@ -125,8 +125,11 @@ fn status_reader(text: &str) {
     }
     // A trailer that reads writes back as itself.
     for line in text.split(['\n', '\r']) {
-        if let Ok(t) = zerocal_core::export_trailer::parse(line) {
-            assert_eq!(zerocal_core::export_trailer::parse(&t.to_string()), Ok(t));
+        if let Ok(t) = zerocal_procedure::export_trailer::parse(line) {
+            assert_eq!(
+                zerocal_procedure::export_trailer::parse(&t.to_string()),
+                Ok(t)
+            );
         }
     }
 }
@@ -148,7 +151,7 @@ fuzz_target!(|data: &[u8]| {
                 profile = ProfileUpload::default();
             }
             Err(error) => {
-                let mut line = zerocal_core::link::Line::new();
+                let mut line = zerocal_procedure::link::Line::new();
                 assert!(
                     core::fmt::Write::write_fmt(&mut line, format_args!("error: {error}")).is_ok()
                 );
@@ -164,7 +167,7 @@ fuzz_target!(|data: &[u8]| {
             }
             Err(error) => {
                 // Every error prints within a link line.
-                let mut line = zerocal_core::link::Line::new();
+                let mut line = zerocal_procedure::link::Line::new();
                 assert!(
                     core::fmt::Write::write_fmt(&mut line, format_args!("error: {error}")).is_ok()
                 );
@@ -181,7 +184,7 @@ fn check_plan(plan: &PoseList<f32>) {
             assert!(
                 v.is_finite()
                     && v.abs()
-                        <= (zerocal_core::log::MAX_JOINT_DEG as f32).to_radians() * 1.000_001,
+                        <= (zerocal_procedure::log::MAX_JOINT_DEG as f32).to_radians() * 1.000_001,
                 "{q:?}"
             );
         }

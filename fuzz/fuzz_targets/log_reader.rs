@@ -8,9 +8,11 @@ use std::cell::Cell;
 
 use libfuzzer_sys::fuzz_target;
 use zerocal_cli::log::parse_number;
-use zerocal_core::log::{parse_meta, strip_bom, LogError, LogLine, LogReader, MetaItem, MetaKeys};
 use zerocal_core::stage2::PoseReading;
 use zerocal_fuzz::{close, same_number};
+use zerocal_procedure::log::{
+    parse_meta, strip_bom, LogError, LogLine, LogReader, MetaItem, MetaKeys,
+};
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = core::str::from_utf8(data) else {

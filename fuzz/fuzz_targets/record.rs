@@ -8,12 +8,12 @@
 #![no_main]
 use arbitrary::{Arbitrary, Unstructured};
 use libfuzzer_sys::fuzz_target;
-use zerocal_core::link::status;
-use zerocal_core::log::{export, MAX_JOINT_DEG, MAX_READING_DEG, TEMPERATURE_RANGE_C};
-use zerocal_core::procedure::record::{Record, MAX_RECORD_LEN};
-use zerocal_core::procedure::{PendantProfile, ProcedureState};
 use zerocal_core::stage2::PoseReading;
 use zerocal_pendant::config::procedure_config;
+use zerocal_procedure::link::status;
+use zerocal_procedure::log::{export, MAX_JOINT_DEG, MAX_READING_DEG, TEMPERATURE_RANGE_C};
+use zerocal_procedure::record::{Record, MAX_RECORD_LEN};
+use zerocal_procedure::{PendantProfile, ProcedureState};
 
 #[derive(Arbitrary, Debug)]
 struct Stored {
@@ -130,13 +130,13 @@ fuzz_target!(|data: &[u8]| {
     });
     if all_in_bounds && sigmas_valid {
         status_lines.push(
-            zerocal_core::link::pendant_status(0, 0)
+            zerocal_procedure::link::pendant_status(0, 0)
                 .expect("fits")
                 .as_str()
                 .to_owned(),
         );
         let lines: Vec<&str> = status_lines.iter().map(String::as_str).collect();
-        if let Err(e) = zerocal_core::link::parse_status(&lines) {
+        if let Err(e) = zerocal_procedure::link::parse_status(&lines) {
             panic!("the desktop refuses the status: {e}\n{lines:#?}");
         }
     }

@@ -1,16 +1,15 @@
 //! SCL3300 frames: any 32-bit MISO word decodes or is refused, and a decoded frame
-//! re-encodes to itself (CRC included); the drivers (core's blocking one and the
-//! firmware's async one, `zerocal_pendant::sensor`) on a bus whose answers the fuzzer
+//! re-encodes to itself (CRC included); the one driver (`zerocal-scl3300`'s, which the
+//! pendant awaits; here through its blocking adapter) on a bus whose answers the fuzzer
 //! chooses: well-formed echoes, foreign op codes, raw words, bus errors. Every outcome
 //! is a reading within ±180° or an error, never a panic or a hang.
 #![no_main]
 use arbitrary::Unstructured;
-use embassy_time::Instant;
 use libfuzzer_sys::fuzz_target;
-use zerocal_core::scl3300::protocol::{crc8, Response};
-use zerocal_core::scl3300::{angle_rad, temperature_celsius, Mode, Scl3300};
 use zerocal_fuzz::{FuzzSensor, NoDelay};
-use zerocal_pendant::host::exec;
+use zerocal_scl3300::blocking::BlockingScl3300 as Scl3300;
+use zerocal_scl3300::protocol::{crc8, Response};
+use zerocal_scl3300::{angle_rad, temperature_celsius, Mode};
 
 fuzz_target!(|data: &[u8]| {
     let mut u = Unstructured::new(data);
@@ -28,34 +27,14 @@ fuzz_target!(|data: &[u8]| {
             Err(_) => assert!(frame == 0 || frame == u32::MAX || crc8(frame) != frame as u8),
         }
     }
-    let which = u.arbitrary::<u8>().unwrap_or(0);
-    let bus = FuzzSensor::new(&mut u);
-    if which % 2 == 0 {
-        // core's blocking driver.
-        let mut sensor = Scl3300::new(bus, NoDelay, Mode::Inclination);
-        let _ = sensor.start_up();
-        for _ in 0..32 {
-            if let Ok(tilt) = sensor.read_inclination() {
-                assert!(
-                    tilt.x_rad.abs() <= core::f32::consts::PI
-                        && tilt.y_rad.abs() <= core::f32::consts::PI
-                );
-            }
-            let _ = sensor.read_temperature_celsius();
+    // The one driver (the pendant's), through the blocking adapter.
+    let mut sensor = Scl3300::new(FuzzSensor::new(&mut u), NoDelay, Mode::Inclination);
+    let _ = sensor.start_up();
+    for _ in 0..32 {
+        if let Ok(sample) = sensor.read() {
+            let (x_rad, y_rad) = sample.angles_rad();
+            assert!(x_rad.abs() <= core::f32::consts::PI && y_rad.abs() <= core::f32::consts::PI);
+            assert!(sample.temperature_celsius().is_finite());
         }
-    } else {
-        // The firmware's async driver, on the simulated clock.
-        exec::reset_clock();
-        let run = exec::run(
-            async {
-                let mut sensor = zerocal_pendant::sensor::Scl3300::new(bus);
-                let _ = sensor.start_up().await;
-                for _ in 0..32 {
-                    let _ = sensor.read().await;
-                }
-            },
-            Instant::from_secs(60),
-        );
-        assert_eq!(run, Ok(()));
     }
 });

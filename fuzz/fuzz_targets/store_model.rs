@@ -9,9 +9,9 @@ use std::collections::BTreeMap;
 use arbitrary::{Arbitrary, Unstructured};
 use embassy_futures::block_on;
 use libfuzzer_sys::fuzz_target;
-use zerocal_core::procedure::record::{Record, FORMAT, MAX_RECORD_LEN};
 use zerocal_fuzz::RamFlash;
 use zerocal_pendant::store::{Restored, Store};
+use zerocal_procedure::record::{Record, FORMAT, MAX_RECORD_LEN};
 
 const PAGE: usize = 2048;
 const PAGES: usize = 4;

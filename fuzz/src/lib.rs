@@ -12,7 +12,7 @@ use arbitrary::{Arbitrary, Unstructured};
 use embedded_storage_async::nor_flash::{
     ErrorType, NorFlash, NorFlashError, NorFlashErrorKind, ReadNorFlash,
 };
-use zerocal_core::scl3300::protocol::{Response, ReturnStatus};
+use zerocal_scl3300::protocol::{Response, ReturnStatus};
 
 /// A NOR flash in RAM: programming only clears bits, erase sets a page to `0xFF`, and
 /// the power can go before any operation (every later one then fails, the bytes
@@ -264,24 +264,6 @@ impl embedded_hal::spi::SpiDevice for FuzzSensor {
             match operation {
                 embedded_hal::spi::Operation::TransferInPlace(buffer) => self.frame(buffer)?,
                 embedded_hal::spi::Operation::DelayNs(_) => {}
-                _ => return Err(BusError),
-            }
-        }
-        Ok(())
-    }
-}
-
-impl embedded_hal_async::spi::SpiDevice for FuzzSensor {
-    async fn transaction(
-        &mut self,
-        operations: &mut [embedded_hal_async::spi::Operation<'_, u8>],
-    ) -> Result<(), BusError> {
-        for operation in operations {
-            match operation {
-                embedded_hal_async::spi::Operation::TransferInPlace(buffer) => {
-                    self.frame(buffer)?
-                }
-                embedded_hal_async::spi::Operation::DelayNs(_) => {}
                 _ => return Err(BusError),
             }
         }

@@ -8,10 +8,10 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use zerocal_core::model::Tilt;
-use zerocal_core::procedure::{Approach, Event, Notice, Phase};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::SessionError;
 use zerocal_core::{FitResult, Real};
+use zerocal_procedure::{Approach, Event, Notice, Phase};
 use zerocal_sim::pendant::{Mount, SimPendant};
 use zerocal_sim::scenario::{self, pendant, HOLD_MS};
 use zerocal_sim::scl3300_device::Fault;
@@ -211,7 +211,7 @@ fn power_cut_at_any_moment_loses_nothing() {
     p.power_cycle();
     assert_eq!(p.session.last_result(), Some(&last), "last result survives");
     let status = (0..6)
-        .filter_map(|i| zerocal_core::link::status(&p.session, i))
+        .filter_map(|i| zerocal_procedure::link::status(&p.session, i))
         .map(|l| l.expect("fits").to_string())
         .collect::<Vec<_>>()
         .join("\n");

@@ -1,4 +1,5 @@
-//! The SCL3300 driver of `zerocal-core` against the simulated device: readings in the
+//! The one SCL3300 driver (`zerocal-scl3300`, through its blocking adapter) against the
+//! simulated device: readings in the
 //! `axis` convention to one count, negative angles, and every injected fault refused
 //! with its named error, never a panic and never a reading.
 
@@ -8,7 +9,8 @@
 use core::convert::Infallible;
 
 use embedded_hal::delay::DelayNs;
-use zerocal_core::scl3300::{Error, Mode, Scl3300, StatusFlags, ANGLE_LSB_RAD};
+use zerocal_scl3300::blocking::BlockingScl3300 as Scl3300;
+use zerocal_scl3300::{Error, Mode, StatusFlags, ANGLE_LSB_RAD};
 use zerocal_sim::scl3300_device::{
     angle_to_register, Fault, Scl3300Device, STATUS_DIGI1, STATUS_SAT,
 };
@@ -46,8 +48,9 @@ fn with_device(driver: Driver, change: impl FnOnce(&mut Scl3300Device)) -> Drive
 
 fn read(driver: &mut Driver) -> Result<(f64, f64), Error<Infallible>> {
     driver
-        .read_inclination()
-        .map(|tilt| (f64::from(tilt.x_rad), f64::from(tilt.y_rad)))
+        .read()
+        .map(|sample| sample.angles_rad())
+        .map(|(x_rad, y_rad)| (f64::from(x_rad), f64::from(y_rad)))
 }
 
 /// Reference reading in the `axis` convention, quantised as the chip does, from an
@@ -163,7 +166,7 @@ fn the_pipeline_answers_each_register_with_its_own_value() {
 fn temperature_reads() {
     let mut driver = started_driver(Scl3300Device::new());
     driver = with_device(driver, |device| device.set_temperature_celsius(31.5));
-    let celsius = driver.read_temperature_celsius().expect("temperature");
+    let celsius = driver.read().expect("temperature").temperature_celsius();
     assert!((celsius - 31.5).abs() < 0.1, "{celsius}");
 }
 

@@ -21,7 +21,7 @@ use embassy_sync::channel::Channel;
 use embassy_sync::mutex::Mutex;
 use embassy_sync::signal::Signal;
 use zerocal_core::plan::PoseList;
-use zerocal_core::procedure::{PendantProfile, ProcedureConfig, ProcedureState};
+use zerocal_procedure::{PendantProfile, ProcedureConfig, ProcedureState};
 
 use crate::buttons::ButtonEvent;
 use crate::screen::Screen;

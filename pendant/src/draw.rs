@@ -16,9 +16,9 @@ use embedded_graphics::primitives::Rectangle;
 use heapless::String;
 use zerocal_core::decimal::Fixed;
 use zerocal_core::error::{FitError, StageError};
-use zerocal_core::procedure::{Approach, Notice, MAX_PLAN_POSES};
 use zerocal_core::report::Warning;
 use zerocal_core::session::SessionError;
+use zerocal_procedure::{Approach, Notice, MAX_PLAN_POSES};
 
 use crate::screen::{
     CaptureScreen, FitSummary, Offset, Prompt, Refusal, RestartCause, ResultScreen, Screen, Settle,

@@ -27,18 +27,18 @@ use embassy_time::{with_timeout, Duration, Ticker};
 use embedded_io_async::{Read, Write};
 use heapless::Vec;
 use zerocal_core::decimal::Fixed;
-use zerocal_core::link::{
+use zerocal_procedure::link::{
     parse_command, pendant_status, plan_line, plan_stored, profile_stored, status, Command, Line,
     PlanUpload, UploadStep, ERASED, HELP, NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
 };
-use zerocal_core::log::export;
-use zerocal_core::procedure::profile::{ProfileStep, ProfileUpload};
+use zerocal_procedure::log::export;
+use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
 
 use crate::channels::{LinkReply, LinkRequest, Shared};
 
 /// Longest command line; longer lines are refused whole (core's, which the desktop
 /// writes to).
-pub const MAX_LINE: usize = zerocal_core::link::MAX_COMMAND_BYTES;
+pub const MAX_LINE: usize = zerocal_procedure::link::MAX_COMMAND_BYTES;
 
 /// A host that takes no bytes for this long is gone.
 pub const WRITE_TIMEOUT: Duration = Duration::from_secs(2);

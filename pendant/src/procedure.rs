@@ -16,10 +16,10 @@ use embassy_time::{Duration, Instant, Timer};
 use embedded_storage_async::nor_flash::NorFlash;
 use zerocal_core::model::Tilt;
 use zerocal_core::plan::PoseList;
-use zerocal_core::procedure::{
+use zerocal_procedure::stillness::Stillness;
+use zerocal_procedure::{
     step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot,
 };
-use zerocal_core::stillness::Stillness;
 
 use crate::buttons::{Button, ButtonEvent, Press};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
@@ -344,7 +344,7 @@ fn watch_stillness(p: &mut Presentation, session: &ProcedureState<f32>) -> bool 
 /// Writes `records`; false if the store is missing or a write failed.
 async fn persist<F: NorFlash>(
     store: &mut Option<Store<F>>,
-    records: &[zerocal_core::procedure::Record<f32>],
+    records: &[zerocal_procedure::Record<f32>],
 ) -> bool {
     match store {
         Some(store) => store.write(records).await.is_ok(),

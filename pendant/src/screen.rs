@@ -9,14 +9,12 @@
 //! picture per kind, and the README's gallery is those pictures.
 
 use zerocal_core::model::WRIST_JOINTS;
-use zerocal_core::procedure::profile::JointName;
-use zerocal_core::procedure::{
-    Approach, ControllerDisplay, Notice, Outcome, Phase, RobotName, View,
-};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::report::{Warning, MAX_WARNINGS};
 use zerocal_core::session::{SessionError, SESSION_JOINTS};
-use zerocal_core::stillness::Stillness;
+use zerocal_procedure::profile::JointName;
+use zerocal_procedure::stillness::Stillness;
+use zerocal_procedure::{Approach, ControllerDisplay, Notice, Outcome, Phase, RobotName, View};
 
 use crate::sensor::SensorFault;
 use crate::store::ResetReason;

@@ -42,7 +42,7 @@ use sequential_storage::cache::page_pointers::ArrayPagePointers;
 use sequential_storage::cache::page_states::ArrayPageStates;
 use sequential_storage::cache::{Cache, Uncached};
 use sequential_storage::map::{MapConfig, MapStorage};
-use zerocal_core::procedure::record::{Record, RecordError, FORMAT, MAX_RECORD_LEN};
+use zerocal_procedure::record::{Record, RecordError, FORMAT, MAX_RECORD_LEN};
 
 /// The key of the format marker.
 pub const FORMAT_KEY: u16 = 0;
@@ -109,7 +109,7 @@ impl<E> From<sequential_storage::Error<E>> for StoreError {
     }
 }
 
-pub use zerocal_core::procedure::record::STORED_KEYS;
+pub use zerocal_procedure::record::STORED_KEYS;
 
 /// The newest record of each key, as read at power-up.
 pub struct Restored {
@@ -129,7 +129,7 @@ impl Default for Restored {
 impl Restored {
     /// The slot of `key`, if it is one of core's.
     fn slot(key_value: u16) -> Option<usize> {
-        zerocal_core::procedure::record::key_index(key_value)
+        zerocal_procedure::record::key_index(key_value)
     }
 
     /// The records, one per key.
@@ -714,7 +714,7 @@ mod tests {
     #[test]
     fn every_core_key_has_its_own_slot() {
         let mut seen = [false; STORED_KEYS];
-        for k in zerocal_core::procedure::record::all_keys() {
+        for k in zerocal_procedure::record::all_keys() {
             let slot = Restored::slot(k).unwrap();
             assert!(!seen[slot], "key {k:#x}");
             seen[slot] = true;

@@ -3,11 +3,11 @@
 //! the ones `cargo xtask pendant-sim` prints.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use zerocal_core::log::{LogLine, LogReader};
 use zerocal_pendant::host::flash::CutPoint;
 use zerocal_pendant::host::runner::{self, StoreContents};
 use zerocal_pendant::host::world::WorldConfig;
 use zerocal_pendant::screen::ScreenKind;
+use zerocal_procedure::log::{LogLine, LogReader};
 use zerocal_sim::scl3300_device::{Fault, STATUS_SAT};
 
 #[test]

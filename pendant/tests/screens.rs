@@ -7,13 +7,13 @@
 use std::path::PathBuf;
 
 use zerocal_core::model::JOINTS;
-use zerocal_core::procedure::profile::{JointName, ProfileStep, ProfileUpload};
-use zerocal_core::procedure::{Approach, ControllerDisplay, Notice, PendantProfile, RobotName};
 use zerocal_core::session::SESSION_JOINTS;
 use zerocal_pendant::draw::{lines, POSES_BY_PROGRAM};
 use zerocal_pendant::screen::{
     controller_offsets, CaptureScreen, FitSummary, Prompt, ResultScreen, Screen, Settle,
 };
+use zerocal_procedure::profile::{JointName, ProfileStep, ProfileUpload};
+use zerocal_procedure::{Approach, ControllerDisplay, Notice, PendantProfile, RobotName};
 use zerocal_profile::Profile;
 
 /// Δθ2..Δθ6 (deg) of the pendant-sim's seed-1 session (README), and their 1σ.

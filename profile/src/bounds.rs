@@ -32,8 +32,8 @@ pub const MAX_TEXT_CHARS: usize = 1000;
 pub const MAX_LIST_ITEMS: usize = 64;
 
 /// Joint limits, zeros and stage-1 angles within ± this (deg): two turns either way,
-/// as core's log takes joint commands (`zerocal_core::log::MAX_JOINT_DEG`).
-pub const MAX_JOINT_DEG: f64 = zerocal_core::log::MAX_JOINT_DEG;
+/// as core's log takes joint commands (`zerocal_procedure::log::MAX_JOINT_DEG`).
+pub const MAX_JOINT_DEG: f64 = zerocal_procedure::log::MAX_JOINT_DEG;
 
 /// Joint speeds (deg/s): below 0.1 a joint barely moves in a session; above 10,000 a
 /// radian-per-second figure was probably taken for degrees twice over.

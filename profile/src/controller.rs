@@ -7,7 +7,7 @@
 //! (`Δq·gear ratio`) or encoder counts (`Δq·counts per degree`).
 
 use zerocal_core::model::JOINTS;
-use zerocal_core::procedure::profile::{ControllerDisplay, JointName};
+use zerocal_procedure::profile::{ControllerDisplay, JointName};
 
 /// The joint coupling of the controller's display.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

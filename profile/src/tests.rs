@@ -124,7 +124,7 @@ fn every_builtin_fits_the_bounds() {
             text.len()
         );
     }
-    let robot = zerocal_core::procedure::RobotName::new();
+    let robot = zerocal_procedure::RobotName::new();
     assert_eq!(robot.capacity(), bounds::MAX_NAME_BYTES);
 }
 

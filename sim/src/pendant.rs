@@ -15,11 +15,10 @@ use rand_distr::{Distribution, Normal};
 use std::collections::BTreeMap;
 use zerocal_core::model::{rot_z, Convention, Tilt, JOINTS};
 use zerocal_core::plan::PoseList;
-use zerocal_core::procedure::{
-    self, record, Event, Output, ProcedureConfig, ProcedureState, Record,
-};
-use zerocal_core::scl3300::{Mode, Scl3300};
 use zerocal_core::Real;
+use zerocal_procedure::{self, record, Event, Output, ProcedureConfig, ProcedureState, Record};
+use zerocal_scl3300::blocking::BlockingScl3300 as Scl3300;
+use zerocal_scl3300::Mode;
 
 /// A delay that returns at once: the simulated device needs no time.
 #[derive(Clone, Copy, Debug, Default)]
@@ -113,7 +112,7 @@ impl<T: Real> SimPendant<T> {
             rng: ChaCha8Rng::seed_from_u64(seed),
         };
         // The firmware persists its plan before the first screen.
-        let out = procedure::step(&p.config, &mut p.session, Event::SetPlan(plan));
+        let out = zerocal_procedure::step(&p.config, &mut p.session, Event::SetPlan(plan));
         p.persist(&out);
         p
     }
@@ -156,10 +155,13 @@ impl<T: Real> SimPendant<T> {
             t.y_rad + self.bias.y_rad + n(),
         );
         self.with_device(|d| d.set_axis_angles_rad(x, y));
-        match self.driver.read_inclination() {
-            Ok(r) => Event::Sample {
+        match self.driver.read() {
+            Ok(sample) => Event::Sample {
                 t_ms: self.t_ms,
-                reading: Tilt::new(T::lit(f64::from(r.x_rad)), T::lit(f64::from(r.y_rad))),
+                reading: {
+                    let (x_rad, y_rad) = sample.angles_rad();
+                    Tilt::new(T::lit(f64::from(x_rad)), T::lit(f64::from(y_rad)))
+                },
                 temperature_c: None,
             },
             Err(_) => {
@@ -181,7 +183,7 @@ impl<T: Real> SimPendant<T> {
 
     /// Feeds one event to the procedure and persists what it asks.
     pub fn event(&mut self, e: Event<T>) {
-        let out = procedure::step(&self.config, &mut self.session, e);
+        let out = zerocal_procedure::step(&self.config, &mut self.session, e);
         self.persist(&out);
     }
 

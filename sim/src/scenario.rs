@@ -5,10 +5,10 @@ use crate::pendant::{Mount, SimPendant};
 use crate::SimRobot;
 use zerocal_core::model::{rot_x, rot_y, Convention, SensorModel, Tilt};
 use zerocal_core::plan::{plan, Candidate, PlanConfig, PlanError, PoseList};
-use zerocal_core::procedure::{Approach, Event, Phase, ProcedureConfig};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::stage2::Stage2Model;
 use zerocal_core::Real;
+use zerocal_procedure::{Approach, Event, Phase, ProcedureConfig};
 
 /// Per-sample noise of the simulated SCL3300 (deg, 1σ): ~0.001°/√Hz over its 10 Hz
 /// band in inclination mode.

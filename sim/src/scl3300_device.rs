@@ -1,12 +1,12 @@
 //! A simulated Murata SCL3300 on the SPI bus, for testing the driver in
-//! `zerocal_core::scl3300` without hardware.
+//! `zerocal_scl3300` without hardware.
 //!
 //! It speaks the real protocol: 32-bit frames with the CRC-8 computed here bit by bit
 //! as the datasheet writes it (independently of the driver's byte-wise version), the
 //! off-frame pipeline (each response answers the previous command), return status
 //! bits, latched STATUS flags cleared by reading STATUS, WHOAMI. The angle registers
 //! come from an up vector in the pendant's frame through the mounting documented in
-//! `zerocal_core::scl3300` (pendant x = chip −Y, y = chip X, z = chip Z), so a test
+//! `zerocal_scl3300` (pendant x = chip −Y, y = chip X, z = chip Z), so a test
 //! states orientations in docs/method.md's `axis` convention.
 //!
 //! Faults are injected with [`Fault`]; each affects the responses from the next frame

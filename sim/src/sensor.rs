@@ -10,7 +10,7 @@
 //! the acceleration: both reach the angles through the arctangent, not as a constant
 //! added to the angle. This module models the chip, independently of core's model of
 //! it: it shares only the pendant's mounting of the chip (pendant x = chip −Y, y = chip
-//! X, z = chip Z, `zerocal_core::scl3300`) and the `axis` reading convention.
+//! X, z = chip Z, `zerocal_scl3300`) and the `axis` reading convention.
 //!
 //! Every figure is in [`Scl3300Spec::DATASHEET`] with its source; the table in the
 //! README and `docs/error-budget.md` is this one.

@@ -417,7 +417,7 @@ impl RealSession {
                 self.closing.temperature_c
             )
         );
-        let _ = writeln!(out, "{}", zerocal_core::log::LOG_HEADER);
+        let _ = writeln!(out, "{}", zerocal_procedure::log::LOG_HEADER);
         for p in &self.poses {
             let joints: Vec<String> = p.joints_rad.iter().map(|q| d(*q)).collect();
             let _ = writeln!(

@@ -52,8 +52,9 @@ enum Command {
     /// A release bundle in target/dist/zerocal-VERSION/ (and .tar.gz): the firmware ELF
     /// and DFU image, the `zerocal` release binary, README.md, docs/ and SHA256SUMS.
     Dist,
-    /// Build zerocal-core alone for thumbv7em-none-eabihf, without features and with
-    /// `defmt,serde`: proves it is no_std (a host build cannot, std being always there).
+    /// Build each no_std crate (zerocal-core, zerocal-procedure, zerocal-scl3300) alone
+    /// for thumbv7em-none-eabihf, without features and with its optional derives: proves
+    /// each is no_std (a host build cannot, std being always there).
     CoreThumb,
     /// Run zerocal-core on the pendant's CPU in QEMU (target-test/, netduinoplus2):
     /// stages 0-2 in f32 on seeded simulated sessions, compared with the host's f64
@@ -214,33 +215,50 @@ fn build_firmware(root: &Path, choice: ToolchainChoice) -> Result<FirmwareBuild>
     })
 }
 
+/// The no_std crates and the feature sets each is proved with: as the firmware takes it,
+/// and with every optional derive.
+const NO_STD_CRATES: [(&str, &str, [Option<&str>; 2]); 3] = [
+    ("zerocal-core", "core", [None, Some("defmt,serde")]),
+    (
+        "zerocal-procedure",
+        "procedure",
+        [None, Some("defmt,serde")],
+    ),
+    (
+        "zerocal-scl3300",
+        "scl3300",
+        [Some("driver"), Some("defmt")],
+    ),
+];
+
 fn core_thumb(choice: ToolchainChoice) -> Result<()> {
     let root = repo_root();
     let tools = toolchain::provision(toolchain::Needs::THUMB, choice)?;
     let toolchain = tools.thumb()?;
-    // Only zerocal-core is selected, so no other member's features (std) unify into
-    // it; its own target dir keeps the host build's cache intact. Built as the firmware
-    // takes it (no features) and with its optional `defmt` and `serde` derives.
-    let manifest = root.join("core").join("Cargo.toml");
+    // One crate selected at a time, so no other member's features (std) unify into it;
+    // its own target dir keeps the host build's cache intact.
     let target_dir = root.join("target").join("thumb");
-    for features in [None, Some("defmt,serde")] {
-        let mut args = vec![
-            "--manifest-path",
-            path_str(&manifest)?,
-            "--target",
-            toolchain::THUMB_TARGET,
-            "--target-dir",
-            path_str(&target_dir)?,
-        ];
-        if let Some(f) = features {
-            args.extend(["--features", f]);
+    for (name, dir, feature_sets) in NO_STD_CRATES {
+        let manifest = root.join(dir).join("Cargo.toml");
+        for features in feature_sets {
+            let mut args = vec![
+                "--manifest-path",
+                path_str(&manifest)?,
+                "--target",
+                toolchain::THUMB_TARGET,
+                "--target-dir",
+                path_str(&target_dir)?,
+            ];
+            if let Some(f) = features {
+                args.extend(["--features", f]);
+            }
+            toolchain.cargo_build(&root, &args)?;
+            println!(
+                "{name} builds for {} (no_std), features: {}",
+                toolchain::THUMB_TARGET,
+                features.unwrap_or("none")
+            );
         }
-        toolchain.cargo_build(&root, &args)?;
-        println!(
-            "zerocal-core builds for {} (no_std), features: {}",
-            toolchain::THUMB_TARGET,
-            features.unwrap_or("none")
-        );
     }
     Ok(())
 }

@@ -41,9 +41,9 @@ use clap::{Args, Parser};
 use std::fmt;
 use std::path::{Path, PathBuf};
 use zerocal_core::model::JOINTS;
-use zerocal_core::plan::time::Mounting;
-use zerocal_core::plan::time::SessionTime;
 use zerocal_core::stage2::MEMS_RANGE_DEG;
+use zerocal_procedure::robot_time::Mounting;
+use zerocal_procedure::robot_time::SessionTime;
 use zerocal_profile::{Family, OffsetUnit, Profile};
 
 /// A controller family's program format.

@@ -30,7 +30,6 @@
 
 mod design;
 mod random;
-pub mod time;
 
 pub use design::Candidate;
 pub use random::Xorshift64Star;

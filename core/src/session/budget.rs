@@ -82,11 +82,10 @@ impl BudgetTerm {
 /// Terms in a budget.
 pub const BUDGET_TERMS: usize = 9;
 
-/// The SCL3300's offset specification on X (g, ±): ±20 mg, "including calibration
-/// error, temperature, supply voltage and drift over lifetime" (SCL3300 table quoted
-/// second-hand; the sister part SCA3300's data sheet, Doc. 3165 Rev. 3, Table 2 footnote
-/// A, first-hand). X is the axis stage 0 measures and stage 1 cannot separate from Δθ2.
-pub const SENSOR_OFFSET_X_SPEC_G: f64 = 0.020;
+/// The SCL3300's offset specification on X (g, ±), the chip crate's
+/// [`zerocal_scl3300::spec::OFFSET_X_SPEC_G`]. X is the axis stage 0 measures and stage 1
+/// cannot separate from Δθ2.
+pub const SENSOR_OFFSET_X_SPEC_G: f64 = zerocal_scl3300::spec::OFFSET_X_SPEC_G;
 
 /// [`SENSOR_OFFSET_X_SPEC_G`] as an angle at level (deg): asin(0.020) = 1.146°.
 pub fn sensor_offset_x_spec_deg() -> f64 {

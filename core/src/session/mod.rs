@@ -17,11 +17,11 @@ pub use budget::{
     DEFAULT_REPEATABILITY_DEG, SENSOR_OFFSET_X_SPEC_G,
 };
 
+use crate::capture::Approach;
 use crate::decimal::Fixed;
 use crate::error::{FitError, StageError};
 use crate::model::{Arm, Convention, Gain, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
 use crate::plan::MAX_POSES;
-use crate::procedure::Approach;
 use crate::real::Real;
 use crate::stage0::{BiasOverTemperature, ClosingReversal, Reversal};
 use crate::stage1::{AxisOneTurn, Stage1Result};
@@ -586,10 +586,10 @@ pub fn one_sided_pose<T: Real>(
 }
 
 /// How far a stage-2 capture's joint 2 may lie from stage 1's (deg): the tolerance the
-/// pendant already holds a plan's joints 1-2 to against stage 1's
-/// ([`crate::link::STAGE1_JOINT_TOLERANCE_DEG`]); 5× below the 0.005° aimed at, so a
+/// pendant also holds a plan's joints 1-2 to against stage 1's (the link's 3 decimals,
+/// and an `f32` of a few hundred degrees); 5× below the 0.005° aimed at, so a
 /// difference within it moves no offset by anything that matters.
-pub const STAGE1_JOINT2_TOLERANCE_DEG: f64 = crate::link::STAGE1_JOINT_TOLERANCE_DEG;
+pub const STAGE1_JOINT2_TOLERANCE_DEG: f64 = 1e-3;
 
 /// The first stage-2 capture whose joint 2 differs from stage 1's by more than
 /// [`STAGE1_JOINT2_TOLERANCE_DEG`]. Stage 2 runs with joint 2 where stage 1 had it, and

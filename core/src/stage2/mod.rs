@@ -113,7 +113,7 @@ pub const MEMS_CAPTURE_NOISE_DEG: f64 = 0.0008;
 
 /// Mode 4's specified range (deg): the SCL3300 in its low-noise inclination mode is
 /// specified within about ±10° of level (Doc. 4921 §2.11.1, docs/error-budget.md).
-pub const MEMS_RANGE_DEG: f64 = 10.0;
+pub const MEMS_RANGE_DEG: f64 = zerocal_scl3300::spec::MODE4_RANGE_DEG;
 
 /// The residual RMS a session with a MEMS sensor refuses above (deg). Over 200 simulated
 /// sessions on each of four robots with every error source on, the largest residual RMS

@@ -21,7 +21,7 @@ use embassy_futures::join::join5;
 use embassy_futures::select::{select, Either};
 use embassy_time::Instant;
 use zerocal_core::plan::{Candidate, DEFAULT_POOL};
-use zerocal_core::procedure::pendant_default;
+use zerocal_procedure::pendant_default;
 
 use crate::channels::Shared;
 use crate::config::procedure_config;

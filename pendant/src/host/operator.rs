@@ -15,7 +15,7 @@ use super::world::Place;
 use super::Rig;
 use crate::buttons::Button;
 use crate::screen::{Prompt, Screen};
-use zerocal_core::procedure::Approach;
+use zerocal_procedure::Approach;
 
 /// How often the operator looks at the screen (ms).
 pub const LOOK_MS: u64 = 100;

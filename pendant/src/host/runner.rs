@@ -8,9 +8,9 @@ use std::rc::Rc;
 use embassy_time::{Duration, Instant, Timer};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::procedure::{Approach, Phase, ProcedureState};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::SESSION_JOINTS;
+use zerocal_procedure::{Approach, Phase, ProcedureState};
 use zerocal_sim::scl3300_device::Fault;
 
 use super::exec::{self, Stop};

@@ -7,9 +7,29 @@
 //! window (see [`StillnessFilter::reset`]). Each sample may carry the sensor's
 //! temperature; a still window gives its mean too, stored with the capture.
 
-use crate::model::Tilt;
-use crate::real::{deg_to_rad, Real};
 use heapless::Deque;
+use zerocal_core::model::Tilt;
+use zerocal_core::real::{deg_to_rad, Real};
+
+/// The pendant's sensor period (ms): the SCL3300 is read at 20 Hz. Successive outputs of
+/// its 10 Hz first-order filter 50 ms apart correlate only exp(−50/15.9) ≈ 0.04, so a
+/// [`STILL_WINDOW_MS`] window averages ~40 nearly independent samples (the method's
+/// `MEMS_CAPTURE_NOISE_DEG` assumes them).
+pub const SAMPLE_PERIOD_MS: u32 = 50;
+
+/// How long the readings must stay still before a capture (ms).
+pub const STILL_WINDOW_MS: u32 = 2000;
+
+/// The largest spread within the still window, per axis (deg). The SCL3300 in
+/// inclination mode: ~0.001°/√Hz over its 10 Hz band is ~0.003-0.004° RMS per sample,
+/// quantised to 0.0055°; 40 samples span ~4.5σ + 1 LSB ≈ 0.025°. Twice that keeps a
+/// still pendant still, while a robot creeping at 0.05°/s (0.1° per window) is still
+/// seen moving.
+pub const MAX_PEAK_TO_PEAK_DEG: f64 = 0.05;
+
+/// How far the reading must move from the last capture to arm the next one without an
+/// OK (deg, either axis).
+pub const REARM_MOTION_DEG: f64 = 0.2;
 
 /// Samples the window can hold: 2 s at up to 64 Hz.
 pub const WINDOW_CAPACITY: usize = 128;
@@ -26,12 +46,8 @@ pub struct StillnessConfig<T> {
 impl<T: Real> Default for StillnessConfig<T> {
     fn default() -> Self {
         StillnessConfig {
-            window_ms: 2000,
-            // The SCL3300 in inclination mode: ~0.001°/√Hz over its 10 Hz band is
-            // ~0.003-0.004° RMS per sample, quantised to 0.0055°; 40 samples span
-            // ~4.5σ + 1 LSB ≈ 0.025°. Twice that keeps a still pendant still, while a
-            // robot creeping at 0.05°/s (0.1° per window) is still seen moving.
-            max_peak_to_peak_rad: deg_to_rad(T::lit(0.05)),
+            window_ms: STILL_WINDOW_MS,
+            max_peak_to_peak_rad: deg_to_rad(T::lit(MAX_PEAK_TO_PEAK_DEG)),
         }
     }
 }

@@ -3,7 +3,7 @@
 //!
 //! `step(&config, &mut state, event)` is the whole logic: the firmware feeds it events
 //! and does what the returned [`Output`] says (persist records), and draws
-//! [`ProcedureState::view`]. The numbers come from [`crate::session`]. Nothing here waits, allocates or touches hardware, so whole
+//! [`ProcedureState::view`]. The numbers come from [`zerocal_core::session`]. Nothing here waits, allocates or touches hardware, so whole
 //! sessions run in host tests.
 //!
 //! The captures, in order (docs/error-budget.md says why each is there):
@@ -32,18 +32,20 @@ pub mod profile;
 pub mod record;
 mod state;
 
-use crate::error::StageError;
-use crate::model::{Arm, BaseTilt, Convention, SensorModel, Tilt, TiltAxis, JOINTS, WRIST_JOINTS};
-use crate::plan::{plan, Candidate, PlanConfig, PlanError, PoseList, MAX_POSES};
-use crate::real::{deg_to_rad, Real};
-use crate::report::Verdict;
-use crate::session::{SessionError, SessionSolution};
-use crate::stage1::Stage1Result;
-use crate::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessConfig};
 pub use profile::{ControllerDisplay, ControllerOffset, PendantProfile};
 pub use record::{Record, RecordError};
 pub use state::{ProcedureState, View};
+use zerocal_core::error::StageError;
+use zerocal_core::model::{
+    Arm, BaseTilt, Convention, SensorModel, Tilt, TiltAxis, JOINTS, WRIST_JOINTS,
+};
+use zerocal_core::plan::{plan, Candidate, PlanConfig, PlanError, PoseList, MAX_POSES};
+use zerocal_core::real::{deg_to_rad, Real};
+use zerocal_core::report::Verdict;
+use zerocal_core::session::{SessionError, SessionSolution};
+use zerocal_core::stage1::Stage1Result;
+use zerocal_core::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
 
 /// A robot profile's name as the pendant keeps it (`zerocal robots` lists them).
 pub type RobotName = heapless::String<32>;
@@ -85,7 +87,7 @@ impl<T: Real> Default for ProcedureConfig<T> {
             stillness: StillnessConfig::default(),
             // Four times the stillness threshold: a robot going to a new pose moves the
             // reading by degrees, noise never by a fifth of one.
-            rearm_motion_rad: deg_to_rad(T::lit(0.2)),
+            rearm_motion_rad: deg_to_rad(T::lit(crate::stillness::REARM_MOTION_DEG)),
             stage1_joints_rad: [T::zero(); JOINTS],
             fit: FitConfig::default(),
             display: ControllerDisplay::default(),
@@ -201,28 +203,7 @@ impl Phase {
     }
 }
 
-/// The side every joint arrives from before a capture: the two captures of a pose sit
-/// on the two sides of each gear's backlash, and their mean in its middle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum Approach {
-    /// Every joint arriving moving positive.
-    FromBelow,
-    /// Every joint arriving moving negative (after going past the pose).
-    FromAbove,
-}
-
-impl Approach {
-    /// The approach of capture `index` of a pose or stage-1 reading (0 below, 1 above).
-    pub fn of(index: usize) -> Self {
-        if index.is_multiple_of(2) {
-            Approach::FromBelow
-        } else {
-            Approach::FromAbove
-        }
-    }
-}
+pub use zerocal_core::capture::Approach;
 
 /// A capture of stages 0 and 1 or of the closing reversal: the stillness window's mean
 /// reading and temperature.
@@ -601,7 +582,7 @@ fn on_sample<T: Real>(
     if let Some(axis) = mean.axis_beyond(config.fit.sensor_range_rad) {
         s.notice = Some(Notice::ReadingOutOfRange {
             axis,
-            value_deg: crate::real::rad_to_deg(mean.get(axis)).to_f64() as f32,
+            value_deg: zerocal_core::real::rad_to_deg(mean.get(axis)).to_f64() as f32,
         });
         return;
     }

@@ -10,10 +10,10 @@
 //! and 2 are refused as `WrongFormat` and the pendant starts afresh.
 
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
-use crate::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
-use crate::plan::MAX_POSES;
-use crate::real::Real;
-use crate::stage2::PoseReading;
+use zerocal_core::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
+use zerocal_core::plan::MAX_POSES;
+use zerocal_core::real::Real;
+use zerocal_core::stage2::PoseReading;
 
 /// Largest encoded record (bytes): the last result (format, ten angles); a capture
 /// (format, slot, index, six joints, two readings, a flag and a temperature) is 76.

@@ -8,16 +8,16 @@ use super::{
     Approach, Capture, LastResult, Notice, Outcome, Phase, ProcedureConfig, ReadingSlot,
     READING_SLOTS,
 };
-use crate::error::StageError;
-use crate::model::{Tilt, JOINTS};
-use crate::plan::{PoseList, MAX_POSES};
-use crate::real::Real;
-use crate::report::Verdict;
-use crate::session::{self, BiasSource, SessionError, SessionReadings, StageTemperatures};
-use crate::stage0::{ClosingReversal, Reversal};
-use crate::stage1::{AxisOneTurn, Stage1Result};
-use crate::stage2::{PoseReading, Stage2Model};
 use crate::stillness::{Stillness, StillnessFilter};
+use zerocal_core::error::StageError;
+use zerocal_core::model::{Tilt, JOINTS};
+use zerocal_core::plan::{PoseList, MAX_POSES};
+use zerocal_core::real::Real;
+use zerocal_core::report::Verdict;
+use zerocal_core::session::{self, BiasSource, SessionError, SessionReadings, StageTemperatures};
+use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
+use zerocal_core::stage2::{PoseReading, Stage2Model};
 
 /// Everything the procedure remembers: the session in progress, the bias and the last
 /// result.

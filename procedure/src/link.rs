@@ -21,15 +21,15 @@
 //! [`crate::export_trailer`] for the end of `export`, and the confirmation lines
 //! ([`ERASED`], [`profile_stored`], [`plan_stored`]) for the changes.
 
-use crate::decimal;
-use crate::decimal::{deg_fixed, deg_signed};
 use crate::log::result_line;
-use crate::model::{JOINTS, WRIST_JOINTS};
-use crate::plan::PoseList;
-use crate::procedure::MAX_PLAN_POSES;
-use crate::procedure::{Phase, ProcedureState};
-use crate::real::{deg_to_rad, Real};
+use crate::MAX_PLAN_POSES;
+use crate::{Phase, ProcedureState};
 use core::fmt::{self, Write};
+use zerocal_core::decimal;
+use zerocal_core::decimal::{deg_fixed, deg_signed};
+use zerocal_core::model::{JOINTS, WRIST_JOINTS};
+use zerocal_core::plan::PoseList;
+use zerocal_core::real::{deg_to_rad, Real};
 
 pub use crate::log::Line;
 
@@ -105,9 +105,9 @@ pub fn pendant_status(dropped_frames: u32, display_faults: u32) -> Result<Line, 
     Ok(w)
 }
 
-/// How far a six-joint `plan set` row's joints 1 and 2 may lie from stage 1's (deg):
-/// the link's 3 decimals, and an `f32` of a few hundred degrees.
-pub const STAGE1_JOINT_TOLERANCE_DEG: f64 = 1e-3;
+/// How far a six-joint `plan set` row's joints 1 and 2 may lie from stage 1's (deg): the
+/// session's own tolerance for its captures' joint 2.
+pub const STAGE1_JOINT_TOLERANCE_DEG: f64 = zerocal_core::session::STAGE1_JOINT2_TOLERANCE_DEG;
 
 /// The text of `help`.
 pub const HELP: &[&str] = &[
@@ -220,7 +220,7 @@ impl fmt::Display for LinkError {
             LinkError::PlanTooShort { rows } => write!(
                 f,
                 "{rows} poses: a plan needs at least {} ; plan unchanged",
-                crate::stage2::MIN_POSES
+                zerocal_core::stage2::MIN_POSES
             ),
         }
     }
@@ -295,7 +295,7 @@ impl<T: Real> PlanUpload<T> {
             return Ok(UploadStep::More);
         }
         if line == "end" {
-            if self.rows.len() < crate::stage2::MIN_POSES {
+            if self.rows.len() < zerocal_core::stage2::MIN_POSES {
                 return Err(LinkError::PlanTooShort {
                     rows: self.rows.len(),
                 });
@@ -599,7 +599,7 @@ pub fn parse_status<'a>(lines: &[&'a str]) -> Result<Status<'a>, StatusError<'a>
     };
     let not_the = |i: usize, expected| err(i, StatusProblem::NotTheLine { expected });
     let number = |i: usize, field: &'static str, text: &'a str, min: f64| {
-        crate::decimal::parse(text)
+        zerocal_core::decimal::parse(text)
             .filter(|v| v.is_finite() && *v >= min)
             .ok_or(err(i, StatusProblem::NotANumber { field, text }))
     };
@@ -648,8 +648,8 @@ pub fn parse_status<'a>(lines: &[&'a str]) -> Result<Status<'a>, StatusError<'a>
         },
     ))?;
     // A plan restored from the store may hold what a pose list holds.
-    let plan_poses = a_count(0, "plan", plan, crate::plan::MAX_POSES)?;
-    let captured = a_count(0, "captured", captured, crate::plan::MAX_POSES)?;
+    let plan_poses = a_count(0, "plan", plan, zerocal_core::plan::MAX_POSES)?;
+    let captured = a_count(0, "captured", captured, zerocal_core::plan::MAX_POSES)?;
 
     // 1: bias
     let l = at(1)?;
@@ -775,7 +775,7 @@ mod tests {
 
     #[test]
     fn the_status_reply_reads_back_field_by_field() {
-        let bias = crate::Tilt::from_deg(0.01234, -0.5);
+        let bias = zerocal_core::Tilt::from_deg(0.01234, -0.5);
         let session = ProcedureState::<f64>::new(PoseList::new(), Some(bias));
         let lines = status_lines(&session);
         assert_eq!(lines.len(), STATUS_LINES);

@@ -30,15 +30,15 @@
 //! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
 //! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
 
-use crate::decimal::Fixed;
 use crate::export_trailer::{Trailer, TrailerError, TrailerSum};
-use crate::model::{Convention, Tilt};
-use crate::procedure::{Approach, ProcedureConfig, ProcedureState, ReadingSlot};
-use crate::real::{deg_to_rad, rad_to_deg, Real};
-use crate::stage0::{ClosingReversal, Reversal};
-use crate::stage1::AxisOneTurn;
-use crate::stage2::{Extras, FitResult, PoseReading};
+use crate::{Approach, ProcedureConfig, ProcedureState, ReadingSlot};
 use core::fmt::{self, Write};
+use zerocal_core::decimal::Fixed;
+use zerocal_core::model::{Convention, Tilt};
+use zerocal_core::real::{deg_to_rad, rad_to_deg, Real};
+use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage1::AxisOneTurn;
+use zerocal_core::stage2::{Extras, FitResult, PoseReading};
 
 /// The bytes a [`Line`] holds: the widest export line.
 pub const LINE_BYTES: usize = 192;
@@ -138,7 +138,7 @@ const EXPORT_HEAD: usize = 11;
 
 /// Most lines an export has: the head, a row per capture, the result line and the
 /// trailer.
-pub const EXPORT_MAX_LINES: usize = EXPORT_HEAD + crate::plan::MAX_POSES + 2;
+pub const EXPORT_MAX_LINES: usize = EXPORT_HEAD + zerocal_core::plan::MAX_POSES + 2;
 
 /// Writes `x,y` in degrees.
 fn pair<T: Real>(w: &mut Line, t: &Tilt<T>) -> fmt::Result {
@@ -261,12 +261,12 @@ pub(crate) fn result_line<T: Real>(w: &mut Line, r: &FitResult<T>) -> fmt::Resul
         if k > 0 {
             w.write_char(',')?;
         }
-        write!(w, "{}", crate::decimal::deg_fixed(*v, 6))?;
+        write!(w, "{}", zerocal_core::decimal::deg_fixed(*v, 6))?;
     }
     write!(
         w,
         " residual_rms_deg {}",
-        crate::decimal::deg_fixed(r.residual_rms_rad, 6)
+        zerocal_core::decimal::deg_fixed(r.residual_rms_rad, 6)
     )
 }
 
@@ -560,7 +560,7 @@ pub enum LogLine<'a, T> {
 
 /// Reads a log a line at a time (no heap, so the pendant could too).
 ///
-/// The number parser is the caller's: [`crate::decimal::parse`] on the pendant, the standard
+/// The number parser is the caller's: [`zerocal_core::decimal::parse`] on the pendant, the standard
 /// library's correctly rounded one on the desktop.
 #[derive(Clone, Debug)]
 pub struct LogReader {
@@ -780,7 +780,7 @@ impl LogReader {
 #[derive(Clone, Debug, PartialEq)]
 pub enum MetaItem<T> {
     /// `# robot NAME convention rpy|axis`.
-    Robot(crate::procedure::RobotName, Convention),
+    Robot(crate::RobotName, Convention),
     /// `# stage0_bias_deg x,y` (`None` for `none`).
     Bias(Option<Tilt<T>>),
     /// `# stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` (`None` for
@@ -872,7 +872,7 @@ pub fn parse_meta<T: Real>(
     let item = match key {
         "robot" => {
             let bad = LogError::BadMetadata { line, key: "robot" };
-            let mut name = crate::procedure::RobotName::new();
+            let mut name = crate::RobotName::new();
             name.push_str(rest.next().ok_or(bad)?).map_err(|_| bad)?;
             let c = (rest.next() == Some("convention"))
                 .then(|| rest.next().and_then(Convention::parse))
@@ -1167,7 +1167,7 @@ pub fn write_row<T: Real>(w: &mut Line, p: &PoseReading<T>) -> fmt::Result {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::isclose;
+    use zerocal_core::testing::isclose;
 
     fn read_all(text: &str) -> Result<std::vec::Vec<PoseReading<f64>>, LogError> {
         let mut r = LogReader::new();

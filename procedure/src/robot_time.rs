@@ -11,7 +11,7 @@
 //!    the first of these (a half turn barely moves the reading: the pendant's rule).
 //! 2. **Stage 2.** The robot goes to a second mounting pose, the pendant is moved to the
 //!    flange, and every pose of the plan is captured twice the same way. The session
-//!    solver averages the two captures of a pose (`crate::session::merge_repeats`): the
+//!    solver averages the two captures of a pose (`zerocal_core::session::merge_repeats`): the
 //!    reading at the middle of every gear's play.
 //! 3. **The closing reversal.** The robot parks, the pendant is taken off and reversed on
 //!    the bench as in stage 0 (two captures, turned 180° on the same spot between them,
@@ -42,10 +42,10 @@
 //! speed limits apply to (its own joint degrees): the caller converts. The functions
 //! need no heap and run on the pendant as well as the desktop.
 
-use super::MAX_POSES;
-use crate::model::JOINTS;
-use crate::real::Real;
 use core::fmt;
+use zerocal_core::model::JOINTS;
+use zerocal_core::plan::MAX_POSES;
+use zerocal_core::real::Real;
 
 /// Captures of every pose (stage 1's two and stage 2's): one from each side of the
 /// backlash.
@@ -493,9 +493,9 @@ pub fn shortest_tour<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::{plan, Candidate, PlanConfig, DEFAULT_POOL};
-    use crate::stage2::{covariance_bound, Extras, Stage2Model};
-    use crate::testing::isclose;
+    use zerocal_core::plan::{plan, Candidate, PlanConfig, DEFAULT_POOL};
+    use zerocal_core::stage2::{covariance_bound, Extras, Stage2Model};
+    use zerocal_core::testing::isclose;
 
     fn model() -> TimeModel<f64> {
         TimeModel {

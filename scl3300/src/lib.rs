@@ -6,9 +6,13 @@
 //! for, and has no recovery from the error status.
 //!
 //! - [`protocol`]: frames, CRC, registers, return status and status flags; pure.
+//! - [`spec`]: the datasheet's figures the rest of zerocal uses (noise per output,
+//!   range, offset limits), each with its source; pure.
 //! - [`angle_rad`], [`temperature_celsius`]: register values to physical units; pure.
-//! - [`Scl3300`]: the blocking driver over an `embedded-hal` 1.0 [`SpiDevice`]
-//!   (mode 0, 2-4 MHz) and a [`DelayNs`].
+//! - `Scl3300` (feature `driver`, on by default): the one driver, async, over an
+//!   `embedded-hal-async` 1.0 `SpiDevice` (mode 0, 2-4 MHz) and `DelayNs`. The pendant's
+//!   sensor task awaits it; the simulators, host tests and fuzz targets run the same code
+//!   through `blocking` (feature `blocking`).
 //!
 //! # Mounting and the `axis` convention
 //!
@@ -32,14 +36,25 @@
 //! x axis (its y side rising); y grows when it pitches about its y axis (its x side
 //! dropping). A board that mounts the chip otherwise must restate this table; check it
 //! on a new board by tilting the pendant's y side up (x must read positive).
-//!
-//! [`SpiDevice`]: embedded_hal::spi::SpiDevice
-//! [`DelayNs`]: embedded_hal::delay::DelayNs
+#![cfg_attr(not(test), no_std)]
+#![forbid(unsafe_code)]
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+#![warn(missing_docs)]
 
+#[cfg(feature = "blocking")]
+pub mod blocking;
+#[cfg(feature = "driver")]
 mod driver;
+mod error;
 pub mod protocol;
+pub mod spec;
 
-pub use driver::{Error, Scl3300};
+#[cfg(feature = "driver")]
+pub use driver::{RawSample, Scl3300, CS_HIGH_US};
+pub use error::Error;
 pub use protocol::{Command, Mode, Register, ReturnStatus, StatusFlags};
 
 /// One count of an angle register (rad): 90° / 2¹⁴, i.e. 0.0055°.
@@ -62,10 +77,9 @@ pub fn temperature_celsius(raw: u16) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::isclose;
 
     fn close(a: f32, b: f32, tolerance: f32) -> bool {
-        isclose(a, b, 0.0, tolerance)
+        (a - b).abs() <= tolerance
     }
 
     #[test]

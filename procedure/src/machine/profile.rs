@@ -28,11 +28,11 @@ use nalgebra::{Quaternion, Rotation3, UnitQuaternion, Vector3};
 
 use super::record::{axis_code, axis_of, Record, PROFILE_PLACEMENTS};
 use super::RobotName;
-use crate::decimal::{self, Fixed};
 use crate::log::Line;
-use crate::model::{Arm, Convention, Joint, JointAxis, Placement, JOINTS};
-use crate::real::{deg_to_rad, rad_to_deg, Real};
-use crate::session::SESSION_JOINTS;
+use zerocal_core::decimal::{self, Fixed};
+use zerocal_core::model::{Arm, Convention, Joint, JointAxis, Placement, JOINTS};
+use zerocal_core::real::{deg_to_rad, rad_to_deg, Real};
+use zerocal_core::session::SESSION_JOINTS;
 
 /// A joint's name on the controller (`A2`, `J2`, `S`), at most 3 bytes.
 pub type JointName = heapless::String<3>;
@@ -758,7 +758,7 @@ impl<T: Real> ProfileUpload<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::rot_x;
+    use zerocal_core::model::rot_x;
 
     fn kuka_like() -> PendantProfile<f64> {
         let mut arm = Arm::<f64>::paper();

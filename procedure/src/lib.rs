@@ -1,0 +1,35 @@
+//! zerocal-procedure: what the pendant does with the method, and the words it says.
+//!
+//! - [`machine`] (its items re-exported here): the operator's procedure as a state
+//!   machine with automatic capture, the flash records that make it survive a power cut
+//!   ([`record`]), and the robot profile the pendant holds ([`profile`]).
+//! - [`stillness`]: the still-window filter that fires a capture, its sample period,
+//!   window and re-arm threshold.
+//! - [`link`]: the USB line protocol, one vocabulary of commands and replies for the
+//!   pendant's link task and `zerocal pendant`.
+//! - [`log`], [`export_trailer`]: the stage-2 log and the pendant's export, written and
+//!   read here once.
+//! - [`robot_time`]: a session's robot time and the pose order that shortens it.
+//!
+//! The numbers come from `zerocal-core` (the method); nothing here waits, allocates or
+//! touches hardware, so whole sessions run in host tests and the same code runs on the
+//! pendant's Cortex-M4F.
+#![cfg_attr(not(any(test, feature = "std")), no_std)]
+// Also set here (not only by the workspace lints): the firmware builds this crate
+// outside the workspace.
+#![forbid(unsafe_code)]
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+#![warn(missing_docs)]
+#![allow(clippy::needless_range_loop)]
+
+pub mod export_trailer;
+pub mod link;
+pub mod log;
+pub mod machine;
+pub mod robot_time;
+pub mod stillness;
+
+pub use machine::*;
