@@ -102,6 +102,11 @@ impl CaptureIndex {
         usize::from(self.pose) * CAPTURES_PER_POSE + self.approach.ordinal()
     }
 
+    /// The sequence number of pose `pose`'s first capture (from below).
+    pub fn first_of(pose: usize) -> usize {
+        pose * CAPTURES_PER_POSE
+    }
+
     /// Captures a plan of `poses` poses takes.
     pub fn captures_of(poses: usize) -> usize {
         poses * CAPTURES_PER_POSE

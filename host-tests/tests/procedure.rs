@@ -417,10 +417,7 @@ fn next_on_the_above_screen_drops_the_lone_below_capture() {
     for pair in captures.chunks(2) {
         assert_eq!(pair[0].1.joints_rad, pair[1].1.joints_rad);
         assert_eq!(
-            (
-                Approach::of(pair[0].0.into()),
-                Approach::of(pair[1].0.into())
-            ),
+            (pair[0].0.approach, pair[1].0.approach),
             (Approach::FromBelow, Approach::FromAbove)
         );
     }

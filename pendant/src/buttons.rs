@@ -16,6 +16,7 @@ use embassy_time::{Duration, Instant, Timer};
 use heapless::Vec;
 
 use crate::channels::Shared;
+pub use crate::messages::{Button, ButtonEvent, Press};
 
 /// A level must hold this long to count: tactile switches bounce for a few ms.
 pub const DEBOUNCE_MS: u64 = 20;
@@ -26,22 +27,7 @@ pub const LONG_PRESS_MS: u64 = 800;
 /// NEXT held past [`LONG_PRESS_MS`] repeats at this period.
 pub const REPEAT_MS: u64 = 250;
 
-/// A button of the pendant.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum Button {
-    /// Confirm / arm a capture.
-    Ok,
-    /// Undo / back.
-    Back,
-    /// Skip / next page.
-    Next,
-}
-
 impl Button {
-    /// The buttons, in the order of [`ButtonInputs::held`].
-    pub const ALL: [Button; 3] = [Button::Ok, Button::Back, Button::Next];
-
     /// What holding the button does: a long press, repeats, or nothing more.
     fn hold(self) -> Hold {
         match self {
@@ -55,28 +41,6 @@ impl Button {
 enum Hold {
     Long,
     Repeat,
-}
-
-/// How a button was pressed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum Press {
-    /// Pressed and released before [`LONG_PRESS_MS`].
-    Short,
-    /// Held for [`LONG_PRESS_MS`] (sent once, while still held).
-    Long,
-    /// Still held: one more step (NEXT).
-    Repeat,
-}
-
-/// One press, as the procedure receives it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct ButtonEvent {
-    /// Which button.
-    pub button: Button,
-    /// How.
-    pub press: Press,
 }
 
 /// The board's buttons.

@@ -23,9 +23,8 @@ use embassy_sync::signal::Signal;
 use zerocal_core::plan::PoseList;
 use zerocal_procedure::{PendantProfile, ProcedureConfig, ProcedureState};
 
-use crate::buttons::ButtonEvent;
+use crate::messages::{ButtonEvent, SensorReport};
 use crate::screen::Screen;
-use crate::sensor::SensorReport;
 
 /// The mutex kind of every channel: a critical section (the board's single core; the
 /// host's `critical-section/std`).

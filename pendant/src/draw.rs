@@ -20,10 +20,10 @@ use zerocal_core::report::Warning;
 use zerocal_core::session::SessionError;
 use zerocal_procedure::{Approach, Notice, MAX_PLAN_POSES};
 
+use crate::messages::SensorFault;
 use crate::screen::{
     CaptureScreen, FitSummary, Offset, Prompt, Refusal, RestartCause, ResultScreen, Screen, Settle,
 };
-use crate::sensor::SensorFault;
 use crate::store::ResetReason;
 
 /// Decimals of an offset and its 1σ on the result screen: `zerocal session`'s (its

@@ -26,6 +26,7 @@ pub mod channels;
 pub mod config;
 pub mod draw;
 pub mod link;
+pub mod messages;
 pub mod procedure;
 pub mod screen;
 pub mod sensor;

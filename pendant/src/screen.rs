@@ -16,7 +16,7 @@ use zerocal_procedure::profile::JointName;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{Approach, ControllerDisplay, Notice, Outcome, Phase, RobotName, View};
 
-use crate::sensor::SensorFault;
+use crate::messages::SensorFault;
 use crate::store::ResetReason;
 
 /// A whole screen's content.

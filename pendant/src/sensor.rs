@@ -16,9 +16,10 @@ use embassy_time::{Delay, Duration, Instant, Ticker, Timer};
 use embedded_hal_async::spi::SpiDevice;
 use zerocal_core::model::Tilt;
 use zerocal_procedure::stillness::SAMPLE_PERIOD_MS;
-use zerocal_scl3300::{Error, Mode, RawSample, Scl3300};
+use zerocal_scl3300::{Mode, RawSample, Scl3300};
 
 use crate::channels::Shared;
+pub use crate::messages::{SensorFault, SensorReport};
 
 /// Reading period: the stillness rule's [`SAMPLE_PERIOD_MS`].
 pub const SAMPLE_PERIOD: Duration = Duration::from_millis(SAMPLE_PERIOD_MS as u64);
@@ -37,64 +38,6 @@ const RETRY_DELAY: Duration = Duration::from_secs(1);
 
 /// The mode: low-noise inclination (the method is noise-limited).
 pub const SENSOR_MODE: Mode = Mode::InclinationLowNoise;
-
-/// Why there is no reading, as the screen shows it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum SensorFault {
-    /// MISO stuck (all ones or all zeros): no sensor, or unpowered.
-    NotResponding,
-    /// Another chip answers.
-    NotPresent {
-        /// The WHOAMI read.
-        whoami: u16,
-    },
-    /// The sensor reports errors (flags of its STATUS register).
-    ErrorStatus {
-        /// STATUS flags.
-        status_flags: u16,
-    },
-    /// The sensor did not finish its start-up or stays in self-test.
-    NotReady,
-    /// The SPI peripheral failed.
-    Bus,
-    /// Too many corrupted frames in a row (wiring, interference).
-    FrameErrors,
-    /// The angle outputs stopped changing ([`FROZEN_SAMPLES`]).
-    Frozen,
-}
-
-impl SensorFault {
-    /// The fault a driver error means.
-    pub fn from_error<E>(error: &Error<E>) -> SensorFault {
-        match *error {
-            Error::Bus(_) => SensorFault::Bus,
-            Error::NotResponding { .. } => SensorFault::NotResponding,
-            Error::NotPresent { whoami } => SensorFault::NotPresent { whoami },
-            Error::ErrorStatus { status_flags } => SensorFault::ErrorStatus {
-                status_flags: status_flags.0,
-            },
-            Error::StartupInProgress | Error::SelfTestRunning => SensorFault::NotReady,
-            Error::BadCrc { .. } | Error::WrongEcho { .. } => SensorFault::FrameErrors,
-        }
-    }
-}
-
-/// The sensor task's output.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SensorReport {
-    /// A valid sample.
-    Reading {
-        /// When it was read (ms since power-up, wrapping).
-        t_ms: u32,
-        /// x, y (rad), `axis` convention, no bias removed.
-        tilt: Tilt<f32>,
-        /// The chip's temperature (°C).
-        temperature_c: f32,
-    },
-    /// No reading; the task is retrying.
-    Fault(SensorFault),
-}
 
 /// Counts identical raw samples in a row: a frozen output.
 #[derive(Clone, Copy, Debug, Default)]

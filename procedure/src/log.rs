@@ -302,7 +302,7 @@ impl<T: Real> Export<'_, T> {
         let r = if i < EXPORT_HEAD {
             self.head(i, &mut w)
         } else if let Some((index, p)) = captures.get(i - EXPORT_HEAD) {
-            write_export_row(&mut w, p, Approach::of(usize::from(*index)))
+            write_export_row(&mut w, p, index.approach)
         } else if i == EXPORT_HEAD + captures.len() {
             self.tail(&mut w)?
         } else {

@@ -150,8 +150,10 @@ pub fn budget<T: Real>(
     let merged = merge_repeats(poses);
     let poses = merged.as_ref().map_or(poses, |m| m.as_slice());
     let per_row = T::lit(captures as f64) / T::lit(poses.len().max(1) as f64);
-    let mut joints: heapless::Vec<[T; JOINTS], { crate::plan::MAX_POSES * 2 }> =
-        heapless::Vec::new();
+    let mut joints: heapless::Vec<
+        [T; JOINTS],
+        { crate::plan::MAX_POSES * crate::capture::CAPTURES_PER_POSE },
+    > = heapless::Vec::new();
     for p in poses {
         if joints.push(p.joints_rad).is_err() {
             break;
@@ -314,8 +316,10 @@ pub fn predict_budget<T: Real>(
         j2_rad: stage1_joints_rad[1],
     };
     let level_reading = convention.read(&up_in_sensor(&nalgebra::Rotation3::identity()));
-    let mut captures: heapless::Vec<PoseReading<T>, { crate::plan::MAX_POSES * 2 }> =
-        heapless::Vec::new();
+    let mut captures: heapless::Vec<
+        PoseReading<T>,
+        { crate::plan::MAX_POSES * crate::capture::CAPTURES_PER_POSE },
+    > = heapless::Vec::new();
     for q in poses {
         let reading = sensor.reading(&arm.flange_sensor(&level, q));
         for _ in 0..captures_per_pose.max(1) {

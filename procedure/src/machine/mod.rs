@@ -40,7 +40,7 @@ use zerocal_core::error::StageError;
 use zerocal_core::model::{
     Arm, BaseTilt, Convention, SensorModel, Tilt, TiltAxis, JOINTS, WRIST_JOINTS,
 };
-use zerocal_core::plan::{plan, Candidate, PlanConfig, PlanError, PoseList, MAX_POSES};
+use zerocal_core::plan::{plan, Candidate, PlanConfig, PlanError, PoseList};
 use zerocal_core::real::{deg_to_rad, Real};
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{SessionError, SessionSolution};
@@ -354,7 +354,7 @@ pub enum Notice {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Output<T> {
     /// Records to write to flash, in order, before showing the new view.
-    pub persist: heapless::Vec<Record<T>, { MAX_POSES + 4 }>,
+    pub persist: heapless::Vec<Record<T>, { MAX_CAPTURES + 4 }>,
 }
 
 impl<T> Output<T> {
@@ -391,9 +391,7 @@ pub struct LastResult<T> {
     pub residual_rms_rad: T,
 }
 
-/// Most poses a pendant plan holds: each is captured twice (from below and from
-/// above) and the captures fill [`MAX_POSES`].
-pub const MAX_PLAN_POSES: usize = MAX_POSES / 2;
+pub use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES, MAX_PLAN_POSES};
 
 /// Poses in the pendant's default plan: 24, each captured twice, chosen by Monte-Carlo
 /// on a real sensor and robot (docs/error-budget.md; `zerocal plan --poses 24` prints
@@ -481,14 +479,16 @@ pub fn step<T: Real>(
                 // from below is dropped too. Alone it would sit on one side of every
                 // gear's backlash, half the lost motion off the middle the two sides'
                 // mean finds (docs/error-budget.md), and nothing downstream could tell.
-                if s.cursor % 2 == 1
-                    && s.captures
-                        .last()
-                        .is_some_and(|(index, _)| usize::from(*index) + 1 == s.cursor)
-                {
-                    s.captures.pop();
+                if let Some(at) = s.stage2_capture() {
+                    if at.approach == Approach::FromAbove
+                        && s.captures
+                            .last()
+                            .is_some_and(|(index, _)| index.pose == at.pose)
+                    {
+                        s.captures.pop();
+                    }
+                    s.cursor = CaptureIndex::first_of(usize::from(at.pose) + 1);
                 }
-                s.cursor = (s.cursor / 2 + 1) * 2;
                 s.armed = false;
                 after_capture_in_stage2(config, s, &mut out);
                 out.push(s.progress());
@@ -606,7 +606,10 @@ fn capture<T: Real>(
     match s.phase {
         Phase::Done => return,
         Phase::Stage2 => {
-            let Some(q) = s.plan.get(s.cursor / 2).copied() else {
+            let Some((at, q)) = s
+                .stage2_capture()
+                .and_then(|at| Some((at, *s.plan.get(usize::from(at.pose))?)))
+            else {
                 s.notice = Some(Notice::NoPlan);
                 return;
             };
@@ -616,18 +619,17 @@ fn capture<T: Real>(
                 reading: c.reading,
                 temperature_c: c.temperature_c,
             };
-            if s.captures.push((s.cursor as u8, pose)).is_err() {
+            if s.captures.push((at, pose)).is_err() {
                 return;
             }
             s.notice = Some(Notice::Captured);
             s.last_capture = Some(c.reading);
             out.push(Record::Capture {
                 slot,
-                index: s.cursor as u8,
+                index: at,
                 pose,
             });
-            s.cursor += 1;
-            s.enter(Phase::Stage2, s.cursor);
+            s.enter(Phase::Stage2, at.sequence() + 1);
             after_capture_in_stage2(config, s, out);
         }
         phase => {
@@ -784,11 +786,11 @@ fn back<T: Real>(s: &mut ProcedureState<T>) {
 fn undo_stage2<T: Real>(s: &mut ProcedureState<T>) -> Option<Tilt<T>> {
     match s.captures.pop() {
         Some((index, pose)) => {
-            s.enter(Phase::Stage2, usize::from(index));
+            s.enter(Phase::Stage2, index.sequence());
             Some(pose.reading)
         }
         None if s.phase != Phase::Stage2 && !s.plan.is_empty() => {
-            s.enter(Phase::Stage2, (s.plan.len() - 1) * 2);
+            s.enter(Phase::Stage2, CaptureIndex::first_of(s.plan.len() - 1));
             None
         }
         None => {

@@ -10,6 +10,7 @@
 //! and 2 are refused as `WrongFormat` and the pendant starts afresh.
 
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
+use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES};
 use zerocal_core::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::MAX_POSES;
 use zerocal_core::real::Real;
@@ -53,9 +54,9 @@ pub enum Record<T> {
     Capture {
         /// Slot (capture order).
         slot: u8,
-        /// Its index in the plan's capture list: `2 × pose + approach` (0 from below,
-        /// 1 from above).
-        index: u8,
+        /// Which capture: stored as its place in capture order
+        /// ([`CaptureIndex::sequence`]).
+        index: CaptureIndex,
         /// The commanded joints, the averaged reading and the temperature.
         pose: PoseReading<T>,
     },
@@ -193,14 +194,14 @@ fn profile_key(k: u16) -> Option<usize> {
 /// How many keys the procedure uses: the fixed ones, the readings, a capture slot per
 /// capture, a plan pose per plan pose and the robot profile's parts.
 pub const STORED_KEYS: usize =
-    FIXED_KEYS.len() + READING_SLOTS + MAX_POSES + MAX_POSES + PROFILE_KEYS;
+    FIXED_KEYS.len() + READING_SLOTS + MAX_CAPTURES + MAX_POSES + PROFILE_KEYS;
 
 /// Every key a restore may need, in the order to read them.
 pub fn all_keys() -> impl Iterator<Item = u16> {
     FIXED_KEYS
         .into_iter()
         .chain((0..READING_SLOTS as u16).map(|s| key::READING + s))
-        .chain((0..MAX_POSES as u16).map(|s| key::CAPTURE + s))
+        .chain((0..MAX_CAPTURES as u16).map(|s| key::CAPTURE + s))
         .chain((0..MAX_POSES as u16).map(|i| key::PLAN_POSE + i))
         .chain((0..PROFILE_KEYS as u16).map(|i| key::PROFILE_HEAD + i))
 }
@@ -208,7 +209,7 @@ pub fn all_keys() -> impl Iterator<Item = u16> {
 /// The place of `key` in [`all_keys`] (`0..STORED_KEYS`), if it is one of the
 /// procedure's (the profile's parts included): a restore keeps one record per place.
 pub fn key_index(k: u16) -> Option<usize> {
-    let poses = MAX_POSES as u16;
+    let (captures, poses) = (MAX_CAPTURES as u16, MAX_POSES as u16);
     let fixed = FIXED_KEYS.len();
     if let Some(i) = FIXED_KEYS.iter().position(|f| *f == k) {
         return Some(i);
@@ -216,13 +217,13 @@ pub fn key_index(k: u16) -> Option<usize> {
     if (key::READING..key::READING + READING_SLOTS as u16).contains(&k) {
         return Some(fixed + usize::from(k - key::READING));
     }
-    if (key::CAPTURE..key::CAPTURE + poses).contains(&k) {
+    if (key::CAPTURE..key::CAPTURE + captures).contains(&k) {
         return Some(fixed + READING_SLOTS + usize::from(k - key::CAPTURE));
     }
     if (key::PLAN_POSE..key::PLAN_POSE + poses).contains(&k) {
-        return Some(fixed + READING_SLOTS + MAX_POSES + usize::from(k - key::PLAN_POSE));
+        return Some(fixed + READING_SLOTS + MAX_CAPTURES + usize::from(k - key::PLAN_POSE));
     }
-    profile_key(k).map(|i| fixed + READING_SLOTS + 2 * MAX_POSES + i)
+    profile_key(k).map(|i| fixed + READING_SLOTS + MAX_CAPTURES + MAX_POSES + i)
 }
 
 /// The storage code of a joint axis (1-6).
@@ -383,7 +384,8 @@ impl<T: Real> Record<T> {
                 w.temperature(capture.temperature_c)?;
             }
             Record::Capture { slot, index, pose } => {
-                w.put(&[slot, index])?;
+                // At most MAX_CAPTURES − 1 (checked when decoded): fits a byte.
+                w.put(&[slot, index.sequence() as u8])?;
                 for q in pose.joints_rad {
                     w.f(q)?;
                 }
@@ -480,7 +482,7 @@ impl<T: Real> Record<T> {
             return Err(RecordError::WrongFormat(format));
         }
         let reading_range = key::READING..key::READING + READING_SLOTS as u16;
-        let slot_range = key::CAPTURE..key::CAPTURE + MAX_POSES as u16;
+        let slot_range = key::CAPTURE..key::CAPTURE + MAX_CAPTURES as u16;
         let plan_range = key::PLAN_POSE..key::PLAN_POSE + MAX_POSES as u16;
         Ok(match key {
             key::BIAS => Record::Bias(r.tilt()?),
@@ -489,7 +491,9 @@ impl<T: Real> Record<T> {
                 let cursor = r.u8()?;
                 let captures = r.u8()?;
                 let flags = r.u8()?;
-                if usize::from(cursor) > MAX_POSES || usize::from(captures) > MAX_POSES || flags > 3
+                if usize::from(cursor) > MAX_CAPTURES
+                    || usize::from(captures) > MAX_CAPTURES
+                    || flags > 3
                 {
                     return Err(RecordError::BadField);
                 }
@@ -533,10 +537,10 @@ impl<T: Real> Record<T> {
             }
             k if slot_range.contains(&k) => {
                 let slot = r.u8()?;
-                let index = r.u8()?;
-                if u16::from(slot) != k - key::CAPTURE || usize::from(index) >= MAX_POSES {
+                let index = CaptureIndex::from_sequence(usize::from(r.u8()?));
+                let Some(index) = index.filter(|_| u16::from(slot) == k - key::CAPTURE) else {
                     return Err(RecordError::BadField);
-                }
+                };
                 let joints_rad = r.joints()?;
                 let reading = r.tilt()?;
                 let temperature_c = r.temperature()?;
@@ -698,7 +702,7 @@ mod tests {
         }
         round_trip(Record::Capture {
             slot: 5,
-            index: 9,
+            index: CaptureIndex::from_sequence(9).unwrap(),
             pose: PoseReading {
                 joints_rad: [0.0, -1.5, 0.1, -3.1, 2.0, 1e-9],
                 reading: t,
@@ -707,7 +711,7 @@ mod tests {
         });
         round_trip(Record::Capture {
             slot: 6,
-            index: 10,
+            index: CaptureIndex::from_sequence(10).unwrap(),
             pose: PoseReading {
                 joints_rad: [0.0; 6],
                 reading: t,
@@ -732,7 +736,7 @@ mod tests {
         let mut buf = [0u8; MAX_RECORD_LEN];
         let r = Record::Capture {
             slot: 2,
-            index: 1,
+            index: CaptureIndex::from_sequence(1).unwrap(),
             pose: PoseReading::<f32>::default(),
         };
         let n = r.encode(&mut buf).unwrap();

@@ -5,8 +5,8 @@ use core::ops::RangeInclusive;
 
 use super::record::Record;
 use super::{
-    Approach, Capture, LastResult, Notice, Outcome, Phase, ProcedureConfig, ReadingSlot,
-    READING_SLOTS,
+    Approach, Capture, CaptureIndex, LastResult, Notice, Outcome, Phase, ProcedureConfig,
+    ReadingSlot, MAX_CAPTURES, READING_SLOTS,
 };
 use crate::stillness::{Stillness, StillnessFilter};
 use zerocal_core::error::StageError;
@@ -35,8 +35,8 @@ pub struct ProcedureState<T: Real> {
     /// Stage 1: the approach of the next capture (0 from below, 1 from above); stage 2:
     /// the index of the next capture in the plan's list (`2 × pose + approach`).
     pub(super) cursor: usize,
-    /// Stage-2 captures: (index in the plan's capture list, pose).
-    pub(super) captures: heapless::Vec<(u8, PoseReading<T>), MAX_POSES>,
+    /// Stage-2 captures: which capture, and the pose reading.
+    pub(super) captures: heapless::Vec<(CaptureIndex, PoseReading<T>), MAX_CAPTURES>,
     pub(super) outcome: Option<Outcome<T>>,
     pub(super) last_result: Option<LastResult<T>>,
     // Not persisted: rebuilt from the sensor within one stillness window.
@@ -126,7 +126,8 @@ impl<T: Real> ProcedureState<T> {
         let mut s = ProcedureState::new(PoseList::new(), None);
         let mut plan = [None; MAX_POSES];
         let mut plan_len = 0;
-        let mut slots: [Option<(u8, PoseReading<T>)>; MAX_POSES] = [None; MAX_POSES];
+        let mut slots: [Option<(CaptureIndex, PoseReading<T>)>; MAX_CAPTURES] =
+            [None; MAX_CAPTURES];
         let mut count = 0;
         for r in records {
             match r {
@@ -275,10 +276,18 @@ impl<T: Real> ProcedureState<T> {
         &self.plan
     }
 
-    /// Stage-2 captures: (index in the plan's capture list, pose); pose `index / 2`,
-    /// approached as [`Approach::of`]`(index)`.
-    pub fn captures(&self) -> &[(u8, PoseReading<T>)] {
+    /// Stage-2 captures: which capture (its pose in the plan and its approach), and the
+    /// pose reading.
+    pub fn captures(&self) -> &[(CaptureIndex, PoseReading<T>)] {
         &self.captures
+    }
+
+    /// The stage-2 capture the cursor stands at; `None` outside stage 2 or past the
+    /// capacity.
+    pub(super) fn stage2_capture(&self) -> Option<CaptureIndex> {
+        (self.phase == Phase::Stage2)
+            .then(|| CaptureIndex::from_sequence(self.cursor))
+            .flatten()
     }
 
     /// The bias in use: this session's stage 0, or the stored one.
@@ -371,9 +380,9 @@ impl<T: Real> ProcedureState<T> {
         self.last_result = last;
     }
 
-    /// Captures the plan asks for: two a pose.
+    /// Captures the plan asks for.
     pub(super) fn plan_captures(&self) -> usize {
-        2 * self.plan.len()
+        CaptureIndex::captures_of(self.plan.len())
     }
 
     /// Whether only OK arms the next capture: after the half turns (stage 0's and the
@@ -449,12 +458,10 @@ impl<T: Real> ProcedureState<T> {
 
     /// What to draw.
     pub fn view(&self) -> View<'_, T> {
-        let pose = (self.phase == Phase::Stage2)
-            .then(|| {
-                let i = self.cursor / 2;
-                self.plan.get(i).map(|q| (i, self.plan.len(), *q))
-            })
-            .flatten();
+        let pose = self.stage2_capture().and_then(|at| {
+            let i = usize::from(at.pose);
+            self.plan.get(i).map(|q| (i, self.plan.len(), *q))
+        });
         View {
             phase: self.phase,
             live: self.live,
@@ -504,9 +511,9 @@ impl<T: Real> ProcedureState<T> {
 
     /// The session's result, from core's session solver.
     pub(super) fn compute(&self, config: &ProcedureConfig<T>) -> Outcome<T> {
-        let mut poses: heapless::Vec<PoseReading<T>, MAX_POSES> = heapless::Vec::new();
+        let mut poses: heapless::Vec<PoseReading<T>, MAX_CAPTURES> = heapless::Vec::new();
         for (_, p) in &self.captures {
-            // Both hold MAX_POSES.
+            // Both hold MAX_CAPTURES.
             let _ = poses.push(*p);
         }
         let result = match self.readings(config, &poses) {
@@ -612,7 +619,7 @@ mod tests {
         for i in 0..3_u8 {
             records.push(Record::Capture {
                 slot: i,
-                index: i,
+                index: CaptureIndex::from_sequence(usize::from(i)).unwrap(),
                 pose: PoseReading {
                     joints_rad: [0.0, 0.0, 0.1 * f64::from(i), 0.2, 0.3, 0.4],
                     reading: Tilt::new(0.01, 0.02),
