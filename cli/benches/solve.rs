@@ -57,19 +57,7 @@ fn bench(c: &mut Criterion) {
     .unwrap();
     let world = zerocal_sim::world::WorldConfig::real();
     let s = zerocal_sim::world::RealSession::simulate(&kr6, &plan, &world, 1);
-    let readings = zerocal_core::session::SessionReadings {
-        convention: Convention::Axis,
-        arm: kr6.arm,
-        masses: kr6.mass_model(),
-        bias: zerocal_core::session::BiasSource::Reversal(s.stage0),
-        stage1: s.stage1,
-        poses: &s.poses,
-        temperatures: zerocal_core::session::StageTemperatures {
-            stage0_c: Some(s.stage0_temperature_c),
-            stage1_c: Some(s.stage1_temperature_c),
-        },
-        closing: Some(s.closing),
-    };
+    let readings = s.readings(&kr6, &world);
     c.bench_function("session_kr6_real_f64", |b| {
         b.iter(|| zerocal_core::session::solve(black_box(&readings), &config))
     });

@@ -8,8 +8,7 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use zerocal_core::model::Convention;
-use zerocal_core::session::{solve, BiasSource, SessionError, SessionReadings, StageTemperatures};
+use zerocal_core::session::{solve, SessionError, SessionReadings};
 use zerocal_core::FitError;
 use zerocal_profile::Profile;
 use zerocal_sim::montecarlo::{run, setup, summarise, Method, DEFAULT_POSES};
@@ -18,20 +17,13 @@ use zerocal_sim::world::{RealSession, WorldConfig};
 /// The target per joint (deg): the accuracy goal of docs/error-budget.md.
 const TARGET_DEG: f64 = 0.005;
 
+/// The session as the pendant recorded it, with or without the closing reversal.
 fn readings<'a>(profile: &Profile, s: &'a RealSession, closing: bool) -> SessionReadings<'a, f64> {
-    SessionReadings {
-        convention: Convention::Axis,
-        arm: profile.arm,
-        masses: profile.mass_model(),
-        bias: BiasSource::Reversal(s.stage0),
-        stage1: s.stage1,
-        poses: &s.poses,
-        temperatures: StageTemperatures {
-            stage0_c: Some(s.stage0_temperature_c),
-            stage1_c: Some(s.stage1_temperature_c),
-        },
-        closing: closing.then_some(s.closing),
-    }
+    let world = WorldConfig {
+        closing_reversal: closing,
+        ..WorldConfig::real()
+    };
+    s.readings(profile, &world)
 }
 
 #[test]

@@ -11,6 +11,7 @@
 pub mod inclinometer;
 pub mod montecarlo;
 pub mod pendant;
+pub mod pendant_plan;
 pub mod poses;
 pub mod positioning;
 pub mod robot;

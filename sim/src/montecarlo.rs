@@ -3,15 +3,14 @@
 //! pendant does (core's planner and session solver), the result compared with the
 //! truth.
 
+pub use crate::pendant_plan::{plan_for, setup, Method, DEFAULT_POSES, PLAN_WINDOW_DEG};
 use crate::world::{RealSession, WorldConfig};
-use zerocal_core::model::{Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
-use zerocal_core::plan::{plan, Candidate, Plan, PlanConfig, PlanError};
+use zerocal_core::model::JOINTS;
 
 use zerocal_core::session::{
-    budget, solve, BiasSource, Budget, BudgetInputs, SessionError, SessionReadings,
-    SessionSolution, StageTemperatures,
+    budget, solve, Budget, BudgetInputs, SessionError, SessionSolution, StageTemperatures,
 };
-use zerocal_core::stage2::{FitConfig, Stage2Model};
+use zerocal_core::stage2::FitConfig;
 use zerocal_profile::Profile;
 
 /// What one session gave.
@@ -39,29 +38,6 @@ impl SessionOutcome {
     }
 }
 
-/// The stage-2 plan for a profile as the pendant makes it: its stage-1 joints 1-2,
-/// the profile's wrist limits, the `axis` convention at zero offsets.
-///
-/// # Errors
-/// The planner's refusal.
-pub fn plan_for(profile: &Profile, config: &PlanConfig<f64>) -> Result<Plan<f64>, PlanError> {
-    let model = Stage2Model {
-        arm: profile.arm,
-        sensor: SensorModel::new(Convention::Axis, Tilt::default()),
-        masses: profile.mass_model(),
-        y_weight: zerocal_core::stage2::MEMS_Y_WEIGHT,
-        ..Stage2Model::default()
-    };
-    let mut config = *config;
-    config.fixed_joints_rad = [profile.stage1_joints_rad[0], profile.stage1_joints_rad[1]];
-    for k in 0..WRIST_JOINTS {
-        let j = &profile.joints[k + 2];
-        config.limits_rad[k] = (j.min_deg.to_radians(), j.max_deg.to_radians());
-    }
-    let mut pool = vec![Candidate::default(); config.candidates];
-    plan(&model, &config, &mut pool)
-}
-
 /// Runs `sessions` sessions on `profile` through `poses`, solved with `fit`.
 pub fn run(
     profile: &Profile,
@@ -76,24 +52,12 @@ pub fn run(
         .map(|i| {
             let s = seed.wrapping_mul(1_000_003).wrapping_add(i);
             let session = RealSession::simulate(profile, poses, world, s);
-            let readings = SessionReadings {
-                convention: Convention::Axis,
-                arm: profile.arm,
-                masses: profile.mass_model(),
-                bias: BiasSource::Reversal(session.stage0),
-                stage1: session.stage1,
-                poses: &session.poses,
-                // The method without the closing reversal recorded no temperatures.
-                temperatures: if world.closing_reversal {
-                    StageTemperatures {
-                        stage0_c: Some(session.stage0_temperature_c),
-                        stage1_c: Some(session.stage1_temperature_c),
-                    }
-                } else {
-                    StageTemperatures::default()
-                },
-                closing: world.closing_reversal.then_some(session.closing),
-            };
+            let mut readings = session.readings(profile, world);
+            if !world.closing_reversal {
+                // The method without the closing reversal (the paper's) records no
+                // temperatures.
+                readings.temperatures = StageTemperatures::default();
+            }
             let result = solve(&readings, fit).result;
             let budget = result.as_ref().ok().map(|sol| {
                 budget(
@@ -216,56 +180,6 @@ pub fn summarise(outcomes: &[SessionOutcome], limit_deg: f64) -> Summary {
         all_within: within as f64 / outcomes.len().max(1) as f64,
     }
 }
-
-/// How a session is run and solved: before the compensation of the real sensor and robot (the paper's model
-/// with a MEMS sensor: offsets only, one approach direction, no closing reversal) or
-/// with it (the real-sensor model, both approach directions, the closing reversal).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Method {
-    /// Offsets only.
-    Uncompensated,
-    /// The real-sensor model ([`FitConfig::for_mems`]).
-    Compensated,
-}
-
-/// Stage-2 poses the pendant plans by default (each captured twice, once from each
-/// side of the backlash): 24, chosen by Monte-Carlo (docs/error-budget.md).
-pub const DEFAULT_POSES: usize = 24;
-
-/// The pendant's plan and fit settings for `profile` under `method`, with `poses`
-/// stage-2 poses.
-///
-/// # Errors
-/// The planner's refusal.
-pub fn setup(
-    profile: &Profile,
-    method: Method,
-    poses: usize,
-) -> Result<(Vec<[f64; JOINTS]>, FitConfig<f64>), PlanError> {
-    let sag = profile.mass_model().is_some();
-    let fit = match method {
-        Method::Compensated => FitConfig::for_mems(&profile.arm, sag),
-        Method::Uncompensated => FitConfig {
-            sensor_range_rad: FitConfig::<f64>::for_mems(&profile.arm, sag).sensor_range_rad,
-            sensor_noise_rad: FitConfig::<f64>::for_mems(&profile.arm, sag).sensor_noise_rad,
-            ..FitConfig::default()
-        },
-    };
-    let config = PlanConfig {
-        poses,
-        extras: fit.extras,
-        noise_sigma_rad: fit.sensor_noise_rad,
-        window_rad: PLAN_WINDOW_DEG.to_radians(),
-        margin_rad: 0.0,
-        ..PlanConfig::default()
-    };
-    let plan = plan_for(profile, &config)?;
-    Ok((plan.poses_rad.iter().copied().collect(), fit))
-}
-
-/// The planning window (deg): mode 4's ±10° less room for the sensor's offset (up to
-/// 1.45°) and the offsets not yet known.
-pub const PLAN_WINDOW_DEG: f64 = 7.0;
 
 /// The world a method runs in: `Uncompensated` approaches from one side and makes no
 /// closing reversal.

@@ -14,8 +14,9 @@ use crate::SimRobot;
 use nalgebra::{Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Tilt, JOINTS};
+use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
+use zerocal_core::session::{BiasSource, SessionReadings, StageTemperatures};
 use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::PoseReading;
@@ -163,8 +164,32 @@ fn small_rotation(rng: &mut ChaCha8Rng, half_deg: f64) -> ([f64; 3], Rotation3<f
 }
 
 impl RealSession {
+    /// The session as the pendant recorded it, for the session solver: stage 0's
+    /// reversal, stage 1, the stage-2 captures, the stage temperatures and, when the
+    /// world made one, the closing reversal. The one place a simulated session becomes
+    /// [`SessionReadings`].
+    pub fn readings<'a>(
+        &'a self,
+        profile: &Profile,
+        world: &WorldConfig,
+    ) -> SessionReadings<'a, f64> {
+        SessionReadings {
+            convention: Convention::Axis,
+            arm: profile.arm,
+            masses: profile.mass_model(),
+            bias: BiasSource::Reversal(self.stage0),
+            stage1: self.stage1,
+            poses: &self.poses,
+            temperatures: StageTemperatures {
+                stage0_c: Some(self.stage0_temperature_c),
+                stage1_c: Some(self.stage1_temperature_c),
+            },
+            closing: world.closing_reversal.then_some(self.closing),
+        }
+    }
+
     /// Simulates a session on `profile` through the plan the pendant runs by default
-    /// (the planner's [`crate::montecarlo::DEFAULT_POSES`] poses for the compensated fit).
+    /// (the planner's [`crate::pendant_plan::DEFAULT_POSES`] poses for the compensated fit).
     ///
     /// # Errors
     /// The planner refuses the profile.
@@ -173,10 +198,10 @@ impl RealSession {
         world: &WorldConfig,
         seed: u64,
     ) -> Result<Self, zerocal_core::plan::PlanError> {
-        let (plan, _) = crate::montecarlo::setup(
+        let (plan, _) = crate::pendant_plan::setup(
             profile,
-            crate::montecarlo::Method::Compensated,
-            crate::montecarlo::DEFAULT_POSES,
+            crate::pendant_plan::Method::Compensated,
+            crate::pendant_plan::DEFAULT_POSES,
         )?;
         Ok(Self::simulate(profile, &plan, world, seed))
     }

@@ -1,0 +1,235 @@
+//! The repository's structural rules, checked on its files so a change that breaks one
+//! fails here with the file named:
+//!
+//! - no import circle between the top-level modules of a crate (a module imports
+//!   another through `crate::name`; a circle means two ideas that cannot be read apart);
+//! - no Rust source file over [`MAX_SOURCE_LINES`] lines;
+//! - no file refers to the notes beside the repository (the parent directory's shared
+//!   folder): a user's clone has none of them.
+
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// The longest a source file may be: one idea per file.
+const MAX_SOURCE_LINES: usize = 900;
+
+fn repo_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+/// Every file under `dir`, skipping build output, git data and fuzz artifacts.
+fn files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for entry in fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if path.is_dir() {
+            if !matches!(name.as_str(), "target" | ".git" | "artifacts" | "coverage") {
+                files(&path, out);
+            }
+        } else {
+            out.push(path);
+        }
+    }
+}
+
+/// The crates: every directory with a Cargo.toml and a src/.
+fn crate_sources(root: &Path) -> Vec<PathBuf> {
+    let mut all = Vec::new();
+    files(root, &mut all);
+    let mut out: Vec<PathBuf> = all
+        .iter()
+        .filter(|p| p.file_name().is_some_and(|n| n == "Cargo.toml"))
+        .filter_map(|p| p.parent().map(|d| d.join("src")))
+        .filter(|src| src.is_dir())
+        .collect();
+    out.sort();
+    out
+}
+
+/// The top-level module a file of `src` belongs to (`lib`/`main` for the root files).
+fn top_module(src: &Path, file: &Path) -> String {
+    let rel = file.strip_prefix(src).unwrap();
+    let first = rel
+        .components()
+        .next()
+        .unwrap()
+        .as_os_str()
+        .to_string_lossy();
+    first.trim_end_matches(".rs").to_string()
+}
+
+/// The `crate::name` paths a file's code uses (comments skipped).
+fn crate_imports(text: &str) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    for line in text.lines() {
+        let code = line.split("//").next().unwrap_or("");
+        let mut rest = code;
+        while let Some(i) = rest.find("crate::") {
+            let after = &rest[i + "crate::".len()..];
+            let name: String = after
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            // `crate::{a, b}` groups: each name in the braces.
+            if name.is_empty() && after.starts_with('{') {
+                let group = after[1..].split('}').next().unwrap_or("");
+                for part in group.split(',') {
+                    let n: String = part
+                        .trim()
+                        .chars()
+                        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                        .collect();
+                    if !n.is_empty() {
+                        out.insert(n);
+                    }
+                }
+            } else if !name.is_empty() {
+                out.insert(name);
+            }
+            rest = after;
+        }
+    }
+    out
+}
+
+/// A circle in `graph`, if any, as the modules along it.
+fn find_circle(graph: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
+    fn visit(
+        node: &str,
+        graph: &BTreeMap<String, BTreeSet<String>>,
+        path: &mut Vec<String>,
+        done: &mut BTreeSet<String>,
+    ) -> Option<Vec<String>> {
+        if let Some(i) = path.iter().position(|n| n == node) {
+            let mut circle = path[i..].to_vec();
+            circle.push(node.to_string());
+            return Some(circle);
+        }
+        if done.contains(node) {
+            return None;
+        }
+        path.push(node.to_string());
+        for next in graph.get(node).into_iter().flatten() {
+            if let Some(c) = visit(next, graph, path, done) {
+                return Some(c);
+            }
+        }
+        path.pop();
+        done.insert(node.to_string());
+        None
+    }
+    let mut done = BTreeSet::new();
+    for node in graph.keys() {
+        if let Some(c) = visit(node, graph, &mut Vec::new(), &mut done) {
+            return Some(c);
+        }
+    }
+    None
+}
+
+#[test]
+fn no_import_circle_between_the_modules_of_a_crate() {
+    let root = repo_root();
+    let mut circles = Vec::new();
+    for src in crate_sources(&root) {
+        let mut rs = Vec::new();
+        files(&src, &mut rs);
+        let modules: BTreeSet<String> = rs
+            .iter()
+            .filter(|p| p.extension().is_some_and(|e| e == "rs"))
+            .map(|p| top_module(&src, p))
+            .collect();
+        let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        for file in rs
+            .iter()
+            .filter(|p| p.extension().is_some_and(|e| e == "rs"))
+        {
+            let from = top_module(&src, file);
+            if from == "lib" || from == "main" {
+                continue;
+            }
+            let text = fs::read_to_string(file).unwrap();
+            for to in crate_imports(&text) {
+                if to != from && modules.contains(&to) {
+                    graph.entry(from.clone()).or_default().insert(to);
+                }
+            }
+        }
+        if let Some(circle) = find_circle(&graph) {
+            circles.push(format!("{}: {}", src.display(), circle.join(" -> ")));
+        }
+    }
+    assert!(
+        circles.is_empty(),
+        "import circles:\n{}",
+        circles.join("\n")
+    );
+}
+
+#[test]
+fn the_circle_finder_finds_one() {
+    // The check above can fail: a two-module circle is found and named.
+    let mut graph = BTreeMap::new();
+    graph.insert("log".to_string(), BTreeSet::from(["machine".to_string()]));
+    graph.insert("machine".to_string(), BTreeSet::from(["log".to_string()]));
+    graph.insert("link".to_string(), BTreeSet::from(["log".to_string()]));
+    let circle = find_circle(&graph).unwrap();
+    assert_eq!(circle.first(), circle.last());
+    assert_eq!(circle.len(), 3);
+    assert_eq!(
+        crate_imports(
+            "use crate::{log, machine::X};\n// crate::nothing\nlet a = crate::link::f();"
+        ),
+        BTreeSet::from(["log".to_string(), "machine".to_string(), "link".to_string()])
+    );
+}
+
+#[test]
+fn no_source_file_is_over_the_limit() {
+    let root = repo_root();
+    let mut all = Vec::new();
+    files(&root, &mut all);
+    let mut long: Vec<String> = all
+        .iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
+        .filter_map(|p| {
+            let n = fs::read_to_string(p).ok()?.lines().count();
+            (n > MAX_SOURCE_LINES).then(|| format!("{} ({n} lines)", p.display()))
+        })
+        .collect();
+    long.sort();
+    assert!(
+        long.is_empty(),
+        "files over {MAX_SOURCE_LINES} lines:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn nothing_refers_to_the_notes_beside_the_repository() {
+    let root = repo_root();
+    let mut all = Vec::new();
+    files(&root, &mut all);
+    let needle = ["..", "/shared"].concat();
+    let mut found: Vec<String> = all
+        .iter()
+        .filter_map(|p| {
+            let bytes = fs::read(p).ok()?;
+            let text = String::from_utf8_lossy(&bytes);
+            text.contains(needle.as_str())
+                .then(|| p.display().to_string())
+        })
+        .collect();
+    found.sort();
+    assert!(
+        found.is_empty(),
+        "files naming {needle}:\n{}",
+        found.join("\n")
+    );
+}
