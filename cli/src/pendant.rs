@@ -27,9 +27,9 @@ use clap::{Args, Subcommand};
 use zerocal_core::model::JOINTS;
 use zerocal_procedure::export_trailer;
 use zerocal_procedure::link::{
-    parse_plan_stored, parse_profile_stored, parse_status, phase_name, Stage2Status, Status,
-    ERASED, ERROR_PREFIX, MAX_COMMAND_BYTES, PLAN_PROMPT, PROFILE_PROMPT, REPLY_LINE_BYTES,
-    STATUS_LINES,
+    parse_plan_stored, parse_profile_stored, parse_status, phase_name, Command, Stage2Status,
+    Status, ERASED, ERROR_PREFIX, MAX_COMMAND_BYTES, PLAN_PROMPT, PROFILE_PROMPT, REPLY_LINE_BYTES,
+    STATUS_LINES, UPLOAD_END,
 };
 use zerocal_procedure::log::{
     parse_meta, LogError, LogLine, LogReader, EXPORT_MAX_LINES, LOG_HEADER,
@@ -120,12 +120,17 @@ pub fn pendant_profile(profile: &Profile) -> Result<PendantProfile<f64>, CliErro
     })
 }
 
+/// A command's line, as the pendant's parser takes it.
+fn command_line(command: Command) -> Vec<u8> {
+    format!("{}\r\n", command.word()).into_bytes()
+}
+
 /// The bytes of `profile set` … `end`.
 ///
 /// # Errors
 /// A line the pendant's buffer cannot hold (never, for the built-in profiles).
 pub fn profile_request(p: &PendantProfile<f64>) -> Result<Vec<u8>, CliError> {
-    let mut out = b"profile set\r\n".to_vec();
+    let mut out = command_line(Command::ProfileSet);
     for i in 0.. {
         match p.line(i) {
             None => break,
@@ -156,13 +161,14 @@ pub fn plan_request(poses_rad: &[[f64; JOINTS]]) -> Result<Vec<u8>, CliError> {
             poses_rad.len()
         )));
     }
-    let mut out = b"plan set\r\n".to_vec();
+    let mut out = command_line(Command::PlanSet);
     for q in poses_rad {
         let row: Vec<String> = q.iter().map(|v| format!("{:.6}", v.to_degrees())).collect();
         out.extend_from_slice(row.join(",").as_bytes());
         out.extend_from_slice(b"\r\n");
     }
-    out.extend_from_slice(b"end\r\n");
+    out.extend_from_slice(UPLOAD_END.as_bytes());
+    out.extend_from_slice(b"\r\n");
     Ok(out)
 }
 
@@ -239,11 +245,11 @@ impl Expect {
     /// What the reply is called in messages.
     fn name(&self) -> &'static str {
         match self {
-            Expect::Status => "status",
-            Expect::Export => "export",
-            Expect::Erased => "erase",
-            Expect::ProfileStored(_) => "profile set",
-            Expect::PlanStored(_) => "plan set",
+            Expect::Status => Command::Status.word(),
+            Expect::Export => Command::Export.word(),
+            Expect::Erased => Command::Erase.word(),
+            Expect::ProfileStored(_) => Command::ProfileSet.word(),
+            Expect::PlanStored(_) => Command::PlanSet.word(),
         }
     }
 }
@@ -263,14 +269,14 @@ pub struct Request {
 /// # Errors
 /// An unknown robot, a plan that does not read or does not fit.
 pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
-    let request = |bytes: &[u8], expect| Request {
-        bytes: bytes.to_vec(),
+    let request = |command: Command, expect| Request {
+        bytes: command_line(command),
         expect,
     };
     Ok(match action {
-        PendantAction::Status => vec![request(b"status\r\n", Expect::Status)],
-        PendantAction::Export { .. } => vec![request(b"export\r\n", Expect::Export)],
-        PendantAction::Erase => vec![request(b"erase all\r\n", Expect::Erased)],
+        PendantAction::Status => vec![request(Command::Status, Expect::Status)],
+        PendantAction::Export { .. } => vec![request(Command::Export, Expect::Export)],
+        PendantAction::Erase => vec![request(Command::Erase, Expect::Erased)],
         PendantAction::LoadProfile { robot, plan } => {
             let profile = crate::robot::load(robot)?;
             let poses = match plan {

@@ -33,6 +33,7 @@ use zerocal_procedure::link::{
 };
 use zerocal_procedure::log::export;
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
+use zerocal_procedure::replies::Reply;
 
 use crate::channels::{LinkReply, LinkRequest, Shared};
 
@@ -190,10 +191,18 @@ impl<W: Write> Server<'_, W> {
         }
     }
 
+    /// One of the link's own answers.
+    async fn reply(&mut self, reply: Reply) -> Result<(), Disconnected> {
+        let mut line = Line::new();
+        // Every reply fits a line (zerocal_procedure::replies' test), so nothing is lost.
+        let _ = write!(line, "{reply}");
+        self.write_line(line.as_bytes()).await
+    }
+
     async fn write_fmt(&mut self, args: core::fmt::Arguments<'_>) -> Result<(), Disconnected> {
         let mut line = Line::new();
         if line.write_fmt(args).is_err() {
-            return self.write_line(b"error: line too long").await;
+            return self.reply(Reply::LineTooLong).await;
         }
         self.write_line(line.as_bytes()).await
     }
@@ -205,7 +214,7 @@ impl<W: Write> Server<'_, W> {
     ) -> Result<(), Disconnected> {
         match line {
             Ok(text) => self.write_line(text.as_bytes()).await,
-            Err(_) => self.write_line(b"error: line too long").await,
+            Err(_) => self.reply(Reply::LineTooLong).await,
         }
     }
 
@@ -214,15 +223,14 @@ impl<W: Write> Server<'_, W> {
             Edited::TooLong => {
                 // An over-long row ends an upload like any bad row.
                 self.upload = None;
-                self.write_line(b"error: line too long; nothing changed")
-                    .await?;
+                self.reply(Reply::UploadLineTooLong).await?;
                 return Ok(Next::Line);
             }
             Edited::Line(line) => line,
         };
         let Ok(text) = core::str::from_utf8(&line) else {
             self.upload = None;
-            self.write_line(b"error: not text; nothing changed").await?;
+            self.reply(Reply::NotText).await?;
             return Ok(Next::Line);
         };
         self.answer(text).await
@@ -239,14 +247,10 @@ impl<W: Write> Server<'_, W> {
                     match self.request(LinkRequest::SetProfile(profile)).await {
                         LinkReply::Done => self.write_text(confirmation).await?,
                         LinkReply::SessionInProgress => {
-                            self.write_line(
-                                b"error: a session is in progress; 'clear' first (profile unchanged)",
-                            )
-                            .await?
+                            self.reply(Reply::ProfileRefusedSessionInProgress).await?
                         }
                         LinkReply::PlanLocked | LinkReply::StoreFailed => {
-                            self.write_line(b"error: profile taken but the flash write failed")
-                                .await?
+                            self.reply(Reply::ProfileWriteFailed).await?
                         }
                         LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                     }
@@ -266,20 +270,11 @@ impl<W: Write> Server<'_, W> {
                     let poses = plan.len();
                     match self.request(LinkRequest::SetPlan(plan)).await {
                         LinkReply::Done => self.write_text(plan_stored(poses)).await?,
-                        LinkReply::PlanLocked => {
-                            self.write_line(
-                                b"error: plan locked by stage-2 captures; 'clear' first",
-                            )
-                            .await?
-                        }
-                        LinkReply::StoreFailed => {
-                            self.write_line(b"error: plan set but the flash write failed")
-                                .await?
-                        }
+                        LinkReply::PlanLocked => self.reply(Reply::PlanLocked).await?,
+                        LinkReply::StoreFailed => self.reply(Reply::PlanWriteFailed).await?,
                         LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                         LinkReply::SessionInProgress => {
-                            self.write_line(b"error: a session is in progress; 'clear' first")
-                                .await?
+                            self.reply(Reply::PlanRefusedSessionInProgress).await?
                         }
                     }
                 }
@@ -313,7 +308,7 @@ impl<W: Write> Server<'_, W> {
                     match plan_line(procedure.session.plan(), i) {
                         None => break,
                         Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                        Some(Err(_)) => self.write_line(b"error: line too long").await?,
+                        Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
                     }
                 }
             }
@@ -333,7 +328,7 @@ impl<W: Write> Server<'_, W> {
                     match profile.line(i) {
                         None => break,
                         Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                        Some(Err(_)) => self.write_line(b"error: line too long").await?,
+                        Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
                     }
                 }
             }
@@ -344,22 +339,13 @@ impl<W: Write> Server<'_, W> {
             Command::Erase => match self.request(LinkRequest::Erase).await {
                 LinkReply::Done => self.write_line(ERASED.as_bytes()).await?,
                 LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
-                _ => {
-                    self.write_line(b"error: the erase or the default plan's write failed")
-                        .await?
-                }
+                _ => self.reply(Reply::EraseFailed).await?,
             },
             Command::Export => self.export().await?,
             Command::Live => return Ok(Next::Live),
             Command::Clear => match self.request(LinkRequest::Clear).await {
-                LinkReply::Done | LinkReply::PlanLocked => {
-                    self.write_line(b"ok: session cleared (bias and plan kept)")
-                        .await?
-                }
-                LinkReply::StoreFailed => {
-                    self.write_line(b"error: cleared but the flash write failed")
-                        .await?
-                }
+                LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::Cleared).await?,
+                LinkReply::StoreFailed => self.reply(Reply::ClearWriteFailed).await?,
                 LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                 LinkReply::SessionInProgress => {}
             },
@@ -381,7 +367,7 @@ impl<W: Write> Server<'_, W> {
                 match status(&procedure.session, i) {
                     None => break,
                     Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                    Some(Err(_)) => self.write_line(b"error: line too long").await?,
+                    Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
                 }
             }
         }
@@ -399,7 +385,7 @@ impl<W: Write> Server<'_, W> {
         for item in export(&procedure.session, &procedure.config) {
             match item {
                 Ok(text) => self.write_line(text.as_bytes()).await?,
-                Err(_) => self.write_line(b"error: line too long").await?,
+                Err(_) => self.reply(Reply::LineTooLong).await?,
             }
         }
         Ok(())

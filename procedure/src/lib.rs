@@ -29,6 +29,7 @@ pub mod export_trailer;
 pub mod link;
 pub mod log;
 pub mod machine;
+pub mod replies;
 pub mod robot_time;
 pub mod stillness;
 

@@ -226,34 +226,72 @@ impl fmt::Display for LinkError {
     }
 }
 
-/// Parses a command line.
+impl Command {
+    /// Every command, in the order `help` lists them.
+    pub const ALL: [Command; 10] = [
+        Command::Help,
+        Command::Status,
+        Command::Live,
+        Command::Plan,
+        Command::PlanSet,
+        Command::Export,
+        Command::Clear,
+        Command::Profile,
+        Command::ProfileSet,
+        Command::Erase,
+    ];
+
+    /// The words a person (or `zerocal pendant`) types for it: defined here once, for
+    /// the pendant's parser and the desktop's requests.
+    pub const fn word(self) -> &'static str {
+        match self {
+            Command::Help => "help",
+            Command::Status => "status",
+            Command::Live => "live",
+            Command::Plan => "plan",
+            Command::PlanSet => "plan set",
+            Command::Export => "export",
+            Command::Clear => "clear",
+            Command::Profile => "profile",
+            Command::ProfileSet => "profile set",
+            Command::Erase => "erase all",
+        }
+    }
+}
+
+/// The line that ends a `plan set` or `profile set` upload.
+pub const UPLOAD_END: &str = "end";
+
+/// Parses a command line: a command's [`Command::word`] (words separated by any
+/// whitespace), or `?` for `help`.
 ///
 /// # Errors
-/// [`LinkError::UnknownCommand`], [`LinkError::UnexpectedArgument`].
+/// [`LinkError::UnknownCommand`], [`LinkError::UnexpectedArgument`],
+/// [`LinkError::EraseNeedsAll`].
 pub fn parse_command(line: &str) -> Result<Command, LinkError> {
     let mut words = line.split_whitespace();
-    let first = words.next().ok_or(LinkError::UnknownCommand)?;
-    let cmd = match (first, words.next()) {
-        ("help" | "?", None) => Command::Help,
-        ("status", None) => Command::Status,
-        ("live", None) => Command::Live,
-        ("plan", None) => Command::Plan,
-        ("plan", Some("set")) => Command::PlanSet,
-        ("export", None) => Command::Export,
-        ("clear", None) => Command::Clear,
-        ("profile", None) => Command::Profile,
-        ("profile", Some("set")) => Command::ProfileSet,
-        ("erase", Some("all")) => Command::Erase,
-        ("erase", _) => return Err(LinkError::EraseNeedsAll),
-        ("help" | "?" | "status" | "live" | "export" | "clear" | "plan" | "profile", Some(_)) => {
-            return Err(LinkError::UnexpectedArgument)
-        }
-        _ => return Err(LinkError::UnknownCommand),
+    let first = match words.next().ok_or(LinkError::UnknownCommand)? {
+        "?" => Command::Help.word(),
+        word => word,
     };
-    if words.next().is_some() {
+    let (second, third) = (words.next(), words.next());
+    let first_word = |c: &Command| c.word().split(' ').next();
+    for command in Command::ALL {
+        let mut expected = command.word().split(' ');
+        if expected.next() == Some(first) && expected.next() == second {
+            if third.is_some() {
+                return Err(LinkError::UnexpectedArgument);
+            }
+            return Ok(command);
+        }
+    }
+    if Some(first) == first_word(&Command::Erase) {
+        return Err(LinkError::EraseNeedsAll);
+    }
+    if Command::ALL.iter().any(|c| first_word(c) == Some(first)) {
         return Err(LinkError::UnexpectedArgument);
     }
-    Ok(cmd)
+    Err(LinkError::UnknownCommand)
 }
 
 /// A `plan set` in progress: rows accumulate here and replace the plan only on `end`.
@@ -294,7 +332,7 @@ impl<T: Real> PlanUpload<T> {
         if line.is_empty() || line.starts_with('#') {
             return Ok(UploadStep::More);
         }
-        if line == "end" {
+        if line == UPLOAD_END {
             if self.rows.len() < zerocal_core::stage2::MIN_POSES {
                 return Err(LinkError::PlanTooShort {
                     rows: self.rows.len(),
