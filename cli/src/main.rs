@@ -15,9 +15,9 @@ use zerocal_cli::error::CliError;
 use zerocal_cli::identify::{self, IdentifyArgs};
 use zerocal_cli::plan::{self, PlanArgs};
 use zerocal_cli::program::{self, ProgramArgs};
-use zerocal_cli::simulated_world;
 use zerocal_cli::session::{self, SessionArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
+use zerocal_cli::simulated_world;
 
 /// Joint-zero identification of industrial robots from a dual-axis inclinometer.
 #[derive(Parser, Debug)]
