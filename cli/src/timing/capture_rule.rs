@@ -1,0 +1,322 @@
+//! The pendant's capture rule checked along the robot's moves: the readings the
+//! pendant would see every sensor period, whether a path arms the next capture, and
+//! whether a stretch of it looks still long enough to be captured before the robot
+//! arrives.
+
+use super::MAX_MOVE_SAMPLES;
+use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS};
+use zerocal_core::plan::time::{Mounting, TimeModel};
+use zerocal_core::procedure::ProcedureConfig;
+use zerocal_core::stage2::Stage2Model;
+use zerocal_profile::Profile;
+
+/// A move arms the next capture if the predicted reading leaves the last capture by
+/// this many times the pendant's re-arm threshold: the margin covers the offsets not
+/// yet known and the sensor's gain errors (stated).
+pub const ARM_MARGIN: f64 = 2.0;
+
+/// A stretch of a move as long as the still window whose predicted readings stay
+/// within this many times the stillness threshold could be captured before the robot
+/// arrives (stated margin, for the arm's vibration and the sensor noise).
+pub const EARLY_STILL_MARGIN: f64 = 2.0;
+
+/// The pendant's view of a path: whether it arms the next capture, and whether a
+/// stretch of it looks still long enough to be captured before the robot arrives.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LegCheck {
+    /// The predicted reading leaves the last capture by the re-arm threshold (with
+    /// [`ARM_MARGIN`]).
+    pub armed: bool,
+    /// After arming, a stretch as long as the still window stays within the stillness
+    /// threshold (with [`EARLY_STILL_MARGIN`]) before the robot arrives.
+    pub early_still: bool,
+    /// The largest change of the predicted reading from the last capture along the
+    /// path, either axis (deg).
+    pub largest_change_deg: f64,
+}
+
+/// The pendant as the planner sees it: readings predicted at zero offsets on a level
+/// base, in the SCL3300's `axis` convention, on the flange or on the upper arm.
+#[derive(Clone, Debug)]
+pub struct Pendant<'a> {
+    pub(crate) profile: &'a Profile,
+    model: Stage2Model<f64>,
+    rearm_rad: f64,
+    still_rad: f64,
+}
+
+/// Position along a synchronised move of duration `total_s` at time `t`, as a
+/// fraction of the move, for the slowest joint's trapezoid (speed `v`, acceleration
+/// `a`, distance `d`).
+fn fraction_at(t: f64, total_s: f64, v: f64, a: f64, d: f64) -> f64 {
+    if d <= 0.0 || total_s <= 0.0 {
+        return 1.0;
+    }
+    let ramp = if d >= v * v / a { v / a } else { total_s / 2.0 };
+    let peak = a * ramp;
+    let x = if t <= ramp {
+        0.5 * a * t * t
+    } else if t <= total_s - ramp {
+        0.5 * a * ramp * ramp + peak * (t - ramp)
+    } else {
+        let r = (total_s - t).max(0.0);
+        d - 0.5 * a * r * r
+    };
+    (x / d).clamp(0.0, 1.0)
+}
+
+impl<'a> Pendant<'a> {
+    /// The pendant on `profile`.
+    pub fn new(profile: &'a Profile) -> Self {
+        let procedure = ProcedureConfig::<f64>::default();
+        Pendant {
+            profile,
+            model: Stage2Model {
+                arm: profile.arm,
+                base_tilt: BaseTilt::level(),
+                sensor: SensorModel::new(Convention::Axis, Tilt::default()),
+                ..Stage2Model::default()
+            },
+            rearm_rad: procedure.rearm_motion_rad,
+            still_rad: procedure.stillness.max_peak_to_peak_rad,
+        }
+    }
+
+    /// The predicted reading of the pendant on the upper arm (stage 1's mounting) at
+    /// a pose in controller degrees (rad).
+    pub fn upper_reading(&self, pose_deg: &[f64; JOINTS]) -> Tilt<f64> {
+        let q = self.profile.model_rad(pose_deg);
+        let r = self
+            .profile
+            .arm
+            .upper_arm_sensor(&BaseTilt::level(), q[0], q[1]);
+        Convention::Axis.read(&zerocal_core::model::up_in_sensor(&r))
+    }
+
+    /// The predicted reading of the pendant on the flange at a pose in controller
+    /// degrees (rad).
+    pub fn reading(&self, pose_deg: &[f64; JOINTS]) -> Tilt<f64> {
+        self.model
+            .predict(&self.profile.model_rad(pose_deg), &[0.0; 4])
+    }
+
+    /// The predicted reading where the pendant is mounted.
+    pub fn reading_on(&self, mounting: Mounting, pose_deg: &[f64; JOINTS]) -> Tilt<f64> {
+        match mounting {
+            Mounting::UpperArm => self.upper_reading(pose_deg),
+            Mounting::Flange => self.reading(pose_deg),
+        }
+    }
+
+    /// Readings every sensor period along one move (the last sample at arrival).
+    pub(crate) fn samples(
+        &self,
+        time: &TimeModel<f64>,
+        mounting: Mounting,
+        from: &[f64; JOINTS],
+        to: &[f64; JOINTS],
+        out: &mut Vec<Tilt<f64>>,
+    ) {
+        let total = time.move_s(from, to);
+        // The joint that takes longest sets the profile the others follow.
+        let (mut slow, mut slow_t) = (0, -1.0);
+        for k in 0..JOINTS {
+            let t = time.joint_move_s(k, to[k] - from[k]);
+            if t > slow_t {
+                (slow, slow_t) = (k, t);
+            }
+        }
+        let d = (to[slow] - from[slow]).abs();
+        let (v, a) = (time.speed_deg_s[slow], time.accel_deg_s2[slow]);
+        // Timing::new bounds every move to MAX_MOVE_S; the bound here keeps a model
+        // built otherwise from allocating without end (its samples then spread out).
+        let needed = (total / time.sample_period_s).ceil().max(1.0);
+        let steps = (needed as usize).clamp(1, MAX_MOVE_SAMPLES);
+        let dt = if needed > steps as f64 {
+            total / steps as f64
+        } else {
+            time.sample_period_s
+        };
+        for i in 1..=steps {
+            let t = (i as f64 * dt).min(total);
+            let s = fraction_at(t, total, v, a, d);
+            let p: [f64; JOINTS] = core::array::from_fn(|k| from[k] + (to[k] - from[k]) * s);
+            out.push(self.reading_on(mounting, &p));
+        }
+    }
+
+    /// What the pendant makes of driving `path` (the moves through its points in
+    /// turn), its first point being where it last captured.
+    pub fn leg(
+        &self,
+        time: &TimeModel<f64>,
+        mounting: Mounting,
+        path: &[[f64; JOINTS]],
+    ) -> LegCheck {
+        let mut samples = Vec::new();
+        for w in path.windows(2) {
+            self.samples(time, mounting, &w[0], &w[1], &mut samples);
+        }
+        let Some(start) = path.first() else {
+            return LegCheck {
+                armed: false,
+                early_still: false,
+                largest_change_deg: 0.0,
+            };
+        };
+        let last = self.reading_on(mounting, start);
+        let change = |r: &Tilt<f64>| {
+            let m = r.minus(&last);
+            m.x_rad.abs().max(m.y_rad.abs())
+        };
+        let largest_change_deg = samples.iter().map(change).fold(0.0, f64::max).to_degrees();
+        let arm_at = samples
+            .iter()
+            .position(|r| change(r) > ARM_MARGIN * self.rearm_rad);
+        let Some(arm_at) = arm_at else {
+            return LegCheck {
+                armed: false,
+                early_still: false,
+                largest_change_deg,
+            };
+        };
+        // Samples spanning the still window, all within the threshold, before arrival.
+        let span = (time.window_s / time.sample_period_s).ceil() as usize + 1;
+        let limit = EARLY_STILL_MARGIN * self.still_rad;
+        let before_arrival = samples.len().saturating_sub(1);
+        let early_still = (arm_at..before_arrival.saturating_sub(span - 1)).any(|i| {
+            let w = &samples[i..i + span];
+            let (lo_x, hi_x, lo_y, hi_y) = w.iter().fold(
+                (
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                ),
+                |(a, b, c, d), r| {
+                    (
+                        a.min(r.x_rad),
+                        b.max(r.x_rad),
+                        c.min(r.y_rad),
+                        d.max(r.y_rad),
+                    )
+                },
+            );
+            hi_x - lo_x <= limit && hi_y - lo_y <= limit
+        });
+        LegCheck {
+            armed: true,
+            early_still,
+            largest_change_deg,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::timing::{SessionPoses, Timing, TimingArgs, OVERSHOOT_DEG};
+
+    #[test]
+    fn synchronised_profile_runs_from_zero_to_one() {
+        // 10° at 5°/s with 50°/s²: ramps of 0.1 s, 2.1 s in all.
+        let total = 10.0 / 5.0 + 5.0 / 50.0;
+        assert_eq!(fraction_at(0.0, total, 5.0, 50.0, 10.0), 0.0);
+        assert!((fraction_at(total, total, 5.0, 50.0, 10.0) - 1.0).abs() < 1e-12);
+        // Half way in time is half way in distance (the profile is symmetric).
+        assert!((fraction_at(total / 2.0, total, 5.0, 50.0, 10.0) - 0.5).abs() < 1e-12);
+        let mut last = 0.0;
+        for i in 0..=100 {
+            let s = fraction_at(total * f64::from(i) / 100.0, total, 5.0, 50.0, 10.0);
+            assert!(s >= last);
+            last = s;
+        }
+    }
+
+    /// A move of a few hundredths of a degree cannot arm the pendant (its re-arm
+    /// threshold is 0.2°, here with a factor 2); a 20° turn of A5 does, and moves the
+    /// reading all the way, so nothing looks still before the robot arrives.
+    #[test]
+    fn small_moves_do_not_arm_the_next_capture() {
+        let profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
+        let t = Timing::new(&profile, &TimingArgs::default()).unwrap_or_else(|e| panic!("{e}"));
+        let pendant = Pendant::new(&profile);
+        let mut a = profile.shown_deg(&profile.stage1_joints_rad);
+        a[2] = -90.0;
+        let mut b = a;
+        b[5] += 0.05;
+        let f = Mounting::Flange;
+        assert!(!pendant.leg(&t.model, f, &[a, b]).armed);
+        b = a;
+        b[4] += 20.0;
+        let check = pendant.leg(&t.model, f, &[a, b]);
+        assert!(check.armed && !check.early_still, "{check:?}");
+        assert!(
+            pendant
+                .leg(&t.model, f, &t.model.first_capture_path(&b, &a))
+                .armed
+        );
+        // Out and back by a few hundredths: not armed either.
+        let mut c = a;
+        c[4] += 0.05;
+        assert!(!pendant.leg(&t.model, f, &[a, c, a]).armed);
+    }
+
+    /// The overshoot re-arms the pendant between the two captures of every pose of
+    /// every built-in profile's default plan, and at stage 1 (on the upper arm): the
+    /// reading leaves the first capture by more than twice the 0.2° re-arm threshold,
+    /// with nothing still for a window before the robot is back. Smaller overshoots
+    /// would not do everywhere: the smallest change at each is printed.
+    #[test]
+    fn overshoot_rearms_every_builtin_plan() {
+        let figures = [1.0, 2.0, 3.0, OVERSHOOT_DEG];
+        let mut smallest: [(f64, String); 4] =
+            core::array::from_fn(|_| (f64::INFINITY, String::new()));
+        for name in zerocal_profile::builtin_names() {
+            let profile = zerocal_profile::builtin(name).unwrap_or_else(|e| panic!("{e}"));
+            let plan = match crate::program::default_plan(name, &TimingArgs::default()) {
+                Ok(p) => p,
+                // The planner refuses the UR5e (joints 2-4 parallel).
+                Err(_) if name == "ur5e" => continue,
+                Err(e) => panic!("{name}: {e}"),
+            };
+            let t = Timing::new(&profile, &TimingArgs::default()).unwrap_or_else(|e| panic!("{e}"));
+            let pendant = Pendant::new(&profile);
+            let poses = SessionPoses::new(&profile, &plan);
+            let cases = [
+                (Mounting::UpperArm, poses.stage1),
+                (Mounting::UpperArm, poses.turned),
+            ]
+            .into_iter()
+            .chain(poses.poses.iter().map(|q| (Mounting::Flange, *q)));
+            for (i, (m, q)) in cases.enumerate() {
+                let what = match i {
+                    0 => format!("{name} stage 1"),
+                    1 => format!("{name} stage 1 turned"),
+                    _ => format!("{name} stage-2 pose {}", i - 1),
+                };
+                for (f, low) in figures.iter().zip(smallest.iter_mut()) {
+                    let mut model = t.model;
+                    model.overshoot_deg = *f;
+                    let c = pendant.leg(&model, m, &model.second_capture_path(&q));
+                    if c.largest_change_deg < low.0 {
+                        *low = (c.largest_change_deg, what.clone());
+                    }
+                    if *f == OVERSHOOT_DEG {
+                        assert!(c.armed && !c.early_still, "{what}: {c:?}");
+                    }
+                }
+            }
+        }
+        for (f, (d, at)) in figures.iter().zip(&smallest) {
+            println!("overshoot {f} deg: smallest reading change {d:.3} deg ({at})");
+        }
+        // Re-armed at the chosen figure, not at 3°.
+        assert!(smallest[3].0 > ARM_MARGIN * 0.2, "{:?}", smallest[3]);
+        assert!(
+            smallest[2].0 <= ARM_MARGIN * 0.2 * 1.2,
+            "{:?}: 3 deg would do",
+            smallest[2]
+        );
+    }
+}
