@@ -8,6 +8,7 @@ use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS};
 use zerocal_core::plan::time::{Mounting, TimeModel};
 use zerocal_core::procedure::ProcedureConfig;
 use zerocal_core::stage2::Stage2Model;
+use zerocal_core::stillness::{Stillness, StillnessConfig, StillnessFilter};
 use zerocal_profile::Profile;
 
 /// A move arms the next capture if the predicted reading leaves the last capture by
@@ -27,8 +28,8 @@ pub struct LegCheck {
     /// The predicted reading leaves the last capture by the re-arm threshold (with
     /// [`ARM_MARGIN`]).
     pub armed: bool,
-    /// After arming, a stretch as long as the still window stays within the stillness
-    /// threshold (with [`EARLY_STILL_MARGIN`]) before the robot arrives.
+    /// Armed, the pendant's stillness filter (its threshold widened by
+    /// [`EARLY_STILL_MARGIN`]) calls the readings still before the robot arrives.
     pub early_still: bool,
     /// The largest change of the predicted reading from the last capture along the
     /// path, either axis (deg).
@@ -42,7 +43,8 @@ pub struct Pendant<'a> {
     pub(crate) profile: &'a Profile,
     model: Stage2Model<f64>,
     rearm_rad: f64,
-    still_rad: f64,
+    /// The pendant's still window and threshold (core's procedure defaults).
+    stillness: StillnessConfig<f64>,
 }
 
 /// Position along a synchronised move of duration `total_s` at time `t`, as a
@@ -78,7 +80,7 @@ impl<'a> Pendant<'a> {
                 ..Stage2Model::default()
             },
             rearm_rad: procedure.rearm_motion_rad,
-            still_rad: procedure.stillness.max_peak_to_peak_rad,
+            stillness: procedure.stillness,
         }
     }
 
@@ -108,15 +110,17 @@ impl<'a> Pendant<'a> {
         }
     }
 
-    /// Readings every sensor period along one move (the last sample at arrival).
+    /// Readings every sensor period along one move (the last sample at arrival), each
+    /// with its time: `start_s` plus the time into the move (s). Gives the time of
+    /// arrival.
     pub(crate) fn samples(
         &self,
         time: &TimeModel<f64>,
         mounting: Mounting,
-        from: &[f64; JOINTS],
-        to: &[f64; JOINTS],
-        out: &mut Vec<Tilt<f64>>,
-    ) {
+        (from, to): (&[f64; JOINTS], &[f64; JOINTS]),
+        start_s: f64,
+        out: &mut Vec<(f64, Tilt<f64>)>,
+    ) -> f64 {
         let total = time.move_s(from, to);
         // The joint that takes longest sets the profile the others follow.
         let (mut slow, mut slow_t) = (0, -1.0);
@@ -141,8 +145,9 @@ impl<'a> Pendant<'a> {
             let t = (i as f64 * dt).min(total);
             let s = fraction_at(t, total, v, a, d);
             let p: [f64; JOINTS] = core::array::from_fn(|k| from[k] + (to[k] - from[k]) * s);
-            out.push(self.reading_on(mounting, &p));
+            out.push((start_s + t, self.reading_on(mounting, &p)));
         }
+        start_s + total
     }
 
     /// What the pendant makes of driving `path` (the moves through its points in
@@ -154,8 +159,9 @@ impl<'a> Pendant<'a> {
         path: &[[f64; JOINTS]],
     ) -> LegCheck {
         let mut samples = Vec::new();
+        let mut t_s = 0.0;
         for w in path.windows(2) {
-            self.samples(time, mounting, &w[0], &w[1], &mut samples);
+            t_s = self.samples(time, mounting, (&w[0], &w[1]), t_s, &mut samples);
         }
         let Some(start) = path.first() else {
             return LegCheck {
@@ -169,10 +175,14 @@ impl<'a> Pendant<'a> {
             let m = r.minus(&last);
             m.x_rad.abs().max(m.y_rad.abs())
         };
-        let largest_change_deg = samples.iter().map(change).fold(0.0, f64::max).to_degrees();
+        let largest_change_deg = samples
+            .iter()
+            .map(|(_, r)| change(r))
+            .fold(0.0, f64::max)
+            .to_degrees();
         let arm_at = samples
             .iter()
-            .position(|r| change(r) > ARM_MARGIN * self.rearm_rad);
+            .position(|(_, r)| change(r) > ARM_MARGIN * self.rearm_rad);
         let Some(arm_at) = arm_at else {
             return LegCheck {
                 armed: false,
@@ -180,35 +190,35 @@ impl<'a> Pendant<'a> {
                 largest_change_deg,
             };
         };
-        // Samples spanning the still window, all within the threshold, before arrival.
-        let span = (time.window_s / time.sample_period_s).ceil() as usize + 1;
-        let limit = EARLY_STILL_MARGIN * self.still_rad;
-        let before_arrival = samples.len().saturating_sub(1);
-        let early_still = (arm_at..before_arrival.saturating_sub(span - 1)).any(|i| {
-            let w = &samples[i..i + span];
-            let (lo_x, hi_x, lo_y, hi_y) = w.iter().fold(
-                (
-                    f64::INFINITY,
-                    f64::NEG_INFINITY,
-                    f64::INFINITY,
-                    f64::NEG_INFINITY,
-                ),
-                |(a, b, c, d), r| {
-                    (
-                        a.min(r.x_rad),
-                        b.max(r.x_rad),
-                        c.min(r.y_rad),
-                        d.max(r.y_rad),
-                    )
-                },
-            );
-            hi_x - lo_x <= limit && hi_y - lo_y <= limit
-        });
         LegCheck {
             armed: true,
-            early_still,
+            early_still: self.still_before_arrival(&samples, arm_at),
             largest_change_deg,
         }
+    }
+
+    /// Whether the pendant, armed at sample `arm_at`, would capture before the robot
+    /// arrives: core's stillness filter, the pendant's own rule (its window, and its
+    /// threshold widened by [`EARLY_STILL_MARGIN`]), fed the readings from the last
+    /// capture on (the filter starts empty there, as the pendant's does after a
+    /// capture), calls them still at a sample from `arm_at` on, before the arrival.
+    fn still_before_arrival(&self, samples: &[(f64, Tilt<f64>)], arm_at: usize) -> bool {
+        let config = StillnessConfig {
+            max_peak_to_peak_rad: EARLY_STILL_MARGIN * self.stillness.max_peak_to_peak_rad,
+            ..self.stillness
+        };
+        let mut filter = StillnessFilter::new();
+        let before_arrival = samples.len().saturating_sub(1);
+        samples[..before_arrival]
+            .iter()
+            .enumerate()
+            .any(|(i, (t_s, reading))| {
+                // The pendant's millisecond clock; a leg lasts minutes at most
+                // (`MAX_MOVE_S` a move), far inside u32.
+                let t_ms = (t_s * 1000.0).round() as u32;
+                let state = filter.push(&config, t_ms, *reading, None);
+                i >= arm_at && matches!(state, Stillness::Still { .. })
+            })
     }
 }
 
@@ -260,6 +270,34 @@ mod tests {
         let mut c = a;
         c[4] += 0.05;
         assert!(!pendant.leg(&t.model, f, &[a, c, a]).armed);
+    }
+
+    /// A creep after the arming move that keeps the reading within the pendant's
+    /// stillness threshold for 1.5 still windows before the robot arrives is a capture
+    /// before arrival; the same creep for half a window is not. The window is the
+    /// pendant's own (core's `StillnessConfig`), and core's filter decides.
+    #[test]
+    fn a_creep_longer_than_the_still_window_is_captured_early() {
+        let profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
+        let t = Timing::new(&profile, &TimingArgs::default()).unwrap_or_else(|e| panic!("{e}"));
+        let pendant = Pendant::new(&profile);
+        let window_s = f64::from(StillnessConfig::<f64>::default().window_ms) / 1000.0;
+        let mut a = profile.shown_deg(&profile.stage1_joints_rad);
+        a[2] = -90.0;
+        // A5 by 20 deg arms the pendant (`small_moves_do_not_arm_the_next_capture`).
+        let mut b = a;
+        b[4] += 20.0;
+        // A6 creeping at 0.01 deg/s: its turn about the flange's axis moves the
+        // reading by 0.03 deg at most, inside the 0.05 deg threshold.
+        let mut model = t.model;
+        model.speed_deg_s[5] = 0.01;
+        for (creep_s, early) in [(1.5 * window_s, true), (0.5 * window_s, false)] {
+            let mut c = b;
+            c[5] += model.speed_deg_s[5] * creep_s;
+            let check = pendant.leg(&model, Mounting::Flange, &[a, b, c]);
+            assert!(check.armed, "{creep_s} s: {check:?}");
+            assert_eq!(check.early_still, early, "{creep_s} s: {check:?}");
+        }
     }
 
     /// The overshoot re-arms the pendant between the two captures of every pose of

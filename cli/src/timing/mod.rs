@@ -276,7 +276,7 @@ mod tests {
         let mut b = a;
         b[4] = profile.joints[4].max_deg;
         let mut samples = Vec::new();
-        pendant.samples(&t.model, Mounting::Flange, &a, &b, &mut samples);
+        pendant.samples(&t.model, Mounting::Flange, (&a, &b), 0.0, &mut samples);
         assert!(
             samples.len() <= MAX_MOVE_SAMPLES && samples.len() > MAX_MOVE_SAMPLES / 2,
             "{}",
