@@ -46,37 +46,7 @@ pub fn parse_limits(
                 fields.len()
             ));
         }
-        let k = fields[0]
-            .parse::<usize>()
-            .ok()
-            .filter(|j| (1..=JOINTS).contains(j))
-            .map(|j| j - 1)
-            .or_else(|| names.iter().position(|n| n.eq_ignore_ascii_case(fields[0])))
-            .ok_or_else(|| {
-                format!(
-                    "limits line {line_no}: field joint: '{}' is not a joint 1-6 or one of the profile's {}",
-                    fields[0].chars().take(16).collect::<String>(),
-                    names.join(", ")
-                )
-            })?;
-        let num = |f: usize, name: &str| -> Result<f64, String> {
-            fields[f]
-                .parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .ok_or_else(|| {
-                    format!(
-                        "limits line {line_no}: field {name}: '{}' is not a finite number",
-                        fields[f].chars().take(32).collect::<String>()
-                    )
-                })
-        };
-        let (lo, hi) = (num(1, "min_deg")?, num(2, "max_deg")?);
-        if lo > hi {
-            return Err(format!(
-                "limits line {line_no}: min_deg {lo} is above max_deg {hi}"
-            ));
-        }
+        let (k, (lo, hi)) = limits_line(line_no, &fields, names)?;
         if limits[k].is_some() {
             return Err(format!(
                 "limits line {line_no}: joint {} is listed twice",
@@ -86,6 +56,47 @@ pub fn parse_limits(
         limits[k] = Some((lo, hi));
     }
     Ok(limits)
+}
+
+/// One line's three fields `joint,min_deg,max_deg`: the joint (0-based, by number or
+/// by one of `names`) and its (min, max) limits (deg).
+fn limits_line(
+    line_no: usize,
+    fields: &[&str],
+    names: &[String; JOINTS],
+) -> Result<(usize, (f64, f64)), String> {
+    let k = fields[0]
+        .parse::<usize>()
+        .ok()
+        .filter(|j| (1..=JOINTS).contains(j))
+        .map(|j| j - 1)
+        .or_else(|| names.iter().position(|n| n.eq_ignore_ascii_case(fields[0])))
+        .ok_or_else(|| {
+            format!(
+                "limits line {line_no}: field joint: '{}' is not a joint 1-6 or one of the profile's {}",
+                fields[0].chars().take(16).collect::<String>(),
+                names.join(", ")
+            )
+        })?;
+    let num = |f: usize, name: &str| -> Result<f64, String> {
+        fields[f]
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| {
+                format!(
+                    "limits line {line_no}: field {name}: '{}' is not a finite number",
+                    fields[f].chars().take(32).collect::<String>()
+                )
+            })
+    };
+    let (lo, hi) = (num(1, "min_deg")?, num(2, "max_deg")?);
+    if lo > hi {
+        return Err(format!(
+            "limits line {line_no}: min_deg {lo} is above max_deg {hi}"
+        ));
+    }
+    Ok((k, (lo, hi)))
 }
 
 /// `profile` with the limits a limits file lists (`name` names the file in
