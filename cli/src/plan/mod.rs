@@ -3,13 +3,14 @@
 //! uncertainty per joint, the worst correlation between the parameters (naming the
 //! poorly separated ones), and the session's robot time (`crate::timing`).
 //!
-//! The poses come in the order that makes the session short ([`session_plan`]): the
-//! order the pendant's plan and the robot program (`zerocal program`) must both follow.
-//! They lie inside the joint limits (the profile's, narrowed by `--limits`: [`limits`])
-//! less the room the two captures of a pose need (`crate::timing::planner_limits`:
-//! every pose is captured from below and from above on every joint). `--target-k2-deg
-//! U` asks for the fewest poses whose predicted k = 2 uncertainty is at most U on every
-//! joint, through one function, [`predicted_k2_deg`] (core's `predict_budget`).
+//! The poses come in the order that makes the session short
+//! ([`session_plan`](mod@session_plan)): the order the pendant's plan and the robot
+//! program (`zerocal program`) must both follow. They lie inside the joint limits (the
+//! profile's, narrowed by `--limits`: [`limits`]) less the room the two captures of a
+//! pose need (`crate::timing::planner_limits`: every pose is captured from below and
+//! from above on every joint). `--target-k2-deg U` asks for the fewest poses whose
+//! predicted k = 2 uncertainty is at most U on every joint, through one function,
+//! [`predicted_k2_deg`] (core's `predict_budget`).
 //!
 //! Output: a table (default, [`table`]), `--csv` (header `j1_deg,...,j6_deg`, model
 //! degrees, one row per pose, nothing else on stdout) or `--json` (one object:

@@ -8,13 +8,14 @@
 //! joint moving in its positive direction, its second with every joint moving
 //! negative: the session averages the two, the middle of each gear's backlash.
 //!
-//! The session is built once ([`build`]), as a list of [`Step`]s in the controller's
-//! joint degrees ([`Session`], [`steps`]), after the safety checks ([`checks`]), and
-//! written by one module per family (`krl`, `rapid`, `tp`, `inform`, `val3`,
-//! `urscript`, syntax cited in `docs/controllers/`) with the text they share ([`text`])
-//! into its files ([`files`]); [`read`] holds a small reader per family that takes the
-//! joint targets, waits and stops back out of a written program, for the tests. The
-//! plan comes from a file `zerocal plan` wrote or from its defaults ([`plan_file`]).
+//! The session is built once ([`build`](fn@build)), as a list of [`Step`]s in the
+//! controller's joint degrees ([`Session`], [`steps`]), after the safety checks
+//! ([`checks`]), and written by one module per family (`krl`, `rapid`, `tp`, `inform`,
+//! `val3`, `urscript`, syntax cited in `docs/controllers/`) with the text they share
+//! ([`text`]) into its files ([`files`]); [`read`] holds a small reader per family that
+//! takes the joint targets, waits and stops back out of a written program, for the
+//! tests. The plan comes from a file `zerocal plan` wrote or from its defaults
+//! ([`plan_file`]).
 //!
 //! Physics the program respects (`crate::timing`): joint moves at a reduced speed
 //! with exact stops; both sides of the backlash at every pose, each capture's last

@@ -1,7 +1,9 @@
 //! The pendant's capture rule checked along the robot's moves: the readings the
 //! pendant would see every sensor period, whether a path arms the next capture, and
-//! whether a stretch of it looks still long enough to be captured before the robot
-//! arrives.
+//! whether the pendant's own stillness rule (core's `StillnessFilter` with its
+//! `StillnessConfig`, fed those readings) would capture before the robot arrives. So a
+//! change to the pendant's window or threshold changes the plans' order and the
+//! programs' checks as well.
 
 use super::MAX_MOVE_SAMPLES;
 use zerocal_core::model::{BaseTilt, Convention, SensorModel, Tilt, JOINTS};
