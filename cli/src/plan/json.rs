@@ -73,7 +73,8 @@ pub struct PlanJson {
     pub poses_controller_deg: Vec<[f64; JOINTS]>,
     /// Predicted 1σ of Δθ3..Δθ6 (deg).
     pub predicted_sigma_deg: [f64; WRIST_JOINTS],
-    /// Predicted k = 2 uncertainty of Δθ2..Δθ6 (deg): [`predicted_k2_deg`].
+    /// Predicted k = 2 uncertainty of Δθ2..Δθ6 (deg):
+    /// [`predicted_k2_deg`](super::prediction::predicted_k2_deg).
     pub predicted_k2_deg: [f64; WRIST_JOINTS + 1],
     /// What the prediction includes.
     pub predicted_from: &'static str,

@@ -82,7 +82,7 @@ pub struct ProgramArgs {
 /// Runs `zerocal program`: writes the program and says what it wrote.
 ///
 /// # Errors
-/// As [`build`]; an unreadable plan; a file that cannot be written.
+/// As [`build()`]; an unreadable plan; a file that cannot be written.
 pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
     output_folder(&args.out)?;
     let profile = crate::robot::load(&args.robot)?;

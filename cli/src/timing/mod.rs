@@ -62,7 +62,7 @@ pub const DEFAULT_SPEED_PERCENT: u8 = 10;
 pub const DEFAULT_JOINT_SPEED_DEG_S: f64 = 90.0;
 
 /// Every joint's acceleration (deg/s²): 1.2 rad/s², the joint acceleration RoboDK's
-/// UR post-processor uses by default (docs/controllers/ur.md [U10]). No source gives
+/// UR post-processor uses by default (docs/controllers/ur.md \[U10\]). No source gives
 /// these robots' joint accelerations: a stated default. At the reduced speed a ramp
 /// lasts `v/a`, about 0.2 s on a 150°/s joint at 10 %.
 pub const DEFAULT_ACCEL_DEG_S2: f64 = 1.2 * 180.0 / std::f64::consts::PI;
