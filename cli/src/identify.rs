@@ -2,7 +2,7 @@
 
 use crate::args::{RealIn, CONDITION, TILT_PAIR};
 use crate::error::CliError;
-use crate::log::{read_log, Log};
+use crate::log_file::{read_log, Log};
 use clap::Args;
 use serde::Serialize;
 use std::path::PathBuf;

@@ -15,9 +15,9 @@ use zerocal_cli::error::CliError;
 use zerocal_cli::identify::{self, IdentifyArgs};
 use zerocal_cli::plan::{self, PlanArgs};
 use zerocal_cli::program::{self, ProgramArgs};
-use zerocal_cli::real;
 use zerocal_cli::session::{self, SessionArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
+use zerocal_cli::simulated_world;
 
 /// Joint-zero identification of industrial robots from a dual-axis inclinometer.
 #[derive(Parser, Debug)]
@@ -39,7 +39,7 @@ enum Command {
     Robots(zerocal_cli::robot::RobotsArgs),
     /// The error sources one at a time, over many simulated sessions, with and without
     /// the compensation.
-    ErrorTable(real::ErrorTableArgs),
+    ErrorTable(simulated_world::ErrorTableArgs),
     /// Solve a whole pendant session export (stages 0-2) and print the offsets in the
     /// controller's own terms.
     Session(SessionArgs),
@@ -55,13 +55,13 @@ fn run(cli: &Cli) -> Result<String, CliError> {
     match &cli.command {
         Command::Simulate(args) if args.world == simulate::World::Real => {
             let world = args.real.world();
-            let run = real::run_session(
+            let run = simulated_world::run_session(
                 &args.robot,
                 &world,
                 args.poses.unwrap_or(zerocal_sim::montecarlo::DEFAULT_POSES),
                 args.seed,
             )?;
-            let mut out = real::render(&run, &world, args.seed);
+            let mut out = simulated_world::render(&run, &world, args.seed);
             if let Some(path) = &args.real.export {
                 std::fs::write(path, run.session.export_text(&run.profile.name))
                     .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
@@ -71,7 +71,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
                     path.display()
                 ));
             }
-            match real::accuracy(&run, args.accuracy_points, args.seed) {
+            match simulated_world::accuracy(&run, args.accuracy_points, args.seed) {
                 Ok(report) => {
                     out.push_str(&format!(
                         "\n-- positioning accuracy, ISO 9283-style, {} --\n",
@@ -79,7 +79,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
                     ));
                     out.push_str(&report.to_string());
                     if let Some(dir) = &args.plot {
-                        for f in real::plots(dir, &run, &report)? {
+                        for f in simulated_world::plots(dir, &run, &report)? {
                             out.push_str(&format!("wrote {}\n", f.display()));
                         }
                     }
@@ -88,7 +88,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
             }
             Ok(out)
         }
-        Command::ErrorTable(args) => real::error_table(args),
+        Command::ErrorTable(args) => simulated_world::error_table(args),
         Command::Robots(args) => zerocal_cli::robot::list(args),
         Command::Simulate(args) => {
             let (profile, session, result) = simulate::simulate(args)?;

@@ -39,7 +39,7 @@ use zerocal_procedure::{RobotName, MAX_PLAN_POSES};
 use zerocal_profile::Profile;
 
 use crate::error::CliError;
-use crate::log::parse_number;
+use crate::log_file::parse_number;
 
 /// The exit statuses, for `--help`.
 fn exit_statuses() -> String {

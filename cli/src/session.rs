@@ -16,7 +16,7 @@
 
 use crate::args::RealIn;
 use crate::error::CliError;
-use crate::log::parse_number;
+use crate::log_file::parse_number;
 use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;

@@ -44,7 +44,7 @@ pub struct SimulateArgs {
     pub world: World,
     /// The real world's sources and faults.
     #[command(flatten)]
-    pub real: crate::real::WorldArgs,
+    pub real: crate::simulated_world::WorldArgs,
     /// Stage-2 poses (real world: each captured twice, default 24; ideal: default 30).
     /// Range: [4, 10000].
     #[arg(long, value_parser = CountIn::<usize>::new(4, 10_000))]

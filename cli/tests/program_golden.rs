@@ -14,6 +14,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use zerocal_cli::program::{read, Format};
+use zerocal_procedure::robot_time::CAPTURES_PER_POSE;
 
 /// 2023-11-14 22:13:20 UTC: the date the TP and INFORM headers carry.
 const EPOCH: &str = "1700000000";
@@ -161,7 +162,7 @@ fn golden_files_read_back() {
         };
         assert_eq!(
             moves.iter().filter(|m| m.dwell_s.is_some()).count(),
-            2 * (2 + poses)
+            CAPTURES_PER_POSE * (2 + poses)
         );
         assert_eq!(moves.iter().filter(|m| m.stop.is_some()).count(), 4);
         let last = moves.last().unwrap_or_else(|| panic!("file {i}: no moves"));

@@ -21,6 +21,7 @@ use zerocal_cli::timing::{
 };
 use zerocal_core::model::JOINTS;
 use zerocal_core::stage2::MEMS_RANGE_DEG;
+use zerocal_procedure::robot_time::CAPTURES_PER_POSE;
 use zerocal_procedure::stillness::StillnessConfig;
 use zerocal_profile::{OffsetUnit, Profile};
 
@@ -97,7 +98,10 @@ fn check(profile: &Profile, format: Format, poses_rad: &[[f64; JOINTS]]) -> Chec
     turned[0] += std::f64::consts::PI;
     let mut poses = vec![profile.shown_deg(&q1), profile.shown_deg(&turned)];
     poses.extend(poses_rad.iter().map(|q| profile.shown_deg(q)));
-    let plan_ctrl: Vec<[f64; JOINTS]> = poses.iter().flat_map(|q| [*q, *q]).collect();
+    let plan_ctrl: Vec<[f64; JOINTS]> = poses
+        .iter()
+        .flat_map(|q| std::iter::repeat_n(*q, CAPTURES_PER_POSE))
+        .collect();
     let capture_at: Vec<usize> = (0..read.len())
         .filter(|&i| read[i].dwell_s.is_some())
         .collect();
@@ -269,7 +273,8 @@ fn yaskawa_with_pulses_per_degree_writes_pulses_that_read_back() {
     let profile = gp7_with_pulses();
     let poses = plan_for(&profile);
     let c = check(&profile, Format::Inform, &poses);
-    assert_eq!(c.captures, 2 * (poses.len() + 2));
+    // Every stage-2 pose and stage 1's two.
+    assert_eq!(c.captures, CAPTURES_PER_POSE * (poses.len() + 2));
 }
 
 #[test]

@@ -33,7 +33,10 @@ fn temperature(u: &mut Unstructured<'_>) -> arbitrary::Result<Option<f64>> {
 }
 
 type Parser = fn(&str) -> Option<f64>;
-const PARSERS: [Parser; 2] = [zerocal_core::decimal::parse, zerocal_cli::log::parse_number];
+const PARSERS: [Parser; 2] = [
+    zerocal_core::decimal::parse,
+    zerocal_cli::log_file::parse_number,
+];
 /// The export's last decimal of a degree (half of it for the rounding, the rest for
 /// f64's rounding of values up to 720 deg on the way), in radians.
 const ANGLE_TOLERANCE_RAD: f64 = 1e-12 / 57.29577951308232;

@@ -7,7 +7,7 @@
 use std::cell::Cell;
 
 use libfuzzer_sys::fuzz_target;
-use zerocal_cli::log::parse_number;
+use zerocal_cli::log_file::parse_number;
 use zerocal_core::stage2::PoseReading;
 use zerocal_fuzz::{close, same_number};
 use zerocal_procedure::log::{
@@ -29,7 +29,7 @@ fuzz_target!(|data: &[u8]| {
     let core_export = read_with(text, &parse, true);
     let core_log = read_with(text, &parse, false);
     let host_export = zerocal_cli::session::read_export(text);
-    let host_log = zerocal_cli::log::read_log(text.as_bytes());
+    let host_log = zerocal_cli::log_file::read_log(text.as_bytes());
     if disagree.get() {
         return;
     }

@@ -444,12 +444,16 @@ pub fn status<T: Real>(
     Some(r.map(|()| w))
 }
 
+/// The header of a plan's CSV: what `zerocal plan --csv` writes first, `plan` prints
+/// and `plan set` skips.
+pub const PLAN_CSV_HEADER: &str = "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg";
+
 /// The lines of `plan`: every joint in degrees under the header `zerocal plan --csv`
 /// writes, so that what `plan` shows, sent back with `plan set`, is the same plan.
 pub fn plan_line<T: Real>(plan: &PoseList<T>, line: usize) -> Option<Result<Line, fmt::Error>> {
     let mut w = Line::new();
     let r = if line == 0 {
-        w.write_str("j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg")
+        w.write_str(PLAN_CSV_HEADER)
     } else {
         let q = plan.get(line - 1)?;
         (|| {

@@ -9,11 +9,9 @@ use crate::args::{CountIn, RealIn, SEED};
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;
-use zerocal_core::model::Convention;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
-    budget, solve, BiasSource, Budget, BudgetInputs, BudgetTerm, SessionReadings, SessionSolution,
-    StageTemperatures, SESSION_JOINTS,
+    budget, solve, Budget, BudgetInputs, BudgetTerm, SessionSolution, SESSION_JOINTS,
 };
 use zerocal_profile::Profile;
 use zerocal_sim::montecarlo::{self, Method, DEFAULT_POSES};
@@ -178,19 +176,7 @@ pub fn run_session(
     let (plan, fit) = montecarlo::setup(&profile, Method::Compensated, poses)
         .map_err(|e| CliError::Refused(format!("plan: {e}")))?;
     let session = RealSession::simulate(&profile, &plan, world, seed);
-    let readings = SessionReadings {
-        convention: Convention::Axis,
-        arm: profile.arm,
-        masses: profile.mass_model(),
-        bias: BiasSource::Reversal(session.stage0),
-        stage1: session.stage1,
-        poses: &session.poses,
-        temperatures: StageTemperatures {
-            stage0_c: Some(session.stage0_temperature_c),
-            stage1_c: Some(session.stage1_temperature_c),
-        },
-        closing: world.closing_reversal.then_some(session.closing),
-    };
+    let readings = session.readings(&profile, world);
     if session.outside_range > 0 {
         return Err(CliError::Refused(format!(
             "{} capture(s) left the SCL3300's mode-4 range of +/-10 deg: the pendant refuses them",
