@@ -174,3 +174,72 @@ fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
     assert!(!jbi.exists());
     assert!(!out.exists());
 }
+
+/// `zerocal plan`'s flags, parsed as the command line parses them.
+fn plan_args(flags: &[&str]) -> zerocal_cli::plan::PlanArgs {
+    use clap::Parser;
+    #[derive(Parser)]
+    struct Wrap {
+        #[command(flatten)]
+        args: zerocal_cli::plan::PlanArgs,
+    }
+    let mut v = vec!["plan"];
+    v.extend_from_slice(flags);
+    Wrap::try_parse_from(v)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .args
+}
+
+/// A limits file listing only A1 leaves the KR 6's A5 at its own ±120° (not ±180°),
+/// and `zerocal program` takes the plan made with it; a range wider than the
+/// profile's is refused naming the joint.
+#[test]
+fn a_partial_limits_file_keeps_the_profiles_other_limits() {
+    let dir = std::env::temp_dir().join(format!("zerocal-plan-a1-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let f = dir.join("limits.csv");
+    let _ = std::fs::write(&f, "joint,min_deg,max_deg\nA1,-160,160\n");
+    let path = f.to_string_lossy().into_owned();
+    let a = plan_args(&["--robot", "kuka-kr6-r900-sixx", "--limits", &path]);
+    let sp = zerocal_cli::plan::make_plan(&a).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        (sp.profile.joints[0].min_deg, sp.profile.joints[0].max_deg),
+        (-160.0, 160.0)
+    );
+    for q in &sp.plan.poses_rad {
+        let a5 = q[4].to_degrees();
+        // The planner keeps the approach's 1° and the overshoot's 4° inside ±120°.
+        assert!((-119.0..=116.0).contains(&a5), "A5 at {a5} deg");
+    }
+    assert!(sp.program_refused.is_none(), "{:?}", sp.program_refused);
+    let csv = dir.join("plan.csv");
+    let rows: String = sp
+        .plan
+        .poses_rad
+        .iter()
+        .map(|q| {
+            let r: Vec<String> = q.iter().map(|v| format!("{:.6}", v.to_degrees())).collect();
+            r.join(",") + "\n"
+        })
+        .collect();
+    let _ = std::fs::write(
+        &csv,
+        format!("{}\n{rows}", zerocal_procedure::link::PLAN_CSV_HEADER),
+    );
+    let program = zerocal_cli::program::ProgramArgs {
+        robot: "kuka-kr6-r900-sixx".into(),
+        plan: Some(csv),
+        format: zerocal_cli::program::Format::Krl,
+        out: dir.join("zc.src"),
+        timing: TimingArgs::default(),
+    };
+    let wrote = zerocal_cli::program::run(&program).unwrap_or_else(|e| panic!("{e}"));
+    assert!(wrote.starts_with("wrote"), "{wrote}");
+    let _ = std::fs::write(&f, "A5,-150,150\n");
+    let e = zerocal_cli::plan::make_plan(&a).unwrap_err().to_string();
+    assert!(
+        e.contains("A5 (joint 5)") && e.contains("-120..120") && e.contains("only narrows"),
+        "{e}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
