@@ -64,10 +64,16 @@ fn top_module(src: &Path, file: &Path) -> String {
     first.trim_end_matches(".rs").to_string()
 }
 
-/// The `crate::name` paths a file's code uses (comments skipped).
+/// The `crate::name` paths a file's code uses: comments skipped, and its unit tests
+/// (from `#[cfg(test)]` before `mod tests` on), which may drive any module.
 fn crate_imports(text: &str) -> BTreeSet<String> {
     let mut out = BTreeSet::new();
-    for line in text.lines() {
+    let lines: Vec<&str> = text.lines().collect();
+    let end = lines
+        .windows(2)
+        .position(|w| w[0].trim() == "#[cfg(test)]" && w[1].trim_start().starts_with("mod tests"))
+        .unwrap_or(lines.len());
+    for line in &lines[..end] {
         let code = line.split("//").next().unwrap_or("");
         let mut rest = code;
         while let Some(i) = rest.find("crate::") {

@@ -130,9 +130,6 @@ pub fn narrow_limits(mut profile: Profile, text: &str, name: &str) -> Result<Pro
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::args::test_args as args;
-    use crate::plan::make_plan;
-    use crate::timing::TimingArgs;
 
     #[test]
     fn limits_file_parses_and_names_bad_lines() {
