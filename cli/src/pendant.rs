@@ -247,7 +247,8 @@ impl Expect {
         match self {
             Expect::Status => Command::Status.word(),
             Expect::Export => Command::Export.word(),
-            Expect::Erased => Command::Erase.word(),
+            // The action's name (`zerocal pendant erase`), as the messages say it.
+            Expect::Erased => "erase",
             Expect::ProfileStored(_) => Command::ProfileSet.word(),
             Expect::PlanStored(_) => Command::PlanSet.word(),
         }
