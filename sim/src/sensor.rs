@@ -51,7 +51,8 @@ pub struct Scl3300Spec {
     /// Non-linearity, ± (g at 1 g, cubic): SCA3300 Table 2 footnote C, ±1 mg over ±1 g
     /// (no SCL3300 figure found). A cubic term reaches 0.005 mg within mode 4's ±10°.
     pub nonlinearity_g: f64,
-    /// RMS noise at the output in mode 4, X and Y (g): 0.08 mg X (and Z), 0.06 mg Y
+    /// RMS noise at the output in mode 4, X and Y (g): the chip crate's
+    /// `MODE4_NOISE_RMS_G`, 0.08 mg X (and Z), 0.06 mg Y
     /// (SCL3300 Doc. 4921 Table 2, second-hand via NuttX and the Rev. 2 notes).
     pub noise_g: [f64; 2],
     /// Output filter corner (Hz): 10 Hz in modes 3-4 (NuttX `g_scl3300_modes[]`); first
@@ -81,7 +82,7 @@ impl Scl3300Spec {
         offset_y_g: (-0.025, 0.020),
         drift_g_per_k: 1.57e-4,
         nonlinearity_g: 0.001,
-        noise_g: [0.08e-3, 0.06e-3],
+        noise_g: zerocal_scl3300::spec::MODE4_NOISE_RMS_G,
         filter_hz: 10.0,
         angle_lsb_deg: 90.0 / 16384.0,
         temp_lsb_per_c: 18.9,
