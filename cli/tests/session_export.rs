@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use zerocal_profile::Profile;
 use zerocal_sim::scenario::{self, pendant};
-use zerocal_sim::world::{Approach, RealSession, WorldConfig};
+use zerocal_sim::world::{ApproachScheme, RealSession, WorldConfig};
 
 fn dir() -> PathBuf {
     let d = std::env::temp_dir().join(format!("zerocal-session-export-{}", std::process::id()));
@@ -202,7 +202,7 @@ fn stage_1_joint_2_disagreeing_with_the_rows_is_refused() {
 #[test]
 fn poses_captured_from_one_side_are_refused() {
     let world = WorldConfig {
-        approach: Approach::Consistent,
+        approach: ApproachScheme::Consistent,
         ..WorldConfig::real()
     };
     let text = simulated(&world, 35).export_text("kuka-kr6-r900-sixx");

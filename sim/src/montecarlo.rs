@@ -185,7 +185,7 @@ pub fn summarise(outcomes: &[SessionOutcome], limit_deg: f64) -> Summary {
 /// closing reversal.
 pub fn world_for(method: Method, mut world: WorldConfig) -> WorldConfig {
     if method == Method::Uncompensated {
-        world.approach = crate::world::Approach::Consistent;
+        world.approach = crate::world::ApproachScheme::Consistent;
         world.closing_reversal = false;
     }
     world

@@ -211,7 +211,7 @@ impl UnitErrors {
 
 /// One capture: the mean of the samples, and what the pendant would refuse.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Capture {
+pub struct UnitCapture {
     /// Mean angle reading in the pendant's `axis` convention (rad): (ANG_X, ANG_Y).
     pub reading: Tilt<f64>,
     /// Mean die temperature as read (°C).
@@ -222,7 +222,7 @@ pub struct Capture {
 
 /// A simulated SCL3300 unit with its noise state.
 #[derive(Clone, Debug)]
-pub struct Scl3300 {
+pub struct Scl3300Unit {
     /// The capture process's figures.
     pub spec: Scl3300Spec,
     /// Which sources are on.
@@ -238,11 +238,11 @@ fn chip_from_pendant(u: &Vector3<f64>) -> Vector3<f64> {
     Vector3::new(u.y, -u.x, u.z)
 }
 
-impl Scl3300 {
+impl Scl3300Unit {
     /// A unit drawn from the datasheet's ranges with the given sources on.
     pub fn draw(sources: SensorSources, rng: &mut ChaCha8Rng) -> Self {
         let spec = Scl3300Spec::DATASHEET;
-        Scl3300 {
+        Scl3300Unit {
             errors: UnitErrors::draw(&spec, sources, rng),
             spec,
             sources,
@@ -252,7 +252,7 @@ impl Scl3300 {
 
     /// A unit with given errors.
     pub fn with_errors(errors: UnitErrors, sources: SensorSources) -> Self {
-        Scl3300 {
+        Scl3300Unit {
             spec: Scl3300Spec::DATASHEET,
             sources,
             errors,
@@ -293,7 +293,7 @@ impl Scl3300 {
         up_in_pendant: &Vector3<f64>,
         temperature_c: f64,
         rng: &mut ChaCha8Rng,
-    ) -> Capture {
+    ) -> UnitCapture {
         let spec = self.spec;
         let a = self.acceleration(up_in_pendant, temperature_c);
         // A first-order filter of corner f has τ = 1/(2πf); samples dt apart correlate
@@ -330,7 +330,7 @@ impl Scl3300 {
         } else {
             temperature_c
         };
-        Capture {
+        UnitCapture {
             reading: Tilt::new(sum[0] / n as f64, sum[1] / n as f64),
             temperature_c: temp,
             outside_range: outside,
@@ -364,7 +364,7 @@ mod tests {
 
     #[test]
     fn an_ideal_unit_reads_the_axis_convention() {
-        let s = Scl3300::with_errors(UnitErrors::ideal(), SensorSources::NONE);
+        let s = Scl3300Unit::with_errors(UnitErrors::ideal(), SensorSources::NONE);
         let u = Vector3::new(0.1_f64, -0.05, 1.0).normalize();
         let t = s.exact(&u, 23.0);
         let want = zerocal_core::model::Convention::Axis.read(&u);
@@ -376,7 +376,7 @@ mod tests {
         // 4000 captures: the sample σ of a σ estimate is σ/√(2·4000) = 1.1 %; 5 % is
         // 4.5 of those.
         let mut rng = ChaCha8Rng::seed_from_u64(7);
-        let mut s = Scl3300::with_errors(
+        let mut s = Scl3300Unit::with_errors(
             UnitErrors::ideal(),
             SensorSources {
                 noise: true,
@@ -413,8 +413,8 @@ mod tests {
         // by 20 mg / cos(10°) in sine terms: ~0.018° more than an angle offset would.
         let mut e = UnitErrors::ideal();
         e.offset_g = Vector3::new(0.020, 0.0, 0.0);
-        let s = Scl3300::with_errors(e, SensorSources::NONE);
-        let ideal = Scl3300::with_errors(UnitErrors::ideal(), SensorSources::NONE);
+        let s = Scl3300Unit::with_errors(e, SensorSources::NONE);
+        let ideal = Scl3300Unit::with_errors(UnitErrors::ideal(), SensorSources::NONE);
         let level = s.exact(&Vector3::z(), 23.0).x_rad / DEG;
         assert!((level - 0.020f64.atan() / DEG).abs() < 1e-9, "{level}");
         let tilted = Vector3::new(0.0, (10.0 * DEG).sin(), (10.0 * DEG).cos());
@@ -425,7 +425,7 @@ mod tests {
     #[test]
     fn flags_readings_outside_mode_4_range() {
         let mut rng = ChaCha8Rng::seed_from_u64(1);
-        let mut s = Scl3300::with_errors(UnitErrors::ideal(), SensorSources::NONE);
+        let mut s = Scl3300Unit::with_errors(UnitErrors::ideal(), SensorSources::NONE);
         let inside = Vector3::new(0.0, (-9.0 * DEG).sin(), (9.0 * DEG).cos());
         let outside = Vector3::new((11.0 * DEG).sin(), 0.0, (11.0 * DEG).cos());
         assert!(!s.capture(&inside, 23.0, &mut rng).outside_range);

@@ -9,7 +9,7 @@
 //! records.
 
 use crate::robot::{RobotErrors, RobotSources, RobotSpec};
-use crate::sensor::{Capture, Scl3300, SensorSources};
+use crate::sensor::{Scl3300Unit, SensorSources, UnitCapture};
 use crate::SimRobot;
 use nalgebra::{Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
@@ -24,7 +24,7 @@ use zerocal_profile::Profile;
 
 /// How each stage-2 pose is approached.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Approach {
+pub enum ApproachScheme {
     /// Every pose is captured twice, every joint arriving first moving positive, then
     /// moving negative: the mean reading is at the middle of each gear's play.
     BothSides,
@@ -56,7 +56,7 @@ pub struct WorldConfig {
     /// A loose flange bracket: a fresh random seat within ± this (deg) at every pose.
     pub loose_bracket_deg: f64,
     /// How poses are approached.
-    pub approach: Approach,
+    pub approach: ApproachScheme,
     /// Whether the pendant is reversed on the bench again after stage 2 (it measures
     /// the bias' drift with temperature).
     pub closing_reversal: bool,
@@ -79,7 +79,7 @@ impl WorldConfig {
             warming_tau_s: 600.0,
             mount_tolerance_deg: 0.0,
             loose_bracket_deg: 0.0,
-            approach: Approach::BothSides,
+            approach: ApproachScheme::BothSides,
             closing_reversal: true,
             max_offset_deg: 0.5,
             max_base_tilt_deg: 0.5,
@@ -130,7 +130,7 @@ pub struct RealSession {
     /// The robot (truth: offsets, base tilt, its errors).
     pub robot: SimRobot,
     /// The sensor unit (truth: its errors).
-    pub sensor: Scl3300,
+    pub sensor: Scl3300Unit,
     /// Stage 0's reversal.
     pub stage0: Reversal<f64>,
     /// Stage 0's mean temperature (°C).
@@ -245,15 +245,15 @@ impl RealSession {
             offsets_rad,
             errors,
         };
-        let mut sensor = Scl3300::draw(world.sensor, &mut rng);
+        let mut sensor = Scl3300Unit::draw(world.sensor, &mut rng);
         let timeline = Timeline::default();
         let temperature = |t_s: f64| {
             world.ambient_c + world.warming_k * (1.0 - (-t_s / world.warming_tau_s.max(1.0)).exp())
         };
         let mut outside_range = 0;
         let mut take =
-            |sensor: &mut Scl3300, r: &Rotation3<f64>, t_s: f64, rng: &mut ChaCha8Rng| {
-                let c: Capture = sensor.capture(&up_in_sensor(r), temperature(t_s), rng);
+            |sensor: &mut Scl3300Unit, r: &Rotation3<f64>, t_s: f64, rng: &mut ChaCha8Rng| {
+                let c: UnitCapture = sensor.capture(&up_in_sensor(r), temperature(t_s), rng);
                 if c.outside_range {
                     outside_range += 1;
                 }
@@ -287,12 +287,12 @@ impl RealSession {
         let mut turned = q1;
         turned[0] += core::f64::consts::PI;
         let approaches: &[[i8; JOINTS]] = match world.approach {
-            Approach::BothSides => &[[1; JOINTS], [-1; JOINTS]],
-            Approach::Consistent | Approach::FromPrevious => &[[1; JOINTS]],
+            ApproachScheme::BothSides => &[[1; JOINTS], [-1; JOINTS]],
+            ApproachScheme::Consistent | ApproachScheme::FromPrevious => &[[1; JOINTS]],
         };
         let mut stage1_temps = Vec::new();
         let mut upper =
-            |q: &[f64; JOINTS], t_s: f64, rng: &mut ChaCha8Rng, sensor: &mut Scl3300| {
+            |q: &[f64; JOINTS], t_s: f64, rng: &mut ChaCha8Rng, sensor: &mut Scl3300Unit| {
                 let mut sum = Tilt::new(0.0, 0.0);
                 for a in approaches {
                     let reached = robot.reached_joints(q, a, rng);
@@ -325,7 +325,7 @@ impl RealSession {
         let mut t_s = timeline.stage2_start_s;
         for q in plan {
             let these: Vec<[i8; JOINTS]> = match world.approach {
-                Approach::FromPrevious => {
+                ApproachScheme::FromPrevious => {
                     vec![core::array::from_fn(|k| {
                         if q[k] >= previous[k] {
                             1

@@ -108,7 +108,7 @@ impl<T: Real> Default for FitConfig<T> {
 /// One capture's noise in mode 4 (deg, 1σ): 0.08 mg RMS on the chip's X (0.06 mg on Y)
 /// behind its 10 Hz first-order filter, 40 samples read at 20 Hz and averaged, plus the
 /// angle registers' 90/2¹⁴ deg LSB: 0.00080° (x) and 0.00062° (y), the larger taken
-/// (`zerocal_sim::sensor::Scl3300::capture_sigma_rad` derives it).
+/// (`zerocal_sim::sensor::Scl3300Unit::capture_sigma_rad` derives it).
 pub const MEMS_CAPTURE_NOISE_DEG: f64 = 0.0008;
 
 /// Mode 4's specified range (deg): the SCL3300 in its low-noise inclination mode is

@@ -127,7 +127,7 @@ pub struct Stage2Model<T: Real> {
 
 /// The SCL3300's x reading σ over its y reading σ for one capture:
 /// 0.00080° / 0.00062° (mode 4's 0.08 and 0.06 mg through the 40-sample mean, with the
-/// quantisation that both share; `zerocal_sim::sensor::Scl3300::capture_sigma_rad`).
+/// quantisation that both share; `zerocal_sim::sensor::Scl3300Unit::capture_sigma_rad`).
 pub const MEMS_Y_WEIGHT: f64 = 0.000_796 / 0.000_620;
 
 impl<T: Real> Default for Stage2Model<T> {
