@@ -78,16 +78,16 @@ impl Scl3300Spec {
     pub const DATASHEET: Scl3300Spec = Scl3300Spec {
         sensitivity: 0.007,
         cross_axis: 0.01,
-        offset_g: 0.020,
+        offset_g: zerocal_scl3300::spec::OFFSET_X_SPEC_G,
         offset_y_g: (-0.025, 0.020),
         drift_g_per_k: 1.57e-4,
         nonlinearity_g: 0.001,
         noise_g: zerocal_scl3300::spec::MODE4_NOISE_RMS_G,
         filter_hz: 10.0,
-        angle_lsb_deg: 90.0 / 16384.0,
+        angle_lsb_deg: zerocal_scl3300::ANGLE_LSB_DEG as f64,
         temp_lsb_per_c: 18.9,
-        range_deg: 10.0,
-        read_hz: 20.0,
+        range_deg: zerocal_scl3300::spec::MODE4_RANGE_DEG,
+        read_hz: 1000.0 / zerocal_procedure::stillness::SAMPLE_PERIOD_MS as f64,
         samples: 40,
     };
 }
