@@ -383,7 +383,7 @@ pub struct Outcome<T: Real> {
 pub struct LastResult<T> {
     /// Δθ3..Δθ6 (rad).
     pub offsets_rad: [T; WRIST_JOINTS],
-    /// Their 1σ (rad).
+    /// Their 1σ (rad), from the session's covariance.
     pub sigma_rad: [T; WRIST_JOINTS],
     /// Δθ2 (rad).
     pub delta_theta2_rad: T,
@@ -719,9 +719,12 @@ fn after_capture_in_stage2<T: Real>(
 fn finish<T: Real>(config: &ProcedureConfig<T>, s: &mut ProcedureState<T>, out: &mut Output<T>) {
     let outcome = s.compute(config);
     if let Ok(r) = &outcome.result {
+        // The session's numbers: Δθ3..Δθ6 and their 1σ from its full covariance (stage-2
+        // noise and what stages 0-1 hand over), as the result screen shows them.
+        let sigma = r.sigma_rad();
         let last = LastResult {
-            offsets_rad: r.fit.offsets_rad,
-            sigma_rad: r.fit.sigma_rad,
+            offsets_rad: core::array::from_fn(|k| r.offsets_rad[k + 1]),
+            sigma_rad: core::array::from_fn(|k| sigma[k + 1]),
             delta_theta2_rad: r.offsets_rad[0],
             residual_rms_rad: r.fit.residual_rms_rad,
         };

@@ -516,18 +516,28 @@ impl<T: Real> ProcedureState<T> {
             // Both hold MAX_CAPTURES.
             let _ = poses.push(*p);
         }
-        let result = match self.readings(config, &poses) {
-            Some(readings) => session::solve(&readings, &config.fit).result,
+        // Every number the pendant shows of a finished session (the result screen, the
+        // base tilt, `status`, the stored last result) is the session solver's: its
+        // stage 1 is re-solved with the bias at stage 1's temperature, so it may differ
+        // from the first solve the procedure made to check stage 1's readings.
+        let (stage1, result) = match self.readings(config, &poses) {
+            Some(readings) => {
+                let outcome = session::solve(&readings, &config.fit);
+                (outcome.stage1.or(self.stage1), outcome.result)
+            }
             // Done without stage 1 cannot happen (restore falls back to stage 1); if it
             // did, this is what is missing.
-            None => Err(SessionError::Stage1(StageError::NonFiniteReading)),
+            None => (
+                self.stage1,
+                Err(SessionError::Stage1(StageError::NonFiniteReading)),
+            ),
         };
         let verdict = match &result {
-            Ok(r) => Verdict::judge(&r.fit, &config.fit, self.stage1.as_ref()),
+            Ok(r) => Verdict::judge(&r.fit, &config.fit, stage1.as_ref()),
             Err(_) => Verdict::default(),
         };
         Outcome {
-            stage1: self.stage1,
+            stage1,
             result,
             verdict,
         }
