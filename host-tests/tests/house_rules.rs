@@ -4,6 +4,8 @@
 //! - no import circle between the top-level modules of a crate (a module imports
 //!   another through `crate::name`; a circle means two ideas that cannot be read apart);
 //! - no Rust source file over [`MAX_SOURCE_LINES`] lines;
+//! - README's repository map names every top-level directory, and nothing the tree
+//!   lacks;
 //! - no file refers to the notes beside the repository (the parent directory's shared
 //!   folder): a user's clone has none of them.
 
@@ -237,5 +239,61 @@ fn nothing_refers_to_the_notes_beside_the_repository() {
         found.is_empty(),
         "files naming {needle}:\n{}",
         found.join("\n")
+    );
+}
+
+/// The paths README's "Repository" table names (the code spans of its first column).
+fn readme_map(readme: &str) -> BTreeSet<String> {
+    let Some(start) = readme.find("## Repository") else {
+        return BTreeSet::new();
+    };
+    let section = &readme[start..];
+    let end = section[3..].find("\n## ").map_or(section.len(), |i| i + 3);
+    section[..end]
+        .lines()
+        .filter(|l| l.starts_with("| `"))
+        .flat_map(|l| {
+            let first = l.split('|').nth(1).unwrap_or("");
+            first
+                .split('`')
+                .skip(1)
+                .step_by(2)
+                .map(|p| p.trim_end_matches('/').to_string())
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+#[test]
+fn the_readme_map_matches_the_tree() {
+    let root = repo_root();
+    let readme = fs::read_to_string(root.join("README.md")).unwrap();
+    let named = readme_map(&readme);
+    // Every directory of the repository (build output, git and editor folders aside) and
+    // every file the table names.
+    let mut dirs: BTreeSet<String> = fs::read_dir(&root)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_dir())
+        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+        .filter(|n| !n.starts_with('.') && n != "target")
+        .collect();
+    dirs.insert(".ci/run".to_string());
+    let tops: BTreeSet<String> = named
+        .iter()
+        .map(|n| {
+            if n.starts_with('.') {
+                n.clone()
+            } else {
+                n.split('/').next().unwrap_or("").to_string()
+            }
+        })
+        .collect();
+    let missing: Vec<&String> = dirs.iter().filter(|d| !tops.contains(*d)).collect();
+    assert!(missing.is_empty(), "README's map lacks {missing:?}");
+    let stale: Vec<&String> = named.iter().filter(|n| !root.join(n).exists()).collect();
+    assert!(
+        stale.is_empty(),
+        "README's map names {stale:?}, which the tree lacks"
     );
 }
