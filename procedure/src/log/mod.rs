@@ -1,0 +1,106 @@
+//! The files the pendant writes and the desktop reads, written and parsed here, once,
+//! so the firmware and the CLI cannot drift apart.
+//!
+//! **The stage-2 log** (`zerocal identify` reads it): `#` comment lines, a header
+//! naming the columns (any order, extra columns ignored), then one pose a row, the
+//! commanded joints and the raw readings in degrees:
+//!
+//! ```text
+//! # comment lines start with '#'
+//! j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg
+//! 12.5,-40.0,3.25,90.0,1.234567,-0.456789
+//! ```
+//!
+//! **The pendant's export** is such a log with the session in `#` metadata lines,
+//! `# key value…`, before the header: `robot NAME convention rpy|axis`,
+//! `stage0_bias_deg x,y`, `stage0_reversal_deg first x,y second x,y temp_c t`,
+//! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c`, `stage1_temp_c t`,
+//! stage 1's results, `closing_reversal_deg first x,y second x,y temp_c t` (the reversal
+//! after stage 2 that measures the bias' drift), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! [`MetaItem`] the metadata the session solver needs.
+//!
+//! The export is read strictly, because a line it ignores can make a session silently
+//! wrong ([`LogReader::for_export`], [`MetaKeys`]): its header [`EXPORT_HEADER`] adds the
+//! `approach` column (`below` or `above`: the side every joint arrived from) and no
+//! other column may appear; a comment whose first word has the form of a key (lowercase
+//! letters, digits and `_`, with at least one digit or `_`, see [`metadata_key`]) is a
+//! metadata line, and must be a key of [`METADATA_KEYS`], given once; any other comment
+//! (the export's first line, `# closing reversal not made`, a user's note) is free text.
+//!
+//! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
+//! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
+//!
+//! The parts: `line.rs` the fixed-capacity line every writer fills; `write.rs` the
+//! export's writer and a log row's; `read.rs` the reader of both, a line at a time;
+//! `meta.rs` the metadata lines' keys and grammar; `error.rs` what a reader refuses.
+//! This file holds what they share: the columns, the headers and the bounds.
+
+mod error;
+mod line;
+mod meta;
+mod read;
+mod write;
+
+pub use error::{LogError, ShortText};
+pub use line::{Line, LINE_BYTES};
+pub use meta::{
+    metadata_key, parse_meta, write_fit_extras, write_reversal, MetaItem, MetaKeys, METADATA_KEYS,
+};
+pub use read::{strip_bom, text_of, LogLine, LogReader};
+pub(crate) use write::result_line;
+pub use write::{export, write_export_row, write_row, Export, EXPORT_MAX_LINES};
+
+use crate::Approach;
+
+/// The columns a stage-2 log has, in the order the pendant writes them. The first six
+/// are required; `j1_deg` and `j2_deg` default to 0 (joints 1 and 2 where stage 1 had
+/// them, for a log of the paper's wrist), `temp_c` to unrecorded, `approach` (the
+/// export's: `below` or `above`) to unrecorded.
+pub const LOG_COLUMNS: [&str; 10] = [
+    "j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg", "j1_deg", "j2_deg", "temp_c",
+    "approach",
+];
+
+/// Index of `temp_c` in [`LOG_COLUMNS`].
+const TEMPERATURE_COLUMN: usize = 8;
+
+/// Index of `approach` in [`LOG_COLUMNS`].
+const APPROACH_COLUMN: usize = 9;
+
+/// How many of [`LOG_COLUMNS`] a log must have.
+const REQUIRED_COLUMNS: usize = 6;
+
+/// The header of a stage-2 log.
+pub const LOG_HEADER: &str = "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c";
+
+/// The header of the pendant's export: a stage-2 log's, and the side each capture was
+/// approached from (`below` or `above`), so the desktop can tell a pose captured from
+/// one side only.
+pub const EXPORT_HEADER: &str =
+    "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c,approach";
+
+/// The `approach` column's word for each side.
+pub fn approach_name(a: Approach) -> &'static str {
+    match a {
+        Approach::FromBelow => "below",
+        Approach::FromAbove => "above",
+    }
+}
+
+/// Temperatures a log may hold (°C): the SCL3300's operating range is −40..+125 °C.
+pub const TEMPERATURE_RANGE_C: (f64, f64) = (-60.0, 150.0);
+
+/// Largest joint command a log may hold (deg): two turns either way; beyond is a unit
+/// or column mistake.
+pub const MAX_JOINT_DEG: f64 = 720.0;
+
+/// Largest reading a log may hold (deg): an inclinometer reads ±180° at most.
+pub const MAX_READING_DEG: f64 = 180.0;
+
+/// Most columns a log row may have (extra ones are ignored, but counted).
+pub const MAX_COLUMNS: usize = 32;
+
+/// Decimals of a degree in the export: 1e-12° is 2e-14 rad, below the resolution of
+/// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the
+/// pendant's numbers, and an `f64` session's offsets move by ~1e-12° at most.
+pub const EXPORT_DECIMALS: u8 = 12;
