@@ -155,7 +155,9 @@ fn crlf(lines: &[&str]) -> Vec<u8> {
 fn whole_session() -> (zerocal_sim::pendant::SimPendant<f32>, Vec<String>) {
     let mut p = zerocal_sim::scenario::pendant::<f32>(12, 11).expect("the planner plans 12 poses");
     zerocal_sim::scenario::whole_session(&mut p);
-    let lines = zerocal_procedure::log::export(&p.session, &p.config)
+    let lines = p
+        .session
+        .export(&p.config)
         .map(|l| l.expect("line fits").as_str().to_owned())
         .collect();
     (p, lines)

@@ -221,7 +221,7 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
     let mut p = pendant::<f64>(12, 14).expect("the planner plans 12 poses");
     scenario::whole_session(&mut p);
     let mut text = String::new();
-    for line in zerocal_procedure::log::export(&p.session, &p.config) {
+    for line in p.session.export(&p.config) {
         text.push_str(line.expect("line fits").as_str());
         text.push('\n');
     }

@@ -59,7 +59,7 @@ pub enum LinkError {
         /// Row number (1-based).
         row: usize,
     },
-    /// A `plan set` angle is outside ±[`crate::log::MAX_JOINT_DEG`].
+    /// A `plan set` angle is outside ±[`crate::text::MAX_JOINT_DEG`].
     AngleOutOfRange {
         /// Row number (1-based).
         row: usize,
@@ -95,7 +95,7 @@ impl fmt::Display for LinkError {
                 write!(
                     f,
                     "plan row {row}: an angle is outside +/-{} deg; plan unchanged",
-                    crate::log::MAX_JOINT_DEG
+                    crate::text::MAX_JOINT_DEG
                 )
             }
             LinkError::JointsOneTwoMoved { row } => write!(

@@ -42,14 +42,14 @@ pub use status_read::{
 use core::fmt::{self, Write};
 use status_read::count;
 
-pub use crate::log::Line;
+pub use crate::text::Line;
 
 /// Longest command line the pendant takes, its line end included; longer lines are
 /// refused whole. A plan row of six angles with every digit fits easily.
 pub const MAX_COMMAND_BYTES: usize = 128;
 
 /// Longest reply line, its CR LF included: a [`Line`] and the line end.
-pub const REPLY_LINE_BYTES: usize = crate::log::LINE_BYTES + 2;
+pub const REPLY_LINE_BYTES: usize = crate::text::LINE_BYTES + 2;
 
 /// Lines of the `status` reply: core's [`status`] lines and the pendant's own
 /// ([`pendant_status`]).

@@ -44,7 +44,7 @@ impl<T: Real> PlanUpload<T> {
     /// Feeds one line. Blank lines and `#` comments are skipped.
     ///
     /// # Errors
-    /// A malformed row, an angle beyond ±[`crate::log::MAX_JOINT_DEG`], joints 1-2 away
+    /// A malformed row, an angle beyond ±[`crate::text::MAX_JOINT_DEG`], joints 1-2 away
     /// from stage 1's, too many or too few rows. The upload is then over and the plan
     /// unchanged.
     pub fn feed(&mut self, line: &str) -> Result<UploadStep<T>, LinkError> {
@@ -70,7 +70,7 @@ impl<T: Real> PlanUpload<T> {
         let mut count = 0;
         for field in line.split(',') {
             let deg = decimal::parse(field).ok_or(LinkError::BadPlanRow { row })?;
-            if deg.abs() > crate::log::MAX_JOINT_DEG {
+            if deg.abs() > crate::text::MAX_JOINT_DEG {
                 return Err(LinkError::AngleOutOfRange { row });
             }
             let slot = values.get_mut(count).ok_or(LinkError::BadPlanRow { row })?;

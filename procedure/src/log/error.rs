@@ -1,8 +1,7 @@
 //! What a log or export reader refuses, naming the line (and the column or key), and
 //! the short quoted word such an error carries.
 
-use super::meta::KnownKeys;
-use super::{EXPORT_HEADER, LOG_HEADER, MAX_COLUMNS};
+use super::{KnownKeys, EXPORT_HEADER, LOG_HEADER, MAX_COLUMNS};
 use crate::export_trailer::TrailerError;
 use core::fmt;
 

@@ -2,8 +2,10 @@
 //! grammar (written by [`write_reversal`] and [`write_fit_extras`], read by
 //! [`parse_meta`]), and the check that each is given once ([`MetaKeys`]).
 
-use super::write::deg;
-use super::{Line, LogError, ShortText, MAX_JOINT_DEG, MAX_READING_DEG, TEMPERATURE_RANGE_C};
+use super::{
+    deg, Line, LogError, ShortText, MAX_JOINT_DEG, MAX_READING_DEG, METADATA_KEYS,
+    TEMPERATURE_RANGE_C,
+};
 use core::fmt::{self, Write};
 use zerocal_core::decimal::Fixed;
 use zerocal_core::model::{Convention, Tilt};
@@ -16,7 +18,7 @@ use zerocal_core::stage2::Extras;
 #[derive(Clone, Debug, PartialEq)]
 pub enum MetaItem<T> {
     /// `# robot NAME convention rpy|axis`.
-    Robot(crate::RobotName, Convention),
+    Robot(crate::text::RobotName, Convention),
     /// `# stage0_bias_deg x,y` (`None` for `none`).
     Bias(Option<Tilt<T>>),
     /// `# stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` (`None` for
@@ -108,7 +110,7 @@ pub fn parse_meta<T: Real>(
     let item = match key {
         "robot" => {
             let bad = LogError::BadMetadata { line, key: "robot" };
-            let mut name = crate::RobotName::new();
+            let mut name = crate::text::RobotName::new();
             name.push_str(rest.next().ok_or(bad)?).map_err(|_| bad)?;
             let c = (rest.next() == Some("convention"))
                 .then(|| rest.next().and_then(Convention::parse))
@@ -256,35 +258,6 @@ pub fn parse_meta<T: Real>(
         _ => return Ok(None),
     };
     Ok(Some(item))
-}
-
-/// Every metadata key an export may hold (the first word of a `# key value…` line).
-pub const METADATA_KEYS: [&str; 10] = [
-    "robot",
-    "stage0_bias_deg",
-    "stage0_reversal_deg",
-    "stage1_readings_deg",
-    "stage1_temp_c",
-    "stage1_captures_deg",
-    "stage1",
-    "closing_reversal_deg",
-    "fit_extras",
-    "stage2",
-];
-
-/// [`METADATA_KEYS`], comma-separated, for messages.
-pub(super) struct KnownKeys;
-
-impl fmt::Display for KnownKeys {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, k) in METADATA_KEYS.iter().enumerate() {
-            if i > 0 {
-                f.write_str(", ")?;
-            }
-            f.write_str(k)?;
-        }
-        Ok(())
-    }
 }
 
 /// The key of a metadata comment (the text after `#`): its first word when that is a

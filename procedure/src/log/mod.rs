@@ -30,27 +30,30 @@
 //! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
 //! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
 //!
-//! The parts: `line.rs` the fixed-capacity line every writer fills; `write.rs` the
+//! The parts: `write.rs` the
 //! export's writer and a log row's; `read.rs` the reader of both, a line at a time;
 //! `meta.rs` the metadata lines' keys and grammar; `error.rs` what a reader refuses.
 //! This file holds what they share: the columns, the headers and the bounds.
 
 mod error;
-mod line;
 mod meta;
 mod read;
 mod write;
 
+pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
 pub use error::{LogError, ShortText};
-pub use line::{Line, LINE_BYTES};
-pub use meta::{
-    metadata_key, parse_meta, write_fit_extras, write_reversal, MetaItem, MetaKeys, METADATA_KEYS,
-};
+pub use meta::{metadata_key, parse_meta, write_fit_extras, write_reversal, MetaItem, MetaKeys};
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;
-pub use write::{export, write_export_row, write_row, Export, EXPORT_MAX_LINES};
+pub use write::{
+    export, write_export_row, write_row, CaptureRows, Export, ExportSession, EXPORT_MAX_LINES,
+};
 
-use crate::Approach;
+use core::fmt::{self, Write};
+use zerocal_core::capture::Approach;
+use zerocal_core::decimal::Fixed;
+use zerocal_core::model::Tilt;
+use zerocal_core::real::{rad_to_deg, Real};
 
 /// The columns a stage-2 log has, in the order the pendant writes them. The first six
 /// are required; `j1_deg` and `j2_deg` default to 0 (joints 1 and 2 where stage 1 had
@@ -81,18 +84,11 @@ pub const EXPORT_HEADER: &str =
 
 /// The `approach` column's word for each side.
 pub fn approach_name(a: Approach) -> &'static str {
-    match a {
-        Approach::FromBelow => "below",
-        Approach::FromAbove => "above",
-    }
+    a.word()
 }
 
 /// Temperatures a log may hold (°C): the SCL3300's operating range is −40..+125 °C.
 pub const TEMPERATURE_RANGE_C: (f64, f64) = (-60.0, 150.0);
-
-/// Largest joint command a log may hold (deg): two turns either way; beyond is a unit
-/// or column mistake.
-pub const MAX_JOINT_DEG: f64 = 720.0;
 
 /// Largest reading a log may hold (deg): an inclinometer reads ±180° at most.
 pub const MAX_READING_DEG: f64 = 180.0;
@@ -104,3 +100,50 @@ pub const MAX_COLUMNS: usize = 32;
 /// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the
 /// pendant's numbers, and an `f64` session's offsets move by ~1e-12° at most.
 pub const EXPORT_DECIMALS: u8 = 12;
+
+/// Every metadata key an export may hold (the first word of a `# key value…` line).
+pub const METADATA_KEYS: [&str; 10] = [
+    "robot",
+    "stage0_bias_deg",
+    "stage0_reversal_deg",
+    "stage1_readings_deg",
+    "stage1_temp_c",
+    "stage1_captures_deg",
+    "stage1",
+    "closing_reversal_deg",
+    "fit_extras",
+    "stage2",
+];
+
+/// [`METADATA_KEYS`], comma-separated, for messages.
+struct KnownKeys;
+
+impl fmt::Display for KnownKeys {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, k) in METADATA_KEYS.iter().enumerate() {
+            if i > 0 {
+                f.write_str(", ")?;
+            }
+            f.write_str(k)?;
+        }
+        Ok(())
+    }
+}
+
+/// Writes `rad` in degrees with [`EXPORT_DECIMALS`] decimals: the one number format
+/// of the export's rows and metadata.
+fn deg<T: Real>(w: &mut Line, rad: T) -> fmt::Result {
+    // In f64, whatever T is: the f32 value converts exactly.
+    write!(
+        w,
+        "{}",
+        Fixed::new(rad_to_deg(rad.to_f64()), EXPORT_DECIMALS)
+    )
+}
+
+/// Writes `x,y` in degrees.
+fn pair<T: Real>(w: &mut Line, t: &Tilt<T>) -> fmt::Result {
+    deg(w, t.x_rad)?;
+    w.write_char(',')?;
+    deg(w, t.y_rad)
+}

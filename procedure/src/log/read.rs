@@ -7,7 +7,7 @@ use super::{
     REQUIRED_COLUMNS, TEMPERATURE_COLUMN, TEMPERATURE_RANGE_C,
 };
 use crate::export_trailer::{Trailer, TrailerSum};
-use crate::Approach;
+use zerocal_core::capture::Approach;
 use zerocal_core::model::Tilt;
 use zerocal_core::real::{deg_to_rad, Real};
 use zerocal_core::stage2::PoseReading;
@@ -186,11 +186,9 @@ impl LogReader {
                     continue;
                 }
                 if k == APPROACH_COLUMN {
-                    approach = Some(match field.trim() {
-                        "below" => Approach::FromBelow,
-                        "above" => Approach::FromAbove,
-                        _ => return Err(LogError::BadApproach { line }),
-                    });
+                    approach = Some(
+                        Approach::from_word(field.trim()).ok_or(LogError::BadApproach { line })?,
+                    );
                     continue;
                 }
                 let v = parse(field.trim()).ok_or(LogError::NotANumber { line, column })?;

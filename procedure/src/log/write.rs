@@ -2,29 +2,74 @@
 //! row and an export's row, and the degree format they share.
 
 use super::meta::{write_fit_extras, write_reversal};
-use super::{approach_name, Line, EXPORT_DECIMALS, EXPORT_HEADER};
+use super::{approach_name, deg, pair, Line, EXPORT_HEADER};
+use crate::capture::Capture;
 use crate::export_trailer::TrailerSum;
-use crate::{Approach, ProcedureConfig, ProcedureState, ReadingSlot};
 use core::fmt::{self, Write};
+use zerocal_core::capture::{Approach, CaptureIndex};
 use zerocal_core::decimal::Fixed;
-use zerocal_core::model::Tilt;
-use zerocal_core::real::{rad_to_deg, Real};
-use zerocal_core::stage2::{FitResult, PoseReading};
+use zerocal_core::model::Convention;
+use zerocal_core::real::Real;
+use zerocal_core::session::{BiasSource, SessionError, SessionSolution, StageTemperatures};
+use zerocal_core::stage0::ClosingReversal;
+use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
+use zerocal_core::stage2::{Extras, FitResult, PoseReading};
 
-pub(super) fn deg<T: Real>(w: &mut Line, rad: T) -> fmt::Result {
-    // In f64, whatever T is: the f32 value converts exactly.
-    write!(
-        w,
-        "{}",
-        Fixed::new(rad_to_deg(rad.to_f64()), EXPORT_DECIMALS)
-    )
+/// What the pendant's export holds: the session's readings in the shape the session
+/// solver takes them (`zerocal_core::session::SessionReadings`, less the arm and masses
+/// the desktop takes from the robot profile; stage 1 optional, as an export may be
+/// taken before it), and what the export carries besides: the robot's name, stage 1's
+/// single captures and result, the fit's terms and the pendant's result. The procedure
+/// builds it; the writer reads nothing else.
+#[derive(Clone, Copy)]
+pub struct ExportSession<'a, T: Real, R> {
+    /// The robot profile's name.
+    pub robot: &'a str,
+    /// The sensor's reading convention.
+    pub convention: Convention,
+    /// Stage 0: this session's reversal, a bias kept from an earlier one, or none.
+    pub bias: BiasSource<T>,
+    /// Stage 1's half turn with the commanded joints 1 and 2, once taken.
+    pub stage1: Option<AxisOneTurn<T>>,
+    /// The sensor's temperature at stages 0 and 1, where recorded.
+    pub temperatures: StageTemperatures<T>,
+    /// The reversal after stage 2, if made.
+    pub closing: Option<ClosingReversal<T>>,
+    /// Stage 2: every capture, in the order taken, with its index in the plan.
+    pub captures: R,
+    /// Stage 1's single captures, `[before, after]` × `[below, above]`, for the record
+    /// (the solver takes the means of each pair, [`Self::stage1`]).
+    pub stage1_captures: [[Option<Capture<T>>; 2]; 2],
+    /// Stage 1's result on the pendant, for the record.
+    pub stage1_result: Option<Stage1Result<T>>,
+    /// The terms the pendant's fit estimated, so the desktop solves with the same.
+    pub fit_extras: Extras,
+    /// The pendant's result, once the session is done.
+    pub result: Option<&'a Result<SessionSolution<T>, SessionError>>,
 }
 
-/// The lines of `export`, produced one at a time so the link can send each before
+/// The stage-2 captures of an export, in the order taken: whatever the procedure keeps
+/// them in, each with its [`CaptureIndex`].
+pub trait CaptureRows<T> {
+    /// How many captures.
+    fn count(&self) -> usize;
+    /// Capture `i` (in the order taken) with its index; `None` past the end.
+    fn capture(&self, i: usize) -> Option<(CaptureIndex, PoseReading<T>)>;
+}
+
+impl<T: Copy> CaptureRows<T> for &[(CaptureIndex, PoseReading<T>)] {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn capture(&self, i: usize) -> Option<(CaptureIndex, PoseReading<T>)> {
+        self.get(i).copied()
+    }
+}
+
+/// The lines of an export, produced one at a time so the link can send each before
 /// formatting the next.
-pub struct Export<'a, T: Real> {
-    state: &'a ProcedureState<T>,
-    config: &'a ProcedureConfig<T>,
+pub struct Export<'a, T: Real, R> {
+    session: ExportSession<'a, T, R>,
     line: usize,
     /// The lines written so far, for the trailer.
     sum: TrailerSum,
@@ -32,14 +77,10 @@ pub struct Export<'a, T: Real> {
     ended: bool,
 }
 
-/// Starts an export.
-pub fn export<'a, T: Real>(
-    state: &'a ProcedureState<T>,
-    config: &'a ProcedureConfig<T>,
-) -> Export<'a, T> {
+/// Starts an export of `session`.
+pub fn export<T: Real, R: CaptureRows<T>>(session: ExportSession<'_, T, R>) -> Export<'_, T, R> {
     Export {
-        state,
-        config,
+        session,
         line: 0,
         sum: TrailerSum::new(),
         ended: false,
@@ -52,71 +93,58 @@ const EXPORT_HEAD: usize = 11;
 /// trailer.
 pub const EXPORT_MAX_LINES: usize = EXPORT_HEAD + zerocal_core::plan::MAX_POSES + 2;
 
-/// Writes `x,y` in degrees.
-fn pair<T: Real>(w: &mut Line, t: &Tilt<T>) -> fmt::Result {
-    deg(w, t.x_rad)?;
-    w.write_char(',')?;
-    deg(w, t.y_rad)
-}
-
-impl<T: Real> Export<'_, T> {
+impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
-        let s = self.state;
+        let s = &self.session;
         match i {
             0 => w.write_str("# zerocal pendant export: read it with 'zerocal session'"),
-            1 => write!(
-                w,
-                "# robot {} convention {}",
-                self.config.robot,
-                self.config.convention.name()
-            ),
+            1 => write!(w, "# robot {} convention {}", s.robot, s.convention.name()),
             // This session's reversal when it ran (the bias and its temperature follow
             // from it); else the bias an earlier session stored, if any.
-            2 => match (s.stage0_skipped(), s.stage0_reversal(), s.bias()) {
-                (false, Some(r), _) => write_reversal(w, "stage0_reversal_deg", &r),
-                (_, _, Some(b)) => {
+            2 => match s.bias {
+                BiasSource::Reversal(reversal) => write_reversal(
+                    w,
+                    "stage0_reversal_deg",
+                    &ClosingReversal {
+                        reversal,
+                        temperature_c: s.temperatures.stage0_c,
+                    },
+                ),
+                BiasSource::Stored(b) => {
                     w.write_str("# stage0_bias_deg ")?;
                     pair(w, &b)
                 }
-                _ => w.write_str("# stage0_bias_deg none"),
+                BiasSource::Unknown => w.write_str("# stage0_bias_deg none"),
             },
-            3 => match s.stage1_readings() {
-                Some((a, b)) => {
+            3 => match s.stage1 {
+                Some(t) => {
                     w.write_str("# stage1_readings_deg before ")?;
-                    pair(w, &a.reading)?;
+                    pair(w, &t.before)?;
                     w.write_str(" after ")?;
-                    pair(w, &b.reading)?;
+                    pair(w, &t.after)?;
                     w.write_str(" j1_deg ")?;
-                    deg(w, self.config.stage1_joints_rad[0])?;
+                    deg(w, t.j1_rad)?;
                     w.write_str(" j2_deg ")?;
-                    deg(w, self.config.stage1_joints_rad[1])
+                    deg(w, t.j2_rad)
                 }
                 None => w.write_str("# stage1_readings_deg none"),
             },
-            4 => match s.stage_temperatures().stage1_c {
+            4 => match s.temperatures.stage1_c {
                 Some(c) => write!(w, "# stage1_temp_c {}", Fixed::new(c.to_f64(), 2)),
                 None => w.write_str("# stage 1 temperature not recorded"),
             },
             // Every capture of stage 1, for the record: the line above holds the means
             // of each pair, which is what the solver takes.
             5 | 6 => {
-                let (name, below, above) = if i == 5 {
-                    (
-                        "before",
-                        ReadingSlot::Stage1BeforeBelow,
-                        ReadingSlot::Stage1BeforeAbove,
-                    )
+                let (name, pair_of) = if i == 5 {
+                    ("before", s.stage1_captures[0])
                 } else {
-                    (
-                        "after",
-                        ReadingSlot::Stage1AfterBelow,
-                        ReadingSlot::Stage1AfterAbove,
-                    )
+                    ("after", s.stage1_captures[1])
                 };
                 write!(w, "# stage1_captures_deg {name}")?;
-                for (side, slot) in [("below", below), ("above", above)] {
-                    write!(w, " {side} ")?;
-                    match s.reading(slot) {
+                for (approach, capture) in Approach::ORDER.into_iter().zip(pair_of) {
+                    write!(w, " {} ", approach_name(approach))?;
+                    match capture {
                         Some(c) => {
                             pair(w, &c.reading)?;
                             if let Some(t) = c.temperature_c {
@@ -128,7 +156,7 @@ impl<T: Real> Export<'_, T> {
                 }
                 Ok(())
             }
-            7 => match s.stage1() {
+            7 => match &s.stage1_result {
                 Some(r) => {
                     w.write_str("# stage1 delta_theta2_deg ")?;
                     deg(w, r.delta_theta2_rad)?;
@@ -141,18 +169,17 @@ impl<T: Real> Export<'_, T> {
                 }
                 None => w.write_str("# stage1 none"),
             },
-            8 => match s.closing_reversal() {
+            8 => match s.closing {
                 Some(r) => write_reversal(w, "closing_reversal_deg", &r),
                 None => w.write_str("# closing reversal not made"),
             },
-            9 => write_fit_extras(w, self.config.fit.extras),
+            9 => write_fit_extras(w, s.fit_extras),
             _ => w.write_str(EXPORT_HEADER),
         }
     }
 
     fn tail(&self, w: &mut Line) -> Option<fmt::Result> {
-        let outcome = self.state.outcome()?;
-        Some(match &outcome.result {
+        Some(match self.session.result? {
             Ok(r) => result_line(w, &r.fit),
             Err(e) => write!(w, "# refused: {e}"),
         })
@@ -182,7 +209,7 @@ pub(crate) fn result_line<T: Real>(w: &mut Line, r: &FitResult<T>) -> fmt::Resul
     )
 }
 
-impl<T: Real> Iterator for Export<'_, T> {
+impl<T: Real, R: CaptureRows<T>> Iterator for Export<'_, T, R> {
     type Item = Result<Line, fmt::Error>;
 
     /// The session's lines, then the trailer over them (a line that does not fit is
@@ -205,17 +232,17 @@ impl<T: Real> Iterator for Export<'_, T> {
     }
 }
 
-impl<T: Real> Export<'_, T> {
+impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     fn session_line(&mut self) -> Option<Result<Line, fmt::Error>> {
         let i = self.line;
         self.line += 1;
         let mut w = Line::new();
-        let captures = self.state.captures();
+        let captures = &self.session.captures;
         let r = if i < EXPORT_HEAD {
             self.head(i, &mut w)
-        } else if let Some((index, p)) = captures.get(i - EXPORT_HEAD) {
-            write_export_row(&mut w, p, Approach::of(usize::from(*index)))
-        } else if i == EXPORT_HEAD + captures.len() {
+        } else if let Some((index, p)) = captures.capture(i - EXPORT_HEAD) {
+            write_export_row(&mut w, &p, index.approach)
+        } else if i == EXPORT_HEAD + captures.count() {
             self.tail(&mut w)?
         } else {
             return None;
@@ -264,6 +291,7 @@ mod tests {
     use super::*;
     use crate::log::read::read_all;
     use crate::log::LOG_HEADER;
+    use zerocal_core::model::Tilt;
     use zerocal_core::testing::isclose;
 
     #[test]

@@ -429,7 +429,7 @@ impl<T: Real> ProcedureState<T> {
         })
     }
 
-    fn bias_source(&self) -> BiasSource<T> {
+    pub(super) fn bias_source(&self) -> BiasSource<T> {
         match (self.stage0_skipped, self.reversal(), self.bias) {
             (false, Some(r), _) => BiasSource::Reversal(r),
             (_, _, Some(b)) => BiasSource::Stored(b),
@@ -437,7 +437,7 @@ impl<T: Real> ProcedureState<T> {
         }
     }
 
-    fn axis_one_turn(&self, config: &ProcedureConfig<T>) -> Option<AxisOneTurn<T>> {
+    pub(super) fn axis_one_turn(&self, config: &ProcedureConfig<T>) -> Option<AxisOneTurn<T>> {
         let (before, after) = self.stage1_readings()?;
         Some(AxisOneTurn {
             before: before.reading,

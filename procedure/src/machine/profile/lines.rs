@@ -17,7 +17,7 @@
 //! ```
 
 use super::{quaternion, rotation, ControllerDisplay, JointName, PendantProfile};
-use crate::log::Line;
+use crate::text::Line;
 use crate::RobotName;
 use core::fmt::{self, Write};
 use nalgebra::{Rotation3, Vector3};
@@ -281,7 +281,7 @@ impl<T: Real> ProfileUpload<T> {
                 (0, "name", ok)
             }
             "stage1" => {
-                let v = numbers::<2>(words.next(), crate::log::MAX_JOINT_DEG);
+                let v = numbers::<2>(words.next(), crate::text::MAX_JOINT_DEG);
                 if let Some(v) = v {
                     p.stage1_rad = v.map(|d| deg_to_rad(T::lit(d)));
                 }
@@ -355,7 +355,7 @@ impl<T: Real> ProfileUpload<T> {
                     .flatten()
                     .filter(|s| s.iter().all(|v| v.abs() == 1.0));
                 let zero = (words.next() == Some("zero"))
-                    .then(|| numbers::<JOINTS>(words.next(), crate::log::MAX_JOINT_DEG))
+                    .then(|| numbers::<JOINTS>(words.next(), crate::text::MAX_JOINT_DEG))
                     .flatten();
                 let coupling = match (words.next(), words.next()) {
                     (Some("coupling"), Some("none")) => Some(false),
