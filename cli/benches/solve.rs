@@ -64,6 +64,7 @@ fn bench(c: &mut Criterion) {
         bias: zerocal_core::session::BiasSource::Reversal(s.stage0),
         stage1: s.stage1,
         poses: &s.poses,
+        capture_index: None,
         temperatures: zerocal_core::session::StageTemperatures {
             stage0_c: Some(s.stage0_temperature_c),
             stage1_c: Some(s.stage1_temperature_c),

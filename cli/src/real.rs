@@ -185,6 +185,7 @@ pub fn run_session(
         bias: BiasSource::Reversal(session.stage0),
         stage1: session.stage1,
         poses: &session.poses,
+        capture_index: None,
         temperatures: StageTemperatures {
             stage0_c: Some(session.stage0_temperature_c),
             stage1_c: Some(session.stage1_temperature_c),

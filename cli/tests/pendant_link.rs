@@ -418,7 +418,7 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
                     .enumerate()
                     .map(|(k, l)| {
                         if k == 20 {
-                            "1,2,3,4,5,6,0.1,0.2,20,below"
+                            "1,2,3,4,5,6,0.1,0.2,20,above,4"
                         } else {
                             l
                         }

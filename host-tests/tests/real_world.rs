@@ -26,6 +26,7 @@ fn readings<'a>(profile: &Profile, s: &'a RealSession, closing: bool) -> Session
         bias: BiasSource::Reversal(s.stage0),
         stage1: s.stage1,
         poses: &s.poses,
+        capture_index: None,
         temperatures: StageTemperatures {
             stage0_c: Some(s.stage0_temperature_c),
             stage1_c: Some(s.stage1_temperature_c),

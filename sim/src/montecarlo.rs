@@ -83,6 +83,7 @@ pub fn run(
                 bias: BiasSource::Reversal(session.stage0),
                 stage1: session.stage1,
                 poses: &session.poses,
+                capture_index: None,
                 // The method without the closing reversal recorded no temperatures.
                 temperatures: if world.closing_reversal {
                     StageTemperatures {

@@ -4,6 +4,7 @@
 use super::{KnownKeys, EXPORT_HEADER, LOG_HEADER, MAX_COLUMNS};
 use crate::export_trailer::TrailerError;
 use core::fmt;
+use zerocal_core::capture::{Approach, MAX_PLAN_POSES};
 
 /// A word of the input quoted in an error (a key or a column name): its first
 /// [`ShortText::CAPACITY`] bytes, cut at a character boundary, so the error stays `Copy`
@@ -148,6 +149,24 @@ pub enum LogError {
         /// The line.
         line: usize,
     },
+    /// A `pose` field beyond the plan's last pose (a plan holds
+    /// [`MAX_PLAN_POSES`] poses).
+    PoseOutOfRange {
+        /// The line.
+        line: usize,
+    },
+    /// A pose captured twice from the same side: which of the two the pose's mean
+    /// takes would be a guess.
+    DuplicateCapture {
+        /// The line of the second.
+        line: usize,
+        /// The pose's index in the plan.
+        pose: u8,
+        /// The side both came from.
+        approach: Approach,
+        /// The line of the first.
+        first_line: usize,
+    },
     /// Bytes that are not UTF-8 text.
     NotUtf8 {
         /// The line (1-based).
@@ -223,6 +242,21 @@ impl fmt::Display for LogError {
             LogError::BadApproach { line } => {
                 write!(f, "line {line}: approach is neither 'below' nor 'above'")
             }
+            LogError::PoseOutOfRange { line } => write!(
+                f,
+                "line {line}: pose is not a pose index 0..{} (a plan holds {MAX_PLAN_POSES} poses)",
+                MAX_PLAN_POSES - 1
+            ),
+            LogError::DuplicateCapture {
+                line,
+                pose,
+                approach,
+                first_line,
+            } => write!(
+                f,
+                "line {line}: pose {pose} captured from {} again (first on line {first_line}): a pose has one capture a side",
+                approach.word()
+            ),
             LogError::NotUtf8 { line, column } => write!(
                 f,
                 "line {line}, byte {column}: not UTF-8 text (save the export as UTF-8 or ASCII)"

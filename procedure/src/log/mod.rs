@@ -21,7 +21,8 @@
 //!
 //! The export is read strictly, because a line it ignores can make a session silently
 //! wrong ([`LogReader::for_export`], [`MetaKeys`]): its header [`EXPORT_HEADER`] adds the
-//! `approach` column (`below` or `above`: the side every joint arrived from) and no
+//! `approach` column (`below` or `above`: the side every joint arrived from) and the
+//! `pose` column (the pose's index in the plan; a pose has one capture a side) and no
 //! other column may appear; a comment whose first word has the form of a key (lowercase
 //! letters, digits and `_`, with at least one digit or `_`, see [`metadata_key`]) is a
 //! metadata line, and must be a key of [`METADATA_KEYS`], given once; any other comment
@@ -58,10 +59,11 @@ use zerocal_core::real::{rad_to_deg, Real};
 /// The columns a stage-2 log has, in the order the pendant writes them. The first six
 /// are required; `j1_deg` and `j2_deg` default to 0 (joints 1 and 2 where stage 1 had
 /// them, for a log of the paper's wrist), `temp_c` to unrecorded, `approach` (the
-/// export's: `below` or `above`) to unrecorded.
-pub const LOG_COLUMNS: [&str; 10] = [
+/// export's: `below` or `above`) and `pose` (the export's: the pose's index in the plan)
+/// to unrecorded.
+pub const LOG_COLUMNS: [&str; 11] = [
     "j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg", "j1_deg", "j2_deg", "temp_c",
-    "approach",
+    "approach", "pose",
 ];
 
 /// Index of `temp_c` in [`LOG_COLUMNS`].
@@ -70,17 +72,21 @@ const TEMPERATURE_COLUMN: usize = 8;
 /// Index of `approach` in [`LOG_COLUMNS`].
 const APPROACH_COLUMN: usize = 9;
 
+/// Index of `pose` in [`LOG_COLUMNS`].
+const POSE_COLUMN: usize = 10;
+
 /// How many of [`LOG_COLUMNS`] a log must have.
 const REQUIRED_COLUMNS: usize = 6;
 
 /// The header of a stage-2 log.
 pub const LOG_HEADER: &str = "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c";
 
-/// The header of the pendant's export: a stage-2 log's, and the side each capture was
+/// The header of the pendant's export: a stage-2 log's, the side each capture was
 /// approached from (`below` or `above`), so the desktop can tell a pose captured from
-/// one side only.
+/// one side only, and the pose's index in the plan, so the desktop pairs a pose's two
+/// captures by it (not by its joints, which a hand edit or a rounding may set apart).
 pub const EXPORT_HEADER: &str =
-    "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c,approach";
+    "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c,approach,pose";
 
 /// The `approach` column's word for each side.
 pub fn approach_name(a: Approach) -> &'static str {

@@ -4,10 +4,10 @@
 
 use super::{
     LogError, ShortText, APPROACH_COLUMN, LOG_COLUMNS, MAX_COLUMNS, MAX_JOINT_DEG, MAX_READING_DEG,
-    REQUIRED_COLUMNS, TEMPERATURE_COLUMN, TEMPERATURE_RANGE_C,
+    POSE_COLUMN, REQUIRED_COLUMNS, TEMPERATURE_COLUMN, TEMPERATURE_RANGE_C,
 };
 use crate::export_trailer::{Trailer, TrailerSum};
-use zerocal_core::capture::Approach;
+use zerocal_core::capture::{Approach, CaptureIndex, MAX_CAPTURES, MAX_PLAN_POSES};
 use zerocal_core::model::Tilt;
 use zerocal_core::real::{deg_to_rad, Real};
 use zerocal_core::stage2::PoseReading;
@@ -41,6 +41,11 @@ pub struct LogReader {
     strict: bool,
     /// The `approach` of the row last read, where the log has the column.
     approach: Option<Approach>,
+    /// The `pose` of the row last read, where the log has the column.
+    pose: Option<u8>,
+    /// The line each capture ([`CaptureIndex::sequence`]) was read on (0: not yet), to
+    /// refuse a pose given twice from one side.
+    capture_line: [usize; MAX_CAPTURES],
     /// The lines so far, for the end trailer.
     sum: TrailerSum,
     /// The end trailer, once read.
@@ -63,6 +68,8 @@ impl LogReader {
             poses: 0,
             strict: false,
             approach: None,
+            pose: None,
+            capture_line: [0; MAX_CAPTURES],
             sum: TrailerSum::new(),
             trailer: None,
         }
@@ -80,6 +87,15 @@ impl LogReader {
     /// The side the pose last read was approached from, where the log records it.
     pub fn approach(&self) -> Option<Approach> {
         self.approach
+    }
+
+    /// The index of the capture last read (its pose in the plan and its side), where
+    /// the log has the `pose` column (which needs `approach`).
+    pub fn capture_index(&self) -> Option<CaptureIndex> {
+        Some(CaptureIndex {
+            pose: self.pose?,
+            approach: self.approach?,
+        })
     }
 
     /// The end trailer, if the log had one (it was checked when read). A log without
@@ -166,6 +182,13 @@ impl LogReader {
                     LogError::NoHeader
                 });
             }
+            // A pose's captures are told apart by their side.
+            if columns[POSE_COLUMN] != usize::MAX && columns[APPROACH_COLUMN] == usize::MAX {
+                return Err(LogError::MissingColumn {
+                    line,
+                    column: LOG_COLUMNS[APPROACH_COLUMN],
+                });
+            }
             self.columns = Some(columns);
             self.fields = fields;
             return Ok(LogLine::Header);
@@ -173,6 +196,7 @@ impl LogReader {
         let mut values = [0.0f64; LOG_COLUMNS.len()];
         let mut temperature_given = false;
         let mut approach = None;
+        let mut pose = None;
         let mut got = 0;
         for (i, field) in t.split(',').enumerate() {
             got = i + 1;
@@ -188,6 +212,19 @@ impl LogReader {
                 if k == APPROACH_COLUMN {
                     approach = Some(
                         Approach::from_word(field.trim()).ok_or(LogError::BadApproach { line })?,
+                    );
+                    continue;
+                }
+                if k == POSE_COLUMN {
+                    let index = field
+                        .trim()
+                        .parse::<usize>()
+                        .map_err(|_| LogError::NotANumber { line, column })?;
+                    pose = Some(
+                        u8::try_from(index)
+                            .ok()
+                            .filter(|_| index < MAX_PLAN_POSES)
+                            .ok_or(LogError::PoseOutOfRange { line })?,
                     );
                     continue;
                 }
@@ -216,8 +253,24 @@ impl LogReader {
                 got,
             });
         }
+        if let (Some(pose), Some(approach)) = (pose, approach) {
+            let index = CaptureIndex { pose, approach };
+            // Below MAX_CAPTURES: the pose is below MAX_PLAN_POSES.
+            if let Some(first) = self.capture_line.get_mut(index.sequence()) {
+                if *first != 0 {
+                    return Err(LogError::DuplicateCapture {
+                        line,
+                        pose,
+                        approach,
+                        first_line: *first,
+                    });
+                }
+                *first = line;
+            }
+        }
         self.poses += 1;
         self.approach = approach;
+        self.pose = pose;
         let joints_deg = [
             values[6], values[7], values[0], values[1], values[2], values[3],
         ];
@@ -429,13 +482,13 @@ mod tests {
             ("above", Approach::FromAbove),
         ] {
             assert!(matches!(
-                r.feed::<f64>(&format!("{row},{side}"), parse),
+                r.feed::<f64>(&format!("{row},{side},0"), parse),
                 Ok(LogLine::Pose(_))
             ));
             assert_eq!(r.approach(), Some(approach));
         }
         assert_eq!(
-            r.feed::<f64>(&format!("{row},sideways"), parse),
+            r.feed::<f64>(&format!("{row},sideways,1"), parse),
             Err(LogError::BadApproach { line: 4 })
         );
         // A stage-2 log ignores a column it does not know; an export names it.
@@ -457,18 +510,105 @@ mod tests {
             text.contains("line 1") && text.contains("'j7_deg'"),
             "{text}"
         );
-        // A row written by the pendant's writer reads back with its side.
+        // A row written by the pendant's writer reads back with its side and pose.
         let p = PoseReading {
             joints_rad: [0.0, -1.5, 0.1, -2.9, 0.3, 3.0],
             reading: Tilt::new(0.01, -0.02),
             temperature_c: None,
         };
         let mut w = Line::new();
-        write_export_row(&mut w, &p, Approach::FromAbove).unwrap();
+        let index = CaptureIndex {
+            pose: 7,
+            approach: Approach::FromAbove,
+        };
+        write_export_row(&mut w, &p, index).unwrap();
         let mut r = LogReader::for_export();
         r.feed::<f64>(EXPORT_HEADER, parse).unwrap();
         assert!(matches!(r.feed::<f64>(&w, parse), Ok(LogLine::Pose(_))));
         assert_eq!(r.approach(), Some(Approach::FromAbove));
+        assert_eq!(r.capture_index(), Some(index));
+    }
+
+    /// Feeds `rows` after the export's header; the first error, or the rows' indices.
+    fn export_rows(rows: &[&str]) -> Result<std::vec::Vec<CaptureIndex>, LogError> {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        let mut r = LogReader::for_export();
+        r.feed::<f64>(EXPORT_HEADER, parse)?;
+        let mut out = std::vec::Vec::new();
+        for row in rows {
+            r.feed::<f64>(row, parse)?;
+            out.extend(r.capture_index());
+        }
+        Ok(out)
+    }
+
+    #[test]
+    fn a_pose_out_of_the_plan_is_refused_by_name() {
+        let row = "0,-90,1,2,3,4,0.1,0.2,25.00,below";
+        // The last pose a plan holds reads; one past it is named, as is a word.
+        let last = MAX_PLAN_POSES - 1;
+        assert_eq!(
+            export_rows(&[&format!("{row},{last}")]),
+            Ok(std::vec![CaptureIndex {
+                pose: u8::try_from(last).unwrap(),
+                approach: Approach::FromBelow
+            }])
+        );
+        let e = export_rows(&[&format!("{row},{MAX_PLAN_POSES}")]).unwrap_err();
+        assert_eq!(e, LogError::PoseOutOfRange { line: 2 });
+        assert!(e.to_string().contains("line 2: pose"), "{e}");
+        for junk in ["-1", "300", "1.5", "two", ""] {
+            assert!(
+                matches!(
+                    export_rows(&[&format!("{row},{junk}")]),
+                    Err(LogError::PoseOutOfRange { line: 2 }
+                        | LogError::NotANumber {
+                            line: 2,
+                            column: "pose"
+                        })
+                ),
+                "{junk}"
+            );
+        }
+        // A pose index needs the side: a header with `pose` but no `approach` is named.
+        assert_eq!(
+            LogReader::for_export().feed::<f64>(&format!("{LOG_HEADER},pose"), |s| s.parse().ok()),
+            Err(LogError::MissingColumn {
+                line: 1,
+                column: "approach"
+            })
+        );
+    }
+
+    #[test]
+    fn a_pose_captured_twice_from_one_side_is_refused_by_name() {
+        let row = "0,-90,1,2,3,4,0.1,0.2,25.00";
+        let rows = [
+            format!("{row},below,3"),
+            format!("{row},above,3"),
+            format!("{row},below,4"),
+        ];
+        let refs: std::vec::Vec<&str> = rows.iter().map(std::string::String::as_str).collect();
+        assert_eq!(export_rows(&refs).map(|i| i.len()), Ok(3));
+        // Pose 3 from above a second time (another pose's row between them).
+        let again = format!("{row},above,3");
+        let mut twice = refs.clone();
+        twice.push(&again);
+        let e = export_rows(&twice).unwrap_err();
+        assert_eq!(
+            e,
+            LogError::DuplicateCapture {
+                line: 5,
+                pose: 3,
+                approach: Approach::FromAbove,
+                first_line: 3
+            }
+        );
+        let text = e.to_string();
+        assert!(
+            text.contains("line 5") && text.contains("pose 3") && text.contains("above"),
+            "{text}"
+        );
     }
 
     #[test]

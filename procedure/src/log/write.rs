@@ -241,7 +241,7 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
         let r = if i < EXPORT_HEAD {
             self.head(i, &mut w)
         } else if let Some((index, p)) = captures.capture(i - EXPORT_HEAD) {
-            write_export_row(&mut w, &p, index.approach)
+            write_export_row(&mut w, &p, index)
         } else if i == EXPORT_HEAD + captures.count() {
             self.tail(&mut w)?
         } else {
@@ -251,18 +251,18 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     }
 }
 
-/// Writes one capture as an export row: a log row and the side it was approached from.
+/// Writes one capture as an export row: a log row, the side it was approached from
+/// and its pose's index in the plan.
 ///
 /// # Errors
 /// Only a full line buffer.
 pub fn write_export_row<T: Real>(
     w: &mut Line,
     p: &PoseReading<T>,
-    approach: Approach,
+    index: CaptureIndex,
 ) -> fmt::Result {
     write_row(w, p)?;
-    w.write_char(',')?;
-    w.write_str(approach_name(approach))
+    write!(w, ",{},{}", approach_name(index.approach), index.pose)
 }
 
 /// Writes one pose as a log row.

@@ -424,6 +424,7 @@ impl<T: Real> ProcedureState<T> {
             bias: self.bias_source(),
             stage1: self.axis_one_turn(config)?,
             poses,
+            capture_index: None,
             temperatures: self.stage_temperatures(),
             closing: self.closing_reversal(),
         })
