@@ -768,6 +768,32 @@ mod tests {
     }
 
     #[test]
+    fn captures_pair_by_their_index_where_given_else_by_equal_joints() {
+        use Approach::{FromAbove as Up, FromBelow as Down};
+        let index = |pose: u8, approach| CaptureIndex { pose, approach };
+        let a = at([0.0, -90.0, 10.0, 0.0, 0.0, 0.0]);
+        // Pose 0's second capture written with joint 3 one ulp of 10° apart.
+        let mut a_off = a;
+        a_off.joints_rad[2] = f64::from_bits(a.joints_rad[2].to_bits() + 1);
+        a_off.reading = Tilt::new(0.002, -0.004);
+        let b = at([0.0, -90.0, 20.0, 0.0, 0.0, 0.0]);
+        let poses = [a, a_off, b, b];
+        let by_index = [index(0, Down), index(0, Up), index(1, Down), index(1, Up)];
+        let merged = merge_captures(&poses, Some(&by_index)).expect("poses repeat");
+        assert_eq!(merged.len(), 2);
+        // The mean of the two sides: exact in binary (halves of the readings).
+        assert_eq!(merged[0].reading, Tilt::new(0.001, -0.002));
+        assert_eq!(one_sided_pose(&poses, Some(&by_index), None), None);
+        // By joints, the ulp splits pose 0 in two: three poses, pose 0 one-sided.
+        assert_eq!(merge_repeats(&poses).map(|m| m.len()), Some(3));
+        assert_eq!(
+            one_sided_pose(&poses, None, Some(&[Down, Up, Down, Up])),
+            Some(0)
+        );
+        assert_eq!(first_captures(&poses, Some(&by_index)).unwrap(), [0, 2]);
+    }
+
+    #[test]
     fn joint_2_must_stay_where_stage_1_had_it() {
         let turn = AxisOneTurn {
             before: Tilt::new(0.0, 0.0),
