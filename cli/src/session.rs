@@ -21,6 +21,7 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use zerocal_core::capture::CaptureIndex;
 use zerocal_core::model::{Convention, JOINTS};
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
@@ -89,6 +90,10 @@ pub struct Export {
     /// Each row's `approach`, where the export has the column (exports written before
     /// it have not).
     pub approaches: Option<Vec<Approach>>,
+    /// Each row's capture index (its `pose` and `approach`), where the export has the
+    /// `pose` column (exports written before it have not): a pose's two captures are
+    /// paired by it.
+    pub captures: Option<Vec<CaptureIndex>>,
     /// The export ended with its end trailer, which matched (`zerocal_procedure::export_trailer`):
     /// nothing lost or changed since the pendant wrote it. Without one (a file edited by
     /// hand, or not from a pendant) it is read unchecked, with a note.
@@ -106,6 +111,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
     let mut reader = LogReader::for_export();
     let mut keys = MetaKeys::default();
     let mut approaches = Vec::new();
+    let mut captures = Vec::new();
     let mut export = Export {
         robot: None,
         bias: None,
@@ -118,6 +124,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
         poses: Vec::new(),
         lines: Vec::new(),
         approaches: None,
+        captures: None,
         trailer_checked: false,
     };
     for line in text.lines() {
@@ -126,6 +133,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
                 export.poses.push(p);
                 export.lines.push(reader.line());
                 approaches.extend(reader.approach());
+                captures.extend(reader.capture_index());
             }
             LogLine::Comment(c) => {
                 let item =
@@ -157,6 +165,9 @@ pub fn read_export(text: &str) -> Result<Export, String> {
     if reader.has_column("approach") {
         export.approaches = Some(approaches);
     }
+    if reader.has_column("pose") {
+        export.captures = Some(captures);
+    }
     export.trailer_checked = reader.trailer().is_some();
     Ok(export)
 }
@@ -176,7 +187,11 @@ fn check_rows(export: &Export, stage1: &AxisOneTurn<f64>) -> Result<(), String> 
             stage1.j2_rad.to_degrees()
         ));
     }
-    if let Some(i) = one_sided_pose(&export.poses, export.approaches.as_deref()) {
+    if let Some(i) = one_sided_pose(
+        &export.poses,
+        export.captures.as_deref(),
+        export.approaches.as_deref(),
+    ) {
         let how = match &export.approaches {
             Some(a) => format!(
                 "captured only from {}",
@@ -316,6 +331,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         bias,
         stage1,
         poses: &export.poses,
+        capture_index: export.captures.as_deref(),
         temperatures: StageTemperatures {
             stage0_c: export.stage0.and_then(|r| r.temperature_c),
             stage1_c: export.stage1_temperature_c,
@@ -478,15 +494,15 @@ fn refused_with_diagnosis(
 }
 
 fn refused(e: SessionError, export: &Export) -> CliError {
-    // The solver fits repeated poses merged: its pose index is into the merged list.
-    let merged = zerocal_core::session::merge_repeats(&export.poses);
+    // The solver fits a pose's captures merged, paired as the export pairs them (by
+    // index where it has the `pose` column): its pose index is into the merged list,
+    // whose order is that of each pose's first capture.
+    let firsts = zerocal_core::session::first_captures(&export.poses, export.captures.as_deref());
     let line = |pose: usize| {
-        let joints = merged
+        // More poses than a plan holds are fitted unmerged: the index is the row's.
+        firsts
             .as_ref()
-            .and_then(|m| m.get(pose).map(|p| p.joints_rad))
-            .or_else(|| export.poses.get(pose).map(|p| p.joints_rad));
-        joints
-            .and_then(|j| export.poses.iter().position(|p| p.joints_rad == j))
+            .map_or(Some(pose), |f| f.get(pose).copied())
             .and_then(|i| export.lines.get(i).copied())
             .unwrap_or(0)
     };

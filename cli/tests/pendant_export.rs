@@ -7,13 +7,12 @@
 
 use std::process::Command;
 use zerocal_core::Real;
-use zerocal_procedure::log::export;
 use zerocal_sim::pendant::SimPendant;
 use zerocal_sim::scenario::{self, pendant};
 
 fn export_text<T: Real>(p: &SimPendant<T>) -> String {
     let mut text = String::new();
-    for line in export(&p.session, &p.config) {
+    for line in p.session.export(&p.config) {
         text.push_str(line.expect("line fits").as_str());
         text.push('\n');
     }

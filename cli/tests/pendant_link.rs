@@ -155,7 +155,9 @@ fn crlf(lines: &[&str]) -> Vec<u8> {
 fn whole_session() -> (zerocal_sim::pendant::SimPendant<f32>, Vec<String>) {
     let mut p = zerocal_sim::scenario::pendant::<f32>(12, 11).expect("the planner plans 12 poses");
     zerocal_sim::scenario::whole_session(&mut p);
-    let lines = zerocal_procedure::log::export(&p.session, &p.config)
+    let lines = p
+        .session
+        .export(&p.config)
         .map(|l| l.expect("line fits").as_str().to_owned())
         .collect();
     (p, lines)
@@ -416,7 +418,7 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
                     .enumerate()
                     .map(|(k, l)| {
                         if k == 20 {
-                            "1,2,3,4,5,6,0.1,0.2,20,below"
+                            "1,2,3,4,5,6,0.1,0.2,20,above,4"
                         } else {
                             l
                         }

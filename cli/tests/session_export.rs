@@ -2,7 +2,7 @@
 //! refused with the line and key or column named, or (a session without a stage-0
 //! reversal) solved with the sensor's unknown offset in its budget. The exports are the
 //! simulator's (`RealSession::export_text`, truth known) and the simulated pendant's
-//! own (`zerocal_procedure::log::export`, with the `approach` column), edited as a user or a
+//! own (`ProcedureState::export`, with the `approach` and `pose` columns), edited as a user or a
 //! damaged file would.
 
 // A failed test panics with what it found: that is its report.
@@ -221,7 +221,7 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
     let mut p = pendant::<f64>(12, 14).expect("the planner plans 12 poses");
     scenario::whole_session(&mut p);
     let mut text = String::new();
-    for line in zerocal_procedure::log::export(&p.session, &p.config) {
+    for line in p.session.export(&p.config) {
         text.push_str(line.expect("line fits").as_str());
         text.push('\n');
     }
@@ -230,7 +230,8 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
     let rows: Vec<&str> = text.lines().skip(header).take(24).collect();
     for (i, r) in rows.iter().enumerate() {
         let side = if i % 2 == 0 { ",below" } else { ",above" };
-        assert!(r.ends_with(side), "row {i}: {r}");
+        // The side, then the pose's index in the plan: two captures a pose.
+        assert!(r.ends_with(&format!("{side},{}", i / 2)), "row {i}: {r}");
     }
     let out = session(&write("pendant.csv", text.as_bytes()), &[]);
     assert!(
@@ -250,6 +251,111 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
         "lone.csv",
         &edited,
         &[&format!("line {}", header + 5), "captured only from below"],
+    );
+}
+
+/// The simulated pendant's whole session exported, its end trailer dropped (so an edit
+/// is read, not refused as damage), and the line of its header.
+fn pendant_export_text() -> (String, usize) {
+    let mut p = pendant::<f64>(12, 14).expect("the planner plans 12 poses");
+    scenario::whole_session(&mut p);
+    let mut text = String::new();
+    for line in p.session.export(&p.config) {
+        let line = line.expect("line fits");
+        if !line.starts_with(zerocal_procedure::export_trailer::TRAILER_PREFIX) {
+            text.push_str(line.as_str());
+            text.push('\n');
+        }
+    }
+    let (header, _) = line_of(&text, "j1_deg,");
+    (text, header)
+}
+
+/// Each joint's offset (deg) `zerocal session --json` finds in `text`.
+fn offsets_deg(name: &str, text: &str) -> Vec<f64> {
+    let out = session(&write(name, text.as_bytes()), &[]);
+    assert!(
+        out.status.success(),
+        "{name}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    (0..5)
+        .map(|k| v["joints"][k]["offset_deg"].as_f64().unwrap())
+        .collect()
+}
+
+/// `row` with its joint 3 (the third field) changed in its last written digit.
+fn last_digit_changed(row: &str) -> String {
+    let mut fields: Vec<String> = row.split(',').map(str::to_owned).collect();
+    let j3 = &mut fields[2];
+    let last = j3.pop().unwrap().to_digit(10).unwrap();
+    j3.push(char::from_digit((last + 1) % 10, 10).unwrap());
+    fields.join(",")
+}
+
+#[test]
+fn a_pose_s_captures_pair_by_index_though_their_joints_differ_in_the_last_digit() {
+    let (text, header) = pendant_export_text();
+    let rows: Vec<&str> = text.lines().skip(header).take(24).collect();
+    let exact = offsets_deg("exact.csv", &text);
+    // The third pose's "above" capture with its joint 3 a digit (1e-12 deg) off.
+    let nudged_row = last_digit_changed(rows[5]);
+    assert_ne!(nudged_row, rows[5]);
+    let nudged = text.replace(rows[5], &nudged_row);
+    // 1e-12 deg on one joint of one capture moves no offset by more than 1e-9 deg
+    // (the fit's sensitivity to a joint is of order one); a pose split in two by the
+    // nudge would move them by its backlash, far more, or be refused as one-sided.
+    for (k, (a, b)) in exact
+        .iter()
+        .zip(offsets_deg("nudged.csv", &nudged))
+        .enumerate()
+    {
+        assert!((a - b).abs() <= 1e-9, "j{}: {a} vs {b}", k + 2);
+    }
+    // Without the pose column the rows pair by joints, as a plain log's do: the
+    // nudged capture is a pose of its own, and so is its partner, captured only from
+    // below (the first of the two refused).
+    let without_pose: String = nudged
+        .lines()
+        .map(|l| {
+            let l = if l == zerocal_procedure::log::EXPORT_HEADER {
+                l.trim_end_matches(",pose")
+            } else if !l.starts_with('#') && (l.contains(",below,") || l.contains(",above,")) {
+                l.rsplit_once(',').map_or(l, |(head, _)| head)
+            } else {
+                l
+            };
+            format!("{l}\n")
+        })
+        .collect();
+    refused(
+        "by_joints.csv",
+        &without_pose,
+        &[&format!("line {}", header + 5), "captured only from below"],
+    );
+}
+
+#[test]
+fn a_pose_index_out_of_the_plan_or_a_side_given_twice_is_refused_by_name() {
+    let (text, header) = pendant_export_text();
+    let rows: Vec<&str> = text.lines().skip(header).take(24).collect();
+    // The third pose's "above" row given the fourth pose's index, which has its own.
+    let twice = rows[5].rsplit_once(',').unwrap().0.to_owned() + ",3";
+    refused(
+        "twice.csv",
+        &text.replace(rows[5], &twice),
+        &[
+            &format!("line {}", header + 8),
+            "pose 3 captured from above again",
+            &format!("first on line {}", header + 6),
+        ],
+    );
+    let beyond = rows[5].rsplit_once(',').unwrap().0.to_owned() + ",200";
+    refused(
+        "beyond.csv",
+        &text.replace(rows[5], &beyond),
+        &[&format!("line {}: pose is not a pose index", header + 6)],
     );
 }
 

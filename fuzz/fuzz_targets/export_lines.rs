@@ -1,15 +1,17 @@
-//! The export's writers read back by its readers: `write_row` by `LogReader::feed`,
+//! The export's writers read back by its readers: `write_row` and `write_export_row`
+//! (with its capture index) by `LogReader::feed`,
 //! `write_reversal` and `write_fit_extras` by `parse_meta`, with both number parsers
 //! (core's and the desktop's): parse(write(x)) == x to the export's 1e-12 deg.
 #![no_main]
 use arbitrary::{Arbitrary, Unstructured};
 use libfuzzer_sys::fuzz_target;
+use zerocal_core::capture::{Approach, CaptureIndex, MAX_PLAN_POSES};
 use zerocal_core::model::Tilt;
 use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage2::{Extras, PoseReading};
 use zerocal_procedure::log::{
-    parse_meta, write_fit_extras, write_reversal, write_row, Line, LogLine, LogReader, MetaItem,
-    LOG_HEADER,
+    parse_meta, write_export_row, write_fit_extras, write_reversal, write_row, Line, LogLine,
+    LogReader, MetaItem, EXPORT_HEADER, LOG_HEADER,
 };
 
 /// A value in `[-limit, limit]` from a fuzzed fraction (an f32, as the pendant holds).
@@ -89,6 +91,25 @@ fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
             }
             other => panic!("{line}: {other:?}"),
         }
+    }
+    // The same pose as an export row: its capture index reads back.
+    let index = CaptureIndex {
+        pose: u8::arbitrary(u)? % MAX_PLAN_POSES as u8,
+        approach: Approach::of(usize::from(bool::arbitrary(u)?)),
+    };
+    let mut row = Line::new();
+    write_export_row(&mut row, &pose, index).expect("an export row fits a line");
+    for parse in PARSERS {
+        let mut reader = LogReader::for_export();
+        assert_eq!(
+            reader.feed::<f64>(EXPORT_HEADER, parse),
+            Ok(LogLine::Header)
+        );
+        assert!(
+            matches!(reader.feed::<f64>(&row, parse), Ok(LogLine::Pose(_))),
+            "{row}"
+        );
+        assert_eq!(reader.capture_index(), Some(index), "{row}");
     }
     // A reversal.
     let reversal = ClosingReversal {

@@ -11,7 +11,7 @@ use libfuzzer_sys::fuzz_target;
 use zerocal_core::stage2::PoseReading;
 use zerocal_pendant::config::procedure_config;
 use zerocal_procedure::link::status;
-use zerocal_procedure::log::{export, MAX_JOINT_DEG, MAX_READING_DEG, TEMPERATURE_RANGE_C};
+use zerocal_procedure::log::{MAX_JOINT_DEG, MAX_READING_DEG, TEMPERATURE_RANGE_C};
 use zerocal_procedure::record::{Record, MAX_RECORD_LEN};
 use zerocal_procedure::{PendantProfile, ProcedureState};
 
@@ -141,7 +141,7 @@ fuzz_target!(|data: &[u8]| {
         }
     }
     let mut text = String::new();
-    for (i, line) in export(&session, &config).enumerate() {
+    for (i, line) in session.export(&config).enumerate() {
         match line {
             Ok(line) => text.push_str(&line),
             Err(_) => assert!(!all_in_bounds, "export line {i} overflows"),

@@ -31,7 +31,6 @@ use zerocal_procedure::link::{
     parse_command, pendant_status, plan_line, plan_stored, profile_stored, status, Command, Line,
     PlanUpload, UploadStep, ERASED, HELP, NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
 };
-use zerocal_procedure::log::export;
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
 use zerocal_procedure::replies::Reply;
 
@@ -382,7 +381,7 @@ impl<W: Write> Server<'_, W> {
     /// Streams `export`, the session held for the whole of it.
     async fn export(&mut self) -> Result<(), Disconnected> {
         let procedure = self.shared.procedure.lock().await;
-        for item in export(&procedure.session, &procedure.config) {
+        for item in procedure.session.export(&procedure.config) {
             match item {
                 Ok(text) => self.write_line(text.as_bytes()).await?,
                 Err(_) => self.reply(Reply::LineTooLong).await?,

@@ -9,6 +9,8 @@
 //!   pendant's link task and `zerocal pendant`.
 //! - [`log`], [`export_trailer`]: the stage-2 log and the pendant's export, written and
 //!   read here once.
+//! - [`text`]: the fixed-capacity line every writer fills, and the joint bound every
+//!   line reader holds; [`capture`]: what one capture of stages 0-1 holds.
 //! - [`robot_time`]: a session's robot time and the pose order that shortens it.
 //!
 //! The numbers come from `zerocal-core` (the method); nothing here waits, allocates or
@@ -25,6 +27,7 @@
 #![warn(missing_docs)]
 #![allow(clippy::needless_range_loop)]
 
+pub mod capture;
 pub mod export_trailer;
 pub mod link;
 pub mod log;
@@ -32,5 +35,6 @@ pub mod machine;
 pub mod replies;
 pub mod robot_time;
 pub mod stillness;
+pub mod text;
 
 pub use machine::*;

@@ -248,6 +248,7 @@ impl SimSession {
                 .map_or(BiasSource::Unknown, BiasSource::Reversal),
             stage1: self.stage1,
             poses: &self.poses,
+            capture_index: None,
             temperatures: Default::default(),
             closing: None,
         }

@@ -185,6 +185,8 @@ impl RealSession {
                 stage1_c: Some(self.stage1_temperature_c),
             },
             closing: world.closing_reversal.then_some(self.closing),
+            // A simulated session pairs its captures by their joints, which are equal.
+            capture_index: None,
         }
     }
 

@@ -347,6 +347,7 @@ pub fn predict_budget<T: Real>(
         }),
         stage1,
         poses: &captures,
+        capture_index: None,
         temperatures: super::StageTemperatures::default(),
         closing: None,
     };

@@ -28,6 +28,7 @@
 //! captured, and one that has not moved yet is not captured twice. BACK undoes the last
 //! capture, whatever the stage.
 
+mod export;
 pub mod profile;
 pub mod record;
 mod state;
@@ -47,8 +48,7 @@ use zerocal_core::session::{SessionError, SessionSolution};
 use zerocal_core::stage1::Stage1Result;
 use zerocal_core::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
 
-/// A robot profile's name as the pendant keeps it (`zerocal robots` lists them).
-pub type RobotName = heapless::String<32>;
+pub use crate::text::RobotName;
 
 /// What the procedure needs to know that does not change during a session.
 #[derive(Clone, Debug, PartialEq)]
@@ -205,17 +205,7 @@ impl Phase {
 
 pub use zerocal_core::capture::Approach;
 
-/// A capture of stages 0 and 1 or of the closing reversal: the stillness window's mean
-/// reading and temperature.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct Capture<T> {
-    /// The mean reading (raw, bias included).
-    pub reading: Tilt<T>,
-    /// The mean temperature (°C), if the sensor reports one.
-    pub temperature_c: Option<T>,
-}
+pub use crate::capture::Capture;
 
 /// Which capture of stages 0 and 1 or of the closing reversal, in the order they are
 /// taken.

@@ -419,12 +419,14 @@ impl<T: Real> ProcedureState<T> {
         )
     }
 
-    /// The session's readings of stages 0-1, the captured poses and the closing
+    /// The session's readings of stages 0-1, the captured poses (with which capture
+    /// each is, so the solver pairs a pose's two captures by index) and the closing
     /// reversal, as the session solver takes them (`None` before stage 1 is complete).
     pub(super) fn readings<'a>(
         &self,
         config: &ProcedureConfig<T>,
         poses: &'a [PoseReading<T>],
+        capture_index: &'a [CaptureIndex],
     ) -> Option<SessionReadings<'a, T>> {
         Some(SessionReadings {
             convention: config.convention,
@@ -433,12 +435,13 @@ impl<T: Real> ProcedureState<T> {
             bias: self.bias_source(),
             stage1: self.axis_one_turn(config)?,
             poses,
+            capture_index: Some(capture_index),
             temperatures: self.stage_temperatures(),
             closing: self.closing_reversal(),
         })
     }
 
-    fn bias_source(&self) -> BiasSource<T> {
+    pub(super) fn bias_source(&self) -> BiasSource<T> {
         match (self.stage0_skipped, self.reversal(), self.bias) {
             (false, Some(r), _) => BiasSource::Reversal(r),
             (_, _, Some(b)) => BiasSource::Stored(b),
@@ -446,7 +449,7 @@ impl<T: Real> ProcedureState<T> {
         }
     }
 
-    fn axis_one_turn(&self, config: &ProcedureConfig<T>) -> Option<AxisOneTurn<T>> {
+    pub(super) fn axis_one_turn(&self, config: &ProcedureConfig<T>) -> Option<AxisOneTurn<T>> {
         let (before, after) = self.stage1_readings()?;
         Some(AxisOneTurn {
             before: before.reading,
@@ -512,15 +515,17 @@ impl<T: Real> ProcedureState<T> {
     /// The session's result, from core's session solver.
     pub(super) fn compute(&self, config: &ProcedureConfig<T>) -> Outcome<T> {
         let mut poses: heapless::Vec<PoseReading<T>, MAX_CAPTURES> = heapless::Vec::new();
-        for (_, p) in &self.captures {
-            // Both hold MAX_CAPTURES.
+        let mut index: heapless::Vec<CaptureIndex, MAX_CAPTURES> = heapless::Vec::new();
+        for (i, p) in &self.captures {
+            // All three hold MAX_CAPTURES.
             let _ = poses.push(*p);
+            let _ = index.push(*i);
         }
         // Every number the pendant shows of a finished session (the result screen, the
         // base tilt, `status`, the stored last result) is the session solver's: its
         // stage 1 is re-solved with the bias at stage 1's temperature, so it may differ
         // from the first solve the procedure made to check stage 1's readings.
-        let (stage1, result) = match self.readings(config, &poses) {
+        let (stage1, result) = match self.readings(config, &poses, &index) {
             Some(readings) => {
                 let outcome = session::solve(&readings, &config.fit);
                 (outcome.stage1.or(self.stage1), outcome.result)

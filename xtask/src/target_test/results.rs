@@ -65,6 +65,7 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
                 j2_rad: f64::from(case.stage1.j2_rad),
             },
             poses: &poses,
+            capture_index: None,
             temperatures: Default::default(),
             closing: None,
         };

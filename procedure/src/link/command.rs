@@ -1,0 +1,217 @@
+//! The commands the pendant takes on its link, their parser and the `help` text.
+
+use crate::MAX_PLAN_POSES;
+use core::fmt;
+
+/// The text of `help`.
+pub const HELP: &[&str] = &[
+    "commands:",
+    "  help       this list",
+    "  status     phase, captures, bias, results",
+    "  live       stream readings until a key is pressed",
+    "  plan       show the pose list",
+    "  plan set   upload a pose list: j1..j6 or j3..j6 in degrees, one pose a line, then 'end'",
+    "  export     the whole session for 'zerocal session'",
+    "  clear      clear the session in progress",
+    "  profile    the robot profile in use",
+    "  profile set  upload a robot profile (zerocal pendant load-profile), then 'end'",
+    "  erase all  erase session, bias, last result, profile and plan",
+];
+
+/// A parsed command.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Command {
+    /// `help`
+    Help,
+    /// `status`
+    Status,
+    /// `live`
+    Live,
+    /// `plan`
+    Plan,
+    /// `plan set`
+    PlanSet,
+    /// `export`
+    Export,
+    /// `clear`
+    Clear,
+    /// `profile`
+    Profile,
+    /// `profile set`
+    ProfileSet,
+    /// `erase all`
+    Erase,
+}
+
+/// What is wrong with a line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum LinkError {
+    /// Not a command.
+    UnknownCommand,
+    /// A command with words it does not take.
+    UnexpectedArgument,
+    /// A `plan set` row is not four finite numbers.
+    BadPlanRow {
+        /// Row number (1-based).
+        row: usize,
+    },
+    /// A `plan set` angle is outside ±[`crate::text::MAX_JOINT_DEG`].
+    AngleOutOfRange {
+        /// Row number (1-based).
+        row: usize,
+    },
+    /// More rows than a plan holds.
+    PlanTooLong,
+    /// `erase` without `all`.
+    EraseNeedsAll,
+    /// A six-joint `plan set` row whose joints 1 or 2 are not stage 1's.
+    JointsOneTwoMoved {
+        /// Row number (1-based).
+        row: usize,
+    },
+    /// `end` before enough rows.
+    PlanTooShort {
+        /// Rows given.
+        rows: usize,
+    },
+}
+
+impl fmt::Display for LinkError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            LinkError::UnknownCommand => f.write_str("unknown command (type 'help')"),
+            LinkError::UnexpectedArgument => f.write_str("this command takes no arguments"),
+            LinkError::BadPlanRow { row } => {
+                write!(
+                    f,
+                    "plan row {row}: expected j3,j4,j5,j6 or j1,...,j6 in degrees; plan unchanged"
+                )
+            }
+            LinkError::AngleOutOfRange { row } => {
+                write!(
+                    f,
+                    "plan row {row}: an angle is outside +/-{} deg; plan unchanged",
+                    crate::text::MAX_JOINT_DEG
+                )
+            }
+            LinkError::JointsOneTwoMoved { row } => write!(
+                f,
+                "plan row {row}: joints 1 and 2 must stay at stage 1's (the profile's stage-1 pose); plan unchanged"
+            ),
+            LinkError::EraseNeedsAll => f.write_str(
+                "'erase all' erases the session, bias, last result, profile and plan; nothing erased",
+            ),
+            LinkError::PlanTooLong => {
+                write!(
+                    f,
+                    "a plan holds at most {MAX_PLAN_POSES} poses (each is captured twice); plan unchanged"
+                )
+            }
+            LinkError::PlanTooShort { rows } => write!(
+                f,
+                "{rows} poses: a plan needs at least {} ; plan unchanged",
+                zerocal_core::stage2::MIN_POSES
+            ),
+        }
+    }
+}
+
+impl Command {
+    /// Every command, in the order `help` lists them.
+    pub const ALL: [Command; 10] = [
+        Command::Help,
+        Command::Status,
+        Command::Live,
+        Command::Plan,
+        Command::PlanSet,
+        Command::Export,
+        Command::Clear,
+        Command::Profile,
+        Command::ProfileSet,
+        Command::Erase,
+    ];
+
+    /// The words a person (or `zerocal pendant`) types for it: defined here once, for
+    /// the pendant's parser and the desktop's requests.
+    pub const fn word(self) -> &'static str {
+        match self {
+            Command::Help => "help",
+            Command::Status => "status",
+            Command::Live => "live",
+            Command::Plan => "plan",
+            Command::PlanSet => "plan set",
+            Command::Export => "export",
+            Command::Clear => "clear",
+            Command::Profile => "profile",
+            Command::ProfileSet => "profile set",
+            Command::Erase => "erase all",
+        }
+    }
+}
+
+/// Parses a command line: a command's [`Command::word`] (words separated by any
+/// whitespace), or `?` for `help`.
+///
+/// # Errors
+/// [`LinkError::UnknownCommand`], [`LinkError::UnexpectedArgument`],
+/// [`LinkError::EraseNeedsAll`].
+pub fn parse_command(line: &str) -> Result<Command, LinkError> {
+    let mut words = line.split_whitespace();
+    let first = match words.next().ok_or(LinkError::UnknownCommand)? {
+        "?" => Command::Help.word(),
+        word => word,
+    };
+    let (second, third) = (words.next(), words.next());
+    let first_word = |c: &Command| c.word().split(' ').next();
+    for command in Command::ALL {
+        let mut expected = command.word().split(' ');
+        if expected.next() == Some(first) && expected.next() == second {
+            if third.is_some() {
+                return Err(LinkError::UnexpectedArgument);
+            }
+            return Ok(command);
+        }
+    }
+    if Some(first) == first_word(&Command::Erase) {
+        return Err(LinkError::EraseNeedsAll);
+    }
+    if Command::ALL.iter().any(|c| first_word(c) == Some(first)) {
+        return Err(LinkError::UnexpectedArgument);
+    }
+    Err(LinkError::UnknownCommand)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn commands_parse_and_junk_is_refused() {
+        assert_eq!(parse_command("help"), Ok(Command::Help));
+        assert_eq!(parse_command("  plan   set "), Ok(Command::PlanSet));
+        assert_eq!(parse_command("plan"), Ok(Command::Plan));
+        assert_eq!(parse_command("export"), Ok(Command::Export));
+        assert_eq!(parse_command("exprot"), Err(LinkError::UnknownCommand));
+        assert_eq!(parse_command(""), Err(LinkError::UnknownCommand));
+        assert_eq!(
+            parse_command("clear all"),
+            Err(LinkError::UnexpectedArgument)
+        );
+        assert_eq!(
+            parse_command("plan set now"),
+            Err(LinkError::UnexpectedArgument)
+        );
+        assert_eq!(parse_command("\u{1b}[A"), Err(LinkError::UnknownCommand));
+        assert_eq!(parse_command("profile set"), Ok(Command::ProfileSet));
+        assert_eq!(parse_command("erase all"), Ok(Command::Erase));
+        assert_eq!(parse_command("erase"), Err(LinkError::EraseNeedsAll));
+        assert_eq!(
+            parse_command("erase everything"),
+            Err(LinkError::EraseNeedsAll)
+        );
+    }
+}

@@ -1,0 +1,479 @@
+//! The export's metadata lines, `# key value…`: the keys an export may hold, their
+//! grammar (written by [`write_reversal`] and [`write_fit_extras`], read by
+//! [`parse_meta`]), and the check that each is given once ([`MetaKeys`]).
+
+use super::{
+    deg, Line, LogError, ShortText, MAX_JOINT_DEG, MAX_READING_DEG, METADATA_KEYS,
+    TEMPERATURE_RANGE_C,
+};
+use core::fmt::{self, Write};
+use zerocal_core::decimal::Fixed;
+use zerocal_core::model::{Convention, Tilt};
+use zerocal_core::real::{deg_to_rad, Real};
+use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage1::AxisOneTurn;
+use zerocal_core::stage2::Extras;
+
+/// A metadata item of the pendant's export that the session solver needs.
+#[derive(Clone, Debug, PartialEq)]
+pub enum MetaItem<T> {
+    /// `# robot NAME convention rpy|axis`.
+    Robot(crate::text::RobotName, Convention),
+    /// `# stage0_bias_deg x,y` (`None` for `none`).
+    Bias(Option<Tilt<T>>),
+    /// `# stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` (`None` for
+    /// `none`): the readings and the commanded joints 1 (before the half turn) and 2.
+    Stage1(Option<AxisOneTurn<T>>),
+    /// `# stage0_reversal_deg first x,y second x,y temp_c t|none`: stage 0's own
+    /// readings and temperature (the bias follows from them).
+    Stage0Reversal(ClosingReversal<T>),
+    /// `# stage1_temp_c t`: the sensor's temperature during stage 1.
+    Stage1Temperature(T),
+    /// `# closing_reversal_deg first x,y second x,y temp_c t|none`: the reversal after
+    /// stage 2 that measures the bias' drift.
+    Closing(ClosingReversal<T>),
+    /// `# fit_extras gain,cross_z,…|none`: what the pendant's fit estimated.
+    FitExtras(Extras),
+}
+
+/// The names of [`Extras`]' groups in `# fit_extras`, in order.
+const EXTRAS_NAMES: [&str; 6] = ["gain", "cross_z", "sag", "bias_x", "bias_y", "drift"];
+
+fn extras_flags(e: Extras) -> [bool; 6] {
+    [e.gain, e.cross_z, e.sag, e.bias_x, e.bias_y, e.drift]
+}
+
+/// Writes `# fit_extras a,b,…|none`: the terms the pendant's fit estimated, so the
+/// desktop solves the session with the same model.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_fit_extras(w: &mut Line, extras: Extras) -> fmt::Result {
+    w.write_str("# fit_extras ")?;
+    let mut any = false;
+    for (name, on) in EXTRAS_NAMES.iter().zip(extras_flags(extras)) {
+        if on {
+            if any {
+                w.write_char(',')?;
+            }
+            w.write_str(name)?;
+            any = true;
+        }
+    }
+    if !any {
+        w.write_str("none")?;
+    }
+    Ok(())
+}
+
+/// Writes a reversal with its temperature as a metadata line: `# KEY first x,y second
+/// x,y temp_c t|none`.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_reversal<T: Real>(w: &mut Line, key: &str, r: &ClosingReversal<T>) -> fmt::Result {
+    write!(w, "# {key} first ")?;
+    deg(w, r.reversal.first.x_rad)?;
+    w.write_char(',')?;
+    deg(w, r.reversal.first.y_rad)?;
+    w.write_str(" second ")?;
+    deg(w, r.reversal.second.x_rad)?;
+    w.write_char(',')?;
+    deg(w, r.reversal.second.y_rad)?;
+    w.write_str(" temp_c ")?;
+    match r.temperature_c {
+        Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), 2)),
+        None => w.write_str("none"),
+    }
+}
+
+/// Reads a metadata comment (the text after `#`). `Ok(None)` for other comments.
+///
+/// # Errors
+/// A known key whose value does not parse.
+pub fn parse_meta<T: Real>(
+    comment: &str,
+    line: usize,
+    parse: impl Fn(&str) -> Option<f64>,
+) -> Result<Option<MetaItem<T>>, LogError> {
+    let mut words = comment.split_whitespace();
+    let (Some(key), rest) = (words.next(), words) else {
+        return Ok(None);
+    };
+    let mut rest = rest;
+    let pair = |text: Option<&str>| -> Option<Tilt<T>> {
+        let (x, y) = text?.split_once(',')?;
+        let (x, y) = (parse(x)?, parse(y)?);
+        (x.is_finite() && y.is_finite() && x.abs() <= MAX_READING_DEG && y.abs() <= MAX_READING_DEG)
+            .then(|| Tilt::from_deg(T::lit(x), T::lit(y)))
+    };
+    let item = match key {
+        "robot" => {
+            let bad = LogError::BadMetadata { line, key: "robot" };
+            let mut name = crate::text::RobotName::new();
+            name.push_str(rest.next().ok_or(bad)?).map_err(|_| bad)?;
+            let c = (rest.next() == Some("convention"))
+                .then(|| rest.next().and_then(Convention::parse))
+                .flatten()
+                .ok_or(bad)?;
+            if rest.next().is_some() {
+                return Err(bad);
+            }
+            MetaItem::Robot(name, c)
+        }
+        "stage0_bias_deg" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "stage0_bias_deg",
+            };
+            match rest.next() {
+                Some("none") => MetaItem::Bias(None),
+                v => MetaItem::Bias(Some(pair(v).ok_or(bad)?)),
+            }
+        }
+        "stage1_readings_deg" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "stage1_readings_deg",
+            };
+            let first = rest.next();
+            if first == Some("none") {
+                MetaItem::Stage1(None)
+            } else {
+                let before = (first == Some("before"))
+                    .then(|| pair(rest.next()))
+                    .flatten();
+                let after = (rest.next() == Some("after"))
+                    .then(|| pair(rest.next()))
+                    .flatten();
+                let mut joint = |name: &str| {
+                    (rest.next() == Some(name))
+                        .then(|| rest.next().and_then(&parse))
+                        .flatten()
+                        .filter(|v| v.is_finite() && v.abs() <= MAX_JOINT_DEG)
+                };
+                let j1 = joint("j1_deg");
+                let j2 = joint("j2_deg");
+                match (before, after, j1, j2, rest.next()) {
+                    (Some(before), Some(after), Some(j1), Some(j2), None) => {
+                        MetaItem::Stage1(Some(AxisOneTurn {
+                            before,
+                            after,
+                            j1_rad: deg_to_rad(T::lit(j1)),
+                            j2_rad: deg_to_rad(T::lit(j2)),
+                        }))
+                    }
+                    _ => return Err(bad),
+                }
+            }
+        }
+        "fit_extras" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "fit_extras",
+            };
+            let list = rest.next().ok_or(bad)?;
+            if rest.next().is_some() {
+                return Err(bad);
+            }
+            let mut flags = [false; 6];
+            if list != "none" {
+                for name in list.split(',') {
+                    let k = EXTRAS_NAMES.iter().position(|n| *n == name).ok_or(bad)?;
+                    flags[k] = true;
+                }
+            }
+            MetaItem::FitExtras(Extras {
+                gain: flags[0],
+                cross_z: flags[1],
+                sag: flags[2],
+                bias_x: flags[3],
+                bias_y: flags[4],
+                drift: flags[5],
+                // Which offsets are held follows from the arm, not the export.
+                held: [false; 4],
+            })
+        }
+        "stage1_temp_c" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "stage1_temp_c",
+            };
+            match (rest.next().and_then(&parse), rest.next()) {
+                (Some(t), None)
+                    if t.is_finite()
+                        && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(&t) =>
+                {
+                    MetaItem::Stage1Temperature(T::lit(t))
+                }
+                _ => return Err(bad),
+            }
+        }
+        "stage0_reversal_deg" | "closing_reversal_deg" => {
+            let key: &'static str = if key == "closing_reversal_deg" {
+                "closing_reversal_deg"
+            } else {
+                "stage0_reversal_deg"
+            };
+            let bad = LogError::BadMetadata { line, key };
+            let first = (rest.next() == Some("first"))
+                .then(|| pair(rest.next()))
+                .flatten();
+            let second = (rest.next() == Some("second"))
+                .then(|| pair(rest.next()))
+                .flatten();
+            let temperature = match (rest.next(), rest.next()) {
+                (Some("temp_c"), Some("none")) => Some(None),
+                (Some("temp_c"), Some(t)) => parse(t)
+                    .filter(|t| {
+                        t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t)
+                    })
+                    .map(|t| Some(T::lit(t))),
+                _ => None,
+            };
+            match (first, second, temperature, rest.next()) {
+                (Some(first), Some(second), Some(temperature_c), None) => {
+                    let r = ClosingReversal {
+                        reversal: Reversal { first, second },
+                        temperature_c,
+                    };
+                    if key == "closing_reversal_deg" {
+                        MetaItem::Closing(r)
+                    } else {
+                        MetaItem::Stage0Reversal(r)
+                    }
+                }
+                _ => return Err(bad),
+            }
+        }
+        // Informational lines the pendant writes (each capture of stage 1, its result,
+        // stage 2's): the solver recomputes them from the readings.
+        "stage1_captures_deg" | "stage1" | "stage2" => return Ok(None),
+        _ if metadata_key(comment).is_some() => {
+            return Err(LogError::UnknownKey {
+                line,
+                key: ShortText::new(key),
+            })
+        }
+        _ => return Ok(None),
+    };
+    Ok(Some(item))
+}
+
+/// The key of a metadata comment (the text after `#`): its first word when that is a
+/// known key or has a key's form (lowercase ASCII letters, digits and `_`, with at least
+/// one digit or `_`, as every key with a value has), so a misspelt key is refused rather
+/// than read as a free comment. `None` for free text.
+pub fn metadata_key(comment: &str) -> Option<&str> {
+    let word = comment.split_whitespace().next()?;
+    let form = word
+        .bytes()
+        .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_')
+        && word.bytes().any(|b| b.is_ascii_digit() || b == b'_');
+    (form || METADATA_KEYS.contains(&word)).then_some(word)
+}
+
+/// The metadata items an export has given so far, to refuse one given twice: with two
+/// values for one key, which one the solver used would be a guess. Stage 0's bias and
+/// its reversal are one item (the pendant writes one or the other).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MetaKeys {
+    /// The line each item was first given on (0: not yet).
+    first_line: [usize; 6],
+}
+
+impl MetaKeys {
+    /// Notes `item`, read on `line`.
+    ///
+    /// # Errors
+    /// [`LogError::DuplicateKey`] when the item was given before.
+    pub fn note<T>(&mut self, item: &MetaItem<T>, line: usize) -> Result<(), LogError> {
+        let (slot, key) = match item {
+            MetaItem::Robot(..) => (0, "robot"),
+            MetaItem::Bias(_) => (1, "stage0_bias_deg"),
+            MetaItem::Stage0Reversal(_) => (1, "stage0_reversal_deg"),
+            MetaItem::Stage1(_) => (2, "stage1_readings_deg"),
+            MetaItem::Stage1Temperature(_) => (3, "stage1_temp_c"),
+            MetaItem::Closing(_) => (4, "closing_reversal_deg"),
+            MetaItem::FitExtras(_) => (5, "fit_extras"),
+        };
+        match self.first_line[slot] {
+            0 => {
+                self.first_line[slot] = line;
+                Ok(())
+            }
+            first_line => Err(LogError::DuplicateKey {
+                line,
+                key,
+                first_line,
+            }),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use zerocal_core::testing::isclose;
+
+    #[test]
+    fn reversals_and_temperatures_round_trip() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        let r = ClosingReversal {
+            reversal: Reversal {
+                first: Tilt::from_deg(1.25_f64, -0.5),
+                second: Tilt::from_deg(-0.75, 0.125),
+            },
+            temperature_c: Some(25.5),
+        };
+        for (key, closing) in [
+            ("closing_reversal_deg", true),
+            ("stage0_reversal_deg", false),
+        ] {
+            let mut w = Line::new();
+            write_reversal(&mut w, key, &r).unwrap();
+            let text = w.as_str().trim_start_matches('#');
+            match parse_meta::<f64>(text, 1, parse).unwrap() {
+                Some(MetaItem::Closing(b)) if closing => assert_eq!(b.temperature_c, Some(25.5)),
+                Some(MetaItem::Stage0Reversal(b)) if !closing => {
+                    assert!(isclose(
+                        b.reversal.second.y_rad,
+                        r.reversal.second.y_rad,
+                        0.0,
+                        1e-14
+                    ));
+                }
+                other => panic!("{key}: {other:?}"),
+            }
+        }
+        assert_eq!(
+            parse_meta::<f64>("stage1_temp_c 24.1", 1, parse),
+            Ok(Some(MetaItem::Stage1Temperature(24.1)))
+        );
+        let e = Extras {
+            gain: true,
+            sag: true,
+            bias_y: true,
+            ..Extras::NONE
+        };
+        let mut w = Line::new();
+        write_fit_extras(&mut w, e).unwrap();
+        assert_eq!(w.as_str(), "# fit_extras gain,sag,bias_y");
+        assert_eq!(
+            parse_meta::<f64>(w.as_str().trim_start_matches('#'), 1, parse),
+            Ok(Some(MetaItem::FitExtras(e)))
+        );
+        assert!(parse_meta::<f64>("fit_extras gain,wobble", 1, parse).is_err());
+        for junk in [
+            "stage1_temp_c hot",
+            "stage1_temp_c 900",
+            "closing_reversal_deg first 1,2 second 3,4",
+            "closing_reversal_deg first 1,2 second 3,4 temp_c x",
+        ] {
+            assert!(parse_meta::<f64>(junk, 7, parse).is_err(), "{junk}");
+        }
+    }
+
+    #[test]
+    fn metadata_parses_and_junk_is_named() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        match parse_meta::<f64>("robot kuka-kr16 convention axis", 2, parse) {
+            Ok(Some(MetaItem::Robot(name, Convention::Axis))) => assert_eq!(name, "kuka-kr16"),
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(
+            parse_meta::<f64>("stage0_bias_deg none", 3, parse),
+            Ok(Some(MetaItem::Bias(None)))
+        );
+        match parse_meta::<f64>(
+            "stage1_readings_deg before 1.5,-0.5 after 0.25,0.75 j1_deg 0 j2_deg -2",
+            4,
+            parse,
+        ) {
+            Ok(Some(MetaItem::Stage1(Some(t)))) => {
+                assert_eq!(t.j1_rad, 0.0);
+                assert!(isclose(t.before.to_deg().0, 1.5, 1e-15, 0.0));
+                assert!(isclose(t.j2_rad.to_degrees(), -2.0, 1e-15, 0.0));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(
+            parse_meta::<f64>("a comment of the user", 1, parse),
+            Ok(None)
+        );
+        for bad in [
+            "robot x convention polar",
+            "robot kuka-kr16",
+            "stage0_bias_deg 1",
+            "stage0_bias_deg 1,x",
+            "stage1_readings_deg before 1,2 after 3,4 j1_deg 0 j2_deg x",
+            "stage1_readings_deg before 1,2 after 3,4",
+        ] {
+            assert!(
+                matches!(
+                    parse_meta::<f64>(bad, 7, parse),
+                    Err(LogError::BadMetadata { line: 7, .. })
+                ),
+                "{bad}"
+            );
+        }
+    }
+
+    #[test]
+    fn keys_are_known_once_and_free_comments_stay_free() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        // The free lines the pendant writes, and a user's.
+        for free in [
+            "zerocal pendant export: read it with 'zerocal session'",
+            "stage 1 temperature not recorded",
+            "closing reversal not made",
+            "refused: stage 2: too few poses",
+            "Messung am Montag",
+        ] {
+            assert_eq!(metadata_key(free), None, "{free}");
+            assert_eq!(parse_meta::<f64>(free, 1, parse), Ok(None), "{free}");
+        }
+        // The informational keys are known, and not needed.
+        assert_eq!(
+            parse_meta::<f64>("stage2 offsets_deg 1,2,3,4", 1, parse),
+            Ok(None)
+        );
+        for misspelt in [
+            "stage0_bias_dge 1,2",
+            "stage0bias_deg none",
+            "fit_extra none",
+        ] {
+            let e = parse_meta::<f64>(misspelt, 9, parse);
+            let key = misspelt.split(' ').next().unwrap();
+            assert_eq!(
+                e,
+                Err(LogError::UnknownKey {
+                    line: 9,
+                    key: ShortText::new(key)
+                }),
+                "{misspelt}"
+            );
+        }
+        let mut keys = MetaKeys::default();
+        let bias = MetaItem::<f64>::Bias(None);
+        assert_eq!(keys.note(&bias, 3), Ok(()));
+        assert_eq!(keys.note(&MetaItem::Stage1Temperature(20.0), 4), Ok(()));
+        let reversal = MetaItem::Stage0Reversal(ClosingReversal {
+            reversal: Reversal {
+                first: Tilt::new(0.0, 0.0),
+                second: Tilt::new(0.0, 0.0),
+            },
+            temperature_c: None,
+        });
+        // Stage 0 twice, whichever key the second uses.
+        assert_eq!(
+            keys.note(&reversal, 7),
+            Err(LogError::DuplicateKey {
+                line: 7,
+                key: "stage0_reversal_deg",
+                first_line: 3
+            })
+        );
+        assert!(keys.note(&MetaItem::Stage1Temperature(21.0), 8).is_err());
+    }
+}

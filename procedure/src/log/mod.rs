@@ -1,0 +1,155 @@
+//! The files the pendant writes and the desktop reads, written and parsed here, once,
+//! so the firmware and the CLI cannot drift apart.
+//!
+//! **The stage-2 log** (`zerocal identify` reads it): `#` comment lines, a header
+//! naming the columns (any order, extra columns ignored), then one pose a row, the
+//! commanded joints and the raw readings in degrees:
+//!
+//! ```text
+//! # comment lines start with '#'
+//! j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg
+//! 12.5,-40.0,3.25,90.0,1.234567,-0.456789
+//! ```
+//!
+//! **The pendant's export** is such a log with the session in `#` metadata lines,
+//! `# key value…`, before the header: `robot NAME convention rpy|axis`,
+//! `stage0_bias_deg x,y`, `stage0_reversal_deg first x,y second x,y temp_c t`,
+//! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c`, `stage1_temp_c t`,
+//! stage 1's results, `closing_reversal_deg first x,y second x,y temp_c t` (the reversal
+//! after stage 2 that measures the bias' drift), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! [`MetaItem`] the metadata the session solver needs.
+//!
+//! The export is read strictly, because a line it ignores can make a session silently
+//! wrong ([`LogReader::for_export`], [`MetaKeys`]): its header [`EXPORT_HEADER`] adds the
+//! `approach` column (`below` or `above`: the side every joint arrived from) and the
+//! `pose` column (the pose's index in the plan; a pose has one capture a side) and no
+//! other column may appear; a comment whose first word has the form of a key (lowercase
+//! letters, digits and `_`, with at least one digit or `_`, see [`metadata_key`]) is a
+//! metadata line, and must be a key of [`METADATA_KEYS`], given once; any other comment
+//! (the export's first line, `# closing reversal not made`, a user's note) is free text.
+//!
+//! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
+//! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
+//!
+//! The parts: `write.rs` the
+//! export's writer and a log row's; `read.rs` the reader of both, a line at a time;
+//! `meta.rs` the metadata lines' keys and grammar; `error.rs` what a reader refuses.
+//! This file holds what they share: the columns, the headers and the bounds.
+
+mod error;
+mod meta;
+mod read;
+mod write;
+
+pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
+pub use error::{LogError, ShortText};
+pub use meta::{metadata_key, parse_meta, write_fit_extras, write_reversal, MetaItem, MetaKeys};
+pub use read::{strip_bom, text_of, LogLine, LogReader};
+pub(crate) use write::result_line;
+pub use write::{
+    export, write_export_row, write_row, CaptureRows, Export, ExportSession, EXPORT_MAX_LINES,
+};
+
+use core::fmt::{self, Write};
+use zerocal_core::capture::Approach;
+use zerocal_core::decimal::Fixed;
+use zerocal_core::model::Tilt;
+use zerocal_core::real::{rad_to_deg, Real};
+
+/// The columns a stage-2 log has, in the order the pendant writes them. The first six
+/// are required; `j1_deg` and `j2_deg` default to 0 (joints 1 and 2 where stage 1 had
+/// them, for a log of the paper's wrist), `temp_c` to unrecorded, `approach` (the
+/// export's: `below` or `above`) and `pose` (the export's: the pose's index in the plan)
+/// to unrecorded.
+pub const LOG_COLUMNS: [&str; 11] = [
+    "j3_deg", "j4_deg", "j5_deg", "j6_deg", "x_deg", "y_deg", "j1_deg", "j2_deg", "temp_c",
+    "approach", "pose",
+];
+
+/// Index of `temp_c` in [`LOG_COLUMNS`].
+const TEMPERATURE_COLUMN: usize = 8;
+
+/// Index of `approach` in [`LOG_COLUMNS`].
+const APPROACH_COLUMN: usize = 9;
+
+/// Index of `pose` in [`LOG_COLUMNS`].
+const POSE_COLUMN: usize = 10;
+
+/// How many of [`LOG_COLUMNS`] a log must have.
+const REQUIRED_COLUMNS: usize = 6;
+
+/// The header of a stage-2 log.
+pub const LOG_HEADER: &str = "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c";
+
+/// The header of the pendant's export: a stage-2 log's, the side each capture was
+/// approached from (`below` or `above`), so the desktop can tell a pose captured from
+/// one side only, and the pose's index in the plan, so the desktop pairs a pose's two
+/// captures by it (not by its joints, which a hand edit or a rounding may set apart).
+pub const EXPORT_HEADER: &str =
+    "j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,j6_deg,x_deg,y_deg,temp_c,approach,pose";
+
+/// The `approach` column's word for each side.
+pub fn approach_name(a: Approach) -> &'static str {
+    a.word()
+}
+
+/// Temperatures a log may hold (°C): the SCL3300's operating range is −40..+125 °C.
+pub const TEMPERATURE_RANGE_C: (f64, f64) = (-60.0, 150.0);
+
+/// Largest reading a log may hold (deg): an inclinometer reads ±180° at most.
+pub const MAX_READING_DEG: f64 = 180.0;
+
+/// Most columns a log row may have (extra ones are ignored, but counted).
+pub const MAX_COLUMNS: usize = 32;
+
+/// Decimals of a degree in the export: 1e-12° is 2e-14 rad, below the resolution of
+/// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the
+/// pendant's numbers, and an `f64` session's offsets move by ~1e-12° at most.
+pub const EXPORT_DECIMALS: u8 = 12;
+
+/// Every metadata key an export may hold (the first word of a `# key value…` line).
+pub const METADATA_KEYS: [&str; 10] = [
+    "robot",
+    "stage0_bias_deg",
+    "stage0_reversal_deg",
+    "stage1_readings_deg",
+    "stage1_temp_c",
+    "stage1_captures_deg",
+    "stage1",
+    "closing_reversal_deg",
+    "fit_extras",
+    "stage2",
+];
+
+/// [`METADATA_KEYS`], comma-separated, for messages.
+struct KnownKeys;
+
+impl fmt::Display for KnownKeys {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, k) in METADATA_KEYS.iter().enumerate() {
+            if i > 0 {
+                f.write_str(", ")?;
+            }
+            f.write_str(k)?;
+        }
+        Ok(())
+    }
+}
+
+/// Writes `rad` in degrees with [`EXPORT_DECIMALS`] decimals: the one number format
+/// of the export's rows and metadata.
+fn deg<T: Real>(w: &mut Line, rad: T) -> fmt::Result {
+    // In f64, whatever T is: the f32 value converts exactly.
+    write!(
+        w,
+        "{}",
+        Fixed::new(rad_to_deg(rad.to_f64()), EXPORT_DECIMALS)
+    )
+}
+
+/// Writes `x,y` in degrees.
+fn pair<T: Real>(w: &mut Line, t: &Tilt<T>) -> fmt::Result {
+    deg(w, t.x_rad)?;
+    w.write_char(',')?;
+    deg(w, t.y_rad)
+}

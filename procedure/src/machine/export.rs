@@ -1,0 +1,53 @@
+//! The procedure's state as the export's writer takes it ([`crate::log::ExportSession`]):
+//! built here, so the writer reads no procedure internals.
+
+use super::{ProcedureConfig, ProcedureState, ReadingSlot};
+use crate::log::{export, Export, ExportSession};
+use zerocal_core::capture::CaptureIndex;
+use zerocal_core::real::Real;
+use zerocal_core::stage2::PoseReading;
+
+impl<T: Real> ProcedureState<T> {
+    /// What the export holds of this session under `config`.
+    pub fn export_session<'a>(
+        &'a self,
+        config: &'a ProcedureConfig<T>,
+    ) -> ExportSession<'a, T, &'a [(CaptureIndex, PoseReading<T>)]> {
+        let slot = |s: ReadingSlot| self.reading(s);
+        ExportSession {
+            robot: config.robot.as_str(),
+            convention: config.convention,
+            bias: self.bias_source(),
+            stage1: self.axis_one_turn(config),
+            temperatures: self.stage_temperatures(),
+            closing: self.closing_reversal(),
+            captures: self.captures(),
+            stage1_captures: [
+                [
+                    slot(ReadingSlot::Stage1BeforeBelow),
+                    slot(ReadingSlot::Stage1BeforeAbove),
+                ],
+                [
+                    slot(ReadingSlot::Stage1AfterBelow),
+                    slot(ReadingSlot::Stage1AfterAbove),
+                ],
+            ],
+            // The session solver's stage 1 once the session is solved, as the screens
+            // and `status` show it.
+            stage1_result: self
+                .outcome()
+                .and_then(|o| o.stage1)
+                .or_else(|| self.stage1().copied()),
+            fit_extras: config.fit.extras,
+            result: self.outcome().map(|o| &o.result),
+        }
+    }
+
+    /// The export of this session under `config`, a line at a time.
+    pub fn export<'a>(
+        &'a self,
+        config: &'a ProcedureConfig<T>,
+    ) -> Export<'a, T, &'a [(CaptureIndex, PoseReading<T>)]> {
+        export(self.export_session(config))
+    }
+}
