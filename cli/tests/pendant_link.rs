@@ -309,8 +309,9 @@ fn status_of_a_whole_session_reads_back_to_its_decimals() {
         let want = f64::from(fit.sigma_rad[k]).to_degrees();
         assert!((sigma_deg[k] - want).abs() <= 5e-7 + 1e-12, "{k}");
     }
-    let stage1 = p.session.stage1().unwrap();
-    // 5 decimals on the stage-1 line.
+    // The session solver's stage 1 (the one the result screen shows), 5 decimals on the
+    // stage-1 line.
+    let stage1 = p.session.outcome().unwrap().stage1.unwrap();
     let want = f64::from(stage1.delta_theta2_rad).to_degrees();
     assert!((s.stage1.unwrap().j2_offset_deg - want).abs() <= 5e-6 + 1e-12);
     assert_eq!(s.captured, p.session.captures().len());
