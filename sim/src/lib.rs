@@ -8,6 +8,7 @@
 
 #![forbid(unsafe_code)]
 
+pub mod flash;
 pub mod inclinometer;
 pub mod montecarlo;
 pub mod pendant;

@@ -1,5 +1,5 @@
 //! `cargo xtask pendant-sim --out DIR`: the pendant's application on the desktop
-//! (`zerocal_pendant::host`): a whole calibration on a simulated robot, the fault
+//! (`zerocal-pendant-desktop`): a whole calibration on a simulated robot, the fault
 //! scenarios, and with `--power-cuts` the power-cut campaign.
 //!
 //! Writes `DIR/export` (the bytes the link sent for `export`), `DIR/screens/NN-name.png`
@@ -14,9 +14,13 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
-use zerocal_pendant::host::panel::png;
-use zerocal_pendant::host::runner::{self, SessionReport};
-use zerocal_pendant::host::world::{
+use zerocal_pendant_desktop::conversation::link_faults;
+use zerocal_pendant_desktop::faults::fault_scenarios;
+use zerocal_pendant_desktop::gallery::gallery;
+use zerocal_pendant_desktop::panel::png;
+use zerocal_pendant_desktop::power_cuts;
+use zerocal_pendant_desktop::session::{self, SessionReport};
+use zerocal_pendant_desktop::world::{
     WorldConfig, HANDLING_MS, JOINT_SPEED_DEG_S, RINGING_DEG, RINGING_HZ, RINGING_TAU_MS,
 };
 use zerocal_pendant::screen::ScreenKind;
@@ -59,11 +63,11 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
         ..WorldConfig::default()
     };
     let started = std::time::Instant::now();
-    let (report, panel) = runner::session(world, true).map_err(anyhow::Error::msg)?;
-    let scenarios = runner::fault_scenarios().map_err(anyhow::Error::msg)?;
-    let (link, findings) = runner::link_faults().map_err(anyhow::Error::msg)?;
+    let (report, panel) = session::session(world, true).map_err(anyhow::Error::msg)?;
+    let scenarios = fault_scenarios().map_err(anyhow::Error::msg)?;
+    let (link, findings) = link_faults().map_err(anyhow::Error::msg)?;
     let _ = link;
-    let gallery = runner::gallery(&panel.borrow(), &scenarios);
+    let gallery = gallery(&panel.borrow(), &scenarios);
 
     let out = &options.out;
     let screens_dir = out.join("screens");
@@ -161,7 +165,7 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
 
     if options.power_cuts {
         let started = std::time::Instant::now();
-        let cuts = runner::power_cuts(options.seed, options.cut_limit, |i, n| {
+        let cuts = power_cuts::power_cuts(options.seed, options.cut_limit, |i, n| {
             if i % 200 == 0 {
                 eprintln!("power cuts: {i}/{n}");
             }
