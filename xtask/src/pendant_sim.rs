@@ -14,6 +14,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
+use zerocal_pendant::screen::ScreenKind;
 use zerocal_pendant_desktop::conversation::link_faults;
 use zerocal_pendant_desktop::faults::fault_scenarios;
 use zerocal_pendant_desktop::gallery::gallery;
@@ -21,9 +22,9 @@ use zerocal_pendant_desktop::panel::png;
 use zerocal_pendant_desktop::power_cuts;
 use zerocal_pendant_desktop::session::{self, SessionReport};
 use zerocal_pendant_desktop::world::{
-    WorldConfig, HANDLING_MS, JOINT_SPEED_DEG_S, RINGING_DEG, RINGING_HZ, RINGING_TAU_MS,
+    WorldConfig, FILTER_TAU_MS, HANDLING_MS, JOINT_SPEED_DEG_S, NOISE_G, RINGING_DEG, RINGING_HZ,
+    RINGING_TAU_MS,
 };
-use zerocal_pendant::screen::ScreenKind;
 
 /// Pictures are 128×64 pixels scaled by this.
 const SCALE: usize = 4;
@@ -218,8 +219,10 @@ fn print_session(report: &SessionReport) {
         HANDLING_MS / 1000
     );
     println!(
-        "sensor: SCL3300 mode 4 (10 Hz first-order filter, 0.06/0.08 mg RMS noise, 0.0055 deg registers) read at 20 Hz over SPI frames; \
-         capture = mean of a 2 s still window (41 samples)"
+        "sensor: SCL3300 mode 4 (first-order filter, tau {FILTER_TAU_MS:.1} ms; RMS noise x {:.2} mg, y {:.2} mg; 0.0055 deg registers) read at 20 Hz over SPI frames; \
+         capture = mean of a 2 s still window (41 samples)",
+        NOISE_G[0] * 1e3,
+        NOISE_G[1] * 1e3
     );
     println!(
         "session: {} poses, {:.1} s on the robot from power-up to the result; flash: {} operations, {} erases",
