@@ -32,14 +32,14 @@ use embassy_time::Instant;
 use zerocal_core::plan::{Candidate, DEFAULT_POOL};
 use zerocal_core::procedure::pendant_default;
 
-use zerocal_pendant::channels::Shared;
-use zerocal_pendant::config::procedure_config;
-use zerocal_pendant::procedure::Boot;
-use zerocal_pendant::screen::RestartNote;
 use exec::Stop;
 use io::{ButtonLevels, HostButtons, HostLink, HostSpi, PendantRx, PendantTx};
 use panel::{HostPanel, PanelLog};
 use world::{World, WorldConfig};
+use zerocal_pendant::channels::Shared;
+use zerocal_pendant::config::procedure_config;
+use zerocal_pendant::procedure::Boot;
+use zerocal_pendant::screen::RestartNote;
 use zerocal_sim::flash::{SimFlash, STORE_RANGE};
 
 /// The pendant's default plan, as the firmware's build computes it: core's planner on

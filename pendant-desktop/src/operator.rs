@@ -13,9 +13,9 @@ use zerocal_core::model::JOINTS;
 use crate::exec::now;
 use crate::world::Place;
 use crate::Rig;
+use zerocal_core::procedure::Approach;
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::screen::{Prompt, Screen};
-use zerocal_core::procedure::Approach;
 
 /// How often the operator looks at the screen (ms).
 pub const LOOK_MS: u64 = 100;

@@ -9,7 +9,7 @@
 use std::cell::RefMut;
 use std::future::Future;
 
-use embassy_time::{Duration, Instant, Timer};
+use embassy_time::{with_timeout, Duration, Instant, Timer};
 use zerocal_core::procedure::ProcedureState;
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::channels::Shared;
@@ -101,6 +101,36 @@ impl Bench {
             Ok(Err(e)) => Err(format!("script: {e:?}")),
             Err(Stop::Deadline | Stop::PowerCut) => Ok(PowerUp::Cut),
             Err(stop) => Err(format!("the simulation stopped: {stop:?}")),
+        }
+    }
+
+    /// Powers the pendant up and runs `script` for `on_for` (or until it finishes),
+    /// then reads the session and cuts the power: what the pendant held at the cut.
+    /// The session is read under the procedure's lock, so between two of its steps
+    /// (each step's records are on flash before the lock is let go).
+    ///
+    /// # Errors
+    /// The script's error, or the simulation's stop, as text.
+    pub fn power_up_then_cut<'s, S, F>(
+        &'s self,
+        on_for: Duration,
+        script: S,
+    ) -> Result<ProcedureState<f32>, String>
+    where
+        S: FnOnce(Pendant<'s>) -> F + 's,
+        F: Future<Output = Result<(), ScriptError>> + 's,
+    {
+        let held = self.power_up_for(RUN_LIMIT, |p| async move {
+            if let Ok(Err(e)) = with_timeout(on_for, script(p)).await {
+                return Err(e);
+            }
+            // Returning ends the run: the pendant's tasks are not polled again, as
+            // if the power went here.
+            Ok(p.session(ProcedureState::clone).await)
+        })?;
+        match held {
+            PowerUp::Finished(state) => Ok(state),
+            PowerUp::Cut => Err(format!("the script ran past {} s", RUN_LIMIT.as_secs())),
         }
     }
 

@@ -99,6 +99,10 @@ pub struct SessionReport {
     pub export: Vec<u8>,
     /// A second `export` gave the same bytes.
     pub second_export_equal: bool,
+    /// The bytes the link sent for `status`, after the exports.
+    pub status: Vec<u8>,
+    /// The procedure's state at the end, as a debugger on the board would read it.
+    pub state: ProcedureState<f32>,
     /// The truth.
     pub truth: Truth,
     /// The pendant's result, if it gave one.
@@ -113,13 +117,33 @@ pub struct SessionReport {
     pub poses: usize,
 }
 
-/// Runs a whole calibration on `rig` and exports it; `tour` also turns every result
-/// page (for the gallery).
-async fn full_session(
-    rig: &Rig,
-    shared: &Shared,
-    tour: bool,
-) -> Result<(Vec<u8>, Vec<u8>, Option<Identified>, f64), ScriptError> {
+impl SessionReport {
+    /// The export as text (the pendant sends ASCII; anything else shows as U+FFFD).
+    pub fn export_text(&self) -> String {
+        String::from_utf8_lossy(&self.export).into_owned()
+    }
+
+    /// The status reply's lines, without their line ends.
+    pub fn status_lines(&self) -> Vec<String> {
+        String::from_utf8_lossy(&self.status)
+            .lines()
+            .map(str::to_owned)
+            .collect()
+    }
+}
+
+/// What the link and the session said at the end of [`full_session`].
+struct Ended {
+    export: Vec<u8>,
+    second_export: Vec<u8>,
+    status: Vec<u8>,
+    state: ProcedureState<f32>,
+    done_s: f64,
+}
+
+/// Runs a whole calibration on `rig`, exports it (twice) and asks for the status;
+/// `tour` also turns every result page (for the gallery).
+async fn full_session(rig: &Rig, shared: &Shared, tour: bool) -> Result<Ended, ScriptError> {
     let result = calibrate(rig, PATIENCE).await?;
     let done_s = t_ms() / 1000.0;
     if tour {
@@ -138,12 +162,20 @@ async fn full_session(
         // not here.
     }
     let export = command(rig, b"export\r\n", SILENCE).await;
-    let second = command(rig, b"export\r\n", SILENCE).await;
-    let id = identified(&shared.procedure.lock().await.session);
-    Ok((export, second, id, done_s))
+    let second_export = command(rig, b"export\r\n", SILENCE).await;
+    let status = command(rig, b"status\r\n", SILENCE).await;
+    let state = shared.procedure.lock().await.session.clone();
+    Ok(Ended {
+        export,
+        second_export,
+        status,
+        state,
+        done_s,
+    })
 }
 
-/// One calibration session, as `cargo xtask pendant-sim` runs it.
+/// One calibration session in the world `world` (its seed also the flash's), as
+/// `cargo xtask pendant-sim` runs it; the panel's log holds every screen shown.
 ///
 /// # Errors
 /// The script's or the simulation's failure, as text.
@@ -156,26 +188,32 @@ pub fn session(
     let run = rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| {
         full_session(&rig, shared, tour)
     });
-    let (export, second, identified, robot_time_s) = match run {
-        Ok(Ok(done)) => done,
+    let ended = match run {
+        Ok(Ok(ended)) => ended,
         Ok(Err(e)) => return Err(format!("session script: {e:?}")),
         Err(stop) => return Err(format!("session stopped: {stop:?}")),
     };
-    let memory = rig.flash.memory();
+    let (flash_operations, erases) = {
+        let memory = rig.flash.memory();
+        (memory.operations, memory.erases)
+    };
     let report = SessionReport {
-        second_export_equal: export == second,
-        export,
+        second_export_equal: ended.export == ended.second_export,
+        export: ended.export,
+        status: ended.status,
+        identified: identified(&ended.state),
+        state: ended.state,
         truth: Truth::of(&rig),
-        identified,
-        robot_time_s,
-        flash_operations: memory.operations,
-        erases: memory.erases,
+        robot_time_s: ended.done_s,
+        flash_operations,
+        erases,
         poses: rig.plan.len(),
     };
-    drop(memory);
     Ok((report, rig.panel.clone()))
 }
 
+/// Where the session stands: 0-1 stage 0, 2-5 stage 1's four captures, then 6 +
+/// stage-2 captures, the closing reversal's two, the result.
 pub fn session_progress(session: &ProcedureState<f32>) -> usize {
     let view = session.view();
     let side = usize::from(view.approach == Some(Approach::FromAbove));

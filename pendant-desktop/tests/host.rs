@@ -4,12 +4,12 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use zerocal_core::log::{LogLine, LogReader};
+use zerocal_pendant::screen::ScreenKind;
 use zerocal_pendant_desktop::conversation::link_faults;
 use zerocal_pendant_desktop::faults::{self, StoreContents};
 use zerocal_pendant_desktop::power_cuts::{erase_operations, power_cuts, power_cuts_at};
 use zerocal_pendant_desktop::session;
 use zerocal_pendant_desktop::world::WorldConfig;
-use zerocal_pendant::screen::ScreenKind;
 use zerocal_sim::flash::CutPoint;
 use zerocal_sim::scl3300_device::{Fault, STATUS_SAT};
 

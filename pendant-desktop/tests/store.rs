@@ -7,12 +7,7 @@ use zerocal_core::procedure::record::Record;
 use zerocal_pendant::store::{ResetReason, Restored, Store};
 use zerocal_sim::flash::{CutPoint, SimFlash, SECTOR_BYTES, STORE_RANGE};
 
-fn power_up(
-    flash: &SimFlash,
-) -> (
-    Store<SimFlash>,
-    Result<Restored, ResetReason>,
-) {
+fn power_up(flash: &SimFlash) -> (Store<SimFlash>, Result<Restored, ResetReason>) {
     let mut store = Store::new(flash.clone(), STORE_RANGE).unwrap();
     let mut restored = Restored::default();
     let result = embassy_futures::block_on(store.open(&mut restored)).map(|()| restored);

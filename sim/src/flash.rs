@@ -161,7 +161,6 @@ impl SimFlash {
     }
 }
 
-
 impl SimFlash {
     /// The power is gone: the hook is told (the desktop's executor stops after this
     /// poll); the operation fails, for whatever still runs until then, and every later
