@@ -14,8 +14,8 @@ use libfuzzer_sys::fuzz_target;
 use zerocal_core::procedure::{step, Event};
 use zerocal_pendant::channels::{LinkReply, LinkRequest, Shared};
 use zerocal_pendant::config::procedure_config;
-use zerocal_pendant::host::exec;
 use zerocal_pendant::procedure::{reset_to_builtin, set_profile};
+use zerocal_pendant_desktop::exec;
 
 /// Host to pendant: packets of up to 64 bytes (USB full-speed bulk), then the cable
 /// goes.

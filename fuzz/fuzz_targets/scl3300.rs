@@ -10,7 +10,7 @@ use libfuzzer_sys::fuzz_target;
 use zerocal_core::scl3300::protocol::{crc8, Response};
 use zerocal_core::scl3300::{angle_rad, temperature_celsius, Mode, Scl3300};
 use zerocal_fuzz::{FuzzSensor, NoDelay};
-use zerocal_pendant::host::exec;
+use zerocal_pendant_desktop::exec;
 
 fuzz_target!(|data: &[u8]| {
     let mut u = Unstructured::new(data);
