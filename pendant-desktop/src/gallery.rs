@@ -3,10 +3,9 @@
 //! appeared. `cargo xtask pendant-sim` writes it as PNGs (docs/screens) and checks the
 //! committed copy against it.
 
-use zerocal_pendant::screen::{Screen, ScreenKind};
+use zerocal_pendant::screen::ScreenKind;
 
 use crate::faults::ScenarioReport;
-use crate::operator::capture_count;
 use crate::panel::{Frame, PanelLog};
 
 /// The gallery: the first frame of each distinct screen, the session's first, then
@@ -25,9 +24,4 @@ pub fn gallery(session: &PanelLog, scenarios: &[ScenarioReport]) -> Vec<(ScreenK
         add(&s.panel.borrow());
     }
     out
-}
-
-/// Stage-2 captures shown on a screen (for tests).
-pub fn captured(screen: &Screen) -> usize {
-    capture_count(screen)
 }

@@ -9,7 +9,7 @@
 use std::cell::RefMut;
 use std::future::Future;
 
-use embassy_time::{with_timeout, Duration, Instant, Timer};
+use embassy_time::{with_timeout, Duration, Timer};
 use zerocal_core::procedure::ProcedureState;
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::channels::Shared;
@@ -275,11 +275,6 @@ impl Pendant<'_> {
         let text = format!("{line}\r\n");
         let answer = operator::command(self.rig, text.as_bytes(), SILENCE).await;
         String::from_utf8_lossy(&answer).into_owned()
-    }
-
-    /// Now on the simulated clock.
-    pub fn now(&self) -> Instant {
-        exec::now()
     }
 }
 
