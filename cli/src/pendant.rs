@@ -17,7 +17,7 @@
 //! export whole by its end trailer, the changes by their confirmation lines. The I/O is
 //! any `Read + Write` (a serial port opened raw; a scripted port in the tests). The
 //! requests and checks are tested against the pendant's own link task on the desktop
-//! (`zerocal_pendant::host::runner::converse`). docs/pendant-link.md has the grammar.
+//! (`zerocal_pendant_desktop::conversation::converse`). docs/pendant-link.md has the grammar.
 
 use std::io::{Read, Write};
 use std::path::PathBuf;

@@ -1,5 +1,5 @@
 //! `zerocal pendant` against the pendant's own link task, run on the desktop
-//! (`zerocal_pendant::host::runner::converse`), and against ports that say anything
+//! (`zerocal_pendant_desktop::conversation::converse`), and against ports that say anything
 //! else: the desktop believes nothing it cannot check. Every wrong reply is refused
 //! with exit 3 naming what is wrong, no answer is exit 2, and a flood or a trickle is
 //! cut off within the reply's bounds.
@@ -11,9 +11,11 @@ use std::time::{Duration, Instant};
 
 use zerocal_cli::error::CliError;
 use zerocal_cli::pendant::{self, Expect, PendantAction, Timeouts};
-use zerocal_pendant::host::runner::converse;
 use zerocal_pendant::screen::Screen;
-use zerocal_procedure::link::{parse_status, pendant_status, status, Stage2Status};
+use zerocal_pendant_desktop::conversation::converse;
+use zerocal_pendant_desktop::session::{session, SessionReport};
+use zerocal_pendant_desktop::world::WorldConfig;
+use zerocal_procedure::link::{parse_status, Stage2Status};
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
 
 /// Short enough for a test, long against a scripted port that answers at once.
@@ -150,26 +152,19 @@ fn crlf(lines: &[&str]) -> Vec<u8> {
         .collect()
 }
 
-/// A whole simulated session (stages 0-2, 12 poses captured twice) and its export as
-/// the pendant writes it.
-fn whole_session() -> (zerocal_sim::pendant::SimPendant<f32>, Vec<String>) {
-    let mut p = zerocal_sim::scenario::pendant::<f32>(12, 11).expect("the planner plans 12 poses");
-    zerocal_sim::scenario::whole_session(&mut p);
-    let lines = p
-        .session
-        .export(&p.config)
-        .map(|l| l.expect("line fits").as_str().to_owned())
-        .collect();
-    (p, lines)
+/// A whole session of the pendant's own tasks on the desktop (stages 0-2, every plan
+/// pose captured twice), with its export and status replies as the link sent them.
+fn whole_session() -> SessionReport {
+    let world = WorldConfig {
+        seed: 11,
+        ..WorldConfig::default()
+    };
+    session(world, false).expect("a whole session").0
 }
 
-fn status_reply(p: &zerocal_sim::pendant::SimPendant<f32>) -> Vec<String> {
-    let mut lines: Vec<String> = (0..)
-        .map_while(|i| status(&p.session, i))
-        .map(|l| l.unwrap().as_str().to_owned())
-        .collect();
-    lines.push(pendant_status(0, 2).unwrap().as_str().to_owned());
-    lines
+/// The export's lines, without their line ends.
+fn export_lines(report: &SessionReport) -> Vec<String> {
+    report.export_text().lines().map(str::to_owned).collect()
 }
 
 #[test]
@@ -288,11 +283,11 @@ fn a_refused_profile_stops_before_the_plan() {
 
 #[test]
 fn status_of_a_whole_session_reads_back_to_its_decimals() {
-    let (p, _) = whole_session();
-    let lines = status_reply(&p);
+    let report = whole_session();
+    let lines = report.status_lines();
     let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
     let s = parse_status(&refs).unwrap();
-    let fit = p.session.outcome().unwrap().result.unwrap().fit;
+    let fit = report.state.outcome().unwrap().result.unwrap().fit;
     let Stage2Status::Done {
         offsets_deg,
         sigma_deg,
@@ -311,10 +306,10 @@ fn status_of_a_whole_session_reads_back_to_its_decimals() {
     }
     // The session solver's stage 1 (the one the result screen shows), 5 decimals on the
     // stage-1 line.
-    let stage1 = p.session.outcome().unwrap().stage1.unwrap();
+    let stage1 = report.state.outcome().unwrap().stage1.unwrap();
     let want = f64::from(stage1.delta_theta2_rad).to_degrees();
     assert!((s.stage1.unwrap().j2_offset_deg - want).abs() <= 5e-6 + 1e-12);
-    assert_eq!(s.captured, p.session.captures().len());
+    assert_eq!(s.captured, report.state.captures().len());
     // Printed from those fields, every line.
     let out = replay(
         &PendantAction::Status,
@@ -323,13 +318,13 @@ fn status_of_a_whole_session_reads_back_to_its_decimals() {
     .unwrap();
     assert_eq!(out.lines().count(), 7, "{out}");
     assert!(out.contains("stage 2: j3..j6 offsets "), "{out}");
-    assert!(out.contains("display faults 2"), "{out}");
+    let faults = format!("display faults {}", s.display_faults);
+    assert!(out.contains(&faults), "{out} lacks {faults}");
 }
 
 #[test]
 fn status_that_is_not_status_is_refused_naming_it() {
-    let (p, _) = whole_session();
-    let good = status_reply(&p);
+    let good = whole_session().status_lines();
     let with = |i: usize, text: &str| {
         let mut v = good.clone();
         v[i] = text.to_owned();
@@ -376,7 +371,7 @@ fn status_that_is_not_status_is_refused_naming_it() {
 
 #[test]
 fn an_export_is_saved_only_whole_by_its_trailer() {
-    let (_, lines) = whole_session();
+    let lines = export_lines(&whole_session());
     let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
     assert!(refs.len() > 29, "{}", refs.len());
     let export = PendantAction::Export { out: None };

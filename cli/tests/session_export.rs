@@ -1,17 +1,17 @@
 //! `zerocal session` on exports that used to give wrong numbers with exit 0: each is now
 //! refused with the line and key or column named, or (a session without a stage-0
 //! reversal) solved with the sensor's unknown offset in its budget. The exports are the
-//! simulator's (`RealSession::export_text`, truth known) and the simulated pendant's
-//! own (`ProcedureState::export`, with the `approach` and `pose` columns), edited as a user or a
-//! damaged file would.
+//! simulator's (`RealSession::export_text`, truth known) and the pendant's own (its
+//! tasks run on the desktop, the link's `export` with the `approach` and `pose` columns),
+//! edited as a user or a damaged file would.
 
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use zerocal_pendant_desktop::session::session as pendant_session;
 use zerocal_profile::Profile;
-use zerocal_sim::scenario::{self, pendant};
 use zerocal_sim::world::{ApproachScheme, RealSession, WorldConfig};
 
 fn dir() -> PathBuf {
@@ -218,16 +218,31 @@ fn poses_captured_from_one_side_are_refused() {
 /// lost is refused, naming the row of the lone "below" capture.
 #[test]
 fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
-    let mut p = pendant::<f64>(12, 14).expect("the planner plans 12 poses");
-    scenario::whole_session(&mut p);
-    let mut text = String::new();
-    for line in p.session.export(&p.config) {
-        text.push_str(line.expect("line fits").as_str());
-        text.push('\n');
-    }
+    let pendant_world = zerocal_pendant_desktop::world::WorldConfig {
+        seed: 14,
+        ..zerocal_pendant_desktop::world::WorldConfig::default()
+    };
+    let (report, _) = pendant_session(pendant_world, false).expect("a whole session");
+    // Saved as `zerocal pendant export` saves it: the lines as sent, LF line ends.
+    let text: String = report
+        .export_text()
+        .lines()
+        .map(|l| format!("{l}\n"))
+        .collect();
+    // Every plan pose captured from below, then from above.
+    assert_eq!(
+        report.state.captures().len(),
+        zerocal_core::capture::CaptureIndex::captures_of(report.poses)
+    );
     let (header, h) = line_of(&text, "j1_deg,");
     assert_eq!(h, zerocal_procedure::log::EXPORT_HEADER);
-    let rows: Vec<&str> = text.lines().skip(header).take(24).collect();
+    let rows: Vec<&str> = text
+        .lines()
+        .skip(header)
+        .take(zerocal_core::capture::CaptureIndex::captures_of(
+            report.poses,
+        ))
+        .collect();
     for (i, r) in rows.iter().enumerate() {
         let side = if i % 2 == 0 { ",below" } else { ",above" };
         // The side, then the pose's index in the plan: two captures a pose.
@@ -254,16 +269,18 @@ fn the_pendant_export_records_the_side_and_a_lone_side_is_refused() {
     );
 }
 
-/// The simulated pendant's whole session exported, its end trailer dropped (so an edit
+/// The pendant's whole session (its own tasks on the desktop) exported, its end trailer dropped (so an edit
 /// is read, not refused as damage), and the line of its header.
 fn pendant_export_text() -> (String, usize) {
-    let mut p = pendant::<f64>(12, 14).expect("the planner plans 12 poses");
-    scenario::whole_session(&mut p);
+    let pendant_world = zerocal_pendant_desktop::world::WorldConfig {
+        seed: 14,
+        ..zerocal_pendant_desktop::world::WorldConfig::default()
+    };
+    let (report, _) = pendant_session(pendant_world, false).expect("a whole session");
     let mut text = String::new();
-    for line in p.session.export(&p.config) {
-        let line = line.expect("line fits");
+    for line in report.export_text().lines() {
         if !line.starts_with(zerocal_procedure::export_trailer::TRAILER_PREFIX) {
-            text.push_str(line.as_str());
+            text.push_str(line);
             text.push('\n');
         }
     }

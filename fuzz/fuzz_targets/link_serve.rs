@@ -13,8 +13,8 @@ use embassy_time::Instant;
 use libfuzzer_sys::fuzz_target;
 use zerocal_pendant::channels::{LinkReply, LinkRequest, Shared};
 use zerocal_pendant::config::procedure_config;
-use zerocal_pendant::host::exec;
 use zerocal_pendant::procedure::{reset_to_builtin, set_profile};
+use zerocal_pendant_desktop::exec;
 use zerocal_procedure::{step, Event};
 
 /// Host to pendant: packets of up to 64 bytes (USB full-speed bulk), then the cable

@@ -8,8 +8,8 @@
 //! ([`ui::Panel`]), embedded-io-async `Read`/`Write` (the USB serial port), an
 //! embedded-storage-async `NorFlash` (the store), [`buttons::ButtonInputs`], and
 //! embassy-time for every wait. The firmware (`firmware/`) only wires the STM32F411's
-//! peripherals to these; the `host` feature ([`host`]) wires simulated ones and runs
-//! the same tasks on a simulated clock.
+//! peripherals to these; the desktop crate `zerocal-pendant-desktop` wires simulated
+//! ones and runs the same tasks on a simulated clock.
 //!
 //! One task per module, each looping forever and sharing only [`channels::Shared`]:
 //!
@@ -18,7 +18,7 @@
 //! - [`procedure`]: core's `step`, the store ([`store`]), the screens ([`screen`]).
 //! - [`ui`]: draws ([`draw`]) the newest screen.
 //! - [`link`]: serves the USB line protocol.
-#![cfg_attr(not(any(test, feature = "std")), no_std)]
+#![cfg_attr(not(test), no_std)]
 #![warn(missing_docs)]
 
 pub mod buttons;
@@ -32,8 +32,5 @@ pub mod screen;
 pub mod sensor;
 pub mod store;
 pub mod ui;
-
-#[cfg(feature = "host")]
-pub mod host;
 
 pub use channels::Shared;

@@ -25,8 +25,9 @@ pub use crate::messages::{SensorFault, SensorReport};
 pub const SAMPLE_PERIOD: Duration = Duration::from_millis(SAMPLE_PERIOD_MS as u64);
 
 /// After this many refused samples in a row (0.5 s at 20 Hz) the sensor is started
-/// up again and the fault is shown.
-const MAX_CONSECUTIVE_DROPS: u32 = 10;
+/// up again and the fault is shown; fewer are a gap in the readings, which the
+/// stillness window bridges.
+pub const MAX_CONSECUTIVE_DROPS: u32 = 10;
 
 /// Identical raw angle words on both axes for this many samples (10 s) mean a frozen
 /// output. Mode 4's noise (0.06-0.08 mg RMS, ~0.8 count of 0.0055°) makes even two

@@ -1,21 +1,20 @@
 //! zerocal-sim: the world the pendant measures, simulated for the tests, the `zerocal`
-//! CLI and the pendant's host runner.
+//! CLI and the pendant's desktop runner (`zerocal-pendant-desktop`).
 //!
 //! Robots with hidden zero offsets and base tilt, inclinometers (down to the SCL3300's
-//! SPI frames), pose samplers, whole calibration sessions and operator scripts. Only the
-//! world is simulated: whatever the pendant computes is `zerocal-core`'s code, called
-//! exactly as the firmware calls it.
+//! SPI frames), the F411's flash with power cuts, pose samplers and whole calibration
+//! sessions. Only the world is simulated: whatever the pendant computes is
+//! `zerocal-core`'s code, called exactly as the firmware calls it.
 
 #![forbid(unsafe_code)]
 
+pub mod flash;
 pub mod inclinometer;
 pub mod montecarlo;
-pub mod pendant;
 pub mod pendant_plan;
 pub mod poses;
 pub mod positioning;
 pub mod robot;
-pub mod scenario;
 pub mod scl3300_device;
 pub mod sensor;
 pub mod session;

@@ -1,5 +1,5 @@
 //! `cargo xtask pendant-sim --out DIR`: the pendant's application on the desktop
-//! (`zerocal_pendant::host`): a whole calibration on a simulated robot, the fault
+//! (`zerocal-pendant-desktop`): a whole calibration on a simulated robot, the fault
 //! scenarios, and with `--power-cuts` the power-cut campaign.
 //!
 //! Writes `DIR/export` (the bytes the link sent for `export`), `DIR/screens/NN-name.png`
@@ -14,12 +14,17 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
-use zerocal_pendant::host::panel::png;
-use zerocal_pendant::host::runner::{self, SessionReport};
-use zerocal_pendant::host::world::{
-    WorldConfig, HANDLING_MS, JOINT_SPEED_DEG_S, RINGING_DEG, RINGING_HZ, RINGING_TAU_MS,
-};
 use zerocal_pendant::screen::ScreenKind;
+use zerocal_pendant_desktop::conversation::link_faults;
+use zerocal_pendant_desktop::faults::fault_scenarios;
+use zerocal_pendant_desktop::gallery::gallery;
+use zerocal_pendant_desktop::panel::png;
+use zerocal_pendant_desktop::power_cuts;
+use zerocal_pendant_desktop::session::{self, SessionReport};
+use zerocal_pendant_desktop::world::{
+    WorldConfig, FILTER_TAU_MS, HANDLING_MS, JOINT_SPEED_DEG_S, NOISE_G, RINGING_DEG, RINGING_HZ,
+    RINGING_TAU_MS,
+};
 
 /// Pictures are 128×64 pixels scaled by this.
 const SCALE: usize = 4;
@@ -59,11 +64,11 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
         ..WorldConfig::default()
     };
     let started = std::time::Instant::now();
-    let (report, panel) = runner::session(world, true).map_err(anyhow::Error::msg)?;
-    let scenarios = runner::fault_scenarios().map_err(anyhow::Error::msg)?;
-    let (link, findings) = runner::link_faults().map_err(anyhow::Error::msg)?;
+    let (report, panel) = session::session(world, true).map_err(anyhow::Error::msg)?;
+    let scenarios = fault_scenarios().map_err(anyhow::Error::msg)?;
+    let (link, findings) = link_faults().map_err(anyhow::Error::msg)?;
     let _ = link;
-    let gallery = runner::gallery(&panel.borrow(), &scenarios);
+    let gallery = gallery(&panel.borrow(), &scenarios);
 
     let out = &options.out;
     let screens_dir = out.join("screens");
@@ -161,7 +166,7 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
 
     if options.power_cuts {
         let started = std::time::Instant::now();
-        let cuts = runner::power_cuts(options.seed, options.cut_limit, |i, n| {
+        let cuts = power_cuts::power_cuts(options.seed, options.cut_limit, |i, n| {
             if i % 200 == 0 {
                 eprintln!("power cuts: {i}/{n}");
             }
@@ -214,8 +219,10 @@ fn print_session(report: &SessionReport) {
         HANDLING_MS / 1000
     );
     println!(
-        "sensor: SCL3300 mode 4 (10 Hz first-order filter, 0.06/0.08 mg RMS noise, 0.0055 deg registers) read at 20 Hz over SPI frames; \
-         capture = mean of a 2 s still window (41 samples)"
+        "sensor: SCL3300 mode 4 (first-order filter, tau {FILTER_TAU_MS:.1} ms; RMS noise x {:.2} mg, y {:.2} mg; 0.0055 deg registers) read at 20 Hz over SPI frames; \
+         capture = mean of a 2 s still window (41 samples)",
+        NOISE_G[0] * 1e3,
+        NOISE_G[1] * 1e3
     );
     println!(
         "session: {} poses, {:.1} s on the robot from power-up to the result; flash: {} operations, {} erases",

@@ -1,6 +1,6 @@
 //! The SSD1306 as a frame buffer: 128×64 pixels, what the pendant draws and flushes.
 //! Each flush is recorded with the screen it shows, so the runner can write one
-//! picture per distinct screen ([`crate::screen::ScreenKind`]) and the operator's
+//! picture per distinct screen ([`zerocal_pendant::screen::ScreenKind`]) and the operator's
 //! script can read what the pendant asks for.
 
 use std::cell::RefCell;
@@ -9,8 +9,8 @@ use std::rc::Rc;
 use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 
-use crate::screen::{Screen, ScreenKind};
-use crate::ui::Panel;
+use zerocal_pendant::screen::{Screen, ScreenKind};
+use zerocal_pendant::ui::Panel;
 
 /// Panel width (px).
 pub const WIDTH: usize = 128;

@@ -1,16 +1,25 @@
-//! The pendant on the desktop: the same tasks as on the board, on a simulated clock
-//! ([`exec`]), with a simulated SCL3300 at the SPI-frame level on a simulated robot
-//! ([`world`], [`io`]), the SSD1306 as a frame buffer ([`panel`]), the USB port as byte
-//! pipes ([`io`]) and the F411's flash sectors ([`flash`]). [`operator`] presses the
-//! buttons and moves the robot as the screens ask; [`runner`] runs whole sessions,
-//! the power-cut campaign and the faults, for `cargo xtask pendant-sim` and the tests.
+//! zerocal-pendant-desktop: the pendant's application (`zerocal-pendant`) on the
+//! desktop. The same tasks as on the board, on a simulated clock ([`exec`]), with a
+//! simulated SCL3300 at the SPI-frame level on a simulated robot ([`world`], [`io`]),
+//! the SSD1306 as a frame buffer ([`panel`]), the USB port as byte pipes ([`io`]) and
+//! the F411's flash sectors (`zerocal_sim::flash`). [`operator`] presses the buttons
+//! and moves the robot as the screens ask.
+//!
+//! Whole runs, for `cargo xtask pendant-sim` and the tests: a calibration
+//! [`session`], the [`power_cuts`] campaign, the [`faults`] scenarios, a link
+//! [`conversation`] and the screen [`gallery`]. [`script`] drives a session step by
+//! step for tests that look at the pendant between stages.
 
+pub mod conversation;
 pub mod exec;
-pub mod flash;
+pub mod faults;
+pub mod gallery;
 pub mod io;
 pub mod operator;
 pub mod panel;
-pub mod runner;
+pub mod power_cuts;
+pub mod script;
+pub mod session;
 pub mod world;
 
 use std::cell::RefCell;
@@ -23,15 +32,15 @@ use embassy_time::Instant;
 use zerocal_core::plan::{Candidate, DEFAULT_POOL};
 use zerocal_procedure::pendant_default;
 
-use crate::channels::Shared;
-use crate::config::procedure_config;
-use crate::procedure::Boot;
-use crate::screen::RestartNote;
 use exec::Stop;
-use flash::{SimFlash, STORE_RANGE};
 use io::{ButtonLevels, HostButtons, HostLink, HostSpi, PendantRx, PendantTx};
 use panel::{HostPanel, PanelLog};
 use world::{World, WorldConfig};
+use zerocal_pendant::channels::Shared;
+use zerocal_pendant::config::procedure_config;
+use zerocal_pendant::procedure::Boot;
+use zerocal_pendant::screen::RestartNote;
+use zerocal_sim::flash::{SimFlash, STORE_RANGE};
 
 /// The pendant's default plan, as the firmware's build computes it: core's planner on
 /// the pendant's configuration.
@@ -66,14 +75,16 @@ pub struct Rig {
 }
 
 impl Rig {
-    /// A rig with an erased flash.
+    /// A rig with an erased flash, whose power cuts stop the simulated clock's run.
     ///
     /// # Errors
     /// The planner's refusal of the default plan.
     pub fn new(world: WorldConfig, flash_seed: u64) -> Result<Rig, String> {
+        let flash = SimFlash::new(flash_seed);
+        flash.on_power_cut(exec::cut_power);
         Ok(Rig {
             world: Rc::new(RefCell::new(World::new(world))),
-            flash: SimFlash::new(flash_seed),
+            flash,
             panel: Rc::new(RefCell::new(PanelLog::default())),
             buttons: Rc::new(ButtonLevels::default()),
             link: HostLink::default(),
@@ -86,7 +97,7 @@ impl Rig {
     async fn pendant(&self, shared: &Shared) -> ! {
         let restart = self.restart.borrow_mut().take();
         let (never, ..) = join5(
-            crate::procedure::run(
+            zerocal_pendant::procedure::run(
                 shared,
                 Boot {
                     flash: self.flash.clone(),
@@ -95,9 +106,9 @@ impl Rig {
                     restart,
                 },
             ),
-            crate::sensor::run(shared, HostSpi::new(self.world.clone())),
-            crate::buttons::run(shared, HostButtons::new(self.buttons.clone())),
-            crate::ui::run(shared, HostPanel::new(self.panel.clone())),
+            zerocal_pendant::sensor::run(shared, HostSpi::new(self.world.clone())),
+            zerocal_pendant::buttons::run(shared, HostButtons::new(self.buttons.clone())),
+            zerocal_pendant::ui::run(shared, HostPanel::new(self.panel.clone())),
             self.usb(shared),
         )
         .await;
@@ -108,7 +119,7 @@ impl Rig {
     async fn usb(&self, shared: &Shared) -> ! {
         loop {
             if self.link.plugged.get() {
-                let _ = crate::link::serve(
+                let _ = zerocal_pendant::link::serve(
                     shared,
                     &mut PendantRx(&self.link),
                     &mut PendantTx(&self.link),

@@ -8,9 +8,10 @@
 //!
 //! Every word program and every sector erase is numbered. A [`CutPoint`] cuts the
 //! power at one of them, before it starts or half-way (some of the word's bits
-//! cleared, part of the sector erased): the host runner's power-cut campaign. A clone
-//! of [`SimFlash`] shares the bytes, so the pendant rebuilt after a cut finds them as
-//! they were left.
+//! cleared, part of the sector erased): the desktop pendant's power-cut campaign. A
+//! clone of [`SimFlash`] shares the bytes, so the pendant rebuilt after a cut finds
+//! them as they were left. Whoever runs the pendant hears of the cut through
+//! [`SimFlash::on_power_cut`] (the desktop's executor stops polling).
 
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -20,8 +21,6 @@ use embedded_storage_async::nor_flash::{
 };
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-
-use super::exec::cut_power;
 
 /// Erase unit: sectors 0-3 of the F411 are 16 KiB (RM0383, flash module organisation).
 pub const SECTOR_BYTES: usize = 16 * 1024;
@@ -70,6 +69,8 @@ pub struct FlashMemory {
     pub cut_done: bool,
     /// When `Some`, each operation's address and kind (`true`: an erase), in order.
     pub trace: Option<Vec<(u32, bool)>>,
+    /// Told when the power goes (see [`SimFlash::on_power_cut`]).
+    on_cut: Option<fn()>,
     rng: ChaCha8Rng,
 }
 
@@ -90,9 +91,17 @@ impl SimFlash {
                 cut: None,
                 cut_done: false,
                 trace: None,
+                on_cut: None,
                 rng: ChaCha8Rng::seed_from_u64(seed),
             })),
         }
+    }
+
+    /// Calls `hook` when a [`CutPoint`] cuts the power, before the operation fails:
+    /// the runner of the pendant stops it there (without a hook the operation and
+    /// every later one just fail).
+    pub fn on_power_cut(&self, hook: fn()) {
+        self.memory.borrow_mut().on_cut = Some(hook);
     }
 
     /// The power comes back: operations work again (the bytes stay as the cut left
@@ -152,11 +161,17 @@ impl SimFlash {
     }
 }
 
-/// The power is gone: the executor stops after this poll (the operation fails, for
-/// whatever still runs until then, and every later one too).
-fn dead() -> SimFlashError {
-    cut_power();
-    SimFlashError(NorFlashErrorKind::Other)
+impl SimFlash {
+    /// The power is gone: the hook is told (the desktop's executor stops after this
+    /// poll); the operation fails, for whatever still runs until then, and every later
+    /// one too.
+    fn dead(&self) -> SimFlashError {
+        let hook = self.memory.borrow().on_cut;
+        if let Some(hook) = hook {
+            hook();
+        }
+        SimFlashError(NorFlashErrorKind::Other)
+    }
 }
 
 impl ErrorType for SimFlash {
@@ -196,7 +211,7 @@ impl NorFlash for SimFlash {
                             }
                         }
                     }
-                    return Err(dead());
+                    return Err(self.dead());
                 }
                 None => {
                     let mut memory = self.memory.borrow_mut();
@@ -222,7 +237,7 @@ impl NorFlash for SimFlash {
                             memory.bytes[at + k] &= b | mask;
                         }
                     }
-                    return Err(dead());
+                    return Err(self.dead());
                 }
                 None => {
                     let mut memory = self.memory.borrow_mut();

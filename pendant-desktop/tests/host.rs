@@ -3,16 +3,19 @@
 //! the ones `cargo xtask pendant-sim` prints.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use zerocal_pendant::host::flash::CutPoint;
-use zerocal_pendant::host::runner::{self, StoreContents};
-use zerocal_pendant::host::world::WorldConfig;
 use zerocal_pendant::screen::ScreenKind;
+use zerocal_pendant_desktop::conversation::link_faults;
+use zerocal_pendant_desktop::faults::{self, StoreContents};
+use zerocal_pendant_desktop::power_cuts::{erase_operations, power_cuts, power_cuts_at};
+use zerocal_pendant_desktop::session;
+use zerocal_pendant_desktop::world::WorldConfig;
 use zerocal_procedure::log::{LogLine, LogReader};
+use zerocal_sim::flash::CutPoint;
 use zerocal_sim::scl3300_device::{Fault, STATUS_SAT};
 
 #[test]
 fn a_whole_session_identifies_the_offsets_within_three_sigma() {
-    let (report, panel) = runner::session(WorldConfig::default(), true).unwrap();
+    let (report, panel) = session::session(WorldConfig::default(), true).unwrap();
     let id = report.identified.expect("a result");
     for k in 0..5 {
         let error = id.offsets_deg[k] - report.truth.offsets_deg[k];
@@ -81,7 +84,7 @@ fn sensor_faults_show_their_screens_and_capture_nothing() {
         (Fault::BadCrc, ScreenKind::SensorBadFrames),
         (Fault::ErrorStatus(STATUS_SAT), ScreenKind::SensorError),
     ] {
-        let report = runner::sensor_fault("test", fault, kind).unwrap();
+        let report = faults::sensor_fault("test", fault, kind).unwrap();
         assert!(report.panel.borrow().seen(kind), "{fault:?}");
         assert_eq!(report.progress, 0, "{fault:?}: captured while faulty");
     }
@@ -89,7 +92,7 @@ fn sensor_faults_show_their_screens_and_capture_nothing() {
 
 #[test]
 fn a_frozen_output_is_named_within_fifteen_seconds() {
-    let report = runner::frozen_output().unwrap();
+    let report = faults::frozen_output().unwrap();
     assert!(report.panel.borrow().seen(ScreenKind::SensorFrozen));
     // Frozen during stage 0's second reading: the first stays, no second.
     assert_eq!(report.progress, 1);
@@ -97,10 +100,10 @@ fn a_frozen_output_is_named_within_fifteen_seconds() {
 
 #[test]
 fn readings_past_the_window_and_a_robot_that_never_stops_are_not_captured() {
-    let report = runner::out_of_range().unwrap();
+    let report = faults::out_of_range().unwrap();
     assert!(report.panel.borrow().seen(ScreenKind::OutOfRange));
     assert_eq!(report.progress, 0);
-    let report = runner::still_moving().unwrap();
+    let report = faults::still_moving().unwrap();
     assert!(report.panel.borrow().seen(ScreenKind::StillMoving));
     assert_eq!(report.progress, 0);
 }
@@ -112,7 +115,7 @@ fn foreign_or_older_stores_are_reset_by_name_and_then_work() {
         StoreContents::Random,
         StoreContents::OlderFormat,
     ] {
-        let report = runner::storage_reset(contents).unwrap();
+        let report = faults::storage_reset(contents).unwrap();
         assert!(report.panel.borrow().seen(ScreenKind::StorageReset));
         // After OK the store works: stage 0's first reading is captured and kept.
         assert_eq!(report.progress, 1, "{contents:?}");
@@ -121,14 +124,14 @@ fn foreign_or_older_stores_are_reset_by_name_and_then_work() {
 
 #[test]
 fn a_restart_note_is_shown_then_the_session_goes_on() {
-    let report = runner::restarted().unwrap();
+    let report = faults::restarted().unwrap();
     assert!(report.panel.borrow().seen(ScreenKind::Restarted));
     assert_eq!(report.progress, 1);
 }
 
 #[test]
 fn a_hung_display_is_timed_out_counted_and_reported_over_usb() {
-    let report = runner::display_hang().unwrap();
+    let report = faults::display_hang().unwrap();
     assert_eq!(report.display_faults, 3);
     assert!(
         report.link_text.contains("display faults 3"),
@@ -140,15 +143,15 @@ fn a_hung_display_is_timed_out_counted_and_reported_over_usb() {
 
 #[test]
 fn skipped_stage0_warns_and_skipped_poses_refuse() {
-    let report = runner::without_stage0().unwrap();
+    let report = faults::without_stage0().unwrap();
     assert!(report.panel.borrow().seen(ScreenKind::ResultWarning));
-    let report = runner::skip_everything().unwrap();
+    let report = faults::skip_everything().unwrap();
     assert!(report.panel.borrow().seen(ScreenKind::NoResult));
 }
 
 #[test]
 fn the_link_survives_garbage_long_lines_unplugging_and_live() {
-    let (_, f) = runner::link_faults().unwrap();
+    let (_, f) = link_faults().unwrap();
     assert!(
         f.garbage_answer.matches("error:").count() >= 2,
         "{}",
@@ -173,7 +176,7 @@ fn the_link_survives_garbage_long_lines_unplugging_and_live() {
 fn power_cuts_lose_and_duplicate_nothing() {
     // 40 cut points spread over each of the two sessions (a fresh board; a store whose
     // page fills, so records migrate and a sector is erased); the xtask runs every one.
-    let report = runner::power_cuts(3, Some(40), |_, _| {}).unwrap();
+    let report = power_cuts(3, Some(40), |_, _| {}).unwrap();
     assert_eq!(report.cut_points, 80);
     assert!(report.erases >= 1, "no erase in the campaign");
     assert!(report.failures.is_empty(), "{:#?}", report.failures);
@@ -188,7 +191,7 @@ fn power_cuts_lose_and_duplicate_nothing() {
 /// erased) cut at each of its erases, before it and half-way through it (some words
 /// erased, some not); every cut run must finish with the uncut run's export and plan.
 fn erase_cuts_match_the_uncut_run(seed: u64) {
-    let erases = runner::erase_operations(seed).unwrap();
+    let erases = erase_operations(seed).unwrap();
     assert!(!erases.is_empty());
     let cuts: Vec<(bool, CutPoint)> = erases
         .iter()
@@ -204,7 +207,7 @@ fn erase_cuts_match_the_uncut_run(seed: u64) {
             })
         })
         .collect();
-    let report = runner::power_cuts_at(seed, &cuts).unwrap();
+    let report = power_cuts_at(seed, &cuts).unwrap();
     assert!(report.failures.is_empty(), "{:#?}", report.failures);
     assert_eq!(report.equal_results, cuts.len());
 }

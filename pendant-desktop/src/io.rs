@@ -8,10 +8,10 @@ use embassy_sync::pipe::Pipe;
 use embassy_sync::signal::Signal;
 use embedded_hal_async::spi::{ErrorType, Operation, SpiDevice};
 
-use super::exec::now;
-use super::world::World;
-use crate::buttons::ButtonInputs;
-use crate::channels::RawMutex;
+use crate::exec::now;
+use crate::world::World;
+use zerocal_pendant::buttons::ButtonInputs;
+use zerocal_pendant::channels::RawMutex;
 
 /// The SCL3300's SPI device: each transaction brings the world's sensor up to the
 /// simulated time, then clocks the frames through the device.
@@ -67,7 +67,7 @@ pub struct ButtonLevels {
 }
 
 impl ButtonLevels {
-    /// Sets the levels ([`crate::buttons::Button::ALL`] order) and wakes the task.
+    /// Sets the levels ([`zerocal_pendant::buttons::Button::ALL`] order) and wakes the task.
     pub fn set(&self, held: [bool; 3]) {
         self.held.set(held);
         self.changed.signal(());

@@ -10,11 +10,11 @@
 use embassy_time::{Duration, Instant, Timer};
 use zerocal_core::model::JOINTS;
 
-use super::exec::now;
-use super::world::Place;
-use super::Rig;
-use crate::buttons::Button;
-use crate::screen::{Prompt, Screen};
+use crate::exec::now;
+use crate::world::Place;
+use crate::Rig;
+use zerocal_pendant::buttons::Button;
+use zerocal_pendant::screen::{Prompt, Screen};
 use zerocal_procedure::Approach;
 
 /// How often the operator looks at the screen (ms).
@@ -133,6 +133,19 @@ fn wanted(rig: &Rig, prompt: &Prompt) -> Result<(Place, Option<[f64; JOINTS]>), 
 /// # Errors
 /// A fault screen, or no progress for `patience`.
 pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptError> {
+    operate_until(rig, patience, |screen| matches!(screen, Screen::Result(_))).await
+}
+
+/// Does what the screens ask until a screen `done` takes is shown (looked at before
+/// acting on it), or the result; returns that screen.
+///
+/// # Errors
+/// A fault screen, or no progress for `patience`.
+pub async fn operate_until(
+    rig: &Rig,
+    patience: Duration,
+    done: impl Fn(&Screen) -> bool,
+) -> Result<Screen, ScriptError> {
     let mut last_change = Instant::now();
     let mut last_kind = None;
     // The prompt whose pose the robot was last brought to from its side.
@@ -152,6 +165,9 @@ pub async fn calibrate(rig: &Rig, patience: Duration) -> Result<Screen, ScriptEr
                 screen.kind(),
                 patience.as_secs()
             )));
+        }
+        if done(&screen) {
+            return Ok(screen);
         }
         match &screen {
             Screen::Starting(_) => {}

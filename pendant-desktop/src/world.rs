@@ -14,9 +14,10 @@
 //! - **Handling**: clipping the pendant on, or turning it on the bench, takes
 //!   [`HANDLING_MS`] of hand-held wobble (degrees of tilt: far outside the window).
 //! - **Sensor**: the `axis` convention of the true orientation, plus the chip's bias,
-//!   through the 10 Hz first-order output filter of mode 4 (τ = 15.9 ms), plus white
-//!   noise of mode 4's 0.06 mg (chip Y: pendant x) and 0.08 mg (chip X: pendant y)
-//!   RMS, quantised by the angle registers (0.0055°). Temperature starts at 23 °C and
+//!   through the first-order output filter of mode 4 (τ = 1/(2π·10 Hz) = 15.9 ms),
+//!   plus white noise of mode 4's RMS per axis, both from `zerocal-sim`'s datasheet
+//!   figures ([`Scl3300Spec::DATASHEET`]: the x reading is ANG_X, chip X's noise; y is
+//!   ANG_Y, chip Y's), quantised by the angle registers (0.0055°). Temperature starts at 23 °C and
 //!   warms by 1.5 °C with a 5-minute time constant (the chip's own dissipation; the
 //!   figure only needs to move, no result depends on it).
 //! - **Frozen world** ([`WorldConfig::frozen`]): no white noise, so the reading is a
@@ -31,6 +32,7 @@ use rand_distr::{Distribution, Normal};
 use zerocal_core::model::{rot_x, rot_y, rot_z, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
 use zerocal_sim::scl3300_device::{Fault, Scl3300Device};
+use zerocal_sim::sensor::Scl3300Spec;
 use zerocal_sim::SimRobot;
 
 /// Peak joint speed of the slowest-arriving joint (deg/s).
@@ -48,11 +50,13 @@ pub const RINGING_HZ: f64 = 4.0;
 /// Time a person takes to clip the pendant on or turn it (ms).
 pub const HANDLING_MS: u64 = 3000;
 
-/// Mode 4's output filter: first order at 10 Hz, τ = 1/(2π·10 Hz).
-pub const FILTER_TAU_MS: f64 = 1000.0 / (2.0 * core::f64::consts::PI * 10.0);
+/// Mode 4's output filter: first order at the datasheet's corner, τ = 1/(2π·f).
+pub const FILTER_TAU_MS: f64 =
+    1000.0 / (2.0 * core::f64::consts::PI * Scl3300Spec::DATASHEET.filter_hz);
 
-/// Mode 4's noise (RMS, in g): chip Y 0.06 mg, chip X 0.08 mg (docs/scl3300.md).
-pub const NOISE_G: (f64, f64) = (0.06e-3, 0.08e-3);
+/// Mode 4's RMS noise (g) on the x reading (ANG_X: chip X) and the y reading (ANG_Y:
+/// chip Y), as the rest of the simulator has it.
+pub const NOISE_G: [f64; 2] = Scl3300Spec::DATASHEET.noise_g;
 
 /// What the world is made of.
 #[derive(Clone, Copy, Debug)]
@@ -352,7 +356,7 @@ impl World {
                     .map(|n| n.sample(&mut self.rng))
                     .unwrap_or(0.0)
             };
-            (draw(NOISE_G.0), draw(NOISE_G.1))
+            (draw(NOISE_G[0]), draw(NOISE_G[1]))
         };
         if !self.freeze_output {
             self.device

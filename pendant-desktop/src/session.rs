@@ -1,0 +1,229 @@
+//! A whole calibration session on the desktop pendant: the operator does what the
+//! screens ask from power-up to the result, then the link's `export` is read twice.
+//! What `cargo xtask pendant-sim` prints (the identified offsets beside the hidden
+//! truth) and the session tests assert on. The timing constants every run shares are
+//! here too.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use embassy_time::{Duration, Instant, Timer};
+use zerocal_core::real::rad_to_deg;
+use zerocal_core::session::SESSION_JOINTS;
+use zerocal_pendant::buttons::Button;
+use zerocal_pendant::channels::Shared;
+use zerocal_pendant::screen::{ResultScreen, Screen};
+use zerocal_procedure::{Approach, Phase, ProcedureState};
+
+use crate::exec;
+use crate::operator::{calibrate, command, press, t_ms, ScriptError, PRESS_MS};
+use crate::panel::PanelLog;
+use crate::world::WorldConfig;
+use crate::Rig;
+
+/// Longest simulated time a run may take.
+pub const RUN_LIMIT: Duration = Duration::from_secs(3600);
+
+/// How long a session may stay on one screen before the script gives up.
+pub const PATIENCE: Duration = Duration::from_secs(120);
+
+/// The pendant sends nothing for this long: its answer is complete.
+pub const SILENCE: Duration = Duration::from_millis(500);
+
+/// A power-up after a cut: the board's reset and start-up (the clock moves on).
+pub const REBOOT: Duration = Duration::from_millis(300);
+
+/// The hidden truth of a session (deg).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Truth {
+    /// Δθ2..Δθ6.
+    pub offsets_deg: [f64; SESSION_JOINTS],
+    /// Base tilt α, β.
+    pub base_tilt_deg: (f64, f64),
+    /// The chip's bias x, y.
+    pub bias_deg: (f64, f64),
+}
+
+impl Truth {
+    fn of(rig: &Rig) -> Truth {
+        let world = rig.world.borrow();
+        let robot = &world.robot;
+        Truth {
+            offsets_deg: core::array::from_fn(|k| rad_to_deg(robot.offsets_rad[k + 1])),
+            base_tilt_deg: (
+                rad_to_deg(robot.base_tilt.alpha_rad),
+                rad_to_deg(robot.base_tilt.beta_rad),
+            ),
+            bias_deg: (rad_to_deg(world.bias.x_rad), rad_to_deg(world.bias.y_rad)),
+        }
+    }
+
+    /// As JSON (`DIR/truth.json`).
+    pub fn to_json(&self, seed: u64) -> String {
+        let value = serde_json::json!({
+            "seed": seed,
+            "joints": ["j2", "j3", "j4", "j5", "j6"],
+            "offsets_deg": self.offsets_deg,
+            "base_tilt_deg": [self.base_tilt_deg.0, self.base_tilt_deg.1],
+            "sensor_bias_deg": [self.bias_deg.0, self.bias_deg.1],
+            "offset_convention": "true - commanded",
+        });
+        serde_json::to_string_pretty(&value).unwrap_or_default()
+    }
+}
+
+/// What the pendant identified: Δθ2..Δθ6 and their 1σ (deg, the session's full
+/// covariance: stage-2 noise and what stages 0-1 hand over).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Identified {
+    /// Δθ2..Δθ6.
+    pub offsets_deg: [f64; SESSION_JOINTS],
+    /// Their 1σ.
+    pub sigma_deg: [f64; SESSION_JOINTS],
+}
+
+fn identified(session: &ProcedureState<f32>) -> Option<Identified> {
+    let solution = session.outcome()?.result.as_ref().ok()?;
+    Some(Identified {
+        offsets_deg: core::array::from_fn(|k| f64::from(rad_to_deg(solution.offsets_rad[k]))),
+        sigma_deg: core::array::from_fn(|k| {
+            f64::from(rad_to_deg(solution.covariance_rad2[k][k].max(0.0).sqrt()))
+        }),
+    })
+}
+
+/// A whole session's figures.
+#[derive(Clone, Debug)]
+pub struct SessionReport {
+    /// The bytes the link sent for `export`.
+    pub export: Vec<u8>,
+    /// A second `export` gave the same bytes.
+    pub second_export_equal: bool,
+    /// The bytes the link sent for `status`, after the exports.
+    pub status: Vec<u8>,
+    /// The procedure's state at the end, as a debugger on the board would read it.
+    pub state: ProcedureState<f32>,
+    /// The truth.
+    pub truth: Truth,
+    /// The pendant's result, if it gave one.
+    pub identified: Option<Identified>,
+    /// Simulated time from power-up to the result screen (s).
+    pub robot_time_s: f64,
+    /// Flash word programs and sector erases in the whole run.
+    pub flash_operations: u64,
+    /// Sector erases in the whole run.
+    pub erases: u64,
+    /// Poses in the plan.
+    pub poses: usize,
+}
+
+impl SessionReport {
+    /// The export as text (the pendant sends ASCII; anything else shows as U+FFFD).
+    pub fn export_text(&self) -> String {
+        String::from_utf8_lossy(&self.export).into_owned()
+    }
+
+    /// The status reply's lines, without their line ends.
+    pub fn status_lines(&self) -> Vec<String> {
+        String::from_utf8_lossy(&self.status)
+            .lines()
+            .map(str::to_owned)
+            .collect()
+    }
+}
+
+/// What the link and the session said at the end of [`full_session`].
+struct Ended {
+    export: Vec<u8>,
+    second_export: Vec<u8>,
+    status: Vec<u8>,
+    state: ProcedureState<f32>,
+    done_s: f64,
+}
+
+/// Runs a whole calibration on `rig`, exports it (twice) and asks for the status;
+/// `tour` also turns every result page (for the gallery).
+async fn full_session(rig: &Rig, shared: &Shared, tour: bool) -> Result<Ended, ScriptError> {
+    let result = calibrate(rig, PATIENCE).await?;
+    let done_s = t_ms() / 1000.0;
+    if tour {
+        let pages = match &result {
+            Screen::Result(r) => ResultScreen::pages(&r.fit),
+            _ => 1,
+        };
+        for _ in 1..pages {
+            press(rig, Button::Next, PRESS_MS).await;
+            Timer::after(Duration::from_millis(300)).await;
+        }
+        // A brush of OK: the result stays and says how to start anew.
+        press(rig, Button::Ok, PRESS_MS).await;
+        Timer::after(Duration::from_millis(300)).await;
+        // A long OK starts a new session; the export is of the one just finished, so
+        // not here.
+    }
+    let export = command(rig, b"export\r\n", SILENCE).await;
+    let second_export = command(rig, b"export\r\n", SILENCE).await;
+    let status = command(rig, b"status\r\n", SILENCE).await;
+    let state = shared.procedure.lock().await.session.clone();
+    Ok(Ended {
+        export,
+        second_export,
+        status,
+        state,
+        done_s,
+    })
+}
+
+/// One calibration session in the world `world` (its seed also the flash's), as
+/// `cargo xtask pendant-sim` runs it; the panel's log holds every screen shown.
+///
+/// # Errors
+/// The script's or the simulation's failure, as text.
+pub fn session(
+    world: WorldConfig,
+    tour: bool,
+) -> Result<(SessionReport, Rc<RefCell<PanelLog>>), String> {
+    exec::reset_clock();
+    let rig = Rig::new(world, world.seed)?;
+    let run = rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| {
+        full_session(&rig, shared, tour)
+    });
+    let ended = match run {
+        Ok(Ok(ended)) => ended,
+        Ok(Err(e)) => return Err(format!("session script: {e:?}")),
+        Err(stop) => return Err(format!("session stopped: {stop:?}")),
+    };
+    let (flash_operations, erases) = {
+        let memory = rig.flash.memory();
+        (memory.operations, memory.erases)
+    };
+    let report = SessionReport {
+        second_export_equal: ended.export == ended.second_export,
+        export: ended.export,
+        status: ended.status,
+        identified: identified(&ended.state),
+        state: ended.state,
+        truth: Truth::of(&rig),
+        robot_time_s: ended.done_s,
+        flash_operations,
+        erases,
+        poses: rig.plan.len(),
+    };
+    Ok((report, rig.panel.clone()))
+}
+
+/// Where the session stands: 0-1 stage 0, 2-5 stage 1's four captures, then 6 +
+/// stage-2 captures, the closing reversal's two, the result.
+pub fn session_progress(session: &ProcedureState<f32>) -> usize {
+    let view = session.view();
+    let side = usize::from(view.approach == Some(Approach::FromAbove));
+    match session.phase() {
+        Phase::Stage0First => 0,
+        Phase::Stage0Second => 1,
+        Phase::Stage1Before => 2 + side,
+        Phase::Stage1After => 4 + side,
+        Phase::Stage2 | Phase::ClosingFirst => 6 + view.captured,
+        Phase::ClosingSecond => 7 + view.captured,
+        Phase::Done => 8 + view.captured,
+    }
+}
