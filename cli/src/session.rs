@@ -284,6 +284,66 @@ pub struct SessionJson {
     pub notes: Vec<String>,
 }
 
+/// How far this `f64` re-solve of a pendant's export may lie from the pendant's own
+/// `f32` result for the two to be the same session (deg): the `f32` solve agrees with the
+/// `f64` one within 1.3e-6° on the target (docs/figures.md) and the export's readings are
+/// written to 1e-12°, so a larger difference means another model or other readings.
+pub const PENDANT_AGREEMENT_DEG: f64 = 1e-5;
+
+/// The same for 1σ, relative.
+pub const PENDANT_SIGMA_AGREEMENT: f64 = 0.01;
+
+/// Where the export carries the pendant's own result and this re-solve agrees with it
+/// (within [`PENDANT_AGREEMENT_DEG`] and [`PENDANT_SIGMA_AGREEMENT`]), the report gives
+/// the pendant's Δθ and 1σ (its covariance scaled to them, correlations kept): the
+/// numbers its screen showed and a technician typed in, so the screen and the report
+/// never differ in a printed digit. Returns the note that says which numbers are shown.
+fn adopt_pendant_result(solution: &mut SessionSolution<f64>, text: &str) -> Option<String> {
+    let pendant = zerocal_procedure::log::read_pendant_result(text)?;
+    let sigma = solution.sigma_rad();
+    let mut worst_offset_deg: f64 = 0.0;
+    let mut worst_sigma: f64 = 0.0;
+    for k in 0..SESSION_JOINTS {
+        worst_offset_deg = worst_offset_deg
+            .max((solution.offsets_rad[k].to_degrees() - pendant.offsets_deg[k]).abs());
+        let own = sigma[k].to_degrees();
+        if own > 0.0 {
+            worst_sigma = worst_sigma.max((pendant.sigma_deg[k] / own - 1.0).abs());
+        }
+    }
+    if worst_offset_deg > PENDANT_AGREEMENT_DEG || worst_sigma > PENDANT_SIGMA_AGREEMENT {
+        return Some(format!(
+            "the pendant's own result differs from this re-solve by up to {worst_offset_deg:.6} \
+             deg in an offset and {:.1} % in a 1-sigma (agreement is within {PENDANT_AGREEMENT_DEG} \
+             deg and {:.0} %): the numbers below are this computer's, not the pendant's screen's; \
+             check that --robot names the profile the pendant holds",
+            worst_sigma * 100.0,
+            PENDANT_SIGMA_AGREEMENT * 100.0
+        ));
+    }
+    let scale: [f64; SESSION_JOINTS] = core::array::from_fn(|k| {
+        if sigma[k] > 0.0 {
+            pendant.sigma_deg[k].to_radians() / sigma[k]
+        } else {
+            1.0
+        }
+    });
+    for i in 0..SESSION_JOINTS {
+        solution.offsets_rad[i] = pendant.offsets_deg[i].to_radians();
+        for j in 0..SESSION_JOINTS {
+            solution.covariance_rad2[i][j] *= scale[i] * scale[j];
+        }
+        for share in &mut solution.variance_shares_rad2[i] {
+            *share *= scale[i] * scale[i];
+        }
+    }
+    Some(format!(
+        "offsets and 1-sigma are the pendant's own, as its screen showed them; this f64 \
+         re-solve of the export agrees within {worst_offset_deg:.7} deg and {:.2} % of a 1-sigma",
+        worst_sigma * 100.0
+    ))
+}
+
 /// Runs `zerocal session`.
 ///
 /// # Errors
@@ -347,7 +407,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         };
     }
     let outcome = solve(&readings, &config);
-    let solution = match outcome.result {
+    let mut solution = match outcome.result {
         Ok(s) => s,
         Err(e) => {
             return Err(refused_with_diagnosis(
@@ -355,6 +415,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             ))
         }
     };
+    let pendant_note = adopt_pendant_result(&mut solution, text);
     let verdict = Verdict::judge(&solution.fit, &config, outcome.stage1.as_ref());
     let unknown_offset = unknown_offset_half_width(&readings, &config).map_err(|e| {
         CliError::Refused(name(&format!(
@@ -402,6 +463,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             BudgetTerm::UnknownSensorOffset.name()
         ));
     }
+    notes.extend(pendant_note);
     notes.extend(profile.missing.iter().map(|m| format!("profile: {m}")));
     if !export.trailer_checked {
         notes.push(

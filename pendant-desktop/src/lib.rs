@@ -10,6 +10,7 @@
 //! [`conversation`] and the screen [`gallery`]. [`script`] drives a session step by
 //! step for tests that look at the pendant between stages.
 
+pub mod agreement;
 pub mod conversation;
 pub mod exec;
 pub mod faults;

@@ -12,6 +12,7 @@ use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::SESSION_JOINTS;
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::channels::Shared;
+use zerocal_pendant::draw::lines;
 use zerocal_pendant::screen::{ResultScreen, Screen};
 use zerocal_procedure::{Approach, Phase, ProcedureState};
 
@@ -101,6 +102,8 @@ pub struct SessionReport {
     pub second_export_equal: bool,
     /// The bytes the link sent for `status`, after the exports.
     pub status: Vec<u8>,
+    /// The result screen's first page as drawn (six lines), when the session ended on it.
+    pub result_screen: Option<Vec<String>>,
     /// The procedure's state at the end, as a debugger on the board would read it.
     pub state: ProcedureState<f32>,
     /// The truth.
@@ -134,6 +137,7 @@ impl SessionReport {
 
 /// What the link and the session said at the end of [`full_session`].
 struct Ended {
+    result_screen: Option<Vec<String>>,
     export: Vec<u8>,
     second_export: Vec<u8>,
     status: Vec<u8>,
@@ -146,6 +150,12 @@ struct Ended {
 async fn full_session(rig: &Rig, shared: &Shared, tour: bool) -> Result<Ended, ScriptError> {
     let result = calibrate(rig, PATIENCE).await?;
     let done_s = t_ms() / 1000.0;
+    let result_screen = matches!(result, Screen::Result(_)).then(|| {
+        lines(&result)
+            .iter()
+            .map(|l| l.as_str().to_owned())
+            .collect()
+    });
     if tour {
         let pages = match &result {
             Screen::Result(r) => ResultScreen::pages(&r.fit),
@@ -166,6 +176,7 @@ async fn full_session(rig: &Rig, shared: &Shared, tour: bool) -> Result<Ended, S
     let status = command(rig, b"status\r\n", SILENCE).await;
     let state = shared.procedure.lock().await.session.clone();
     Ok(Ended {
+        result_screen,
         export,
         second_export,
         status,
@@ -201,6 +212,7 @@ pub fn session(
         second_export_equal: ended.export == ended.second_export,
         export: ended.export,
         status: ended.status,
+        result_screen: ended.result_screen,
         identified: identified(&ended.state),
         state: ended.state,
         truth: Truth::of(&rig),

@@ -64,8 +64,8 @@ enum Command {
     /// Run the pendant's application on the desktop: a whole calibration on a
     /// simulated robot (SCL3300 at the SPI-frame level, SSD1306 as a frame buffer, USB
     /// as a byte stream, the F411's flash sectors), then the fault scenarios. Writes
-    /// DIR/export, DIR/screens/NN-name.png and DIR/truth.json; prints the identified
-    /// offsets beside the truth.
+    /// DIR/export, DIR/status, DIR/result-screen, DIR/screens/NN-name.png and
+    /// DIR/truth.json; prints the identified offsets beside the truth.
     PendantSim {
         /// Where to write the export, the screens and the truth.
         #[arg(long, value_name = "DIR")]
@@ -87,6 +87,14 @@ enum Command {
         /// Write the gallery into DIR and docs/pendant.md's table.
         #[arg(long, value_name = "DIR")]
         write_gallery: Option<PathBuf>,
+    },
+    /// Compares one pendant-sim session's numbers three ways, to the printed digit:
+    /// DIR/result-screen (the result screen as drawn), DIR/status (the link's `status`)
+    /// and DIR/session.txt (`zerocal session DIR/export`). Fails naming each joint whose
+    /// Δθ or 1σ differs.
+    PendantAgree {
+        /// The pendant-sim output directory, with session.txt beside its export.
+        dir: PathBuf,
     },
     /// Fuzz the parsers of outside bytes (fuzz/, cargo-fuzz and libFuzzer on the stable
     /// toolchain with RUSTC_BOOTSTRAP=1; installs cargo-fuzz if missing). `--smoke`
@@ -121,6 +129,7 @@ fn main() -> Result<()> {
         Command::Dist => dist::run(&repo_root(), cli.toolchain),
         Command::CoreThumb => core_thumb(cli.toolchain),
         Command::TargetTest => target_test::run(&repo_root(), cli.toolchain),
+        Command::PendantAgree { dir } => pendant_sim::agree(&dir),
         Command::PendantSim {
             out,
             seed,

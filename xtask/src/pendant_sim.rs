@@ -75,6 +75,12 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
     fs::create_dir_all(&screens_dir)
         .with_context(|| format!("creating {}", screens_dir.display()))?;
     fs::write(out.join("export"), &report.export)?;
+    // The numbers the pendant showed and said, for `cargo xtask pendant-agree` beside
+    // `zerocal session` on the export.
+    fs::write(out.join("status"), &report.status)?;
+    if let Some(screen) = &report.result_screen {
+        fs::write(out.join("result-screen"), screen.join("\n") + "\n")?;
+    }
     fs::write(out.join("truth.json"), report.truth.to_json(options.seed))?;
     let mut table = String::new();
     let _ = writeln!(table, "| screen | what the operator does |");
@@ -347,5 +353,48 @@ fn check_gallery(
         println!("gallery: {} screens match {}", files.len(), dir.display());
     }
     let _ = ScreenKind::Boot;
+    Ok(())
+}
+
+/// `cargo xtask pendant-agree DIR`: the result screen, `status` and `zerocal session`
+/// agree to the printed digit on every Δθ and 1σ.
+pub fn agree(dir: &Path) -> Result<()> {
+    use zerocal_pendant_desktop::agreement::{
+        disagreements, from_screen, from_session_report, from_status,
+    };
+    let read = |name: &str| {
+        fs::read_to_string(dir.join(name))
+            .with_context(|| format!("reading {}", dir.join(name).display()))
+    };
+    let screen_text = read("result-screen")?;
+    let status_text = read("status")?;
+    let session_text = read("session.txt")?;
+    let screen_lines: Vec<&str> = screen_text.lines().collect();
+    let status_lines: Vec<&str> = status_text.lines().collect();
+    let screen = from_screen(&screen_lines).map_err(anyhow::Error::msg)?;
+    let status = from_status(&status_lines).map_err(anyhow::Error::msg)?;
+    let session = from_session_report(&session_text).map_err(anyhow::Error::msg)?;
+    println!("joint  result screen         status                zerocal session");
+    for k in 0..screen.len() {
+        let show = |p: &zerocal_pendant_desktop::agreement::Printed| {
+            format!(
+                "{} ± {}",
+                p.offset_deg,
+                p.sigma_deg.as_deref().unwrap_or("(none)  ")
+            )
+        };
+        println!(
+            "j{}     {:<21} {:<21} {}",
+            k + 2,
+            show(&screen[k]),
+            show(&status[k]),
+            show(&session[k])
+        );
+    }
+    let differ = disagreements(&screen, &status, &session);
+    if !differ.is_empty() {
+        bail!("the pendant's numbers disagree:\n{}", differ.join("\n"));
+    }
+    println!("the result screen, status and zerocal session agree to the printed digit");
     Ok(())
 }

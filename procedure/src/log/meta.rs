@@ -82,7 +82,7 @@ pub fn write_reversal<T: Real>(w: &mut Line, key: &str, r: &ClosingReversal<T>) 
     deg(w, r.reversal.second.y_rad)?;
     w.write_str(" temp_c ")?;
     match r.temperature_c {
-        Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), 2)),
+        Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), super::TEMPERATURE_DECIMALS)),
         None => w.write_str("none"),
     }
 }

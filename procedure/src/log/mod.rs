@@ -102,6 +102,13 @@ pub const MAX_READING_DEG: f64 = 180.0;
 /// Most columns a log row may have (extra ones are ignored, but counted).
 pub const MAX_COLUMNS: usize = 32;
 
+/// Decimals of a temperature (°C) in the log and the export: the resolution of the
+/// pendant's `f32` mean at room temperature (2e-6 K), so the desktop solves from the very
+/// temperatures the pendant used. The bias' drift is interpolated between the two
+/// reversals' temperatures, and with them rounded to 0.01 K a session's result moved by
+/// up to 6e-6° and its 1σ by 0.2 %: a digit apart from the pendant's screen.
+pub const TEMPERATURE_DECIMALS: u8 = 6;
+
 /// Decimals of a degree in the export: 1e-12° is 2e-14 rad, below the resolution of
 /// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the
 /// pendant's numbers, and an `f64` session's offsets move by ~1e-12° at most.
@@ -152,4 +159,73 @@ fn pair<T: Real>(w: &mut Line, t: &Tilt<T>) -> fmt::Result {
     deg(w, t.x_rad)?;
     w.write_char(',')?;
     deg(w, t.y_rad)
+}
+
+/// The pendant's own result, as its export's result line records it: Δθ2..Δθ6 and their
+/// 1σ (deg), the numbers its result screen showed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PendantResult {
+    /// Δθ2..Δθ6 (deg).
+    pub offsets_deg: [f64; zerocal_core::session::SESSION_JOINTS],
+    /// Their 1σ (deg).
+    pub sigma_deg: [f64; zerocal_core::session::SESSION_JOINTS],
+}
+
+/// The pendant's result from an export's text: Δθ2 and its 1σ from the line `# stage1
+/// delta_theta2_deg x alpha_deg a beta_deg b bias_y_deg y j2_sigma_deg s`, Δθ3..Δθ6 and
+/// theirs from `# stage2 offsets_deg a,b,c,d sigma_deg a,b,c,d residual_rms_deg r`;
+/// `None` when the export has no result (a refused or unfinished session, an older
+/// export) or a line does not read.
+pub fn read_pendant_result(text: &str) -> Option<PendantResult> {
+    let words = |prefix: &str| -> Option<heapless::Vec<&str, 12>> {
+        let line = text.lines().find(|l| l.starts_with(prefix))?;
+        Some(line.split_whitespace().take(12).collect())
+    };
+    let number = |word: &str| word.parse::<f64>().ok().filter(|x| x.is_finite());
+    let four = |list: &str| -> Option<[f64; 4]> {
+        let mut out = [0.0; 4];
+        let mut parts = list.split(',');
+        for v in &mut out {
+            *v = number(parts.next()?)?;
+        }
+        parts.next().is_none().then_some(out)
+    };
+    let stage1 = words("# stage1 delta_theta2_deg ")?;
+    let [_, _, _, j2, "alpha_deg", _, "beta_deg", _, "bias_y_deg", _, "j2_sigma_deg", j2_sigma] =
+        stage1.as_slice()
+    else {
+        return None;
+    };
+    let stage2 = words("# stage2 offsets_deg ")?;
+    let [_, _, _, offsets, "sigma_deg", sigma, "residual_rms_deg", _] = stage2.as_slice() else {
+        return None;
+    };
+    let (o, s) = (four(offsets)?, four(sigma)?);
+    Some(PendantResult {
+        offsets_deg: [number(j2)?, o[0], o[1], o[2], o[3]],
+        sigma_deg: [number(j2_sigma)?, s[0], s[1], s[2], s[3]],
+    })
+}
+
+#[cfg(test)]
+mod pendant_result_tests {
+    use super::*;
+
+    #[test]
+    fn the_result_line_reads_back_and_junk_does_not() {
+        let stage1 = "# stage1 delta_theta2_deg -7 alpha_deg 0.1 beta_deg 0.2 bias_y_deg 0.3 j2_sigma_deg 0.7";
+        let stage2 = "# stage2 offsets_deg 1,2,3,4 sigma_deg 0.1,0.2,0.3,0.4 residual_rms_deg 0.5";
+        let text = format!("# x\n{stage1}\n{stage2}\n");
+        let r = read_pendant_result(&text).unwrap();
+        assert_eq!(r.offsets_deg, [-7.0, 1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(r.sigma_deg, [0.7, 0.1, 0.2, 0.3, 0.4]);
+        // No Δθ2 σ (an export of a refused session), a NaN, a fifth value: no result.
+        for bad in [
+            format!("# stage1 delta_theta2_deg -7 alpha_deg 0.1 beta_deg 0.2 bias_y_deg 0.3\n{stage2}"),
+            format!("{stage1}\n# stage2 offsets_deg 1,2,NaN,4 sigma_deg 0.1,0.2,0.3,0.4 residual_rms_deg 0.5"),
+            format!("{stage1}\n# stage2 offsets_deg 1,2,3,4,5 sigma_deg 0.1,0.2,0.3,0.4 residual_rms_deg 0.5"),
+        ] {
+            assert_eq!(read_pendant_result(&bad), None, "{bad}");
+        }
+    }
 }

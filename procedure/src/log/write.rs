@@ -130,7 +130,11 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
                 None => w.write_str("# stage1_readings_deg none"),
             },
             4 => match s.temperatures.stage1_c {
-                Some(c) => write!(w, "# stage1_temp_c {}", Fixed::new(c.to_f64(), 2)),
+                Some(c) => write!(
+                    w,
+                    "# stage1_temp_c {}",
+                    Fixed::new(c.to_f64(), super::TEMPERATURE_DECIMALS)
+                ),
                 None => w.write_str("# stage 1 temperature not recorded"),
             },
             // Every capture of stage 1, for the record: the line above holds the means
@@ -148,7 +152,11 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
                         Some(c) => {
                             pair(w, &c.reading)?;
                             if let Some(t) = c.temperature_c {
-                                write!(w, " temp_c {}", Fixed::new(t.to_f64(), 2))?;
+                                write!(
+                                    w,
+                                    " temp_c {}",
+                                    Fixed::new(t.to_f64(), super::TEMPERATURE_DECIMALS)
+                                )?;
                             }
                         }
                         None => w.write_str("none")?,
@@ -165,7 +173,16 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
                     w.write_str(" beta_deg ")?;
                     deg(w, r.base_tilt.beta_rad)?;
                     w.write_str(" bias_y_deg ")?;
-                    deg(w, r.bias_y_rad)
+                    deg(w, r.bias_y_rad)?;
+                    // Δθ2's 1σ in the session (the result screen's), so the desktop reads
+                    // back every number the screen showed ([`super::read_pendant_result`]).
+                    match s.result {
+                        Some(Ok(solution)) => {
+                            w.write_str(" j2_sigma_deg ")?;
+                            deg(w, solution.sigma_rad()[0])
+                        }
+                        _ => Ok(()),
+                    }
                 }
                 None => w.write_str("# stage1 none"),
             },
@@ -199,11 +216,14 @@ pub(crate) fn result_line<T: Real>(w: &mut Line, r: &SessionSolution<T>) -> fmt:
         deg(w, *v)?;
     }
     w.write_str(" sigma_deg ")?;
+    // 1σ to the offsets' decimals: rounded once, by whoever prints it (at 6 decimals a
+    // 1σ of 0.0006749° became 0.000675 here and 0.00068 on the desktop, 0.00067 on the
+    // screen).
     for (k, v) in sigma.iter().skip(1).enumerate() {
         if k > 0 {
             w.write_char(',')?;
         }
-        write!(w, "{}", zerocal_core::decimal::deg_fixed(*v, 6))?;
+        deg(w, *v)?;
     }
     write!(
         w,
@@ -283,7 +303,7 @@ pub fn write_row<T: Real>(w: &mut Line, p: &PoseReading<T>) -> fmt::Result {
     w.write_char(',')?;
     match p.temperature_c {
         // Hundredths of a kelvin: the SCL3300's resolution is 1/18.9 K.
-        Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), 2)),
+        Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), super::TEMPERATURE_DECIMALS)),
         // Not recorded: an empty field.
         None => Ok(()),
     }
