@@ -102,12 +102,21 @@ pub const MAX_READING_DEG: f64 = 180.0;
 /// Most columns a log row may have (extra ones are ignored, but counted).
 pub const MAX_COLUMNS: usize = 32;
 
-/// Decimals of a temperature (°C) in the log and the export: the resolution of the
-/// pendant's `f32` mean at room temperature (2e-6 K), so the desktop solves from the very
-/// temperatures the pendant used. The bias' drift is interpolated between the two
-/// reversals' temperatures, and with them rounded to 0.01 K a session's result moved by
-/// up to 6e-6° and its 1σ by 0.2 %: a digit apart from the pendant's screen.
-pub const TEMPERATURE_DECIMALS: u8 = 6;
+/// Decimals of a temperature (°C) in the log and the export: 0.01 K, a fifth of the
+/// sensor's 0.053 K register step (its 40-sample mean is finer). The pendant keeps each
+/// capture's temperature at this resolution ([`quantise_temperature`]), so the desktop
+/// solves from the very temperatures the pendant used: the bias' drift is interpolated
+/// between the two reversals' temperatures, and with the pendant's own unrounded a
+/// session's result moved by up to 6e-6° and its 1σ by 0.2 % between the two, a digit
+/// apart on the screen.
+pub const TEMPERATURE_DECIMALS: u8 = 2;
+
+/// A capture's temperature at the export's resolution ([`TEMPERATURE_DECIMALS`]): what
+/// the pendant keeps, solves with and writes.
+pub fn quantise_temperature<T: Real>(celsius: T) -> T {
+    let scale = libm::pow(10.0, f64::from(TEMPERATURE_DECIMALS));
+    T::lit(libm::round(celsius.to_f64() * scale) / scale)
+}
 
 /// Decimals of a degree in the export: 1e-12° is 2e-14 rad, below the resolution of
 /// any `f32` the pendant holds (1.5e-8 rad at 0.17 rad), so the desktop reads back the

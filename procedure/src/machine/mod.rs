@@ -593,6 +593,11 @@ fn capture<T: Real>(
     c: Capture<T>,
     out: &mut Output<T>,
 ) {
+    // Kept at the export's resolution, so the desktop re-solves from the same numbers.
+    let c = Capture {
+        temperature_c: c.temperature_c.map(crate::log::quantise_temperature),
+        ..c
+    };
     match s.phase {
         Phase::Done => return,
         Phase::Stage2 => {

@@ -86,7 +86,8 @@ fn mean<T: Real>(a: Option<Capture<T>>, b: Option<Capture<T>>) -> Option<Capture
             half * (a.reading.y_rad + b.reading.y_rad),
         ),
         temperature_c: match (a.temperature_c, b.temperature_c) {
-            (Some(x), Some(y)) => Some(half * (x + y)),
+            // At the export's resolution, as every temperature the pendant keeps.
+            (Some(x), Some(y)) => Some(crate::log::quantise_temperature(half * (x + y))),
             _ => None,
         },
     })
