@@ -303,10 +303,10 @@ fn adopt_pendant_result(solution: &mut SessionSolution<f64>, text: &str) -> Opti
     let sigma = solution.sigma_rad();
     let mut worst_offset_deg: f64 = 0.0;
     let mut worst_sigma: f64 = 0.0;
-    for k in 0..SESSION_JOINTS {
-        worst_offset_deg = worst_offset_deg
-            .max((solution.offsets_rad[k].to_degrees() - pendant.offsets_deg[k]).abs());
-        let own = sigma[k].to_degrees();
+    for (k, own_sigma_rad) in sigma.iter().enumerate() {
+        let own_deg = solution.offsets_rad[k].to_degrees();
+        worst_offset_deg = worst_offset_deg.max((own_deg - pendant.offsets_deg[k]).abs());
+        let own = own_sigma_rad.to_degrees();
         if own > 0.0 {
             worst_sigma = worst_sigma.max((pendant.sigma_deg[k] / own - 1.0).abs());
         }
