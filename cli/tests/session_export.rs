@@ -441,3 +441,51 @@ fn another_robots_profile_is_refused_by_name() {
         "{err}"
     );
 }
+
+/// The report gives the pendant's own Δθ and 1σ (its screen's) only where this re-solve
+/// agrees with them: a result line that no longer fits its readings is not believed,
+/// and the report says by how much it differs.
+#[test]
+fn the_pendant_s_own_numbers_are_reported_only_where_the_re_solve_agrees() {
+    let (text, _) = pendant_export_text();
+    let notes = |name: &str, text: &str| -> (Vec<f64>, String) {
+        let out = session(&write(name, text.as_bytes()), &[]);
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let offsets = (0..5)
+            .map(|k| v["joints"][k]["offset_deg"].as_f64().unwrap())
+            .collect();
+        (offsets, v["notes"].to_string())
+    };
+    let pendant = zerocal_procedure::log::read_pendant_result(&text).expect("a result line");
+    let (offsets, said) = notes("own.csv", &text);
+    assert!(said.contains("are the pendant's own"), "{said}");
+    // Its own, through radians and back: equal to the last bits of an f64.
+    for (got, want) in offsets.iter().zip(pendant.offsets_deg) {
+        assert!(
+            (got - want).abs() < 1e-12,
+            "{offsets:?} against {:?}",
+            pendant.offsets_deg
+        );
+    }
+    // Δθ4 on the result line moved by 0.001°: the readings do not give it.
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("# stage2 offsets_deg "))
+        .unwrap();
+    let list = line.split_whitespace().nth(3).unwrap();
+    let mut values: Vec<f64> = list.split(',').map(|v| v.parse().unwrap()).collect();
+    values[1] += 0.001;
+    let moved: Vec<String> = values.iter().map(|v| format!("{v:.12}")).collect();
+    let edited = text.replace(list, &moved.join(","));
+    let (offsets, said) = notes("moved.csv", &edited);
+    assert!(said.contains("differs from this re-solve"), "{said}");
+    assert!(
+        (offsets[2] - pendant.offsets_deg[2]).abs() < 1e-5,
+        "{offsets:?}"
+    );
+}
