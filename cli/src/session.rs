@@ -66,7 +66,7 @@ pub struct SessionArgs {
 
 /// What the export holds.
 #[derive(Clone, Debug)]
-pub struct Export {
+pub struct ExportContents {
     /// `# robot` (the name) and the convention.
     pub robot: Option<(String, Convention)>,
     /// `# stage0_bias_deg`: `Some(None)` for "none".
@@ -106,13 +106,13 @@ pub struct Export {
 ///
 /// # Errors
 /// A malformed row or metadata line (naming the line).
-pub fn read_export(text: &str) -> Result<Export, String> {
+pub fn read_export(text: &str) -> Result<ExportContents, String> {
     let text = strip_bom(text);
     let mut reader = LogReader::for_export();
     let mut keys = MetaKeys::default();
     let mut approaches = Vec::new();
     let mut captures = Vec::new();
-    let mut export = Export {
+    let mut export = ExportContents {
         robot: None,
         bias: None,
         stage1: None,
@@ -175,7 +175,7 @@ pub fn read_export(text: &str) -> Result<Export, String> {
 /// Refuses an export whose rows contradict its metadata or that the solver would get
 /// silently wrong: rows at another joint 2 than stage 1's, a pose captured from one
 /// side only.
-fn check_rows(export: &Export, stage1: &AxisOneTurn<f64>) -> Result<(), String> {
+fn check_rows(export: &ExportContents, stage1: &AxisOneTurn<f64>) -> Result<(), String> {
     if let Some(i) = stage1_joint2_mismatch(stage1, &export.poses) {
         return Err(format!(
             "line {}: joint 2 at {} deg, but stage 1's j2_deg (line {}) says {} deg: stage 2 runs \
@@ -512,7 +512,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
 /// that makes them fit ([`crate::diagnose`]).
 fn refused_with_diagnosis(
     e: SessionError,
-    export: &Export,
+    export: &ExportContents,
     readings: &SessionReadings<'_, f64>,
     config: &FitConfig<f64>,
     profile: &Profile,
@@ -555,7 +555,7 @@ fn refused_with_diagnosis(
     })
 }
 
-fn refused(e: SessionError, export: &Export) -> CliError {
+fn refused(e: SessionError, export: &ExportContents) -> CliError {
     // The solver fits a pose's captures merged, paired as the export pairs them (by
     // index where it has the `pose` column): its pose index is into the merged list,
     // whose order is that of each pose's first capture.

@@ -24,7 +24,7 @@ use zerocal_procedure::{
 use crate::buttons::{Button, ButtonEvent, Press};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
 use crate::config::STILL_MOVING_MS;
-use crate::screen::{Extras, RestartNote, Screen};
+use crate::screen::{PendantState, RestartNote, Screen};
 use crate::sensor::SensorReport;
 use crate::store::{Restored, Store};
 
@@ -43,7 +43,7 @@ pub struct Boot<'a, F> {
 /// The presentation state this task keeps beside core's session.
 #[derive(Clone, Copy, Debug, Default)]
 struct Presentation {
-    extras: Extras,
+    extras: PendantState,
     /// Since when (ms) the armed pendant has not been still.
     unsettled_since_ms: Option<u64>,
     /// The last sample's stillness was `Moving`: the next `Moving` is no news.

@@ -179,9 +179,10 @@ impl ResultScreen {
     }
 }
 
-/// What the pendant adds to core's view: presentation and the hardware's own state.
+/// What the pendant adds to the procedure's view: presentation and the hardware's own
+/// state (named apart from the fit's `Extras`).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Extras {
+pub struct PendantState {
     /// The result page the operator turned to (wraps).
     pub result_page: usize,
     /// The sensor task's last fault (cleared by the next reading).
@@ -413,7 +414,7 @@ impl Screen {
     pub fn from_view(
         view: &View<'_, f32>,
         display: &ControllerDisplay<f32>,
-        extras: Extras,
+        extras: PendantState,
     ) -> Screen {
         if view.phase == Phase::Done {
             let fit = match view.outcome {
@@ -546,7 +547,7 @@ mod tests {
             notice: None,
             outcome: None,
         };
-        let Screen::Capture(c) = Screen::from_view(&view, &display, Extras::default()) else {
+        let Screen::Capture(c) = Screen::from_view(&view, &display, PendantState::default()) else {
             panic!("a capture screen");
         };
         let Prompt::Pose {
