@@ -130,6 +130,8 @@ fn run(case: &Case) {
         bias: case.bias,
         stage1: case.stage1,
         poses: case.poses,
+        // The vectors carry one capture a pose: nothing to pair.
+        capture_index: None,
         temperatures: StageTemperatures::default(),
         closing: None,
     };
