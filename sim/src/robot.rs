@@ -225,11 +225,15 @@ impl RobotErrors {
             }
             if sources.wrist_compliance {
                 let wrist = wrist_full_torques(arm, &m, limits_rad);
-                for k in 3..JOINTS {
-                    e.full_torque_nm[k] = wrist[k];
-                    let (lo, hi) = spec.wrist_sag_full_lever_deg;
-                    if wrist[k] > 0.0 {
-                        e.compliance_rad_per_nm[k] = deg_to_rad(rng.gen_range(lo..=hi)) / wrist[k];
+                let (lo, hi) = spec.wrist_sag_full_lever_deg;
+                for ((full, compliance), torque) in e.full_torque_nm[3..]
+                    .iter_mut()
+                    .zip(&mut e.compliance_rad_per_nm[3..])
+                    .zip(&wrist[3..])
+                {
+                    *full = *torque;
+                    if *torque > 0.0 {
+                        *compliance = deg_to_rad(rng.gen_range(lo..=hi)) / torque;
                     }
                 }
             }
@@ -435,6 +439,7 @@ pub fn misalign(
 ) -> (Arm<f64>, [f64; JOINTS]) {
     let mut out = *arm;
     let mut angles = [0.0; JOINTS];
+    #[allow(clippy::needless_range_loop)] // joint k and joint k - 1 together
     for k in 1..JOINTS {
         let axis = arm.joints[k].axis.unit::<f64>();
         // The previous axis in this joint's frame (before its own turn).
