@@ -200,9 +200,9 @@ fn stage1_reading_carries_joint2_sag() {
 }
 
 /// The measurement table: 20 sessions per robot and effect, solved as the pendant
-/// does. Printed, not asserted: it is what the method meets on real arms.
+/// does. Printed (`--nocapture`), not asserted: it is what the method meets on real
+/// arms. About 5 s.
 #[test]
-#[ignore = "a measurement table, minutes in a debug build: run with --ignored --nocapture"]
 fn real_arm_measurement_table() {
     let effects: [(&str, WorldConfig); 6] = [
         ("today", WorldConfig::real()),
