@@ -97,6 +97,7 @@ pub fn world_with(on: Option<&[Source]>) -> WorldConfig {
         sag: has(Source::Sag),
         backlash: has(Source::Backlash),
         repeatability: has(Source::Repeatability),
+        ..RobotSources::ALL
     };
     if !has(Source::Warming) {
         w.warming_k = 0.0;

@@ -19,20 +19,40 @@ pub struct RobotSources {
     pub backlash: bool,
     /// Pose repeatability.
     pub repeatability: bool,
+    /// Joint axes off their nominal directions ([`RobotSpec::misalignment_perpendicular_deg`]).
+    pub misalignment: bool,
+    /// Angle-dependent gear transmission error ([`RobotSpec::transmission_pp_deg`]).
+    pub transmission: bool,
+    /// Gravity deflection of joints 4, 5, 6 ([`RobotSpec::wrist_sag_full_lever_deg`]).
+    pub wrist_compliance: bool,
 }
 
 impl RobotSources {
-    /// Every source on: the default.
+    /// The default: sag, backlash and repeatability on; the real-arm sources
+    /// (misalignment, transmission error, wrist compliance) off.
     pub const ALL: RobotSources = RobotSources {
         sag: true,
         backlash: true,
         repeatability: true,
+        misalignment: false,
+        transmission: false,
+        wrist_compliance: false,
+    };
+    /// Every source on, the real-arm ones too.
+    pub const REAL_ARM: RobotSources = RobotSources {
+        misalignment: true,
+        transmission: true,
+        wrist_compliance: true,
+        ..RobotSources::ALL
     };
     /// A rigid, backlash-free, perfectly repeatable robot.
     pub const NONE: RobotSources = RobotSources {
         sag: false,
         backlash: false,
         repeatability: false,
+        misalignment: false,
+        transmission: false,
+        wrist_compliance: false,
     };
 }
 
@@ -59,6 +79,29 @@ pub struct RobotSpec {
     /// Mass of the pendant and its bracket (kg) and its centre in the flange frame (m):
     /// the pendant's own design figure.
     pub pendant_kg: f64,
+    /// Mass of a tool on the flange (kg), lumped at the pendant's centre. Default 0:
+    /// a stated default (the pendant is calibrated with the flange bare).
+    pub tool_kg: f64,
+    /// Rotation of each joint's axis off its nominal direction, perpendicular to it and
+    /// never about the previous joint's axis (that is the previous joint's zero), drawn
+    /// per joint within this range (deg) where the two axes are perpendicular: Universal
+    /// Robots' factory calibrations in their ROS drivers' examples (twist deviations
+    /// 0.01-0.05°); a FANUC R-2000iC/165F laser-tracker data set (Boby and Klimchik,
+    /// Robotics and Computer-Integrated Manufacturing) gives 0.005-0.022°.
+    pub misalignment_perpendicular_deg: (f64, f64),
+    /// The same where the two axes are parallel (J2-J3; J3-J4 on a UR): UR's
+    /// calibrations give 0.07-0.7° between J2-J3-J4, the FANUC data 0.010-0.016°.
+    pub misalignment_parallel_deg: (f64, f64),
+    /// Transmission error per joint, peak to peak over a turn (deg): a sum of harmonics
+    /// 2-4 of the joint angle with drawn phases. The FANUC data: J2, J3, J5
+    /// 0.03-0.06° over their swept ranges.
+    pub transmission_pp_deg: (f64, f64),
+    /// Once-per-turn error of joints 4 and 6, peak to peak (deg): the FANUC data's
+    /// 0.023-0.027°.
+    pub once_per_turn_pp_deg: (f64, f64),
+    /// Deflection of joints 4, 5, 6 at the largest gravity torque of the links after
+    /// them, pendant and tool (deg): a stated range, no public wrist stiffness was found.
+    pub wrist_sag_full_lever_deg: (f64, f64),
 }
 
 impl RobotSpec {
@@ -69,6 +112,25 @@ impl RobotSpec {
         friction_fraction: 0.1,
         repeatability_deg: 0.0015,
         pendant_kg: 0.25,
+        tool_kg: 0.0,
+        misalignment_perpendicular_deg: (0.01, 0.05),
+        misalignment_parallel_deg: (0.01, 0.5),
+        transmission_pp_deg: (0.005, 0.03),
+        once_per_turn_pp_deg: (0.005, 0.025),
+        wrist_sag_full_lever_deg: (0.01, 0.03),
+    };
+
+    /// The FANUC R-2000iC/165F laser-tracker figures (Boby and Klimchik, see the
+    /// fields): misalignments 0.005-0.022° (perpendicular) and 0.010-0.016° (J2-J3),
+    /// transmission error 0.03-0.06° p-p, once-per-turn 0.023-0.027°, hysteresis
+    /// (lost motion) up to 0.03°. For use with the fanuc-m20ia profile.
+    pub const FANUC_AS_MEASURED: RobotSpec = RobotSpec {
+        lost_motion_deg: 0.03,
+        misalignment_perpendicular_deg: (0.005, 0.022),
+        misalignment_parallel_deg: (0.010, 0.016),
+        transmission_pp_deg: (0.03, 0.06),
+        once_per_turn_pp_deg: (0.023, 0.027),
+        ..RobotSpec::DEFAULT
     };
 }
 
@@ -87,7 +149,23 @@ pub struct RobotErrors {
     pub friction_fraction: f64,
     /// Repeatability per joint, 1σ (rad).
     pub repeatability_rad: f64,
+    /// Transmission error per joint: (harmonic order, amplitude rad, phase rad).
+    pub transmission: [[Harmonic; TRANSMISSION_TERMS]; JOINTS],
 }
+
+/// One term of a transmission error: `amplitude_rad · sin(order · q + phase_rad)`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Harmonic {
+    /// Cycles per joint turn.
+    pub order: f64,
+    /// Amplitude (rad).
+    pub amplitude_rad: f64,
+    /// Phase (rad).
+    pub phase_rad: f64,
+}
+
+/// Harmonics 2, 3, 4 and the once-per-turn term.
+pub const TRANSMISSION_TERMS: usize = 4;
 
 impl RobotErrors {
     /// None at all.
@@ -99,6 +177,7 @@ impl RobotErrors {
             lost_motion_rad: [0.0; JOINTS],
             friction_fraction: 0.0,
             repeatability_rad: 0.0,
+            transmission: [[Harmonic::default(); TRANSMISSION_TERMS]; JOINTS],
         }
     }
 
@@ -129,7 +208,7 @@ impl RobotErrors {
                 *kg *= rng.gen_range(0.7..=1.3);
             }
             // The pendant hangs 5 cm out from the flange: a stated design figure.
-            m.pendant_kg = spec.pendant_kg;
+            m.pendant_kg = spec.pendant_kg + spec.tool_kg;
             m.pendant_com_m = Vector3::new(0.0, 0.0, 0.05);
             e.masses = Some(m);
             e.full_torque_nm = full_torques(arm, &m, limits_rad);
@@ -144,8 +223,34 @@ impl RobotErrors {
                     }
                 }
             }
+            if sources.wrist_compliance {
+                let wrist = wrist_full_torques(arm, &m, limits_rad);
+                let (lo, hi) = spec.wrist_sag_full_lever_deg;
+                for ((full, compliance), torque) in e.full_torque_nm[3..]
+                    .iter_mut()
+                    .zip(&mut e.compliance_rad_per_nm[3..])
+                    .zip(&wrist[3..])
+                {
+                    *full = *torque;
+                    if *torque > 0.0 {
+                        *compliance = deg_to_rad(rng.gen_range(lo..=hi)) / torque;
+                    }
+                }
+            }
+        }
+        if sources.transmission {
+            for (k, terms) in e.transmission.iter_mut().enumerate() {
+                *terms = draw_transmission(k, spec, rng);
+            }
         }
         e
+    }
+
+    /// The transmission error of joint `k` at true angle `q_rad` (rad).
+    pub fn transmission_error_rad(&self, k: usize, q_rad: f64) -> f64 {
+        self.transmission
+            .get(k)
+            .map_or(0.0, |terms| harmonic_sum(terms, q_rad))
     }
 
     /// The gravity torque about each joint's axis at true angles `q_rad` (N·m), the
@@ -183,7 +288,11 @@ impl RobotErrors {
             };
             let backlash = 0.5 * self.lost_motion_rad[k] * side;
             let z: f64 = StandardNormal.sample(rng);
-            q_rad[k] + sag + backlash + self.repeatability_rad * z
+            q_rad[k]
+                + sag
+                + backlash
+                + self.repeatability_rad * z
+                + self.transmission_error_rad(k, q_rad[k])
         })
     }
 }
@@ -241,6 +350,127 @@ fn full_torques(
         }
     }
     worst
+}
+
+fn harmonic_sum(terms: &[Harmonic], q_rad: f64) -> f64 {
+    terms
+        .iter()
+        .map(|h| h.amplitude_rad * (h.order * q_rad + h.phase_rad).sin())
+        .sum()
+}
+
+/// Peak to peak of a harmonic sum over one turn, sampled every 0.5°.
+pub fn peak_to_peak_rad(terms: &[Harmonic]) -> f64 {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for i in 0..720 {
+        let v = harmonic_sum(terms, core::f64::consts::TAU * f64::from(i) / 720.0);
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    hi - lo
+}
+
+/// Joint `k`'s transmission error: harmonics 2-4 with drawn weights and phases, scaled
+/// to a drawn peak to peak; on joints 4 and 6 (indices 3, 5) a once-per-turn term too.
+fn draw_transmission(
+    k: usize,
+    spec: &RobotSpec,
+    rng: &mut ChaCha8Rng,
+) -> [Harmonic; TRANSMISSION_TERMS] {
+    let mut terms = [Harmonic::default(); TRANSMISSION_TERMS];
+    for (h, order) in terms.iter_mut().zip([2.0, 3.0, 4.0]) {
+        *h = Harmonic {
+            order,
+            amplitude_rad: rng.gen_range(0.2..=1.0),
+            phase_rad: rng.gen_range(0.0..core::f64::consts::TAU),
+        };
+    }
+    let (lo, hi) = spec.transmission_pp_deg;
+    let scale = deg_to_rad(rng.gen_range(lo..=hi)) / peak_to_peak_rad(&terms[..3]);
+    for h in &mut terms[..3] {
+        h.amplitude_rad *= scale;
+    }
+    if k == 3 || k == 5 {
+        let (lo, hi) = spec.once_per_turn_pp_deg;
+        terms[3] = Harmonic {
+            order: 1.0,
+            amplitude_rad: 0.5 * deg_to_rad(rng.gen_range(lo..=hi)),
+            phase_rad: rng.gen_range(0.0..core::f64::consts::TAU),
+        };
+    }
+    terms
+}
+
+/// The largest |torque| of the wrist joints over a grid of joints 3, 4 and 5 in their
+/// limits: the wrist's lever is longest with its links horizontal.
+fn wrist_full_torques(
+    arm: &Arm<f64>,
+    m: &MassModel<f64>,
+    limits_rad: &[(f64, f64); JOINTS],
+) -> [f64; JOINTS] {
+    let mut worst = [0.0f64; JOINTS];
+    let steps = 12;
+    let at = |(lo, hi): (f64, f64), i: usize| lo + (hi - lo) * i as f64 / steps as f64;
+    for a in 0..=steps {
+        for b in 0..=steps {
+            for c in 0..=steps {
+                let mut q = [0.0; JOINTS];
+                q[2] = at(limits_rad[2], a);
+                q[3] = at(limits_rad[3], b);
+                q[4] = at(limits_rad[4], c);
+                for (w, t) in worst.iter_mut().zip(gravity_torques(arm, m, &q)) {
+                    *w = w.max(t.abs());
+                }
+            }
+        }
+    }
+    worst
+}
+
+/// `arm` with each joint's axis (joints 2-6) turned off its nominal direction by a
+/// drawn angle about a direction perpendicular to it and to the previous joint's axis
+/// (a turn about that one is the previous joint's zero); where the two axes are
+/// parallel, about a drawn direction perpendicular to both. Returns the arm and the
+/// drawn angles (rad).
+pub fn misalign(
+    arm: &Arm<f64>,
+    spec: &RobotSpec,
+    rng: &mut ChaCha8Rng,
+) -> (Arm<f64>, [f64; JOINTS]) {
+    let mut out = *arm;
+    let mut angles = [0.0; JOINTS];
+    #[allow(clippy::needless_range_loop)] // joint k and joint k - 1 together
+    for k in 1..JOINTS {
+        let axis = arm.joints[k].axis.unit::<f64>();
+        // The previous axis in this joint's frame (before its own turn).
+        let prev = arm.joints[k].origin.rotation.inverse() * arm.joints[k - 1].axis.unit::<f64>();
+        let cross = axis.cross(&prev);
+        let parallel = cross.norm() < 1e-9;
+        let (lo, hi) = if parallel {
+            spec.misalignment_parallel_deg
+        } else {
+            spec.misalignment_perpendicular_deg
+        };
+        let angle = deg_to_rad(rng.gen_range(lo..=hi)) * if rng.gen::<bool>() { 1.0 } else { -1.0 };
+        let about = if parallel {
+            // Any direction perpendicular to the axis.
+            let helper = if axis.x.abs() < 0.9 {
+                Vector3::x()
+            } else {
+                Vector3::y()
+            };
+            let u = axis.cross(&helper).normalize();
+            let v = axis.cross(&u);
+            let t: f64 = rng.gen_range(0.0..core::f64::consts::TAU);
+            u * t.cos() + v * t.sin()
+        } else {
+            cross.normalize()
+        };
+        let tilt = Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(about), angle);
+        out.joints[k].origin.rotation = arm.joints[k].origin.rotation * tilt;
+        angles[k] = angle.abs();
+    }
+    (out, angles)
 }
 
 /// The robot as the world sees it: true offsets and base tilt, unknown to the pendant.

@@ -87,6 +87,17 @@ impl WorldConfig {
         }
     }
 
+    /// [`Self::real`] on a robot with the FANUC R-2000iC/165F's measured figures
+    /// ([`RobotSpec::FANUC_AS_MEASURED`]) and every real-arm source on: for use with
+    /// the fanuc-m20ia profile.
+    pub fn fanuc_as_measured() -> Self {
+        WorldConfig {
+            robot: RobotSources::REAL_ARM,
+            robot_spec: RobotSpec::FANUC_AS_MEASURED,
+            ..Self::real()
+        }
+    }
+
     /// An ideal sensor on a rigid robot in a constant temperature.
     pub fn ideal() -> Self {
         WorldConfig {
@@ -241,8 +252,14 @@ impl RealSession {
             world.robot,
             &mut rng,
         );
+        // Drawn only when on, so a world without it draws the same numbers as before.
+        let (arm, _) = if world.robot.misalignment {
+            crate::robot::misalign(&profile.arm, &world.robot_spec, &mut rng)
+        } else {
+            (profile.arm, [0.0; JOINTS])
+        };
         let robot = SimRobot {
-            arm: profile.arm,
+            arm,
             base_tilt,
             offsets_rad,
             errors,
