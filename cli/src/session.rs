@@ -305,13 +305,28 @@ fn adopt_pendant_result(solution: &mut SessionSolution<f64>, text: &str) -> Opti
     let mut worst_sigma: f64 = 0.0;
     for (k, own_sigma_rad) in sigma.iter().enumerate() {
         let own_deg = solution.offsets_rad[k].to_degrees();
-        worst_offset_deg = worst_offset_deg.max((own_deg - pendant.offsets_deg[k]).abs());
+        let d = (own_deg - pendant.offsets_deg[k]).abs();
+        // `f64::max` would drop a NaN: carry it.
+        worst_offset_deg = if d.is_nan() {
+            d
+        } else {
+            worst_offset_deg.max(d)
+        };
         let own = own_sigma_rad.to_degrees();
-        if own > 0.0 {
-            worst_sigma = worst_sigma.max((pendant.sigma_deg[k] / own - 1.0).abs());
-        }
+        let r = if own > 0.0 {
+            (pendant.sigma_deg[k] / own - 1.0).abs()
+        } else if pendant.sigma_deg[k] == 0.0 {
+            0.0
+        } else {
+            // A zero 1σ here against a non-zero one there: not the same session.
+            f64::INFINITY
+        };
+        worst_sigma = if r.is_nan() { r } else { worst_sigma.max(r) };
     }
-    if worst_offset_deg > PENDANT_AGREEMENT_DEG || worst_sigma > PENDANT_SIGMA_AGREEMENT {
+    // Written so that a NaN difference refuses the adoption too.
+    let agrees =
+        worst_offset_deg <= PENDANT_AGREEMENT_DEG && worst_sigma <= PENDANT_SIGMA_AGREEMENT;
+    if !agrees {
         return Some(format!(
             "the pendant's own result differs from this re-solve by up to {worst_offset_deg:.6} \
              deg in an offset and {:.1} % in a 1-sigma (agreement is within {PENDANT_AGREEMENT_DEG} \

@@ -78,8 +78,13 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
     // The numbers the pendant showed and said, for `cargo xtask pendant-agree` beside
     // `zerocal session` on the export.
     fs::write(out.join("status"), &report.status)?;
-    if let Some(screen) = &report.result_screen {
-        fs::write(out.join("result-screen"), screen.join("\n") + "\n")?;
+    // A run without a result screen removes the last run's, so `pendant-agree` never
+    // compares another session's screen.
+    match &report.result_screen {
+        Some(screen) => fs::write(out.join("result-screen"), screen.join("\n") + "\n")?,
+        None => {
+            let _ = fs::remove_file(out.join("result-screen"));
+        }
     }
     fs::write(out.join("truth.json"), report.truth.to_json(options.seed))?;
     let mut table = String::new();
@@ -356,11 +361,13 @@ fn check_gallery(
     Ok(())
 }
 
-/// `cargo xtask pendant-agree DIR`: the result screen, `status` and `zerocal session`
-/// agree to the printed digit on every Δθ and 1σ.
+/// `cargo xtask pendant-agree DIR`: the result screen agrees with `zerocal session`'s
+/// controller-terms table, `status` with its model table, to the printed digit on every
+/// Δθ and 1σ.
 pub fn agree(dir: &Path) -> Result<()> {
     use zerocal_pendant_desktop::agreement::{
-        disagreements, from_screen, from_session_report, from_status,
+        disagreements, from_screen, from_session_controller_table, from_session_report,
+        from_status, Printed,
     };
     let read = |name: &str| {
         fs::read_to_string(dir.join(name))
@@ -373,25 +380,36 @@ pub fn agree(dir: &Path) -> Result<()> {
     let status_lines: Vec<&str> = status_text.lines().collect();
     let screen = from_screen(&screen_lines).map_err(anyhow::Error::msg)?;
     let status = from_status(&status_lines).map_err(anyhow::Error::msg)?;
-    let session = from_session_report(&session_text).map_err(anyhow::Error::msg)?;
-    println!("joint  result screen         status                zerocal session");
-    for k in 0..screen.len() {
-        let show = |p: &zerocal_pendant_desktop::agreement::Printed| {
+    let model = from_session_report(&session_text).map_err(anyhow::Error::msg)?;
+    let table = from_session_controller_table(&session_text).map_err(anyhow::Error::msg)?;
+    let show = |p: &Printed| {
+        if p.identifiable {
             format!(
                 "{} ± {}",
                 p.offset_deg,
                 p.sigma_deg.as_deref().unwrap_or("(none)  ")
             )
-        };
+        } else {
+            "not identifiable".to_owned()
+        }
+    };
+    println!("in the controller's terms: the result screen | zerocal session");
+    for shown in &screen {
+        let row = table
+            .iter()
+            .find(|r| r.name.eq_ignore_ascii_case(&shown.name));
         println!(
-            "j{}     {:<21} {:<21} {}",
-            k + 2,
-            show(&screen[k]),
-            show(&status[k]),
-            show(&session[k])
+            "  {:<5} {:<21} {}",
+            shown.name,
+            show(shown),
+            row.map_or("(missing)".to_owned(), show)
         );
     }
-    let differ = disagreements(&screen, &status, &session);
+    println!("the model's: status | zerocal session");
+    for (k, (s, m)) in status.iter().zip(&model).enumerate() {
+        println!("  j{}    {:<21} {}", k + 2, show(s), show(m));
+    }
+    let differ = disagreements(&screen, &status, &model, &table);
     if !differ.is_empty() {
         bail!("the pendant's numbers disagree:\n{}", differ.join("\n"));
     }
