@@ -10,9 +10,7 @@ use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use std::fmt::Write as _;
 use zerocal_core::report::Verdict;
-use zerocal_core::session::{
-    budget, solve, Budget, BudgetInputs, BudgetTerm, SessionSolution, SESSION_JOINTS,
-};
+use zerocal_core::session::{budget, solve, Budget, BudgetTerm, SessionSolution, SESSION_JOINTS};
 use zerocal_profile::Profile;
 use zerocal_sim::montecarlo::{self, Method, DEFAULT_POSES};
 use zerocal_sim::robot::RobotSources;
@@ -189,24 +187,7 @@ pub fn run_session(
         .result
         .map_err(|e| CliError::Refused(e.to_string()))?;
     let verdict = Verdict::judge(&solution.fit, &fit, outcome.stage1.as_ref());
-    let budget = budget(
-        &solution,
-        &session.poses,
-        &BudgetInputs {
-            extras: fit.extras,
-            mount_tolerance_rad: world.mount_tolerance_deg.to_radians(),
-            repeatability_rad: if world.robot.repeatability {
-                world.robot_spec.repeatability_deg.to_radians()
-            } else {
-                0.0
-            },
-            lost_motion_rad: if world.robot.backlash {
-                world.robot_spec.lost_motion_deg.to_radians()
-            } else {
-                0.0
-            },
-        },
-    );
+    let budget = budget(&solution, &session.poses, &world.budget_inputs(fit.extras));
     Ok(RealRun {
         profile,
         session,

@@ -8,7 +8,7 @@ use crate::world::{RealSession, WorldConfig};
 use zerocal_core::model::JOINTS;
 
 use zerocal_core::session::{
-    budget, solve, Budget, BudgetInputs, SessionError, SessionSolution, StageTemperatures,
+    budget, solve, Budget, SessionError, SessionSolution, StageTemperatures,
 };
 use zerocal_core::stage2::FitConfig;
 use zerocal_profile::Profile;
@@ -47,7 +47,6 @@ pub fn run(
     sessions: usize,
     seed: u64,
 ) -> Vec<SessionOutcome> {
-    let mount_tolerance_rad = world.mount_tolerance_deg.to_radians();
     (0..sessions as u64)
         .map(|i| {
             let s = seed.wrapping_mul(1_000_003).wrapping_add(i);
@@ -59,26 +58,10 @@ pub fn run(
                 readings.temperatures = StageTemperatures::default();
             }
             let result = solve(&readings, fit).result;
-            let budget = result.as_ref().ok().map(|sol| {
-                budget(
-                    sol,
-                    &session.poses,
-                    &BudgetInputs {
-                        extras: fit.extras,
-                        mount_tolerance_rad,
-                        repeatability_rad: if world.robot.repeatability {
-                            world.robot_spec.repeatability_deg.to_radians()
-                        } else {
-                            0.0
-                        },
-                        lost_motion_rad: if world.robot.backlash {
-                            world.robot_spec.lost_motion_deg.to_radians()
-                        } else {
-                            0.0
-                        },
-                    },
-                )
-            });
+            let budget = result
+                .as_ref()
+                .ok()
+                .map(|sol| budget(sol, &session.poses, &world.budget_inputs(fit.extras)));
             SessionOutcome {
                 seed: s,
                 result,

@@ -16,7 +16,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
-use zerocal_core::session::{BiasSource, SessionReadings, StageTemperatures};
+use zerocal_core::session::{BiasSource, BudgetInputs, SessionReadings, StageTemperatures};
 use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::PoseReading;
@@ -69,6 +69,26 @@ pub struct WorldConfig {
 }
 
 impl WorldConfig {
+    /// What the budget takes from this world: the fit's `extras`, and the bracket seat,
+    /// repeatability and lost motion of the sources that are on (0 for those off). One
+    /// place for `zerocal simulate` and the Monte-Carlo runs.
+    pub fn budget_inputs(&self, extras: zerocal_core::stage2::Extras) -> BudgetInputs<f64> {
+        BudgetInputs {
+            extras,
+            mount_tolerance_rad: self.mount_tolerance_deg.to_radians(),
+            repeatability_rad: if self.robot.repeatability {
+                self.robot_spec.repeatability_deg.to_radians()
+            } else {
+                0.0
+            },
+            lost_motion_rad: if self.robot.backlash {
+                self.robot_spec.lost_motion_deg.to_radians()
+            } else {
+                0.0
+            },
+        }
+    }
+
     /// Every sourced error on (mounting off: no public figure; see its field).
     pub fn real() -> Self {
         WorldConfig {
