@@ -418,6 +418,8 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
     if let Some(e) = export.extras {
         config.extras = zerocal_core::stage2::Extras {
             held: config.extras.held,
+            tilt: config.extras.tilt,
+            wrist_sag: config.extras.wrist_sag,
             ..e
         };
     }

@@ -5,9 +5,14 @@ use crate::model::TiltAxis;
 use core::fmt;
 
 /// The names of stage 2's parameters, by index (`stage2::Param`'s order).
-pub const PARAM_NAMES: [&str; 18] = [
+/// `tiltJ` is joint J's axis misalignment (`tiltJb` its second direction, where J's
+/// axis is parallel to the one before), `sagJ` joint J's compliance under the wrist's
+/// load.
+pub const PARAM_NAMES: [&str; 31] = [
     "j3", "j4", "j5", "j6", "gain_x", "gain_y", "cross_xy", "cross_yx", "cross_xz", "cross_yz",
-    "cross_zx", "cross_zy", "gain_z", "sag", "bias_x", "bias_y", "drift_x", "drift_y",
+    "cross_zx", "cross_zy", "gain_z", "sag", "bias_x", "bias_y", "drift_x", "drift_y", "tilt2",
+    "tilt2b", "tilt3", "tilt3b", "tilt4", "tilt4b", "tilt5", "tilt5b", "tilt6", "tilt6b", "sag4",
+    "sag5", "sag6",
 ];
 
 /// A set of stage-2 parameters by index (bit k = parameter k; 0..=3 are Δθ3..Δθ6).
@@ -117,6 +122,45 @@ pub enum FitError {
     },
     /// The arithmetic produced a non-finite number (a model far from the data).
     NonFiniteResult,
+    /// One pose's residual stands far out of the others': the robot did not reach that
+    /// pose (a stop, a wrong point, a program line skipped) or the pendant was touched
+    /// there.
+    PoseNotReached {
+        /// The pose (0-based, in the order fitted).
+        pose: usize,
+        /// Its residual (deg, the larger of x and y).
+        residual_deg: f32,
+        /// The others' RMS (deg).
+        others_rms_deg: f32,
+    },
+    /// The readings jump between two parts of the session as a turn of the pendant on
+    /// the flange would: it was knocked (or the bracket slipped) before this pose.
+    PendantMoved {
+        /// The first pose after the move (0-based, in the order fitted).
+        from_pose: usize,
+        /// The size of the jump (deg).
+        step_deg: f32,
+    },
+    /// The two captures of a pose (approached from either side) disagree by more than
+    /// the gears' lost motion and the sensor's noise explain: the flange bracket moves.
+    CapturesDisagree {
+        /// RMS of the differences (deg).
+        rms_deg: f32,
+        /// The most a tight bracket on a real arm shows (deg).
+        limit_deg: f32,
+        /// The pose whose captures differ most (0-based, in the order fitted).
+        worst_pose: usize,
+    },
+    /// A fitted term is far beyond what a real arm has (a joint axis tenths of a
+    /// degree off where the drawing has it): the profile does not describe this robot.
+    ImplausibleGeometry {
+        /// The term.
+        params: ParamSet,
+        /// Its fitted value (deg).
+        value_deg: f32,
+        /// The most a real arm has (deg).
+        limit_deg: f32,
+    },
     /// The residuals are far above what a still robot, a tight bracket and the right
     /// model leave.
     ResidualTooLarge {
@@ -167,10 +211,57 @@ impl fmt::Display for FitError {
                 Fixed::new(f64::from(condition_number), 0),
                 Fixed::new(f64::from(limit), 0)
             ),
-            FitError::NoConvergence { iterations } => {
-                write!(f, "no convergence after {iterations} iterations")
-            }
+            FitError::NoConvergence { iterations } => write!(
+                f,
+                "no convergence after {iterations} iterations: the readings do not fit this \
+                 robot's model; check the profile (model, joint directions) and the convention"
+            ),
             FitError::NonFiniteResult => f.write_str("the fit produced a non-finite number"),
+            FitError::PoseNotReached {
+                pose,
+                residual_deg,
+                others_rms_deg,
+            } => write!(
+                f,
+                "pose {}: its reading is {} deg off the model while the others are {} deg RMS: \
+                 the robot did not reach this pose (stopped, skipped or wrong point) or the \
+                 pendant was touched there; check the program and repeat the session",
+                pose + 1,
+                Fixed::new(f64::from(residual_deg), 4),
+                Fixed::new(f64::from(others_rms_deg), 4)
+            ),
+            FitError::PendantMoved { from_pose, step_deg } => write!(
+                f,
+                "the pendant moved on the flange before pose {}: the readings after it jump \
+                 by {} deg; tighten the flange bracket and repeat stage 2",
+                from_pose + 1,
+                Fixed::new(f64::from(step_deg), 4)
+            ),
+            FitError::CapturesDisagree {
+                rms_deg,
+                limit_deg,
+                worst_pose,
+            } => write!(
+                f,
+                "loose flange bracket: the two captures of a pose differ by {} deg RMS, more \
+                 than the {} deg a tight bracket on a real arm shows (worst at pose {}); \
+                 tighten it and repeat stage 2",
+                Fixed::new(f64::from(rms_deg), 4),
+                Fixed::new(f64::from(limit_deg), 4),
+                worst_pose + 1
+            ),
+            FitError::ImplausibleGeometry {
+                params,
+                value_deg,
+                limit_deg,
+            } => write!(
+                f,
+                "wrong robot profile: fitting the readings needs {params} = {} deg, beyond the \
+                 {} deg any real arm of this model has; check the profile and the robot's \
+                 joint directions",
+                Fixed::new(f64::from(value_deg), 3),
+                Fixed::new(f64::from(limit_deg), 3)
+            ),
             FitError::ResidualTooLarge {
                 rms_deg,
                 limit_deg,
@@ -259,6 +350,14 @@ impl fmt::Display for Terse<'_, FitError> {
             FitError::NonFiniteResult => f.write_str("NonFiniteResult"),
             FitError::ResidualTooLarge { worst_pose, .. } => {
                 write!(f, "ResidualTooLarge {worst_pose}")
+            }
+            FitError::PoseNotReached { pose, .. } => write!(f, "PoseNotReached {pose}"),
+            FitError::PendantMoved { from_pose, .. } => write!(f, "PendantMoved {from_pose}"),
+            FitError::CapturesDisagree { worst_pose, .. } => {
+                write!(f, "CapturesDisagree {worst_pose}")
+            }
+            FitError::ImplausibleGeometry { params, .. } => {
+                write!(f, "ImplausibleGeometry {params}")
             }
         }
     }

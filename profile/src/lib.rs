@@ -486,11 +486,13 @@ impl Profile {
             })
     }
 
-    /// The sag model's masses: the sources', or links of uniform mass per metre (the
-    /// stated default, `MassModel::uniform`). `None` for an arm without lengths.
+    /// The sag model's masses: the sources' with the pendant on the flange
+    /// (`MassModel::with_pendant`), or links of uniform mass per metre (the stated
+    /// default, `MassModel::uniform`: relative masses only, so no pendant in kilograms
+    /// beside them). `None` for an arm without lengths.
     pub fn mass_model(&self) -> Option<MassModel<f64>> {
         if let Some(m) = self.masses {
-            return Some(m);
+            return Some(m.with_pendant(0.0));
         }
         let uniform = MassModel::uniform(&self.arm);
         uniform

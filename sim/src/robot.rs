@@ -111,7 +111,7 @@ impl RobotSpec {
         lost_motion_deg: 1.0 / 60.0,
         friction_fraction: 0.1,
         repeatability_deg: 0.0015,
-        pendant_kg: 0.25,
+        pendant_kg: zerocal_core::stage2::PENDANT_KG,
         tool_kg: 0.0,
         misalignment_perpendicular_deg: (0.01, 0.05),
         misalignment_parallel_deg: (0.01, 0.5),
@@ -207,9 +207,10 @@ impl RobotErrors {
             for kg in &mut m.link_kg {
                 *kg *= rng.gen_range(0.7..=1.3);
             }
-            // The pendant hangs 5 cm out from the flange: a stated design figure.
+            // The pendant hangs out from the flange (its design figure), the tool
+            // lumped with it.
             m.pendant_kg = spec.pendant_kg + spec.tool_kg;
-            m.pendant_com_m = Vector3::new(0.0, 0.0, 0.05);
+            m.pendant_com_m = Vector3::new(0.0, 0.0, zerocal_core::stage2::PENDANT_COM_M);
             e.masses = Some(m);
             e.full_torque_nm = full_torques(arm, &m, limits_rad);
             // Friction holds the wrist (light loads) wherever it was driven; joints 2-3

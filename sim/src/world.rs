@@ -35,6 +35,32 @@ pub enum ApproachScheme {
     FromPrevious,
 }
 
+/// A fault of the session rather than of the robot: what the refusal rule must name.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub enum SessionFault {
+    /// None.
+    #[default]
+    None,
+    /// The robot stopped short of stage-2 pose `pose` (0-based, in the plan's order):
+    /// joint `joint` (1-6) `short_deg` from where it was commanded, both captures.
+    UnreachedPose {
+        /// The pose.
+        pose: usize,
+        /// The joint (1-6).
+        joint: usize,
+        /// How far short (deg).
+        short_deg: f64,
+    },
+    /// The pendant knocked on the flange before stage-2 pose `pose`: its seat turns by
+    /// `deg` about its x and y axes from then on.
+    Knocked {
+        /// The first pose after the knock.
+        pose: usize,
+        /// The turn (deg).
+        deg: f64,
+    },
+}
+
 /// The world's settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WorldConfig {
@@ -66,6 +92,8 @@ pub struct WorldConfig {
     pub max_base_tilt_deg: f64,
     /// Ambient temperature at the start (°C).
     pub ambient_c: f64,
+    /// A session fault, if any.
+    pub fault: SessionFault,
 }
 
 impl WorldConfig {
@@ -104,6 +132,7 @@ impl WorldConfig {
             max_offset_deg: 0.5,
             max_base_tilt_deg: 0.5,
             ambient_c: 23.0,
+            fault: SessionFault::None,
         }
     }
 
@@ -362,7 +391,7 @@ impl RealSession {
         let mut poses = Vec::with_capacity(plan.len() * approaches.len());
         let mut previous = q1;
         let mut t_s = timeline.stage2_start_s;
-        for q in plan {
+        for (index, q) in plan.iter().enumerate() {
             let these: Vec<[i8; JOINTS]> = match world.approach {
                 ApproachScheme::FromPrevious => {
                     vec![core::array::from_fn(|k| {
@@ -377,9 +406,25 @@ impl RealSession {
             };
             previous = *q;
             for approach in these {
-                let reached = robot.reached_joints(q, &approach, &mut rng);
+                let mut reached = robot.reached_joints(q, &approach, &mut rng);
                 let (_, loose) = small_rotation(&mut rng, world.loose_bracket_deg);
-                let r = robot.arm.flange_sensor(&robot.base_tilt, &reached) * flange_rot * loose;
+                let mut seat = flange_rot * loose;
+                match world.fault {
+                    SessionFault::UnreachedPose {
+                        pose,
+                        joint,
+                        short_deg,
+                    } if pose == index => {
+                        if let Some(j) = reached.get_mut(joint.wrapping_sub(1)) {
+                            *j -= deg_to_rad(short_deg);
+                        }
+                    }
+                    SessionFault::Knocked { pose, deg } if index >= pose => {
+                        seat = seat * rot_x(deg_to_rad(deg)) * rot_y(deg_to_rad(deg));
+                    }
+                    _ => {}
+                }
+                let r = robot.arm.flange_sensor(&robot.base_tilt, &reached) * seat;
                 let c = take(&mut sensor, &r, t_s, &mut rng);
                 t_s += timeline.stage2_every_s;
                 poses.push(PoseReading {

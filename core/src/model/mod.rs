@@ -333,6 +333,55 @@ impl<T: Real> WristChain<T> {
 }
 
 impl<T: Real> WristChain<T> {
+    /// [`up_and_partials_with`](Self::up_and_partials_with), and the up vector's
+    /// derivatives with respect to a small turn of each joint's frame, before the joint,
+    /// about the directions `tilt_dirs[2 + 2k]`, `tilt_dirs[3 + 2k]` (joint k + 3's
+    /// misalignment, in its frame; the first two slots are joint 2's and are not used
+    /// here). In the frame after joint k a turn ε about d moves u by (u × Eₖᵀ·d)·ε.
+    #[allow(clippy::type_complexity)]
+    pub fn up_and_tilt_partials(
+        &self,
+        fixed_in_use: &[bool; WRIST_JOINTS + 1],
+        base_up: &Vector3<T>,
+        trig: &[(T, T); WRIST_JOINTS],
+        tilt_dirs: &[Vector3<T>; 2 * WRIST_JOINTS + 2],
+    ) -> (
+        Vector3<T>,
+        [Vector3<T>; WRIST_JOINTS],
+        [Vector3<T>; 2 * WRIST_JOINTS],
+    ) {
+        let through_fixed = |k: usize, v: Vector3<T>| {
+            if fixed_in_use[k] {
+                self.fixed[k].inverse() * v
+            } else {
+                v
+            }
+        };
+        let mut u = *base_up;
+        let mut partials = [Vector3::zeros(); WRIST_JOINTS];
+        let mut tilts = [Vector3::zeros(); 2 * WRIST_JOINTS];
+        for k in 0..WRIST_JOINTS {
+            let (s, c) = trig[k];
+            let axis = self.axes[k];
+            u = axis.rotate_transposed(&through_fixed(k, u), s, c);
+            for p in partials.iter_mut().take(k).chain(tilts.iter_mut().take(2 * k)) {
+                *p = axis.rotate_transposed(&through_fixed(k, *p), s, c);
+            }
+            partials[k] = u.cross(&axis.unit());
+            for d in 0..2 {
+                let dir = tilt_dirs[2 + 2 * k + d];
+                if dir != Vector3::zeros() {
+                    tilts[2 * k + d] = u.cross(&axis.rotate_transposed(&dir, s, c));
+                }
+            }
+        }
+        let u = through_fixed(WRIST_JOINTS, u);
+        for p in partials.iter_mut().chain(tilts.iter_mut()) {
+            *p = through_fixed(WRIST_JOINTS, *p);
+        }
+        (u, partials, tilts)
+    }
+
     /// Takes a vector from the base frame to the sensor frame (`Mᵀ·v` for the chain's
     /// rotation M at the joints' (sin, cos)). The up vector is linear in the base's up
     /// vector, so this also carries derivatives with respect to the base tilt.

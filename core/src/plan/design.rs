@@ -9,8 +9,16 @@ use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::real::Real;
 use crate::stage2::{information, Layout, Stage2Model, MAX_PARAMS};
 
-/// Entries of the upper triangle of a symmetric `MAX_PARAMS`² matrix.
-const PACKED: usize = MAX_PARAMS * (MAX_PARAMS + 1) / 2;
+/// Entries of the upper triangle of a symmetric matrix over the planned parameters.
+const PACKED: usize = PLANNED_PARAMS * (PLANNED_PARAMS + 1) / 2;
+
+/// The parameters a design is built for: the offsets, the sensor's and joints 2-3's
+/// terms and the flange bias (every [`crate::stage2::Param`] before the geometric
+/// ones). The geometric candidates are reduced against the design afterwards
+/// ([`crate::stage2::geometry::identifiable`]): carrying them in every candidate's
+/// packed information would take 2 kB per candidate, more than the pendant's RAM holds
+/// for a pool.
+pub const PLANNED_PARAMS: usize = MAX_PARAMS - crate::stage2::TILT_SLOTS - crate::stage2::WRIST_SAG_JOINTS;
 
 /// The information of a design: JᵀJ over the plan's parameters.
 pub(super) type Gram<T> = Square<T, MAX_PARAMS>;
@@ -132,7 +140,13 @@ pub(super) fn draw_pool<T: Real>(
         if !reading_extent(model, &q).is_some_and(|r| r <= limit) {
             continue;
         }
-        let info = information(model, config.extras, &[q], &[T::zero(); WRIST_JOINTS]).gram();
+        let info = information(
+            model,
+            config.extras.without_geometry(),
+            &[q],
+            &[T::zero(); WRIST_JOINTS],
+        )
+        .gram();
         debug_assert_eq!(info.n, layout.len());
         if let Some(slot) = pool.get_mut(found) {
             *slot = Candidate {

@@ -157,6 +157,9 @@ impl<T: Real> Default for PlanConfig<T> {
 /// A plan: the poses and what they promise.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Plan<T> {
+    /// What the fit will estimate on these poses: the configured extras with the
+    /// geometric candidates the design cannot separate dropped.
+    pub extras: Extras,
     /// θ1..θ6 targets (rad), in a short travel order (nearest neighbour from the pose
     /// closest to the stage-1 pose).
     pub poses_rad: PoseList<T>,
@@ -352,7 +355,7 @@ pub fn plan<T: Real>(
     pool: &mut [Candidate<T>],
 ) -> Result<Plan<T>, PlanError> {
     validate(config, pool.len())?;
-    let layout = config.extras.layout();
+    let layout = config.extras.without_geometry().layout();
     let (found, draws) = draw_pool(model, config, &layout, pool);
     // Fewer candidates than asked for is fine as long as the exchange has a choice.
     if found < config.poses.max(MIN_POSES) * 2 && found < config.candidates {
@@ -377,9 +380,18 @@ pub fn plan<T: Real>(
     }
     travel_order(&mut poses_rad);
 
-    let bound = covariance_bound(
+    // The geometric candidates this design separates: the fit will keep the same.
+    let (extras, _) = crate::stage2::geometry::identifiable(
         model,
         config.extras,
+        poses_rad.iter().copied(),
+        &[T::zero(); WRIST_JOINTS],
+        T::lit(crate::stage2::geometry::GEOMETRY_CONDITION),
+        config.noise_sigma_rad,
+    );
+    let bound = covariance_bound(
+        model,
+        extras,
         &poses_rad,
         &[T::zero(); WRIST_JOINTS],
         config.noise_sigma_rad,
@@ -398,6 +410,7 @@ pub fn plan<T: Real>(
         a.max(reading_extent(model, q).unwrap_or(a))
     });
     Ok(Plan {
+        extras,
         poses_rad,
         predicted_sigma_rad: bound.sigma_rad,
         condition_number: bound.condition_number,

@@ -20,6 +20,9 @@
 use super::{merge_repeats, SessionSolution, SESSION_JOINTS};
 use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::real::Real;
+use crate::stage2::transmission::{
+    transmission_variance, ONCE_PER_TURN_PP_MAX_DEG, TRANSMISSION_PP_MAX_DEG,
+};
 use crate::stage2::{covariance_bound, Extras, PoseReading};
 
 /// The budget's terms, in order.
@@ -37,6 +40,16 @@ pub enum BudgetTerm {
     Sag,
     /// Estimating the flange bracket's tilt (Type A).
     FlangeTilt,
+    /// Estimating the joint-axis misalignments and wrist compliances the poses separate
+    /// (Type A).
+    Geometry,
+    /// The misalignments and wrist compliances the poses cannot separate, at their
+    /// stated worst case, propagated (Type B).
+    UnfittedGeometry,
+    /// Each joint's angle-dependent (transmission) error averaged into its zero: the
+    /// stated bound or what the residuals show, whichever is larger, propagated through
+    /// the poses' angles (Type B from a Type A figure).
+    Transmission,
     /// The robot's repeatability, propagated (Type B: the residuals barely show it).
     Repeatability,
     /// Joint 3's backlash where gravity holds it on one side whatever the approach
@@ -57,6 +70,9 @@ impl BudgetTerm {
         BudgetTerm::SensorGain,
         BudgetTerm::Sag,
         BudgetTerm::FlangeTilt,
+        BudgetTerm::Geometry,
+        BudgetTerm::UnfittedGeometry,
+        BudgetTerm::Transmission,
         BudgetTerm::Repeatability,
         BudgetTerm::LoadedBacklash,
         BudgetTerm::Mounting,
@@ -71,6 +87,9 @@ impl BudgetTerm {
             BudgetTerm::SensorGain => "sensor gain and cross-axis (estimated)",
             BudgetTerm::Sag => "sag of joints 2-3 (estimated)",
             BudgetTerm::FlangeTilt => "flange bracket tilt (estimated)",
+            BudgetTerm::Geometry => "axis misalignment, wrist sag (estimated)",
+            BudgetTerm::UnfittedGeometry => "axis misalignment, wrist sag (not separable)",
+            BudgetTerm::Transmission => "transmission error (averaged into the zero)",
             BudgetTerm::Repeatability => "robot repeatability (stated, propagated)",
             BudgetTerm::LoadedBacklash => "joint 3 backlash under gravity (stated)",
             BudgetTerm::Mounting => "bracket seats (stated tolerance)",
@@ -80,7 +99,7 @@ impl BudgetTerm {
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 9;
+pub const BUDGET_TERMS: usize = 12;
 
 /// The SCL3300's offset specification on X (g, ±), the chip crate's
 /// [`zerocal_scl3300::spec::OFFSET_X_SPEC_G`]. X is the axis stage 0 measures and stage 1
@@ -138,11 +157,16 @@ pub fn budget<T: Real>(
     poses: &[PoseReading<T>],
     inputs: &BudgetInputs<T>,
 ) -> Budget<T> {
-    let extras = inputs.extras;
+    // What the fit estimated (its geometric candidates reduced to those the poses
+    // separate), with the offsets the arm holds.
+    let extras = Extras {
+        held: inputs.extras.held,
+        ..solution.fit.extras
+    };
     let mut terms = [[T::zero(); SESSION_JOINTS]; BUDGET_TERMS];
     let shares = &solution.variance_shares_rad2;
     for k in 0..SESSION_JOINTS {
-        terms[0][k] = (shares[k][0] + shares[k][1]).max(T::zero()).sqrt();
+        terms[BudgetTerm::Handover as usize][k] = (shares[k][0] + shares[k][1]).max(T::zero()).sqrt();
     }
 
     // Stage 2's variance, growing as the extra groups join the fit.
@@ -178,6 +202,7 @@ pub fn budget<T: Real>(
             sag: extras.sag,
             ..offsets_only
         },
+        extras.without_geometry(),
         extras,
     ];
     let mut previous = [T::zero(); WRIST_JOINTS];
@@ -191,7 +216,7 @@ pub fn budget<T: Real>(
             };
         for k in 0..WRIST_JOINTS {
             let grown = (variance[k] - previous[k]).max(T::zero());
-            terms[1 + step][k + 1] = grown.sqrt();
+            terms[BudgetTerm::Readings as usize + step][k + 1] = grown.sqrt();
         }
         previous = variance;
     }
@@ -204,7 +229,8 @@ pub fn budget<T: Real>(
     let rep2 = inputs.repeatability_rad * inputs.repeatability_rad;
     let stage1_part = rep2 / (T::lit(2.0) * per_row);
     let inherited_by_j3 = rep2 / per_row;
-    terms[5][0] = stage1_part.sqrt();
+    let repeatability = BudgetTerm::Repeatability as usize;
+    terms[repeatability][0] = stage1_part.sqrt();
     let rep = crate::stage2::repeatability_covariance(
         &solution.model,
         extras,
@@ -216,7 +242,7 @@ pub fn budget<T: Real>(
     for k in 0..WRIST_JOINTS {
         let v = rep.map_or(T::zero(), |c| c[k][k]).max(T::zero());
         let inherited = if k == 0 { inherited_by_j3 } else { T::zero() };
-        terms[5][k + 1] = (v + inherited).sqrt();
+        terms[repeatability][k + 1] = (v + inherited).sqrt();
     }
 
     // Joint 3 under gravity: ±half the lost motion at each pose, both captures alike.
@@ -226,7 +252,7 @@ pub fn budget<T: Real>(
     let backlash =
         crate::stage2::joint_error_covariance(&solution.model, extras, poses, &offsets, &loaded);
     for k in 0..WRIST_JOINTS {
-        terms[6][k + 1] = backlash
+        terms[BudgetTerm::LoadedBacklash as usize][k + 1] = backlash
             .map_or(T::zero(), |c| c[k][k])
             .max(T::zero())
             .sqrt();
@@ -234,9 +260,47 @@ pub fn budget<T: Real>(
 
     // Bracket seats: uniform within ±t, u = t/√3.
     let u_mount = inputs.mount_tolerance_rad.abs() / T::lit(3.0).sqrt();
-    terms[7][0] = u_mount;
-    terms[7][1] = u_mount;
-    terms[7][SESSION_JOINTS - 1] = u_mount;
+    let mounting = BudgetTerm::Mounting as usize;
+    terms[mounting][0] = u_mount;
+    terms[mounting][1] = u_mount;
+    terms[mounting][SESSION_JOINTS - 1] = u_mount;
+
+    // The geometry the poses could not separate, at its stated worst case.
+    for k in 0..WRIST_JOINTS {
+        terms[BudgetTerm::UnfittedGeometry as usize][k + 1] = solution.fit.unfitted_rad[k];
+    }
+
+    // Transmission error: the stated bound, or what the residuals show beyond the
+    // sensor's noise and the robot's repeatability, whichever is larger.
+    let noise = crate::real::deg_to_rad(T::lit(crate::stage2::MEMS_CAPTURE_NOISE_DEG));
+    let power = crate::stage2::joint_sensitivity_power(&solution.model, extras, &joints, &offsets);
+    let expected = noise * noise / per_row + rep2 * power / per_row;
+    let from_residuals = crate::stage2::transmission::amplitude_from_residuals(
+        sigma * sigma,
+        expected,
+        power,
+    );
+    let half_pp = |deg: f64| crate::real::deg_to_rad(T::lit(deg * 0.5));
+    let amplitude = half_pp(TRANSMISSION_PP_MAX_DEG).max(from_residuals);
+    let once = half_pp(ONCE_PER_TURN_PP_MAX_DEG);
+    let transmission = BudgetTerm::Transmission as usize;
+    // Joint 2 stands at one angle in stages 1 and 2: Δθ2 holds its error there whole
+    // (a harmonic of unknown phase: a/√2).
+    terms[transmission][0] = amplitude / T::lit(2.0).sqrt();
+    let amplitudes = [amplitude; WRIST_JOINTS];
+    let once_per_turn = [T::zero(), once, T::zero(), once];
+    if let Ok(v) = transmission_variance(
+        &solution.model,
+        extras,
+        poses,
+        &offsets,
+        &amplitudes,
+        &once_per_turn,
+    ) {
+        for k in 0..WRIST_JOINTS {
+            terms[transmission][k + 1] = v[k].max(T::zero()).sqrt();
+        }
+    }
 
     let combined: [T; SESSION_JOINTS] =
         core::array::from_fn(|k| terms.iter().fold(T::zero(), |s, t| s + t[k] * t[k]).sqrt());

@@ -10,6 +10,7 @@
 //! check all call [`solve`].
 
 mod budget;
+pub mod judge;
 
 pub use budget::{
     budget, predict_budget, sensor_offset_x_spec_deg, Budget, BudgetInputs, BudgetTerm,
@@ -430,7 +431,7 @@ pub fn solve<T: Real>(
             };
         }
     };
-    let stage2 = |stage1: &Stage1Result<T>, residual_check: bool| {
+    let stage2 = |stage1: &Stage1Result<T>| {
         let h = handover_at(
             stage1,
             readings.arm,
@@ -443,11 +444,8 @@ pub fn solve<T: Real>(
             model_covariance: h.covariance,
             // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
             handover_noise_rad: config.handover_noise_rad / per_reading.sqrt(),
-            max_residual_rms_rad: if residual_check {
-                config.max_residual_rms_rad
-            } else {
-                T::zero()
-            },
+            // The residuals are judged below, with the rest of the evidence.
+            max_residual_rms_rad: T::zero(),
             ..*config
         };
         let pairs = merge_captures(readings.poses, readings.capture_index);
@@ -459,7 +457,7 @@ pub fn solve<T: Real>(
     let mut stage1 = stage1;
     // The first pass has stage 1 without the sensor's gain: its residuals are not yet
     // the session's, so only the last pass is judged by them.
-    let mut result = stage2(&stage1, false);
+    let mut result = stage2(&stage1);
     // Stage 2 measured the sensor's gain: stage 1's readings are solved again with it,
     // and stage 2 with the better hand-over (the gain moves Δθ2 by ~1 % of the upper
     // arm's tilt, and stage 2 by far less than its noise, so once is enough).
@@ -468,19 +466,22 @@ pub fn solve<T: Real>(
         if gain != Gain::default() {
             if let Ok(again) = solve_stage1(&bias_t, temps.stage1_c, &setup, gain, per_reading) {
                 stage1 = again;
-                result = stage2(&stage1, true);
+                result = stage2(&stage1);
             }
         }
     }
-    // Without a second pass the first is judged here.
-    if let Ok((_, r)) = &result {
-        let limit = config.max_residual_rms_rad;
-        if limit > T::zero() && r.residual_rms_rad > limit {
-            result = Err(SessionError::Stage2(FitError::ResidualTooLarge {
-                rms_deg: crate::real::rad_to_deg(r.residual_rms_rad).to_f64() as f32,
-                limit_deg: crate::real::rad_to_deg(limit).to_f64() as f32,
-                worst_pose: r.worst_residual.1,
-            }));
+    // The refusal rule on the last pass: a fault is named, a robot is solved.
+    if let Ok((h, r)) = &result {
+        let pairs = merge_captures(readings.poses, readings.capture_index);
+        let poses = pairs.as_ref().map_or(readings.poses, |p| p.as_slice());
+        let e = judge::evidence(
+            &h.model,
+            r,
+            poses,
+            judge::capture_difference(readings.poses, readings.capture_index),
+        );
+        if let Err(fault) = judge::judge(&e, &config.refusal, config.max_residual_rms_rad) {
+            result = Err(SessionError::Stage2(fault));
         }
     }
     SessionOutcome {

@@ -103,7 +103,7 @@ pub fn joint_error_covariance<T: Real>(
         offsets_rad: *offsets_rad,
         ..super::Estimate::default()
     };
-    let pass = model.pass(&estimate);
+    let pass = model.pass(&estimate, &layout);
     let mut info = super::information::Information::new(n);
     // Σ over poses of (Jᵀ J_q)(Jᵀ J_q)ᵀ, pose by pose: B_i = J_iᵀ·J_q,i (n × 5).
     let mut outer = crate::linalg::Square::<T, MAX_PARAMS>::zeros(n);
@@ -169,7 +169,7 @@ pub fn joint_sensitivity_power<T: Real>(
         offsets_rad: *offsets_rad,
         ..super::Estimate::default()
     };
-    let pass = model.pass(&estimate);
+    let pass = model.pass(&estimate, &layout);
     let mut sum = T::zero();
     let mut readings = 0u32;
     for q in joints_rad {

@@ -29,6 +29,8 @@ pub(crate) struct Conditioning<T> {
     pub(crate) condition_number: T,
     /// Slots of the weakest direction (bit i = slot i).
     pub(crate) weakest_slots: u32,
+    /// The weakest direction itself (unit, over the slots; columns scaled).
+    pub(crate) weakest_direction: [T; MAX_PARAMS],
 }
 
 impl<T: Real> Conditioning<T> {
@@ -175,9 +177,12 @@ impl<T: Real> Information<T> {
             }
         }
         let s = svd(&scaled);
+        let mut weakest_direction = [T::zero(); MAX_PARAMS];
+        weakest_direction[..s.n].copy_from_slice(&s.weakest[..s.n]);
         Conditioning {
             condition_number: s.condition_number(),
             weakest_slots: named_components(&s.weakest[..s.n]),
+            weakest_direction,
         }
     }
 

@@ -8,17 +8,24 @@
 //! are named. [`bound`] gives the covariance bound of a pose set for planning.
 
 mod bound;
+pub mod geometry;
 mod information;
 mod model;
 pub mod params;
+pub mod transmission;
 
 pub use bound::{
     covariance_bound, joint_error_covariance, joint_sensitivity_power, repeatability_covariance,
     CovarianceBound,
 };
 pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
-pub use model::{Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT};
-pub use params::{Extras, Layout, Param, MAX_PARAMS};
+pub use model::{
+    Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT, PENDANT_COM_M, PENDANT_KG,
+};
+pub use params::{
+    tilt_candidates, tilt_directions, Extras, Layout, Param, MAX_PARAMS, TILT_SLOTS,
+    WRIST_SAG_ALL, WRIST_SAG_JOINTS,
+};
 
 use crate::error::{FitError, ParamSet};
 use crate::linalg::Square;
@@ -83,6 +90,9 @@ pub struct FitConfig<T> {
     /// The noise of one stage 0-1 reading (rad), for the hand-over's share of the
     /// covariance: the larger of this and the stage-2 residuals' σ (0: the residuals').
     pub handover_noise_rad: T,
+    /// The session's refusal rule beyond the residual ceiling
+    /// ([`crate::session::judge`]).
+    pub refusal: crate::session::judge::RefusalRule,
 }
 
 impl<T: Real> Default for FitConfig<T> {
@@ -101,6 +111,7 @@ impl<T: Real> Default for FitConfig<T> {
             model_covariance: [[T::zero(); HANDOVER_PARAMS]; HANDOVER_PARAMS],
             max_residual_rms_rad: T::zero(),
             handover_noise_rad: T::zero(),
+            refusal: crate::session::judge::RefusalRule::STANDARD,
         }
     }
 }
@@ -115,12 +126,9 @@ pub const MEMS_CAPTURE_NOISE_DEG: f64 = 0.0008;
 /// specified within about ±10° of level (Doc. 4921 §2.11.1, docs/error-budget.md).
 pub const MEMS_RANGE_DEG: f64 = zerocal_scl3300::spec::MODE4_RANGE_DEG;
 
-/// The residual RMS a session with a MEMS sensor refuses above (deg). Over 200 simulated
-/// sessions on each of four robots with every error source on, the largest residual RMS
-/// was 0.0034° (mostly the robot's repeatability, which a fit leaves partly in the
-/// residuals); a flange bracket that seats anew within ±0.03° at every pose gives
-/// 0.010°. 0.005° lies between: docs/error-budget.md.
-pub const MEMS_MAX_RESIDUAL_DEG: f64 = 0.005;
+/// The residual RMS a session with a MEMS sensor refuses above (deg): the refusal
+/// rule's ([`crate::session::judge::MAX_RESIDUAL_RMS_DEG`]).
+pub const MEMS_MAX_RESIDUAL_DEG: f64 = crate::session::judge::MAX_RESIDUAL_RMS_DEG;
 
 impl<T: Real> FitConfig<T> {
     /// The settings for a session with the SCL3300 on `arm` (`sag` where the profile
@@ -186,6 +194,14 @@ pub struct FitResult<T: Real> {
     pub condition_number: T,
     /// Number of poses fitted.
     pub poses: usize,
+    /// What was estimated: the configured extras less the geometric candidates the
+    /// poses could not separate.
+    pub extras: Extras,
+    /// The geometric candidates the poses could not separate (not estimated).
+    pub dropped: ParamSet,
+    /// What those may do to Δθ3..Δθ6 at their stated worst case: a standard
+    /// uncertainty per offset (rad; [`geometry::unfitted_effect`]).
+    pub unfitted_rad: [T; WRIST_JOINTS],
 }
 
 impl<T: Real> FitResult<T> {
@@ -281,7 +297,7 @@ fn linearise<T: Real>(
     held: &Held<T>,
 ) -> (Information<T>, T, (T, usize)) {
     let estimate = Estimate::from_slots(layout, x);
-    let pass = model.pass(&estimate);
+    let pass = model.pass(&estimate, layout);
     let mut info = Information::new(layout.len());
     let mut ssr = T::zero();
     let mut worst = (T::zero(), 0);
@@ -311,6 +327,19 @@ fn linearise<T: Real>(
             info.add_row(&row, T::lit(HELD_WEIGHT) * (held.at_rad[k] - x[k]));
         }
     }
+    // A geometric term: a pseudo-reading that it is 0 within its stated worst case (a
+    // prior, in units of one reading's noise). Where the poses determine it, it moves
+    // it by (noise / worst case)², a few parts per million; where two terms are nearly
+    // one (a tilt of joint 2 and of joint 3 about nearly the same direction), it keeps
+    // their difference from wandering off to tens of degrees.
+    for (slot, w) in held.prior_weight.iter().enumerate().take(layout.len()) {
+        if *w > T::zero() {
+            let mut row = [T::zero(); MAX_PARAMS];
+            row[slot] = *w;
+            info.add_row(&row, -*w * x[slot]);
+            ssr += *w * *w * x[slot] * x[slot];
+        }
+    }
     (info, ssr, worst)
 }
 
@@ -319,7 +348,7 @@ const HELD_WEIGHT: f64 = 10.0;
 
 /// A held offset's pseudo-reading in an information matrix without residuals (planning,
 /// bounds): it pins the offset, and its twin's variance is the sum's.
-pub(crate) fn add_held<T: Real>(info: &mut Information<T>, extras: &Extras) {
+pub fn add_held<T: Real>(info: &mut Information<T>, extras: &Extras) {
     for (k, &h) in extras.held.iter().enumerate() {
         if h {
             let mut row = [T::zero(); MAX_PARAMS];
@@ -329,10 +358,29 @@ pub(crate) fn add_held<T: Real>(info: &mut Information<T>, extras: &Extras) {
     }
 }
 
-/// Offsets held at a value.
+/// Offsets held at a value, and the priors on the geometric terms (by slot; 0: none).
 struct Held<T> {
     offsets: [bool; WRIST_JOINTS],
     at_rad: [T; WRIST_JOINTS],
+    prior_weight: [T; MAX_PARAMS],
+}
+
+/// The prior weights of `layout`'s geometric terms: the reading noise over each one's
+/// stated worst case.
+fn prior_weights<T: Real>(
+    model: &Stage2Model<T>,
+    layout: &Layout,
+    poses: &[PoseReading<T>],
+    noise_rad: T,
+) -> [T; MAX_PARAMS] {
+    let mut w = [T::zero(); MAX_PARAMS];
+    for (slot, p) in layout.params().iter().enumerate() {
+        let worst = geometry::worst_case(model, *p, poses.iter().map(|p| p.joints_rad));
+        if worst > T::zero() {
+            w[slot] = noise_rad / worst;
+        }
+    }
+    w
 }
 
 /// `(Jᵀ·J_m, J_mᵀ·J_m)`, with J_m the readings' derivatives with respect to the
@@ -348,7 +396,7 @@ fn handover_coupling<T: Real>(
     [[T; HANDOVER_PARAMS]; HANDOVER_PARAMS],
 ) {
     let estimate = Estimate::from_slots(layout, x);
-    let pass = model.pass(&estimate);
+    let pass = model.pass(&estimate, layout);
     let n = layout.len();
     let mut coupling = [[T::zero(); HANDOVER_PARAMS]; MAX_PARAMS];
     let mut model_info = [[T::zero(); HANDOVER_PARAMS]; HANDOVER_PARAMS];
@@ -382,7 +430,16 @@ pub fn fit<T: Real>(
     config: &FitConfig<T>,
 ) -> Result<FitResult<T>, FitError> {
     check_poses(poses, config.sensor_range_rad)?;
-    let layout = config.extras.layout();
+    // The geometric candidates this pose set separates; the others go to the budget.
+    let (extras, dropped) = geometry::identifiable(
+        model,
+        config.extras,
+        poses.iter().map(|p| p.joints_rad),
+        &config.initial_offsets_rad,
+        T::lit(geometry::GEOMETRY_CONDITION),
+        config.sensor_noise_rad,
+    );
+    let layout = extras.layout();
     check_layout(model, &layout, poses)?;
     let n = layout.len();
     let mut x = [T::zero(); MAX_PARAMS];
@@ -390,65 +447,34 @@ pub fn fit<T: Real>(
     let held = Held {
         offsets: config.extras.held,
         at_rad: config.initial_offsets_rad,
+        prior_weight: prior_weights(model, &layout, poses, config.sensor_noise_rad),
     };
-    let (mut info, mut cost, mut worst) = linearise(model, &layout, poses, &x, true, &held);
-    check_conditioning(&info, &layout, config.max_condition_number)?;
-
-    let mut lambda = T::zero();
-    let mut iterations = 0;
-    let mut converged = false;
-    // Accept equal cost within rounding, so a step at the precision floor is not
-    // mistaken for a worse one.
-    let slack = T::one() + T::lit(8.0) * T::EPSILON;
-    while iterations < config.max_iterations {
-        iterations += 1;
-        let step = info.step(lambda).ok_or(FitError::NonFiniteResult)?;
-        if !step.iter().take(n).all(|s| s.is_finite()) {
-            return Err(FitError::NonFiniteResult);
-        }
-        // Convergence is judged on the angles (the offsets); the other terms are
-        // dimensionless or per metre, and follow them.
-        let size = step[..WRIST_JOINTS]
-            .iter()
-            .fold(T::zero(), |m, s| m.max(s.abs()));
-        let small = size < T::STEP_TOLERANCE_RAD;
-        let mut candidate = x;
-        for (c, s) in candidate.iter_mut().zip(&step).take(n) {
-            *c += *s;
-        }
-        let (cand_info, cand_cost, cand_worst) =
-            linearise(model, &layout, poses, &candidate, true, &held);
-        // Below LOCAL_STEP_RAD the linearisation error (∝ δ²) is far under the noise, so
-        // the Gauss-Newton step is trusted as it is: there the cost's own rounding noise
-        // (~1e-3 relative in f32) would otherwise reject genuine steps and stall the
-        // fit short of the minimum.
-        let local = size < T::lit(LOCAL_STEP_RAD);
-        if cand_cost.is_finite() && (local || cand_cost <= cost * slack) {
-            x = candidate;
-            info = cand_info;
-            cost = cand_cost;
-            worst = cand_worst;
-            lambda /= T::lit(10.0);
-            if lambda < T::EPSILON {
-                lambda = T::zero();
+    // Geometry is fitted from where the fit without it lands: started from zero, a
+    // turn the poses see only to first order can lead the iteration into a valley
+    // tens of degrees away (found at 40° where the minimum was at 0.3°).
+    if extras.tilt != 0 || extras.wrist_sag != 0 {
+        let base = extras.without_geometry().layout();
+        let mut xb = [T::zero(); MAX_PARAMS];
+        xb[..WRIST_JOINTS].copy_from_slice(&config.initial_offsets_rad);
+        let held_base = Held {
+            prior_weight: [T::zero(); MAX_PARAMS],
+            ..held
+        };
+        if let Ok(start) = levenberg_marquardt(model, &base, poses, xb, &held_base, config) {
+            for (slot, p) in base.params().iter().enumerate() {
+                if let Some(to) = layout.slot(*p) {
+                    x[to] = start.x[slot];
+                }
             }
-        } else {
-            // Gauss-Newton overshot: damp towards gradient descent. The scale is that of
-            // JᵀJ's diagonal (trace/n = ‖R‖²/n).
-            lambda = if lambda == T::zero() {
-                T::lit(1e-3) * info.norm_squared() / T::lit(n as f64)
-            } else {
-                lambda * T::lit(10.0)
-            };
-        }
-        if small {
-            converged = true;
-            break;
         }
     }
-    if !converged {
-        return Err(FitError::NoConvergence { iterations });
-    }
+    let Solved {
+        x,
+        info,
+        cost,
+        worst,
+        iterations,
+    } = levenberg_marquardt(model, &layout, poses, x, &held, config)?;
 
     let condition_number = check_conditioning(&info, &layout, config.max_condition_number)?;
     let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
@@ -498,6 +524,27 @@ pub fn fit<T: Real>(
             }
         }
     }
+    if let Some((p, v)) = geometry::implausible_tilt(model, &{
+        let mut values = [T::zero(); MAX_PARAMS];
+        for (slot, q) in layout.params().iter().enumerate() {
+            values[q.index()] = x[slot];
+        }
+        values
+    }, layout.names(0..n))
+    {
+        return Err(FitError::ImplausibleGeometry {
+            params: ParamSet::default().with(p.index()),
+            value_deg: rad_to_deg(v).to_f64() as f32,
+            limit_deg: (rad_to_deg(geometry::worst_case(
+                model,
+                p,
+                poses.iter().map(|p| p.joints_rad),
+            ))
+            .to_f64()
+                * geometry::TILT_IMPLAUSIBLE_FACTOR) as f32,
+        });
+    }
+    let unfitted_rad = geometry::unfitted_effect(model, &layout, dropped, poses, &x, &inv);
     finish(
         &layout,
         &x,
@@ -511,9 +558,116 @@ pub fn fit<T: Real>(
             iterations,
             condition_number,
             poses: poses.len(),
+            extras,
+            dropped,
+            unfitted_rad,
         },
         config,
     )
+}
+
+/// Where Levenberg-Marquardt left a fit.
+struct Solved<T: Real> {
+    x: [T; MAX_PARAMS],
+    info: Information<T>,
+    cost: T,
+    worst: (T, usize),
+    iterations: u32,
+}
+
+/// Levenberg-Marquardt on `layout` from `x`.
+fn levenberg_marquardt<T: Real>(
+    model: &Stage2Model<T>,
+    layout: &Layout,
+    poses: &[PoseReading<T>],
+    mut x: [T; MAX_PARAMS],
+    held: &Held<T>,
+    config: &FitConfig<T>,
+) -> Result<Solved<T>, FitError> {
+    let n = layout.len();
+    let (mut info, mut cost, mut worst) = linearise(model, layout, poses, &x, true, held);
+    check_conditioning(&info, layout, config.max_condition_number)?;
+
+    let mut lambda = T::zero();
+    let mut iterations = 0;
+    let mut converged = false;
+    // Accept equal cost within rounding, so a step at the precision floor is not
+    // mistaken for a worse one.
+    let slack = T::one() + T::lit(8.0) * T::EPSILON;
+    while iterations < config.max_iterations {
+        iterations += 1;
+        let mut step = info.step(lambda).ok_or(FitError::NonFiniteResult)?;
+        if !step.iter().take(n).all(|s| s.is_finite()) {
+            return Err(FitError::NonFiniteResult);
+        }
+        // A trust region on the geometric terms: no step moves one by more than its
+        // stated worst case. A turn of tens of degrees about a direction the poses see
+        // only to first order is a valley of the cost the Gauss-Newton step can leap
+        // into (found at 40° where the minimum was at 0.3°).
+        let mut scale = T::one();
+        for (st, w) in step.iter().zip(&held.prior_weight).take(n) {
+            if *w > T::zero() {
+                let bound = config.sensor_noise_rad / *w;
+                if st.abs() * scale > bound {
+                    scale = bound / st.abs();
+                }
+            }
+        }
+        if scale < T::one() {
+            for st in step.iter_mut().take(n) {
+                *st *= scale;
+            }
+        }
+        // Convergence is judged on the angles (the offsets); the other terms are
+        // dimensionless or per metre, and follow them.
+        let size = step[..WRIST_JOINTS]
+            .iter()
+            .fold(T::zero(), |m, s| m.max(s.abs()));
+        let small = size < T::STEP_TOLERANCE_RAD;
+        let mut candidate = x;
+        for (c, s) in candidate.iter_mut().zip(&step).take(n) {
+            *c += *s;
+        }
+        let (cand_info, cand_cost, cand_worst) =
+            linearise(model, layout, poses, &candidate, true, held);
+        // Below LOCAL_STEP_RAD the linearisation error (∝ δ²) is far under the noise, so
+        // the Gauss-Newton step is trusted as it is: there the cost's own rounding noise
+        // (~1e-3 relative in f32) would otherwise reject genuine steps and stall the
+        // fit short of the minimum.
+        let local = size < T::lit(LOCAL_STEP_RAD);
+        if cand_cost.is_finite() && (local || cand_cost <= cost * slack) {
+            x = candidate;
+            info = cand_info;
+            cost = cand_cost;
+            worst = cand_worst;
+            lambda /= T::lit(10.0);
+            if lambda < T::EPSILON {
+                lambda = T::zero();
+            }
+        } else {
+            // Gauss-Newton overshot: damp towards gradient descent. The scale is that of
+            // JᵀJ's diagonal (trace/n = ‖R‖²/n).
+            lambda = if lambda == T::zero() {
+                T::lit(1e-3) * info.norm_squared() / T::lit(n as f64)
+            } else {
+                lambda * T::lit(10.0)
+            };
+        }
+        if small {
+            converged = true;
+            break;
+        }
+    }
+    if !converged {
+        return Err(FitError::NoConvergence { iterations });
+    }
+    Ok(Solved {
+        x,
+        info,
+        cost,
+        worst,
+        iterations,
+    })
 }
 
 /// The statistics a finished fit reports besides the covariance.
@@ -524,6 +678,9 @@ struct Summary<T> {
     iterations: u32,
     condition_number: T,
     poses: usize,
+    extras: Extras,
+    dropped: ParamSet,
+    unfitted_rad: [T; WRIST_JOINTS],
 }
 
 /// σ from the residuals (or the sensor's figure), and the result in physical form.
@@ -609,6 +766,9 @@ fn finish<T: Real>(
         iterations: s.iterations,
         condition_number: s.condition_number,
         poses: s.poses,
+        extras: s.extras,
+        dropped: s.dropped,
+        unfitted_rad: s.unfitted_rad,
     })
 }
 
@@ -627,6 +787,7 @@ pub fn single_linearised_step<T: Real>(
     let held = Held {
         offsets: config.extras.held,
         at_rad: config.initial_offsets_rad,
+        prior_weight: [T::zero(); MAX_PARAMS],
     };
     let (info, _, _) = linearise(model, &layout, poses, &[T::zero(); MAX_PARAMS], true, &held);
     check_conditioning(&info, &layout, config.max_condition_number)?;
@@ -642,9 +803,19 @@ pub fn information<T: Real>(
     joints_rad: &[[T; JOINTS]],
     offsets_rad: &[T; WRIST_JOINTS],
 ) -> Information<T> {
+    information_at(model, extras, joints_rad.iter().copied(), offsets_rad)
+}
+
+/// [`information`] over any sequence of commanded poses.
+pub(crate) fn information_at<T: Real>(
+    model: &Stage2Model<T>,
+    extras: Extras,
+    joints_rad: impl Iterator<Item = [T; JOINTS]>,
+    offsets_rad: &[T; WRIST_JOINTS],
+) -> Information<T> {
     let layout = extras.layout();
-    let poses = joints_rad.iter().map(|q| PoseReading {
-        joints_rad: *q,
+    let poses = joints_rad.map(|q| PoseReading {
+        joints_rad: q,
         reading: Tilt::default(),
         temperature_c: None,
     });
@@ -652,7 +823,7 @@ pub fn information<T: Real>(
         offsets_rad: *offsets_rad,
         ..Estimate::default()
     };
-    let pass = model.pass(&estimate);
+    let pass = model.pass(&estimate, &layout);
     let mut info = Information::new(layout.len());
     for pose in poses {
         let p = model.predict_rows(&pass, &layout, &estimate, &pose, false);

@@ -9,7 +9,9 @@
 //! propagated through the chain ([`WristChain::up_and_partials_with`]).
 
 use super::information::Row;
-use super::params::{Layout, Param, MAX_PARAMS};
+use super::params::{
+    tilt_directions, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_JOINTS,
+};
 use super::PoseReading;
 use crate::model::{
     joint_trig, Arm, BaseTilt, Gain, SensorModel, Tilt, WristChain, JOINTS, WRIST_JOINTS,
@@ -74,33 +76,68 @@ impl<T: Real> MassModel<T> {
     /// Joint 2's load varies by the same amount while joint 2 is held (the two axes
     /// are parallel), so one compliance times this lever is the deflection of both.
     pub fn lever_m(&self, arm: &Arm<T>, q_rad: &[T; JOINTS]) -> T {
+        self.levers_m(arm, q_rad)[2]
+    }
+
+    /// The gravity lever about each joint's axis of everything after it (its links and
+    /// the pendant) at true joint angles `q_rad` (m, mass-weighted as [`Self::lever_m`]):
+    /// a joint's deflection under gravity is its compliance times this.
+    pub fn levers_m(&self, arm: &Arm<T>, q_rad: &[T; JOINTS]) -> [T; JOINTS] {
         let (frames, flange) = arm.frames(q_rad);
-        let j3 = frames[2];
-        let axis = j3.rotation * arm.joints[2].axis.unit::<T>();
         let down = -Vector3::z();
-        let mut moment = T::zero();
-        let mut total = T::zero();
-        let mut add = |m: T, c: Vector3<T>| {
-            moment += m * axis.dot(&(c - j3.translation_m).cross(&down));
-            total += m;
-        };
-        for k in 2..JOINTS {
-            add(
+        let mut centres = [(T::zero(), Vector3::zeros()); JOINTS + 1];
+        for k in 0..JOINTS {
+            centres[k] = (
                 self.link_kg[k],
                 frames[k].translation_m + frames[k].rotation * self.com_m[k],
             );
         }
-        add(
+        centres[JOINTS] = (
             self.pendant_kg,
             flange.translation_m + flange.rotation * self.pendant_com_m,
         );
-        if total > T::zero() {
-            moment / total
-        } else {
-            T::zero()
-        }
+        core::array::from_fn(|j| {
+            let axis = frames[j].rotation * arm.joints[j].axis.unit::<T>();
+            let mut moment = T::zero();
+            let mut total = T::zero();
+            for (m, c) in &centres[j..] {
+                moment += *m * axis.dot(&(c - frames[j].translation_m).cross(&down));
+                total += *m;
+            }
+            if total > T::zero() {
+                moment / total
+            } else {
+                T::zero()
+            }
+        })
+    }
+
+    /// With the pendant (and a tool of `tool_kg` lumped at its centre) on the flange:
+    /// [`PENDANT_KG`] at [`PENDANT_COM_M`].
+    pub fn with_pendant(mut self, tool_kg: T) -> Self {
+        self.pendant_kg = T::lit(PENDANT_KG) + tool_kg;
+        self.pendant_com_m = Vector3::new(T::zero(), T::zero(), T::lit(PENDANT_COM_M));
+        self
     }
 }
+
+/// `J_r(v)·d` for SO(3)'s right Jacobian `J_r(v) = I − a·[v]× + b·[v]×²`, with
+/// `a = (1 − cos θ)/θ²` and `b = (θ − sin θ)/θ³` by their series (θ = |v| is a
+/// misalignment, well under 0.1 rad, where two terms are exact to 1e-7 relative).
+fn right_jacobian<T: Real>(v: &Vector3<T>, d: &Vector3<T>) -> Vector3<T> {
+    let t2 = v.norm_squared();
+    let a = T::lit(0.5) - t2 / T::lit(24.0);
+    let b = T::lit(1.0 / 6.0) - t2 / T::lit(120.0);
+    let vd = v.cross(d);
+    d - vd * a + v.cross(&vd) * b
+}
+
+/// The pendant and its flange bracket (kg): the pendant's own design figure.
+pub const PENDANT_KG: f64 = 0.25;
+
+/// How far out along the flange's normal the pendant's centre of mass hangs (m): the
+/// pendant's own design figure.
+pub const PENDANT_COM_M: f64 = 0.05;
 
 /// Everything about the robot and the sensor that stage 2 does not estimate.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -158,6 +195,10 @@ pub struct Estimate<T> {
     pub bias: Tilt<T>,
     /// Drift (rad per kelvin).
     pub drift_per_k: Tilt<T>,
+    /// Misalignments by [`Param::Tilt`] slot (rad).
+    pub tilt_rad: [T; TILT_SLOTS],
+    /// Compliances of joints 4, 5, 6 (rad per metre of lever).
+    pub wrist_sag_rad_per_m: [T; WRIST_SAG_JOINTS],
 }
 
 impl<T: Real> Estimate<T> {
@@ -181,6 +222,10 @@ impl<T: Real> Estimate<T> {
                 Param::BiasY => e.bias.y_rad = v,
                 Param::DriftX => e.drift_per_k.x_rad = v,
                 Param::DriftY => e.drift_per_k.y_rad = v,
+                Param::Tilt(t) => e.tilt_rad[usize::from(t).min(TILT_SLOTS - 1)] = v,
+                Param::WristSag(i) => {
+                    e.wrist_sag_rad_per_m[usize::from(i).min(WRIST_SAG_JOINTS - 1)] = v
+                }
             }
         }
         e
@@ -192,6 +237,12 @@ impl<T: Real> Estimate<T> {
 pub(crate) struct Pass<T: Real> {
     wrist: WristChain<T>,
     fixed_in_use: [bool; WRIST_JOINTS + 1],
+    /// Joint 2's misalignment, after its frame's fixed rotation.
+    shoulder_tilt: Rotation3<T>,
+    /// Each misalignment slot's direction in its joint's frame (zero: no such slot).
+    tilt_dirs: [Vector3<T>; TILT_SLOTS],
+    /// Whether any misalignment is estimated (the chain then carries their partials).
+    any_tilt: bool,
     up_in_base: Vector3<T>,
     up_in_base_partials: [Vector3<T>; 2],
     offset_trig: [(T, T); WRIST_JOINTS],
@@ -209,11 +260,38 @@ pub(crate) struct Prediction<T: Real> {
 }
 
 impl<T: Real> Stage2Model<T> {
-    pub(crate) fn pass(&self, estimate: &Estimate<T>) -> Pass<T> {
-        let wrist = self.arm.wrist();
+    pub(crate) fn pass(&self, estimate: &Estimate<T>, layout: &Layout) -> Pass<T> {
+        let mut wrist = self.arm.wrist();
+        let mut tilt_dirs = [Vector3::zeros(); TILT_SLOTS];
+        let mut turns = [Rotation3::identity(); JOINTS - 1];
+        for (j, turn) in (2..=JOINTS).zip(turns.iter_mut()) {
+            if let Some((dirs, _)) = tilt_directions(&self.arm, j) {
+                let s = 2 * (j - 2);
+                tilt_dirs[s] = dirs[0];
+                tilt_dirs[s + 1] = dirs[1];
+                let v = dirs[0] * estimate.tilt_rad[s] + dirs[1] * estimate.tilt_rad[s + 1];
+                if v != Vector3::zeros() {
+                    *turn = Rotation3::new(v);
+                    // d/dt exp(v + t·d) = exp(v)·[J_r(v)·d]×: the partials turn about
+                    // J_r·d, which keeps J exact at a tilt of tenths of a degree.
+                    tilt_dirs[s] = right_jacobian(&v, &dirs[0]);
+                    tilt_dirs[s + 1] = right_jacobian(&v, &dirs[1]);
+                }
+            }
+        }
+        for k in 0..WRIST_JOINTS {
+            wrist.fixed[k] *= turns[k + 1];
+        }
+        let any_tilt = layout
+            .params()
+            .iter()
+            .any(|p| matches!(p, Param::Tilt(_)));
         Pass {
             fixed_in_use: wrist.fixed_in_use(),
             wrist,
+            shoulder_tilt: turns[0],
+            tilt_dirs,
+            any_tilt,
             up_in_base: self.base_tilt.up_in_base(),
             up_in_base_partials: self.base_tilt.up_in_base_partials(),
             offset_trig: estimate.offsets_rad.map(|d| d.fast_sin_cos()),
@@ -223,11 +301,12 @@ impl<T: Real> Stage2Model<T> {
 
     /// The up vector in the frame after joint 2 (before joint 3's fixed rotation) for
     /// the recorded joints 1-2, and the rotation that takes base vectors there.
-    fn shoulder(&self, joints_rad: &[T; JOINTS]) -> Rotation3<T> {
+    fn shoulder(&self, joints_rad: &[T; JOINTS], tilt: &Rotation3<T>) -> Rotation3<T> {
         let [j1, j2, ..] = self.arm.joints;
         let r = j1.origin.rotation
             * j1.axis.rotation(joints_rad[0])
             * j2.origin.rotation
+            * tilt
             * j2.axis.rotation(joints_rad[1] + self.delta_theta2_rad);
         r.inverse()
     }
@@ -243,24 +322,51 @@ impl<T: Real> Stage2Model<T> {
         with_handover: bool,
     ) -> Prediction<T> {
         let q = &pose.joints_rad;
-        let to_link2 = self.shoulder(q);
+        let to_link2 = self.shoulder(q, &pass.shoulder_tilt);
         let base_up = to_link2 * pass.up_in_base;
-        // The lever at the commanded pose: the offsets and Δθ2 (tenths of a degree)
-        // change it by far less than the model's own accuracy, and it keeps J exact.
-        let lever = match (&self.masses, layout.slot(Param::Sag)) {
-            (Some(m), Some(_)) => m.lever_m(&self.arm, q),
-            _ => T::zero(),
+        // The levers at the commanded pose: the offsets and Δθ2 (tenths of a degree)
+        // change them by far less than the model's own accuracy, and they keep J exact.
+        let wants_lever = layout
+            .params()
+            .iter()
+            .any(|p| matches!(p, Param::Sag | Param::WristSag(_)));
+        let levers = match (&self.masses, wants_lever) {
+            (Some(m), true) => m.levers_m(&self.arm, q),
+            _ => [T::zero(); JOINTS],
+        };
+        let lever = if layout.slot(Param::Sag).is_some() {
+            levers[2]
+        } else {
+            T::zero()
         };
         let mut offset_trig = pass.offset_trig;
-        if lever != T::zero() {
-            let (s, c) = (estimate.offsets_rad[0] + estimate.sag_rad_per_m * lever).fast_sin_cos();
-            offset_trig[0] = (s, c);
+        let mut deflection = [T::zero(); WRIST_JOINTS];
+        deflection[0] = estimate.sag_rad_per_m * lever;
+        for i in 0..WRIST_SAG_JOINTS {
+            if layout.slot(Param::WristSag(i as u8)).is_some() {
+                deflection[i + 1] = estimate.wrist_sag_rad_per_m[i] * levers[i + 3];
+            }
+        }
+        for (k, d) in deflection.iter().enumerate() {
+            if *d != T::zero() {
+                offset_trig[k] = (estimate.offsets_rad[k] + *d).fast_sin_cos();
+            }
         }
         let wrist_q = [q[2], q[3], q[4], q[5]];
         let trig = joint_trig(&wrist_q, &offset_trig);
-        let (u, du) = pass
-            .wrist
-            .up_and_partials_with(&pass.fixed_in_use, &base_up, &trig);
+        let (u, du, dtilt) = if pass.any_tilt {
+            pass.wrist.up_and_tilt_partials(
+                &pass.fixed_in_use,
+                &base_up,
+                &trig,
+                &pass.tilt_dirs,
+            )
+        } else {
+            let (u, du) = pass
+                .wrist
+                .up_and_partials_with(&pass.fixed_in_use, &base_up, &trig);
+            (u, du, [Vector3::zeros(); TILT_SLOTS - 2])
+        };
         let g = &pass.gain;
         let dt = pose
             .temperature_c
@@ -301,6 +407,25 @@ impl<T: Real> Stage2Model<T> {
                     Param::BiasY => d_bias[axis][1],
                     Param::DriftX => d_bias[axis][0] * dt,
                     Param::DriftY => d_bias[axis][1] * dt,
+                    Param::Tilt(t) if t < 2 => {
+                        // Joint 2's: a turn of link 2 by ε about d (in joint 2's frame
+                        // before its own turn) moves the up vector there by (u × E₂ᵀd)·ε.
+                        let d = pass.tilt_dirs[usize::from(t)];
+                        let axis2 = self.arm.joints[1].axis;
+                        let (s, c) = (q[1] + self.delta_theta2_rad).fast_sin_cos();
+                        let moved = base_up.cross(&axis2.rotate_transposed(&d, s, c));
+                        through(
+                            axis,
+                            &pass.wrist.to_sensor(&pass.fixed_in_use, &moved, &trig),
+                        )
+                    }
+                    Param::Tilt(t) => {
+                        through(axis, &dtilt[usize::from(t).min(TILT_SLOTS - 1) - 2])
+                    }
+                    Param::WristSag(i) => {
+                        let i = usize::from(i).min(WRIST_SAG_JOINTS - 1);
+                        levers[i + 3] * through(axis, &du[i + 1])
+                    }
                 };
             }
         }

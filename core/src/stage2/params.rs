@@ -10,14 +10,31 @@
 //!   with joint 2 held, their deflections vary with the same lever);
 //! - **bias**: the reading's zero on the flange (stage 0 measured it on the bench; the
 //!   flange bracket's tilt and the temperature move it);
-//! - **drift**: the zero's change per kelvin of the sensor's temperature.
+//! - **drift**: the zero's change per kelvin of the sensor's temperature;
+//! - **tilt**: a joint's axis off its nominal direction (the drawing's), a small turn
+//!   of the joint's frame before it about a direction perpendicular to its axis and to
+//!   the previous joint's (a turn about either of those is a zero), two directions where
+//!   the two axes are parallel ([`tilt_directions`]);
+//! - **wrist sag**: the deflection of joints 4, 5 and 6 under the weight of what they
+//!   carry (the links after them, the pendant, a tool), one compliance each times its
+//!   gravity lever.
+//!
+//! The geometric terms (tilt, wrist sag) are candidates: the fit keeps those the poses
+//! separate from everything else ([`super::identifiable`]) and carries the others in the
+//! budget at their stated worst case.
 
 use crate::error::{ParamSet, PARAM_NAMES};
 
 const _: () = assert!(PARAM_NAMES.len() == MAX_PARAMS);
 
 /// Most parameters stage 2 estimates.
-pub const MAX_PARAMS: usize = 18;
+pub const MAX_PARAMS: usize = 18 + TILT_SLOTS + WRIST_SAG_JOINTS;
+
+/// Misalignment slots: two directions for each of joints 2-6 (slot `2·(j − 2) + d`).
+pub const TILT_SLOTS: usize = 10;
+
+/// Joints whose compliance under the wrist's own load can be fitted: 4, 5, 6.
+pub const WRIST_SAG_JOINTS: usize = 3;
 
 /// One stage-2 parameter. Its index (the order below) is what a [`ParamSet`] names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,11 +71,28 @@ pub enum Param {
     DriftX,
     /// y bias drift (rad per kelvin).
     DriftY,
+    /// Misalignment slot `s` (rad): joint `2 + s/2` turned about its `s % 2`-th
+    /// [`tilt_directions`] direction.
+    Tilt(u8),
+    /// Compliance of joint `4 + i` (rad per metre of its gravity lever).
+    WristSag(u8),
 }
 
 impl Param {
     /// Every parameter, by index.
-    pub const ALL: [Param; MAX_PARAMS] = [
+    pub const ALL: [Param; MAX_PARAMS] = {
+        let mut all = [Param::Offset(0); MAX_PARAMS];
+        let mut i = 0;
+        while i < MAX_PARAMS {
+            all[i] = Param::from_index(i);
+            i += 1;
+        }
+        all
+    };
+
+    /// The parameter at index `i` (past the last: the last).
+    pub const fn from_index(i: usize) -> Param {
+        const FIXED: [Param; 18] = [
         Param::Offset(0),
         Param::Offset(1),
         Param::Offset(2),
@@ -77,7 +111,17 @@ impl Param {
         Param::BiasY,
         Param::DriftX,
         Param::DriftY,
-    ];
+        ];
+        if i < FIXED.len() {
+            FIXED[i]
+        } else if i < FIXED.len() + TILT_SLOTS {
+            Param::Tilt((i - FIXED.len()) as u8)
+        } else if i < MAX_PARAMS {
+            Param::WristSag((i - FIXED.len() - TILT_SLOTS) as u8)
+        } else {
+            Param::WristSag(WRIST_SAG_JOINTS as u8 - 1)
+        }
+    }
 
     /// Its index in [`ALL`](Self::ALL).
     pub fn index(self) -> usize {
@@ -97,6 +141,8 @@ impl Param {
             Param::BiasY => 15,
             Param::DriftX => 16,
             Param::DriftY => 17,
+            Param::Tilt(s) => 18 + usize::from(s).min(TILT_SLOTS - 1),
+            Param::WristSag(i) => 18 + TILT_SLOTS + usize::from(i).min(WRIST_SAG_JOINTS - 1),
         }
     }
 
@@ -132,6 +178,11 @@ pub struct Extras {
     /// zero gravity cannot tell from that one's; the earlier joint's offset then carries
     /// the sum ([`crate::model::Arm::parallel_twins`]).
     pub held: [bool; 4],
+    /// Misalignment candidates (bit s = [`Param::Tilt`] slot s): the fit keeps those
+    /// the poses separate ([`super::identifiable`]).
+    pub tilt: u16,
+    /// Wrist-sag candidates (bit i = joint 4 + i; needs the masses): as `tilt`.
+    pub wrist_sag: u8,
 }
 
 impl Extras {
@@ -144,6 +195,8 @@ impl Extras {
         bias_y: false,
         drift: false,
         held: [false; 4],
+        tilt: 0,
+        wrist_sag: 0,
     };
 
     /// What a session with a MEMS inclinometer (the SCL3300, `axis` convention) fits
@@ -167,6 +220,18 @@ impl Extras {
             bias_y: ay <= ax,
             drift: false,
             held: arm.parallel_twins(),
+            tilt: tilt_candidates(arm),
+            wrist_sag: if sag { WRIST_SAG_ALL } else { 0 },
+        }
+    }
+
+    /// Without the geometric candidates (tilt, wrist sag): the terms of the sensor and
+    /// joints 2-3 only.
+    pub fn without_geometry(self) -> Extras {
+        Extras {
+            tilt: 0,
+            wrist_sag: 0,
+            ..self
         }
     }
 
@@ -187,6 +252,8 @@ impl Extras {
                 Param::BiasX => self.bias_x,
                 Param::BiasY => self.bias_y,
                 Param::DriftX | Param::DriftY => self.drift,
+                Param::Tilt(t) => self.tilt & (1 << t) != 0,
+                Param::WristSag(i) => self.wrist_sag & (1 << i) != 0,
             };
             if on {
                 params[n] = p;
@@ -197,6 +264,51 @@ impl Extras {
     }
 }
 
+/// Every wrist-sag candidate (joints 4, 5, 6).
+pub const WRIST_SAG_ALL: u8 = (1 << WRIST_SAG_JOINTS) - 1;
+
+/// The directions (unit, in joint `j`'s frame before its turn) about which joint `j`
+/// (2..=6) may be misaligned, with whether the pair (j−1, j) is parallel: one direction
+/// perpendicular to both axes, or where they are parallel two perpendicular to the axis.
+/// A turn about the joint's own axis is its zero, about the previous one's that one's.
+pub fn tilt_directions<T: crate::real::Real>(
+    arm: &crate::model::Arm<T>,
+    joint: usize,
+) -> Option<([nalgebra::Vector3<T>; 2], bool)> {
+    use nalgebra::Vector3;
+    let k = joint.checked_sub(1).filter(|&k| (1..crate::model::JOINTS).contains(&k))?;
+    let axis = arm.joints[k].axis.unit::<T>();
+    let prev = arm.joints[k].origin.rotation.inverse() * arm.joints[k - 1].axis.unit::<T>();
+    let cross = axis.cross(&prev);
+    if cross.norm() > T::lit(1e-6) {
+        let d = cross.normalize();
+        return Some(([d, Vector3::zeros()], false));
+    }
+    // Parallel: the two coordinate axes other than the joint's own.
+    let helper = if axis.x.abs() < T::lit(0.9) {
+        Vector3::x()
+    } else {
+        Vector3::y()
+    };
+    let u = axis.cross(&helper).normalize();
+    Some(([u, axis.cross(&u)], true))
+}
+
+/// The misalignment slots `arm` has (bit s = [`Param::Tilt`] slot s).
+pub fn tilt_candidates<T: crate::real::Real>(arm: &crate::model::Arm<T>) -> u16 {
+    let mut bits = 0u16;
+    for j in 2..=crate::model::JOINTS {
+        if let Some((_, parallel)) = tilt_directions(arm, j) {
+            let s = 2 * (j - 2);
+            bits |= 1 << s;
+            if parallel {
+                bits |= 1 << (s + 1);
+            }
+        }
+    }
+    bits
+}
+
 /// The active parameters, in order: slot `i` of the fit holds `params[i]`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Layout {
@@ -205,6 +317,14 @@ pub struct Layout {
 }
 
 impl Layout {
+    /// The given parameters in the given order (past [`MAX_PARAMS`]: the first ones).
+    pub fn from_params(params: &[Param]) -> Self {
+        let mut out = [Param::Offset(0); MAX_PARAMS];
+        let n = params.len().min(MAX_PARAMS);
+        out[..n].copy_from_slice(&params[..n]);
+        Layout { params: out, n }
+    }
+
     /// How many.
     pub fn len(&self) -> usize {
         self.n
@@ -250,6 +370,8 @@ mod tests {
             bias_y: true,
             drift: true,
             held: [false; 4],
+            tilt: (1 << TILT_SLOTS) - 1,
+            wrist_sag: WRIST_SAG_ALL,
         }
         .layout();
         assert_eq!(all.len(), MAX_PARAMS);

@@ -63,6 +63,8 @@ const ALL: Extras = Extras {
     bias_x: true,
     bias_y: true,
     drift: true,
+    tilt: (1 << TILT_SLOTS) - 1,
+    wrist_sag: WRIST_SAG_ALL,
 };
 
 #[test]
@@ -81,7 +83,7 @@ fn analytic_jacobian_matches_central_differences() {
         }
         let at = |x: &[f64; MAX_PARAMS]| {
             let e = Estimate::from_slots(&layout, x);
-            let pass = m.pass(&e);
+            let pass = m.pass(&e, &layout);
             m.predict_rows(&pass, &layout, &e, &pose, true)
         };
         let p = at(&x);
@@ -131,7 +133,7 @@ fn analytic_jacobian_matches_central_differences() {
             }
             let e = Estimate::from_slots(&layout, &x);
             let r = |m: &Stage2Model<f64>| {
-                m.predict_rows(&m.pass(&e), &layout, &e, &pose, false)
+                m.predict_rows(&m.pass(&e, &layout), &layout, &e, &pose, false)
                     .reading
             };
             let d = r(&mp).minus(&r(&mm));

@@ -190,8 +190,11 @@ pub fn parse_meta<T: Real>(
                 bias_x: flags[3],
                 bias_y: flags[4],
                 drift: flags[5],
-                // Which offsets are held follows from the arm, not the export.
+                // Which offsets are held, and which misalignments and wrist
+                // compliances are candidates, follow from the arm, not the export.
                 held: [false; 4],
+                tilt: 0,
+                wrist_sag: 0,
             })
         }
         "stage1_temp_c" => {

@@ -1,0 +1,352 @@
+//! The refusal rule: a session's readings tell a fault of the session (a pose the robot
+//! did not reach, a loose bracket, a pendant knocked mid-session, the wrong profile)
+//! from a robot that is only a real robot (misaligned axes, transmission error, a wrist
+//! that gives under its load). A real robot gets numbers, with the larger uncertainty
+//! its residuals show; a fault is refused by name.
+//!
+//! The evidence, in the order it is judged:
+//! 1. **the repeated captures**: the two captures of a pose, approached from either
+//!    side, differ by the gears' lost motion and the sensor's noise on a tight bracket;
+//!    a bracket that moves re-seats between them ([`MAX_CAPTURE_DIFFERENCE_DEG`]);
+//! 2. **one pose against the others**: a pose the robot did not reach stands out of
+//!    residuals that a real arm's smooth errors keep alike ([`OUTLIER_LIMIT`]);
+//! 3. **a step in the sequence**: a pendant knocked on the flange turns every reading
+//!    after the knock alike ([`STEP_LIMIT`]);
+//! 4. **the size of the residuals**: past what any arm within the stated ranges leaves
+//!    ([`MAX_RESIDUAL_RMS_DEG`]), the model does not describe this robot: the wrong
+//!    profile (a fitted geometry far past a real arm's is named by the fit itself,
+//!    [`crate::stage2::FitError::ImplausibleGeometry`]).
+//!
+//! Every limit was set by the Monte-Carlo of docs/error-budget.md ("The refusal rule"):
+//! the largest figure over 200 sessions per profile on six profiles with every error
+//! source on, at the stated ranges and on the FANUC as measured, with room; and each
+//! fault, far outside its range, past it.
+
+use super::{first_captures, same_pose};
+use crate::capture::CaptureIndex;
+use crate::error::FitError;
+use crate::model::Tilt;
+use crate::real::{deg_to_rad, rad_to_deg, Real};
+use crate::stage2::{add_held, Estimate, FitResult, Information, PoseReading, Stage2Model, MAX_PARAMS};
+
+/// The largest residual RMS a session is solved with (deg, the y readings weighted by
+/// their lower noise as the fit weighs them). With every error source on at the stated
+/// ranges the largest over the Monte-Carlo was 0.011°, on the FANUC as measured
+/// (transmission errors to 0.06° peak to peak) 0.022°.
+pub const MAX_RESIDUAL_RMS_DEG: f64 = 0.03;
+
+/// The largest RMS difference between the two captures of a pose on a tight bracket
+/// (deg, per reading): the wrist's lost motion, which the two approaches cross, and the
+/// noise. The Monte-Carlo's largest was 0.018° at the stated ranges and 0.032° on the
+/// FANUC as measured (0.03° of hysteresis); a bracket re-seating within ±0.1° gives
+/// 0.097°.
+pub const MAX_CAPTURE_DIFFERENCE_DEG: f64 = 0.05;
+
+/// A pose whose F ([`evidence`]) exceeds this (and whose shift exceeds
+/// [`OUTLIER_FLOOR_DEG`]) was not reached. Real arms reached F = 21 at most in the
+/// Monte-Carlo (their errors are smooth in the angles, so no single pose stands out);
+/// a pose where joint 5 stopped 0.5° short gave 290 and more.
+pub const OUTLIER_LIMIT: f64 = 60.0;
+
+/// A pose's shift below this (deg) is never called an outlier: on a quiet arm a small
+/// one can have a large F.
+pub const OUTLIER_FLOOR_DEG: f64 = 0.02;
+
+/// A step whose F ([`evidence`]) exceeds this (and whose size exceeds
+/// [`STEP_FLOOR_DEG`]) is a pendant that moved. Real arms reached F = 19 at most in the
+/// Monte-Carlo; a knock that turned the pendant 0.1° gave 445 and more.
+pub const STEP_LIMIT: f64 = 60.0;
+
+/// A step below this (deg) is never called a move.
+pub const STEP_FLOOR_DEG: f64 = 0.01;
+
+/// Poses at either end a step is not looked for in (too few to tell a step from an
+/// outlier).
+const STEP_EDGE: usize = 3;
+
+/// The limits of the rule (deg, or factors), by default those above.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RefusalRule {
+    /// [`MAX_CAPTURE_DIFFERENCE_DEG`].
+    pub max_capture_difference_deg: f64,
+    /// [`OUTLIER_LIMIT`].
+    pub outlier_limit: f64,
+    /// [`OUTLIER_FLOOR_DEG`].
+    pub outlier_floor_deg: f64,
+    /// [`STEP_LIMIT`].
+    pub step_limit: f64,
+    /// [`STEP_FLOOR_DEG`].
+    pub step_floor_deg: f64,
+}
+
+impl RefusalRule {
+    /// The rule as set by the Monte-Carlo.
+    pub const STANDARD: RefusalRule = RefusalRule {
+        max_capture_difference_deg: MAX_CAPTURE_DIFFERENCE_DEG,
+        outlier_limit: OUTLIER_LIMIT,
+        outlier_floor_deg: OUTLIER_FLOOR_DEG,
+        step_limit: STEP_LIMIT,
+        step_floor_deg: STEP_FLOOR_DEG,
+    };
+
+    /// No fault is looked for (a measurement of the evidence itself).
+    pub const OFF: RefusalRule = RefusalRule {
+        max_capture_difference_deg: f64::INFINITY,
+        outlier_limit: f64::INFINITY,
+        outlier_floor_deg: f64::INFINITY,
+        step_limit: f64::INFINITY,
+        step_floor_deg: f64::INFINITY,
+    };
+}
+
+impl Default for RefusalRule {
+    fn default() -> Self {
+        Self::STANDARD
+    }
+}
+
+/// What the readings show beyond the fit's numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Evidence<T> {
+    /// RMS difference between the two captures of a pose, per reading (rad), and the
+    /// pose (0-based, fitted order) whose captures differ most; `None` without pairs.
+    pub capture_difference: Option<(T, usize)>,
+    /// The pose most unlike the others: it (0-based, fitted order), its readings'
+    /// shift from the model fitted without it (rad, larger of x and y) and its F.
+    pub outlier: (usize, T, T),
+    /// The likeliest step: the first pose after it, its size (rad) and its F.
+    pub step: (usize, T, T),
+    /// The residual RMS (rad, per reading).
+    pub residual_rms_rad: T,
+}
+
+/// RMS difference between the captures of each pose (per reading) and the pose whose
+/// differ most, pairing as [`super::merge_captures`] does. `None` when no pose repeats.
+pub fn capture_difference<T: Real>(
+    poses: &[PoseReading<T>],
+    index: Option<&[CaptureIndex]>,
+) -> Option<(T, usize)> {
+    let firsts = first_captures(poses, index)?;
+    let (mut sum, mut count, mut worst) = (T::zero(), 0u32, (T::zero(), 0));
+    for (pose, &f) in firsts.iter().enumerate() {
+        for j in (f + 1)..poses.len() {
+            if same_pose(poses, index, f, j) {
+                let d = poses[f].reading.minus(&poses[j].reading);
+                let size = d.x_rad * d.x_rad + d.y_rad * d.y_rad;
+                sum += size;
+                count += 2;
+                if size > worst.0 {
+                    worst = (size, pose);
+                }
+            }
+        }
+    }
+    (count > 0).then(|| ((sum / T::lit(f64::from(count))).sqrt(), worst.1))
+}
+
+/// A 2×2 symmetric matrix's inverse applied to `v`: `M⁻¹·v`, and `vᵀ·M⁻¹·v`; `None`
+/// when `M` is singular.
+fn solve2<T: Real>(m: [[T; 2]; 2], v: [T; 2]) -> Option<([T; 2], T)> {
+    let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    if !(det.abs() > T::EPSILON) {
+        return None;
+    }
+    let x = [
+        (m[1][1] * v[0] - m[0][1] * v[1]) / det,
+        (m[0][0] * v[1] - m[1][0] * v[0]) / det,
+    ];
+    Some((x, v[0] * x[0] + v[1] * x[1]))
+}
+
+/// The evidence of `poses` (merged, as fitted) against `fit`, with the captures'
+/// difference found before merging.
+///
+/// A pose left out and a step added are judged by the same test: how much the sum of
+/// squared residuals would fall if the model had two more parameters (a shift of that
+/// pose's readings; a shift of every reading from pose m on), against what the rest
+/// of the residuals leave per degree of freedom: `F = (ΔSSR/2) / ((SSR − ΔSSR)/(dof − 2))`.
+/// With J the fit's Jacobian and S the new columns, `ΔSSR = rᵀS·(SᵀS − SᵀJ(JᵀJ)⁻¹JᵀS)⁻¹·Sᵀr`
+/// (the residuals are already orthogonal to J at the solution). Rows are weighted as
+/// the fit weighs them.
+pub fn evidence<T: Real>(
+    model: &Stage2Model<T>,
+    fit: &FitResult<T>,
+    poses: &[PoseReading<T>],
+    capture_difference: Option<(T, usize)>,
+) -> Evidence<T> {
+    let layout = fit.extras.layout();
+    let n = layout.len();
+    let mut x = [T::zero(); MAX_PARAMS];
+    for (slot, p) in layout.params().iter().enumerate() {
+        x[slot] = fit.values[p.index()];
+    }
+    let estimate = Estimate::from_slots(&layout, &x);
+    let pass = model.pass(&estimate, &layout);
+    let w = model.y_weight;
+    // One pose: its two weighted rows and residuals.
+    let at = |pose: &PoseReading<T>| {
+        let p = model.predict_rows(&pass, &layout, &estimate, pose, false);
+        let r = pose.reading.minus(&p.reading);
+        (p.rows, [r.x_rad, r.y_rad * w])
+    };
+    let mut info = Information::new(n);
+    let mut ssr = T::zero();
+    // Totals of Sᵀ·J, Sᵀ·r and SᵀS for a shift of every reading (D = diag(1, w)).
+    let mut sj = [[T::zero(); MAX_PARAMS]; 2];
+    let mut sr = [T::zero(); 2];
+    let d = [T::one(), w];
+    for pose in poses {
+        let (rows, r) = at(pose);
+        info.add_row(&rows[0], T::zero());
+        info.add_row(&rows[1], T::zero());
+        for a in 0..2 {
+            ssr += r[a] * r[a];
+            sr[a] += d[a] * r[a];
+            for (v, j) in sj[a].iter_mut().zip(rows[a].iter()).take(n) {
+                *v += d[a] * *j;
+            }
+        }
+    }
+    add_held(&mut info, &fit.extras);
+    let readings = 2 * poses.len();
+    let residual_rms_rad = (ssr / T::lit(readings.max(1) as f64)).sqrt();
+    let dof = readings.saturating_sub(n);
+    let mut outlier = (0, T::zero(), T::zero());
+    let mut step = (0, T::zero(), T::zero());
+    let Some(inv) = info.inverse_gram() else {
+        return Evidence {
+            capture_difference,
+            outlier,
+            step,
+            residual_rms_rad,
+        };
+    };
+    // uᵀ(JᵀJ)⁻¹v over the slots.
+    let quad = |u: &[T; MAX_PARAMS], v: &[T; MAX_PARAMS]| {
+        let mut acc = T::zero();
+        for i in 0..n {
+            for k in 0..n {
+                acc += u[i] * inv.m[i][k] * v[k];
+            }
+        }
+        acc
+    };
+    let f_of = |delta: T| {
+        let rest = (ssr - delta).max(T::zero());
+        if dof > 2 && rest > T::zero() {
+            (delta / T::lit(2.0)) / (rest / T::lit((dof - 2) as f64))
+        } else {
+            T::zero()
+        }
+    };
+    // Prefix sums for the steps: suffix = total − prefix.
+    let mut pj = [[T::zero(); MAX_PARAMS]; 2];
+    let mut pr = [T::zero(); 2];
+    let mut pss = [T::zero(); 2];
+    let total_ss = [T::lit(poses.len() as f64), T::lit(poses.len() as f64) * w * w];
+    for (m, pose) in poses.iter().enumerate() {
+        let (rows, r) = at(pose);
+        // The pose left out: S = its two readings.
+        let h = [
+            [T::one() - quad(&rows[0], &rows[0]), -quad(&rows[0], &rows[1])],
+            [-quad(&rows[1], &rows[0]), T::one() - quad(&rows[1], &rows[1])],
+        ];
+        if let Some((shift, delta)) = solve2(h, r) {
+            let f = f_of(delta);
+            if f > outlier.2 {
+                let size = shift[0].abs().max((shift[1] / w).abs());
+                outlier = (m, size, f);
+            }
+        }
+        // A step before pose m (at least STEP_EDGE poses on either side).
+        if m >= STEP_EDGE && poses.len() - m >= STEP_EDGE {
+            let mut suf_j = [[T::zero(); MAX_PARAMS]; 2];
+            for a in 0..2 {
+                for i in 0..n {
+                    suf_j[a][i] = sj[a][i] - pj[a][i];
+                }
+            }
+            let suf_r = [sr[0] - pr[0], sr[1] - pr[1]];
+            let g = [
+                [
+                    total_ss[0] - pss[0] - quad(&suf_j[0], &suf_j[0]),
+                    -quad(&suf_j[0], &suf_j[1]),
+                ],
+                [
+                    -quad(&suf_j[1], &suf_j[0]),
+                    total_ss[1] - pss[1] - quad(&suf_j[1], &suf_j[1]),
+                ],
+            ];
+            if let Some((shift, delta)) = solve2(g, suf_r) {
+                let f = f_of(delta);
+                if f > step.2 {
+                    let size = (shift[0] * shift[0] + shift[1] * shift[1]).sqrt();
+                    step = (m, size, f);
+                }
+            }
+        }
+        for a in 0..2 {
+            pr[a] += d[a] * r[a];
+            pss[a] += d[a] * d[a];
+            for (v, j) in pj[a].iter_mut().zip(rows[a].iter()).take(n) {
+                *v += d[a] * *j;
+            }
+        }
+    }
+    Evidence {
+        capture_difference,
+        outlier,
+        step,
+        residual_rms_rad,
+    }
+}
+
+/// The rule: the first fault the evidence shows, named; `Ok` for a robot.
+///
+/// # Errors
+/// The fault ([`FitError::CapturesDisagree`], [`FitError::PoseNotReached`],
+/// [`FitError::PendantMoved`], [`FitError::ResidualTooLarge`]).
+pub fn judge<T: Real>(
+    e: &Evidence<T>,
+    rule: &RefusalRule,
+    max_residual_rms_rad: T,
+) -> Result<(), FitError> {
+    let deg = |v: T| rad_to_deg(v).to_f64() as f32;
+    let beyond = |v: T, limit_deg: f64| limit_deg.is_finite() && v > deg_to_rad(T::lit(limit_deg));
+    if let Some((rms, pose)) = e.capture_difference {
+        if beyond(rms, rule.max_capture_difference_deg) {
+            return Err(FitError::CapturesDisagree {
+                rms_deg: deg(rms),
+                limit_deg: rule.max_capture_difference_deg as f32,
+                worst_pose: pose,
+            });
+        }
+    }
+    let (pose, size, f) = e.outlier;
+    if beyond(size, rule.outlier_floor_deg)
+        && rule.outlier_limit.is_finite()
+        && f > T::lit(rule.outlier_limit)
+    {
+        return Err(FitError::PoseNotReached {
+            pose,
+            residual_deg: deg(size),
+            others_rms_deg: deg(e.residual_rms_rad),
+        });
+    }
+    let (from_pose, step, f) = e.step;
+    if beyond(step, rule.step_floor_deg) && rule.step_limit.is_finite() && f > T::lit(rule.step_limit)
+    {
+        return Err(FitError::PendantMoved {
+            from_pose,
+            step_deg: deg(step),
+        });
+    }
+    if max_residual_rms_rad > T::zero() && e.residual_rms_rad > max_residual_rms_rad {
+        return Err(FitError::ResidualTooLarge {
+            rms_deg: deg(e.residual_rms_rad),
+            limit_deg: deg(max_residual_rms_rad),
+            worst_pose: pose,
+        });
+    }
+    Ok(())
+}
