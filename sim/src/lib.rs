@@ -19,6 +19,7 @@ pub mod scl3300_device;
 pub mod sensor;
 pub mod session;
 pub mod stats;
+pub mod tcp;
 pub mod world;
 
 pub use inclinometer::{Noise, SimInclinometer};

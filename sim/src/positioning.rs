@@ -28,6 +28,23 @@ pub enum ArmError {
     },
     /// The arm has no lengths (the paper's wrist): no positions to test.
     NoLengths,
+    /// Zero test poses were asked for: no mean to take.
+    NoPoses,
+    /// An input is NaN or infinite.
+    NotFinite {
+        /// Which (`the tool length`).
+        what: String,
+    },
+    /// The profile lists fewer than six joints.
+    MissingJoint {
+        /// The joint (1-6).
+        joint: usize,
+    },
+    /// The search for the best zero correction ([`crate::tcp`]) did not settle.
+    BestNotConverged {
+        /// Iterations taken.
+        iterations: usize,
+    },
 }
 
 impl std::fmt::Display for ArmError {
@@ -40,6 +57,18 @@ impl std::fmt::Display for ArmError {
             ArmError::NoLengths => {
                 f.write_str("the robot's profile has no link lengths: no positioning test on it")
             }
+            ArmError::NoPoses => f.write_str("zero test poses asked for: at least one is needed"),
+            ArmError::NotFinite { what } => write!(f, "{what} is not a finite number"),
+            ArmError::MissingJoint { joint } => {
+                write!(
+                    f,
+                    "the robot's profile has no joint {joint}: six are needed"
+                )
+            }
+            ArmError::BestNotConverged { iterations } => write!(
+                f,
+                "the best zero correction did not converge in {iterations} iterations"
+            ),
         }
     }
 }

@@ -263,9 +263,38 @@ impl RobotErrors {
         }
     }
 
+    /// Where each joint settles without backlash or scatter, at commanded `q_cmd_rad`
+    /// (the nominal model's angles the controller drives to) with `residual_offsets_rad`
+    /// (true − entered zero, per joint) left over: the angle `q + residual`, plus gravity
+    /// sag (compliance × gravity torque there) and the transmission error there. Backlash
+    /// sits at the middle of its play (0) and repeatability adds no scatter: the
+    /// deterministic robot of the TCP test ([`crate::tcp`]).
+    pub fn true_joints_rad(
+        &self,
+        arm: &Arm<f64>,
+        q_cmd_rad: &[f64; JOINTS],
+        residual_offsets_rad: &[f64; JOINTS],
+    ) -> [f64; JOINTS] {
+        let q: [f64; JOINTS] = core::array::from_fn(|k| q_cmd_rad[k] + residual_offsets_rad[k]);
+        self.settle(arm, &q).0
+    }
+
+    /// The angles at true angles `q_rad` after sag and transmission error, and the
+    /// gravity torques there (N·m), which also decide the side of the backlash.
+    fn settle(&self, arm: &Arm<f64>, q_rad: &[f64; JOINTS]) -> ([f64; JOINTS], [f64; JOINTS]) {
+        let tau = self.gravity_torques_nm(arm, q_rad);
+        let settled = core::array::from_fn(|k| {
+            q_rad[k]
+                + self.compliance_rad_per_nm[k] * tau[k]
+                + self.transmission_error_rad(k, q_rad[k])
+        });
+        (settled, tau)
+    }
+
     /// Where each joint really is, for a commanded pose reached with the given approach
     /// directions (+1: the joint arrived moving positive), its zero already applied
-    /// (`q_rad` = commanded + offset): sag, the side of the backlash, repeatability.
+    /// (`q_rad` = commanded + offset): sag and transmission error
+    /// ([`Self::true_joints_rad`]), then the side of the backlash and repeatability.
     pub fn deflect(
         &self,
         arm: &Arm<f64>,
@@ -273,9 +302,8 @@ impl RobotErrors {
         approach: &[i8; JOINTS],
         rng: &mut ChaCha8Rng,
     ) -> [f64; JOINTS] {
-        let tau = self.gravity_torques_nm(arm, q_rad);
+        let (settled, tau) = self.settle(arm, q_rad);
         core::array::from_fn(|k| {
-            let sag = self.compliance_rad_per_nm[k] * tau[k];
             // The output lags the motor by half the lost motion on the side it was
             // driven from, unless gravity pulls it across to its own side.
             let loaded = LOADED_JOINTS.contains(&k);
@@ -289,11 +317,7 @@ impl RobotErrors {
             };
             let backlash = 0.5 * self.lost_motion_rad[k] * side;
             let z: f64 = StandardNormal.sample(rng);
-            q_rad[k]
-                + sag
-                + backlash
-                + self.repeatability_rad * z
-                + self.transmission_error_rad(k, q_rad[k])
+            settled[k] + backlash + self.repeatability_rad * z
         })
     }
 }
