@@ -192,13 +192,15 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
             "{name:<20} beyond 3 sigma {:.2} % of {cases}; reported sigma / spread {ratio:.2?}",
             share * 100.0
         );
-        // σ comes from ~30 residual degrees of freedom (48 readings, 18 parameters):
+        // σ comes from ~25-30 residual degrees of freedom (48 readings, 18-24 parameters):
         // Student's t lies beyond 3 0.54 % of the time; over 1000 cases that is 5.4 ± 2.3,
         // and 1.5 % is 15.
         assert!(share <= 0.015, "{name}: {share}");
-        // 200 sessions estimate the spread to ±5 % (1σ); 25 % is the acceptance bound.
+        // 200 sessions estimate the spread to ±5 % (1σ); 25 % is the acceptance bound
+        // below, 30 % above: the misalignments the fit estimates carry a prior (their
+        // stated worst case), which the reported σ does not credit, so it errs high.
         for r in &ratio {
-            assert!((0.75..=1.25).contains(r), "{name}: {ratio:?}");
+            assert!((0.75..=1.30).contains(r), "{name}: {ratio:?}");
         }
     }
 }

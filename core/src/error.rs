@@ -199,7 +199,9 @@ impl fmt::Display for FitError {
             ),
             FitError::RankDeficient { params } => write!(
                 f,
-                "rank-deficient pose set: the zeros of {params} cannot be separated; vary those joints"
+                "rank-deficient pose set: the zeros of {params} cannot be separated; vary those \
+                 joints (a planned session's poses separate them: if these were planned, the \
+                 readings are not of this robot's profile)"
             ),
             FitError::IllConditioned {
                 condition_number,

@@ -92,23 +92,24 @@ fn a_warm_box_is_refused() {
     assert!(solve(&readings(&profile, &s, true), &fit).result.is_ok());
 }
 
-/// A flange bracket that seats anew within ±0.05° at every capture: the residuals give
-/// it away (0.010° RMS at ±0.03°, against at most 0.0034° over 800 tight sessions).
+/// A flange bracket that seats anew within ±0.1° at every capture: the two captures
+/// of a pose give it away (0.097° RMS apart, against at most 0.032° on a tight bracket
+/// of the FANUC as measured).
 #[test]
 fn a_loose_bracket_is_refused() {
     let profile = zerocal_profile::builtin("abb-irb140").unwrap();
     let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
     let world = WorldConfig {
-        loose_bracket_deg: 0.05,
+        loose_bracket_deg: 0.1,
         ..WorldConfig::real()
     };
     for seed in 1..=5 {
         let s = RealSession::simulate(&profile, &plan, &world, seed);
         match solve(&readings(&profile, &s, true), &fit).result {
-            Err(SessionError::Stage2(FitError::ResidualTooLarge { rms_deg, .. })) => {
-                assert!(rms_deg > 0.005, "{rms_deg}");
+            Err(SessionError::Stage2(FitError::CapturesDisagree { rms_deg, limit_deg, .. })) => {
+                assert!(rms_deg > limit_deg, "{rms_deg}");
             }
-            other => panic!("seed {seed}: {other:?}"),
+            other => panic!("seed {seed}: {:?}", other.map(|s| s.offsets_rad)),
         }
     }
 }

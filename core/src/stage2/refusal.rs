@@ -1,0 +1,75 @@
+//! The limits of the refusal rule ([`crate::session::judge`]), here beside the fit's
+//! other settings ([`super::FitConfig::refusal`]).
+
+/// The largest residual RMS a session is solved with (deg, the y readings weighted by
+/// their lower noise as the fit weighs them). With every error source on at the stated
+/// ranges the largest over the Monte-Carlo was 0.011°, on the FANUC as measured
+/// (transmission errors to 0.06° peak to peak) 0.022°.
+pub const MAX_RESIDUAL_RMS_DEG: f64 = 0.03;
+
+/// The largest RMS difference between the two captures of a pose on a tight bracket
+/// (deg, per reading): the wrist's lost motion, which the two approaches cross, and the
+/// noise. The Monte-Carlo's largest was 0.018° at the stated ranges and 0.032° on the
+/// FANUC as measured (0.03° of hysteresis); a bracket re-seating within ±0.1° gives
+/// 0.097°.
+pub const MAX_CAPTURE_DIFFERENCE_DEG: f64 = 0.05;
+
+/// A pose whose F ([`crate::session::judge::evidence`]) exceeds this (and whose shift exceeds
+/// [`OUTLIER_FLOOR_DEG`]) was not reached. Real arms reached F = 21 at most in the
+/// Monte-Carlo (their errors are smooth in the angles, so no single pose stands out);
+/// a pose where joint 5 stopped 0.5° short gave 290 and more.
+pub const OUTLIER_LIMIT: f64 = 60.0;
+
+/// A pose's shift below this (deg) is never called an outlier: on a quiet arm a small
+/// one can have a large F.
+pub const OUTLIER_FLOOR_DEG: f64 = 0.02;
+
+/// A step whose F ([`crate::session::judge::evidence`]) exceeds this (and whose size exceeds
+/// [`STEP_FLOOR_DEG`]) is a pendant that moved. Real arms reached F = 19 at most in the
+/// Monte-Carlo; a knock that turned the pendant 0.1° gave 445 and more.
+pub const STEP_LIMIT: f64 = 60.0;
+
+/// A step below this (deg) is never called a move.
+pub const STEP_FLOOR_DEG: f64 = 0.01;
+
+/// The limits of the rule (deg, or factors), by default those above.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RefusalRule {
+    /// [`MAX_CAPTURE_DIFFERENCE_DEG`].
+    pub max_capture_difference_deg: f64,
+    /// [`OUTLIER_LIMIT`].
+    pub outlier_limit: f64,
+    /// [`OUTLIER_FLOOR_DEG`].
+    pub outlier_floor_deg: f64,
+    /// [`STEP_LIMIT`].
+    pub step_limit: f64,
+    /// [`STEP_FLOOR_DEG`].
+    pub step_floor_deg: f64,
+}
+
+impl RefusalRule {
+    /// The rule as set by the Monte-Carlo.
+    pub const STANDARD: RefusalRule = RefusalRule {
+        max_capture_difference_deg: MAX_CAPTURE_DIFFERENCE_DEG,
+        outlier_limit: OUTLIER_LIMIT,
+        outlier_floor_deg: OUTLIER_FLOOR_DEG,
+        step_limit: STEP_LIMIT,
+        step_floor_deg: STEP_FLOOR_DEG,
+    };
+
+    /// No fault is looked for (a measurement of the evidence itself).
+    pub const OFF: RefusalRule = RefusalRule {
+        max_capture_difference_deg: f64::INFINITY,
+        outlier_limit: f64::INFINITY,
+        outlier_floor_deg: f64::INFINITY,
+        step_limit: f64::INFINITY,
+        step_floor_deg: f64::INFINITY,
+    };
+}
+
+impl Default for RefusalRule {
+    fn default() -> Self {
+        Self::STANDARD
+    }
+}
+

@@ -1,0 +1,108 @@
+//! The refusal rule names each fault far outside its range (core's `session::judge`):
+//! a pose the robot did not reach, a loose flange bracket, a pendant knocked
+//! mid-session, the wrong profile; on six profiles, every error source of a real arm
+//! on beside the fault.
+
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use zerocal_core::session::{solve, SessionError};
+use zerocal_core::error::FitError;
+use zerocal_sim::montecarlo::{setup, Method, DEFAULT_POSES};
+use zerocal_sim::robot::RobotSources;
+use zerocal_sim::world::{RealSession, SessionFault, WorldConfig};
+
+const PROFILES: [&str; 6] = [
+    "kuka-kr6-r900-sixx",
+    "abb-irb140",
+    "fanuc-m20ia",
+    "yaskawa-gp7",
+    "staubli-tx2-60",
+    "ur5e",
+];
+
+/// Sessions per profile and fault.
+const SESSIONS: u64 = 10;
+
+fn real_arm() -> WorldConfig {
+    WorldConfig {
+        robot: RobotSources::REAL_ARM,
+        ..WorldConfig::real()
+    }
+}
+
+/// Every session of `world` on every profile, solved with the profile `solve_as` gives
+/// (its own where `None`), is refused, and `named` accepts the refusal.
+fn refused_as(
+    world: &WorldConfig,
+    solve_as: impl Fn(&str) -> Option<&'static str>,
+    named: impl Fn(&FitError) -> bool,
+) {
+    for robot in PROFILES {
+        let profile = zerocal_profile::builtin(robot).unwrap();
+        let assumed = zerocal_profile::builtin(solve_as(robot).unwrap_or(robot)).unwrap();
+        let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+        for seed in 0..SESSIONS {
+            let session = RealSession::simulate(&profile, &plan, world, 500 + seed);
+            let mut readings = session.readings(&assumed, world);
+            readings.arm = assumed.arm;
+            readings.masses = assumed.mass_model();
+            match solve(&readings, &fit).result {
+                Err(SessionError::Stage2(e)) if named(&e) => {}
+                other => panic!("{robot} seed {seed}: {:?}", other.map(|s| s.offsets_rad)),
+            }
+        }
+    }
+}
+
+/// Joint 3 stopped 0.5° short of pose 10: that pose is named.
+#[test]
+fn a_pose_not_reached_is_named() {
+    let world = WorldConfig {
+        fault: SessionFault::UnreachedPose {
+            pose: 9,
+            joint: 3,
+            short_deg: 0.5,
+        },
+        ..real_arm()
+    };
+    refused_as(&world, |_| None, |e| {
+        matches!(e, FitError::PoseNotReached { pose: 9, .. })
+    });
+}
+
+/// A flange bracket that seats anew within ±0.1° at every capture.
+#[test]
+fn a_loose_bracket_is_named() {
+    let world = WorldConfig {
+        loose_bracket_deg: 0.1,
+        ..real_arm()
+    };
+    refused_as(&world, |_| None, |e| {
+        matches!(e, FitError::CapturesDisagree { .. })
+    });
+}
+
+/// The pendant turned 0.1° on the flange before pose 13: the move is named, within a
+/// pose of where it happened.
+#[test]
+fn a_knocked_pendant_is_named() {
+    let world = WorldConfig {
+        fault: SessionFault::Knocked { pose: 12, deg: 0.1 },
+        ..real_arm()
+    };
+    refused_as(&world, |_| None, |e| {
+        matches!(e, FitError::PendantMoved { from_pose, .. } if from_pose.abs_diff(12) <= 1)
+    });
+}
+
+/// A session solved with another robot's profile is refused with a message that names
+/// the profile.
+#[test]
+fn the_wrong_profile_is_named() {
+    refused_as(
+        &real_arm(),
+        |r| Some(if r == "abb-irb140" { "kuka-kr6-r900-sixx" } else { "abb-irb140" }),
+        |e| e.to_string().contains("profile"),
+    );
+}
