@@ -11,15 +11,16 @@
 //! - **Joint 3** turns until the torque about it vanishes: links 3-6 and the pendant
 //!   turn about its axis as one body (joints 4-6 held), so the torque is a sinusoid of
 //!   its angle with two zeros half a turn apart (centre of mass straight above or
-//!   below the axis); the nearest within the limits is found by bisection on the
-//!   torque's sign.
+//!   below the axis). The one above, nearest the stated angle within the limits, is
+//!   found by bisection on the torque's sign; the one below (the forearm hanging) is
+//!   torque-free too but is no candle, and is never taken.
 //! - **Joint 2**: with joints 2 and 3 parallel, the torque about joint 2 is link 2's
 //!   own plus the weight of everything beyond joint 3 acting at joint 3's axis plus
 //!   the torque about joint 3 (which then vanishes): it does not depend on joint 3's
 //!   angle. With the upper arm vertical and link 2's centre of mass on the line from
 //!   joint 2 to joint 3 (as the uniform mass model has it), both parts vanish at the
 //!   stated angle and joint 2 is kept; otherwise it turns to the nearest angle where
-//!   they cancel, again by bisection.
+//!   they cancel with the weight above joint 2, again by bisection.
 //! - **Joints 1, 4, 5, 6** stay as stated: joint 1's half turn does not change the
 //!   torques about the horizontal joints 2-3, and joint 3 alone balances links 3-6
 //!   whatever the wrist's angles. The wrist joints carry only the wrist and the pendant
@@ -62,8 +63,8 @@ pub enum Stage1PoseError {
     /// Joints 2 and 3 are not parallel: the torque about joint 2 then depends on
     /// joint 3's angle and this method does not apply.
     AxesNotParallel,
-    /// Gravity's torque about this joint (2 or 3) keeps one sign over its whole range:
-    /// no angle within its limits has the arm balanced on it.
+    /// No angle of this joint (2 or 3) within its limits has the weight it carries
+    /// balanced straight above it.
     NoBalanceWithinLimits {
         /// The joint, 2 or 3.
         joint: usize,
@@ -85,7 +86,7 @@ impl fmt::Display for Stage1PoseError {
             ),
             Stage1PoseError::NoBalanceWithinLimits { joint } => write!(
                 f,
-                "no angle of joint {joint} within its limits takes gravity's torque off joints 2 and 3"
+                "no angle of joint {joint} within its limits balances the arm's weight above it (no gravity torque on joints 2 and 3)"
             ),
         }
     }
@@ -159,10 +160,11 @@ pub fn unloaded_stage1_pose<T: Real>(
     Ok(pose)
 }
 
-/// The zero of `torque` nearest `start` within `(lo, hi)`: `start` itself where the
-/// torque is within `tolerance` there, else the nearest sign change bracketed by 5°
-/// steps outward and bisected to the type's resolution. `None`: no sign change in the
-/// range.
+/// The zero of `torque` nearest `start` within `(lo, hi)` with the weight above the
+/// joint: `start` itself where the torque is within `tolerance` there, else the nearest
+/// place where it rises through zero (τ = −dV/dθ rises where the potential energy
+/// peaks: the weight straight above), bracketed by 5° steps outward and bisected to the
+/// type's resolution. `None`: no such place in the range.
 fn nearest_zero<T: Real>(
     torque: impl Fn(T) -> T,
     start: T,
@@ -185,7 +187,7 @@ fn nearest_zero<T: Real>(
         if up_open {
             let next = (up.0 + step).min(hi);
             let f = torque(next);
-            if changes_sign(up.1, f) {
+            if rises(up.1, f) {
                 found = Some(bisect(&torque, up, (next, f)));
             }
             up = (next, f);
@@ -193,7 +195,7 @@ fn nearest_zero<T: Real>(
         if down_open {
             let next = (down.0 - step).max(lo);
             let f = torque(next);
-            if changes_sign(down.1, f) {
+            if rises(f, down.1) {
                 let zero = bisect(&torque, (next, f), down);
                 found = Some(match found {
                     Some(z) if (z - start).abs() <= (zero - start).abs() => z,
@@ -207,6 +209,12 @@ fn nearest_zero<T: Real>(
         }
     }
     None
+}
+
+/// Whether a continuous function with these values at the lower and the upper end of
+/// an interval rises through zero in it.
+fn rises<T: Real>(lower: T, upper: T) -> bool {
+    lower <= T::zero() && upper >= T::zero()
 }
 
 /// Whether a continuous function with these end values has a zero between them.
@@ -398,13 +406,25 @@ mod tests {
     fn limits_that_exclude_the_balance_are_refused() {
         let arm = offset_arm();
         let m = MassModel::uniform(&arm);
-        // The balance is at 59.3° (the test above): joint 3 kept within ±30° cannot
-        // reach it, nor the opposite one at −120.7°.
+        // The balance is at 58.77° (the test above): joint 3 kept within ±30° cannot
+        // reach it.
         let got = unloaded_stage1_pose(
             &arm,
             &m,
             &[0.0; JOINTS],
             &limits_deg((-90.0, 90.0), (-30.0, 30.0)),
+        );
+        assert_eq!(
+            got,
+            Err(Stage1PoseError::NoBalanceWithinLimits { joint: 3 })
+        );
+        // Half a turn away, at −121.23°, the forearm hangs below joint 3: torque-free
+        // too, inside these limits, and no stage-1 pose.
+        let got = unloaded_stage1_pose(
+            &arm,
+            &m,
+            &[0.0; JOINTS],
+            &limits_deg((-90.0, 90.0), (-180.0, 30.0)),
         );
         assert_eq!(
             got,
