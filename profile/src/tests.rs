@@ -106,8 +106,8 @@ fn fanuc_m20ia_leans_the_forearm_14_6_deg_off_the_geometric_candle() {
     // one converted back to the controller's terms.
     assert_eq!(shown[1], stated[1]);
     let back = p.model_rad(&shown);
-    for k in 0..JOINTS {
-        assert!((back[k] - p.stage1_joints_rad[k]).abs() < 1e-12);
+    for (b, q) in back.iter().zip(&p.stage1_joints_rad) {
+        assert!((b - q).abs() < 1e-12);
     }
 }
 
