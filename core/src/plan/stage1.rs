@@ -161,7 +161,8 @@ pub fn unloaded_stage1_pose<T: Real>(
 }
 
 /// The zero of `torque` nearest `start` within `(lo, hi)` with the weight above the
-/// joint: `start` itself where the torque is within `tolerance` there, else the nearest
+/// joint: `start` itself where the torque is within `tolerance` there (a stated pose
+/// already free of torque is kept, whichever balance it is), else the nearest
 /// place where it rises through zero (τ = −dV/dθ rises where the potential energy
 /// peaks: the weight straight above), bracketed by 5° steps outward and bisected to the
 /// type's resolution. `None`: no such place in the range.
