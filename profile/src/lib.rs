@@ -116,8 +116,13 @@ pub struct Profile {
     pub masses: Option<MassModel<f64>>,
     /// What the controller shows and takes.
     pub controller: Controller,
-    /// The stage-1 pose in the model's angles (rad).
+    /// The stage-1 pose in the model's angles (rad): the profile's `stage1.pose_deg`
+    /// turned to no gravity torque on joints 2 and 3 (`zerocal_core::plan::stage1`),
+    /// as the pendant, the program and every shown pose use it.
     pub stage1_joints_rad: [f64; JOINTS],
+    /// The profile's `stage1.pose_deg` in the model's angles (rad): where the search
+    /// for [`Self::stage1_joints_rad`] starts.
+    pub stage1_stated_rad: [f64; JOINTS],
 }
 
 /// What is wrong with a profile: the key and the reason.
@@ -491,17 +496,23 @@ impl Profile {
     /// default, `MassModel::uniform`: relative masses only, so no pendant in kilograms
     /// beside them). `None` for an arm without lengths.
     pub fn mass_model(&self) -> Option<MassModel<f64>> {
-        if let Some(m) = self.masses {
-            return Some(m.with_pendant(0.0));
-        }
-        let uniform = MassModel::uniform(&self.arm);
-        uniform
-            .link_kg
-            .iter()
-            .skip(2)
-            .any(|m| *m > 0.0)
-            .then_some(uniform)
+        mass_model_of(self.masses, &self.arm)
     }
+}
+
+/// The sources' masses, or links of uniform mass per metre; `None` when the links
+/// beyond joint 2 have no length (nothing for gravity to load).
+fn mass_model_of(masses: Option<MassModel<f64>>, arm: &Arm<f64>) -> Option<MassModel<f64>> {
+    if let Some(m) = masses {
+        return Some(m.with_pendant(0.0));
+    }
+    let uniform = MassModel::uniform(arm);
+    uniform
+        .link_kg
+        .iter()
+        .skip(2)
+        .any(|m| *m > 0.0)
+        .then_some(uniform)
 }
 
 #[cfg(test)]

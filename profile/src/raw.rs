@@ -8,6 +8,7 @@ use crate::{
 use serde::Deserialize;
 use std::collections::BTreeSet;
 use zerocal_core::model::JOINTS;
+use zerocal_core::plan::stage1::unloaded_stage1_pose;
 use zerocal_core::stage2::MassModel;
 
 #[derive(Deserialize)]
@@ -183,16 +184,17 @@ impl Profile {
         }
         let (joints, flange) = kinematics(&self)?;
         let controller = self.controller()?;
-        let stage1_joints_rad = controller.model_rad(&self.stage1.pose_deg);
+        let stated_rad = controller.model_rad(&self.stage1.pose_deg);
         let mut arm = zerocal_core::model::Arm {
             joints,
             flange,
             upper_arm_mount: nalgebra::Rotation3::identity(),
             flange_mount: flange_mount(&self.stage2.mount_z, &self.stage2.mount_x)?,
         };
-        check_stage1(&infos, &stage1_joints_rad)?;
-        arm.upper_arm_mount = upper_arm_mount(&arm, &stage1_joints_rad)?;
+        check_stage1(&infos, &stated_rad)?;
         let masses = self.masses();
+        let stage1_joints_rad = unloaded_stage1(&arm, masses, &infos, &stated_rad)?;
+        arm.upper_arm_mount = upper_arm_mount(&arm, &stage1_joints_rad)?;
         Ok(crate::Profile {
             name: self.name,
             title: self.title,
@@ -211,6 +213,7 @@ impl Profile {
             masses,
             controller,
             stage1_joints_rad,
+            stage1_stated_rad: stated_rad,
         })
     }
 
@@ -419,6 +422,31 @@ impl Profile {
             pendant_com_m: nalgebra::Vector3::zeros(),
         })
     }
+}
+
+/// The pose stage 1 stands at: the stated one (model angles) turned to no gravity
+/// torque on joints 2 and 3 (`zerocal_core::plan::stage1`), so that joint 2 is not
+/// pulled to one side of its play in the two captures; as stated for an arm without
+/// lengths (nothing to load it).
+fn unloaded_stage1(
+    arm: &zerocal_core::model::Arm<f64>,
+    masses: Option<MassModel<f64>>,
+    joints: &[JointInfo],
+    stated_rad: &[f64; JOINTS],
+) -> Result<[f64; JOINTS], ProfileError> {
+    let Some(masses) = crate::mass_model_of(masses, arm) else {
+        return Ok(*stated_rad);
+    };
+    let mut limits_rad = [(0.0, 0.0); JOINTS];
+    for (l, j) in limits_rad.iter_mut().zip(joints) {
+        *l = (j.min_deg.to_radians(), j.max_deg.to_radians());
+    }
+    unloaded_stage1_pose(arm, &masses, stated_rad, &limits_rad).map_err(|e| {
+        ProfileError::new(
+            "stage1.pose_deg",
+            format!("{e} (the stated pose is where the search for a pose free of gravity torque starts)"),
+        )
+    })
 }
 
 /// The stage-1 pose inside the limits, and joint 1's half turn too.

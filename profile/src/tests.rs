@@ -34,8 +34,97 @@ fn every_builtin_reads_and_levels_the_pendant_at_stage_1() {
     }
 }
 
+/// |τ| about joints 2 and 3 over their full-load torque at a pose.
+fn torque_fractions(p: &Profile, q: &[f64; JOINTS]) -> Option<[f64; 2]> {
+    let m = p.mass_model()?;
+    let tau = m.gravity_torques_nm(&p.arm, q);
+    let full = m.full_load_torques_nm(&p.arm, q);
+    Some([tau[1].abs() / full[1], tau[2].abs() / full[2]])
+}
+
 #[test]
-fn kuka_candle_stands_both_arms_up() {
+fn every_builtin_stage1_pose_has_no_gravity_torque_on_joints_2_and_3() {
+    for name in builtin_names() {
+        let p = builtin(name).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let (q, stated) = (p.stage1_joints_rad, p.stage1_stated_rad);
+        let Some(fractions) = torque_fractions(&p, &q) else {
+            // No lengths (the paper's arm): nothing for gravity to load, kept as stated.
+            assert_eq!(q, stated, "{name}");
+            continue;
+        };
+        // The search's promise: 1e-9 of the full load (it reaches rounding, ~1e-16).
+        for (j, f) in [2, 3].into_iter().zip(fractions) {
+            assert!(f < 1e-9, "{name}: joint {j} at {f:e} of its full load");
+        }
+        // Joints 1, 4, 5, 6 as stated; joint 2 too where the uniform mass model puts
+        // link 2's centre on the vertical upper arm (every profile without source
+        // masses states the upper arm vertical).
+        for k in [0, 3, 4, 5] {
+            assert_eq!(q[k], stated[k], "{name}: joint {}", k + 1);
+        }
+        if p.masses.is_none() {
+            assert_eq!(q[1], stated[1], "{name}: joint 2");
+        }
+        println!(
+            "{name:20} stated {:?} -> {:?} (controller deg)",
+            p.shown_deg(&stated).map(|d| (d * 1e4).round() / 1e4),
+            p.shown_deg(&q).map(|d| (d * 1e4).round() / 1e4)
+        );
+    }
+}
+
+#[test]
+fn fanuc_m20ia_leans_the_forearm_14_6_deg_off_the_geometric_candle() {
+    let p = builtin("fanuc-m20ia").unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        p.masses.is_none(),
+        "no source gives its masses: the uniform model"
+    );
+    // The profile states pendant J3 = 73.33, the line from J3 to the wrist centre
+    // vertical (0.835 m forward, 0.250 m up in J3's frame: atan(0.835 / 0.250)).
+    let stated = p.shown_deg(&p.stage1_stated_rad);
+    assert!((stated[2] - 73.33).abs() < 1e-9, "{stated:?}");
+    // Uniform mass per metre: link 3 (0.25) centred 0.125 up, link 4 (0.835) 0.4175
+    // forward and 0.25 up, link 5 (0.1) 0.885 forward and 0.25 up, link 6 none. Their
+    // centre stands above J3 where pendant J3 (the forearm's elevation, J2 = 0) is
+    // atan(x̄ / z̄).
+    let x = 0.835 * 0.4175 + 0.1 * 0.885;
+    let z = 0.25 * 0.125 + 0.835 * 0.25 + 0.1 * 0.25;
+    let balanced_deg = f64::atan2(x, z).to_degrees();
+    let shown = p.shown_deg(&p.stage1_joints_rad);
+    // Bisection to f64's resolution; 1e-9 deg is far above it.
+    assert!(
+        (shown[2] - balanced_deg).abs() < 1e-9,
+        "{} vs {balanced_deg}",
+        shown[2]
+    );
+    // 14.56 deg lower than the geometric candle: the 0.25 m offset puts the
+    // forearm's weight well behind the line to the wrist centre.
+    let change = shown[2] - stated[2];
+    assert!((change - (-14.556)).abs() < 1e-3, "{change}");
+    // The upper arm stays as stated (vertical), and the pose shown is the adjusted
+    // one converted back to the controller's terms.
+    assert_eq!(shown[1], stated[1]);
+    let back = p.model_rad(&shown);
+    for (b, q) in back.iter().zip(&p.stage1_joints_rad) {
+        assert!((b - q).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn a_stage1_pose_that_cannot_be_balanced_is_refused() {
+    // J3 kept at 70 deg or more: the balance at 58.77 is out of reach, and the one
+    // half a turn on (238.77, the forearm hanging) is no stage-1 pose.
+    let m20ia = include_str!("../../data/robots/fanuc-m20ia.toml");
+    let narrowed = m20ia.replacen("min_deg = -184.999993343", "min_deg = 70.0", 1);
+    assert_ne!(narrowed, m20ia);
+    let e = parse(&narrowed).err().unwrap_or_else(|| panic!("accepted"));
+    assert_eq!(e.key, "stage1.pose_deg", "{e}");
+    assert!(e.reason.contains("joint 3"), "{e}");
+}
+
+#[test]
+fn kuka_stage1_stands_the_upper_arm_up() {
     let p = builtin("kuka-kr6-r900-sixx").unwrap_or_else(|e| panic!("{e}"));
     let (frames, _) = p.arm.frames(&p.stage1_joints_rad);
     let upper = frames[2].translation_m - frames[1].translation_m;
@@ -45,10 +134,16 @@ fn kuka_candle_stands_both_arms_up() {
         "{upper:?}"
     );
     assert!((upper.norm() - 0.455).abs() < 1e-12);
-    let wrist = frames[4].translation_m - frames[2].translation_m;
-    // A3 = 4.76 puts the line to the wrist centre vertical (to the profile's 0.01°).
+    // The stated A3 = 4.76 stands the line to the wrist centre vertical (to the
+    // profile's 0.01°); the forearm's weight is not on that line, so A3 turns off it.
+    let (stated_frames, _) = p.arm.frames(&p.stage1_stated_rad);
+    let wrist = stated_frames[4].translation_m - stated_frames[2].translation_m;
     let lean = (wrist.xy().norm() / wrist.norm()).asin().to_degrees();
     assert!(lean < 0.01, "{lean}");
+    let turned = (p.stage1_joints_rad[2] - p.stage1_stated_rad[2])
+        .to_degrees()
+        .abs();
+    assert!(turned > 1.0, "{turned}");
 }
 
 #[test]

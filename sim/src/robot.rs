@@ -255,10 +255,10 @@ impl RobotErrors {
     }
 
     /// The gravity torque about each joint's axis at true angles `q_rad` (N·m), the
-    /// base level: `Σᵢ≥ₖ mᵢ·g·aₖ·((cᵢ − pₖ) × −ẑ)`.
+    /// base level: [`MassModel::gravity_torques_nm`] of these masses; zero without.
     pub fn gravity_torques_nm(&self, arm: &Arm<f64>, q_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
         match &self.masses {
-            Some(m) => gravity_torques(arm, m, q_rad),
+            Some(m) => m.gravity_torques_nm(arm, q_rad),
             None => [0.0; JOINTS],
         }
     }
@@ -328,32 +328,6 @@ impl RobotErrors {
 /// threshold).
 const LOADED_JOINTS: [usize; 2] = [1, 2];
 
-/// Gravity torques (N·m) about each joint at `q_rad`, base level.
-pub fn gravity_torques(arm: &Arm<f64>, m: &MassModel<f64>, q_rad: &[f64; JOINTS]) -> [f64; JOINTS] {
-    const G: f64 = 9.81;
-    let (frames, flange) = arm.frames(q_rad);
-    let down = -Vector3::z() * G;
-    let mut points = [(0.0, Vector3::zeros()); JOINTS + 1];
-    for i in 0..JOINTS {
-        points[i] = (
-            m.link_kg[i],
-            frames[i].translation_m + frames[i].rotation * m.com_m[i],
-        );
-    }
-    points[JOINTS] = (
-        m.pendant_kg,
-        flange.translation_m + flange.rotation * m.pendant_com_m,
-    );
-    core::array::from_fn(|k| {
-        let axis = frames[k].rotation * arm.joints[k].axis.unit::<f64>();
-        points
-            .iter()
-            .skip(k)
-            .map(|(kg, c)| kg * axis.dot(&(c - frames[k].translation_m).cross(&down)))
-            .sum()
-    })
-}
-
 /// The largest |torque| of each joint over a grid of joints 2 and 3 in their limits
 /// (the others at zero: the loaded joints' worst case is the arm stretched out).
 fn full_torques(
@@ -369,7 +343,7 @@ fn full_torques(
             let at = |(lo, hi): (f64, f64), i: usize| lo + (hi - lo) * i as f64 / steps as f64;
             q[1] = at(limits_rad[1], a);
             q[2] = at(limits_rad[2], b);
-            for (w, t) in worst.iter_mut().zip(gravity_torques(arm, m, &q)) {
+            for (w, t) in worst.iter_mut().zip(m.gravity_torques_nm(arm, &q)) {
                 *w = w.max(t.abs());
             }
         }
@@ -443,7 +417,7 @@ fn wrist_full_torques(
                 q[2] = at(limits_rad[2], a);
                 q[3] = at(limits_rad[3], b);
                 q[4] = at(limits_rad[4], c);
-                for (w, t) in worst.iter_mut().zip(gravity_torques(arm, m, &q)) {
+                for (w, t) in worst.iter_mut().zip(m.gravity_torques_nm(arm, &q)) {
                     *w = w.max(t.abs());
                 }
             }

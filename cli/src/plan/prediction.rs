@@ -43,7 +43,7 @@ pub struct Correlations {
 }
 
 /// What [`predicted_k2_deg`] includes (printed beside the figures).
-pub const PREDICTED_FROM: &str = "the session's budget predicted before the robot moves (core's predict_budget): stages 0-1 handed over, the plan's readings with the sensor's noise, the cost of estimating the sensor's gain and cross-axis, the sag and the flange bracket's tilt, and the robot's repeatability (0.0015 deg per joint); not the brackets' seats";
+pub const PREDICTED_FROM: &str = "the session's budget predicted before the robot moves (core's predict_budget): stages 0-1 handed over, the plan's readings with the sensor's noise, the cost of estimating the sensor's gain and cross-axis, the sag and the flange bracket's tilt, the robot's repeatability (0.0015 deg per joint) and the gears' lost motion (1 arc min: joint 3 held on gravity's side, joint 2 free within its play at stage 1); not the brackets' seats";
 
 /// The predicted k = 2 uncertainty of Δθ2..Δθ6 (deg) of a session on `profile` with
 /// the stage-2 poses `poses_rad` (model angles), per-reading noise 1σ

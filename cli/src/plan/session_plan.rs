@@ -339,12 +339,12 @@ mod tests {
     #[test]
     fn target_search_finds_the_fewest_poses() {
         let profile = crate::robot::load("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));
-        let a = args(&["--robot", "kuka-kr16", "--target-k2-deg", "0.024"]);
+        let a = args(&["--robot", "kuka-kr16", "--target-k2-deg", "0.03"]);
         let floor = fewest_poses(&a.fit_config(&profile));
         assert!(floor > MIN_POSES, "{floor}");
         let sp = make_plan(&a).unwrap_or_else(|e| panic!("{e}"));
         let n = sp.plan.poses_rad.len();
-        assert!(sp.k2_deg.iter().all(|u| *u <= 0.024), "{:?}", sp.k2_deg);
+        assert!(sp.k2_deg.iter().all(|u| *u <= 0.03), "{:?}", sp.k2_deg);
         assert!(n >= floor, "{n} < {floor}");
         for fewer in floor..n {
             if let Ok((_, p)) = plan_n(&a, &profile, fewer) {
@@ -357,13 +357,18 @@ mod tests {
                 )
                 .unwrap_or_else(|e| panic!("{e}"));
                 assert!(
-                    k2.iter().any(|u| *u > 0.024),
+                    k2.iter().any(|u| *u > 0.03),
                     "{fewer} poses reach it: {k2:?}"
                 );
             }
         }
-        let e =
-            make_plan(&args(&["--robot", "kuka-kr16", "--target-k2-deg", "0.001"])).unwrap_err();
+        let e = make_plan(&args(&[
+            "--robot",
+            "kuka-kr16",
+            "--target-k2-deg",
+            "0.0098",
+        ]))
+        .unwrap_err();
         assert_eq!(e.exit_code(), 3);
         assert!(
             e.to_string().contains("j2") && e.to_string().contains("stage 1"),

@@ -429,61 +429,61 @@ CONTROL_CODE	= 00000000 00000000;
 P[1]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=    73.330 deg,
+	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=    58.774 deg,
 	J4=     0.000 deg,	J5=     0.000 deg,	J6=     0.000 deg
 };
 P[2]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=    72.330 deg,
+	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=    57.774 deg,
 	J4=    -1.000 deg,	J5=    -1.000 deg,	J6=    -1.000 deg
 };
 P[3]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    73.330 deg,
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    58.774 deg,
 	J4=     0.000 deg,	J5=     0.000 deg,	J6=     0.000 deg
 };
 P[4]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    77.330 deg,
+	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    62.774 deg,
 	J4=     4.000 deg,	J5=     4.000 deg,	J6=     4.000 deg
 };
 P[5]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    73.330 deg,
+	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    58.774 deg,
 	J4=     0.000 deg,	J5=     0.000 deg,	J6=     0.000 deg
 };
 P[6]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=    89.000 deg,	J2=     0.000 deg,	J3=    73.330 deg,
+	J1=    89.000 deg,	J2=     0.000 deg,	J3=    58.774 deg,
 	J4=     0.000 deg,	J5=     0.000 deg,	J6=     0.000 deg
 };
 P[7]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=    89.000 deg,	J2=    -1.000 deg,	J3=    72.330 deg,
+	J1=    89.000 deg,	J2=    -1.000 deg,	J3=    57.774 deg,
 	J4=    -1.000 deg,	J5=    -1.000 deg,	J6=    -1.000 deg
 };
 P[8]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=    90.000 deg,	J2=     0.000 deg,	J3=    73.330 deg,
+	J1=    90.000 deg,	J2=     0.000 deg,	J3=    58.774 deg,
 	J4=     0.000 deg,	J5=     0.000 deg,	J6=     0.000 deg
 };
 P[9]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=    94.000 deg,	J2=     4.000 deg,	J3=    77.330 deg,
+	J1=    94.000 deg,	J2=     4.000 deg,	J3=    62.774 deg,
 	J4=     4.000 deg,	J5=     4.000 deg,	J6=     4.000 deg
 };
 P[10]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=    90.000 deg,	J2=     0.000 deg,	J3=    73.330 deg,
+	J1=    90.000 deg,	J2=     0.000 deg,	J3=    58.774 deg,
 	J4=     0.000 deg,	J5=     0.000 deg,	J6=     0.000 deg
 };
 P[11]{

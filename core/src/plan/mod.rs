@@ -27,9 +27,13 @@
 //! No heap: the candidate pool is a buffer the caller provides (`&mut [Candidate<T>]`,
 //! 56 bytes per candidate in `f32`, so 256 candidates are 14 KiB of the pendant's RAM),
 //! the plan is a `heapless::Vec` of at most [`MAX_POSES`].
+//!
+//! The stage-1 pose is planned too: [`stage1`] turns the profile's stated pose into the
+//! nearest one with no gravity torque on joints 2 and 3.
 
 mod design;
 mod random;
+pub mod stage1;
 
 pub use design::Candidate;
 pub use random::Xorshift64Star;

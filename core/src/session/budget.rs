@@ -9,10 +9,12 @@
 //!   with the offsets alone, and what estimating each extra group costs on top (the
 //!   sensor's gain and cross-axis, the sag, the flange bracket's tilt), added in that
 //!   order: each group's term is the growth of the variance when it joins the fit.
-//! - **Type B**, from stated tolerances: the brackets' seats (a turn of the upper-arm
-//!   bracket about joint 2 is Δθ2's, and Δθ3 takes it back with the opposite sign; a
-//!   turn of the flange bracket about joint 6's axis is Δθ6's), uniform within the
-//!   tolerance the user states.
+//! - **Type B**, from stated tolerances: the robot's repeatability and the gears' lost
+//!   motion (joint 3 held on gravity's side in stage 2; joint 2 free within its play at
+//!   the unloaded stage-1 pose), propagated; the brackets' seats (a turn of the
+//!   upper-arm bracket about joint 2 is Δθ2's, and Δθ3 takes it back with the opposite
+//!   sign; a turn of the flange bracket about joint 6's axis is Δθ6's), uniform within
+//!   the tolerance the user states.
 //!
 //! The coverage of `2·u_c` is checked by Monte-Carlo over whole simulated sessions
 //! with every error source on (host-tests, `budget_covers_the_error`).
@@ -55,6 +57,9 @@ pub enum BudgetTerm {
     /// Joint 3's backlash where gravity holds it on one side whatever the approach
     /// (Type B, the stated lost motion, propagated).
     LoadedBacklash,
+    /// Joint 2 at the stage-1 pose, which has no gravity torque on it: where within its
+    /// play it rests (Type B, the stated lost motion).
+    Stage1Backlash,
     /// The brackets' seats (Type B, the stated tolerance).
     Mounting,
     /// The sensor's x offset when no stage-0 reversal measured it (Type B: the
@@ -75,6 +80,7 @@ impl BudgetTerm {
         BudgetTerm::Transmission,
         BudgetTerm::Repeatability,
         BudgetTerm::LoadedBacklash,
+        BudgetTerm::Stage1Backlash,
         BudgetTerm::Mounting,
         BudgetTerm::UnknownSensorOffset,
     ];
@@ -92,14 +98,21 @@ impl BudgetTerm {
             BudgetTerm::Transmission => "transmission error (averaged into the zero)",
             BudgetTerm::Repeatability => "robot repeatability (stated, propagated)",
             BudgetTerm::LoadedBacklash => "joint 3 backlash under gravity (stated)",
+            BudgetTerm::Stage1Backlash => "joint 2 at stage 1 (backlash side)",
             BudgetTerm::Mounting => "bracket seats (stated tolerance)",
             BudgetTerm::UnknownSensorOffset => "sensor offset, no stage 0 (specification)",
         }
     }
+
+    /// Its row in [`Budget::terms_rad`]: its place in [`Self::ALL`] (the enum is
+    /// declared in that order; a test holds the two together).
+    pub const fn index(self) -> usize {
+        self as usize
+    }
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 12;
+pub const BUDGET_TERMS: usize = 13;
 
 /// The SCL3300's offset specification on X (g, ±), the chip crate's
 /// [`zerocal_scl3300::spec::OFFSET_X_SPEC_G`]. X is the axis stage 0 measures and stage 1
@@ -136,7 +149,8 @@ pub struct BudgetInputs<T> {
     pub repeatability_rad: T,
     /// The gears' lost motion (rad): joint 3, loaded by the arm, may sit on gravity's
     /// side of it whatever the approach, so averaging both approaches does not cancel it
-    /// there; taken uniform within ±half of it at every pose.
+    /// there; taken uniform within ±half of it at every pose. Joint 2, unloaded at the
+    /// stage-1 pose, may rest anywhere within it there.
     pub lost_motion_rad: T,
 }
 
@@ -166,7 +180,7 @@ pub fn budget<T: Real>(
     let mut terms = [[T::zero(); SESSION_JOINTS]; BUDGET_TERMS];
     let shares = &solution.variance_shares_rad2;
     for k in 0..SESSION_JOINTS {
-        terms[BudgetTerm::Handover as usize][k] = (shares[k][0] + shares[k][1]).max(T::zero()).sqrt();
+        terms[BudgetTerm::Handover.index()][k] = (shares[k][0] + shares[k][1]).max(T::zero()).sqrt();
     }
 
     // Stage 2's variance, growing as the extra groups join the fit.
@@ -216,7 +230,7 @@ pub fn budget<T: Real>(
             };
         for k in 0..WRIST_JOINTS {
             let grown = (variance[k] - previous[k]).max(T::zero());
-            terms[BudgetTerm::Readings as usize + step][k + 1] = grown.sqrt();
+            terms[BudgetTerm::Readings.index() + step][k + 1] = grown.sqrt();
         }
         previous = variance;
     }
@@ -229,7 +243,7 @@ pub fn budget<T: Real>(
     let rep2 = inputs.repeatability_rad * inputs.repeatability_rad;
     let stage1_part = rep2 / (T::lit(2.0) * per_row);
     let inherited_by_j3 = rep2 / per_row;
-    let repeatability = BudgetTerm::Repeatability as usize;
+    let repeatability = BudgetTerm::Repeatability.index();
     terms[repeatability][0] = stage1_part.sqrt();
     let rep = crate::stage2::repeatability_covariance(
         &solution.model,
@@ -252,22 +266,35 @@ pub fn budget<T: Real>(
     let backlash =
         crate::stage2::joint_error_covariance(&solution.model, extras, poses, &offsets, &loaded);
     for k in 0..WRIST_JOINTS {
-        terms[BudgetTerm::LoadedBacklash as usize][k + 1] = backlash
+        terms[BudgetTerm::LoadedBacklash.index()][k + 1] = backlash
             .map_or(T::zero(), |c| c[k][k])
             .max(T::zero())
             .sqrt();
     }
 
+    // Joint 2 at stage 1: the stage-1 pose has no gravity torque on joints 2 and 3
+    // (`crate::plan::stage1`), so nothing presses joint 2 against either flank of its
+    // play, and the approaches from both sides need not cancel: it may rest anywhere
+    // within ±half the lost motion (uniform, u = half/√3; a stated model), taken alike
+    // in the captures before and after the half turn (the worst case: a difference
+    // would go to α at half size, not to Δθ2). Δθ2 takes it whole; Δθ3, which
+    // inherits joint 2's angle (as with repeatability above), takes it back with the
+    // opposite sign.
+    let u_side = half / T::lit(3.0).sqrt();
+    let side = BudgetTerm::Stage1Backlash.index();
+    terms[side][0] = u_side;
+    terms[side][1] = u_side;
+
     // Bracket seats: uniform within ±t, u = t/√3.
     let u_mount = inputs.mount_tolerance_rad.abs() / T::lit(3.0).sqrt();
-    let mounting = BudgetTerm::Mounting as usize;
+    let mounting = BudgetTerm::Mounting.index();
     terms[mounting][0] = u_mount;
     terms[mounting][1] = u_mount;
     terms[mounting][SESSION_JOINTS - 1] = u_mount;
 
     // The geometry the poses could not separate, at its stated worst case.
     for k in 0..WRIST_JOINTS {
-        terms[BudgetTerm::UnfittedGeometry as usize][k + 1] = solution.fit.unfitted_rad[k];
+        terms[BudgetTerm::UnfittedGeometry.index()][k + 1] = solution.fit.unfitted_rad[k];
     }
 
     // Transmission error: the stated bound, or what the residuals show beyond the
@@ -283,7 +310,7 @@ pub fn budget<T: Real>(
     let half_pp = |deg: f64| crate::real::deg_to_rad(T::lit(deg * 0.5));
     let amplitude = half_pp(TRANSMISSION_PP_MAX_DEG).max(from_residuals);
     let once = half_pp(ONCE_PER_TURN_PP_MAX_DEG);
-    let transmission = BudgetTerm::Transmission as usize;
+    let transmission = BudgetTerm::Transmission.index();
     // Joint 2 stands at one angle in stages 1 and 2: Δθ2 holds its error there whole
     // (a harmonic of unknown phase: a/√2).
     terms[transmission][0] = amplitude / T::lit(2.0).sqrt();
@@ -318,10 +345,7 @@ impl<T: Real> Budget<T> {
     /// [`super::unknown_offset_half_width`]); the offset uniform within it, u = w/√3 (GUM
     /// 4.3.7). Combined and expanded are recomputed.
     pub fn add_unknown_sensor_offset(&mut self, half_width_rad: &[T; SESSION_JOINTS]) {
-        let term = BudgetTerm::ALL
-            .iter()
-            .position(|t| *t == BudgetTerm::UnknownSensorOffset)
-            .unwrap_or(BUDGET_TERMS - 1);
+        let term = BudgetTerm::UnknownSensorOffset.index();
         for k in 0..SESSION_JOINTS {
             self.terms_rad[term][k] = half_width_rad[k].abs() / T::lit(3.0).sqrt();
         }
@@ -453,4 +477,76 @@ pub fn predict_budget<T: Real>(
     };
     let solution = super::solve(&readings, &config).result?;
     Ok(budget(&solution, &captures, inputs))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{Arm, Convention};
+    use crate::plan::{plan, Candidate, PlanConfig, DEFAULT_POOL};
+    use crate::stage2::{FitConfig, Stage2Model};
+
+    #[test]
+    fn every_term_sits_at_its_index_with_its_own_name() {
+        for (i, t) in BudgetTerm::ALL.iter().enumerate() {
+            assert_eq!(t.index(), i, "{t:?}");
+            for u in &BudgetTerm::ALL[..i] {
+                assert_ne!(t.name(), u.name());
+            }
+        }
+    }
+
+    /// The paper's arm at its planned poses, its budget predicted with the stated
+    /// lost motion and nothing else of Type B.
+    fn paper_budget(lost_motion_rad: f64) -> Budget<f64> {
+        let model = Stage2Model::<f64>::default();
+        let config = PlanConfig::default();
+        let mut pool = std::vec![Candidate::default(); DEFAULT_POOL];
+        let p = plan(&model, &config, &mut pool).unwrap_or_else(|e| panic!("{e}"));
+        let robot = PlannedRobot {
+            arm: Arm::paper(),
+            masses: None,
+            convention: Convention::default(),
+            stage1_joints_rad: [0.0; JOINTS],
+        };
+        let fit = FitConfig::<f64>::default();
+        predict_budget(
+            &robot,
+            &p.poses_rad,
+            2,
+            &fit,
+            &BudgetInputs {
+                extras: fit.extras,
+                mount_tolerance_rad: 0.0,
+                repeatability_rad: 0.0,
+                lost_motion_rad,
+            },
+        )
+        .unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn joint_2_free_in_its_play_at_stage_1_is_half_the_lost_motion_over_root_3() {
+        let lost_rad = DEFAULT_LOST_MOTION_DEG.to_radians();
+        let with = paper_budget(lost_rad);
+        let row = with.terms_rad[BudgetTerm::Stage1Backlash.index()];
+        // 1 arc min of lost motion: joint 2 anywhere within ±0.5 arc min, uniform:
+        // u = 0.5/60° / √3 = 0.00481°, on Δθ2 and (taken back) on Δθ3, nowhere else.
+        let u_rad = 0.5 * lost_rad / 3f64.sqrt();
+        assert!((u_rad.to_degrees() - 0.004_811).abs() < 1e-6);
+        assert_eq!(row, [u_rad, u_rad, 0.0, 0.0, 0.0]);
+        // It adds its square to Δθ2's variance and nothing else does: without lost
+        // motion the rest of Δθ2's budget is the same (to rounding).
+        let without = paper_budget(0.0);
+        assert_eq!(
+            without.terms_rad[BudgetTerm::Stage1Backlash.index()],
+            [0.0; SESSION_JOINTS]
+        );
+        let grown = with.combined_rad[0].powi(2) - without.combined_rad[0].powi(2);
+        assert!(
+            (grown - u_rad * u_rad).abs() < 1e-12 * u_rad * u_rad,
+            "{grown} vs {}",
+            u_rad * u_rad
+        );
+    }
 }

@@ -119,6 +119,63 @@ impl<T: Real> MassModel<T> {
         self.pendant_com_m = Vector3::new(T::zero(), T::zero(), T::lit(PENDANT_COM_M));
         self
     }
+
+    /// The gravity torque about each joint's axis at true joint angles `q_rad` (N·m
+    /// with `link_kg` in kg), the base level: `Σᵢ≥ₖ mᵢ·g·aₖ·((cᵢ − pₖ) × −ẑ)` over the
+    /// links after joint k and the pendant.
+    pub fn gravity_torques_nm(&self, arm: &Arm<T>, q_rad: &[T; JOINTS]) -> [T; JOINTS] {
+        let (frames, points) = self.mass_points(arm, q_rad);
+        let down = -Vector3::z() * T::lit(GRAVITY_M_S2);
+        core::array::from_fn(|k| {
+            let axis = frames[k].rotation * arm.joints[k].axis.unit::<T>();
+            points.iter().skip(k).fold(T::zero(), |sum, (kg, c)| {
+                sum + *kg * axis.dot(&(c - frames[k].translation_m).cross(&down))
+            })
+        })
+    }
+
+    /// The full-load torque about each joint at `q_rad` (N·m): what
+    /// [`Self::gravity_torques_nm`] would be with every mass after the joint at its
+    /// present distance from the axis, all on the same horizontal side of it
+    /// `Σᵢ≥ₖ mᵢ·g·|(cᵢ − pₖ)⊥aₖ|`. No pose of these links gives more: the scale a
+    /// torque is small against.
+    pub fn full_load_torques_nm(&self, arm: &Arm<T>, q_rad: &[T; JOINTS]) -> [T; JOINTS] {
+        let (frames, points) = self.mass_points(arm, q_rad);
+        let g = T::lit(GRAVITY_M_S2);
+        core::array::from_fn(|k| {
+            let axis = frames[k].rotation * arm.joints[k].axis.unit::<T>();
+            points.iter().skip(k).fold(T::zero(), |sum, (kg, c)| {
+                let r = c - frames[k].translation_m;
+                sum + *kg * g * (r - axis * axis.dot(&r)).norm()
+            })
+        })
+    }
+
+    /// The joints' frames at `q_rad` and each link's mass with its centre of mass in
+    /// the base frame, the pendant last.
+    #[allow(clippy::type_complexity)]
+    fn mass_points(
+        &self,
+        arm: &Arm<T>,
+        q_rad: &[T; JOINTS],
+    ) -> (
+        [crate::model::Placement<T>; JOINTS],
+        [(T, Vector3<T>); JOINTS + 1],
+    ) {
+        let (frames, flange) = arm.frames(q_rad);
+        let mut points = [(T::zero(), Vector3::zeros()); JOINTS + 1];
+        for i in 0..JOINTS {
+            points[i] = (
+                self.link_kg[i],
+                frames[i].translation_m + frames[i].rotation * self.com_m[i],
+            );
+        }
+        points[JOINTS] = (
+            self.pendant_kg,
+            flange.translation_m + flange.rotation * self.pendant_com_m,
+        );
+        (frames, points)
+    }
 }
 
 /// `J_r(v)·d` for SO(3)'s right Jacobian `J_r(v) = I − a·[v]× + b·[v]×²`, with
@@ -138,6 +195,11 @@ pub const PENDANT_KG: f64 = 0.25;
 /// How far out along the flange's normal the pendant's centre of mass hangs (m): the
 /// pendant's own design figure.
 pub const PENDANT_COM_M: f64 = 0.05;
+
+/// The acceleration of gravity the torques use (m/s²). Only ratios of torques enter
+/// zerocal's results (a compliance fitted or drawn against the full-load torque, a
+/// torque against its full load), so its exact local value scales out.
+const GRAVITY_M_S2: f64 = 9.81;
 
 /// Everything about the robot and the sensor that stage 2 does not estimate.
 #[derive(Clone, Copy, Debug, PartialEq)]
