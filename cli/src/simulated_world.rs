@@ -42,11 +42,19 @@ pub enum Source {
     Backlash,
     /// Repeatability (0.0015° per joint, 1σ).
     Repeatability,
+    /// Joint axes off the drawing's (0.01-0.05° per perpendicular pair, 0.01-0.5° per
+    /// parallel pair).
+    Misalignment,
+    /// Transmission error (0.005-0.03° peak to peak per joint, and once per turn
+    /// 0.005-0.025° on joints 4 and 6).
+    Transmission,
+    /// Joints 4-6 giving under the wrist's load (0.01-0.03° at full lever).
+    WristCompliance,
 }
 
 impl Source {
     /// Every source, in table order.
-    pub const ALL: [Source; 11] = [
+    pub const ALL: [Source; 14] = [
         Source::Noise,
         Source::Quantisation,
         Source::Sensitivity,
@@ -58,6 +66,9 @@ impl Source {
         Source::Sag,
         Source::Backlash,
         Source::Repeatability,
+        Source::Misalignment,
+        Source::Transmission,
+        Source::WristCompliance,
     ];
 
     /// What the table calls it.
@@ -74,6 +85,9 @@ impl Source {
             Source::Sag => "gravity sag of joints 2-3, 0.01-0.02 deg at full lever",
             Source::Backlash => "backlash, lost motion up to 1 arc min",
             Source::Repeatability => "robot repeatability 0.0015 deg per joint",
+            Source::Misalignment => "axis misalignment 0.01-0.05 (parallel 0.5) deg",
+            Source::Transmission => "transmission error 0.005-0.03 deg p-p",
+            Source::WristCompliance => "wrist compliance 0.01-0.03 deg at full lever",
         }
     }
 }
@@ -95,7 +109,9 @@ pub fn world_with(on: Option<&[Source]>) -> WorldConfig {
         sag: has(Source::Sag),
         backlash: has(Source::Backlash),
         repeatability: has(Source::Repeatability),
-        ..RobotSources::ALL
+        misalignment: has(Source::Misalignment),
+        transmission: has(Source::Transmission),
+        wrist_compliance: has(Source::WristCompliance),
     };
     if !has(Source::Warming) {
         w.warming_k = 0.0;
@@ -270,6 +286,9 @@ fn source_on(world: &WorldConfig, s: Source) -> bool {
         Source::Sag => world.robot.sag,
         Source::Backlash => world.robot.backlash,
         Source::Repeatability => world.robot.repeatability,
+        Source::Misalignment => world.robot.misalignment,
+        Source::Transmission => world.robot.transmission,
+        Source::WristCompliance => world.robot.wrist_compliance,
     }
 }
 
@@ -303,7 +322,7 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "worst error over j2-j6 and {} sessions per row (deg); `after`: 95th percentile of each session's worst joint, its worst, and sessions with every joint within 0.005 deg",
+        "worst error over j2-j6 and {} sessions per row (deg); `after`: 95th percentile of each session's worst joint, its worst, and sessions with every joint within 0.005 deg; `k=2 cov`: the least share over j2-j6 of sessions whose error the k = 2 budget covers; `TCP/best`: mean TCP error (200 poses, 0.1 m tool) after entering the offsets over the best zero-only correction's (a joint gravity cannot tell from its parallel twin is judged by their sum)",
         args.sessions
     );
     for name in &args.robot {
@@ -311,35 +330,52 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
         let _ = writeln!(out, "\n{} ({})", profile.name, profile.title);
         let _ = writeln!(
             out,
-            "{:<58} {:>10} {:>10} {:>10} {:>8} {:>8}",
-            "error source switched on", "before", "after p95", "after max", "<=0.005", "refused"
+            "{:<58} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7} {:>9}",
+            "error source switched on",
+            "before",
+            "after p95",
+            "after max",
+            "<=0.005",
+            "refused",
+            "k=2 cov",
+            "TCP/best"
         );
-        let mut rows: Vec<(String, Option<Vec<Source>>)> = vec![(
+        let mut rows: Vec<(String, WorldConfig, bool)> = vec![(
             "none (noise and quantisation only)".to_owned(),
-            Some(vec![Source::Noise, Source::Quantisation]),
+            world_with(Some(&[Source::Noise, Source::Quantisation])),
+            false,
         )];
         for s in Source::ALL.iter().skip(2) {
-            rows.push((
-                s.label().to_owned(),
-                Some(vec![Source::Noise, Source::Quantisation, *s]),
-            ));
-        }
-        rows.push(("all together".to_owned(), None));
-        for (label, on) in rows {
-            let mut world = world_with(on.as_deref());
-            if on
-                .as_ref()
-                .is_some_and(|l| l.contains(&Source::Drift) && !l.contains(&Source::Warming))
-            {
+            let mut world = world_with(Some(&[Source::Noise, Source::Quantisation, *s]));
+            if *s == Source::Drift {
                 world.warming_k = 0.0;
             }
+            rows.push((s.label().to_owned(), world, false));
+        }
+        rows.push(("all together".to_owned(), world_with(None), true));
+        rows.push((
+            "all together, the FANUC R-2000iC as a tracker measured it".to_owned(),
+            WorldConfig::fanuc_as_measured(),
+            true,
+        ));
+        for (label, world, with_tcp) in rows {
             let mut cells = Vec::new();
             let mut refusals: Vec<String> = Vec::new();
+            let mut compensated = Vec::new();
             for method in [Method::Uncompensated, Method::Compensated] {
                 let (plan, fit) = montecarlo::setup(&profile, method, args.poses)
                     .map_err(|e| CliError::Refused(format!("{name}: plan: {e}")))?;
                 let w = montecarlo::world_for(method, world);
-                let outcomes = montecarlo::run(&profile, &plan, &w, &fit, args.sessions, args.seed);
+                let tcp = with_tcp && method == Method::Compensated;
+                let outcomes = montecarlo::run_with_tcp(
+                    &profile,
+                    &plan,
+                    &w,
+                    &fit,
+                    args.sessions,
+                    args.seed,
+                    tcp,
+                );
                 if method == Method::Compensated {
                     refusals = outcomes
                         .iter()
@@ -360,7 +396,21 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
                     })
                     .collect();
                 cells.push(worst);
+                if method == Method::Compensated {
+                    compensated = outcomes;
+                }
             }
+            let summary = montecarlo::summarise(&compensated, 0.005);
+            let coverage = summary.covered.iter().copied().fold(1.0f64, f64::min);
+            let ratios: Vec<f64> = compensated
+                .iter()
+                .filter_map(|o| o.tcp.map(|t| t.mean_after_mm / t.mean_best_mm))
+                .collect();
+            let tcp_cell = if ratios.is_empty() {
+                "-".to_owned()
+            } else {
+                format!("{:.3}", ratios.iter().sum::<f64>() / ratios.len() as f64)
+            };
             // Refused sessions (NaN) give no error: they are counted on their own.
             let max = |v: &[f64]| {
                 v.iter()
@@ -385,13 +435,15 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
             };
             let _ = writeln!(
                 out,
-                "{:<58} {:>10} {:>10} {:>10} {:>7.1}% {:>8}",
+                "{:<58} {:>10} {:>10} {:>10} {:>7.1}% {:>8} {:>6.1}% {:>9}",
                 label,
                 fmt(max(&cells[0])),
                 fmt(p95),
                 fmt(max(&cells[1])),
                 ok * 100.0,
-                refusals.len()
+                refusals.len(),
+                coverage * 100.0,
+                tcp_cell
             );
             for r in &refusals {
                 let _ = writeln!(out, "    refused, {r}");

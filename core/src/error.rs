@@ -209,7 +209,7 @@ impl fmt::Display for FitError {
                 params,
             } => write!(
                 f,
-                "ill-conditioned pose set (condition number {} > {}): {params} barely separable; vary those joints more",
+                "ill-conditioned pose set (condition number {} > {}): {params} barely separable; vary those joints more (a planned session's poses separate them: if these were planned, the readings are not of this robot's profile)",
                 Fixed::new(f64::from(condition_number), 0),
                 Fixed::new(f64::from(limit), 0)
             ),

@@ -106,7 +106,9 @@ fn a_loose_bracket_is_refused() {
     for seed in 1..=5 {
         let s = RealSession::simulate(&profile, &plan, &world, seed);
         match solve(&readings(&profile, &s, true), &fit).result {
-            Err(SessionError::Stage2(FitError::CapturesDisagree { rms_deg, limit_deg, .. })) => {
+            Err(SessionError::Stage2(FitError::CapturesDisagree {
+                rms_deg, limit_deg, ..
+            })) => {
                 assert!(rms_deg > limit_deg, "{rms_deg}");
             }
             other => panic!("seed {seed}: {:?}", other.map(|s| s.offsets_rad)),

@@ -6,8 +6,8 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use zerocal_core::session::{solve, SessionError};
 use zerocal_core::error::FitError;
+use zerocal_core::session::{solve, SessionError};
 use zerocal_sim::montecarlo::{setup, Method, DEFAULT_POSES};
 use zerocal_sim::robot::RobotSources;
 use zerocal_sim::world::{RealSession, SessionFault, WorldConfig};
@@ -66,9 +66,11 @@ fn a_pose_not_reached_is_named() {
         },
         ..real_arm()
     };
-    refused_as(&world, |_| None, |e| {
-        matches!(e, FitError::PoseNotReached { pose: 9, .. })
-    });
+    refused_as(
+        &world,
+        |_| None,
+        |e| matches!(e, FitError::PoseNotReached { pose: 9, .. }),
+    );
 }
 
 /// A flange bracket that seats anew within ±0.1° at every capture.
@@ -78,9 +80,11 @@ fn a_loose_bracket_is_named() {
         loose_bracket_deg: 0.1,
         ..real_arm()
     };
-    refused_as(&world, |_| None, |e| {
-        matches!(e, FitError::CapturesDisagree { .. })
-    });
+    refused_as(
+        &world,
+        |_| None,
+        |e| matches!(e, FitError::CapturesDisagree { .. }),
+    );
 }
 
 /// The pendant turned 0.1° on the flange before pose 13: the move is named, within a
@@ -91,9 +95,11 @@ fn a_knocked_pendant_is_named() {
         fault: SessionFault::Knocked { pose: 12, deg: 0.1 },
         ..real_arm()
     };
-    refused_as(&world, |_| None, |e| {
-        matches!(e, FitError::PendantMoved { from_pose, .. } if from_pose.abs_diff(12) <= 1)
-    });
+    refused_as(
+        &world,
+        |_| None,
+        |e| matches!(e, FitError::PendantMoved { from_pose, .. } if from_pose.abs_diff(12) <= 1),
+    );
 }
 
 /// A session solved with another robot's profile is refused with a message that names
@@ -102,7 +108,13 @@ fn a_knocked_pendant_is_named() {
 fn the_wrong_profile_is_named() {
     refused_as(
         &real_arm(),
-        |r| Some(if r == "abb-irb140" { "kuka-kr6-r900-sixx" } else { "abb-irb140" }),
+        |r| {
+            Some(if r == "abb-irb140" {
+                "kuka-kr6-r900-sixx"
+            } else {
+                "abb-irb140"
+            })
+        },
         |e| e.to_string().contains("profile"),
     );
 }

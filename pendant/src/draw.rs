@@ -655,13 +655,22 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
             fixed("bracket loose? robot"),
             fixed("moving? wrong robot?"),
         ],
-        FitError::PoseNotReached { pose, residual_deg, .. } => [
-            line(format_args!("pose {}: {}\u{b0} off", pose + 1, fx(residual_deg, 3))),
+        FitError::PoseNotReached {
+            pose, residual_deg, ..
+        } => [
+            line(format_args!(
+                "pose {}: {}\u{b0} off",
+                pose + 1,
+                fx(residual_deg, 3)
+            )),
             fixed("pose not reached?"),
             fixed("check the program,"),
             fixed("repeat stage 2"),
         ],
-        FitError::PendantMoved { from_pose, step_deg } => [
+        FitError::PendantMoved {
+            from_pose,
+            step_deg,
+        } => [
             fixed("pendant moved on"),
             line(format_args!("flange before pose {}", from_pose + 1)),
             line(format_args!("jump {}\u{b0}", fx(step_deg, 3))),
@@ -677,7 +686,9 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
             line(format_args!("worst: pose {}", worst_pose + 1)),
             fixed("tighten, redo stage 2"),
         ],
-        FitError::ImplausibleGeometry { params, value_deg, .. } => [
+        FitError::ImplausibleGeometry {
+            params, value_deg, ..
+        } => [
             fixed("wrong robot profile?"),
             line(format_args!("{params} = {}\u{b0}", fx(value_deg, 2))),
             fixed("check the profile"),

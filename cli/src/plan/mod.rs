@@ -139,7 +139,12 @@ mod tests {
                 assert!((a - b).abs() < 1e-12 && a.abs() <= 1.0 + 1e-12);
                 // The offsets are well separated from one another; the nuisance terms
                 // may not be (bias y and joint 5's sag share a pattern: -0.97 here).
-                assert!(i == j || a.abs() < POORLY_SEPARATED, "j{} j{}: {a}", i + 3, j + 3);
+                assert!(
+                    i == j || a.abs() < POORLY_SEPARATED,
+                    "j{} j{}: {a}",
+                    i + 3,
+                    j + 3
+                );
             }
         }
         assert!(v["correlation"]["worst"]["value"].as_f64().is_some());

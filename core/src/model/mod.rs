@@ -364,7 +364,11 @@ impl<T: Real> WristChain<T> {
             let (s, c) = trig[k];
             let axis = self.axes[k];
             u = axis.rotate_transposed(&through_fixed(k, u), s, c);
-            for p in partials.iter_mut().take(k).chain(tilts.iter_mut().take(2 * k)) {
+            for p in partials
+                .iter_mut()
+                .take(k)
+                .chain(tilts.iter_mut().take(2 * k))
+            {
                 *p = axis.rotate_transposed(&through_fixed(k, *p), s, c);
             }
             partials[k] = u.cross(&axis.unit());

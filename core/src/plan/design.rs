@@ -18,7 +18,8 @@ const PACKED: usize = PLANNED_PARAMS * (PLANNED_PARAMS + 1) / 2;
 /// ([`crate::stage2::geometry::identifiable`]): carrying them in every candidate's
 /// packed information would take 2 kB per candidate, more than the pendant's RAM holds
 /// for a pool.
-pub const PLANNED_PARAMS: usize = MAX_PARAMS - crate::stage2::TILT_SLOTS - crate::stage2::WRIST_SAG_JOINTS;
+pub const PLANNED_PARAMS: usize =
+    MAX_PARAMS - crate::stage2::TILT_SLOTS - crate::stage2::WRIST_SAG_JOINTS;
 
 /// The information of a design: JᵀJ over the plan's parameters.
 pub(super) type Gram<T> = Square<T, MAX_PARAMS>;

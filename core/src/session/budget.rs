@@ -180,7 +180,8 @@ pub fn budget<T: Real>(
     let mut terms = [[T::zero(); SESSION_JOINTS]; BUDGET_TERMS];
     let shares = &solution.variance_shares_rad2;
     for k in 0..SESSION_JOINTS {
-        terms[BudgetTerm::Handover.index()][k] = (shares[k][0] + shares[k][1]).max(T::zero()).sqrt();
+        terms[BudgetTerm::Handover.index()][k] =
+            (shares[k][0] + shares[k][1]).max(T::zero()).sqrt();
     }
 
     // Stage 2's variance, growing as the extra groups join the fit.
@@ -302,11 +303,8 @@ pub fn budget<T: Real>(
     let noise = crate::real::deg_to_rad(T::lit(crate::stage2::MEMS_CAPTURE_NOISE_DEG));
     let power = crate::stage2::joint_sensitivity_power(&solution.model, extras, &joints, &offsets);
     let expected = noise * noise / per_row + rep2 * power / per_row;
-    let from_residuals = crate::stage2::transmission::amplitude_from_residuals(
-        sigma * sigma,
-        expected,
-        power,
-    );
+    let from_residuals =
+        crate::stage2::transmission::amplitude_from_residuals(sigma * sigma, expected, power);
     let half_pp = |deg: f64| crate::real::deg_to_rad(T::lit(deg * 0.5));
     let amplitude = half_pp(TRANSMISSION_PP_MAX_DEG).max(from_residuals);
     let once = half_pp(ONCE_PER_TURN_PP_MAX_DEG);

@@ -28,7 +28,9 @@ use super::{first_captures, same_pose};
 use crate::capture::CaptureIndex;
 use crate::error::FitError;
 use crate::real::{deg_to_rad, rad_to_deg, Real};
-use crate::stage2::{add_held, Estimate, FitResult, Information, PoseReading, Stage2Model, MAX_PARAMS};
+use crate::stage2::{
+    add_held, Estimate, FitResult, Information, PoseReading, Stage2Model, MAX_PARAMS,
+};
 
 /// Poses at either end a step is not looked for in (too few to tell a step from an
 /// outlier).
@@ -172,13 +174,22 @@ pub fn evidence<T: Real>(
     let mut pj = [[T::zero(); MAX_PARAMS]; 2];
     let mut pr = [T::zero(); 2];
     let mut pss = [T::zero(); 2];
-    let total_ss = [T::lit(poses.len() as f64), T::lit(poses.len() as f64) * w * w];
+    let total_ss = [
+        T::lit(poses.len() as f64),
+        T::lit(poses.len() as f64) * w * w,
+    ];
     for (m, pose) in poses.iter().enumerate() {
         let (rows, r) = at(pose);
         // The pose left out: S = its two readings.
         let h = [
-            [T::one() - quad(&rows[0], &rows[0]), -quad(&rows[0], &rows[1])],
-            [-quad(&rows[1], &rows[0]), T::one() - quad(&rows[1], &rows[1])],
+            [
+                T::one() - quad(&rows[0], &rows[0]),
+                -quad(&rows[0], &rows[1]),
+            ],
+            [
+                -quad(&rows[1], &rows[0]),
+                T::one() - quad(&rows[1], &rows[1]),
+            ],
         ];
         if let Some((shift, delta)) = solve2(h, r) {
             let f = f_of(delta);
@@ -263,7 +274,9 @@ pub fn judge<T: Real>(
         });
     }
     let (from_pose, step, f) = e.step;
-    if beyond(step, rule.step_floor_deg) && rule.step_limit.is_finite() && f > T::lit(rule.step_limit)
+    if beyond(step, rule.step_floor_deg)
+        && rule.step_limit.is_finite()
+        && f > T::lit(rule.step_limit)
     {
         return Err(FitError::PendantMoved {
             from_pose,

@@ -87,7 +87,9 @@ pub fn identifiable<T: Real>(
         let geometric = |p: &Param| matches!(p, Param::Tilt(_) | Param::WristSag(_));
         let worst = if c.condition_number.is_finite() && c.condition_number <= limit {
             // Separable: is each determined better than it is known?
-            let Some(sigma) = info.unit_sigma() else { break };
+            let Some(sigma) = info.unit_sigma() else {
+                break;
+            };
             layout
                 .params()
                 .iter()

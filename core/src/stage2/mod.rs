@@ -24,8 +24,8 @@ pub use model::{
     Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT, PENDANT_COM_M, PENDANT_KG,
 };
 pub use params::{
-    tilt_candidates, tilt_directions, Extras, Layout, Param, MAX_PARAMS, TILT_SLOTS,
-    WRIST_SAG_ALL, WRIST_SAG_JOINTS,
+    tilt_candidates, tilt_directions, Extras, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_ALL,
+    WRIST_SAG_JOINTS,
 };
 
 use crate::error::{FitError, ParamSet};
@@ -525,14 +525,17 @@ pub fn fit<T: Real>(
             }
         }
     }
-    if let Some((p, v)) = geometry::implausible_tilt(model, &{
-        let mut values = [T::zero(); MAX_PARAMS];
-        for (slot, q) in layout.params().iter().enumerate() {
-            values[q.index()] = x[slot];
-        }
-        values
-    }, layout.names(0..n))
-    {
+    if let Some((p, v)) = geometry::implausible_tilt(
+        model,
+        &{
+            let mut values = [T::zero(); MAX_PARAMS];
+            for (slot, q) in layout.params().iter().enumerate() {
+                values[q.index()] = x[slot];
+            }
+            values
+        },
+        layout.names(0..n),
+    ) {
         return Err(FitError::ImplausibleGeometry {
             params: ParamSet::default().with(p.index()),
             value_deg: rad_to_deg(v).to_f64() as f32,

@@ -9,9 +9,7 @@
 //! propagated through the chain ([`WristChain::up_and_partials_with`]).
 
 use super::information::Row;
-use super::params::{
-    tilt_directions, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_JOINTS,
-};
+use super::params::{tilt_directions, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_JOINTS};
 use super::PoseReading;
 use crate::model::{
     joint_trig, Arm, BaseTilt, Gain, SensorModel, Tilt, WristChain, JOINTS, WRIST_JOINTS,
@@ -344,10 +342,7 @@ impl<T: Real> Stage2Model<T> {
         for k in 0..WRIST_JOINTS {
             wrist.fixed[k] *= turns[k + 1];
         }
-        let any_tilt = layout
-            .params()
-            .iter()
-            .any(|p| matches!(p, Param::Tilt(_)));
+        let any_tilt = layout.params().iter().any(|p| matches!(p, Param::Tilt(_)));
         Pass {
             fixed_in_use: wrist.fixed_in_use(),
             wrist,
@@ -417,12 +412,8 @@ impl<T: Real> Stage2Model<T> {
         let wrist_q = [q[2], q[3], q[4], q[5]];
         let trig = joint_trig(&wrist_q, &offset_trig);
         let (u, du, dtilt) = if pass.any_tilt {
-            pass.wrist.up_and_tilt_partials(
-                &pass.fixed_in_use,
-                &base_up,
-                &trig,
-                &pass.tilt_dirs,
-            )
+            pass.wrist
+                .up_and_tilt_partials(&pass.fixed_in_use, &base_up, &trig, &pass.tilt_dirs)
         } else {
             let (u, du) = pass
                 .wrist
@@ -481,9 +472,7 @@ impl<T: Real> Stage2Model<T> {
                             &pass.wrist.to_sensor(&pass.fixed_in_use, &moved, &trig),
                         )
                     }
-                    Param::Tilt(t) => {
-                        through(axis, &dtilt[usize::from(t).min(TILT_SLOTS - 1) - 2])
-                    }
+                    Param::Tilt(t) => through(axis, &dtilt[usize::from(t).min(TILT_SLOTS - 1) - 2]),
                     Param::WristSag(i) => {
                         let i = usize::from(i).min(WRIST_SAG_JOINTS - 1);
                         levers[i + 3] * through(axis, &du[i + 1])

@@ -93,24 +93,24 @@ impl Param {
     /// The parameter at index `i` (past the last: the last).
     pub const fn from_index(i: usize) -> Param {
         const FIXED: [Param; 18] = [
-        Param::Offset(0),
-        Param::Offset(1),
-        Param::Offset(2),
-        Param::Offset(3),
-        Param::GainX,
-        Param::GainY,
-        Param::CrossXy,
-        Param::CrossYx,
-        Param::CrossXz,
-        Param::CrossYz,
-        Param::CrossZx,
-        Param::CrossZy,
-        Param::GainZ,
-        Param::Sag,
-        Param::BiasX,
-        Param::BiasY,
-        Param::DriftX,
-        Param::DriftY,
+            Param::Offset(0),
+            Param::Offset(1),
+            Param::Offset(2),
+            Param::Offset(3),
+            Param::GainX,
+            Param::GainY,
+            Param::CrossXy,
+            Param::CrossYx,
+            Param::CrossXz,
+            Param::CrossYz,
+            Param::CrossZx,
+            Param::CrossZy,
+            Param::GainZ,
+            Param::Sag,
+            Param::BiasX,
+            Param::BiasY,
+            Param::DriftX,
+            Param::DriftY,
         ];
         if i < FIXED.len() {
             FIXED[i]
@@ -276,7 +276,9 @@ pub fn tilt_directions<T: crate::real::Real>(
     joint: usize,
 ) -> Option<([nalgebra::Vector3<T>; 2], bool)> {
     use nalgebra::Vector3;
-    let k = joint.checked_sub(1).filter(|&k| (1..crate::model::JOINTS).contains(&k))?;
+    let k = joint
+        .checked_sub(1)
+        .filter(|&k| (1..crate::model::JOINTS).contains(&k))?;
     let axis = arm.joints[k].axis.unit::<T>();
     let prev = arm.joints[k].origin.rotation.inverse() * arm.joints[k - 1].axis.unit::<T>();
     let cross = axis.cross(&prev);

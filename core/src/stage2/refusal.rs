@@ -72,4 +72,3 @@ impl Default for RefusalRule {
         Self::STANDARD
     }
 }
-

@@ -9,8 +9,8 @@
 //! `Σᵢ gᵢ·a·sin(n·qᵢ + φ)` has variance `a²/2·|Σᵢ gᵢ·e^{i·n·qᵢ}|²`: small where the poses
 //! spread the joint over whole periods, up to `a²/2` where they sit at one angle.
 
-use super::{check_conditioning, Extras, PoseReading, Stage2Model, MAX_PARAMS};
 use super::{add_held, RANK_DEFICIENT_CONDITION};
+use super::{check_conditioning, Extras, PoseReading, Stage2Model, MAX_PARAMS};
 use crate::error::FitError;
 use crate::model::WRIST_JOINTS;
 use crate::real::Real;
