@@ -99,6 +99,9 @@ fn solve2<T: Real>(m: [[T; 2]; 2], v: [T; 2]) -> Option<([T; 2], T)> {
 /// With J the fit's Jacobian and S the new columns, `ΔSSR = rᵀS·(SᵀS − SᵀJ(JᵀJ)⁻¹JᵀS)⁻¹·Sᵀr`
 /// (the residuals are already orthogonal to J at the solution). Rows are weighted as
 /// the fit weighs them.
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 pub fn evidence<T: Real>(
     model: &Stage2Model<T>,
     fit: &FitResult<T>,

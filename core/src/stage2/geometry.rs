@@ -50,6 +50,9 @@ pub const TILT_IMPLAUSIBLE_FACTOR: f64 = 4.0;
 /// no better than it is known). Returns the reduced extras and what was dropped. The
 /// sensor and joint 2-3 terms are never dropped here: if the pose set cannot separate
 /// those, the fit refuses as before.
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 pub fn identifiable<T: Real>(
     model: &Stage2Model<T>,
     extras: Extras,
@@ -179,6 +182,9 @@ pub fn worst_case<T: Real>(
 /// parameter d, the fit's response to it, `S_d = −(JᵀJ)⁻¹·Jᵀ·j_d`, times its stated worst
 /// case, taken uniform within ± that (u = w/√3, GUM 4.3.7), the parameters independent:
 /// a standard uncertainty per offset (rad).
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 pub fn unfitted_effect<T: Real>(
     model: &Stage2Model<T>,
     layout: &Layout,
@@ -199,6 +205,9 @@ pub fn unfitted_effect<T: Real>(
 }
 
 /// How Δθ3..Δθ6 move per unit of parameter `d` left out of the fit (rad per unit).
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 fn response_to<T: Real>(
     model: &Stage2Model<T>,
     layout: &Layout,

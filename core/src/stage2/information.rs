@@ -108,6 +108,9 @@ impl<T: Real> Information<T> {
     }
 
     /// (JᵀJ)⁻¹ = R⁻¹R⁻ᵀ, or `None` if a pivot is zero.
+    // A frame of its own: its square matrices leave the stack when it returns
+    // (the pendant's fit is stack-measured on target).
+    #[inline(never)]
     pub(crate) fn inverse_gram(&self) -> Option<Square<T, MAX_PARAMS>> {
         let ri = self.r.upper_inverse()?;
         Some(ri.mul(&ri.transpose()))
@@ -129,6 +132,9 @@ impl<T: Real> Information<T> {
     }
 
     /// The least-squares step, optionally damped by λ (Levenberg-Marquardt).
+    // A frame of its own: its square matrices leave the stack when it returns
+    // (the pendant's fit is stack-measured on target).
+    #[inline(never)]
     pub(crate) fn step(&self, lambda: T) -> Option<[T; MAX_PARAMS]> {
         let n = self.r.n;
         let sys = if lambda > T::zero() {
@@ -163,6 +169,9 @@ impl<T: Real> Information<T> {
     /// parameters' units: a cross-axis term's column is a hundred times shorter than an
     /// offset's (its effect grows with the tilt squared), which says nothing about
     /// whether the poses separate it.
+    // A frame of its own: its square matrices leave the stack when it returns
+    // (the pendant's fit is stack-measured on target).
+    #[inline(never)]
     pub(crate) fn conditioning(&self) -> Conditioning<T> {
         let n = self.r.n;
         let mut scaled = self.r;

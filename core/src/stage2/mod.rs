@@ -289,6 +289,9 @@ fn check_layout<T: Real>(
 
 /// J over all poses, with the residuals when `with_residuals`; the sum of squared
 /// residuals and the largest one (and its pose).
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 fn linearise<T: Real>(
     model: &Stage2Model<T>,
     layout: &Layout,
@@ -387,6 +390,9 @@ fn prior_weights<T: Real>(
 /// `(Jᵀ·J_m, J_mᵀ·J_m)`, with J_m the readings' derivatives with respect to the
 /// hand-over parameters: how an error in those moves the solution, and how much of it
 /// is left in the residuals.
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 fn handover_coupling<T: Real>(
     model: &Stage2Model<T>,
     layout: &Layout,
@@ -580,6 +586,9 @@ struct Solved<T: Real> {
 }
 
 /// Levenberg-Marquardt on `layout` from `x`.
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 fn levenberg_marquardt<T: Real>(
     model: &Stage2Model<T>,
     layout: &Layout,
@@ -688,6 +697,9 @@ struct Summary<T> {
 }
 
 /// σ from the residuals (or the sensor's figure), and the result in physical form.
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
 fn finish<T: Real>(
     layout: &Layout,
     x: &[T; MAX_PARAMS],
