@@ -199,9 +199,9 @@ impl fmt::Display for FitError {
             ),
             FitError::RankDeficient { params } => write!(
                 f,
-                "rank-deficient pose set: the zeros of {params} cannot be separated; vary those \
-                 joints (a planned session's poses separate them: if these were planned, the \
-                 readings are not of this robot's profile)"
+                "rank-deficient pose set: the zeros of {params} cannot be separated by these \
+                 poses; vary those joints, or, if the poses were planned for this robot, check \
+                 its profile"
             ),
             FitError::IllConditioned {
                 condition_number,
@@ -209,7 +209,7 @@ impl fmt::Display for FitError {
                 params,
             } => write!(
                 f,
-                "ill-conditioned pose set (condition number {} > {}): {params} barely separable; vary those joints more (a planned session's poses separate them: if these were planned, the readings are not of this robot's profile)",
+                "ill-conditioned pose set (condition number {} > {}): {params} barely separable; vary those joints more, or, if the poses were planned for this robot, check its profile",
                 Fixed::new(f64::from(condition_number), 0),
                 Fixed::new(f64::from(limit), 0)
             ),

@@ -60,6 +60,11 @@ pub fn setup(
         Method::Uncompensated => FitConfig {
             sensor_range_rad: FitConfig::<f64>::for_mems(&profile.arm, sag).sensor_range_rad,
             sensor_noise_rad: FitConfig::<f64>::for_mems(&profile.arm, sag).sensor_noise_rad,
+            // The paper's offsets only, but a parallel twin held as every fit holds it.
+            extras: zerocal_core::stage2::Extras {
+                held: profile.arm.parallel_twins(),
+                ..zerocal_core::stage2::Extras::NONE
+            },
             ..FitConfig::default()
         },
     };
