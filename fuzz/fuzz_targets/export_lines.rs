@@ -155,7 +155,10 @@ fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
         bias_x: bool::arbitrary(u)?,
         bias_y: bool::arbitrary(u)?,
         drift: bool::arbitrary(u)?,
+        // Held offsets and the geometric candidates follow from the arm, not the line.
         held: [false; 4],
+        tilt: 0,
+        wrist_sag: 0,
     };
     let mut line = Line::new();
     write_fit_extras(&mut line, extras).expect("extras fit a line");

@@ -79,7 +79,8 @@ pub fn capture_difference<T: Real>(
 /// when `M` is singular.
 fn solve2<T: Real>(m: [[T; 2]; 2], v: [T; 2]) -> Option<([T; 2], T)> {
     let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
-    if !(det.abs() > T::EPSILON) {
+    // A NaN or infinite determinant is no inverse either.
+    if !det.is_finite() || det.abs() <= T::EPSILON {
         return None;
     }
     let x = [

@@ -20,7 +20,7 @@
 //!   gravity lever.
 //!
 //! The geometric terms (tilt, wrist sag) are candidates: the fit keeps those the poses
-//! separate from everything else ([`super::identifiable`]) and carries the others in the
+//! separate from everything else ([`super::geometry::identifiable`]) and carries the others in the
 //! budget at their stated worst case.
 
 use crate::error::{ParamSet, PARAM_NAMES};
@@ -179,7 +179,7 @@ pub struct Extras {
     /// the sum ([`crate::model::Arm::parallel_twins`]).
     pub held: [bool; 4],
     /// Misalignment candidates (bit s = [`Param::Tilt`] slot s): the fit keeps those
-    /// the poses separate ([`super::identifiable`]).
+    /// the poses separate ([`super::geometry::identifiable`]).
     pub tilt: u16,
     /// Wrist-sag candidates (bit i = joint 4 + i; needs the masses): as `tilt`.
     pub wrist_sag: u8,
