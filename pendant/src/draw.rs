@@ -641,9 +641,9 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
         ],
         FitError::NoConvergence { iterations } => [
             fixed("no convergence after"),
-            line(format_args!("{iterations} iterations")),
-            Text::new(),
-            Text::new(),
+            line(format_args!("{iterations} iterations:")),
+            fixed("wrong robot profile?"),
+            fixed("check it, convention"),
         ],
         FitError::ResidualTooLarge {
             rms_deg,
