@@ -28,8 +28,10 @@ pub const GEOMETRY_CONDITION: f64 = 200.0;
 /// FANUC, 0.05° in UR's calibrations).
 pub const TILT_PERPENDICULAR_MAX_DEG: f64 = 0.05;
 
-/// As [`TILT_PERPENDICULAR_MAX_DEG`] between parallel axes (deg): UR's 0.7° is the
-/// largest public figure; 0.5° covers the UR calibrations we read but their extreme.
+/// As [`TILT_PERPENDICULAR_MAX_DEG`] between parallel axes (deg): the top of the range
+/// the simulator draws. UR's factory calibrations reach 0.7° between J2-J3-J4; on such an
+/// arm a dropped parallel misalignment would be budgeted short (the UR5e's plan keeps
+/// them: `tilt4`, `tilt4b`).
 pub const TILT_PARALLEL_MAX_DEG: f64 = 0.5;
 
 /// The largest deflection of a wrist joint under its own load the budget assumes for
@@ -41,7 +43,8 @@ pub const WRIST_SAG_MAX_DEG: f64 = 0.03;
 /// geometry but a model that does not describe the arm: the wrong profile.
 pub const TILT_IMPLAUSIBLE_FACTOR: f64 = 4.0;
 
-/// The candidates of `extras` that `joints_rad` separate: geometric candidates are
+/// The candidates of `extras` that `joints_rad` separate: a misalignment gravity barely
+/// sees ([`MIN_VISIBILITY`]) is dropped first; then geometric candidates are
 /// dropped, the one with the largest share of J's weakest direction first, until the
 /// condition number is below `limit`; then, worst first, each whose 1σ for a reading
 /// noise of `noise_rad` would exceed [`DETERMINED_SHARE`] of its stated worst case (a
