@@ -94,6 +94,14 @@ pub struct WorldConfig {
     pub ambient_c: f64,
     /// A session fault, if any.
     pub fault: SessionFault,
+    /// The chip turned inside the box (its PCB in the housing) within ± this about each
+    /// of the box's axes (deg), fixed for the box; 0: square. No public figure: a stated
+    /// range for a hand-assembled box.
+    pub chip_rotation_deg: f64,
+    /// The stage-0 bench's tilt, ± this about each horizontal axis (deg).
+    pub bench_tilt_deg: f64,
+    /// Stage 0's half turn off 180° by up to ± this (deg), turned by hand without a jig.
+    pub half_turn_error_deg: f64,
 }
 
 impl WorldConfig {
@@ -133,6 +141,9 @@ impl WorldConfig {
             max_base_tilt_deg: 0.5,
             ambient_c: 23.0,
             fault: SessionFault::None,
+            chip_rotation_deg: 0.0,
+            bench_tilt_deg: 2.0,
+            half_turn_error_deg: 0.0,
         }
     }
 
@@ -319,27 +330,34 @@ impl RealSession {
             world.ambient_c + world.warming_k * (1.0 - (-t_s / world.warming_tau_s.max(1.0)).exp())
         };
         let mut outside_range = 0;
+        // The chip in the box: drawn only when on, so a world without it draws the same
+        // numbers as before.
+        let chip_in_box = if world.chip_rotation_deg > 0.0 {
+            small_rotation(&mut rng, world.chip_rotation_deg).1
+        } else {
+            Rotation3::identity()
+        };
         let mut take =
             |sensor: &mut Scl3300Unit, r: &Rotation3<f64>, t_s: f64, rng: &mut ChaCha8Rng| {
-                let c: UnitCapture = sensor.capture(&up_in_sensor(r), temperature(t_s), rng);
+                let c: UnitCapture =
+                    sensor.capture(&up_in_sensor(&(r * chip_in_box)), temperature(t_s), rng);
                 if c.outside_range {
                     outside_range += 1;
                 }
                 c
             };
 
-        // Stage 0: a bench tilted by up to 2°, the pendant at any heading, turned half a
-        // turn on the spot.
-        let surface = rot_y(deg_to_rad(uniform(&mut rng, 2.0)))
-            * rot_x(deg_to_rad(uniform(&mut rng, 2.0)))
+        // Stage 0: a bench tilted by up to `bench_tilt_deg`, the pendant at any heading,
+        // turned half a turn on the spot (off by up to `half_turn_error_deg`).
+        let surface = rot_y(deg_to_rad(uniform(&mut rng, world.bench_tilt_deg)))
+            * rot_x(deg_to_rad(uniform(&mut rng, world.bench_tilt_deg)))
             * rot_z(uniform(&mut rng, core::f64::consts::PI));
+        let half_turn = |rng: &mut ChaCha8Rng| {
+            rot_z(core::f64::consts::PI + deg_to_rad(uniform(rng, world.half_turn_error_deg)))
+        };
+        let turned = surface * half_turn(&mut rng);
         let c0 = take(&mut sensor, &surface, timeline.stage0_s[0], &mut rng);
-        let c1 = take(
-            &mut sensor,
-            &(surface * rot_z(core::f64::consts::PI)),
-            timeline.stage0_s[1],
-            &mut rng,
-        );
+        let c1 = take(&mut sensor, &turned, timeline.stage0_s[1], &mut rng);
         let stage0 = Reversal {
             first: c0.reading,
             second: c1.reading,
@@ -437,13 +455,9 @@ impl RealSession {
 
         // The closing reversal on the same bench, two minutes after the last capture.
         let t_end = t_s + 120.0;
+        let turned = surface * half_turn(&mut rng);
         let e0 = take(&mut sensor, &surface, t_end, &mut rng);
-        let e1 = take(
-            &mut sensor,
-            &(surface * rot_z(core::f64::consts::PI)),
-            t_end + 30.0,
-            &mut rng,
-        );
+        let e1 = take(&mut sensor, &turned, t_end + 30.0, &mut rng);
         let closing = ClosingReversal {
             reversal: Reversal {
                 first: e0.reading,

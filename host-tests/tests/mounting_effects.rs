@@ -1,0 +1,136 @@
+//! The pendant's own mounting and bench effects, as switchable sources of the simulated
+//! world: the brackets' seats (tilt and yaw), the chip turned inside its box, stage 0 on
+//! a tilted bench with a half turn made by hand. Each is off in `WorldConfig::real()` (its
+//! figures stay what they were); a measurement table (printed with `--nocapture`, not
+//! asserted) shows what each does to whole sessions today.
+
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use zerocal_sim::montecarlo::{run, setup, summarise, Method, DEFAULT_POSES};
+use zerocal_sim::world::{RealSession, WorldConfig};
+
+/// Off by default, and a world with them explicitly at 0 draws the very same session.
+#[test]
+fn mounting_sources_are_off_by_default() {
+    let w = WorldConfig::real();
+    assert_eq!(
+        (
+            w.chip_rotation_deg,
+            w.half_turn_error_deg,
+            w.mount_tolerance_deg
+        ),
+        (0.0, 0.0, 0.0)
+    );
+    let profile = zerocal_profile::builtin("kuka-kr6-r900-sixx").unwrap();
+    let (plan, _) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+    let a = RealSession::simulate(&profile, &plan, &w, 3);
+    let b = RealSession::simulate(
+        &profile,
+        &plan,
+        &WorldConfig {
+            chip_rotation_deg: 0.0,
+            half_turn_error_deg: 0.0,
+            ..w
+        },
+        3,
+    );
+    assert_eq!(a.poses, b.poses);
+    assert_eq!(a.stage0, b.stage0);
+}
+
+/// A half turn off 180° on a tilted bench moves stage 0's bias: the reversal's half-sum
+/// cancels the bench's tilt only for an exact half turn.
+#[test]
+fn an_inexact_half_turn_on_a_tilted_bench_moves_the_bias() {
+    let profile = zerocal_profile::builtin("kuka-kr6-r900-sixx").unwrap();
+    let (plan, _) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+    let exact = WorldConfig {
+        bench_tilt_deg: 0.5,
+        ..WorldConfig::ideal()
+    };
+    let sloppy = WorldConfig {
+        half_turn_error_deg: 1.0,
+        ..exact
+    };
+    let bias = |w: &WorldConfig, seed: u64| {
+        let s = RealSession::simulate(&profile, &plan, w, seed);
+        s.stage0
+            .bias(zerocal_core::model::Convention::Axis, 0.5)
+            .unwrap()
+    };
+    let mut moved = 0.0f64;
+    for seed in 0..10 {
+        let (a, b) = (bias(&exact, seed), bias(&sloppy, seed));
+        moved = moved.max((a.x_rad - b.x_rad).abs().max((a.y_rad - b.y_rad).abs()));
+    }
+    // Up to half the turn's error times the tilt: (1° × 0.5°·√2)/2 in radians.
+    let bound = 0.5 * 1f64.to_radians() * (0.5f64.to_radians() * 2f64.sqrt());
+    assert!(
+        moved > 0.0 && moved <= bound * 1.05,
+        "{moved} rad (bound {bound})"
+    );
+}
+
+/// The measurement table: 30 sessions per profile and effect, every source of today's
+/// error table on beside it.
+#[test]
+fn mounting_measurement_table() {
+    let effects: [(&str, WorldConfig); 4] = [
+        (
+            "brackets +/-0.5 deg",
+            WorldConfig {
+                mount_tolerance_deg: 0.5,
+                ..WorldConfig::real()
+            },
+        ),
+        (
+            "chip +/-1 deg, brackets +/-0.5",
+            WorldConfig {
+                chip_rotation_deg: 1.0,
+                mount_tolerance_deg: 0.5,
+                ..WorldConfig::real()
+            },
+        ),
+        (
+            "bench 0.5 deg, half turn +/-1",
+            WorldConfig {
+                bench_tilt_deg: 0.5,
+                half_turn_error_deg: 1.0,
+                ..WorldConfig::real()
+            },
+        ),
+        (
+            "chip +/-1, half turn +/-1",
+            WorldConfig {
+                chip_rotation_deg: 1.0,
+                bench_tilt_deg: 0.5,
+                half_turn_error_deg: 1.0,
+                ..WorldConfig::real()
+            },
+        ),
+    ];
+    println!("robot               effect                          refused  worst j2..j6 (deg)                      within 0.005  k=2 covers (least joint)");
+    for robot in [
+        "kuka-kr6-r900-sixx",
+        "abb-irb140",
+        "fanuc-m20ia",
+        "yaskawa-gp7",
+        "staubli-tx2-60",
+        "ur5e",
+    ] {
+        let profile = zerocal_profile::builtin(robot).unwrap();
+        let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+        for (name, world) in &effects {
+            let out = run(&profile, &plan, world, &fit, 30, 31);
+            let s = summarise(&out, 0.005);
+            println!(
+                "{robot:<19} {name:<31} {:>2}/30   {}   {:>5.1} %     {:>5.1} %",
+                s.refused,
+                s.max_deg.map(|x| format!("{x:.4}")).join(" "),
+                100.0 * s.all_within,
+                100.0 * s.covered.iter().copied().fold(1.0f64, f64::min)
+            );
+        }
+    }
+}
