@@ -25,10 +25,11 @@ use zerocal_core::capture::CaptureIndex;
 use zerocal_core::model::{Convention, JOINTS};
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
-    budget, one_sided_pose, sensor_offset_x_spec_deg, solve, stage1_joint2_mismatch,
-    unknown_offset_half_width, BiasSource, Budget, BudgetInputs, BudgetTerm, SessionError,
-    SessionReadings, SessionSolution, StageTemperatures, DEFAULT_LOST_MOTION_DEG,
-    DEFAULT_REPEATABILITY_DEG, SESSION_JOINTS, STAGE1_JOINT2_TOLERANCE_DEG,
+    budget, half_turn_half_width, one_sided_pose, sensor_offset_x_spec_deg, solve,
+    stage1_joint2_mismatch, unknown_offset_half_width, BiasSource, Budget, BudgetInputs,
+    BudgetTerm, SessionError, SessionReadings, SessionSolution, StageTemperatures,
+    DEFAULT_HALF_TURN_TOLERANCE_DEG, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
+    SESSION_JOINTS, STAGE1_JOINT2_TOLERANCE_DEG,
 };
 use zerocal_core::stage0::ClosingReversal;
 use zerocal_core::stage1::AxisOneTurn;
@@ -52,6 +53,11 @@ pub struct SessionArgs {
     /// (flange): enters Δθ2, Δθ3 and Δθ6 one to one (docs/mounting.md). Range: [0, 1] deg.
     #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
     pub mount_tolerance_deg: f64,
+    /// How far stage 0's half turn may be off 180° (default: 1 deg, a turn by hand without
+    /// a jig, a stated figure). On a tilted bench it moves the bias by this times the
+    /// tilt, over 2. Range: [0, 10] deg.
+    #[arg(long, default_value_t = DEFAULT_HALF_TURN_TOLERANCE_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 10.0, "deg"))]
+    pub half_turn_tolerance_deg: f64,
     /// The robot's repeatability per joint, 1σ. Range: [0, 0.1] deg.
     #[arg(long, default_value_t = DEFAULT_REPEATABILITY_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 0.1, "deg"))]
     pub repeatability_deg: f64,
@@ -452,6 +458,21 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             lost_motion_rad: args.lost_motion_deg.to_radians(),
         },
     );
+    let half_turn = half_turn_half_width(
+        &readings,
+        &config,
+        args.half_turn_tolerance_deg.to_radians(),
+    )
+    .map_err(|e| {
+        CliError::Refused(name(&format!(
+            "with stage 0's half turn off 180 deg by +/-{} deg the session is refused ({e}): \
+             level the bench and repeat stage 0",
+            args.half_turn_tolerance_deg
+        )))
+    })?;
+    if let Some(w) = half_turn {
+        budget.add_half_turn(&w);
+    }
     let mut notes = vec![format!(
         "robot profile {} ({}), convention {}",
         profile.name,

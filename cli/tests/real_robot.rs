@@ -156,6 +156,7 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
                 export: path,
                 robot: None,
                 mount_tolerance_deg: 0.0,
+                half_turn_tolerance_deg: 0.0,
                 repeatability_deg: 0.0,
                 lost_motion_deg: 0.0,
                 json: true,

@@ -134,3 +134,62 @@ fn mounting_measurement_table() {
         }
     }
 }
+
+/// The budget's half-turn term: zero for an exact turn, in proportion to the turn's
+/// tolerance (the error is ε·|t|/2, linear in ε), and its half width bounds what a turn
+/// within that tolerance does to the offsets (an ideal world, so that the turn is the
+/// only difference between the two sessions of a seed).
+#[test]
+fn the_half_turn_term_scales_with_the_turn_and_bounds_it() {
+    use zerocal_core::session::{half_turn_half_width, solve};
+    let profile = zerocal_profile::builtin("abb-irb140").unwrap();
+    let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+    let exact = WorldConfig {
+        bench_tilt_deg: 0.5,
+        ..WorldConfig::ideal()
+    };
+    let sloppy = WorldConfig {
+        half_turn_error_deg: 1.0,
+        ..exact
+    };
+    let mut largest = 0.0f64;
+    for seed in 0..20 {
+        let s = RealSession::simulate(&profile, &plan, &sloppy, seed);
+        let e = RealSession::simulate(&profile, &plan, &exact, seed);
+        let readings = s.readings(&profile, &sloppy);
+        let w = |deg: f64| {
+            half_turn_half_width(&readings, &fit, deg.to_radians())
+                .unwrap()
+                .unwrap()
+        };
+        assert!(w(0.0).iter().all(|v| *v == 0.0));
+        let (one, two) = (w(1.0), w(2.0));
+        let found = solve(&readings, &fit).result.unwrap().offsets_rad;
+        let reference = solve(&e.readings(&profile, &exact), &fit)
+            .result
+            .unwrap()
+            .offsets_rad;
+        for k in 0..5 {
+            // Linear within the solver's own nonlinearity (1 %).
+            assert!(
+                (two[k] - 2.0 * one[k]).abs() <= 0.01 * two[k].abs() + 1e-12,
+                "seed {seed} j{}: {} {}",
+                k + 2,
+                one[k],
+                two[k]
+            );
+            // The turn's effect, within the half width (5 %: the bench tilt the
+            // reversal measures is the sloppy turn's, and the shift's direction follows
+            // it).
+            let moved = (found[k] - reference[k]).abs();
+            assert!(
+                moved <= 1.05 * one[k] + 1e-9,
+                "seed {seed} j{}: moved {moved} rad, half width {}",
+                k + 2,
+                one[k]
+            );
+            largest = largest.max(moved);
+        }
+    }
+    assert!(largest > 0.0, "the turn never moved an offset");
+}

@@ -8,7 +8,7 @@ use crate::world::{RealSession, WorldConfig};
 use zerocal_core::model::JOINTS;
 
 use zerocal_core::session::{
-    budget, solve, Budget, SessionError, SessionSolution, StageTemperatures,
+    budget, half_turn_half_width, solve, Budget, SessionError, SessionSolution, StageTemperatures,
 };
 use zerocal_core::stage2::FitConfig;
 use zerocal_profile::Profile;
@@ -94,10 +94,18 @@ pub fn run_with_tcp(
                 readings.temperatures = StageTemperatures::default();
             }
             let result = solve(&readings, fit).result;
-            let budget = result
-                .as_ref()
-                .ok()
-                .map(|sol| budget(sol, &session.poses, &world.budget_inputs(fit.extras)));
+            let budget = result.as_ref().ok().map(|sol| {
+                let mut b = budget(sol, &session.poses, &world.budget_inputs(fit.extras));
+                // Stage 0's half turn, at the world's own tolerance.
+                if world.half_turn_error_deg > 0.0 {
+                    if let Ok(Some(w)) =
+                        half_turn_half_width(&readings, fit, world.half_turn_error_deg.to_radians())
+                    {
+                        b.add_half_turn(&w);
+                    }
+                }
+                b
+            });
             let tcp = match (&result, tcp) {
                 (Ok(sol), true) => crate::tcp::tcp_check(
                     profile,

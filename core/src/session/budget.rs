@@ -62,6 +62,10 @@ pub enum BudgetTerm {
     Stage1Backlash,
     /// The brackets' seats (Type B, the stated tolerance).
     Mounting,
+    /// Stage 0's half turn off 180° on a tilted bench (Type B: the stated turn
+    /// tolerance and the bench tilt the reversal measured; see
+    /// [`Budget::add_half_turn`]).
+    HalfTurn,
     /// The sensor's x offset when no stage-0 reversal measured it (Type B: the
     /// SCL3300's offset specification, propagated; see [`Budget::add_unknown_sensor_offset`]).
     UnknownSensorOffset,
@@ -82,6 +86,7 @@ impl BudgetTerm {
         BudgetTerm::LoadedBacklash,
         BudgetTerm::Stage1Backlash,
         BudgetTerm::Mounting,
+        BudgetTerm::HalfTurn,
         BudgetTerm::UnknownSensorOffset,
     ];
 
@@ -100,6 +105,7 @@ impl BudgetTerm {
             BudgetTerm::LoadedBacklash => "joint 3 backlash under gravity (stated)",
             BudgetTerm::Stage1Backlash => "joint 2 at stage 1 (backlash side)",
             BudgetTerm::Mounting => "bracket seats (stated tolerance)",
+            BudgetTerm::HalfTurn => "stage 0 half turn on a tilted bench",
             BudgetTerm::UnknownSensorOffset => "sensor offset, no stage 0 (specification)",
         }
     }
@@ -112,7 +118,7 @@ impl BudgetTerm {
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 13;
+pub const BUDGET_TERMS: usize = 14;
 
 /// The SCL3300's offset specification on X (g, ±), the chip crate's
 /// [`zerocal_scl3300::spec::OFFSET_X_SPEC_G`]. X is the axis stage 0 measures and stage 1
@@ -343,7 +349,20 @@ impl<T: Real> Budget<T> {
     /// [`super::unknown_offset_half_width`]); the offset uniform within it, u = w/√3 (GUM
     /// 4.3.7). Combined and expanded are recomputed.
     pub fn add_unknown_sensor_offset(&mut self, half_width_rad: &[T; SESSION_JOINTS]) {
-        let term = BudgetTerm::UnknownSensorOffset.index();
+        self.add_uniform(BudgetTerm::UnknownSensorOffset, half_width_rad);
+    }
+
+    /// Adds stage 0's half turn: `half_width_rad[k]` is how far Δθ2+k moves with the
+    /// turn at either end of its tolerance ([`super::half_turn_half_width`]), uniform
+    /// within it (u = w/√3). Combined and expanded are recomputed.
+    pub fn add_half_turn(&mut self, half_width_rad: &[T; SESSION_JOINTS]) {
+        self.add_uniform(BudgetTerm::HalfTurn, half_width_rad);
+    }
+
+    /// Sets `term` to a uniform distribution of half width `half_width_rad` per joint and
+    /// recomputes the combined and expanded uncertainties.
+    fn add_uniform(&mut self, term: BudgetTerm, half_width_rad: &[T; SESSION_JOINTS]) {
+        let term = term.index();
         for k in 0..SESSION_JOINTS {
             self.terms_rad[term][k] = half_width_rad[k].abs() / T::lit(3.0).sqrt();
         }

@@ -611,6 +611,63 @@ pub fn unknown_offset_half_width<T: Real>(
     })))
 }
 
+/// The half turn of stage 0's reversal made by hand is off 180° by up to this (deg) when
+/// nothing else is stated: a stated figure (no jig, a turn judged by eye against the
+/// box's edges); no public source gives one.
+pub const DEFAULT_HALF_TURN_TOLERANCE_DEG: f64 = 1.0;
+
+/// How far each of Δθ2..Δθ6 moves with stage 0's half turn off 180° by up to
+/// `tolerance_rad` (rad, half the swing). A turn of π + ε on a bench tilted by t leaves
+/// the reversal's half-sum off by ε·|t|/2, perpendicular to the tilt (the two readings'
+/// horizontal parts no longer cancel); the reversal measures t itself (their half
+/// difference). The session is solved with the bias moved that far either way. `None`
+/// without a stage-0 reversal.
+///
+/// # Errors
+/// The solver's refusal at either end.
+pub fn half_turn_half_width<T: Real>(
+    readings: &SessionReadings<'_, T>,
+    config: &FitConfig<T>,
+    tolerance_rad: T,
+) -> Result<Option<[T; SESSION_JOINTS]>, SessionError> {
+    let BiasSource::Reversal(opening) = readings.bias else {
+        return Ok(None);
+    };
+    let half = T::lit(0.5);
+    // The reversal moved as a turn of π ± tolerance would move it: ε·|t|/2 along the
+    // tilt t (the readings' half difference) turned a quarter turn, (−t_y, t_x)·ε/2.
+    let moved = |r: &Reversal<T>, sign: T| {
+        let (tx, ty) = (
+            (r.first.x_rad - r.second.x_rad) * half,
+            (r.first.y_rad - r.second.y_rad) * half,
+        );
+        let (sx, sy) = (
+            -ty * tolerance_rad * half * sign,
+            tx * tolerance_rad * half * sign,
+        );
+        Reversal {
+            first: Tilt::new(r.first.x_rad + sx, r.first.y_rad + sy),
+            second: Tilt::new(r.second.x_rad + sx, r.second.y_rad + sy),
+        }
+    };
+    // Both reversals (the closing one too, where made) off the same way: the worst case.
+    let at = |sign: T| {
+        let moved_readings = SessionReadings {
+            bias: BiasSource::Reversal(moved(&opening, sign)),
+            closing: readings.closing.map(|c| ClosingReversal {
+                reversal: moved(&c.reversal, sign),
+                ..c
+            }),
+            ..*readings
+        };
+        solve(&moved_readings, config).result.map(|s| s.offsets_rad)
+    };
+    let (plus, minus) = (at(T::one())?, at(-T::one())?);
+    Ok(Some(core::array::from_fn(|k| {
+        ((plus[k] - minus[k]) * half).abs()
+    })))
+}
+
 /// The first capture of a pose captured from one side only: its reading sits on one
 /// side of every gear's backlash, half the lost motion off the middle the two sides'
 /// mean finds ([`merge_repeats`]), and no budget term models that. With `index` (one
