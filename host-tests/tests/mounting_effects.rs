@@ -224,6 +224,9 @@ fn margins_hold() {
             .filter(|o| o.outside_range > 0)
             .map(|o| o.seed)
             .collect();
-        assert!(past.is_empty(), "{robot}: captures past 10 deg in seeds {past:?}");
+        assert!(
+            past.is_empty(),
+            "{robot}: captures past 10 deg in seeds {past:?}"
+        );
     }
 }

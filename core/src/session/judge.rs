@@ -43,8 +43,9 @@ pub struct Evidence<T> {
     /// pose (0-based, fitted order) whose captures differ most; `None` without pairs.
     pub capture_difference: Option<(T, usize)>,
     /// The pose most unlike the others: it (0-based, fitted order), its readings'
-    /// shift from the model fitted without it (rad, larger of x and y) and its F.
-    pub outlier: (usize, T, T),
+    /// shift from the model fitted without it (rad, larger of x and y), its F, and the
+    /// other poses' residual RMS (rad, per reading).
+    pub outlier: (usize, T, T, T),
     /// The likeliest step: the first pose after it, its size (rad) and its F.
     pub step: (usize, T, T),
     /// The residual RMS (rad, per reading).
@@ -146,7 +147,7 @@ pub fn evidence<T: Real>(
     let readings = 2 * poses.len();
     let residual_rms_rad = (ssr / T::lit(readings.max(1) as f64)).sqrt();
     let dof = readings.saturating_sub(n);
-    let mut outlier = (0, T::zero(), T::zero());
+    let mut outlier = (0, T::zero(), T::zero(), T::zero());
     let mut step = (0, T::zero(), T::zero());
     let Some(inv) = info.inverse_gram() else {
         return Evidence {
@@ -199,7 +200,9 @@ pub fn evidence<T: Real>(
             let f = f_of(delta);
             if f > outlier.2 {
                 let size = shift[0].abs().max((shift[1] / w).abs());
-                outlier = (m, size, f);
+                let rest = (ssr - r[0] * r[0] - r[1] * r[1]).max(T::zero());
+                let others = (rest / T::lit(readings.saturating_sub(2).max(1) as f64)).sqrt();
+                outlier = (m, size, f, others);
             }
         }
         // A step before pose m (at least STEP_EDGE poses on either side).
@@ -266,7 +269,7 @@ pub fn judge<T: Real>(
             });
         }
     }
-    let (pose, size, f) = e.outlier;
+    let (pose, size, f, others) = e.outlier;
     if beyond(size, rule.outlier_floor_deg)
         && rule.outlier_limit.is_finite()
         && f > T::lit(rule.outlier_limit)
@@ -274,7 +277,7 @@ pub fn judge<T: Real>(
         return Err(FitError::PoseNotReached {
             pose,
             residual_deg: deg(size),
-            others_rms_deg: deg(e.residual_rms_rad),
+            others_rms_deg: deg(others),
         });
     }
     let (from_pose, step, f) = e.step;
