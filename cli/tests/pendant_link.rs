@@ -204,7 +204,8 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
         assert!((a.origin.translation_m - b.origin.translation_m).norm() < 1e-6);
     }
     // The plan is the one `zerocal program --robot kuka-kr6-r900` drives, to 0.001°
-    // (the listing's decimals).
+    // (the listing's decimals), the pendant keeping f32 (3e-5° at 360°: an angle a
+    // hair under a rounding midpoint may print rounded up).
     let rows: Vec<&str> = c.answers_after_reboot[1]
         .lines()
         .filter(|l| {
@@ -219,7 +220,7 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
         let got: Vec<f64> = row.split(',').map(|v| v.parse().unwrap()).collect();
         let want: Vec<f64> = sent_row.split(',').map(|v| v.parse().unwrap()).collect();
         for (g, w) in got.iter().zip(&want) {
-            assert!((g - w).abs() <= 0.0005 + 1e-9, "{row} vs {sent_row}");
+            assert!((g - w).abs() <= 0.0005 + 3e-5, "{row} vs {sent_row}");
         }
     }
 }
