@@ -394,10 +394,10 @@ pub fn solve<T: Real>(
     let temps = &readings.temperatures;
     // Captures per stage-2 reading once repeats are merged: the session's readings
     // (stage 1's too, taken the same way) average that many captures.
-    let per_reading = merge_captures(readings.poses, readings.capture_index)
-        .map_or(T::one(), |m| {
-            T::lit(readings.poses.len() as f64) / T::lit(m.len().max(1) as f64)
-        });
+    // Merged once: every pass of the fit and the refusal rule read the same poses.
+    let pairs = merge_captures(readings.poses, readings.capture_index);
+    let merged = pairs.as_ref().map_or(readings.poses, |p| p.as_slice());
+    let per_reading = T::lit(readings.poses.len() as f64) / T::lit(merged.len().max(1) as f64);
     let setup = Stage1Setup {
         turn: &readings.stage1,
         arm: &readings.arm,
@@ -448,9 +448,7 @@ pub fn solve<T: Real>(
             max_residual_rms_rad: T::zero(),
             ..*config
         };
-        let pairs = merge_captures(readings.poses, readings.capture_index);
-        let poses = pairs.as_ref().map_or(readings.poses, |p| p.as_slice());
-        fit(&h.model, poses, &fit_config)
+        fit(&h.model, merged, &fit_config)
             .map_err(SessionError::Stage2)
             .map(|r| (h, r))
     };
@@ -472,12 +470,10 @@ pub fn solve<T: Real>(
     }
     // The refusal rule on the last pass: a fault is named, a robot is solved.
     if let Ok((h, r)) = &result {
-        let pairs = merge_captures(readings.poses, readings.capture_index);
-        let poses = pairs.as_ref().map_or(readings.poses, |p| p.as_slice());
         let e = judge::evidence(
             &h.model,
             r,
-            poses,
+            merged,
             judge::capture_difference(readings.poses, readings.capture_index),
         );
         if let Err(fault) = judge::judge(&e, &config.refusal, config.max_residual_rms_rad) {
