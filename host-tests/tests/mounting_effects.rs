@@ -7,6 +7,8 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod common;
+
 use zerocal_sim::montecarlo::{run, setup, summarise, Method, DEFAULT_POSES};
 use zerocal_sim::world::{RealSession, WorldConfig};
 
@@ -111,14 +113,7 @@ fn mounting_measurement_table() {
         ),
     ];
     println!("robot               effect                          refused  worst j2..j6 (deg)                      within 0.005  k=2 covers (least joint)");
-    for robot in [
-        "kuka-kr6-r900-sixx",
-        "abb-irb140",
-        "fanuc-m20ia",
-        "yaskawa-gp7",
-        "staubli-tx2-60",
-        "ur5e",
-    ] {
+    for robot in common::FAMILY_PROFILES {
         let profile = zerocal_profile::builtin(robot).unwrap();
         let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
         for (name, world) in &effects {
@@ -208,14 +203,7 @@ fn margins_hold() {
         half_turn_error_deg: 1.0,
         ..WorldConfig::real()
     };
-    for robot in [
-        "kuka-kr6-r900-sixx",
-        "abb-irb140",
-        "fanuc-m20ia",
-        "yaskawa-gp7",
-        "staubli-tx2-60",
-        "ur5e",
-    ] {
+    for robot in common::FAMILY_PROFILES {
         let profile = zerocal_profile::builtin(robot).unwrap();
         let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
         let out = run(&profile, &plan, &world, &fit, 200, 5);

@@ -6,6 +6,8 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod common;
+
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::JOINTS;
@@ -231,14 +233,7 @@ fn real_arm_measurement_table() {
         ("fanuc-as-measured", WorldConfig::fanuc_as_measured()),
     ];
     println!("robot               effect             refused  worst |error| j2..j6 (deg)              worst residual RMS (deg)");
-    for robot in [
-        "kuka-kr6-r900-sixx",
-        "abb-irb140",
-        "fanuc-m20ia",
-        "yaskawa-gp7",
-        "staubli-tx2-60",
-        "ur5e",
-    ] {
+    for robot in common::FAMILY_PROFILES {
         let profile = zerocal_profile::builtin(robot).unwrap();
         let (plan, fit) = match setup(&profile, Method::Compensated, DEFAULT_POSES) {
             Ok(p) => p,

@@ -13,20 +13,11 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod common;
+
 use zerocal_sim::montecarlo::{run_with_tcp, setup, summarise, Method, DEFAULT_POSES};
 use zerocal_sim::robot::RobotSources;
 use zerocal_sim::world::WorldConfig;
-
-/// The profiles of the acceptance: one per controller family, and the PUMA 560.
-const PROFILES: [&str; 7] = [
-    "kuka-kr6-r900-sixx",
-    "abb-irb140",
-    "fanuc-m20ia",
-    "yaskawa-gp7",
-    "staubli-tx2-60",
-    "ur5e",
-    "puma560",
-];
 
 /// Sessions per profile.
 const SESSIONS: usize = 200;
@@ -44,7 +35,8 @@ const TCP_FACTOR: f64 = 1.10;
 /// identifiable", and the TCP needs the split (docs/error-budget.md).
 fn acceptance(world: &WorldConfig, what: &str, seed: u64, tcp_factor: Option<f64>) {
     println!("{what}: robot, refused/{SESSIONS}, coverage j2..j6, mean U(k=2) j2..j6 (deg), within 0.005 deg, TCP after/best (mean, worst)");
-    for robot in PROFILES {
+    // One profile per controller family, and the PUMA 560.
+    for robot in common::FAMILY_PROFILES.iter().chain(&["puma560"]) {
         let profile = zerocal_profile::builtin(robot).unwrap();
         let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
         let out = run_with_tcp(&profile, &plan, world, &fit, SESSIONS, seed, true);

@@ -6,20 +6,15 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+mod common;
+
 use zerocal_core::error::FitError;
 use zerocal_core::session::{solve, SessionError};
 use zerocal_sim::montecarlo::{setup, Method, DEFAULT_POSES};
 use zerocal_sim::robot::RobotSources;
 use zerocal_sim::world::{RealSession, SessionFault, WorldConfig};
 
-const PROFILES: [&str; 6] = [
-    "kuka-kr6-r900-sixx",
-    "abb-irb140",
-    "fanuc-m20ia",
-    "yaskawa-gp7",
-    "staubli-tx2-60",
-    "ur5e",
-];
+use common::FAMILY_PROFILES as PROFILES;
 
 /// Sessions per profile and fault.
 const SESSIONS: u64 = 10;

@@ -1,6 +1,16 @@
 //! Helpers shared by the scenario tests.
 #![allow(dead_code)] // each test binary uses its own subset
 
+/// One profile per controller family: the real-arm and refusal-rule tests run on these.
+pub const FAMILY_PROFILES: [&str; 6] = [
+    "kuka-kr6-r900-sixx",
+    "abb-irb140",
+    "fanuc-m20ia",
+    "yaskawa-gp7",
+    "staubli-tx2-60",
+    "ur5e",
+];
+
 use zerocal_core::model::{Convention, SensorModel, Tilt, WRIST_JOINTS};
 use zerocal_core::stage2::{covariance_bound, Extras, PoseReading, Stage2Model};
 use zerocal_sim::{Noise, PoseSampler, SimInclinometer, SimRobot};
