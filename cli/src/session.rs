@@ -21,6 +21,7 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use zerocal_core::bracket::{BracketMount, Brackets, SEAT_REPEATABILITY_DEG, UNCALIBRATED_BRACKET_DEG};
 use zerocal_core::capture::CaptureIndex;
 use zerocal_core::model::{Convention, JOINTS};
 use zerocal_core::report::Verdict;
@@ -49,10 +50,13 @@ pub struct SessionArgs {
     /// Robot profile, if not the one the export names: a built-in name or a TOML file.
     #[arg(long, value_name = "NAME")]
     pub robot: Option<String>,
-    /// The brackets' seat tolerance, ± deg about joint 2 (upper arm) and joint 6
-    /// (flange): enters Δθ2, Δθ3 and Δθ6 one to one (docs/mounting.md). Range: [0, 1] deg.
-    #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
-    pub mount_tolerance_deg: f64,
+    /// A calibrated bracket's seat repeatability on the robot, ± deg about joint 2
+    /// (upper arm) and joint 6 (flange): enters Δθ2, Δθ3 and Δθ6 one to one with the
+    /// calibration's uncertainty (default: the bracket design's requirement,
+    /// docs/mounting.md). An uncalibrated bracket carries ±0.5 deg instead. Range:
+    /// [0, 1] deg.
+    #[arg(long, default_value_t = SEAT_REPEATABILITY_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
+    pub seat_repeatability_deg: f64,
     /// How far stage 0's half turn may be off 180° (default: 1 deg, a turn by hand without
     /// a jig, a stated figure). On a tilted bench it moves the bias by this times the
     /// tilt, over 2. Range: [0, 10] deg.
@@ -85,6 +89,9 @@ pub struct ExportContents {
     pub stage1_temperature_c: Option<f64>,
     /// `# closing_reversal_deg`.
     pub closing: Option<ClosingReversal<f64>>,
+    /// `# bracket_upper_arm`, `# bracket_flange`: the calibrations the pendant applied
+    /// (none where the export has none).
+    pub brackets: Brackets<f64>,
     /// `# fit_extras`: the pendant's model.
     pub extras: Option<zerocal_core::stage2::Extras>,
     /// The line of `# stage1_readings_deg` (0: none).
@@ -126,6 +133,7 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
         stage1_temperature_c: None,
         closing: None,
         extras: None,
+        brackets: Brackets::default(),
         stage1_line: 0,
         poses: Vec::new(),
         lines: Vec::new(),
@@ -160,6 +168,12 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
                     Some(MetaItem::Stage1Temperature(t)) => export.stage1_temperature_c = Some(t),
                     Some(MetaItem::Closing(r)) => export.closing = Some(r),
                     Some(MetaItem::FitExtras(e)) => export.extras = Some(e),
+                    Some(MetaItem::Bracket(BracketMount::UpperArm, c)) => {
+                        export.brackets.upper_arm = c;
+                    }
+                    Some(MetaItem::Bracket(BracketMount::Flange, c)) => {
+                        export.brackets.flange = c;
+                    }
                     None => {}
                 }
             }
@@ -409,6 +423,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         convention,
         arm: profile.arm,
         masses,
+        brackets: &export.brackets,
         bias,
         stage1,
         poses: &export.poses,
@@ -453,7 +468,11 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         &export.poses,
         &BudgetInputs {
             extras: config.extras,
-            mount_tolerance_rad: args.mount_tolerance_deg.to_radians(),
+            bracket_u_rad: BracketMount::ALL.map(|m| {
+                export
+                    .brackets
+                    .standard_uncertainty_rad(m, args.seat_repeatability_deg.to_radians())
+            }),
             repeatability_rad: args.repeatability_deg.to_radians(),
             lost_motion_rad: args.lost_motion_deg.to_radians(),
         },
@@ -511,14 +530,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
                 .into(),
         );
     }
-    if args.mount_tolerance_deg == 0.0 {
-        notes.push(
-            "the brackets' seat tolerance is not included (--mount-tolerance-deg): a turn of \
-             the upper-arm bracket about joint 2 enters Δθ2 and Δθ3, one of the flange bracket \
-             about joint 6 enters Δθ6, one to one (docs/mounting.md)"
-                .to_owned(),
-        );
-    }
+    notes.extend(bracket_notes(&export.brackets, args.seat_repeatability_deg));
     if export.closing.is_none() && convention == Convention::Axis {
         notes.push(
             "no closing reversal: the sensor's bias drift was not measured; the session is \
@@ -874,4 +886,48 @@ pub fn render(j: &SessionJson) -> String {
         let _ = writeln!(out, "note: {n}");
     }
     out
+}
+
+/// What the report says of the brackets: each calibration applied (ID, turn,
+/// uncertainty, date, temperature), and each bracket without one by name, with what
+/// the budget carries for it.
+fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
+    BracketMount::ALL
+        .into_iter()
+        .map(|m| match brackets.get(m) {
+            Some(c) => format!(
+                "{} bracket {}: calibrated {}-{:02}-{:02} at {:.1} C, turn {:+.4} deg about the \
+                 joint's axis ({:+.4} deg across), u {:.4} deg, applied; with the seat's \
+                 +/-{} deg the budget's '{}' term is {:.4} deg",
+                m.name(),
+                c.id,
+                c.date / 10_000,
+                (c.date / 100) % 100,
+                c.date % 100,
+                c.temperature_c,
+                c.rotation_rad.x_rad.to_degrees(),
+                c.rotation_rad.y_rad.to_degrees(),
+                c.uncertainty_rad.to_degrees(),
+                seat_deg,
+                BudgetTerm::Mounting.name(),
+                brackets
+                    .standard_uncertainty_rad(m, seat_deg.to_radians())
+                    .to_degrees()
+            ),
+            None => format!(
+                "UNCALIBRATED {} bracket: no calibration in the export, so its turn about {} \
+                 (up to +/-{} deg for a bracket of the design) is in the offsets unmeasured; \
+                 the budget carries it whole ('{}', {:.3} deg at 1 sigma). Calibrate the \
+                 bracket (docs/mounting.md) and load it with the profile",
+                m.name(),
+                match m {
+                    BracketMount::UpperArm => "joint 2 (into j2 and, back, j3)",
+                    BracketMount::Flange => "joint 6 (into j6)",
+                },
+                UNCALIBRATED_BRACKET_DEG,
+                BudgetTerm::Mounting.name(),
+                brackets.standard_uncertainty_rad(m, 0.0).to_degrees()
+            ),
+        })
+        .collect()
 }

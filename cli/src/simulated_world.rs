@@ -15,7 +15,7 @@ use zerocal_profile::Profile;
 use zerocal_sim::montecarlo::{self, Method, DEFAULT_POSES};
 use zerocal_sim::robot::RobotSources;
 use zerocal_sim::sensor::SensorSources;
-use zerocal_sim::world::{RealSession, WorldConfig};
+use zerocal_sim::world::{BracketKnowledge, RealSession, WorldConfig};
 
 /// An error source of the simulated world.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -132,10 +132,23 @@ pub struct WorldArgs {
     /// How far the box warms over the session (the stated figure: 3). Range: [0, 60] K.
     #[arg(long, default_value_t = 3.0, value_name = "K", value_parser = RealIn::closed(0.0, 60.0, "K"))]
     pub warming_k: f64,
-    /// Both brackets seat within ± this about each axis (0: exact); the budget takes
-    /// the same tolerance. Range: [0, 1] deg.
+    /// Each bracket as made turns the pendant within ± this about its x and y (0:
+    /// exact). Range: [0, 1] deg.
     #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
     pub mount_tolerance_deg: f64,
+    /// Each bracket's yaw (about the pendant's z, not calibrated) within ± this.
+    /// Range: [0, 1] deg.
+    #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
+    pub bracket_yaw_deg: f64,
+    /// Each clip-on seats the bracket anew within ± this about each axis. Range:
+    /// [0, 0.1] deg.
+    #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 0.1, "deg"))]
+    pub seat_repeatability_deg: f64,
+    /// What the session knows of its brackets: `exact` (their turns, exactly),
+    /// `calibrated` (each calibrated on its reference as docs/mounting.md says) or
+    /// `uncalibrated`.
+    #[arg(long, value_enum, default_value_t = BracketsArg::Exact)]
+    pub brackets: BracketsArg,
     /// Skip the closing reversal (the bias' drift is then unmeasured).
     #[arg(long)]
     pub no_closing_reversal: bool,
@@ -143,6 +156,17 @@ pub struct WorldArgs {
     /// to read (a rehearsal before a real robot).
     #[arg(long, value_name = "FILE")]
     pub export: Option<std::path::PathBuf>,
+}
+
+/// `--brackets`: what the simulated session knows of its brackets.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BracketsArg {
+    /// Their turns, exactly.
+    Exact,
+    /// Calibrated on their references.
+    Calibrated,
+    /// Never calibrated.
+    Uncalibrated,
 }
 
 impl WorldArgs {
@@ -158,6 +182,13 @@ impl WorldArgs {
         }
         w.loose_bracket_deg = self.loose_bracket_deg;
         w.mount_tolerance_deg = self.mount_tolerance_deg;
+        w.bracket_yaw_deg = self.bracket_yaw_deg;
+        w.seat_repeatability_deg = self.seat_repeatability_deg;
+        w.brackets = match self.brackets {
+            BracketsArg::Exact => BracketKnowledge::Exact,
+            BracketsArg::Calibrated => BracketKnowledge::Calibrated,
+            BracketsArg::Uncalibrated => BracketKnowledge::Uncalibrated,
+        };
         w.closing_reversal = !self.no_closing_reversal;
         w
     }
@@ -203,7 +234,7 @@ pub fn run_session(
         .result
         .map_err(|e| CliError::Refused(e.to_string()))?;
     let verdict = Verdict::judge(&solution.fit, &fit, outcome.stage1.as_ref());
-    let budget = budget(&solution, &session.poses, &world.budget_inputs(fit.extras));
+    let budget = budget(&solution, &session.poses, &world.budget_inputs(fit.extras, &session.brackets));
     Ok(RealRun {
         profile,
         session,

@@ -155,7 +155,7 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
             let args = zerocal_cli::session::SessionArgs {
                 export: path,
                 robot: None,
-                mount_tolerance_deg: 0.0,
+                seat_repeatability_deg: zerocal_core::bracket::SEAT_REPEATABILITY_DEG,
                 half_turn_tolerance_deg: 0.0,
                 repeatability_deg: 0.0,
                 lost_motion_deg: 0.0,

@@ -32,6 +32,7 @@
 // Matrix code reads best with row and column indices, as the formulas write them.
 #![allow(clippy::needless_range_loop)]
 
+pub mod bracket;
 pub mod capture;
 pub mod decimal;
 pub mod error;

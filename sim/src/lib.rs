@@ -22,6 +22,12 @@ pub mod stats;
 pub mod tcp;
 pub mod world;
 
+/// No bracket calibrations: for the paper's simulations, whose pendant has no brackets.
+pub static NO_BRACKETS: zerocal_core::bracket::Brackets<f64> = zerocal_core::bracket::Brackets {
+    upper_arm: None,
+    flange: None,
+};
+
 pub use inclinometer::{Noise, SimInclinometer};
 pub use poses::{PoseSampler, SamplerError};
 pub use robot::SimRobot;

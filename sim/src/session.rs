@@ -243,6 +243,7 @@ impl SimSession {
             convention: self.sensor.model.convention,
             arm: self.robot.arm,
             masses: None,
+            brackets: &crate::NO_BRACKETS,
             bias: self
                 .stage0
                 .map_or(BiasSource::Unknown, BiasSource::Reversal),

@@ -14,12 +14,16 @@ use crate::SimRobot;
 use nalgebra::{Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use zerocal_core::bracket::{
+    bracket_id, calibrate, BracketCalibration, BracketMount, Brackets, REFERENCE_TURN_TOLERANCE_DEG,
+    SEAT_REPEATABILITY_DEG,
+};
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::session::{BiasSource, BudgetInputs, SessionReadings, StageTemperatures};
 use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage1::AxisOneTurn;
-use zerocal_core::stage2::PoseReading;
+use zerocal_core::stage2::{PoseReading, MEMS_CAPTURE_NOISE_DEG, MEMS_RANGE_DEG};
 use zerocal_profile::Profile;
 
 /// How each stage-2 pose is approached.
@@ -76,9 +80,17 @@ pub struct WorldConfig {
     pub warming_k: f64,
     /// Time constant of the warming (s).
     pub warming_tau_s: f64,
-    /// Each bracket's seat error, ± (deg) about each of the pendant's axes; 0: none.
-    /// No public figure: it is the bracket drawing's tolerance (docs/mounting.md).
+    /// Each bracket as made turns the pendant by up to ± this about the pendant's x and
+    /// y (deg), fixed for the bracket; 0: none. No public figure: it is the bracket
+    /// drawing's tolerance (docs/mounting.md).
     pub mount_tolerance_deg: f64,
+    /// Each bracket's yaw, the turn about the pendant's z, within ± this (deg), fixed
+    /// for the bracket (gravity does not see it on the reference: not calibrated).
+    pub bracket_yaw_deg: f64,
+    /// Each clip-on seats the bracket anew within ± this about each axis (deg).
+    pub seat_repeatability_deg: f64,
+    /// What the session knows of its brackets.
+    pub brackets: BracketKnowledge,
     /// A loose flange bracket: a fresh random seat within ± this (deg) at every pose.
     pub loose_bracket_deg: f64,
     /// How poses are approached.
@@ -104,14 +116,39 @@ pub struct WorldConfig {
     pub half_turn_error_deg: f64,
 }
 
+/// What a simulated session knows of its brackets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BracketKnowledge {
+    /// Their turns exactly (a world whose brackets are the profile's mounting, or
+    /// known to be): the calibrations carry the truth with no uncertainty.
+    Exact,
+    /// Each calibrated on its reference before the session, as docs/mounting.md says:
+    /// the pendant's reversal on a plate tilted by the bench's tilt, then in the
+    /// bracket on the reference, each half turn off by up to
+    /// [`zerocal_core::bracket::REFERENCE_TURN_TOLERANCE_DEG`].
+    Calibrated,
+    /// Never calibrated: the session has no calibrations.
+    Uncalibrated,
+}
+
 impl WorldConfig {
-    /// What the budget takes from this world: the fit's `extras`, and the bracket seat,
-    /// repeatability and lost motion of the sources that are on (0 for those off). One
-    /// place for `zerocal simulate` and the Monte-Carlo runs.
-    pub fn budget_inputs(&self, extras: zerocal_core::stage2::Extras) -> BudgetInputs<f64> {
+    /// What the budget takes from this world: the fit's `extras`, the session's
+    /// brackets, and the repeatability and lost motion of the sources that are on (0 for
+    /// those off). The seat repeatability stated is the design's
+    /// ([`SEAT_REPEATABILITY_DEG`]), or this world's where larger. One place for
+    /// `zerocal simulate` and the Monte-Carlo runs.
+    pub fn budget_inputs(
+        &self,
+        extras: zerocal_core::stage2::Extras,
+        brackets: &Brackets<f64>,
+    ) -> BudgetInputs<f64> {
+        let seat_rad = SEAT_REPEATABILITY_DEG
+            .max(self.seat_repeatability_deg)
+            .to_radians();
         BudgetInputs {
             extras,
-            mount_tolerance_rad: self.mount_tolerance_deg.to_radians(),
+            bracket_u_rad: BracketMount::ALL
+                .map(|m| brackets.standard_uncertainty_rad(m, seat_rad)),
             repeatability_rad: if self.robot.repeatability {
                 self.robot_spec.repeatability_deg.to_radians()
             } else {
@@ -134,6 +171,9 @@ impl WorldConfig {
             warming_k: 3.0,
             warming_tau_s: 600.0,
             mount_tolerance_deg: 0.0,
+            bracket_yaw_deg: 0.0,
+            seat_repeatability_deg: 0.0,
+            brackets: BracketKnowledge::Exact,
             loose_bracket_deg: 0.0,
             approach: ApproachScheme::BothSides,
             closing_reversal: true,
@@ -216,9 +256,11 @@ pub struct RealSession {
     pub poses: Vec<PoseReading<f64>>,
     /// Captures whose samples left mode 4's range (a pendant refuses them).
     pub outside_range: usize,
-    /// The seat errors of the upper-arm and flange brackets (rad, about the pendant's
-    /// x, y, z).
+    /// The turns of the upper-arm and flange brackets as seated in this session (rad,
+    /// the angles of R_x·R_y·R_z about the pendant's x, y, z).
     pub mount_errors_rad: [[f64; 3]; 2],
+    /// The brackets' calibrations the session has (none for uncalibrated brackets).
+    pub brackets: Brackets<f64>,
 }
 
 fn uniform(rng: &mut ChaCha8Rng, half: f64) -> f64 {
@@ -232,6 +274,87 @@ fn uniform(rng: &mut ChaCha8Rng, half: f64) -> f64 {
 fn small_rotation(rng: &mut ChaCha8Rng, half_deg: f64) -> ([f64; 3], Rotation3<f64>) {
     let a = [0; 3].map(|_| deg_to_rad(uniform(rng, half_deg)));
     (a, rot_x(a[0]) * rot_y(a[1]) * rot_z(a[2]))
+}
+
+/// The calibration of a bracket whose turn is known exactly (`made`: about x, y, z).
+fn exact_calibration(made: &[f64; 3]) -> BracketCalibration<f64> {
+    BracketCalibration {
+        // "EXACT" is a valid ID: six ASCII letters.
+        id: bracket_id("EXACT").unwrap_or_default(),
+        rotation_rad: Tilt::new(made[0], made[1]),
+        uncertainty_rad: 0.0,
+        date: SIM_CALIBRATION_DATE,
+        temperature_c: 23.0,
+    }
+}
+
+/// The date the simulated calibrations carry.
+const SIM_CALIBRATION_DATE: u32 = 20_261_127;
+
+/// Where a bracket is calibrated: the plate (tilted within ± `tilt_deg` about each
+/// horizontal axis), the box, and the temperature.
+struct BracketBench<'a> {
+    chip_in_box: &'a Rotation3<f64>,
+    tilt_deg: f64,
+    seat_deg: f64,
+    temperature_c: f64,
+}
+
+/// A bracket's calibration as docs/mounting.md describes it, with this world's sensor:
+/// the pendant's reversal on the plate, then in the bracket (turned by `made`, seated
+/// on its reference within the seat's repeatability) with the reference reversed on
+/// the plate, each half turn by hand within
+/// ±[`zerocal_core::bracket::REFERENCE_TURN_TOLERANCE_DEG`]. `None` if the core refuses
+/// the readings (then the session has no calibration for it).
+fn calibrate_bracket(
+    sensor: &mut Scl3300Unit,
+    bench: &BracketBench<'_>,
+    made: &[f64; 3],
+    id: &str,
+    rng: &mut ChaCha8Rng,
+) -> Option<BracketCalibration<f64>> {
+    let plate = rot_y(deg_to_rad(uniform(rng, bench.tilt_deg)))
+        * rot_x(deg_to_rad(uniform(rng, bench.tilt_deg)))
+        * rot_z(uniform(rng, core::f64::consts::PI));
+    let turn = |rng: &mut ChaCha8Rng| {
+        rot_z(core::f64::consts::PI + deg_to_rad(uniform(rng, REFERENCE_TURN_TOLERANCE_DEG)))
+    };
+    let bracket = rot_x(made[0]) * rot_y(made[1]) * rot_z(made[2]);
+    let mut read = |r: &Rotation3<f64>, rng: &mut ChaCha8Rng| {
+        sensor
+            .capture(
+                &up_in_sensor(&(r * bench.chip_in_box)),
+                bench.temperature_c,
+                rng,
+            )
+            .reading
+    };
+    let pendant = Reversal {
+        first: read(&plate, rng),
+        second: read(&(plate * turn(rng)), rng),
+    };
+    let seat_on_reference = small_rotation(rng, bench.seat_deg).1;
+    let seated = bracket * seat_on_reference;
+    let in_bracket = Reversal {
+        first: read(&(plate * seated), rng),
+        second: read(&(plate * turn(rng) * seated), rng),
+    };
+    let (rotation, u) = calibrate(
+        &pendant,
+        &in_bracket,
+        Convention::Axis,
+        deg_to_rad(MEMS_RANGE_DEG),
+        deg_to_rad(MEMS_CAPTURE_NOISE_DEG),
+    )
+    .ok()?;
+    BracketCalibration::new(
+        bracket_id(id).ok()?,
+        rotation,
+        u,
+        SIM_CALIBRATION_DATE,
+        bench.temperature_c,
+    )
+    .ok()
 }
 
 impl RealSession {
@@ -248,6 +371,7 @@ impl RealSession {
             convention: Convention::Axis,
             arm: profile.arm,
             masses: profile.mass_model(),
+            brackets: &self.brackets,
             bias: BiasSource::Reversal(self.stage0),
             stage1: self.stage1,
             poses: &self.poses,
@@ -363,9 +487,46 @@ impl RealSession {
             second: c1.reading,
         };
 
-        // The brackets' seats.
-        let (upper_seat, upper_rot) = small_rotation(&mut rng, world.mount_tolerance_deg);
-        let (flange_seat, flange_rot) = small_rotation(&mut rng, world.mount_tolerance_deg);
+        // The brackets: each as made (fixed), seated anew at each clip-on, and what the
+        // session knows of them.
+        let made = |rng: &mut ChaCha8Rng| {
+            [
+                deg_to_rad(uniform(rng, world.mount_tolerance_deg)),
+                deg_to_rad(uniform(rng, world.mount_tolerance_deg)),
+                deg_to_rad(uniform(rng, world.bracket_yaw_deg)),
+            ]
+        };
+        let (upper_made, flange_made) = (made(&mut rng), made(&mut rng));
+        let brackets = match world.brackets {
+            BracketKnowledge::Exact => Brackets {
+                upper_arm: Some(exact_calibration(&upper_made)),
+                flange: Some(exact_calibration(&flange_made)),
+            },
+            BracketKnowledge::Calibrated => {
+                let t_c = temperature(timeline.stage0_s[0]);
+                let mut cal = |b: &[f64; 3], id: &str, rng: &mut ChaCha8Rng| {
+                    let bench = BracketBench {
+                        chip_in_box: &chip_in_box,
+                        tilt_deg: world.bench_tilt_deg,
+                        seat_deg: world.seat_repeatability_deg,
+                        temperature_c: t_c,
+                    };
+                    calibrate_bracket(&mut sensor, &bench, b, id, rng)
+                };
+                Brackets {
+                    upper_arm: cal(&upper_made, "U-1", &mut rng),
+                    flange: cal(&flange_made, "F-1", &mut rng),
+                }
+            }
+            BracketKnowledge::Uncalibrated => Brackets::default(),
+        };
+        let seat = |b: &[f64; 3], rng: &mut ChaCha8Rng| {
+            let (s, r) = small_rotation(rng, world.seat_repeatability_deg);
+            let angles = [b[0] + s[0], b[1] + s[1], b[2] + s[2]];
+            (angles, rot_x(b[0]) * rot_y(b[1]) * rot_z(b[2]) * r)
+        };
+        let (upper_seat, upper_rot) = seat(&upper_made, &mut rng);
+        let (flange_seat, flange_rot) = seat(&flange_made, &mut rng);
 
         // Stage 1: the half turn of axis 1 at the profile's stage-1 pose, each reading
         // the mean of the two approaches when the world approaches from both sides.
@@ -476,6 +637,7 @@ impl RealSession {
             poses,
             outside_range,
             mount_errors_rad: [upper_seat, flange_seat],
+            brackets,
         }
     }
 

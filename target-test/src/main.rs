@@ -43,7 +43,8 @@ pub struct Case {
 /// `SESSIONS: [Case; N]` and the name `MEASURED` of the session whose solve is timed.
 mod vectors {
     use crate::Case;
-    use zerocal_core::model::{Convention, Tilt};
+    use zerocal_core::bracket::Brackets;
+use zerocal_core::model::{Convention, Tilt};
     use zerocal_core::session::BiasSource;
     use zerocal_core::stage0::Reversal;
     use zerocal_core::stage1::AxisOneTurn;
@@ -127,6 +128,7 @@ fn run(case: &Case) {
         convention: case.convention,
         arm: Arm::paper_with_j2_direction(case.j2_direction),
         masses: None,
+        brackets: &Brackets::default(),
         bias: case.bias,
         stage1: case.stage1,
         poses: case.poses,

@@ -3,6 +3,7 @@
 //! one the target search calls), and the correlations of the fitted offsets, naming the
 //! poorly separated pairs.
 
+use zerocal_core::bracket::SEAT_REPEATABILITY_DEG;
 use crate::error::CliError;
 use serde::Serialize;
 use zerocal_core::model::{JOINTS, WRIST_JOINTS};
@@ -76,7 +77,8 @@ pub fn predicted_k2_deg(
         fit,
         &BudgetInputs {
             extras: fit.extras,
-            mount_tolerance_rad: 0.0,
+            // Calibrated brackets at the design's seat repeatability (docs/mounting.md).
+            bracket_u_rad: [SEAT_REPEATABILITY_DEG.to_radians() / 3f64.sqrt(); 2],
             repeatability_rad: DEFAULT_REPEATABILITY_DEG.to_radians(),
             lost_motion_rad: DEFAULT_LOST_MOTION_DEG.to_radians(),
         },

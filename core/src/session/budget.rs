@@ -149,8 +149,9 @@ pub struct Budget<T> {
 pub struct BudgetInputs<T> {
     /// What the fit estimated.
     pub extras: Extras,
-    /// The brackets' seat tolerance (± half width, uniform; 0 when not stated) (rad).
-    pub mount_tolerance_rad: T,
+    /// Each bracket's standard uncertainty about the joint's axis it defines, upper arm
+    /// then flange ([`crate::bracket::Brackets::standard_uncertainty_rad`]) (rad).
+    pub bracket_u_rad: [T; 2],
     /// The robot's repeatability per joint, 1σ (rad).
     pub repeatability_rad: T,
     /// The gears' lost motion (rad): joint 3, loaded by the arm, may sit on gravity's
@@ -292,12 +293,13 @@ pub fn budget<T: Real>(
     terms[side][0] = u_side;
     terms[side][1] = u_side;
 
-    // Bracket seats: uniform within ±t, u = t/√3.
-    let u_mount = inputs.mount_tolerance_rad.abs() / T::lit(3.0).sqrt();
+    // The brackets: the upper arm's turn about joint 2 enters Δθ2 and, back, Δθ3; the
+    // flange's about joint 6 enters Δθ6 (docs/mounting.md).
+    let [u_upper, u_flange] = inputs.bracket_u_rad.map(|u| u.abs());
     let mounting = BudgetTerm::Mounting.index();
-    terms[mounting][0] = u_mount;
-    terms[mounting][1] = u_mount;
-    terms[mounting][SESSION_JOINTS - 1] = u_mount;
+    terms[mounting][0] = u_upper;
+    terms[mounting][1] = u_upper;
+    terms[mounting][SESSION_JOINTS - 1] = u_flange;
 
     // The geometry the poses could not separate, at its stated worst case.
     for k in 0..WRIST_JOINTS {
@@ -446,6 +448,7 @@ pub fn predict_budget<T: Real>(
         convention,
         arm: *arm,
         masses: robot.masses,
+        brackets: &crate::bracket::Brackets::default(),
         bias: super::BiasSource::Reversal(crate::stage0::Reversal {
             first: level_reading,
             second: level_reading,
@@ -534,7 +537,7 @@ mod tests {
             &fit,
             &BudgetInputs {
                 extras: fit.extras,
-                mount_tolerance_rad: 0.0,
+                bracket_u_rad: [0.0; 2],
                 repeatability_rad: 0.0,
                 lost_motion_rad,
             },

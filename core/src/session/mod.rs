@@ -18,6 +18,7 @@ pub use budget::{
     DEFAULT_REPEATABILITY_DEG, SENSOR_OFFSET_X_SPEC_G,
 };
 
+use crate::bracket::Brackets;
 use crate::capture::{Approach, CaptureIndex};
 use crate::decimal::Fixed;
 use crate::error::{FitError, StageError};
@@ -54,6 +55,9 @@ pub struct SessionReadings<'a, T: Real> {
     pub arm: Arm<T>,
     /// The links' masses for the sag term, if the profile has the geometry.
     pub masses: Option<MassModel<T>>,
+    /// The brackets' calibrations: each calibrated bracket's turn is applied to `arm`'s
+    /// mounting before anything is solved ([`crate::bracket`]).
+    pub brackets: &'a Brackets<T>,
     /// Stage 0.
     pub bias: BiasSource<T>,
     /// Stage 1: the half turn of axis 1 with the commanded joints 1 and 2.
@@ -398,9 +402,12 @@ pub fn solve<T: Real>(
     let pairs = merge_captures(readings.poses, readings.capture_index);
     let merged = pairs.as_ref().map_or(readings.poses, |p| p.as_slice());
     let per_reading = T::lit(readings.poses.len() as f64) / T::lit(merged.len().max(1) as f64);
+    // The pendant as the brackets seat it: the profile's mountings turned by each
+    // calibrated bracket.
+    let arm = readings.brackets.apply(&readings.arm);
     let setup = Stage1Setup {
         turn: &readings.stage1,
-        arm: &readings.arm,
+        arm: &arm,
         convention: readings.convention,
         range_rad: range,
     };
@@ -434,7 +441,7 @@ pub fn solve<T: Real>(
     let stage2 = |stage1: &Stage1Result<T>| {
         let h = handover_at(
             stage1,
-            readings.arm,
+            arm,
             readings.convention,
             bias_t.as_ref(),
             temps.stage1_c,

@@ -7,6 +7,7 @@ use super::{
     TEMPERATURE_RANGE_C,
 };
 use core::fmt::{self, Write};
+use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketMount};
 use zerocal_core::decimal::Fixed;
 use zerocal_core::model::{Convention, Tilt};
 use zerocal_core::real::{deg_to_rad, Real};
@@ -34,6 +35,45 @@ pub enum MetaItem<T> {
     Closing(ClosingReversal<T>),
     /// `# fit_extras gain,cross_z,…|none`: what the pendant's fit estimated.
     FitExtras(Extras),
+    /// `# bracket_upper_arm|bracket_flange id ID rot_deg x,y u_deg u date YYYYMMDD
+    /// temp_c t` (`None` for `none`): the bracket's calibration the session applied.
+    Bracket(BracketMount, Option<BracketCalibration<T>>),
+}
+
+/// The metadata key of `mount`'s bracket.
+pub fn bracket_key(mount: BracketMount) -> &'static str {
+    match mount {
+        BracketMount::UpperArm => "bracket_upper_arm",
+        BracketMount::Flange => "bracket_flange",
+    }
+}
+
+/// Writes `# bracket_… id ID rot_deg x,y u_deg u date YYYYMMDD temp_c t`, or `… none`
+/// for a bracket without a calibration.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_bracket<T: Real>(
+    w: &mut Line,
+    mount: BracketMount,
+    calibration: Option<&BracketCalibration<T>>,
+) -> fmt::Result {
+    write!(w, "# {}", bracket_key(mount))?;
+    let Some(c) = calibration else {
+        return w.write_str(" none");
+    };
+    write!(w, " id {} rot_deg ", c.id)?;
+    deg(w, c.rotation_rad.x_rad)?;
+    w.write_char(',')?;
+    deg(w, c.rotation_rad.y_rad)?;
+    w.write_str(" u_deg ")?;
+    deg(w, c.uncertainty_rad)?;
+    write!(
+        w,
+        " date {} temp_c {}",
+        c.date,
+        Fixed::new(c.temperature_c.to_f64(), super::TEMPERATURE_DECIMALS)
+    )
 }
 
 /// The names of [`Extras`]' groups in `# fit_extras`, in order.
@@ -249,6 +289,53 @@ pub fn parse_meta<T: Real>(
                 _ => return Err(bad),
             }
         }
+        "bracket_upper_arm" | "bracket_flange" => {
+            let mount = if key == "bracket_flange" {
+                BracketMount::Flange
+            } else {
+                BracketMount::UpperArm
+            };
+            let bad = LogError::BadMetadata {
+                line,
+                key: bracket_key(mount),
+            };
+            let first = rest.next();
+            if first == Some("none") {
+                if rest.next().is_some() {
+                    return Err(bad);
+                }
+                return Ok(Some(MetaItem::Bracket(mount, None)));
+            }
+            fn field<'s>(name: &str, rest: &mut core::str::SplitWhitespace<'s>) -> Option<&'s str> {
+                (rest.next() == Some(name)).then(|| rest.next()).flatten()
+            }
+            let id = (first == Some("id"))
+                .then(|| rest.next())
+                .flatten()
+                .and_then(|s| bracket_id(s).ok());
+            let rotation = field("rot_deg", &mut rest).and_then(|v| pair(Some(v)));
+            let u = field("u_deg", &mut rest)
+                .and_then(&parse)
+                .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
+            let date = field("date", &mut rest).and_then(|d| d.parse::<u32>().ok());
+            let temp = field("temp_c", &mut rest).and_then(&parse).filter(|t| {
+                t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t)
+            });
+            match (id, rotation, u, date, temp, rest.next()) {
+                (Some(id), Some(rotation), Some(u), Some(date), Some(t), None) => {
+                    let c = BracketCalibration::new(
+                        id,
+                        rotation,
+                        deg_to_rad(T::lit(u)),
+                        date,
+                        T::lit(t),
+                    )
+                    .map_err(|_| bad)?;
+                    MetaItem::Bracket(mount, Some(c))
+                }
+                _ => return Err(bad),
+            }
+        }
         // Informational lines the pendant writes (each capture of stage 1, its result,
         // stage 2's): the solver recomputes them from the readings.
         "stage1_captures_deg" | "stage1" | "stage2" => return Ok(None),
@@ -282,7 +369,7 @@ pub fn metadata_key(comment: &str) -> Option<&str> {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MetaKeys {
     /// The line each item was first given on (0: not yet).
-    first_line: [usize; 6],
+    first_line: [usize; 8],
 }
 
 impl MetaKeys {
@@ -299,6 +386,8 @@ impl MetaKeys {
             MetaItem::Stage1Temperature(_) => (3, "stage1_temp_c"),
             MetaItem::Closing(_) => (4, "closing_reversal_deg"),
             MetaItem::FitExtras(_) => (5, "fit_extras"),
+            MetaItem::Bracket(BracketMount::UpperArm, _) => (6, "bracket_upper_arm"),
+            MetaItem::Bracket(BracketMount::Flange, _) => (7, "bracket_flange"),
         };
         match self.first_line[slot] {
             0 => {

@@ -43,7 +43,10 @@ mod write;
 
 pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
 pub use error::{LogError, ShortText};
-pub use meta::{metadata_key, parse_meta, write_fit_extras, write_reversal, MetaItem, MetaKeys};
+pub use meta::{
+    bracket_key, metadata_key, parse_meta, write_bracket, write_fit_extras, write_reversal, MetaItem,
+    MetaKeys,
+};
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;
 pub use write::{
@@ -124,7 +127,7 @@ pub fn quantise_temperature<T: Real>(celsius: T) -> T {
 pub const EXPORT_DECIMALS: u8 = 12;
 
 /// Every metadata key an export may hold (the first word of a `# key value…` line).
-pub const METADATA_KEYS: [&str; 10] = [
+pub const METADATA_KEYS: [&str; 12] = [
     "robot",
     "stage0_bias_deg",
     "stage0_reversal_deg",
@@ -135,6 +138,8 @@ pub const METADATA_KEYS: [&str; 10] = [
     "closing_reversal_deg",
     "fit_extras",
     "stage2",
+    "bracket_upper_arm",
+    "bracket_flange",
 ];
 
 /// [`METADATA_KEYS`], comma-separated, for messages.

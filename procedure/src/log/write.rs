@@ -1,7 +1,8 @@
 //! The writers: the pendant's export a line at a time ([`Export`]), a stage-2 log's
 //! row and an export's row, and the degree format they share.
 
-use super::meta::{write_fit_extras, write_reversal};
+use super::meta::{write_bracket, write_fit_extras, write_reversal};
+use zerocal_core::bracket::{BracketMount, Brackets};
 use super::{approach_name, deg, pair, Line, EXPORT_HEADER};
 use crate::capture::Capture;
 use crate::export_trailer::TrailerSum;
@@ -44,6 +45,8 @@ pub struct ExportSession<'a, T: Real, R> {
     pub stage1_result: Option<Stage1Result<T>>,
     /// The terms the pendant's fit estimated, so the desktop solves with the same.
     pub fit_extras: Extras,
+    /// The brackets' calibrations the session applied.
+    pub brackets: &'a Brackets<T>,
     /// The pendant's result, once the session is done.
     pub result: Option<&'a Result<SessionSolution<T>, SessionError>>,
 }
@@ -87,7 +90,7 @@ pub fn export<T: Real, R: CaptureRows<T>>(session: ExportSession<'_, T, R>) -> E
     }
 }
 
-const EXPORT_HEAD: usize = 11;
+const EXPORT_HEAD: usize = 13;
 
 /// Most lines an export has: the head, a row per capture, the result line and the
 /// trailer.
@@ -191,6 +194,8 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
                 None => w.write_str("# closing reversal not made"),
             },
             9 => write_fit_extras(w, s.fit_extras),
+            10 => write_bracket(w, BracketMount::UpperArm, s.brackets.upper_arm.as_ref()),
+            11 => write_bracket(w, BracketMount::Flange, s.brackets.flange.as_ref()),
             _ => w.write_str(EXPORT_HEADER),
         }
     }

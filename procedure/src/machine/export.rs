@@ -39,6 +39,7 @@ impl<T: Real> ProcedureState<T> {
                 .and_then(|o| o.stage1)
                 .or_else(|| self.stage1().copied()),
             fit_extras: config.fit.extras,
+            brackets: &config.brackets,
             result: self.outcome().map(|o| &o.result),
         }
     }

@@ -37,6 +37,7 @@ use crate::stillness::{Stillness, StillnessConfig};
 pub use profile::{ControllerDisplay, ControllerOffset, PendantProfile};
 pub use record::{Record, RecordError};
 pub use state::{ProcedureState, View};
+use zerocal_core::bracket::Brackets;
 use zerocal_core::error::StageError;
 use zerocal_core::model::{
     Arm, BaseTilt, Convention, SensorModel, Tilt, TiltAxis, JOINTS, WRIST_JOINTS,
@@ -61,6 +62,9 @@ pub struct ProcedureConfig<T: Real> {
     pub arm: Arm<T>,
     /// The links' masses for the sag term (`None`: no sag term).
     pub masses: Option<MassModel<T>>,
+    /// The brackets' calibrations, applied to `arm`'s mountings by the solver and
+    /// written into the export.
+    pub brackets: Brackets<T>,
     /// When to call the pendant still.
     pub stillness: StillnessConfig<T>,
     /// Moving this far from the last capture arms the next one (rad).
@@ -84,6 +88,7 @@ impl<T: Real> Default for ProcedureConfig<T> {
             convention: Convention::Axis,
             arm: Arm::paper(),
             masses: None,
+            brackets: Brackets::default(),
             stillness: StillnessConfig::default(),
             // Four times the stillness threshold: a robot going to a new pose moves the
             // reading by degrees, noise never by a fifth of one.

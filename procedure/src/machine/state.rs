@@ -425,7 +425,7 @@ impl<T: Real> ProcedureState<T> {
     /// reversal, as the session solver takes them (`None` before stage 1 is complete).
     pub(super) fn readings<'a>(
         &self,
-        config: &ProcedureConfig<T>,
+        config: &'a ProcedureConfig<T>,
         poses: &'a [PoseReading<T>],
         capture_index: &'a [CaptureIndex],
     ) -> Option<SessionReadings<'a, T>> {
@@ -433,6 +433,7 @@ impl<T: Real> ProcedureState<T> {
             convention: config.convention,
             arm: config.arm,
             masses: config.masses,
+            brackets: &config.brackets,
             bias: self.bias_source(),
             stage1: self.axis_one_turn(config)?,
             poses,

@@ -5,6 +5,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 use anyhow::{bail, Result};
+use zerocal_core::bracket::Brackets;
 use zerocal_core::error::Terse;
 use zerocal_core::model::{Arm, Tilt};
 use zerocal_core::real::rad_to_deg;
@@ -50,6 +51,7 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
             convention: case.convention,
             arm: Arm::paper_with_j2_direction(case.j2_direction),
             masses: None,
+            brackets: &Brackets::default(),
             bias: match &case.bias {
                 BiasSource::Reversal(r) => BiasSource::Reversal(Reversal {
                     first: tilt(&r.first),
