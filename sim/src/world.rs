@@ -702,6 +702,13 @@ impl RealSession {
                 self.closing.temperature_c
             )
         );
+        // The brackets' lines in the pendant's own format.
+        for m in BracketMount::ALL {
+            let mut line = zerocal_procedure::log::Line::new();
+            if zerocal_procedure::log::write_bracket(&mut line, m, self.brackets.get(m)).is_ok() {
+                let _ = writeln!(out, "{line}");
+            }
+        }
         let _ = writeln!(out, "{}", zerocal_procedure::log::LOG_HEADER);
         for p in &self.poses {
             let joints: Vec<String> = p.joints_rad.iter().map(|q| d(*q)).collect();
