@@ -21,7 +21,9 @@ use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use zerocal_core::bracket::{BracketMount, Brackets, SEAT_REPEATABILITY_DEG, UNCALIBRATED_BRACKET_DEG};
+use zerocal_core::bracket::{
+    BracketMount, Brackets, SEAT_REPEATABILITY_DEG, UNCALIBRATED_BRACKET_DEG,
+};
 use zerocal_core::capture::CaptureIndex;
 use zerocal_core::model::{Convention, JOINTS};
 use zerocal_core::report::Verdict;

@@ -234,7 +234,11 @@ pub fn run_session(
         .result
         .map_err(|e| CliError::Refused(e.to_string()))?;
     let verdict = Verdict::judge(&solution.fit, &fit, outcome.stage1.as_ref());
-    let budget = budget(&solution, &session.poses, &world.budget_inputs(fit.extras, &session.brackets));
+    let budget = budget(
+        &solution,
+        &session.poses,
+        &world.budget_inputs(fit.extras, &session.brackets),
+    );
     Ok(RealRun {
         profile,
         session,

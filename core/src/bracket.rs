@@ -25,9 +25,10 @@
 //! ([`BRACKET_YAW_TOLERANCE_DEG`]).
 
 use crate::error::StageError;
-use crate::model::{rot_x, rot_y, Arm, Convention, Tilt};
+use crate::model::{rot_x, rot_y, Arm, Convention, Gain, Tilt};
 use crate::real::{deg_to_rad, Real};
 use crate::stage0::Reversal;
+use nalgebra::Vector3;
 
 /// The seat repeatability the bracket designs require: a bracket taken off and clipped
 /// on again seats within ±this about each axis (uniform). A design requirement of
@@ -51,6 +52,18 @@ pub const BRACKET_YAW_TOLERANCE_DEG: f64 = 0.5;
 /// stop (± half width, uniform): it moves a reversal's half-sum by half the turn's
 /// error times the plate's tilt (the readings' half difference).
 pub const REFERENCE_TURN_TOLERANCE_DEG: f64 = 1.0;
+
+/// The plate a bracket is calibrated on must be level within this (deg, the
+/// magnitude of the pendant's reversal half difference): a half turn by hand is off
+/// 180° by up to [`REFERENCE_TURN_TOLERANCE_DEG`], which moves a reversal's half-sum by
+/// half that times the tilt; at 0.1° that is at most 0.0009°. A surface plate is
+/// levelled with its stand's screws and the pendant's own reading.
+pub const PLATE_LEVEL_MAX_DEG: f64 = 0.1;
+
+/// The largest turn a calibration accepts about either axis (deg): twice what an
+/// uncalibrated bracket of the design may be off, so that a bracket at the edge of
+/// its tolerance is still measured, and a reading of something else is refused.
+pub const MAX_BRACKET_TURN_DEG: f64 = 2.0 * UNCALIBRATED_BRACKET_DEG;
 
 /// The longest bracket ID (bytes of ASCII).
 pub const BRACKET_ID_LEN: usize = 12;
@@ -139,10 +152,15 @@ pub enum BracketError {
     BadId,
     /// A date that is not a calendar day `YYYYMMDD` (years 2000-2999).
     BadDate,
-    /// A calibrated turn beyond [`UNCALIBRATED_BRACKET_DEG`] (either axis), or a
+    /// A calibrated turn beyond [`MAX_BRACKET_TURN_DEG`] (either axis), or a
     /// non-finite or negative uncertainty: not a bracket of the design, or a reading of
     /// something else.
     Implausible,
+    /// The plate is tilted more than [`PLATE_LEVEL_MAX_DEG`] (deg, as read).
+    PlateNotLevel {
+        /// The plate's tilt the reversal read (deg).
+        tilt_deg: f32,
+    },
     /// A reversal the sensor could not have read.
     Reading(StageError),
 }
@@ -157,9 +175,14 @@ impl core::fmt::Display for BracketError {
             BracketError::BadDate => f.write_str("a calibration date is YYYYMMDD, a real day"),
             BracketError::Implausible => write!(
                 f,
-                "the bracket turns the pendant by more than {UNCALIBRATED_BRACKET_DEG} deg, or \
+                "the bracket turns the pendant by more than {MAX_BRACKET_TURN_DEG} deg, or \
                  its uncertainty is not a number >= 0: check the bracket seats on its \
                  reference and the pendant in the bracket"
+            ),
+            BracketError::PlateNotLevel { tilt_deg } => write!(
+                f,
+                "the plate is tilted {tilt_deg:.3} deg, more than {PLATE_LEVEL_MAX_DEG}: level \
+                 it (the half turns by hand are not exact) and repeat"
             ),
             BracketError::Reading(e) => write!(f, "a reading of the calibration: {e}"),
         }
@@ -200,7 +223,7 @@ impl<T: Real> BracketCalibration<T> {
         temperature_c: T,
     ) -> Result<Self, BracketError> {
         check_date(date)?;
-        let limit = deg_to_rad(T::lit(UNCALIBRATED_BRACKET_DEG));
+        let limit = deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG));
         let plausible = rotation_rad.is_finite()
             && rotation_rad.x_rad.abs() <= limit
             && rotation_rad.y_rad.abs() <= limit
@@ -257,6 +280,15 @@ pub fn calibrate<T: Real>(
     let seated = in_bracket
         .bias(convention, range_rad)
         .map_err(BracketError::Reading)?;
+    let level = deg_to_rad(T::lit(PLATE_LEVEL_MAX_DEG));
+    for r in [pendant, in_bracket] {
+        let tilt = plate_tilt(r);
+        if !(tilt <= level) {
+            return Err(BracketError::PlateNotLevel {
+                tilt_deg: crate::real::rad_to_deg(tilt).to_f64() as f32,
+            });
+        }
+    }
     let d = seated.minus(&alone);
     let rotation = match convention {
         Convention::Rpy => d,
@@ -270,9 +302,8 @@ pub fn calibrate<T: Real>(
     let half_turn_u = |r: &Reversal<T>| plate_tilt(r) * turn * T::lit(0.5) / T::lit(3.0).sqrt();
     let (u0, u1) = (half_turn_u(pendant), half_turn_u(in_bracket));
     let u = (capture_noise_rad * capture_noise_rad + u0 * u0 + u1 * u1).sqrt();
-    let limit = deg_to_rad(T::lit(UNCALIBRATED_BRACKET_DEG));
-    if !(rotation.is_finite() && rotation.x_rad.abs() <= limit && rotation.y_rad.abs() <= limit)
-    {
+    let limit = deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG));
+    if !(rotation.is_finite() && rotation.x_rad.abs() <= limit && rotation.y_rad.abs() <= limit) {
         return Err(BracketError::Implausible);
     }
     Ok((rotation, u))
@@ -301,6 +332,32 @@ impl<T: Real> Brackets<T> {
             out.flange_mount = arm.flange_mount * r;
         }
         out
+    }
+
+    /// [`Brackets::apply`] with each calibration read back through the sensor's gain
+    /// and cross-axis terms `gain` (as the session's fit estimated them): the
+    /// calibration's reversals read the bracket's turn as `(I + E)·Rᵀẑ`'s horizontal
+    /// part, so a 0.5° turn read with 1 % cross-axis error is 0.005° off; this undoes
+    /// it to first order (the calibration made with this pendant's chip).
+    pub fn apply_with_gain(&self, arm: &Arm<T>, gain: &Gain<T>) -> Arm<T> {
+        let corrected = |c: &BracketCalibration<T>| {
+            let (a, b) = (c.rotation_rad.x_rad, c.rotation_rad.y_rad);
+            // The horizontal part of Rᵀẑ as read, for R = R_x(a)·R_y(b).
+            let read = Vector3::new(-(b.sin() * a.cos()), a.sin(), T::zero());
+            let e = gain.apply_linear(&read) - read;
+            let (ux, uy) = (read.x - e.x, read.y - e.y);
+            let a = uy.clamp(-T::one(), T::one()).asin();
+            let b = (-ux / a.cos()).clamp(-T::one(), T::one()).asin();
+            BracketCalibration {
+                rotation_rad: Tilt::new(a, b),
+                ..c.clone()
+            }
+        };
+        Brackets {
+            upper_arm: self.upper_arm.as_ref().map(corrected),
+            flange: self.flange.as_ref().map(corrected),
+        }
+        .apply(arm)
     }
 
     /// What `mount`'s bracket leaves in the zero it defines, one standard uncertainty
@@ -338,7 +395,7 @@ mod tests {
             .reading
     }
 
-    /// A bracket turned by known angles, calibrated on a plate tilted 0.36° with a chip
+    /// A bracket turned by known angles, calibrated on a plate tilted 0.07° with a chip
     /// offset of 0.58°: without yaw the reversals give the turn back to 1e-6 rad (an
     /// exact half turn, no noise: the method, not the sensor); a yaw c, which gravity
     /// cannot see, moves the x part by about c·b, the second order the budget's
@@ -346,7 +403,7 @@ mod tests {
     #[test]
     fn calibration_returns_the_brackets_turn() {
         let bias = Tilt::from_deg(0.5, -0.3);
-        let plate = rot_x(deg_to_rad(0.3)) * rot_y(deg_to_rad(-0.2)) * crate::model::rot_z(0.7);
+        let plate = rot_x(deg_to_rad(0.06)) * rot_y(deg_to_rad(-0.04)) * crate::model::rot_z(0.7);
         let half = crate::model::rot_z(core::f64::consts::PI);
         let (a, b) = (deg_to_rad(0.41), deg_to_rad(-0.27));
         let pendant = Reversal {
@@ -363,12 +420,31 @@ mod tests {
             let (rot, u) = calibrate(&pendant, &seated, Convention::Axis, 0.2, 1e-5).unwrap();
             let bound = 1e-6 + 1.05 * (c * b).abs();
             assert!(
-                (rot.x_rad - a).abs() < bound && (rot.y_rad - b).abs() < bound + 1.05 * (c * a).abs(),
+                (rot.x_rad - a).abs() < bound
+                    && (rot.y_rad - b).abs() < bound + 1.05 * (c * a).abs(),
                 "yaw {yaw_deg}: {rot:?}"
             );
-            // The plate's 0.36° of tilt and a turn within ±1°: 0.36°·1°/2/√3 in rad each.
-            assert!(u > 1e-5 && u < 1e-4, "{u}");
+            // The plate's 0.07° of tilt and a turn within ±1°: 0.07°·1°/2/√3 in rad each,
+            // with the 1e-5 rad of noise.
+            assert!(u > 1e-5 && u < 2e-5, "{u}");
         }
+    }
+
+    /// A plate tilted 0.2° is refused by name.
+    #[test]
+    fn a_tilted_plate_is_refused() {
+        let bias = Tilt::from_deg(0.5, -0.3);
+        let plate = rot_x(deg_to_rad(0.2));
+        let half = crate::model::rot_z(core::f64::consts::PI);
+        let r = Reversal {
+            first: read(&plate, &bias),
+            second: read(&(plate * half), &bias),
+        };
+        let e = calibrate(&r, &r, Convention::Axis, 0.2, 1e-5).unwrap_err();
+        assert!(
+            matches!(e, BracketError::PlateNotLevel { tilt_deg } if (tilt_deg - 0.2).abs() < 0.01),
+            "{e:?}"
+        );
     }
 
     #[test]

@@ -10,7 +10,7 @@
 mod common;
 
 use zerocal_sim::montecarlo::{run, setup, summarise, Method, DEFAULT_POSES};
-use zerocal_sim::world::{RealSession, WorldConfig};
+use zerocal_sim::world::{BracketKnowledge, RealSession, WorldConfig};
 
 /// Off by default, and a world with them explicitly at 0 draws the very same session.
 #[test]
@@ -74,43 +74,62 @@ fn an_inexact_half_turn_on_a_tilted_bench_moves_the_bias() {
     );
 }
 
+/// The pendant's own effects at the top of their ranges, every source of today's error
+/// table on beside them: brackets as made within ±0.5° (tilt) and ±0.5° (yaw), each
+/// clip-on within the design's seat repeatability, the chip within ±1° in its box, the
+/// bench tilted 0.5° and its half turns within ±1°.
+fn every_mounting_effect() -> WorldConfig {
+    WorldConfig {
+        mount_tolerance_deg: 0.5,
+        bracket_yaw_deg: 0.5,
+        seat_repeatability_deg: zerocal_core::bracket::SEAT_REPEATABILITY_DEG,
+        brackets: BracketKnowledge::Calibrated,
+        chip_rotation_deg: 1.0,
+        bench_tilt_deg: 0.5,
+        half_turn_error_deg: 1.0,
+        ..WorldConfig::real()
+    }
+}
+
 /// The measurement table: 30 sessions per profile and effect, every source of today's
 /// error table on beside it.
 #[test]
 fn mounting_measurement_table() {
-    let effects: [(&str, WorldConfig); 4] = [
+    let all = every_mounting_effect();
+    let effects: [(&str, WorldConfig); 5] = [
         (
-            "brackets +/-0.5 deg",
+            "brackets 0.5/0.5 uncalibrated",
             WorldConfig {
-                mount_tolerance_deg: 0.5,
-                ..WorldConfig::real()
+                brackets: BracketKnowledge::Uncalibrated,
+                ..all
             },
         ),
         (
-            "chip +/-1 deg, brackets +/-0.5",
+            "brackets calibrated",
             WorldConfig {
-                chip_rotation_deg: 1.0,
-                mount_tolerance_deg: 0.5,
-                ..WorldConfig::real()
+                chip_rotation_deg: 0.0,
+                bench_tilt_deg: 2.0,
+                half_turn_error_deg: 0.0,
+                ..all
             },
         ),
         (
-            "bench 0.5 deg, half turn +/-1",
+            "+ chip +/-1",
+            WorldConfig {
+                bench_tilt_deg: 2.0,
+                half_turn_error_deg: 0.0,
+                ..all
+            },
+        ),
+        (
+            "bench 0.5, half turn +/-1 only",
             WorldConfig {
                 bench_tilt_deg: 0.5,
                 half_turn_error_deg: 1.0,
                 ..WorldConfig::real()
             },
         ),
-        (
-            "chip +/-1, half turn +/-1",
-            WorldConfig {
-                chip_rotation_deg: 1.0,
-                bench_tilt_deg: 0.5,
-                half_turn_error_deg: 1.0,
-                ..WorldConfig::real()
-            },
-        ),
+        ("all of them", all),
     ];
     println!("robot               effect                          refused  worst j2..j6 (deg)                      within 0.005  k=2 covers (least joint)");
     for robot in common::FAMILY_PROFILES {
@@ -197,11 +216,7 @@ fn the_half_turn_term_scales_with_the_turn_and_bounds_it() {
 fn margins_hold() {
     let world = WorldConfig {
         robot: zerocal_sim::robot::RobotSources::REAL_ARM,
-        mount_tolerance_deg: 0.5,
-        chip_rotation_deg: 1.0,
-        bench_tilt_deg: 0.5,
-        half_turn_error_deg: 1.0,
-        ..WorldConfig::real()
+        ..every_mounting_effect()
     };
     for robot in common::FAMILY_PROFILES {
         let profile = zerocal_profile::builtin(robot).unwrap();

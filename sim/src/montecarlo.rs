@@ -95,7 +95,11 @@ pub fn run_with_tcp(
             }
             let result = solve(&readings, fit).result;
             let budget = result.as_ref().ok().map(|sol| {
-                let mut b = budget(sol, &session.poses, &world.budget_inputs(fit.extras, &session.brackets));
+                let mut b = budget(
+                    sol,
+                    &session.poses,
+                    &world.budget_inputs(fit.extras, &session.brackets),
+                );
                 // Stage 0's half turn, at the world's own tolerance.
                 if world.half_turn_error_deg > 0.0 {
                     if let Ok(Some(w)) =

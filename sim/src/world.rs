@@ -15,8 +15,8 @@ use nalgebra::{Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::bracket::{
-    bracket_id, calibrate, BracketCalibration, BracketMount, Brackets, REFERENCE_TURN_TOLERANCE_DEG,
-    SEAT_REPEATABILITY_DEG,
+    bracket_id, calibrate, BracketCalibration, BracketMount, Brackets,
+    REFERENCE_TURN_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
 };
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
@@ -91,6 +91,10 @@ pub struct WorldConfig {
     pub seat_repeatability_deg: f64,
     /// What the session knows of its brackets.
     pub brackets: BracketKnowledge,
+    /// The surface plate the brackets are calibrated on, levelled within ± this about
+    /// each horizontal axis (deg): the calibration refuses a plate tilted more than
+    /// [`zerocal_core::bracket::PLATE_LEVEL_MAX_DEG`].
+    pub plate_tilt_deg: f64,
     /// A loose flange bracket: a fresh random seat within ± this (deg) at every pose.
     pub loose_bracket_deg: f64,
     /// How poses are approached.
@@ -174,6 +178,7 @@ impl WorldConfig {
             bracket_yaw_deg: 0.0,
             seat_repeatability_deg: 0.0,
             brackets: BracketKnowledge::Exact,
+            plate_tilt_deg: 0.05,
             loose_bracket_deg: 0.0,
             approach: ApproachScheme::BothSides,
             closing_reversal: true,
@@ -507,7 +512,7 @@ impl RealSession {
                 let mut cal = |b: &[f64; 3], id: &str, rng: &mut ChaCha8Rng| {
                     let bench = BracketBench {
                         chip_in_box: &chip_in_box,
-                        tilt_deg: world.bench_tilt_deg,
+                        tilt_deg: world.plate_tilt_deg,
                         seat_deg: world.seat_repeatability_deg,
                         temperature_c: t_c,
                     };

@@ -3,9 +3,9 @@
 //! one the target search calls), and the correlations of the fitted offsets, naming the
 //! poorly separated pairs.
 
-use zerocal_core::bracket::SEAT_REPEATABILITY_DEG;
 use crate::error::CliError;
 use serde::Serialize;
+use zerocal_core::bracket::SEAT_REPEATABILITY_DEG;
 use zerocal_core::model::{JOINTS, WRIST_JOINTS};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::{

@@ -438,7 +438,7 @@ pub fn solve<T: Real>(
             };
         }
     };
-    let stage2 = |stage1: &Stage1Result<T>| {
+    let stage2 = |stage1: &Stage1Result<T>, arm: Arm<T>| {
         let h = handover_at(
             stage1,
             arm,
@@ -462,16 +462,19 @@ pub fn solve<T: Real>(
     let mut stage1 = stage1;
     // The first pass has stage 1 without the sensor's gain: its residuals are not yet
     // the session's, so only the last pass is judged by them.
-    let mut result = stage2(&stage1);
+    let mut result = stage2(&stage1, arm);
     // Stage 2 measured the sensor's gain: stage 1's readings are solved again with it,
     // and stage 2 with the better hand-over (the gain moves Δθ2 by ~1 % of the upper
     // arm's tilt, and stage 2 by far less than its noise, so once is enough).
     if let Ok((_, r)) = &result {
         let gain = estimated_gain(r);
         if gain != Gain::default() {
+            // The brackets' calibrations read back through the same gain.
+            let arm = readings.brackets.apply_with_gain(&readings.arm, &gain);
+            let setup = Stage1Setup { arm: &arm, ..setup };
             if let Ok(again) = solve_stage1(&bias_t, temps.stage1_c, &setup, gain, per_reading) {
                 stage1 = again;
-                result = stage2(&stage1);
+                result = stage2(&stage1, arm);
             }
         }
     }

@@ -2,11 +2,11 @@
 //! row and an export's row, and the degree format they share.
 
 use super::meta::{write_bracket, write_fit_extras, write_reversal};
-use zerocal_core::bracket::{BracketMount, Brackets};
 use super::{approach_name, deg, pair, Line, EXPORT_HEADER};
 use crate::capture::Capture;
 use crate::export_trailer::TrailerSum;
 use core::fmt::{self, Write};
+use zerocal_core::bracket::{BracketMount, Brackets};
 use zerocal_core::capture::{Approach, CaptureIndex};
 use zerocal_core::decimal::Fixed;
 use zerocal_core::model::Convention;
