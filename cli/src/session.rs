@@ -22,7 +22,8 @@ use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use zerocal_core::bracket::{
-    BracketMount, Brackets, SEAT_REPEATABILITY_DEG, UNCALIBRATED_BRACKET_DEG,
+    BracketMount, Brackets, BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
+    UNCALIBRATED_BRACKET_DEG,
 };
 use zerocal_core::capture::CaptureIndex;
 use zerocal_core::model::{Convention, JOINTS};
@@ -59,6 +60,11 @@ pub struct SessionArgs {
     /// [0, 1] deg.
     #[arg(long, default_value_t = SEAT_REPEATABILITY_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
     pub seat_repeatability_deg: f64,
+    /// The brackets' yaw tolerance, ± deg about the pendant's z: not calibrated, it
+    /// enters Δθ3 times the base's tilt (default: the bracket design's,
+    /// docs/mounting.md). Range: [0, 2] deg.
+    #[arg(long, default_value_t = BRACKET_YAW_TOLERANCE_DEG, value_name = "DEG", value_parser = RealIn::closed(0.0, 2.0, "deg"))]
+    pub bracket_yaw_deg: f64,
     /// How far stage 0's half turn may be off 180° (default: 1 deg, a turn by hand without
     /// a jig, a stated figure). On a tilted bench it moves the bias by this times the
     /// tilt, over 2. Range: [0, 10] deg.
@@ -475,6 +481,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
                     .brackets
                     .standard_uncertainty_rad(m, args.seat_repeatability_deg.to_radians())
             }),
+            bracket_yaw_rad: args.bracket_yaw_deg.to_radians(),
             repeatability_rad: args.repeatability_deg.to_radians(),
             lost_motion_rad: args.lost_motion_deg.to_radians(),
         },
@@ -532,7 +539,10 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
                 .into(),
         );
     }
-    notes.extend(bracket_notes(&export.brackets, args.seat_repeatability_deg));
+    notes.extend(crate::bracket_report::bracket_notes(
+        &export.brackets,
+        args.seat_repeatability_deg,
+    ));
     if export.closing.is_none() && convention == Convention::Axis {
         notes.push(
             "no closing reversal: the sensor's bias drift was not measured; the session is \
@@ -888,48 +898,4 @@ pub fn render(j: &SessionJson) -> String {
         let _ = writeln!(out, "note: {n}");
     }
     out
-}
-
-/// What the report says of the brackets: each calibration applied (ID, turn,
-/// uncertainty, date, temperature), and each bracket without one by name, with what
-/// the budget carries for it.
-fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
-    BracketMount::ALL
-        .into_iter()
-        .map(|m| match brackets.get(m) {
-            Some(c) => format!(
-                "{} bracket {}: calibrated {}-{:02}-{:02} at {:.1} C, turn {:+.4} deg about the \
-                 joint's axis ({:+.4} deg across), u {:.4} deg, applied; with the seat's \
-                 +/-{} deg the budget's '{}' term is {:.4} deg",
-                m.name(),
-                c.id,
-                c.date / 10_000,
-                (c.date / 100) % 100,
-                c.date % 100,
-                c.temperature_c,
-                c.rotation_rad.x_rad.to_degrees(),
-                c.rotation_rad.y_rad.to_degrees(),
-                c.uncertainty_rad.to_degrees(),
-                seat_deg,
-                BudgetTerm::Mounting.name(),
-                brackets
-                    .standard_uncertainty_rad(m, seat_deg.to_radians())
-                    .to_degrees()
-            ),
-            None => format!(
-                "UNCALIBRATED {} bracket: no calibration in the export, so its turn about {} \
-                 (up to +/-{} deg for a bracket of the design) is in the offsets unmeasured; \
-                 the budget carries it whole ('{}', {:.3} deg at 1 sigma). Calibrate the \
-                 bracket (docs/mounting.md) and load it with the profile",
-                m.name(),
-                match m {
-                    BracketMount::UpperArm => "joint 2 (into j2 and, back, j3)",
-                    BracketMount::Flange => "joint 6 (into j6)",
-                },
-                UNCALIBRATED_BRACKET_DEG,
-                BudgetTerm::Mounting.name(),
-                brackets.standard_uncertainty_rad(m, 0.0).to_degrees()
-            ),
-        })
-        .collect()
 }

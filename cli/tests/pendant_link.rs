@@ -414,7 +414,7 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
                     .iter()
                     .enumerate()
                     .map(|(k, l)| {
-                        if k == 20 {
+                        if k == 22 {
                             "1,2,3,4,5,6,0.1,0.2,20,above,4"
                         } else {
                             l
@@ -430,7 +430,7 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
                 &refs
                     .iter()
                     .enumerate()
-                    .filter(|(k, _)| *k != 20)
+                    .filter(|(k, _)| *k != 22)
                     .map(|(_, l)| *l)
                     .collect::<Vec<_>>(),
             ),

@@ -156,6 +156,7 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
                 export: path,
                 robot: None,
                 seat_repeatability_deg: zerocal_core::bracket::SEAT_REPEATABILITY_DEG,
+                bracket_yaw_deg: zerocal_core::bracket::BRACKET_YAW_TOLERANCE_DEG,
                 half_turn_tolerance_deg: 0.0,
                 repeatability_deg: 0.0,
                 lost_motion_deg: 0.0,

@@ -15,7 +15,7 @@ use nalgebra::{Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::bracket::{
-    bracket_id, calibrate, BracketCalibration, BracketMount, Brackets,
+    bracket_id, calibrate, BracketCalibration, BracketMount, Brackets, BRACKET_YAW_TOLERANCE_DEG,
     REFERENCE_TURN_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
 };
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
@@ -153,6 +153,9 @@ impl WorldConfig {
             extras,
             bracket_u_rad: BracketMount::ALL
                 .map(|m| brackets.standard_uncertainty_rad(m, seat_rad)),
+            bracket_yaw_rad: BRACKET_YAW_TOLERANCE_DEG
+                .max(self.bracket_yaw_deg)
+                .to_radians(),
             repeatability_rad: if self.robot.repeatability {
                 self.robot_spec.repeatability_deg.to_radians()
             } else {

@@ -5,7 +5,7 @@
 
 use crate::error::CliError;
 use serde::Serialize;
-use zerocal_core::bracket::SEAT_REPEATABILITY_DEG;
+use zerocal_core::bracket::{BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG};
 use zerocal_core::model::{JOINTS, WRIST_JOINTS};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::{
@@ -79,6 +79,7 @@ pub fn predicted_k2_deg(
             extras: fit.extras,
             // Calibrated brackets at the design's seat repeatability (docs/mounting.md).
             bracket_u_rad: [SEAT_REPEATABILITY_DEG.to_radians() / 3f64.sqrt(); 2],
+            bracket_yaw_rad: BRACKET_YAW_TOLERANCE_DEG.to_radians(),
             repeatability_rad: DEFAULT_REPEATABILITY_DEG.to_radians(),
             lost_motion_rad: DEFAULT_LOST_MOTION_DEG.to_radians(),
         },

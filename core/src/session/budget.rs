@@ -69,6 +69,11 @@ pub enum BudgetTerm {
     /// The sensor's x offset when no stage-0 reversal measured it (Type B: the
     /// SCL3300's offset specification, propagated; see [`Budget::add_unknown_sensor_offset`]).
     UnknownSensorOffset,
+    /// The two brackets' yaws (Type B, the stated tolerance): stage 2's cross-axis
+    /// terms, handed back to stage 1, hold the flange bracket's yaw where stage 1 had
+    /// the upper arm's, so their difference turns the base's tilt β into Δθ3 (1:1 in
+    /// simulation, [`crate::bracket`]).
+    BracketYaw,
 }
 
 impl BudgetTerm {
@@ -88,6 +93,7 @@ impl BudgetTerm {
         BudgetTerm::Mounting,
         BudgetTerm::HalfTurn,
         BudgetTerm::UnknownSensorOffset,
+        BudgetTerm::BracketYaw,
     ];
 
     /// Its name in reports and `--json`.
@@ -107,6 +113,7 @@ impl BudgetTerm {
             BudgetTerm::Mounting => "bracket seats (stated tolerance)",
             BudgetTerm::HalfTurn => "stage 0 half turn on a tilted bench",
             BudgetTerm::UnknownSensorOffset => "sensor offset, no stage 0 (specification)",
+            BudgetTerm::BracketYaw => "bracket yaws x base tilt (stated tolerance)",
         }
     }
 
@@ -118,7 +125,7 @@ impl BudgetTerm {
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 14;
+pub const BUDGET_TERMS: usize = 15;
 
 /// The SCL3300's offset specification on X (g, ±), the chip crate's
 /// [`zerocal_scl3300::spec::OFFSET_X_SPEC_G`]. X is the axis stage 0 measures and stage 1
@@ -152,6 +159,8 @@ pub struct BudgetInputs<T> {
     /// Each bracket's standard uncertainty about the joint's axis it defines, upper arm
     /// then flange ([`crate::bracket::Brackets::standard_uncertainty_rad`]) (rad).
     pub bracket_u_rad: [T; 2],
+    /// Each bracket's yaw tolerance (± half width, uniform) (rad).
+    pub bracket_yaw_rad: T,
     /// The robot's repeatability per joint, 1σ (rad).
     pub repeatability_rad: T,
     /// The gears' lost motion (rad): joint 3, loaded by the arm, may sit on gravity's
@@ -300,6 +309,12 @@ pub fn budget<T: Real>(
     terms[mounting][0] = u_upper;
     terms[mounting][1] = u_upper;
     terms[mounting][SESSION_JOINTS - 1] = u_flange;
+
+    // The brackets' yaws: their difference (two uniforms, variance 2·y²/3) times the
+    // base's tilt β, into Δθ3.
+    let beta = solution.model.base_tilt.beta_rad.abs();
+    terms[BudgetTerm::BracketYaw.index()][1] =
+        beta * inputs.bracket_yaw_rad.abs() * (T::lit(2.0) / T::lit(3.0)).sqrt();
 
     // The geometry the poses could not separate, at its stated worst case.
     for k in 0..WRIST_JOINTS {
@@ -538,6 +553,7 @@ mod tests {
             &BudgetInputs {
                 extras: fit.extras,
                 bracket_u_rad: [0.0; 2],
+                bracket_yaw_rad: 0.0,
                 repeatability_rad: 0.0,
                 lost_motion_rad,
             },

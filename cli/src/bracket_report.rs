@@ -1,0 +1,49 @@
+//! What `zerocal session`'s report says of the brackets: each calibration the export
+//! carries, applied, and each bracket without one, named (docs/bracket-calibration.md).
+
+use zerocal_core::bracket::{BracketMount, Brackets, UNCALIBRATED_BRACKET_DEG};
+use zerocal_core::session::BudgetTerm;
+
+/// What the report says of the brackets: each calibration applied (ID, turn,
+/// uncertainty, date, temperature), and each bracket without one by name, with what
+/// the budget carries for it.
+pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
+    BracketMount::ALL
+        .into_iter()
+        .map(|m| match brackets.get(m) {
+            Some(c) => format!(
+                "{} bracket {}: calibrated {}-{:02}-{:02} at {:.1} C, turn {:+.4} deg about the \
+                 joint's axis ({:+.4} deg across), u {:.4} deg, applied; with the seat's \
+                 +/-{} deg the budget's '{}' term is {:.4} deg",
+                m.name(),
+                c.id,
+                c.date / 10_000,
+                (c.date / 100) % 100,
+                c.date % 100,
+                c.temperature_c,
+                c.rotation_rad.x_rad.to_degrees(),
+                c.rotation_rad.y_rad.to_degrees(),
+                c.uncertainty_rad.to_degrees(),
+                seat_deg,
+                BudgetTerm::Mounting.name(),
+                brackets
+                    .standard_uncertainty_rad(m, seat_deg.to_radians())
+                    .to_degrees()
+            ),
+            None => format!(
+                "UNCALIBRATED {} bracket: no calibration in the export, so its turn about {} \
+                 (up to +/-{} deg for a bracket of the design) is in the offsets unmeasured; \
+                 the budget carries it whole ('{}', {:.3} deg at 1 sigma). Calibrate the \
+                 bracket (docs/mounting.md) and load it with the profile",
+                m.name(),
+                match m {
+                    BracketMount::UpperArm => "joint 2 (into j2 and, back, j3)",
+                    BracketMount::Flange => "joint 6 (into j6)",
+                },
+                UNCALIBRATED_BRACKET_DEG,
+                BudgetTerm::Mounting.name(),
+                brackets.standard_uncertainty_rad(m, 0.0).to_degrees()
+            ),
+        })
+        .collect()
+}
