@@ -23,7 +23,6 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use zerocal_core::bracket::{
     BracketMount, Brackets, BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
-    UNCALIBRATED_BRACKET_DEG,
 };
 use zerocal_core::capture::CaptureIndex;
 use zerocal_core::model::{Convention, JOINTS};
