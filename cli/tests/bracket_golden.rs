@@ -96,3 +96,34 @@ fn a_profile_without_a_flange_interface_is_refused() {
     );
     assert!(!target.exists(), "nothing written");
 }
+
+/// docs/mounting.md's per-robot table agrees with the profiles: every built-in is named
+/// in exactly one row, and that row gives its ISO 9409-1 designation where the profile
+/// has one, and begins "none" where it has not.
+#[test]
+fn the_mounting_pages_table_agrees_with_the_profiles() {
+    let page =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/mounting.md"))
+            .unwrap();
+    let section = page
+        .split("### Per robot")
+        .nth(1)
+        .and_then(|s| s.split("### The designs").next())
+        .expect("docs/mounting.md has its 'Per robot' table");
+    let rows: Vec<Vec<&str>> = section
+        .lines()
+        .filter(|l| l.starts_with("| `"))
+        .map(|l| l.split('|').map(str::trim).collect())
+        .collect();
+    for name in zerocal_profile::builtin_names() {
+        let tick = format!("`{name}`");
+        let hits: Vec<&Vec<&str>> = rows.iter().filter(|r| r[1].contains(&tick)).collect();
+        assert_eq!(hits.len(), 1, "{name}: in {} rows", hits.len());
+        let cell = hits[0][2];
+        let profile = zerocal_profile::builtin(name).unwrap();
+        match &profile.flange_interface {
+            Some(f) => assert!(cell.contains(&f.iso9409.designation()), "{name}: {cell}"),
+            None => assert!(cell.starts_with("none"), "{name}: {cell}"),
+        }
+    }
+}
