@@ -2,6 +2,7 @@
 //! directly (see `tests/`) as well as through the binary.
 
 pub mod args;
+pub mod bracket;
 pub mod bracket_report;
 pub mod diagnose;
 pub mod error;

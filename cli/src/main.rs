@@ -7,6 +7,8 @@
 //! - `zerocal program --robot R --format F --out FILE`: a robot program that drives the
 //!   whole session.
 //! - `zerocal pendant --port P status|load-profile R|export|erase`: the pendant's link.
+//! - `zerocal bracket --robot R [--out FILE]`: the flange bracket's OpenSCAD parameters
+//!   from the profile's flange interface.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -49,6 +51,9 @@ enum Command {
     /// Talk to a pendant over its USB serial port: status, load a robot profile and its
     /// plan, export the session, erase the store.
     Pendant(zerocal_cli::pendant::PendantArgs),
+    /// Write the flange bracket's OpenSCAD parameters (`include <flange_bracket.scad>`
+    /// and the profile's ISO 9409-1 bolt circle and dowel) for the robot.
+    Bracket(zerocal_cli::bracket::BracketArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
@@ -118,6 +123,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Session(args) => session::run(args),
         Command::Program(args) => program::run(args),
         Command::Pendant(args) => zerocal_cli::pendant::run(args),
+        Command::Bracket(args) => zerocal_cli::bracket::run(args),
     }
 }
 

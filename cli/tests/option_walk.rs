@@ -255,6 +255,7 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
             "/nonexistent/zerocal-walk".into(),
             "status".into(),
         ],
+        "bracket" => vec!["bracket".into(), "--robot".into(), "ur5e".into()],
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }
 }

@@ -12,9 +12,11 @@
 
 pub mod bounds;
 mod controller;
+pub mod flange;
 mod raw;
 
 pub use controller::{Controller, Coupling, OffsetUnit, OffsetValue};
+pub use flange::{FlangeInterface, Iso9409};
 
 use nalgebra::{Rotation3, Unit, Vector3};
 use std::fmt;
@@ -123,6 +125,13 @@ pub struct Profile {
     /// The profile's `stage1.pose_deg` in the model's angles (rad): where the search
     /// for [`Self::stage1_joints_rad`] starts.
     pub stage1_stated_rad: [f64; JOINTS],
+    /// The flange's bolt circle and dowel (`[flange] iso9409`, `dowel_hole_mm`), where
+    /// a source gives them: what `zerocal bracket` drills the flange bracket to.
+    pub flange_interface: Option<FlangeInterface>,
+    /// What the upper-arm bracket registers on (`stage1.registers_on`).
+    pub upper_arm_registers_on: Option<String>,
+    /// What the flange bracket registers on (`stage2.registers_on`).
+    pub flange_registers_on: Option<String>,
 }
 
 /// What is wrong with a profile: the key and the reason.

@@ -2,6 +2,7 @@
 
 use crate::bounds::{self, symmetric, text};
 use crate::controller::{Controller, Coupling, OffsetUnit};
+use crate::flange::{self, FlangeInterface};
 use crate::{
     flange_mount, kinematics, upper_arm_mount, Family, JointInfo, ProfileError, Source, FORMAT,
 };
@@ -68,6 +69,9 @@ pub(crate) struct RawJoint {
 pub(crate) struct Flange {
     pub(crate) xyz_m: Option<[f64; 3]>,
     pub(crate) rpy_deg: Option<[f64; 3]>,
+    iso9409: Option<String>,
+    dowel_hole_mm: Option<f64>,
+    interface_source: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -88,6 +92,7 @@ struct RawController {
 #[serde(deny_unknown_fields)]
 struct Stage1 {
     pose_deg: [f64; JOINTS],
+    registers_on: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -95,6 +100,7 @@ struct Stage1 {
 struct Stage2 {
     mount_z: String,
     mount_x: String,
+    registers_on: Option<String>,
 }
 
 impl Profile {
@@ -182,6 +188,7 @@ impl Profile {
                 max_speed_deg_s: j.max_speed_deg_s,
             });
         }
+        let flange_interface = self.flange_interface(&ids)?;
         let (joints, flange) = kinematics(&self)?;
         let controller = self.controller()?;
         let stated_rad = controller.model_rad(&self.stage1.pose_deg);
@@ -214,7 +221,57 @@ impl Profile {
             controller,
             stage1_joints_rad,
             stage1_stated_rad: stated_rad,
+            flange_interface,
+            upper_arm_registers_on: self.stage1.registers_on,
+            flange_registers_on: self.stage2.registers_on,
         })
+    }
+
+    /// The `[flange]` interface keys, read and checked: a designation needs its source,
+    /// a dowel or a source without a designation is refused (nothing to drill it on).
+    fn flange_interface(
+        &self,
+        ids: &BTreeSet<&str>,
+    ) -> Result<Option<FlangeInterface>, ProfileError> {
+        let Some(f) = &self.flange else {
+            return Ok(None);
+        };
+        let Some(text) = &f.iso9409 else {
+            if f.dowel_hole_mm.is_some() {
+                return Err(ProfileError::new(
+                    flange::DOWEL_KEY,
+                    "given without flange.iso9409: a dowel is placed on the bolt circle",
+                ));
+            }
+            if f.interface_source.is_some() {
+                return Err(ProfileError::new(
+                    "flange.interface_source",
+                    "given without flange.iso9409: nothing for it to be the source of",
+                ));
+            }
+            return Ok(None);
+        };
+        let iso9409 = flange::parse_iso9409(text)?;
+        if let Some(d) = f.dowel_hole_mm {
+            flange::check_dowel(d, &iso9409)?;
+        }
+        let source = f.interface_source.clone().ok_or_else(|| {
+            ProfileError::new(
+                "flange.interface_source",
+                "missing: flange.iso9409 needs the [[source]] that gives it",
+            )
+        })?;
+        if !ids.contains(source.as_str()) {
+            return Err(ProfileError::new(
+                "flange.interface_source",
+                format!("source '{source}' is not defined by any [[source]]"),
+            ));
+        }
+        Ok(Some(FlangeInterface {
+            iso9409,
+            dowel_hole_mm: f.dowel_hole_mm,
+            source,
+        }))
     }
 
     /// Every text within its length and every number within its plausible range
@@ -300,6 +357,22 @@ impl Profile {
                 bounds::MAX_ROTATION_DEG,
                 deg,
             )?;
+            for (key, t) in [
+                (flange::ISO9409_KEY, &f.iso9409),
+                ("flange.interface_source", &f.interface_source),
+            ] {
+                if let Some(t) = t {
+                    text(key, t, bounds::MAX_TEXT_CHARS)?;
+                }
+            }
+        }
+        for (key, t) in [
+            ("stage1.registers_on", &self.stage1.registers_on),
+            ("stage2.registers_on", &self.stage2.registers_on),
+        ] {
+            if let Some(t) = t {
+                text(key, t, bounds::MAX_TEXT_CHARS)?;
+            }
         }
         let c = &self.controller;
         symmetric(

@@ -321,3 +321,159 @@ fn out_of_range_numbers_and_long_texts_name_the_key() {
         );
     }
 }
+
+/// ISO 9409-1 designations read into their three numbers; the `A` of form A and a
+/// `DIN` prefix are accepted as makers write them, and the designation prints back as
+/// ISO writes it.
+#[test]
+fn iso9409_designations_read_into_bolt_circle_holes_and_thread() {
+    let cases = [
+        ("ISO 9409-1-50-4-M6", 50.0, 4, 6.0),
+        ("ISO 9409-1-31.5-4-M5", 31.5, 4, 5.0),
+        ("DIN ISO 9409-1-A50-4-M6", 50.0, 4, 6.0),
+        ("  ISO 9409-1-80-6-M8 ", 80.0, 6, 8.0),
+    ];
+    for (text, pcd, holes, thread) in cases {
+        let iso = flange::parse_iso9409(text).unwrap_or_else(|e| panic!("{text}: {e}"));
+        assert_eq!(
+            (iso.pitch_circle_mm, iso.holes, iso.thread_mm),
+            (pcd, holes, thread),
+            "{text}"
+        );
+        let again = flange::parse_iso9409(&iso.designation()).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(again, iso, "{text} prints back as {}", iso.designation());
+    }
+}
+
+/// Text that is not a designation is refused naming `flange.iso9409`, never a panic
+/// nor a NaN or infinite bolt circle.
+#[test]
+fn malformed_iso9409_designations_name_the_key() {
+    let cases = [
+        "",
+        "ISO 9409-50-4-M6",
+        "ISO 9409-1-50-4-6",
+        "ISO 9409-1-50-four-M6",
+        "ISO 9409-1-50-4",
+        "ISO 9409-1-50-4-M6-7",
+        "ISO 9409-1--4-M6",
+        "ISO 9409-1-NaN-4-M6",
+        "ISO 9409-1-inf-4-M6",
+        "ISO 9409-1-1e2-4-M6",
+        "ISO 9409-1-5.0.0-4-M6",
+        "ISO 9409-1-50-+4-M6",
+        "ISO 9409-1-50-4-M",
+        "ISO 9409-1-50-99999999999-M6",
+        "ISO 9409-1-50-4-M6\u{2011}",
+    ];
+    for text in cases {
+        let e = flange::parse_iso9409(text)
+            .err()
+            .unwrap_or_else(|| panic!("'{text}': accepted"));
+        assert_eq!(e.key, "flange.iso9409", "'{text}': {e}");
+    }
+}
+
+/// Numbers beyond the stated plausibility bounds (`flange::PITCH_CIRCLE_MM`, `HOLES`,
+/// `THREAD_MM`) and holes that would overlap on their circle are refused with the
+/// reason.
+#[test]
+fn out_of_range_iso9409_designations_say_why() {
+    let cases = [
+        ("ISO 9409-1-5-4-M2", "plausible range"),
+        ("ISO 9409-1-5000-4-M6", "plausible range"),
+        ("ISO 9409-1-50-2-M6", "plausible range"),
+        ("ISO 9409-1-500-64-M6", "plausible range"),
+        ("ISO 9409-1-50-4-M1", "plausible range"),
+        ("ISO 9409-1-500-4-M64", "plausible range"),
+        // 12 holes on a 20 mm circle are 5.18 mm apart: M6 cannot fit.
+        ("ISO 9409-1-20-12-M6", "overlap"),
+    ];
+    for (text, why) in cases {
+        let e = flange::parse_iso9409(text)
+            .err()
+            .unwrap_or_else(|| panic!("'{text}': accepted"));
+        assert_eq!(e.key, "flange.iso9409", "'{text}': {e}");
+        assert!(e.reason.contains(why), "'{text}': {e}");
+    }
+}
+
+/// The `[flange]` interface keys in a profile: the UR5e's is read; a designation
+/// without its source, an undefined source, a dowel without a designation or one that
+/// cannot fit, and a bad designation are each refused naming the key.
+#[test]
+fn flange_interface_keys_are_read_and_checked() {
+    let ur5e = builtin("ur5e").unwrap_or_else(|e| panic!("{e}"));
+    let iface = ur5e
+        .flange_interface
+        .unwrap_or_else(|| panic!("ur5e has its flange"));
+    assert_eq!(iface.iso9409.designation(), "ISO 9409-1-50-4-M6");
+    assert_eq!(iface.source, "S6");
+    assert_eq!(iface.dowel_hole_mm, None, "no source reached gives it");
+
+    let text = include_str!("../../data/robots/ur5e.toml");
+    let iso = "iso9409 = \"ISO 9409-1-50-4-M6\"";
+    let with_dowel = |d: &str| text.replacen(iso, &format!("{iso}\ndowel_hole_mm = {d}"), 1);
+    let p = parse(&with_dowel("6.0")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(p.flange_interface.and_then(|f| f.dowel_hole_mm), Some(6.0));
+    let cases: [(&str, String, &str); 6] = [
+        (
+            "no source",
+            text.replacen("interface_source = \"S6\"", "", 1),
+            "flange.interface_source",
+        ),
+        (
+            "undefined source",
+            text.replacen("interface_source = \"S6\"", "interface_source = \"S99\"", 1),
+            "flange.interface_source",
+        ),
+        (
+            "dowel alone",
+            text.replacen(iso, "dowel_hole_mm = 6.0", 1).replacen(
+                "interface_source = \"S6\"",
+                "",
+                1,
+            ),
+            "flange.dowel_hole_mm",
+        ),
+        ("dowel too big", with_dowel("30.0"), "flange.dowel_hole_mm"),
+        ("dowel NaN", with_dowel("nan"), "flange.dowel_hole_mm"),
+        (
+            "bad designation",
+            text.replacen(iso, "iso9409 = \"ISO 9409-1-50-4\"", 1),
+            "flange.iso9409",
+        ),
+    ];
+    for (what, text, key) in cases {
+        let e = parse(&text)
+            .err()
+            .unwrap_or_else(|| panic!("{what}: accepted"));
+        assert_eq!(e.key, key, "{what}: {e}");
+    }
+}
+
+/// Every built-in says what each bracket registers on, and either gives the flange's
+/// interface with its source or says in `missing` that none was found.
+#[test]
+fn every_builtin_says_where_its_brackets_register() {
+    for name in builtin_names() {
+        let p = builtin(name).unwrap_or_else(|e| panic!("{name}: {e}"));
+        for (what, text) in [
+            ("stage1", &p.upper_arm_registers_on),
+            ("stage2", &p.flange_registers_on),
+        ] {
+            assert!(
+                text.as_ref().is_some_and(|t| !t.trim().is_empty()),
+                "{name}: {what}.registers_on"
+            );
+        }
+        let said_missing = p.missing.iter().any(|m| m.starts_with("flange"));
+        match &p.flange_interface {
+            Some(f) => assert!(p.sources.iter().any(|s| s.id == f.source), "{name}"),
+            None => assert!(
+                said_missing,
+                "{name}: no flange interface and no missing line"
+            ),
+        }
+    }
+}

@@ -6,6 +6,7 @@
 //! linked by Debian's ld.lld, installed with apt-get when missing. [`toolchain`] is the
 //! one owner of that knowledge; `cargo xtask setup` runs it alone.
 
+mod cad;
 mod dfu;
 mod dist;
 mod fuzz;
@@ -96,6 +97,10 @@ enum Command {
         /// The pendant-sim output directory, with session.txt beside its export.
         dir: PathBuf,
     },
+    /// Render the bracket designs of cad/ to docs/cad/*.png with OpenSCAD (under
+    /// xvfb-run when there is no display). Not run by CI: run it after changing a
+    /// design and commit the pictures.
+    Cad,
     /// Fuzz the parsers of outside bytes (fuzz/, cargo-fuzz and libFuzzer on the stable
     /// toolchain with RUSTC_BOOTSTRAP=1; installs cargo-fuzz if missing). `--smoke`
     /// runs every target for 20 s from the committed corpus and fails on any crash,
@@ -130,6 +135,7 @@ fn main() -> Result<()> {
         Command::CoreThumb => core_thumb(cli.toolchain),
         Command::TargetTest => target_test::run(&repo_root(), cli.toolchain),
         Command::PendantAgree { dir } => pendant_sim::agree(&dir),
+        Command::Cad => cad::run(&repo_root()),
         Command::PendantSim {
             out,
             seed,
