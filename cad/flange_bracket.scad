@@ -11,7 +11,7 @@
 // OPENSCADPATH=<zerocal>/cad. This file alone renders the example values below.
 //
 // Tolerances (our design requirements, not robot facts): docs/mounting.md, "Design
-// tolerances". T1 seat repeatability about joint 6 <= 0.002 deg; T2 the seating face
+// tolerances". T1 seat repeatability about joint 6 <= 0.0015 deg; T2 the seating face
 // ground flat to 0.005 mm; T3 the dowel pressed into the bracket (H7/p6) and the
 // bracket turned against the flange's dowel before the screws are tightened; T4-T6 the
 // pendant seat (pendant_seat.scad). All lengths in mm.

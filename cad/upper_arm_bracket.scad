@@ -10,7 +10,7 @@
 // reversal on a surface plate) rather than taken from the robot.
 //
 // Tolerances (our design requirements, not robot facts): docs/mounting.md, "Design
-// tolerances". T1 seat repeatability about joint 2 <= 0.002 deg; T8 the three pads
+// tolerances". T1 seat repeatability about joint 2 <= 0.0015 deg; T8 the three pads
 // spread at least 100 mm along the arm, the reference lip ground straight; T4-T6 the
 // pendant seat (pendant_seat.scad). All lengths in mm.
 

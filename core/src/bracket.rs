@@ -32,10 +32,13 @@ use nalgebra::Vector3;
 
 /// The seat repeatability the bracket designs require: a bracket taken off and clipped
 /// on again seats within ±this about each axis (uniform). A design requirement of
-/// the brackets in `cad/` (two pins in a press fit, ground seating faces;
-/// docs/mounting.md), not a measured figure: a bracket that does not meet it must be
-/// reworked, and `zerocal session --seat-repeatability-deg` states another.
-pub const SEAT_REPEATABILITY_DEG: f64 = 0.002;
+/// the brackets in `cad/` (ground seating faces, the bracket turned against its pressed
+/// dowel; docs/mounting.md, T1), not a measured figure, allocated from the budget: at
+/// ±0.002° the FANUC M-20iA's Δθ3 was within 0.005° in 94.5 % of 200 simulated
+/// sessions (host-tests `brackets_acceptance`), at ±0.0015° it is above 95 %. A
+/// bracket that does not meet it is reworked, or `zerocal session
+/// --seat-repeatability-deg` states what it achieved.
+pub const SEAT_REPEATABILITY_DEG: f64 = 0.0015;
 
 /// What a bracket never calibrated may be off by, about each axis (± half width,
 /// uniform): the largest seat error the design's tolerances allow for a bracket made
@@ -67,6 +70,11 @@ pub const PLATE_LEVEL_MAX_DEG: f64 = 0.1;
 /// uncalibrated bracket of the design may be off, so that a bracket at the edge of
 /// its tolerance is still measured, and a reading of something else is refused.
 pub const MAX_BRACKET_TURN_DEG: f64 = 2.0 * UNCALIBRATED_BRACKET_DEG;
+
+/// Captures averaged into each of a calibration's four readings: the bracket's turn
+/// goes into the zero one to one, so its noise is averaged down by 2 (0.0004° from a
+/// capture's 0.0008°); the pendant is on a bench, where the time costs nothing.
+pub const CAPTURES_PER_READING: usize = 4;
 
 /// The longest bracket ID (bytes of ASCII).
 pub const BRACKET_ID_LEN: usize = 12;
@@ -258,8 +266,9 @@ fn plate_tilt<T: Real>(r: &Reversal<T>) -> T {
 
 /// The pendant's turn in a bracket from the two reversals on the plate (the pendant
 /// alone, then in the bracket on its reference), and the standard uncertainty of its
-/// x part: the readings' noise (`capture_noise_rad`, one capture's 1σ; the difference
-/// of two half-sums has one capture's variance) and each reversal's turn, within
+/// x part: the readings' noise (`capture_noise_rad`, one capture's 1σ; each reading
+/// averages [`CAPTURES_PER_READING`] captures, and the difference of two half-sums has
+/// one reading's variance) and each reversal's turn, within
 /// ±[`REFERENCE_TURN_TOLERANCE_DEG`] of 180°, times its plate tilt (uniform).
 ///
 /// In the `axis` convention each half-sum is the acceleration offset `o = (−b_y, b_x)`
@@ -304,7 +313,8 @@ pub fn calibrate<T: Real>(
     let turn = deg_to_rad(T::lit(REFERENCE_TURN_TOLERANCE_DEG));
     let half_turn_u = |r: &Reversal<T>| plate_tilt(r) * turn * T::lit(0.5) / T::lit(3.0).sqrt();
     let (u0, u1) = (half_turn_u(pendant), half_turn_u(in_bracket));
-    let u = (capture_noise_rad * capture_noise_rad + u0 * u0 + u1 * u1).sqrt();
+    let noise2 = capture_noise_rad * capture_noise_rad / T::lit(CAPTURES_PER_READING as f64);
+    let u = (noise2 + u0 * u0 + u1 * u1).sqrt();
     let limit = deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG));
     if !(rotation.is_finite() && rotation.x_rad.abs() <= limit && rotation.y_rad.abs() <= limit) {
         return Err(BracketError::Implausible);
@@ -428,8 +438,8 @@ mod tests {
                 "yaw {yaw_deg}: {rot:?}"
             );
             // The plate's 0.07° of tilt and a turn within ±1°: 0.07°·1°/2/√3 in rad each,
-            // with the 1e-5 rad of noise.
-            assert!(u > 1e-5 && u < 2e-5, "{u}");
+            // with the 1e-5 rad of a capture's noise halved by four captures a reading.
+            assert!(u > 5e-6 && u < 1.5e-5, "{u}");
         }
     }
 

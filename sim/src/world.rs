@@ -16,7 +16,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::bracket::{
     bracket_id, calibrate, BracketCalibration, BracketMount, Brackets, BRACKET_YAW_TOLERANCE_DEG,
-    REFERENCE_TURN_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
+    CAPTURES_PER_READING, REFERENCE_TURN_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
 };
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
@@ -328,14 +328,17 @@ fn calibrate_bracket(
         rot_z(core::f64::consts::PI + deg_to_rad(uniform(rng, REFERENCE_TURN_TOLERANCE_DEG)))
     };
     let bracket = rot_x(made[0]) * rot_y(made[1]) * rot_z(made[2]);
+    // Each reading the mean of the calibration's captures.
     let mut read = |r: &Rotation3<f64>, rng: &mut ChaCha8Rng| {
-        sensor
-            .capture(
-                &up_in_sensor(&(r * bench.chip_in_box)),
-                bench.temperature_c,
-                rng,
-            )
-            .reading
+        let u = up_in_sensor(&(r * bench.chip_in_box));
+        let (mut x, mut y) = (0.0, 0.0);
+        for _ in 0..CAPTURES_PER_READING {
+            let c = sensor.capture(&u, bench.temperature_c, rng).reading;
+            x += c.x_rad;
+            y += c.y_rad;
+        }
+        let n = CAPTURES_PER_READING as f64;
+        Tilt::new(x / n, y / n)
     };
     let pendant = Reversal {
         first: read(&plate, rng),

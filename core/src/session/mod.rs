@@ -622,6 +622,13 @@ pub fn unknown_offset_half_width<T: Real>(
 /// box's edges); no public source gives one.
 pub const DEFAULT_HALF_TURN_TOLERANCE_DEG: f64 = 1.0;
 
+/// Stage 0's half turn made against a straight edge (the jig: the pendant's long side
+/// against a fence on the bench, turned end for end against the same fence) is off 180°
+/// by no more than the box's two long sides are out of parallel: the box's drawing
+/// requires 0.05 mm over its 60 mm, 0.048° (docs/method.md, stage 0). A design
+/// requirement, stated with `zerocal session --half-turn-tolerance-deg 0.05`.
+pub const JIG_HALF_TURN_TOLERANCE_DEG: f64 = 0.05;
+
 /// How far each of Δθ2..Δθ6 moves with stage 0's half turn off 180° by up to
 /// `tolerance_rad` (rad, half the swing). A turn of π + ε on a bench tilted by t leaves
 /// the reversal's half-sum off by ε·|t|/2, perpendicular to the tilt (the two readings'

@@ -1,0 +1,100 @@
+//! The brackets, the box and stage 0 as a technician would meet them, over 200 sessions
+//! per robot on the six family profiles, every source of the error table on:
+//!
+//! - the design's world: brackets made within ±0.5° (tilt) and calibrated
+//!   (docs/bracket-calibration.md), seated within the design's ±0.002°, their yaws within
+//!   the design's ±0.05° (two pins), the chip within ±1° in its box, the bench tilted
+//!   0.5° and stage 0's half turn made against the fence (±0.05°): every joint within
+//!   0.005° in at least 95 % of sessions, the budget's k = 2 covering at least 95 % per
+//!   joint, no refusal, no capture past mode 4's ±10°;
+//! - the same brackets never calibrated: the budget (±0.5° for each) covers at least 95 %
+//!   (that the report names each: cli/tests/bracket_report.rs);
+//! - the widest ranges (yaws ±0.5°, half turn by hand ±1°): the budget still covers, no
+//!   refusal; the 0.005° aim does not hold there (printed with `--nocapture`; see
+//!   docs/bracket-calibration.md, "What is left").
+
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+mod common;
+
+use zerocal_core::bracket::{BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG};
+use zerocal_core::session::JIG_HALF_TURN_TOLERANCE_DEG;
+use zerocal_sim::montecarlo::{run, setup, summarise, Method, Summary, DEFAULT_POSES};
+use zerocal_sim::world::{BracketKnowledge, WorldConfig};
+
+/// Sessions per robot.
+const SESSIONS: usize = 200;
+
+/// The design's world (the module doc).
+fn design_world() -> WorldConfig {
+    WorldConfig {
+        mount_tolerance_deg: 0.5,
+        bracket_yaw_deg: BRACKET_YAW_TOLERANCE_DEG,
+        seat_repeatability_deg: SEAT_REPEATABILITY_DEG,
+        brackets: BracketKnowledge::Calibrated,
+        chip_rotation_deg: 1.0,
+        bench_tilt_deg: 0.5,
+        half_turn_error_deg: JIG_HALF_TURN_TOLERANCE_DEG,
+        ..WorldConfig::real()
+    }
+}
+
+/// Runs `world` on every family profile and checks `accept` on each summary and on the
+/// captures' range; prints the table.
+fn run_all(world: &WorldConfig, seed: u64, accept: impl Fn(&str, &Summary)) {
+    println!("robot               refused  worst j2..j6 (deg)                      within 0.005  k=2 covers (least joint)");
+    for robot in common::FAMILY_PROFILES {
+        let profile = zerocal_profile::builtin(robot).unwrap();
+        let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+        let out = run(&profile, &plan, world, &fit, SESSIONS, seed);
+        let s = summarise(&out, 0.005);
+        println!(
+            "{robot:<19} {:>3}/{SESSIONS}  {}   {:>5.1} %     {:>5.1} %",
+            s.refused,
+            s.max_deg.map(|x| format!("{x:.4}")).join(" "),
+            100.0 * s.all_within,
+            100.0 * s.covered.iter().copied().fold(1.0f64, f64::min)
+        );
+        let past = out.iter().filter(|o| o.outside_range > 0).count();
+        assert_eq!(
+            past, 0,
+            "{robot}: {past} sessions with a capture past 10 deg"
+        );
+        accept(robot, &s);
+    }
+}
+
+#[test]
+fn calibrated_brackets_of_the_design_give_every_joint_within_0_005_deg() {
+    run_all(&design_world(), 2200, |robot, s| {
+        assert_eq!(s.refused, 0, "{robot}: refused");
+        assert!(s.all_within >= 0.95, "{robot}: {:?}", s);
+        assert!(s.covered.iter().all(|&c| c >= 0.95), "{robot}: {:?}", s);
+    });
+}
+
+#[test]
+fn uncalibrated_brackets_are_covered_by_the_budget() {
+    let world = WorldConfig {
+        brackets: BracketKnowledge::Uncalibrated,
+        ..design_world()
+    };
+    run_all(&world, 2300, |robot, s| {
+        assert_eq!(s.refused, 0, "{robot}: refused");
+        assert!(s.covered.iter().all(|&c| c >= 0.95), "{robot}: {:?}", s);
+    });
+}
+
+#[test]
+fn at_the_widest_ranges_the_budget_still_covers() {
+    let world = WorldConfig {
+        bracket_yaw_deg: 0.5,
+        half_turn_error_deg: 1.0,
+        ..design_world()
+    };
+    run_all(&world, 2400, |robot, s| {
+        assert_eq!(s.refused, 0, "{robot}: refused");
+        assert!(s.covered.iter().all(|&c| c >= 0.95), "{robot}: {:?}", s);
+    });
+}
