@@ -1,17 +1,19 @@
 //! The export's writers read back by its readers: `write_row` and `write_export_row`
 //! (with its capture index) by `LogReader::feed`,
-//! `write_reversal` and `write_fit_extras` by `parse_meta`, with both number parsers
+//! `write_reversal`, `write_fit_extras` and `write_bracket` by `parse_meta`, with both
+//! number parsers
 //! (core's and the desktop's): parse(write(x)) == x to the export's 1e-12 deg.
 #![no_main]
 use arbitrary::{Arbitrary, Unstructured};
 use libfuzzer_sys::fuzz_target;
+use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketMount, MAX_BRACKET_TURN_DEG};
 use zerocal_core::capture::{Approach, CaptureIndex, MAX_PLAN_POSES};
 use zerocal_core::model::Tilt;
 use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage2::{Extras, PoseReading};
 use zerocal_procedure::log::{
-    parse_meta, write_export_row, write_fit_extras, write_reversal, write_row, Line, LogLine,
-    LogReader, MetaItem, EXPORT_HEADER, LOG_HEADER,
+    parse_meta, write_bracket, write_export_row, write_fit_extras, write_reversal, write_row, Line,
+    LogLine, LogReader, MetaItem, EXPORT_HEADER, LOG_HEADER,
 };
 
 /// A value in `[-limit, limit]` from a fuzzed fraction (an f32, as the pendant holds).
@@ -166,6 +168,71 @@ fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
     match parse_meta::<f64>(comment, 1, zerocal_core::decimal::parse) {
         Ok(Some(MetaItem::FitExtras(back))) => assert_eq!(back, extras, "{line}"),
         other => panic!("{line}: {other:?}"),
+    }
+    // A bracket's calibration (or none).
+    let mount = if bool::arbitrary(u)? {
+        BracketMount::Flange
+    } else {
+        BracketMount::UpperArm
+    };
+    let calibration = if bool::arbitrary(u)? {
+        const ALPHABET: &[u8] = b"AZaz09-_F";
+        let len = 1 + usize::from(u8::arbitrary(u)? % 12);
+        let mut id = String::new();
+        for _ in 0..len {
+            id.push(char::from(
+                ALPHABET[usize::from(u8::arbitrary(u)?) % ALPHABET.len()],
+            ));
+        }
+        let date = 2000_0101
+            + u32::from(u16::arbitrary(u)? % 1000) * 10_000
+            + u32::from(u8::arbitrary(u)? % 12) * 100
+            + u32::from(u8::arbitrary(u)? % 28);
+        let Some(temperature_c) = temperature(u)? else {
+            return Ok(());
+        };
+        Some(
+            BracketCalibration::new(
+                bracket_id(&id).expect("an ID of the alphabet"),
+                Tilt::from_deg(
+                    within(u, MAX_BRACKET_TURN_DEG)?,
+                    within(u, MAX_BRACKET_TURN_DEG)?,
+                ),
+                within(u, 0.1)?.abs().to_radians(),
+                date,
+                temperature_c,
+            )
+            .expect("a plausible calibration"),
+        )
+    } else {
+        None
+    };
+    let mut line = Line::new();
+    write_bracket(&mut line, mount, calibration.as_ref()).expect("a bracket fits a line");
+    let comment = line.trim_start_matches('#').trim();
+    for parse in PARSERS {
+        match parse_meta::<f64>(comment, 1, parse) {
+            Ok(Some(MetaItem::Bracket(m, back))) => {
+                assert_eq!(m, mount, "{line}");
+                match (&calibration, &back) {
+                    (None, None) => {}
+                    (Some(a), Some(b)) => {
+                        assert_eq!((&a.id, a.date), (&b.id, b.date), "{line}");
+                        assert!(close_tilt(a.rotation_rad, b.rotation_rad), "{line}");
+                        assert!(
+                            (a.uncertainty_rad - b.uncertainty_rad).abs() <= ANGLE_TOLERANCE_RAD,
+                            "{line}"
+                        );
+                        assert!(
+                            close_temperature(Some(a.temperature_c), Some(b.temperature_c)),
+                            "{line}"
+                        );
+                    }
+                    _ => panic!("{line}: {back:?}"),
+                }
+            }
+            other => panic!("{line}: {other:?}"),
+        }
     }
     Ok(())
 }
