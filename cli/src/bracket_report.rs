@@ -14,7 +14,7 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
             Some(c) => format!(
                 "{} bracket {}: calibrated {}-{:02}-{:02} at {:.1} C, turn {:+.4} deg about the \
                  joint's axis ({:+.4} deg across), u {:.4} deg, applied; with the seat's \
-                 +/-{} deg the budget's '{}' term is {:.4} deg",
+                 +/-{} deg the budget's '{}' term is {:.4} deg; {}",
                 m.name(),
                 c.id,
                 c.date / 10_000,
@@ -28,7 +28,19 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
                 BudgetTerm::Mounting.name(),
                 brackets
                     .standard_uncertainty_rad(m, seat_deg.to_radians())
-                    .to_degrees()
+                    .to_degrees(),
+                match c.yaw {
+                    Some(y) => format!(
+                        "yaw {:+.4} deg (u {:.4} deg, the sine plate's), applied",
+                        y.yaw_rad.to_degrees(),
+                        y.uncertainty_rad.to_degrees()
+                    ),
+                    None => format!(
+                        "yaw not measured: the budget's '{}' term takes the stated \
+                         tolerance (--bracket-yaw-deg)",
+                        BudgetTerm::BracketYaw.name()
+                    ),
+                }
             ),
             None => format!(
                 "UNCALIBRATED {} bracket: no calibration in the export, so its turn about {} \

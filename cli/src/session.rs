@@ -480,7 +480,11 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
                     .brackets
                     .standard_uncertainty_rad(m, args.seat_repeatability_deg.to_radians())
             }),
-            bracket_yaw_rad: args.bracket_yaw_deg.to_radians(),
+            bracket_yaw_u_rad: BracketMount::ALL.map(|m| {
+                export
+                    .brackets
+                    .yaw_uncertainty_rad(m, args.bracket_yaw_deg.to_radians())
+            }),
             repeatability_rad: args.repeatability_deg.to_radians(),
             lost_motion_rad: args.lost_motion_deg.to_radians(),
         },

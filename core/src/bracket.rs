@@ -25,10 +25,10 @@
 //! ([`BRACKET_YAW_TOLERANCE_DEG`]).
 
 use crate::error::StageError;
-use crate::model::{rot_x, rot_y, Arm, Convention, Gain, Tilt};
+use crate::model::{rot_x, rot_y, rot_z, Arm, Convention, Gain, Tilt};
 use crate::real::{deg_to_rad, Real};
 use crate::stage0::Reversal;
-use nalgebra::Vector3;
+use nalgebra::{Rotation3, Vector3};
 
 /// The seat repeatability the bracket designs require: a bracket taken off and clipped
 /// on again seats within ±this about each axis (uniform). A design requirement of
@@ -142,7 +142,34 @@ pub struct BracketCalibration<T> {
     pub date: u32,
     /// The sensor's temperature during the calibration (°C).
     pub temperature_c: T,
+    /// The bracket's yaw, where measured on the sine plate ([`calibrate_yaw`]).
+    pub yaw: Option<BracketYaw<T>>,
 }
+
+/// A bracket's yaw: the pendant's turn about its own z in the bracket, measured on a
+/// sine plate ([`calibrate_yaw`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct BracketYaw<T> {
+    /// The turn (rad).
+    pub yaw_rad: T,
+    /// Its standard uncertainty (rad).
+    pub uncertainty_rad: T,
+}
+
+/// The sine plate's tilt for the yaw step: at least this (deg), so that the readings'
+/// noise is a small angle of it, and at most [`SINE_PLATE_MAX_DEG`] so that the readings
+/// stay inside mode 4's ±10°.
+pub const SINE_PLATE_MIN_DEG: f64 = 2.0;
+
+/// See [`SINE_PLATE_MIN_DEG`].
+pub const SINE_PLATE_MAX_DEG: f64 = 8.0;
+
+/// How far a face laid against the sine plate's fence may turn the pendant or the
+/// reference about the vertical (± deg, uniform): the box's long sides and the
+/// reference's fence face are held parallel within 0.05 mm over 60 mm (docs/mounting.md,
+/// T9), 0.048°.
+pub const FENCE_CONTACT_TOLERANCE_DEG: f64 = 0.05;
 
 /// The two brackets of a session, each calibrated or not.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -172,6 +199,12 @@ pub enum BracketError {
         /// The plate's tilt the reversal read (deg).
         tilt_deg: f32,
     },
+    /// The yaw step's reversal read a tilt outside the sine plate's
+    /// [`SINE_PLATE_MIN_DEG`]..[`SINE_PLATE_MAX_DEG`] (deg, as read).
+    NotOnSinePlate {
+        /// The tilt the reversal read (deg).
+        tilt_deg: f32,
+    },
     /// A reversal the sensor could not have read.
     Reading(StageError),
 }
@@ -194,6 +227,11 @@ impl core::fmt::Display for BracketError {
                 f,
                 "the plate is tilted {tilt_deg:.3} deg, more than {PLATE_LEVEL_MAX_DEG}: level \
                  it (the half turns by hand are not exact) and repeat"
+            ),
+            BracketError::NotOnSinePlate { tilt_deg } => write!(
+                f,
+                "the yaw step read a tilt of {tilt_deg:.2} deg: set the sine plate between \
+                 {SINE_PLATE_MIN_DEG} and {SINE_PLATE_MAX_DEG} deg and repeat"
             ),
             BracketError::Reading(e) => write!(f, "a reading of the calibration: {e}"),
         }
@@ -250,8 +288,142 @@ impl<T: Real> BracketCalibration<T> {
             uncertainty_rad,
             date,
             temperature_c,
+            yaw: None,
         })
     }
+
+    /// With the yaw the sine plate measured.
+    ///
+    /// # Errors
+    /// [`BracketError::Implausible`] for a yaw beyond [`MAX_BRACKET_TURN_DEG`] or a
+    /// non-finite or negative uncertainty.
+    pub fn with_yaw(self, yaw: BracketYaw<T>) -> Result<Self, BracketError> {
+        let limit = deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG));
+        if !(yaw.yaw_rad.is_finite()
+            && yaw.yaw_rad.abs() <= limit
+            && yaw.uncertainty_rad.is_finite()
+            && yaw.uncertainty_rad >= T::zero())
+        {
+            return Err(BracketError::Implausible);
+        }
+        Ok(Self {
+            yaw: Some(yaw),
+            ..self
+        })
+    }
+
+    /// The pendant's turn in the bracket, `R_x(a)·R_y(b)·R_z(c)`, with the sensor's
+    /// gain and cross-axis terms `gain` undone from the readings (where known) and
+    /// the yaw c applied: the level reversals read `Rᵀẑ`'s horizontal part
+    /// `R_z(−c)·(−sin b·cos a, sin a)` through `(I + E)`, so both are undone before a and
+    /// b are taken from it (without the yaw, a 0.5° yaw and 0.5° tilt leave 0.0044°).
+    pub fn turn(&self, gain: Option<&Gain<T>>) -> Rotation3<T> {
+        let (a, b) = (self.rotation_rad.x_rad, self.rotation_rad.y_rad);
+        let read = Vector3::new(-(b.sin() * a.cos()), a.sin(), T::zero());
+        let undone = match gain {
+            Some(g) => read - (g.apply_linear(&read) - read),
+            None => read,
+        };
+        let c = self.yaw.map_or(T::zero(), |y| y.yaw_rad);
+        let (s, co) = (c.sin(), c.cos());
+        let (ux, uy) = (undone.x * co - undone.y * s, undone.x * s + undone.y * co);
+        let a = uy.clamp(-T::one(), T::one()).asin();
+        let b = (-ux / a.cos()).clamp(-T::one(), T::one()).asin();
+        rot_x(a) * rot_y(b) * rot_z(c)
+    }
+}
+
+/// The up vector a reading saw, with the chip's offset `bias` (stage 0's, in
+/// `convention`'s terms) taken out: in the `axis` convention the reading is the
+/// direction n of `a = u + o` (`o = (−b_y, b_x, 0)`), and `|u| = 1` fixes the length.
+fn up_vector<T: Real>(
+    reading: &Tilt<T>,
+    bias: &Tilt<T>,
+    convention: Convention,
+) -> Option<Vector3<T>> {
+    match convention {
+        Convention::Rpy => convention.up_from_reading(&reading.minus(bias)),
+        Convention::Axis => {
+            let n = convention.up_from_reading(reading)?;
+            let o = Vector3::new(-bias.y_rad, bias.x_rad, T::zero());
+            let no = n.dot(&o);
+            let disc = no * no - o.dot(&o) + T::one();
+            (disc >= T::zero()).then(|| n * (no + disc.sqrt()) - o)
+        }
+    }
+}
+
+/// A reversal's half difference as an up-vector difference in the pendant's frame.
+fn half_difference<T: Real>(
+    r: &Reversal<T>,
+    bias: &Tilt<T>,
+    convention: Convention,
+) -> Option<Vector3<T>> {
+    let (a, b) = (
+        up_vector(&r.first, bias, convention)?,
+        up_vector(&r.second, bias, convention)?,
+    );
+    Some((a - b) * T::lit(0.5))
+}
+
+/// A bracket's yaw from two reversals on a sine plate against its fence (the pendant
+/// alone, its long side against the fence, turned end for end; then the bracket's
+/// reference against the fence, turned end for end): each half difference is the
+/// plate's tilt in the pendant's frame, so the second is the first turned by the
+/// bracket, `(R_x(a)·R_y(b)·R_z(c))ᵀ`; with a and b from the level step (`tilt_rad`) and
+/// the chip's offset `bias` (stage 0's) taken out, c is the angle left. The chip's own
+/// turn in its box is in both. Its uncertainty: the readings' noise over the tilt, and
+/// the two faces against the fence within ±[`FENCE_CONTACT_TOLERANCE_DEG`].
+///
+/// # Errors
+/// [`BracketError::NotOnSinePlate`] when either reversal's tilt is outside
+/// [`SINE_PLATE_MIN_DEG`]..[`SINE_PLATE_MAX_DEG`]; [`BracketError::Implausible`] for a
+/// yaw beyond [`MAX_BRACKET_TURN_DEG`] or readings no orientation gives.
+pub fn calibrate_yaw<T: Real>(
+    pendant: &Reversal<T>,
+    in_bracket: &Reversal<T>,
+    tilt_rad: &Tilt<T>,
+    bias: &Tilt<T>,
+    convention: Convention,
+    capture_noise_rad: T,
+) -> Result<BracketYaw<T>, BracketError> {
+    let (Some(va), Some(vb)) = (
+        half_difference(pendant, bias, convention),
+        half_difference(in_bracket, bias, convention),
+    ) else {
+        return Err(BracketError::Implausible);
+    };
+    let norm = |v: &Vector3<T>| (v.x * v.x + v.y * v.y).sqrt();
+    let (na, nb) = (norm(&va), norm(&vb));
+    let (lo, hi) = (
+        deg_to_rad(T::lit(SINE_PLATE_MIN_DEG)).sin(),
+        deg_to_rad(T::lit(SINE_PLATE_MAX_DEG)).sin(),
+    );
+    for n in [na, nb] {
+        if !n.is_finite() || n < lo || n > hi {
+            return Err(BracketError::NotOnSinePlate {
+                tilt_deg: crate::real::rad_to_deg(n.clamp(-T::one(), T::one()).asin()).to_f64()
+                    as f32,
+            });
+        }
+    }
+    // The alone pendant's tilt as the bracket's tilted (not yet yawed) frame sees it.
+    let w = (rot_x(tilt_rad.x_rad) * rot_y(tilt_rad.y_rad)).inverse() * va;
+    let yaw_rad = -(w.x * vb.y - w.y * vb.x).atan2(w.x * vb.x + w.y * vb.y);
+    let noise2 = capture_noise_rad * capture_noise_rad / T::lit(CAPTURES_PER_READING as f64);
+    // Each half difference's noise across it is σ/√2, its angle's σ/(√2·|t|).
+    let fence = deg_to_rad(T::lit(FENCE_CONTACT_TOLERANCE_DEG)) / T::lit(3.0).sqrt();
+    let u2 = noise2 / (T::lit(2.0) * na * na)
+        + noise2 / (T::lit(2.0) * nb * nb)
+        + T::lit(2.0) * fence * fence;
+    let yaw = BracketYaw {
+        yaw_rad,
+        uncertainty_rad: u2.sqrt(),
+    };
+    if !(yaw_rad.abs() <= deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG))) {
+        return Err(BracketError::Implausible);
+    }
+    Ok(yaw)
 }
 
 /// A reversal's half difference: the plate's tilt as the first reading saw it (rad).
@@ -331,46 +503,39 @@ impl<T: Real> Brackets<T> {
         }
     }
 
-    /// The arm with each calibrated bracket's turn in its mounting: the pendant's frame
-    /// is the profile's mounting turned by R_x(a)·R_y(b).
+    /// The arm with each calibrated bracket's turn in its mounting
+    /// ([`BracketCalibration::turn`], without the sensor's gain).
     pub fn apply(&self, arm: &Arm<T>) -> Arm<T> {
-        let turn = |c: Option<&BracketCalibration<T>>| {
-            c.map(|c| rot_x(c.rotation_rad.x_rad) * rot_y(c.rotation_rad.y_rad))
-        };
+        self.apply_turns(arm, None)
+    }
+
+    /// [`Brackets::apply`] with each calibration read back through the sensor's gain
+    /// and cross-axis terms `gain` (as the session's fit estimated them): a 0.5° turn
+    /// read with 1 % cross-axis error is 0.005° off; this undoes it to first order (the
+    /// calibration made with this pendant's chip).
+    pub fn apply_with_gain(&self, arm: &Arm<T>, gain: &Gain<T>) -> Arm<T> {
+        self.apply_turns(arm, Some(gain))
+    }
+
+    fn apply_turns(&self, arm: &Arm<T>, gain: Option<&Gain<T>>) -> Arm<T> {
         let mut out = *arm;
-        if let Some(r) = turn(self.upper_arm.as_ref()) {
-            out.upper_arm_mount = arm.upper_arm_mount * r;
+        if let Some(c) = &self.upper_arm {
+            out.upper_arm_mount = arm.upper_arm_mount * c.turn(gain);
         }
-        if let Some(r) = turn(self.flange.as_ref()) {
-            out.flange_mount = arm.flange_mount * r;
+        if let Some(c) = &self.flange {
+            out.flange_mount = arm.flange_mount * c.turn(gain);
         }
         out
     }
 
-    /// [`Brackets::apply`] with each calibration read back through the sensor's gain
-    /// and cross-axis terms `gain` (as the session's fit estimated them): the
-    /// calibration's reversals read the bracket's turn as `(I + E)·Rᵀẑ`'s horizontal
-    /// part, so a 0.5° turn read with 1 % cross-axis error is 0.005° off; this undoes
-    /// it to first order (the calibration made with this pendant's chip).
-    pub fn apply_with_gain(&self, arm: &Arm<T>, gain: &Gain<T>) -> Arm<T> {
-        let corrected = |c: &BracketCalibration<T>| {
-            let (a, b) = (c.rotation_rad.x_rad, c.rotation_rad.y_rad);
-            // The horizontal part of Rᵀẑ as read, for R = R_x(a)·R_y(b).
-            let read = Vector3::new(-(b.sin() * a.cos()), a.sin(), T::zero());
-            let e = gain.apply_linear(&read) - read;
-            let (ux, uy) = (read.x - e.x, read.y - e.y);
-            let a = uy.clamp(-T::one(), T::one()).asin();
-            let b = (-ux / a.cos()).clamp(-T::one(), T::one()).asin();
-            BracketCalibration {
-                rotation_rad: Tilt::new(a, b),
-                ..c.clone()
-            }
-        };
-        Brackets {
-            upper_arm: self.upper_arm.as_ref().map(corrected),
-            flange: self.flange.as_ref().map(corrected),
+    /// The standard uncertainty of `mount`'s bracket's yaw (rad): the sine plate's
+    /// where measured, else the stated tolerance `yaw_tolerance_rad` (± half width,
+    /// uniform).
+    pub fn yaw_uncertainty_rad(&self, mount: BracketMount, yaw_tolerance_rad: T) -> T {
+        match self.get(mount).and_then(|c| c.yaw) {
+            Some(y) => y.uncertainty_rad,
+            None => yaw_tolerance_rad.abs() / T::lit(3.0).sqrt(),
         }
-        .apply(arm)
     }
 
     /// What `mount`'s bracket leaves in the zero it defines, one standard uncertainty
@@ -441,6 +606,70 @@ mod tests {
             // with the 1e-5 rad of a capture's noise halved by four captures a reading.
             assert!(u > 5e-6 && u < 1.5e-5, "{u}");
         }
+    }
+
+    /// A bracket turned R_x(a)·R_y(b)·R_z(c): the level reversals and the sine plate's
+    /// (5°, against its fence) give back its whole turn, yaw included, to 2e-6 rad in
+    /// every entry of the rotation (an exact turn, no noise: the method).
+    #[test]
+    fn the_sine_plate_gives_the_yaw_and_the_whole_turn() {
+        let bias = Tilt::from_deg(0.5, -0.3);
+        let half = crate::model::rot_z(core::f64::consts::PI);
+        let level = rot_x(deg_to_rad(0.05)) * crate::model::rot_z(0.3);
+        let sine = rot_x(deg_to_rad(5.0)) * crate::model::rot_z(0.0);
+        let bracket = rot_x(deg_to_rad(0.45))
+            * rot_y(deg_to_rad(-0.4))
+            * crate::model::rot_z(deg_to_rad(0.5));
+        let reversals = |plate: &Rotation3<f64>| {
+            (
+                Reversal {
+                    first: read(plate, &bias),
+                    second: read(&(plate * half), &bias),
+                },
+                Reversal {
+                    first: read(&(plate * bracket), &bias),
+                    second: read(&(plate * half * bracket), &bias),
+                },
+            )
+        };
+        let (alone, seated) = reversals(&level);
+        let (rot, u) = calibrate(&alone, &seated, Convention::Axis, 0.2, 1e-5).unwrap();
+        let (alone, seated) = reversals(&sine);
+        let yaw = calibrate_yaw(&alone, &seated, &rot, &bias, Convention::Axis, 1e-5).unwrap();
+        assert!((yaw.yaw_rad - deg_to_rad(0.5)).abs() < 2e-6, "{yaw:?}");
+        // The fence's two contacts dominate: 0.05°·√(2/3) = 0.041°.
+        assert!(
+            (yaw.uncertainty_rad.to_degrees() - 0.0408).abs() < 0.001,
+            "{yaw:?}"
+        );
+        let cal = BracketCalibration::new(bracket_id("F-2").unwrap(), rot, u, 20261127, 21.0)
+            .unwrap()
+            .with_yaw(yaw)
+            .unwrap();
+        let turn = cal.turn(None);
+        let worst = (turn.matrix() - bracket.matrix()).abs().max();
+        assert!(worst < 2e-6, "{worst}");
+        // Without the yaw the turn about x is off by about c·b.
+        let without = BracketCalibration { yaw: None, ..cal };
+        let off = (without.turn(None).matrix() - bracket.matrix()).abs().max();
+        assert!(off > 5e-3, "{off}");
+    }
+
+    /// The yaw step refuses a plate that is not tilted as a sine plate is.
+    #[test]
+    fn the_yaw_step_needs_the_sine_plate() {
+        let bias = Tilt::from_deg(0.5, -0.3);
+        let half = crate::model::rot_z(core::f64::consts::PI);
+        let flat = rot_x(deg_to_rad(0.5));
+        let r = Reversal {
+            first: read(&flat, &bias),
+            second: read(&(flat * half), &bias),
+        };
+        let e = calibrate_yaw(&r, &r, &Tilt::default(), &bias, Convention::Axis, 1e-5).unwrap_err();
+        assert!(
+            matches!(e, BracketError::NotOnSinePlate { tilt_deg } if (tilt_deg - 0.5).abs() < 0.01),
+            "{e:?}"
+        );
     }
 
     /// A plate tilted 0.2° is refused by name.

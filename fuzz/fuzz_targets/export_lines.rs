@@ -6,7 +6,9 @@
 #![no_main]
 use arbitrary::{Arbitrary, Unstructured};
 use libfuzzer_sys::fuzz_target;
-use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketMount, MAX_BRACKET_TURN_DEG};
+use zerocal_core::bracket::{
+    bracket_id, BracketCalibration, BracketMount, BracketYaw, MAX_BRACKET_TURN_DEG,
+};
 use zerocal_core::capture::{Approach, CaptureIndex, MAX_PLAN_POSES};
 use zerocal_core::model::Tilt;
 use zerocal_core::stage0::{ClosingReversal, Reversal};
@@ -202,7 +204,12 @@ fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
                 date,
                 temperature_c,
             )
-            .expect("a plausible calibration"),
+            .expect("a plausible calibration")
+            .with_yaw(BracketYaw {
+                yaw_rad: within(u, MAX_BRACKET_TURN_DEG)?.to_radians(),
+                uncertainty_rad: within(u, 0.1)?.abs().to_radians(),
+            })
+            .expect("a plausible yaw"),
         )
     } else {
         None
@@ -225,6 +232,13 @@ fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
                         );
                         assert!(
                             close_temperature(Some(a.temperature_c), Some(b.temperature_c)),
+                            "{line}"
+                        );
+                        let (ya, yb) = (a.yaw.expect("written"), b.yaw.expect("read back"));
+                        assert!(
+                            (ya.yaw_rad - yb.yaw_rad).abs() <= ANGLE_TOLERANCE_RAD
+                                && (ya.uncertainty_rad - yb.uncertainty_rad).abs()
+                                    <= ANGLE_TOLERANCE_RAD,
                             "{line}"
                         );
                     }

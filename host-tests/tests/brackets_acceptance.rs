@@ -1,17 +1,18 @@
 //! The brackets, the box and stage 0 as a technician would meet them, over 200 sessions
 //! per robot on the six family profiles, every source of the error table on:
 //!
-//! - the design's world: brackets made within ±0.5° (tilt) and calibrated
-//!   (docs/bracket-calibration.md), seated within the design's ±0.002°, their yaws within
-//!   the design's ±0.05° (two pins), the chip within ±1° in its box, the bench tilted
-//!   0.5° and stage 0's half turn made against the fence (±0.05°): every joint within
-//!   0.005° in at least 95 % of sessions, the budget's k = 2 covering at least 95 % per
-//!   joint, no refusal, no capture past mode 4's ±10°;
+//! - the design's world: brackets made within ±0.5° (tilt) and calibrated on a level
+//!   plate and a sine plate (docs/bracket-calibration.md), seated within the design's
+//!   ±0.0015°, their yaws within the design's ±0.05° (two pins), the chip within ±1° in
+//!   its box, the bench tilted 0.5° and stage 0's half turn made against the fence
+//!   (±0.05°): every joint within 0.005° in at least 95 % of sessions, the budget's
+//!   k = 2 covering at least 95 % per joint, no refusal, no capture past mode 4's ±10°;
+//! - the same with the yaws within ±0.5°: the same holds (the sine plate measures them);
 //! - the same brackets never calibrated: the budget (±0.5° for each) covers at least 95 %
 //!   (that the report names each: cli/tests/bracket_report.rs);
-//! - the widest ranges (yaws ±0.5°, half turn by hand ±1°): the budget still covers, no
-//!   refusal; the 0.005° aim does not hold there (printed with `--nocapture`; see
-//!   docs/bracket-calibration.md, "What is left").
+//! - stage 0 turned by hand (±1°) instead of at the fence: the budget still covers, no
+//!   refusal; the 0.005° aim holds in 94-96.5 % (printed with `--nocapture`; see
+//!   docs/method.md, stage 0).
 
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -87,13 +88,26 @@ fn uncalibrated_brackets_are_covered_by_the_budget() {
 }
 
 #[test]
-fn at_the_widest_ranges_the_budget_still_covers() {
+fn at_the_widest_ranges_with_the_fence_every_joint_is_within_0_005_deg() {
+    let world = WorldConfig {
+        bracket_yaw_deg: 0.5,
+        ..design_world()
+    };
+    run_all(&world, 2400, |robot, s| {
+        assert_eq!(s.refused, 0, "{robot}: refused");
+        assert!(s.all_within >= 0.95, "{robot}: {:?}", s);
+        assert!(s.covered.iter().all(|&c| c >= 0.95), "{robot}: {:?}", s);
+    });
+}
+
+#[test]
+fn with_stage_0_turned_by_hand_the_budget_still_covers() {
     let world = WorldConfig {
         bracket_yaw_deg: 0.5,
         half_turn_error_deg: 1.0,
         ..design_world()
     };
-    run_all(&world, 2400, |robot, s| {
+    run_all(&world, 2500, |robot, s| {
         assert_eq!(s.refused, 0, "{robot}: refused");
         assert!(s.covered.iter().all(|&c| c >= 0.95), "{robot}: {:?}", s);
     });

@@ -15,8 +15,9 @@ use nalgebra::{Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::bracket::{
-    bracket_id, calibrate, BracketCalibration, BracketMount, Brackets, BRACKET_YAW_TOLERANCE_DEG,
-    CAPTURES_PER_READING, REFERENCE_TURN_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
+    bracket_id, calibrate, calibrate_yaw, BracketCalibration, BracketMount, BracketYaw, Brackets,
+    BRACKET_YAW_TOLERANCE_DEG, CAPTURES_PER_READING, FENCE_CONTACT_TOLERANCE_DEG,
+    REFERENCE_TURN_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
 };
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
@@ -153,9 +154,14 @@ impl WorldConfig {
             extras,
             bracket_u_rad: BracketMount::ALL
                 .map(|m| brackets.standard_uncertainty_rad(m, seat_rad)),
-            bracket_yaw_rad: BRACKET_YAW_TOLERANCE_DEG
-                .max(self.bracket_yaw_deg)
-                .to_radians(),
+            bracket_yaw_u_rad: BracketMount::ALL.map(|m| {
+                brackets.yaw_uncertainty_rad(
+                    m,
+                    BRACKET_YAW_TOLERANCE_DEG
+                        .max(self.bracket_yaw_deg)
+                        .to_radians(),
+                )
+            }),
             repeatability_rad: if self.robot.repeatability {
                 self.robot_spec.repeatability_deg.to_radians()
             } else {
@@ -285,14 +291,24 @@ fn small_rotation(rng: &mut ChaCha8Rng, half_deg: f64) -> ([f64; 3], Rotation3<f
 }
 
 /// The calibration of a bracket whose turn is known exactly (`made`: about x, y, z).
+/// It holds the turn as a calibration reads it (the level reversals see
+/// `R_z(−c)·(−sin b·cos a, sin a)`), and the yaw.
 fn exact_calibration(made: &[f64; 3]) -> BracketCalibration<f64> {
+    let [a, b, c] = *made;
+    let (x, y) = (-(b.sin() * a.cos()), a.sin());
+    let (read_x, read_y) = (x * c.cos() + y * c.sin(), -x * c.sin() + y * c.cos());
+    let read_a = read_y.asin();
     BracketCalibration {
-        // "EXACT" is a valid ID: six ASCII letters.
+        // "EXACT" is a valid ID: five ASCII letters.
         id: bracket_id("EXACT").unwrap_or_default(),
-        rotation_rad: Tilt::new(made[0], made[1]),
+        rotation_rad: Tilt::new(read_a, (-read_x / read_a.cos()).asin()),
         uncertainty_rad: 0.0,
         date: SIM_CALIBRATION_DATE,
         temperature_c: 23.0,
+        yaw: Some(BracketYaw {
+            yaw_rad: c,
+            uncertainty_rad: 0.0,
+        }),
     }
 }
 
@@ -350,12 +366,40 @@ fn calibrate_bracket(
         first: read(&(plate * seated), rng),
         second: read(&(plate * turn(rng) * seated), rng),
     };
+    let noise = deg_to_rad(MEMS_CAPTURE_NOISE_DEG);
     let (rotation, u) = calibrate(
         &pendant,
         &in_bracket,
         Convention::Axis,
         deg_to_rad(MEMS_RANGE_DEG),
-        deg_to_rad(MEMS_CAPTURE_NOISE_DEG),
+        noise,
+    )
+    .ok()?;
+    // The yaw: the same two reversals on a sine plate at 5°, each face laid against
+    // its fence within the fence's tolerance, turned end for end against it.
+    let sine = rot_z(uniform(rng, core::f64::consts::PI)) * rot_x(deg_to_rad(5.0));
+    let at_fence = |rng: &mut ChaCha8Rng, half: f64| {
+        rot_z(half + deg_to_rad(uniform(rng, FENCE_CONTACT_TOLERANCE_DEG)))
+    };
+    let pi = core::f64::consts::PI;
+    let pendant_tilted = Reversal {
+        first: read(&(sine * at_fence(rng, 0.0)), rng),
+        second: read(&(sine * at_fence(rng, pi)), rng),
+    };
+    let bracket_tilted = Reversal {
+        first: read(&(sine * at_fence(rng, 0.0) * seated), rng),
+        second: read(&(sine * at_fence(rng, pi) * seated), rng),
+    };
+    let bias = pendant
+        .bias(Convention::Axis, deg_to_rad(MEMS_RANGE_DEG))
+        .ok()?;
+    let yaw = calibrate_yaw(
+        &pendant_tilted,
+        &bracket_tilted,
+        &rotation,
+        &bias,
+        Convention::Axis,
+        noise,
     )
     .ok()?;
     BracketCalibration::new(
@@ -365,6 +409,7 @@ fn calibrate_bracket(
         SIM_CALIBRATION_DATE,
         bench.temperature_c,
     )
+    .and_then(|c| c.with_yaw(yaw))
     .ok()
 }
 

@@ -79,7 +79,7 @@ pub fn predicted_k2_deg(
             extras: fit.extras,
             // Calibrated brackets at the design's seat repeatability (docs/mounting.md).
             bracket_u_rad: [SEAT_REPEATABILITY_DEG.to_radians() / 3f64.sqrt(); 2],
-            bracket_yaw_rad: BRACKET_YAW_TOLERANCE_DEG.to_radians(),
+            bracket_yaw_u_rad: [BRACKET_YAW_TOLERANCE_DEG.to_radians() / 3f64.sqrt(); 2],
             repeatability_rad: DEFAULT_REPEATABILITY_DEG.to_radians(),
             lost_motion_rad: DEFAULT_LOST_MOTION_DEG.to_radians(),
         },

@@ -69,7 +69,8 @@ pub enum BudgetTerm {
     /// The sensor's x offset when no stage-0 reversal measured it (Type B: the
     /// SCL3300's offset specification, propagated; see [`Budget::add_unknown_sensor_offset`]).
     UnknownSensorOffset,
-    /// The two brackets' yaws (Type B, the stated tolerance): stage 2's cross-axis
+    /// The two brackets' yaws (the sine plate's uncertainty, or the stated tolerance
+    /// where not measured): stage 2's cross-axis
     /// terms, handed back to stage 1, hold the flange bracket's yaw where stage 1 had
     /// the upper arm's, so their difference turns the base's tilt β into Δθ3 (1:1 in
     /// simulation, [`crate::bracket`]).
@@ -113,7 +114,7 @@ impl BudgetTerm {
             BudgetTerm::Mounting => "bracket seats (stated tolerance)",
             BudgetTerm::HalfTurn => "stage 0 half turn on a tilted bench",
             BudgetTerm::UnknownSensorOffset => "sensor offset, no stage 0 (specification)",
-            BudgetTerm::BracketYaw => "bracket yaws x base tilt (stated tolerance)",
+            BudgetTerm::BracketYaw => "bracket yaws x base tilt",
         }
     }
 
@@ -159,8 +160,9 @@ pub struct BudgetInputs<T> {
     /// Each bracket's standard uncertainty about the joint's axis it defines, upper arm
     /// then flange ([`crate::bracket::Brackets::standard_uncertainty_rad`]) (rad).
     pub bracket_u_rad: [T; 2],
-    /// Each bracket's yaw tolerance (± half width, uniform) (rad).
-    pub bracket_yaw_rad: T,
+    /// Each bracket's yaw's standard uncertainty, upper arm then flange
+    /// ([`crate::bracket::Brackets::yaw_uncertainty_rad`]) (rad).
+    pub bracket_yaw_u_rad: [T; 2],
     /// The robot's repeatability per joint, 1σ (rad).
     pub repeatability_rad: T,
     /// The gears' lost motion (rad): joint 3, loaded by the arm, may sit on gravity's
@@ -310,11 +312,11 @@ pub fn budget<T: Real>(
     terms[mounting][1] = u_upper;
     terms[mounting][SESSION_JOINTS - 1] = u_flange;
 
-    // The brackets' yaws: their difference (two uniforms, variance 2·y²/3) times the
-    // base's tilt β, into Δθ3.
+    // The brackets' yaws: their difference times the base's tilt β, into Δθ3.
     let beta = solution.model.base_tilt.beta_rad.abs();
+    let [yaw_upper, yaw_flange] = inputs.bracket_yaw_u_rad;
     terms[BudgetTerm::BracketYaw.index()][1] =
-        beta * inputs.bracket_yaw_rad.abs() * (T::lit(2.0) / T::lit(3.0)).sqrt();
+        beta * (yaw_upper * yaw_upper + yaw_flange * yaw_flange).sqrt();
 
     // The geometry the poses could not separate, at its stated worst case.
     for k in 0..WRIST_JOINTS {
@@ -553,7 +555,7 @@ mod tests {
             &BudgetInputs {
                 extras: fit.extras,
                 bracket_u_rad: [0.0; 2],
-                bracket_yaw_rad: 0.0,
+                bracket_yaw_u_rad: [0.0; 2],
                 repeatability_rad: 0.0,
                 lost_motion_rad,
             },

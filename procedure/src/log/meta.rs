@@ -7,7 +7,7 @@ use super::{
     TEMPERATURE_RANGE_C,
 };
 use core::fmt::{self, Write};
-use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketMount};
+use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketMount, BracketYaw};
 use zerocal_core::decimal::Fixed;
 use zerocal_core::model::{Convention, Tilt};
 use zerocal_core::real::{deg_to_rad, Real};
@@ -36,7 +36,8 @@ pub enum MetaItem<T> {
     /// `# fit_extras gain,cross_z,…|none`: what the pendant's fit estimated.
     FitExtras(Extras),
     /// `# bracket_upper_arm|bracket_flange id ID rot_deg x,y u_deg u date YYYYMMDD
-    /// temp_c t` (`None` for `none`): the bracket's calibration the session applied.
+    /// temp_c t [yaw_deg c u_yaw_deg w]` (`None` for `none`): the bracket's calibration
+    /// the session applied (the yaw where the sine plate measured it).
     Bracket(BracketMount, Option<BracketCalibration<T>>),
 }
 
@@ -73,7 +74,14 @@ pub fn write_bracket<T: Real>(
         " date {} temp_c {}",
         c.date,
         Fixed::new(c.temperature_c.to_f64(), super::TEMPERATURE_DECIMALS)
-    )
+    )?;
+    if let Some(y) = c.yaw {
+        w.write_str(" yaw_deg ")?;
+        deg(w, y.yaw_rad)?;
+        w.write_str(" u_yaw_deg ")?;
+        deg(w, y.uncertainty_rad)?;
+    }
+    Ok(())
 }
 
 /// The names of [`Extras`]' groups in `# fit_extras`, in order.
@@ -321,8 +329,25 @@ pub fn parse_meta<T: Real>(
             let temp = field("temp_c", &mut rest).and_then(&parse).filter(|t| {
                 t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t)
             });
-            match (id, rotation, u, date, temp, rest.next()) {
-                (Some(id), Some(rotation), Some(u), Some(date), Some(t), None) => {
+            let yaw = match rest.next() {
+                None => Some(None),
+                Some("yaw_deg") => {
+                    let value = rest.next().and_then(&parse).filter(|v| v.is_finite());
+                    let u = field("u_yaw_deg", &mut rest)
+                        .and_then(&parse)
+                        .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
+                    match (value, u, rest.next()) {
+                        (Some(v), Some(u), None) => Some(Some(BracketYaw {
+                            yaw_rad: deg_to_rad(T::lit(v)),
+                            uncertainty_rad: deg_to_rad(T::lit(u)),
+                        })),
+                        _ => None,
+                    }
+                }
+                Some(_) => None,
+            };
+            match (id, rotation, u, date, temp, yaw) {
+                (Some(id), Some(rotation), Some(u), Some(date), Some(t), Some(yaw)) => {
                     let c = BracketCalibration::new(
                         id,
                         rotation,
@@ -330,6 +355,10 @@ pub fn parse_meta<T: Real>(
                         date,
                         T::lit(t),
                     )
+                    .and_then(|c| match yaw {
+                        Some(y) => c.with_yaw(y),
+                        None => Ok(c),
+                    })
                     .map_err(|_| bad)?;
                     MetaItem::Bracket(mount, Some(c))
                 }
