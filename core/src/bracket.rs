@@ -420,7 +420,7 @@ pub fn calibrate_yaw<T: Real>(
         yaw_rad,
         uncertainty_rad: u2.sqrt(),
     };
-    if !(yaw_rad.abs() <= deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG))) {
+    if !yaw_rad.is_finite() || yaw_rad.abs() > deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG)) {
         return Err(BracketError::Implausible);
     }
     Ok(yaw)
