@@ -46,7 +46,7 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
                 "UNCALIBRATED {} bracket: no calibration in the export, so its turn about {} \
                  (up to +/-{} deg for a bracket of the design) is in the offsets unmeasured; \
                  the budget carries it whole ('{}', {:.3} deg at 1 sigma). Calibrate the \
-                 bracket (docs/mounting.md) and load it with the profile",
+                 bracket (docs/bracket-calibration.md) and load it with the profile",
                 m.name(),
                 match m {
                     BracketMount::UpperArm => "joint 2 (into j2 and, back, j3)",

@@ -111,7 +111,7 @@ impl BudgetTerm {
             BudgetTerm::Repeatability => "robot repeatability (stated, propagated)",
             BudgetTerm::LoadedBacklash => "joint 3 backlash under gravity (stated)",
             BudgetTerm::Stage1Backlash => "joint 2 at stage 1 (backlash side)",
-            BudgetTerm::Mounting => "bracket seats (stated tolerance)",
+            BudgetTerm::Mounting => "brackets (calibration and seat)",
             BudgetTerm::HalfTurn => "stage 0 half turn on a tilted bench",
             BudgetTerm::UnknownSensorOffset => "sensor offset, no stage 0 (specification)",
             BudgetTerm::BracketYaw => "bracket yaws x base tilt",
