@@ -127,10 +127,9 @@ pub enum BracketKnowledge {
     /// Their turns exactly (a world whose brackets are the profile's mounting, or
     /// known to be): the calibrations carry the truth with no uncertainty.
     Exact,
-    /// Each calibrated on its reference before the session, as docs/mounting.md says:
-    /// the pendant's reversal on a plate tilted by the bench's tilt, then in the
-    /// bracket on the reference, each half turn off by up to
-    /// [`zerocal_core::bracket::REFERENCE_TURN_TOLERANCE_DEG`].
+    /// Each calibrated on its reference before the session, as
+    /// docs/bracket-calibration.md says: on a plate levelled within
+    /// [`WorldConfig::plate_tilt_deg`] and on a sine plate (`calibrate_bracket`).
     Calibrated,
     /// Never calibrated: the session has no calibrations.
     Uncalibrated,
@@ -324,12 +323,15 @@ struct BracketBench<'a> {
     temperature_c: f64,
 }
 
-/// A bracket's calibration as docs/mounting.md describes it, with this world's sensor:
-/// the pendant's reversal on the plate, then in the bracket (turned by `made`, seated
-/// on its reference within the seat's repeatability) with the reference reversed on
-/// the plate, each half turn by hand within
-/// ±[`zerocal_core::bracket::REFERENCE_TURN_TOLERANCE_DEG`]. `None` if the core refuses
-/// the readings (then the session has no calibration for it).
+/// A bracket's calibration as docs/bracket-calibration.md describes it, with this
+/// world's sensor: the pendant's reversal on the levelled plate, then in the bracket
+/// (turned by `made`, seated on its reference within the seat's repeatability) with the
+/// reference reversed on the plate, each half turn by hand within
+/// ±[`zerocal_core::bracket::REFERENCE_TURN_TOLERANCE_DEG`]; then the same two reversals
+/// on a 5° sine plate, each face against the fence within
+/// ±[`FENCE_CONTACT_TOLERANCE_DEG`] (the yaw). Each reading averages the calibration's
+/// captures. `None` if the core refuses the readings (then the session has no
+/// calibration for it).
 fn calibrate_bracket(
     sensor: &mut Scl3300Unit,
     bench: &BracketBench<'_>,
