@@ -286,7 +286,8 @@ pub fn calibrate<T: Real>(
     let level = deg_to_rad(T::lit(PLATE_LEVEL_MAX_DEG));
     for r in [pendant, in_bracket] {
         let tilt = plate_tilt(r);
-        if !(tilt <= level) {
+        // A tilt that is not a number is refused too.
+        if !tilt.is_finite() || tilt > level {
             return Err(BracketError::PlateNotLevel {
                 tilt_deg: crate::real::rad_to_deg(tilt).to_f64() as f32,
             });
