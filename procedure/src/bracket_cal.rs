@@ -19,14 +19,23 @@
 //!
 //! The captures in progress are not stored: a power cut costs the few minutes of the
 //! calibration under way, never a kept one. Nothing here waits or allocates.
+//!
+//! The link's `brackets` prints the kept calibrations, one [`bracket_line`] a mount;
+//! `zerocal pendant brackets` reads them back ([`parse_bracket_line`]) and writes the
+//! profile's `[[bracket]]` TOML, stamping the date (the pendant has no calendar).
+
+use core::fmt::{self, Write};
 
 use crate::capture::Capture;
+use crate::link::Line;
+use crate::log::TEMPERATURE_DECIMALS;
 use crate::machine::{Event, ProcedureConfig, Record};
 use crate::stillness::{Stillness, StillnessFilter};
 use zerocal_core::bracket::BRACKET_ID_LEN;
 use zerocal_core::bracket::{bracket_id, calibrate, BracketError, BracketId, BracketMount};
+use zerocal_core::decimal::Fixed;
 use zerocal_core::model::{Tilt, TiltAxis};
-use zerocal_core::real::{rad_to_deg, Real};
+use zerocal_core::real::{deg_to_rad, rad_to_deg, Real};
 use zerocal_core::stage0::Reversal;
 
 /// The captures of a bracket calibration.
@@ -438,11 +447,134 @@ fn on_sample<T: Real>(
     }
 }
 
+/// Decimals of a bracket's turn and uncertainty (deg) in [`bracket_line`]: 1e-5° is
+/// 1.7e-7 rad, finer than a calibration resolves.
+pub const BRACKET_LINE_DECIMALS: u8 = 5;
+
+/// The first word of a [`bracket_line`].
+const LINE_TAG: &str = "bracket";
+
+/// `bracket MOUNT id ID rot_deg X,Y u_deg U temp_c T|none`, or `bracket MOUNT none`:
+/// one kept calibration as the link's `brackets` prints it.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn bracket_line<T: Real>(
+    mount: BracketMount,
+    kept: Option<&StoredBracket<T>>,
+) -> Result<Line, fmt::Error> {
+    let mut w = Line::new();
+    write!(w, "{LINE_TAG} {}", mount.name())?;
+    let Some(b) = kept else {
+        w.write_str(" none")?;
+        return Ok(w);
+    };
+    let deg = |v: T| Fixed::signed(rad_to_deg(v).to_f64(), BRACKET_LINE_DECIMALS);
+    write!(
+        w,
+        " id {} rot_deg {},{} u_deg {} temp_c ",
+        b.id,
+        deg(b.result.rotation_rad.x_rad),
+        deg(b.result.rotation_rad.y_rad),
+        Fixed::new(
+            rad_to_deg(b.result.uncertainty_rad).to_f64(),
+            BRACKET_LINE_DECIMALS
+        ),
+    )?;
+    match b.result.temperature_c {
+        Some(t) => write!(w, "{}", Fixed::new(t.to_f64(), TEMPERATURE_DECIMALS))?,
+        None => w.write_str("none")?,
+    }
+    Ok(w)
+}
+
+/// What is wrong with a line that should be a [`bracket_line`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BracketLineError {
+    /// Not `bracket upper-arm|flange …`.
+    NotABracketLine,
+    /// A field missing, out of order, not a number or out of its range.
+    BadField(&'static str),
+}
+
+impl fmt::Display for BracketLineError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BracketLineError::NotABracketLine => {
+                f.write_str("not a 'bracket upper-arm|flange ...' line")
+            }
+            BracketLineError::BadField(name) => write!(f, "its '{name}' is missing or bad"),
+        }
+    }
+}
+
+/// Reads a [`bracket_line`] back: the mount and its calibration (`None` for `none`).
+///
+/// # Errors
+/// [`BracketLineError`], naming the field.
+pub fn parse_bracket_line<T: Real>(
+    line: &str,
+) -> Result<(BracketMount, Option<StoredBracket<T>>), BracketLineError> {
+    let mut words = line.split_whitespace();
+    let mount = match (words.next(), words.next()) {
+        (Some(LINE_TAG), Some(m)) => BracketMount::parse(m),
+        _ => None,
+    }
+    .ok_or(BracketLineError::NotABracketLine)?;
+    let mut field = |name: &'static str| -> Result<&str, BracketLineError> {
+        match (words.next(), words.next()) {
+            (Some(n), Some(v)) if n == name => Ok(v),
+            _ => Err(BracketLineError::BadField(name)),
+        }
+    };
+    let number = |name: &'static str, v: &str| -> Result<f64, BracketLineError> {
+        v.parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or(BracketLineError::BadField(name))
+    };
+    if line.split_whitespace().nth(2) == Some("none") {
+        return if line.split_whitespace().count() == 3 {
+            Ok((mount, None))
+        } else {
+            Err(BracketLineError::BadField("none"))
+        };
+    }
+    let id = bracket_id(field("id")?).map_err(|_| BracketLineError::BadField("id"))?;
+    let rot = field("rot_deg")?;
+    let (x, y) = rot
+        .split_once(',')
+        .ok_or(BracketLineError::BadField("rot_deg"))?;
+    let (x, y) = (number("rot_deg", x)?, number("rot_deg", y)?);
+    let u = number("u_deg", field("u_deg")?)?;
+    if u < 0.0 {
+        return Err(BracketLineError::BadField("u_deg"));
+    }
+    let temperature_c = match field("temp_c")? {
+        "none" => None,
+        t => Some(T::lit(number("temp_c", t)?)),
+    };
+    if words.next().is_some() {
+        return Err(BracketLineError::BadField("end of line"));
+    }
+    Ok((
+        mount,
+        Some(StoredBracket {
+            mount,
+            id,
+            result: BracketResult {
+                rotation_rad: Tilt::new(deg_to_rad(T::lit(x)), deg_to_rad(T::lit(y))),
+                uncertainty_rad: deg_to_rad(T::lit(u)),
+                temperature_c,
+            },
+        }),
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, Convention, SensorModel};
-    use zerocal_core::real::deg_to_rad;
 
     /// A chip offset of 0.58° in its box, as core's bracket test.
     fn bias() -> Tilt<f64> {
@@ -632,6 +764,49 @@ mod tests {
         assert_eq!(
             bracket_step(&config, &mut s, Event::Back),
             BracketOutput::Leave
+        );
+    }
+
+    /// The `brackets` line reads back to 1e-5° (its decimals), `none` included; a
+    /// line with a field missing or not a number is refused by the field's name.
+    #[test]
+    fn the_brackets_line_reads_back() {
+        let kept = StoredBracket {
+            mount: BracketMount::UpperArm,
+            id: bracket_id("U-2").unwrap(),
+            result: BracketResult {
+                rotation_rad: Tilt::from_deg(0.412_345_6, -0.27),
+                uncertainty_rad: deg_to_rad(0.000_83),
+                temperature_c: Some(21.25_f64),
+            },
+        };
+        let line = bracket_line(BracketMount::UpperArm, Some(&kept)).unwrap();
+        assert_eq!(
+            line.as_str(),
+            "bracket upper-arm id U-2 rot_deg +0.41235,-0.27000 u_deg 0.00083 temp_c 21.25"
+        );
+        let (mount, back) = parse_bracket_line::<f64>(&line).unwrap();
+        let back = back.unwrap();
+        assert_eq!((mount, back.id.as_str()), (BracketMount::UpperArm, "U-2"));
+        let (x, y) = back.result.rotation_rad.to_deg();
+        assert!((x - 0.412_345_6).abs() <= 0.5e-5 && (y + 0.27).abs() < 1e-12);
+        assert_eq!(back.result.temperature_c, Some(21.25));
+        let none = bracket_line::<f64>(BracketMount::Flange, None).unwrap();
+        assert_eq!(
+            parse_bracket_line::<f64>(&none),
+            Ok((BracketMount::Flange, None))
+        );
+        assert_eq!(
+            parse_bracket_line::<f64>("bracket flange id F-1 rot_deg 0.1 u_deg 0 temp_c none"),
+            Err(BracketLineError::BadField("rot_deg"))
+        );
+        assert_eq!(
+            parse_bracket_line::<f64>("bracket flange id F-1 rot_deg 0.1,0 u_deg -1 temp_c none"),
+            Err(BracketLineError::BadField("u_deg"))
+        );
+        assert_eq!(
+            parse_bracket_line::<f64>("bracket wrist none"),
+            Err(BracketLineError::NotABracketLine)
         );
     }
 
