@@ -183,5 +183,5 @@ pub fn flange_calibration(link_text: &str) -> Option<StoredBracket<f64>> {
         .filter_map(|l| parse_bracket_line::<f64>(l.trim()).ok())
         .filter(|(mount, _)| *mount == BracketMount::Flange)
         .filter_map(|(_, kept)| kept)
-        .last()
+        .next_back()
 }
