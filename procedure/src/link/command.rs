@@ -110,7 +110,7 @@ impl fmt::Display for LinkError {
                 "plan row {row}: joints 1 and 2 must stay at stage 1's (the profile's stage-1 pose); plan unchanged"
             ),
             LinkError::EraseNeedsAll => f.write_str(
-                "'erase all' erases the session, bias, last result, profile and plan; nothing erased",
+                "'erase all' erases the session, bias, last result, profile, plan and brackets; nothing erased",
             ),
             LinkError::PlanTooLong => {
                 write!(

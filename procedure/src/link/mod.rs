@@ -11,7 +11,9 @@
 //! | `clear` | clears the session in progress |
 //! | `profile` | the robot profile in use, as the lines `profile set` takes |
 //! | `profile set` | uploads a robot profile (`zerocal pendant load-profile` writes it), then `end` |
-//! | `erase all` | erases the store: session, bias, last result, profile and plan |
+//! | `erase all` | erases the store: session, bias, last result, profile, plan and brackets |
+//! | `bracket calibrate upper-arm\|flange ID` | starts a bracket's calibration on the pendant ([`parse_bracket_calibrate`]) |
+//! | `brackets` | the brackets' calibrations kept, one line a mount (`crate::bracket_cal::bracket_line`) |
 //!
 //! Unknown or malformed lines get an `error:` line and change nothing. Parsing and
 //! formatting live here; the firmware's link task only moves bytes.
