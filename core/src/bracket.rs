@@ -120,8 +120,8 @@ pub fn bracket_id(s: &str) -> Result<BracketId, BracketError> {
 }
 
 /// One bracket's calibration.
+// No `defmt::Format`: its ID is a heapless `String`, which implements only defmt 0.3's.
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct BracketCalibration<T> {
     /// The bracket's ID.
     pub id: BracketId,
@@ -137,8 +137,8 @@ pub struct BracketCalibration<T> {
 }
 
 /// The two brackets of a session, each calibrated or not.
+// No `defmt::Format`, as [`BracketCalibration`].
 #[derive(Clone, Debug, PartialEq, Default)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Brackets<T> {
     /// The upper-arm bracket's calibration, if it has one.
     pub upper_arm: Option<BracketCalibration<T>>,

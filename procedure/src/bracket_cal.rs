@@ -80,8 +80,8 @@ pub struct BracketResult<T> {
 }
 
 /// A calibration kept on the pendant: a [`Record::BracketCalibration`] read back.
+// No `defmt::Format`: its ID is a heapless `String`, which implements only defmt 0.3's.
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct StoredBracket<T> {
     /// Which bracket.
     pub mount: BracketMount,
