@@ -557,3 +557,38 @@ fn the_exit_statuses_are_in_the_help() {
         assert!(help.contains(words), "{words}: {help}");
     }
 }
+
+/// `zerocal pendant brackets` on what the simulated pendant answered after a bracket's
+/// calibration and a power cycle: the flange's `[[bracket]]` table dated as asked, the
+/// upper arm's a comment. An answer cut to one line is refused (exit 3), and a date
+/// that is no day is refused before any port (exit 2).
+#[test]
+fn brackets_read_out_as_the_uploads_toml() {
+    let report = zerocal_pendant_desktop::bracket::calibrated().unwrap();
+    let lines: Vec<&str> = report
+        .link_text
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with("bracket "))
+        .collect();
+    // The last `brackets` answer: upper arm, then flange.
+    let answer = &lines[lines.len() - 2..];
+    let action = PendantAction::Brackets {
+        out: None,
+        date: Some("2026-11-27".into()),
+    };
+    let toml = replay(&action, &[String::from_utf8(crlf(answer)).unwrap()]).unwrap();
+    assert!(toml.contains("# upper-arm: none calibrated"), "{toml}");
+    assert!(
+        toml.contains("[[bracket]]\nmount = \"flange\"\nid = \"F-017\"\nrotation_deg = ["),
+        "{toml}"
+    );
+    assert!(toml.contains("date = \"2026-11-27\""), "{toml}");
+    let (code, words) = refusal(&mut Scripted::bytes([crlf(&answer[1..])]), &action);
+    assert_eq!(code, 3, "{words}");
+    let bad = PendantAction::Brackets {
+        out: None,
+        date: Some("2026-02-30".into()),
+    };
+    assert_eq!(pendant::requests(&bad).unwrap_err().exit_code(), 2);
+}

@@ -128,8 +128,8 @@ pub fn bracket_id(s: &str) -> Result<BracketId, BracketError> {
 }
 
 /// One bracket's calibration.
+// No `defmt::Format`: its ID is a heapless `String`, which implements only defmt 0.3's.
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct BracketCalibration<T> {
     /// The bracket's ID.
     pub id: BracketId,
@@ -172,8 +172,8 @@ pub const SINE_PLATE_MAX_DEG: f64 = 8.0;
 pub const FENCE_CONTACT_TOLERANCE_DEG: f64 = 0.05;
 
 /// The two brackets of a session, each calibrated or not.
+// No `defmt::Format`, as [`BracketCalibration`].
 #[derive(Clone, Debug, PartialEq, Default)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Brackets<T> {
     /// The upper-arm bracket's calibration, if it has one.
     pub upper_arm: Option<BracketCalibration<T>>,
@@ -467,6 +467,7 @@ pub fn calibrate<T: Real>(
     let level = deg_to_rad(T::lit(PLATE_LEVEL_MAX_DEG));
     for r in [pendant, in_bracket] {
         let tilt = plate_tilt(r);
+        // A tilt that is not a number is refused too.
         if !tilt.is_finite() || tilt > level {
             return Err(BracketError::PlateNotLevel {
                 tilt_deg: crate::real::rad_to_deg(tilt).to_f64() as f32,

@@ -15,6 +15,7 @@ use zerocal_pendant::channels::{LinkReply, LinkRequest, Shared};
 use zerocal_pendant::config::procedure_config;
 use zerocal_pendant::procedure::{reset_to_builtin, set_profile};
 use zerocal_pendant_desktop::exec;
+use zerocal_procedure::bracket_cal::BracketCalState;
 use zerocal_procedure::{step, Event};
 
 /// Host to pendant: packets of up to 64 bytes (USB full-speed bulk), then the cable
@@ -108,6 +109,10 @@ fuzz_target!(|data: &[u8]| {
                     },
                     LinkRequest::Erase => {
                         let _ = reset_to_builtin(p, &[]);
+                        LinkReply::Done
+                    }
+                    LinkRequest::CalibrateBracket { mount, id } => {
+                        p.bracket_cal = Some(BracketCalState::new(mount, id));
                         LinkReply::Done
                     }
                 }

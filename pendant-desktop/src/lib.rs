@@ -6,11 +6,13 @@
 //! and moves the robot as the screens ask.
 //!
 //! Whole runs, for `cargo xtask pendant-sim` and the tests: a calibration
-//! [`session`], the [`power_cuts`] campaign, the [`faults`] scenarios, a link
+//! [`session`], the [`power_cuts`] campaign, the [`faults`] scenarios, a [`bracket`]'s
+//! calibration, a link
 //! [`conversation`] and the screen [`gallery`]. [`script`] drives a session step by
 //! step for tests that look at the pendant between stages.
 
 pub mod agreement;
+pub mod bracket;
 pub mod conversation;
 pub mod exec;
 pub mod faults;

@@ -175,6 +175,12 @@ pub async fn operate_until(
                 press(rig, Button::Ok, PRESS_MS).await
             }
             Screen::Result(_) => return Ok(screen),
+            // A session's operator does not calibrate brackets (`bracket calibrate`).
+            Screen::Bracket(_) => {
+                return Err(ScriptError::Unexpected(
+                    "a bracket calibration's screen".to_owned(),
+                ))
+            }
             Screen::Capture(capture) => {
                 if let Some(fault) = capture.fault {
                     return Err(ScriptError::Unexpected(format!("sensor fault {fault:?}")));

@@ -99,6 +99,12 @@ pub enum Place {
     UpperArm,
     /// Clipped to the flange.
     Flange,
+    /// In a bracket on its reference block, on the bench, the block turned by this
+    /// heading (rad) about the vertical: a bracket's calibration.
+    Bracket {
+        /// Heading (rad).
+        heading_rad: f64,
+    },
 }
 
 /// A motion in progress: from, to, start (ms), duration (ms).
@@ -142,6 +148,8 @@ pub struct World {
     pub bias: Tilt<f64>,
     /// The bench's tilt.
     pub bench: Rotation3<f64>,
+    /// The pendant's turn in the bracket on its reference ([`Place::Bracket`]; truth).
+    pub bracket_turn: Rotation3<f64>,
     /// The SCL3300.
     pub device: Scl3300Device,
     /// The angle registers stop following the world (a frozen output).
@@ -190,6 +198,7 @@ impl World {
             robot,
             bias,
             bench,
+            bracket_turn: Rotation3::identity(),
             device: Scl3300Device::new(),
             freeze_output: false,
             creep_deg_s: 0.0,
@@ -253,9 +262,14 @@ impl World {
     /// the heading turns over the same time. Returns when it is placed (ms).
     pub fn carry(&mut self, t_ms: f64, place: Place) -> f64 {
         let end = t_ms + HANDLING_MS as f64;
-        if let (Place::Bench { heading_rad: a }, Place::Bench { heading_rad: b }) =
-            (self.place, place)
-        {
+        let turned = match (self.place, place) {
+            (Place::Bench { heading_rad: a }, Place::Bench { heading_rad: b })
+            | (Place::Bracket { heading_rad: a }, Place::Bracket { heading_rad: b }) => {
+                Some((a, b))
+            }
+            _ => None,
+        };
+        if let Some((a, b)) = turned {
             self.heading = Motion {
                 from: a,
                 to: b,
@@ -264,7 +278,7 @@ impl World {
             };
         } else {
             self.hand_until_ms = end;
-            if let Place::Bench { heading_rad } = place {
+            if let Place::Bench { heading_rad } | Place::Bracket { heading_rad } = place {
                 // Put down at that heading (the closing reversal's bench after the
                 // flange).
                 self.heading = Motion::at_rest(heading_rad);
@@ -283,7 +297,7 @@ impl World {
             return rot_x(0.3 * (s * 2.1).sin()) * rot_y(0.2 * (s * 1.3).cos()) * rot_z(s);
         }
         match self.place {
-            Place::Bench { .. } => {
+            Place::Bench { .. } | Place::Bracket { .. } => {
                 let p = self.heading.progress(t_ms);
                 let heading = self.heading.from + p * (self.heading.to - self.heading.from);
                 // Turned by hand: a little rocking while it turns.
@@ -292,7 +306,11 @@ impl World {
                 } else {
                     0.0
                 };
-                self.bench * rot_z(heading) * rot_x(rock)
+                let on_bench = self.bench * rot_z(heading) * rot_x(rock);
+                match self.place {
+                    Place::Bracket { .. } => on_bench * self.bracket_turn,
+                    _ => on_bench,
+                }
             }
             Place::Hand => rot_x(0.3),
             Place::UpperArm => {

@@ -20,7 +20,9 @@ use embassy_sync::blocking_mutex::raw::CriticalSectionRawMutex;
 use embassy_sync::channel::Channel;
 use embassy_sync::mutex::Mutex;
 use embassy_sync::signal::Signal;
+use zerocal_core::bracket::{BracketId, BracketMount};
 use zerocal_core::plan::PoseList;
+use zerocal_procedure::bracket_cal::{BracketCalState, StoredBrackets};
 use zerocal_procedure::{PendantProfile, ProcedureConfig, ProcedureState};
 
 use crate::messages::{ButtonEvent, SensorReport};
@@ -38,6 +40,11 @@ pub struct Procedure {
     pub session: ProcedureState<f32>,
     /// The stored profile's generation (0: none stored, the built-in one in use).
     pub profile_generation: u8,
+    /// The brackets' calibrations made on this pendant and kept, the last per mount.
+    pub brackets: StoredBrackets<f32>,
+    /// A bracket calibration in progress: the buttons and samples go to it, the
+    /// session waits as it was.
+    pub bracket_cal: Option<BracketCalState<f32>>,
 }
 
 /// A change the USB host asks for.
@@ -54,6 +61,13 @@ pub enum LinkRequest {
     SetProfile(PendantProfile<f32>),
     /// `erase all`.
     Erase,
+    /// `bracket calibrate MOUNT ID`: start a bracket's calibration.
+    CalibrateBracket {
+        /// Which bracket.
+        mount: BracketMount,
+        /// Its ID.
+        id: BracketId,
+    },
 }
 
 /// What became of a [`LinkRequest`].
@@ -102,6 +116,8 @@ impl Shared {
                 config,
                 session: ProcedureState::new(PoseList::new(), None),
                 profile_generation: 0,
+                brackets: StoredBrackets::default(),
+                bracket_cal: None,
             }),
             sensor_reports: Channel::new(),
             button_events: Channel::new(),

@@ -14,15 +14,18 @@ use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use heapless::String;
+use zerocal_core::bracket::{BracketError, MAX_BRACKET_TURN_DEG, PLATE_LEVEL_MAX_DEG};
 use zerocal_core::decimal::Fixed;
 use zerocal_core::error::{FitError, StageError};
 use zerocal_core::report::Warning;
 use zerocal_core::session::SessionError;
+use zerocal_procedure::bracket_cal::{BracketNotice, BracketStep};
 use zerocal_procedure::{Approach, Notice, MAX_PLAN_POSES};
 
 use crate::messages::SensorFault;
 use crate::screen::{
-    CaptureScreen, FitSummary, Offset, Prompt, Refusal, RestartCause, ResultScreen, Screen, Settle,
+    BracketScreen, CaptureScreen, FitSummary, Offset, Prompt, Refusal, RestartCause, ResultScreen,
+    Screen, Settle,
 };
 use crate::store::ResetReason;
 
@@ -108,6 +111,114 @@ pub fn lines(screen: &Screen) -> [Text; 6] {
         }
         Screen::Capture(capture) => capture_lines(capture),
         Screen::Result(result) => result_lines(result),
+        Screen::Bracket(bracket) => bracket_lines(bracket),
+    }
+}
+
+/// Decimals of a bracket's turn and its uncertainty (deg): 0.00001° is 1.7e-7 rad,
+/// below what a calibration resolves, as `zerocal pendant brackets` writes them.
+pub const BRACKET_DECIMALS: u8 = 5;
+
+/// A bracket calibration: each step's instruction, the result, or the refusal.
+fn bracket_lines(screen: &BracketScreen) -> [Text; 6] {
+    if let Some(fault) = screen.fault {
+        return fault_lines(fault);
+    }
+    let title = line(format_args!("BRACKET {}", screen.id));
+    let footer = if screen.store_failed {
+        fixed("! FLASH WRITE FAILED")
+    } else {
+        fixed("OK: keep  BACK: undo")
+    };
+    match &screen.outcome {
+        Some(Ok(r)) => {
+            let (x_deg, y_deg) = r.rotation_rad.to_deg();
+            let u_deg = r.uncertainty_rad.to_degrees();
+            let temperature = match r.temperature_c {
+                Some(t) => line(format_args!("  {}\u{b0}C", sgn(t, 1))),
+                None => fixed("  --\u{b0}C"),
+            };
+            return [
+                title,
+                line(format_args!("{} turn:", screen.mount.name())),
+                line(format_args!("x {}\u{b0}", sgn(x_deg, BRACKET_DECIMALS))),
+                line(format_args!("y {}\u{b0}", sgn(y_deg, BRACKET_DECIMALS))),
+                line(format_args!(
+                    "u {}\u{b0}{temperature}",
+                    fx(u_deg, BRACKET_DECIMALS)
+                )),
+                footer,
+            ];
+        }
+        Some(Err(e)) => {
+            let [a, b, c] = bracket_refusal_lines(e);
+            return [
+                fixed("BRACKET REFUSED"),
+                a,
+                b,
+                c,
+                line(format_args!("id {}", screen.id)),
+                fixed("OK: again BACK: undo"),
+            ];
+        }
+        None => {}
+    }
+    let (first, second) = match screen.step {
+        BracketStep::Alone => ("1/4 pendant alone on", "levelled plate; OK"),
+        BracketStep::AloneTurned => ("2/4 turn it 180\u{b0} on", "same spot; OK"),
+        BracketStep::Seated => ("3/4 pendant in brkt,", "brkt on its ref.; OK"),
+        BracketStep::SeatedTurned | BracketStep::Done => {
+            ("4/4 turn the ref.", "180\u{b0} same spot; OK")
+        }
+    };
+    let hint = match screen.notice {
+        _ if screen.store_failed => fixed("! FLASH WRITE FAILED"),
+        Some(BracketNotice::ReadingOutOfRange { axis, value_deg }) => {
+            line(format_args!("! {axis}={}\u{b0} > range", sgn(value_deg, 2)))
+        }
+        Some(BracketNotice::SensorFault) => fixed("! sensor fault"),
+        Some(BracketNotice::Captured) => fixed("captured  BACK: undo"),
+        None if screen.step == BracketStep::Alone => {
+            line(format_args!("{} BACK: leave", screen.mount.name()))
+        }
+        None => fixed("BACK: undo"),
+    };
+    [
+        title,
+        fixed(first),
+        fixed(second),
+        live_text(screen.live_deg),
+        settle_text(screen.settle, screen.armed),
+        hint,
+    ]
+}
+
+/// Why a bracket calibration was refused, in three lines.
+fn bracket_refusal_lines(e: &BracketError) -> [Text; 3] {
+    match *e {
+        BracketError::PlateNotLevel { tilt_deg } => [
+            line(format_args!("plate tilted {}\u{b0}", fx(tilt_deg, 3))),
+            line(format_args!(
+                "more than {}\u{b0}:",
+                fx(PLATE_LEVEL_MAX_DEG, 1)
+            )),
+            fixed("level it and repeat"),
+        ],
+        BracketError::Implausible => [
+            line(format_args!(
+                "turn > {}\u{b0}: not a",
+                fx(MAX_BRACKET_TURN_DEG, 1)
+            )),
+            fixed("bracket's; check its"),
+            fixed("seats and reference"),
+        ],
+        BracketError::Reading(_) => [
+            fixed("a reading is out of"),
+            fixed("range or not a"),
+            fixed("number: retake it"),
+        ],
+        // Not made by a calibration on the pendant.
+        BracketError::BadId | BracketError::BadDate => [fixed("bad ID"), Text::new(), Text::new()],
     }
 }
 
@@ -381,7 +492,12 @@ fn fault_lines(fault: SensorFault) -> [Text; 6] {
 
 /// `x+1.2345 y-0.1234` (deg, raw), or why there is none.
 fn live_line(screen: &CaptureScreen) -> Text {
-    match screen.live_deg {
+    live_text(screen.live_deg)
+}
+
+/// [`live_line`] of a reading (deg).
+fn live_text(live_deg: Option<(f32, f32)>) -> Text {
+    match live_deg {
         // Four decimals: the LSB is 0.0055°; the captured mean resolves finer.
         Some((x, y)) => line(format_args!("x{} y{}", sgn(x, 4), sgn(y, 4))),
         None => fixed("x ---     y ---"),
@@ -390,8 +506,13 @@ fn live_line(screen: &CaptureScreen) -> Text {
 
 /// Stillness and whether the next still window is captured.
 fn settle_line(screen: &CaptureScreen) -> Text {
-    let arm = if screen.armed { "armed" } else { "OK: arm" };
-    match screen.settle {
+    settle_text(screen.settle, screen.armed)
+}
+
+/// [`settle_line`] of a stillness and whether armed.
+fn settle_text(settle: Settle, armed: bool) -> Text {
+    let arm = if armed { "armed" } else { "OK: arm" };
+    match settle {
         Settle::Moving => line(format_args!("moving       {arm}")),
         Settle::Settling(percent) => line(format_args!("settling {percent:>2}% {arm}")),
         Settle::Still => line(format_args!("STILL        {arm}")),
@@ -731,6 +852,49 @@ mod tests {
         for screen in &screens {
             for text in lines(screen) {
                 assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
+            }
+        }
+        // A bracket's every step, its result and refusals with the longest ID and
+        // mount name and the widest numbers a calibration gives.
+        let id = zerocal_core::bracket::bracket_id("ABCDEFGHIJKL").unwrap();
+        let result = zerocal_procedure::bracket_cal::BracketResult {
+            rotation_rad: zerocal_core::model::Tilt::from_deg(-0.999_99_f32, -0.999_99),
+            uncertainty_rad: 0.000_99_f32.to_radians(),
+            temperature_c: Some(-40.5),
+        };
+        let outcomes = [
+            None,
+            Some(Ok(result)),
+            Some(Err(BracketError::PlateNotLevel { tilt_deg: 12.345 })),
+            Some(Err(BracketError::Implausible)),
+            Some(Err(BracketError::Reading(StageError::NonFiniteReading))),
+        ];
+        for outcome in outcomes {
+            for step in BracketStep::CAPTURES {
+                for notice in [
+                    None,
+                    Some(BracketNotice::Captured),
+                    Some(BracketNotice::ReadingOutOfRange {
+                        axis: zerocal_core::model::TiltAxis::Y,
+                        value_deg: -12.34,
+                    }),
+                ] {
+                    let screen = Screen::Bracket(BracketScreen {
+                        mount: zerocal_core::bracket::BracketMount::UpperArm,
+                        id: id.clone(),
+                        step,
+                        outcome,
+                        live_deg: Some((-9.9999, -9.9999)),
+                        settle: Settle::Settling(99),
+                        armed: false,
+                        notice,
+                        fault: None,
+                        store_failed: false,
+                    });
+                    for text in lines(&screen) {
+                        assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
+                    }
+                }
             }
         }
         for fault in [

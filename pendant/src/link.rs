@@ -26,10 +26,13 @@ use embassy_futures::select::{select, Either};
 use embassy_time::{with_timeout, Duration, Ticker};
 use embedded_io_async::{Read, Write};
 use heapless::Vec;
+use zerocal_core::bracket::BracketMount;
 use zerocal_core::decimal::Fixed;
+use zerocal_procedure::bracket_cal::bracket_line;
 use zerocal_procedure::link::{
-    parse_command, pendant_status, plan_line, plan_stored, profile_stored, status, Command, Line,
-    PlanUpload, UploadStep, ERASED, HELP, NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
+    bracket_started, parse_bracket_calibrate, parse_command, pendant_status, plan_line,
+    plan_stored, profile_stored, status, Command, Line, PlanUpload, UploadStep, ERASED, HELP,
+    NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
 };
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
 use zerocal_procedure::replies::Reply;
@@ -287,6 +290,25 @@ impl<W: Write> Server<'_, W> {
         if line.trim().is_empty() {
             return Ok(Next::Line);
         }
+        match parse_bracket_calibrate(line) {
+            Some(Ok((mount, id))) => {
+                let confirmation = bracket_started(mount, &id);
+                match self
+                    .request(LinkRequest::CalibrateBracket { mount, id })
+                    .await
+                {
+                    LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                    // Nothing is stored at the start: the procedure only shows it.
+                    _ => self.write_text(confirmation).await?,
+                }
+                return Ok(Next::Line);
+            }
+            Some(Err(error)) => {
+                self.write_fmt(format_args!("error: {error}")).await?;
+                return Ok(Next::Line);
+            }
+            None => {}
+        }
         let command = match parse_command(line) {
             Ok(command) => command,
             Err(error) => {
@@ -341,6 +363,13 @@ impl<W: Write> Server<'_, W> {
                 _ => self.reply(Reply::EraseFailed).await?,
             },
             Command::Export => self.export().await?,
+            Command::Brackets => {
+                let procedure = self.shared.procedure.lock().await;
+                for mount in BracketMount::ALL {
+                    let text = bracket_line(mount, procedure.brackets.get(mount));
+                    self.write_text(text).await?;
+                }
+            }
             Command::Live => return Ok(Next::Live),
             Command::Clear => match self.request(LinkRequest::Clear).await {
                 LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::Cleared).await?,

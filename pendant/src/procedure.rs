@@ -16,6 +16,9 @@ use embassy_time::{Duration, Instant, Timer};
 use embedded_storage_async::nor_flash::NorFlash;
 use zerocal_core::model::Tilt;
 use zerocal_core::plan::PoseList;
+use zerocal_procedure::bracket_cal::{
+    bracket_step, BracketCalState, BracketOutput, StoredBracket, StoredBrackets,
+};
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
     step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot,
@@ -24,7 +27,7 @@ use zerocal_procedure::{
 use crate::buttons::{Button, ButtonEvent, Press};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
 use crate::config::STILL_MOVING_MS;
-use crate::screen::{PendantState, RestartNote, Screen};
+use crate::screen::{BracketScreen, PendantState, RestartNote, Screen};
 use crate::sensor::SensorReport;
 use crate::store::{Restored, Store};
 
@@ -122,6 +125,14 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             Either3::Third(LinkRequest::SetProfile(profile)) => {
                 set_profile(&mut procedure, &profile)
             }
+            Either3::Third(LinkRequest::CalibrateBracket { mount, id }) => {
+                // Nothing to store until the operator keeps a result.
+                procedure.bracket_cal = Some(BracketCalState::new(mount, id));
+                Some(Output::default())
+            }
+            input @ (Either3::First(_) | Either3::Second(_)) if procedure.bracket_cal.is_some() => {
+                on_bracket_input(&mut procedure, &mut presentation, input)
+            }
             // An erase that failed changes nothing: what the store holds stays in use.
             Either3::Third(LinkRequest::Erase) if erase_failed => None,
             Either3::Third(LinkRequest::Erase) => {
@@ -151,7 +162,11 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                     Either3::Second(press) => on_press(&mut presentation, session.phase(), press),
                     Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
                     Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
-                    Either3::Third(LinkRequest::SetProfile(_) | LinkRequest::Erase) => None,
+                    Either3::Third(
+                        LinkRequest::SetProfile(_)
+                        | LinkRequest::Erase
+                        | LinkRequest::CalibrateBracket { .. },
+                    ) => None,
                 };
                 event.map(|e| step(config, session, e))
             }
@@ -217,6 +232,7 @@ fn restore<F: NorFlash>(
     procedure.profile_generation = PendantProfile::newest_generation(restored.records());
     // A store to be reset restores nothing: the session starts afresh.
     procedure.session = ProcedureState::restore(&procedure.config, restored.records());
+    procedure.brackets = StoredBrackets::from_records(restored.records());
     opened
 }
 
@@ -245,6 +261,7 @@ pub fn set_profile(
         config,
         session,
         profile_generation,
+        ..
     } = procedure;
     let idle = session.phase() == Phase::Done
         || (session.phase() == Phase::Stage0First
@@ -275,6 +292,8 @@ pub fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) ->
     procedure.config = crate::config::procedure_config();
     procedure.profile_generation = 0;
     procedure.session = ProcedureState::new(PoseList::new(), None);
+    procedure.brackets = StoredBrackets::default();
+    procedure.bracket_cal = None;
     let plan = PoseList::from_slice(default_plan).unwrap_or_default();
     step(
         &procedure.config,
@@ -352,11 +371,76 @@ async fn persist<F: NorFlash>(
     }
 }
 
-/// Sends the screen for the session as it is now.
+/// Sends the screen for the session (or the bracket calibration) as it is now.
 fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
-    shared.screen.signal(Screen::from_view(
-        &procedure.session.view(),
-        &procedure.config.display,
-        p.extras,
-    ));
+    let screen = match &procedure.bracket_cal {
+        Some(bracket) => Screen::Bracket(BracketScreen::from_state(bracket, p.extras)),
+        None => Screen::from_view(
+            &procedure.session.view(),
+            &procedure.config.display,
+            p.extras,
+        ),
+    };
+    shared.screen.signal(screen);
+}
+
+/// A sample, a sensor fault or a press during a bracket calibration: its step, and
+/// the record to store when the operator keeps the result.
+fn on_bracket_input(
+    procedure: &mut Procedure,
+    p: &mut Presentation,
+    input: Either3<SensorReport, ButtonEvent, LinkRequest>,
+) -> Option<Output<f32>> {
+    let event = match input {
+        Either3::First(SensorReport::Reading {
+            t_ms,
+            tilt,
+            temperature_c,
+        }) => {
+            p.extras.fault = None;
+            Event::Sample {
+                t_ms,
+                reading: Tilt::new(tilt.x_rad, tilt.y_rad),
+                temperature_c: Some(temperature_c),
+            }
+        }
+        Either3::First(SensorReport::Fault(fault)) => {
+            p.extras.fault = Some(fault);
+            Event::SensorFault
+        }
+        // Every step is a placement by hand and OK: a short or long press alike.
+        Either3::Second(ButtonEvent {
+            button: Button::Ok, ..
+        }) => Event::Ok,
+        Either3::Second(ButtonEvent {
+            button: Button::Back,
+            press: Press::Short,
+        }) => Event::Back,
+        // NEXT means nothing here; a held BACK must not undo capture after capture.
+        Either3::Second(_) | Either3::Third(_) => return None,
+    };
+    let Procedure {
+        config,
+        brackets,
+        bracket_cal,
+        ..
+    } = procedure;
+    let state = bracket_cal.as_mut()?;
+    match bracket_step(config, state, event) {
+        BracketOutput::Stay => None,
+        BracketOutput::Leave => {
+            *bracket_cal = None;
+            None
+        }
+        BracketOutput::Keep(record) => {
+            if let Some(kept) = StoredBracket::from_record(&record) {
+                brackets.keep(kept);
+            }
+            *bracket_cal = None;
+            let mut output = Output::default();
+            // One record into a buffer of a whole plan's.
+            let _ = output.persist.push(record);
+            Some(output)
+        }
+    }
 }

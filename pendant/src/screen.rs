@@ -8,10 +8,12 @@
 //! `Signal`. [`Screen::kind`] names each distinct screen: the host runner writes one
 //! picture per kind, and the README's gallery is those pictures.
 
+use zerocal_core::bracket::{BracketError, BracketId, BracketMount};
 use zerocal_core::model::WRIST_JOINTS;
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::report::{Warning, MAX_WARNINGS};
 use zerocal_core::session::{SessionError, SESSION_JOINTS};
+use zerocal_procedure::bracket_cal::{BracketCalState, BracketNotice, BracketResult, BracketStep};
 use zerocal_procedure::profile::JointName;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{Approach, ControllerDisplay, Notice, Outcome, Phase, RobotName, View};
@@ -32,6 +34,62 @@ pub enum Screen {
     Capture(CaptureScreen),
     /// The session's result, one page at a time (NEXT turns the page).
     Result(ResultScreen),
+    /// A bracket's calibration: its steps, its result or its refusal.
+    Bracket(BracketScreen),
+}
+
+/// A bracket calibration's screen (`zerocal_procedure::bracket_cal`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BracketScreen {
+    /// Which bracket.
+    pub mount: BracketMount,
+    /// Its ID.
+    pub id: BracketId,
+    /// The step (or `Done`: `outcome` says what came of it).
+    pub step: BracketStep,
+    /// The result (rad, °C) or the refusal, once done.
+    pub outcome: Option<Result<BracketResult<f32>, BracketError>>,
+    /// Latest raw reading (x, y) in degrees; `None` without a sensor.
+    pub live_deg: Option<(f32, f32)>,
+    /// Stillness of the current window.
+    pub settle: Settle,
+    /// Whether the next still window is captured.
+    pub armed: bool,
+    /// What the calibration wants the operator to see.
+    pub notice: Option<BracketNotice>,
+    /// The sensor task's reason when there is no reading.
+    pub fault: Option<SensorFault>,
+    /// The last flash write failed.
+    pub store_failed: bool,
+}
+
+impl BracketScreen {
+    /// The screen of a calibration in progress.
+    pub fn from_state(s: &BracketCalState<f32>, extras: PendantState) -> Self {
+        BracketScreen {
+            mount: s.mount(),
+            id: s.id().clone(),
+            step: s.step(),
+            outcome: s.outcome().copied(),
+            live_deg: s.live().map(|t| t.to_deg()),
+            settle: Settle::of(&s.stillness()),
+            armed: s.armed(),
+            notice: s.notice(),
+            fault: extras.fault,
+            store_failed: extras.store_failed,
+        }
+    }
+}
+
+impl Settle {
+    /// The stillness filter's state, as shown.
+    pub fn of(stillness: &Stillness<f32>) -> Self {
+        match stillness {
+            Stillness::Moving => Settle::Moving,
+            Stillness::Settling { percent } => Settle::Settling(*percent),
+            Stillness::Still { .. } => Settle::Still,
+        }
+    }
 }
 
 /// Why the pendant restarted, kept across the reset by the board.
@@ -248,6 +306,18 @@ pub enum ScreenKind {
     ResultWarning,
     /// No result, and why.
     NoResult,
+    /// Bracket calibration, step 1: the pendant alone on the plate.
+    BracketPlate,
+    /// Bracket calibration, step 2: the pendant turned half a turn.
+    BracketPlateTurned,
+    /// Bracket calibration, step 3: the pendant in the bracket on its reference.
+    BracketSeated,
+    /// Bracket calibration, step 4: the reference turned half a turn.
+    BracketSeatedTurned,
+    /// A bracket's calibration, to keep.
+    BracketResult,
+    /// A bracket calibration refused, and why.
+    BracketRefused,
 }
 
 impl ScreenKind {
@@ -280,6 +350,12 @@ impl ScreenKind {
             ScreenKind::ResultDetails => "result-details",
             ScreenKind::ResultWarning => "result-warning",
             ScreenKind::NoResult => "no-result",
+            ScreenKind::BracketPlate => "bracket-plate",
+            ScreenKind::BracketPlateTurned => "bracket-plate-turned",
+            ScreenKind::BracketSeated => "bracket-seated",
+            ScreenKind::BracketSeatedTurned => "bracket-seated-turned",
+            ScreenKind::BracketResult => "bracket-result",
+            ScreenKind::BracketRefused => "bracket-refused",
         }
     }
 
@@ -350,6 +426,39 @@ impl ScreenKind {
             ScreenKind::ResultDetails => "checks residual and conditioning; NEXT for warnings",
             ScreenKind::ResultWarning => "reads what to distrust before entering the offsets",
             ScreenKind::NoResult => "reads why, then BACK to retake poses",
+            ScreenKind::BracketPlate => {
+                "puts the pendant alone on the levelled surface plate, lets go and presses OK (BACK leaves the calibration)"
+            }
+            ScreenKind::BracketPlateTurned => {
+                "turns the pendant half a turn on the same spot, lets go and presses OK"
+            }
+            ScreenKind::BracketSeated => {
+                "seats the pendant in the bracket, the bracket on its reference on the plate, lets go and presses OK"
+            }
+            ScreenKind::BracketSeatedTurned => {
+                "turns the reference half a turn on the same spot, lets go and presses OK"
+            }
+            ScreenKind::BracketResult => {
+                "reads the bracket's turn about x and y, its uncertainty and the temperature; OK keeps it in flash (the last per mount, read out by `zerocal pendant brackets`), BACK retakes the last capture"
+            }
+            ScreenKind::BracketRefused => {
+                "reads why (a plate tilted more than 0.1°, a turn no bracket has, a reading out of range), fixes it, then OK starts again or BACK retakes the last capture"
+            }
+        }
+    }
+}
+
+impl ScreenKind {
+    /// The screen of a sensor fault.
+    fn of_fault(fault: SensorFault) -> Self {
+        match fault {
+            SensorFault::NotResponding => ScreenKind::SensorAbsent,
+            SensorFault::FrameErrors => ScreenKind::SensorBadFrames,
+            SensorFault::ErrorStatus { .. } => ScreenKind::SensorError,
+            SensorFault::Frozen => ScreenKind::SensorFrozen,
+            SensorFault::NotPresent { .. } | SensorFault::NotReady | SensorFault::Bus => {
+                ScreenKind::SensorOther
+            }
         }
     }
 }
@@ -368,17 +477,24 @@ impl Screen {
                 (Ok(_), 1) => ScreenKind::ResultDetails,
                 (Ok(_), _) => ScreenKind::ResultWarning,
             },
+            Screen::Bracket(bracket) => {
+                if let Some(fault) = bracket.fault {
+                    return ScreenKind::of_fault(fault);
+                }
+                match (&bracket.outcome, bracket.step) {
+                    (Some(Ok(_)), _) => ScreenKind::BracketResult,
+                    (Some(Err(_)), _) => ScreenKind::BracketRefused,
+                    (None, BracketStep::Alone) => ScreenKind::BracketPlate,
+                    (None, BracketStep::AloneTurned) => ScreenKind::BracketPlateTurned,
+                    (None, BracketStep::Seated) => ScreenKind::BracketSeated,
+                    (None, BracketStep::SeatedTurned | BracketStep::Done) => {
+                        ScreenKind::BracketSeatedTurned
+                    }
+                }
+            }
             Screen::Capture(capture) => {
                 if let Some(fault) = capture.fault {
-                    return match fault {
-                        SensorFault::NotResponding => ScreenKind::SensorAbsent,
-                        SensorFault::FrameErrors => ScreenKind::SensorBadFrames,
-                        SensorFault::ErrorStatus { .. } => ScreenKind::SensorError,
-                        SensorFault::Frozen => ScreenKind::SensorFrozen,
-                        SensorFault::NotPresent { .. }
-                        | SensorFault::NotReady
-                        | SensorFault::Bus => ScreenKind::SensorOther,
-                    };
+                    return ScreenKind::of_fault(fault);
                 }
                 match capture.notice {
                     Some(Notice::ReadingOutOfRange { .. }) => return ScreenKind::OutOfRange,
@@ -452,11 +568,7 @@ impl Screen {
                 None => Prompt::NoPose,
             },
         };
-        let settle = match view.stillness {
-            Stillness::Moving => Settle::Moving,
-            Stillness::Settling { percent } => Settle::Settling(percent),
-            Stillness::Still { .. } => Settle::Still,
-        };
+        let settle = Settle::of(&view.stillness);
         Screen::Capture(CaptureScreen {
             prompt,
             live_deg: view.live.map(|t| t.to_deg()),

@@ -3,6 +3,8 @@
 //! - [`machine`] (its items re-exported here): the operator's procedure as a state
 //!   machine with automatic capture, the flash records that make it survive a power cut
 //!   ([`record`]), and the robot profile the pendant holds ([`profile`]).
+//! - [`bracket_cal`]: a bracket's calibration guided on the pendant, four captures on
+//!   a surface plate, driven like the session.
 //! - [`stillness`]: the still-window filter that fires a capture, its sample period,
 //!   window and re-arm threshold.
 //! - [`link`]: the USB line protocol, one vocabulary of commands and replies for the
@@ -27,6 +29,7 @@
 #![warn(missing_docs)]
 #![allow(clippy::needless_range_loop)]
 
+pub mod bracket_cal;
 pub mod capture;
 pub mod export_trailer;
 pub mod link;

@@ -132,6 +132,7 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
                     || n.starts_with("restarted")
                     || n.starts_with("no-result")
                     || n.starts_with("result-warning")
+                    || n.starts_with("bracket")
             })
             .collect();
         println!(

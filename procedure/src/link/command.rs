@@ -2,6 +2,7 @@
 
 use crate::MAX_PLAN_POSES;
 use core::fmt;
+use zerocal_core::bracket::{bracket_id, BracketId, BracketMount, BRACKET_ID_LEN};
 
 /// The text of `help`.
 pub const HELP: &[&str] = &[
@@ -15,7 +16,9 @@ pub const HELP: &[&str] = &[
     "  clear      clear the session in progress",
     "  profile    the robot profile in use",
     "  profile set  upload a robot profile (zerocal pendant load-profile), then 'end'",
-    "  erase all  erase session, bias, last result, profile and plan",
+    "  erase all  erase session, bias, last result, profile, plan and brackets",
+    "  bracket calibrate upper-arm|flange ID  calibrate a bracket, guided on the pendant",
+    "  brackets   the brackets' calibrations kept (zerocal pendant brackets)",
 ];
 
 /// A parsed command.
@@ -43,6 +46,8 @@ pub enum Command {
     ProfileSet,
     /// `erase all`
     Erase,
+    /// `brackets`
+    Brackets,
 }
 
 /// What is wrong with a line.
@@ -78,6 +83,8 @@ pub enum LinkError {
         /// Rows given.
         rows: usize,
     },
+    /// `bracket …` that is not `bracket calibrate upper-arm|flange ID`.
+    BracketCalibrateUsage,
 }
 
 impl fmt::Display for LinkError {
@@ -103,7 +110,7 @@ impl fmt::Display for LinkError {
                 "plan row {row}: joints 1 and 2 must stay at stage 1's (the profile's stage-1 pose); plan unchanged"
             ),
             LinkError::EraseNeedsAll => f.write_str(
-                "'erase all' erases the session, bias, last result, profile and plan; nothing erased",
+                "'erase all' erases the session, bias, last result, profile, plan and brackets; nothing erased",
             ),
             LinkError::PlanTooLong => {
                 write!(
@@ -111,6 +118,10 @@ impl fmt::Display for LinkError {
                     "a plan holds at most {MAX_PLAN_POSES} poses (each is captured twice); plan unchanged"
                 )
             }
+            LinkError::BracketCalibrateUsage => write!(
+                f,
+                "usage: bracket calibrate upper-arm|flange ID (ID: 1-{BRACKET_ID_LEN} letters, digits, '-' or '_')"
+            ),
             LinkError::PlanTooShort { rows } => write!(
                 f,
                 "{rows} poses: a plan needs at least {} ; plan unchanged",
@@ -122,7 +133,7 @@ impl fmt::Display for LinkError {
 
 impl Command {
     /// Every command, in the order `help` lists them.
-    pub const ALL: [Command; 10] = [
+    pub const ALL: [Command; 11] = [
         Command::Help,
         Command::Status,
         Command::Live,
@@ -133,6 +144,7 @@ impl Command {
         Command::Profile,
         Command::ProfileSet,
         Command::Erase,
+        Command::Brackets,
     ];
 
     /// The words a person (or `zerocal pendant`) types for it: defined here once, for
@@ -149,6 +161,7 @@ impl Command {
             Command::Profile => "profile",
             Command::ProfileSet => "profile set",
             Command::Erase => "erase all",
+            Command::Brackets => "brackets",
         }
     }
 }
@@ -185,6 +198,31 @@ pub fn parse_command(line: &str) -> Result<Command, LinkError> {
     Err(LinkError::UnknownCommand)
 }
 
+/// The first words of [`parse_bracket_calibrate`]'s command.
+pub const BRACKET_CALIBRATE: &str = "bracket calibrate";
+
+/// Parses `bracket calibrate upper-arm|flange ID`, which starts a bracket's
+/// calibration on the pendant; `None` for a line that does not begin with `bracket`
+/// (a [`parse_command`] line).
+///
+/// # Errors
+/// [`LinkError::BracketCalibrateUsage`]: another word, a mount that is not one, an
+/// ID that is not one, or more words.
+pub fn parse_bracket_calibrate(line: &str) -> Option<Result<(BracketMount, BracketId), LinkError>> {
+    let mut words = line.split_whitespace();
+    let mut expected = BRACKET_CALIBRATE.split(' ');
+    if words.next() != expected.next() {
+        return None;
+    }
+    let parsed = match (words.next(), words.next(), words.next(), words.next()) {
+        (calibrate, Some(mount), Some(id), None) if calibrate == expected.next() => {
+            BracketMount::parse(mount).zip(bracket_id(id).ok())
+        }
+        _ => None,
+    };
+    Some(parsed.ok_or(LinkError::BracketCalibrateUsage))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -213,5 +251,31 @@ mod tests {
             parse_command("erase everything"),
             Err(LinkError::EraseNeedsAll)
         );
+        assert_eq!(parse_command("brackets"), Ok(Command::Brackets));
+    }
+
+    #[test]
+    fn bracket_calibrate_takes_a_mount_and_an_id() {
+        let (mount, id) = parse_bracket_calibrate(" bracket  calibrate flange F-017 ")
+            .unwrap()
+            .unwrap();
+        assert_eq!((mount, id.as_str()), (BracketMount::Flange, "F-017"));
+        assert_eq!(parse_bracket_calibrate("brackets"), None);
+        assert_eq!(parse_bracket_calibrate("status"), None);
+        for bad in [
+            "bracket",
+            "bracket calibrate",
+            "bracket calibrate wrist F-1",
+            "bracket calibrate flange",
+            "bracket calibrate flange F 1",
+            "bracket calibrate flange ABCDEFGHIJKLM",
+            "bracket kalibrate flange F-1",
+        ] {
+            assert_eq!(
+                parse_bracket_calibrate(bad),
+                Some(Err(LinkError::BracketCalibrateUsage)),
+                "{bad}"
+            );
+        }
     }
 }

@@ -11,7 +11,9 @@
 //! | `clear` | clears the session in progress |
 //! | `profile` | the robot profile in use, as the lines `profile set` takes |
 //! | `profile set` | uploads a robot profile (`zerocal pendant load-profile` writes it), then `end` |
-//! | `erase all` | erases the store: session, bias, last result, profile and plan |
+//! | `erase all` | erases the store: session, bias, last result, profile, plan and brackets |
+//! | `bracket calibrate upper-arm\|flange ID` | starts a bracket's calibration on the pendant ([`parse_bracket_calibrate`]) |
+//! | `brackets` | the brackets' calibrations kept, one line a mount (`crate::bracket_cal::bracket_line`) |
 //!
 //! Unknown or malformed lines get an `error:` line and change nothing. Parsing and
 //! formatting live here; the firmware's link task only moves bytes.
@@ -31,7 +33,9 @@ mod plan;
 mod status;
 mod status_read;
 
-pub use command::{parse_command, Command, LinkError, HELP};
+pub use command::{
+    parse_bracket_calibrate, parse_command, Command, LinkError, BRACKET_CALIBRATE, HELP,
+};
 pub use plan::{plan_line, PlanUpload, UploadStep, PLAN_CSV_HEADER, STAGE1_JOINT_TOLERANCE_DEG};
 pub use status::{pendant_status, phase_name, status};
 pub use status_read::{
@@ -77,6 +81,20 @@ const PROFILE_STORED: (&str, &str) = (
 );
 
 const PLAN_STORED: (&str, &str) = ("ok: plan set, ", " poses");
+
+/// The answer to `bracket calibrate` once the pendant shows its first step.
+pub fn bracket_started(
+    mount: zerocal_core::bracket::BracketMount,
+    id: &str,
+) -> Result<Line, fmt::Error> {
+    let mut w = Line::new();
+    write!(
+        w,
+        "ok: calibrating the {} bracket {id}: follow the pendant's screens; OK there keeps it",
+        mount.name()
+    )?;
+    Ok(w)
+}
 
 /// The answer to a whole `profile set` once it is stored.
 pub fn profile_stored(robot: &str) -> Result<Line, fmt::Error> {

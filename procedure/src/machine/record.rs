@@ -10,6 +10,7 @@
 //! and 2 are refused as `WrongFormat` and the pendant starts afresh.
 
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
+use zerocal_core::bracket::{bracket_id, BracketMount, BRACKET_ID_LEN};
 use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES};
 use zerocal_core::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::MAX_POSES;
@@ -118,6 +119,23 @@ pub enum Record<T> {
         /// Shown at the model's zero (deg).
         zero_deg: [T; JOINTS],
     },
+    /// A bracket's calibration made on the pendant (`crate::bracket_cal`), the last
+    /// kept for its mount. No date: the pendant has no calendar; the desktop stamps
+    /// the day it reads the calibration out.
+    BracketCalibration {
+        /// Which bracket.
+        mount: BracketMount,
+        /// Its ID, ASCII, `id_len` bytes.
+        id: [u8; BRACKET_ID_LEN],
+        /// Bytes of `id` used.
+        id_len: u8,
+        /// The pendant's turn in the bracket about its x and y (rad).
+        rotation_rad: Tilt<T>,
+        /// The calibration's standard uncertainty (rad).
+        uncertainty_rad: T,
+        /// The mean temperature of the four captures (°C), if the sensor gave one.
+        temperature_c: Option<T>,
+    },
     /// The last completed result.
     LastResult {
         /// Δθ3..Δθ6 (rad).
@@ -174,6 +192,20 @@ pub mod key {
     pub const PROFILE_MOUNT: u16 = 0x28;
     /// [`super::Record::ProfileDisplay`].
     pub const PROFILE_DISPLAY: u16 = 0x2A;
+    /// [`super::Record::BracketCalibration`] of the upper arm's bracket; the flange's
+    /// is the next.
+    pub const BRACKET_CALIBRATION: u16 = 0x40;
+}
+
+/// The stored bracket calibrations: one a mount.
+const BRACKET_KEYS: usize = BracketMount::ALL.len();
+
+/// The storage code of a bracket's mount (its place in [`BracketMount::ALL`]).
+fn mount_code(m: BracketMount) -> u8 {
+    match m {
+        BracketMount::UpperArm => 0,
+        BracketMount::Flange => 1,
+    }
 }
 
 /// Placements of a profile: six joints and the flange.
@@ -194,7 +226,7 @@ fn profile_key(k: u16) -> Option<usize> {
 /// How many keys the procedure uses: the fixed ones, the readings, a capture slot per
 /// capture, a plan pose per plan pose and the robot profile's parts.
 pub const STORED_KEYS: usize =
-    FIXED_KEYS.len() + READING_SLOTS + MAX_CAPTURES + MAX_POSES + PROFILE_KEYS;
+    FIXED_KEYS.len() + READING_SLOTS + MAX_CAPTURES + MAX_POSES + PROFILE_KEYS + BRACKET_KEYS;
 
 /// Every key a restore may need, in the order to read them.
 pub fn all_keys() -> impl Iterator<Item = u16> {
@@ -204,6 +236,7 @@ pub fn all_keys() -> impl Iterator<Item = u16> {
         .chain((0..MAX_CAPTURES as u16).map(|s| key::CAPTURE + s))
         .chain((0..MAX_POSES as u16).map(|i| key::PLAN_POSE + i))
         .chain((0..PROFILE_KEYS as u16).map(|i| key::PROFILE_HEAD + i))
+        .chain((0..BRACKET_KEYS as u16).map(|i| key::BRACKET_CALIBRATION + i))
 }
 
 /// The place of `key` in [`all_keys`] (`0..STORED_KEYS`), if it is one of the
@@ -223,7 +256,13 @@ pub fn key_index(k: u16) -> Option<usize> {
     if (key::PLAN_POSE..key::PLAN_POSE + poses).contains(&k) {
         return Some(fixed + READING_SLOTS + MAX_CAPTURES + usize::from(k - key::PLAN_POSE));
     }
-    profile_key(k).map(|i| fixed + READING_SLOTS + MAX_CAPTURES + MAX_POSES + i)
+    let profiles = fixed + READING_SLOTS + MAX_CAPTURES + MAX_POSES;
+    if let Some(i) = profile_key(k) {
+        return Some(profiles + i);
+    }
+    (key::BRACKET_CALIBRATION..key::BRACKET_CALIBRATION + BRACKET_KEYS as u16)
+        .contains(&k)
+        .then(|| profiles + PROFILE_KEYS + usize::from(k - key::BRACKET_CALIBRATION))
 }
 
 /// The storage code of a joint axis (1-6).
@@ -350,6 +389,9 @@ impl<T: Real> Record<T> {
             Record::ProfilePlacement { part, .. } => key::PROFILE_PLACEMENT + u16::from(*part),
             Record::ProfileMount { flange, .. } => key::PROFILE_MOUNT + u16::from(*flange),
             Record::ProfileDisplay { .. } => key::PROFILE_DISPLAY,
+            Record::BracketCalibration { mount, .. } => {
+                key::BRACKET_CALIBRATION + u16::from(mount_code(*mount))
+            }
         }
     }
 
@@ -448,6 +490,21 @@ impl<T: Real> Record<T> {
                 for v in zero_deg {
                     w.f(v)?;
                 }
+            }
+            Record::BracketCalibration {
+                mount,
+                id,
+                id_len,
+                rotation_rad,
+                uncertainty_rad,
+                temperature_c,
+            } => {
+                w.put(&[mount_code(mount), id_len])?;
+                w.put(&id)?;
+                w.f(rotation_rad.x_rad)?;
+                w.f(rotation_rad.y_rad)?;
+                w.f(uncertainty_rad)?;
+                w.temperature(temperature_c)?;
             }
             Record::PlanPose { index, joints_rad } => {
                 w.put(&[index])?;
@@ -649,6 +706,38 @@ impl<T: Real> Record<T> {
                     zero_deg: r.joints()?,
                 }
             }
+            k if (key::BRACKET_CALIBRATION..key::BRACKET_CALIBRATION + BRACKET_KEYS as u16)
+                .contains(&k) =>
+            {
+                let mount = BracketMount::ALL
+                    .get(usize::from(r.u8()?))
+                    .copied()
+                    .filter(|m| u16::from(mount_code(*m)) == k - key::BRACKET_CALIBRATION)
+                    .ok_or(RecordError::BadField)?;
+                let id_len = r.u8()?;
+                let id = r.take::<BRACKET_ID_LEN>()?;
+                // Spelled as an ID: it goes into link lines and files as one word.
+                let spelled = id
+                    .get(..usize::from(id_len))
+                    .and_then(|b| core::str::from_utf8(b).ok())
+                    .is_some_and(|s| bracket_id(s).is_ok());
+                if !spelled {
+                    return Err(RecordError::BadField);
+                }
+                let rotation_rad = r.tilt()?;
+                let uncertainty_rad: T = r.f()?;
+                if uncertainty_rad < T::zero() {
+                    return Err(RecordError::BadField);
+                }
+                Record::BracketCalibration {
+                    mount,
+                    id,
+                    id_len,
+                    rotation_rad,
+                    uncertainty_rad,
+                    temperature_c: r.temperature()?,
+                }
+            }
             k => return Err(RecordError::UnknownKey(k)),
         })
     }
@@ -723,6 +812,21 @@ mod tests {
             index: MAX_POSES as u8 - 1,
             joints_rad: [0.0, -1.5, 1.0, 2.0, 3.0, -3.0],
         });
+        for (mount, temperature_c) in [
+            (BracketMount::UpperArm, Some(21.5)),
+            (BracketMount::Flange, None),
+        ] {
+            let mut id = [0; BRACKET_ID_LEN];
+            id[..5].copy_from_slice(b"F-017");
+            round_trip(Record::BracketCalibration {
+                mount,
+                id,
+                id_len: 5,
+                rotation_rad: t,
+                uncertainty_rad: 1.4e-5,
+                temperature_c,
+            });
+        }
         round_trip(Record::LastResult {
             offsets_rad: [1e-3, -2e-3, 3e-3, 4e-3],
             sigma_rad: [1e-6; 4],
@@ -761,6 +865,27 @@ mod tests {
         let n = r.encode(&mut buf).unwrap();
         assert_eq!(
             Record::<f32>::decode(key::READING, &buf[..n]),
+            Err(RecordError::BadField)
+        );
+        // A bracket's calibration under the other mount's key, or with an ID that is
+        // not one (a space in it).
+        let mut id = [0; BRACKET_ID_LEN];
+        id[..3].copy_from_slice(b"F 1");
+        let r = Record::BracketCalibration {
+            mount: BracketMount::Flange,
+            id,
+            id_len: 3,
+            rotation_rad: Tilt::new(0.0f32, 0.0),
+            uncertainty_rad: 1e-5,
+            temperature_c: None,
+        };
+        let n = r.encode(&mut buf).unwrap();
+        assert_eq!(
+            Record::<f32>::decode(key::BRACKET_CALIBRATION, &buf[..n]),
+            Err(RecordError::BadField)
+        );
+        assert_eq!(
+            Record::<f32>::decode(r.key(), &buf[..n]),
             Err(RecordError::BadField)
         );
         let nan = Record::Bias(Tilt::new(f32::NAN, 0.0));

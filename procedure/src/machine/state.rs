@@ -176,6 +176,8 @@ impl<T: Real> ProcedureState<T> {
                 | Record::ProfilePlacement { .. }
                 | Record::ProfileMount { .. }
                 | Record::ProfileDisplay { .. } => {}
+                // The pendant's, read by `StoredBrackets::from_records`.
+                Record::BracketCalibration { .. } => {}
             }
         }
         for p in plan.iter().take(plan_len) {

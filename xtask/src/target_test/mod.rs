@@ -57,10 +57,16 @@ pub const TOLERANCE_DEG: f64 = 2e-5;
 /// tests: measured 1,884,960 (rustup) / 2,082,945 (Debian) instructions, 51.4 KiB of
 /// stack, 199,540 / 173,308 B of flash. 2.5 million instructions is 25 ms at 100 MHz;
 /// 56 KiB of stack leaves 32 KiB of the 88 for the rest of the firmware's stack.
+///
+/// The flash budget went from 176 to 184 KiB when the pendant took the brackets'
+/// calibration (`bracket calibrate`: its state machine, four screens, the kept
+/// calibrations in flash and the `brackets` line): 175,788 → 184,136 B (Debian),
+/// 202,068 → 210,292 B (rustup), static RAM 37,140 → 40,172 B (its own stillness
+/// window, 2.5 KiB).
 pub const BUDGETS: Figures = Figures {
     solve_instructions: 2_500_000,
     solve_stack_bytes: 56 * 1024,
-    flash_bytes: 176 * 1024,
+    flash_bytes: 184 * 1024,
     static_ram_bytes: 40 * 1024,
 };
 
