@@ -165,10 +165,12 @@ pub fn brackets_toml(lines: &[&str], date: &str) -> Result<String, String> {
         // The line's decimals, so the file says what the pendant said.
         let decimals = usize::from(zerocal_procedure::bracket_cal::BRACKET_LINE_DECIMALS);
         out.push_str(&format!(
-            "\n[[bracket]]\nmount = \"{}\"\nid = \"{}\"\nrotation_deg = [{x_deg:.decimals$}, {y_deg:.decimals$}]\nuncertainty_deg = {:.decimals$}\ndate = \"{date}\"\n",
+            "\n[[bracket]]\nmount = \"{}\"\nid = \"{}\"\nrotation_deg = [{x_deg:.decimals$}, {y_deg:.decimals$}]\nuncertainty_deg = {:.decimals$}\nyaw_deg = {:.decimals$}\nyaw_uncertainty_deg = {:.decimals$}\ndate = \"{date}\"\n",
             mount.name(),
             b.id,
             b.result.uncertainty_rad.to_degrees(),
+            b.result.yaw.yaw_rad.to_degrees(),
+            b.result.yaw.uncertainty_rad.to_degrees(),
         ));
         match b.result.temperature_c {
             Some(t) => out.push_str(&format!("temperature_c = {t:.2}\n")),
@@ -874,7 +876,8 @@ mod tests {
         let toml = brackets_toml(
             &[
                 "bracket upper-arm none",
-                "bracket flange id F-017 rot_deg +0.41000,-0.27000 u_deg 0.00083 temp_c 21.25",
+                "bracket flange id F-017 rot_deg +0.41000,-0.27000 u_deg 0.00083 yaw_deg -0.12300 \
+                 u_yaw_deg 0.04100 temp_c 21.25",
             ],
             "2026-11-27",
         )
@@ -882,7 +885,7 @@ mod tests {
         assert!(toml.contains("# upper-arm: none calibrated"), "{toml}");
         assert!(
             toml.contains(
-                "[[bracket]]\nmount = \"flange\"\nid = \"F-017\"\nrotation_deg = [0.41000, -0.27000]\nuncertainty_deg = 0.00083\ndate = \"2026-11-27\"\ntemperature_c = 21.25\n"
+                "[[bracket]]\nmount = \"flange\"\nid = \"F-017\"\nrotation_deg = [0.41000, -0.27000]\nuncertainty_deg = 0.00083\nyaw_deg = -0.12300\nyaw_uncertainty_deg = 0.04100\ndate = \"2026-11-27\"\ntemperature_c = 21.25\n"
             ),
             "{toml}"
         );

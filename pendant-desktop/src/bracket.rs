@@ -1,6 +1,7 @@
 //! A bracket's calibration on the simulated pendant, end to end: `bracket calibrate`
-//! on the link, the operator following the four screens on a surface plate (the
-//! pendant alone, turned, in the bracket on its reference, the reference turned), OK
+//! on the link, the operator following the eight screens on a surface plate (the
+//! pendant alone, turned, in the bracket on its reference, the reference turned) and on
+//! a sine plate against its fence (the same four), OK
 //! on the result, `brackets` on the link, and the calibration still there after a
 //! power cycle. A plate not levelled is refused by name. The gallery's bracket
 //! screens come from here.
@@ -41,7 +42,8 @@ async fn place_and_ok(rig: &Rig, kind: ScreenKind, place: Place) -> Result<(), S
     let placed = rig.world.borrow_mut().carry(t, place);
     Timer::after(Duration::from_millis((placed - t).max(0.0) as u64 + 500)).await;
     press(rig, Button::Ok, PRESS_MS).await;
-    wait_for(rig, "the next step", Duration::from_secs(20), |s| {
+    // Four still windows a reading.
+    wait_for(rig, "the next step", Duration::from_secs(60), |s| {
         s.kind() != kind
     })
     .await?;
@@ -97,6 +99,26 @@ pub fn calibrated() -> Result<ScenarioReport, String> {
             Place::Bracket { heading_rad: PI },
         )
         .await?;
+        for (kind, place) in [
+            (
+                ScreenKind::BracketSine,
+                Place::SinePlate { heading_rad: 0.0 },
+            ),
+            (
+                ScreenKind::BracketSineTurned,
+                Place::SinePlate { heading_rad: PI },
+            ),
+            (
+                ScreenKind::BracketSineSeated,
+                Place::BracketOnSinePlate { heading_rad: 0.0 },
+            ),
+            (
+                ScreenKind::BracketSineSeatedTurned,
+                Place::BracketOnSinePlate { heading_rad: PI },
+            ),
+        ] {
+            place_and_ok(&rig, kind, place).await?;
+        }
         wait_for(&rig, "the result", Duration::from_secs(20), |s| {
             s.kind() == ScreenKind::BracketResult
         })

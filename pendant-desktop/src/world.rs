@@ -105,7 +105,21 @@ pub enum Place {
         /// Heading (rad).
         heading_rad: f64,
     },
+    /// Alone on the sine plate (its tilt [`SINE_PLATE_DEG`]), its long side against the
+    /// fence, at this heading (0 or π): the yaw step of a bracket's calibration.
+    SinePlate {
+        /// Heading (rad).
+        heading_rad: f64,
+    },
+    /// In a bracket on its reference block, the block against the sine plate's fence.
+    BracketOnSinePlate {
+        /// Heading (rad).
+        heading_rad: f64,
+    },
 }
+
+/// The sine plate's tilt for a bracket's yaw step (deg about the fence's axis).
+pub const SINE_PLATE_DEG: f64 = 5.0;
 
 /// A motion in progress: from, to, start (ms), duration (ms).
 #[derive(Clone, Copy, Debug)]
@@ -264,9 +278,12 @@ impl World {
         let end = t_ms + HANDLING_MS as f64;
         let turned = match (self.place, place) {
             (Place::Bench { heading_rad: a }, Place::Bench { heading_rad: b })
-            | (Place::Bracket { heading_rad: a }, Place::Bracket { heading_rad: b }) => {
-                Some((a, b))
-            }
+            | (Place::Bracket { heading_rad: a }, Place::Bracket { heading_rad: b })
+            | (Place::SinePlate { heading_rad: a }, Place::SinePlate { heading_rad: b })
+            | (
+                Place::BracketOnSinePlate { heading_rad: a },
+                Place::BracketOnSinePlate { heading_rad: b },
+            ) => Some((a, b)),
             _ => None,
         };
         if let Some((a, b)) = turned {
@@ -278,7 +295,11 @@ impl World {
             };
         } else {
             self.hand_until_ms = end;
-            if let Place::Bench { heading_rad } | Place::Bracket { heading_rad } = place {
+            if let Place::Bench { heading_rad }
+            | Place::Bracket { heading_rad }
+            | Place::SinePlate { heading_rad }
+            | Place::BracketOnSinePlate { heading_rad } = place
+            {
                 // Put down at that heading (the closing reversal's bench after the
                 // flange).
                 self.heading = Motion::at_rest(heading_rad);
@@ -297,7 +318,10 @@ impl World {
             return rot_x(0.3 * (s * 2.1).sin()) * rot_y(0.2 * (s * 1.3).cos()) * rot_z(s);
         }
         match self.place {
-            Place::Bench { .. } | Place::Bracket { .. } => {
+            Place::Bench { .. }
+            | Place::Bracket { .. }
+            | Place::SinePlate { .. }
+            | Place::BracketOnSinePlate { .. } => {
                 let p = self.heading.progress(t_ms);
                 let heading = self.heading.from + p * (self.heading.to - self.heading.from);
                 // Turned by hand: a little rocking while it turns.
@@ -306,10 +330,18 @@ impl World {
                 } else {
                     0.0
                 };
-                let on_bench = self.bench * rot_z(heading) * rot_x(rock);
+                let surface = match self.place {
+                    Place::SinePlate { .. } | Place::BracketOnSinePlate { .. } => {
+                        self.bench * rot_x(SINE_PLATE_DEG.to_radians())
+                    }
+                    _ => self.bench,
+                };
+                let on_surface = surface * rot_z(heading) * rot_x(rock);
                 match self.place {
-                    Place::Bracket { .. } => on_bench * self.bracket_turn,
-                    _ => on_bench,
+                    Place::Bracket { .. } | Place::BracketOnSinePlate { .. } => {
+                        on_surface * self.bracket_turn
+                    }
+                    _ => on_surface,
                 }
             }
             Place::Hand => rot_x(0.3),

@@ -14,7 +14,9 @@ use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use heapless::String;
-use zerocal_core::bracket::{BracketError, MAX_BRACKET_TURN_DEG, PLATE_LEVEL_MAX_DEG};
+use zerocal_core::bracket::{
+    BracketError, MAX_BRACKET_TURN_DEG, PLATE_LEVEL_MAX_DEG, SINE_PLATE_MAX_DEG, SINE_PLATE_MIN_DEG,
+};
 use zerocal_core::decimal::Fixed;
 use zerocal_core::error::{FitError, StageError};
 use zerocal_core::report::Warning;
@@ -140,7 +142,12 @@ fn bracket_lines(screen: &BracketScreen) -> [Text; 6] {
             };
             return [
                 title,
-                line(format_args!("{} turn:", screen.mount.name())),
+                // The yaw to a thousandth: the sine plate resolves it to some 0.04°.
+                line(format_args!(
+                    "{} z {}\u{b0}",
+                    screen.mount.name(),
+                    sgn(r.yaw.yaw_rad.to_degrees(), 3)
+                )),
                 line(format_args!("x {}\u{b0}", sgn(x_deg, BRACKET_DECIMALS))),
                 line(format_args!("y {}\u{b0}", sgn(y_deg, BRACKET_DECIMALS))),
                 line(format_args!(
@@ -164,11 +171,15 @@ fn bracket_lines(screen: &BracketScreen) -> [Text; 6] {
         None => {}
     }
     let (first, second) = match screen.step {
-        BracketStep::Alone => ("1/4 pendant alone on", "levelled plate; OK"),
-        BracketStep::AloneTurned => ("2/4 turn it 180\u{b0} on", "same spot; OK"),
-        BracketStep::Seated => ("3/4 pendant in brkt,", "brkt on its ref.; OK"),
-        BracketStep::SeatedTurned | BracketStep::Done => {
-            ("4/4 turn the ref.", "180\u{b0} same spot; OK")
+        BracketStep::Alone => ("1/8 pendant alone on", "levelled plate; OK"),
+        BracketStep::AloneTurned => ("2/8 turn it 180\u{b0} on", "same spot; OK"),
+        BracketStep::Seated => ("3/8 pendant in brkt,", "brkt on its ref.; OK"),
+        BracketStep::SeatedTurned => ("4/8 turn the ref.", "180\u{b0} same spot; OK"),
+        BracketStep::AloneTilted => ("5/8 pendant alone on", "sine plate, fence; OK"),
+        BracketStep::AloneTiltedTurned => ("6/8 end for end at", "the fence; OK"),
+        BracketStep::SeatedTilted => ("7/8 ref. on sine pl.", "at the fence; OK"),
+        BracketStep::SeatedTiltedTurned | BracketStep::Done => {
+            ("8/8 ref. end for end", "at the fence; OK")
         }
     };
     let hint = match screen.notice {
@@ -211,6 +222,15 @@ fn bracket_refusal_lines(e: &BracketError) -> [Text; 3] {
             )),
             fixed("bracket's; check its"),
             fixed("seats and reference"),
+        ],
+        BracketError::NotOnSinePlate { tilt_deg } => [
+            line(format_args!("sine plate {}\u{b0}:", fx(tilt_deg, 2))),
+            line(format_args!(
+                "set {}-{}\u{b0} and",
+                fx(SINE_PLATE_MIN_DEG, 0),
+                fx(SINE_PLATE_MAX_DEG, 0)
+            )),
+            fixed("repeat"),
         ],
         BracketError::Reading(_) => [
             fixed("a reading is out of"),
@@ -860,6 +880,10 @@ mod tests {
         let result = zerocal_procedure::bracket_cal::BracketResult {
             rotation_rad: zerocal_core::model::Tilt::from_deg(-0.999_99_f32, -0.999_99),
             uncertainty_rad: 0.000_99_f32.to_radians(),
+            yaw: zerocal_core::bracket::BracketYaw {
+                yaw_rad: -0.999_f32.to_radians(),
+                uncertainty_rad: 0.099_f32.to_radians(),
+            },
             temperature_c: Some(-40.5),
         };
         let outcomes = [
@@ -867,6 +891,7 @@ mod tests {
             Some(Ok(result)),
             Some(Err(BracketError::PlateNotLevel { tilt_deg: 12.345 })),
             Some(Err(BracketError::Implausible)),
+            Some(Err(BracketError::NotOnSinePlate { tilt_deg: 12.34 })),
             Some(Err(BracketError::Reading(StageError::NonFiniteReading))),
         ];
         for outcome in outcomes {

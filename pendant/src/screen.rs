@@ -314,6 +314,14 @@ pub enum ScreenKind {
     BracketSeated,
     /// Bracket calibration, step 4: the reference turned half a turn.
     BracketSeatedTurned,
+    /// Bracket calibration, step 5: the pendant alone on the sine plate.
+    BracketSine,
+    /// Bracket calibration, step 6: the pendant turned end for end at the fence.
+    BracketSineTurned,
+    /// Bracket calibration, step 7: the reference against the sine plate's fence.
+    BracketSineSeated,
+    /// Bracket calibration, step 8: the reference turned end for end at the fence.
+    BracketSineSeatedTurned,
     /// A bracket's calibration, to keep.
     BracketResult,
     /// A bracket calibration refused, and why.
@@ -354,6 +362,10 @@ impl ScreenKind {
             ScreenKind::BracketPlateTurned => "bracket-plate-turned",
             ScreenKind::BracketSeated => "bracket-seated",
             ScreenKind::BracketSeatedTurned => "bracket-seated-turned",
+            ScreenKind::BracketSine => "bracket-sine",
+            ScreenKind::BracketSineTurned => "bracket-sine-turned",
+            ScreenKind::BracketSineSeated => "bracket-sine-seated",
+            ScreenKind::BracketSineSeatedTurned => "bracket-sine-seated-turned",
             ScreenKind::BracketResult => "bracket-result",
             ScreenKind::BracketRefused => "bracket-refused",
         }
@@ -438,6 +450,18 @@ impl ScreenKind {
             ScreenKind::BracketSeatedTurned => {
                 "turns the reference half a turn on the same spot, lets go and presses OK"
             }
+            ScreenKind::BracketSine => {
+                "puts the pendant alone on the sine plate (about 5°), its long side against the fence, lets go and presses OK"
+            }
+            ScreenKind::BracketSineTurned => {
+                "turns the pendant end for end against the same fence, lets go and presses OK"
+            }
+            ScreenKind::BracketSineSeated => {
+                "puts the reference (the pendant in its bracket) on the sine plate against the fence, lets go and presses OK"
+            }
+            ScreenKind::BracketSineSeatedTurned => {
+                "turns the reference end for end against the same fence, lets go and presses OK"
+            }
             ScreenKind::BracketResult => {
                 "reads the bracket's turn about x and y, its uncertainty and the temperature; OK keeps it in flash (the last per mount, read out by `zerocal pendant brackets`), BACK retakes the last capture"
             }
@@ -487,8 +511,12 @@ impl Screen {
                     (None, BracketStep::Alone) => ScreenKind::BracketPlate,
                     (None, BracketStep::AloneTurned) => ScreenKind::BracketPlateTurned,
                     (None, BracketStep::Seated) => ScreenKind::BracketSeated,
-                    (None, BracketStep::SeatedTurned | BracketStep::Done) => {
-                        ScreenKind::BracketSeatedTurned
+                    (None, BracketStep::SeatedTurned) => ScreenKind::BracketSeatedTurned,
+                    (None, BracketStep::AloneTilted) => ScreenKind::BracketSine,
+                    (None, BracketStep::AloneTiltedTurned) => ScreenKind::BracketSineTurned,
+                    (None, BracketStep::SeatedTilted) => ScreenKind::BracketSineSeated,
+                    (None, BracketStep::SeatedTiltedTurned | BracketStep::Done) => {
+                        ScreenKind::BracketSineSeatedTurned
                     }
                 }
             }

@@ -1,4 +1,4 @@
-//! A bracket's calibration, guided on the pendant: the four captures of
+//! A bracket's calibration, guided on the pendant: the eight readings of
 //! docs/bracket-calibration.md as a small state machine, driven like the session's
 //! ([`crate::machine::step`]) by [`Event`]s, with the same automatic capture.
 //!
@@ -6,10 +6,18 @@
 //! 2. the pendant turned half a turn on the same spot;
 //! 3. the pendant in the bracket, the bracket on its reference, on the plate;
 //! 4. the reference turned half a turn on the same spot;
+//! 5. the pendant alone on the sine plate, its long side against the fence;
+//! 6. the pendant turned end for end against the fence;
+//! 7. the reference (pendant in the bracket) against the fence;
+//! 8. the reference turned end for end against the fence;
 //!
-//! then [`zerocal_core::bracket::calibrate`]: the pendant's turn in the bracket and its
-//! uncertainty, or the refusal by name. The plate is checked as soon as the first
-//! reversal is in, so a tilted plate is refused before the bracket is fitted.
+//! then [`zerocal_core::bracket::calibrate`] and [`zerocal_core::bracket::calibrate_yaw`]:
+//! the pendant's turn in the bracket, its yaw and their uncertainties, or the refusal by
+//! name. The plate is checked as soon as the first reversal is in (a tilted plate is
+//! refused before the bracket is fitted), the bracket's turn after the second, the sine
+//! plate's tilt after the third. Each reading is the mean of
+//! [`CAPTURES_PER_READING`] still windows, taken one after the other after a single OK:
+//! the bracket's turn goes into the zero whole, so its noise is averaged down.
 //!
 //! Every step is a placement by hand, so only OK arms a capture (as after the
 //! session's half turns); an armed capture fires when the stillness filter reports the
@@ -32,14 +40,18 @@ use crate::log::TEMPERATURE_DECIMALS;
 use crate::machine::{Event, ProcedureConfig, Record};
 use crate::stillness::{Stillness, StillnessFilter};
 use zerocal_core::bracket::BRACKET_ID_LEN;
-use zerocal_core::bracket::{bracket_id, calibrate, BracketError, BracketId, BracketMount};
+use zerocal_core::bracket::{
+    bracket_id, calibrate, calibrate_yaw, BracketError, BracketId, BracketMount, BracketYaw,
+    CAPTURES_PER_READING,
+};
 use zerocal_core::decimal::Fixed;
 use zerocal_core::model::{Tilt, TiltAxis};
 use zerocal_core::real::{deg_to_rad, rad_to_deg, Real};
 use zerocal_core::stage0::Reversal;
 
-/// The captures of a bracket calibration.
-pub const BRACKET_CAPTURES: usize = 4;
+/// The readings of a bracket calibration (each the mean of [`CAPTURES_PER_READING`]
+/// still windows).
+pub const BRACKET_CAPTURES: usize = 8;
 
 /// Where a bracket calibration stands.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -53,6 +65,14 @@ pub enum BracketStep {
     Seated,
     /// The reference turned half a turn on the same spot.
     SeatedTurned,
+    /// The pendant alone on the sine plate, against the fence.
+    AloneTilted,
+    /// The pendant turned end for end against the fence.
+    AloneTiltedTurned,
+    /// The reference against the fence.
+    SeatedTilted,
+    /// The reference turned end for end against the fence.
+    SeatedTiltedTurned,
     /// The result, or why there is none.
     Done,
 }
@@ -64,6 +84,10 @@ impl BracketStep {
         BracketStep::AloneTurned,
         BracketStep::Seated,
         BracketStep::SeatedTurned,
+        BracketStep::AloneTilted,
+        BracketStep::AloneTiltedTurned,
+        BracketStep::SeatedTilted,
+        BracketStep::SeatedTiltedTurned,
     ];
 }
 
@@ -75,6 +99,8 @@ pub struct BracketResult<T> {
     pub rotation_rad: Tilt<T>,
     /// The standard uncertainty of the x part (rad).
     pub uncertainty_rad: T,
+    /// The bracket's yaw (the sine plate's).
+    pub yaw: BracketYaw<T>,
     /// The mean temperature of the captures that carried one (°C).
     pub temperature_c: Option<T>,
 }
@@ -106,6 +132,8 @@ impl<T: Real> StoredBracket<T> {
             id_len: bytes.len() as u8,
             rotation_rad: self.result.rotation_rad,
             uncertainty_rad: self.result.uncertainty_rad,
+            yaw_rad: self.result.yaw.yaw_rad,
+            yaw_uncertainty_rad: self.result.yaw.uncertainty_rad,
             temperature_c: self.result.temperature_c,
         }
     }
@@ -118,6 +146,8 @@ impl<T: Real> StoredBracket<T> {
             id_len,
             rotation_rad,
             uncertainty_rad,
+            yaw_rad,
+            yaw_uncertainty_rad,
             temperature_c,
         } = *r
         else {
@@ -133,6 +163,10 @@ impl<T: Real> StoredBracket<T> {
             result: BracketResult {
                 rotation_rad,
                 uncertainty_rad,
+                yaw: BracketYaw {
+                    yaw_rad,
+                    uncertainty_rad: yaw_uncertainty_rad,
+                },
                 temperature_c,
             },
         })
@@ -201,12 +235,24 @@ pub enum BracketOutput<T> {
     Leave,
 }
 
+/// The still windows of one reading so far.
+#[derive(Clone, Copy, Debug, Default)]
+struct Windows<T> {
+    x: T,
+    y: T,
+    temperature: T,
+    with_temperature: u8,
+    count: u8,
+}
+
 /// A bracket calibration in progress.
 #[derive(Clone, Debug)]
 pub struct BracketCalState<T> {
     mount: BracketMount,
     id: BracketId,
     captures: [Option<Capture<T>>; BRACKET_CAPTURES],
+    /// The still windows of the reading under way: their sums and counts.
+    windows: Windows<T>,
     outcome: Option<Result<BracketResult<T>, BracketError>>,
     filter: StillnessFilter<T>,
     stillness: Stillness<T>,
@@ -222,6 +268,7 @@ impl<T: Real> BracketCalState<T> {
             mount,
             id,
             captures: [None; BRACKET_CAPTURES],
+            windows: Windows::default(),
             outcome: None,
             filter: StillnessFilter::new(),
             stillness: Stillness::Moving,
@@ -323,6 +370,14 @@ impl<T: Real> BracketCalState<T> {
         self.filter.reset();
         self.stillness = Stillness::Moving;
         self.armed = false;
+        self.windows = Windows::default();
+    }
+
+    /// The stage-0 offset of the chip, from the pendant's own level reversal.
+    fn bias(&self, config: &ProcedureConfig<T>) -> Option<Tilt<T>> {
+        self.reversal(0)?
+            .bias(config.convention, config.fit.sensor_range_rad)
+            .ok()
     }
 }
 
@@ -405,46 +460,102 @@ fn on_sample<T: Real>(
         });
         return;
     }
+    // One more still window of this reading; the next one starts at once, still armed.
+    let w = &mut s.windows;
+    w.x += mean.x_rad;
+    w.y += mean.y_rad;
+    if let Some(t) = temperature_c {
+        w.temperature += t;
+        w.with_temperature += 1;
+    }
+    w.count += 1;
+    if usize::from(w.count) < CAPTURES_PER_READING {
+        s.filter.reset();
+        s.stillness = Stillness::Moving;
+        return;
+    }
+    let n = T::lit(f64::from(w.count));
+    let capture = Capture {
+        reading: Tilt::new(w.x / n, w.y / n),
+        temperature_c: (w.with_temperature > 0)
+            .then(|| w.temperature / T::lit(f64::from(w.with_temperature))),
+    };
     let taken = s.taken();
     let Some(slot) = s.captures.get_mut(taken) else {
         return;
     };
-    *slot = Some(Capture {
-        reading: mean,
-        temperature_c,
-    });
+    *slot = Some(capture);
     s.notice = Some(BracketNotice::Captured);
     s.restart_window();
-    let noise = config.fit.sensor_noise_rad;
-    match taken + 1 {
-        2 => {
-            // The plate, checked on the pendant's own reversal before the bracket is
-            // fitted: a reversal against itself is the plate's check alone (its turn
-            // is zero, always plausible).
-            if let Some(alone) = s.reversal(0) {
-                if let Err(e) = calibrate(&alone, &alone, config.convention, range, noise) {
-                    s.outcome = Some(Err(e));
-                }
-            }
-        }
-        BRACKET_CAPTURES => {
-            let temperature_c = s.mean_temperature();
-            s.outcome = match (s.reversal(0), s.reversal(2)) {
-                (Some(alone), Some(seated)) => Some(
-                    calibrate(&alone, &seated, config.convention, range, noise).map(
-                        |(rotation_rad, uncertainty_rad)| BracketResult {
-                            rotation_rad,
-                            uncertainty_rad,
-                            temperature_c,
-                        },
-                    ),
-                ),
-                // Four captures in: both reversals are there.
-                _ => None,
-            };
-        }
-        _ => {}
+    s.outcome = check_after(config, s, taken + 1).err().map(Err);
+    if s.outcome.is_none() && taken + 1 == BRACKET_CAPTURES {
+        s.outcome = result(config, s);
     }
+}
+
+/// What can be checked once `taken` readings are in: the plate's level after the
+/// pendant's own reversal (a reversal against itself is the plate's check alone), the
+/// bracket's turn after the second, the sine plate's tilt after the third.
+fn check_after<T: Real>(
+    config: &ProcedureConfig<T>,
+    s: &BracketCalState<T>,
+    taken: usize,
+) -> Result<(), BracketError> {
+    let (range, noise) = (config.fit.sensor_range_rad, config.fit.sensor_noise_rad);
+    let level = |i: usize, j: usize| -> Result<(), BracketError> {
+        match (s.reversal(i), s.reversal(j)) {
+            (Some(a), Some(b)) => calibrate(&a, &b, config.convention, range, noise).map(|_| ()),
+            _ => Ok(()),
+        }
+    };
+    match taken {
+        2 => level(0, 0),
+        4 => level(0, 2),
+        6 => match (s.reversal(4), s.bias(config)) {
+            (Some(tilted), Some(bias)) => calibrate_yaw(
+                &tilted,
+                &tilted,
+                &Tilt::default(),
+                &bias,
+                config.convention,
+                noise,
+            )
+            .map(|_| ()),
+            _ => Ok(()),
+        },
+        _ => Ok(()),
+    }
+}
+
+/// The calibration from all eight readings.
+fn result<T: Real>(
+    config: &ProcedureConfig<T>,
+    s: &BracketCalState<T>,
+) -> Option<Result<BracketResult<T>, BracketError>> {
+    let (range, noise) = (config.fit.sensor_range_rad, config.fit.sensor_noise_rad);
+    let (alone, seated) = (s.reversal(0)?, s.reversal(2)?);
+    let (alone_tilted, seated_tilted) = (s.reversal(4)?, s.reversal(6)?);
+    let bias = s.bias(config)?;
+    Some(
+        calibrate(&alone, &seated, config.convention, range, noise).and_then(
+            |(rotation_rad, uncertainty_rad)| {
+                let yaw = calibrate_yaw(
+                    &alone_tilted,
+                    &seated_tilted,
+                    &rotation_rad,
+                    &bias,
+                    config.convention,
+                    noise,
+                )?;
+                Ok(BracketResult {
+                    rotation_rad,
+                    uncertainty_rad,
+                    yaw,
+                    temperature_c: s.mean_temperature(),
+                })
+            },
+        ),
+    )
 }
 
 /// Decimals of a bracket's turn and uncertainty (deg) in [`bracket_line`]: 1e-5° is
@@ -454,8 +565,8 @@ pub const BRACKET_LINE_DECIMALS: u8 = 5;
 /// The first word of a [`bracket_line`].
 const LINE_TAG: &str = "bracket";
 
-/// `bracket MOUNT id ID rot_deg X,Y u_deg U temp_c T|none`, or `bracket MOUNT none`:
-/// one kept calibration as the link's `brackets` prints it.
+/// `bracket MOUNT id ID rot_deg X,Y u_deg U yaw_deg C u_yaw_deg W temp_c T|none`, or
+/// `bracket MOUNT none`: one kept calibration as the link's `brackets` prints it.
 ///
 /// # Errors
 /// Only a full line buffer.
@@ -470,16 +581,16 @@ pub fn bracket_line<T: Real>(
         return Ok(w);
     };
     let deg = |v: T| Fixed::signed(rad_to_deg(v).to_f64(), BRACKET_LINE_DECIMALS);
+    let magnitude = |v: T| Fixed::new(rad_to_deg(v).to_f64(), BRACKET_LINE_DECIMALS);
     write!(
         w,
-        " id {} rot_deg {},{} u_deg {} temp_c ",
+        " id {} rot_deg {},{} u_deg {} yaw_deg {} u_yaw_deg {} temp_c ",
         b.id,
         deg(b.result.rotation_rad.x_rad),
         deg(b.result.rotation_rad.y_rad),
-        Fixed::new(
-            rad_to_deg(b.result.uncertainty_rad).to_f64(),
-            BRACKET_LINE_DECIMALS
-        ),
+        magnitude(b.result.uncertainty_rad),
+        deg(b.result.yaw.yaw_rad),
+        magnitude(b.result.yaw.uncertainty_rad),
     )?;
     match b.result.temperature_c {
         Some(t) => write!(w, "{}", Fixed::new(t.to_f64(), TEMPERATURE_DECIMALS))?,
@@ -550,6 +661,11 @@ pub fn parse_bracket_line<T: Real>(
     if u < 0.0 {
         return Err(BracketLineError::BadField("u_deg"));
     }
+    let yaw = number("yaw_deg", field("yaw_deg")?)?;
+    let u_yaw = number("u_yaw_deg", field("u_yaw_deg")?)?;
+    if u_yaw < 0.0 {
+        return Err(BracketLineError::BadField("u_yaw_deg"));
+    }
     let temperature_c = match field("temp_c")? {
         "none" => None,
         t => Some(T::lit(number("temp_c", t)?)),
@@ -565,6 +681,10 @@ pub fn parse_bracket_line<T: Real>(
             result: BracketResult {
                 rotation_rad: Tilt::new(deg_to_rad(T::lit(x)), deg_to_rad(T::lit(y))),
                 uncertainty_rad: deg_to_rad(T::lit(u)),
+                yaw: BracketYaw {
+                    yaw_rad: deg_to_rad(T::lit(yaw)),
+                    uncertainty_rad: deg_to_rad(T::lit(u_yaw)),
+                },
                 temperature_c,
             },
         }),
@@ -575,6 +695,7 @@ pub fn parse_bracket_line<T: Real>(
 mod tests {
     use super::*;
     use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, Convention, SensorModel};
+    use zerocal_core::stage0::Reversal;
 
     /// A chip offset of 0.58° in its box, as core's bracket test.
     fn bias() -> Tilt<f64> {
@@ -598,7 +719,8 @@ mod tests {
         temperature_c: f64,
     ) -> u32 {
         let taken = s.taken();
-        for _ in 0..100 {
+        // Four still windows a reading, each some 40 samples.
+        for _ in 0..1000 {
             bracket_step(
                 config,
                 s,
@@ -632,16 +754,29 @@ mod tests {
         hold(config, s, t_ms, reading, temperature_c)
     }
 
-    /// The four readings of a bracket turned R_x(a)·R_y(b) on a plate tilted 0.07°.
-    fn readings(a_rad: f64, b_rad: f64, plate_tilt_x_deg: f64) -> [Tilt<f64>; 4] {
+    /// The eight readings of a bracket turned R_x(a)·R_y(b)·R_z(c): four on a plate
+    /// tilted `plate_tilt_x_deg` about x and 0.04° about y, four on a sine plate at
+    /// `sine_deg` against its fence.
+    fn readings(
+        a_rad: f64,
+        b_rad: f64,
+        c_rad: f64,
+        plate_tilt_x_deg: f64,
+        sine_deg: f64,
+    ) -> [Tilt<f64>; 8] {
         let plate = rot_x(deg_to_rad(plate_tilt_x_deg)) * rot_y(deg_to_rad(-0.04)) * rot_z(0.7);
+        let sine = rot_z(0.3) * rot_x(deg_to_rad(sine_deg));
         let half = rot_z(core::f64::consts::PI);
-        let bracket = rot_x(a_rad) * rot_y(b_rad);
+        let bracket = rot_x(a_rad) * rot_y(b_rad) * rot_z(c_rad);
         [
             read(&plate),
             read(&(plate * half)),
             read(&(plate * bracket)),
             read(&(plate * half * bracket)),
+            read(&sine),
+            read(&(sine * half)),
+            read(&(sine * bracket)),
+            read(&(sine * half * bracket)),
         ]
     }
 
@@ -651,37 +786,45 @@ mod tests {
         (config, s)
     }
 
-    /// A whole run with the readings of a bracket turned by a known 0.41°, −0.27°:
-    /// the turn comes back within 1e-5 rad (the readings are exact and the window's
-    /// mean of a constant is the constant, so what is left is the method's, 1e-6 rad
-    /// in core's test, well inside), the temperature is the four captures' mean, and
-    /// OK keeps it as the record of the flange's bracket.
+    /// A whole run with the readings of a bracket turned by a known 0.41°, −0.27°, yaw
+    /// 0.3°: the level turn (as read: its x part moves by about c·b, which the session
+    /// undoes with the yaw, `BracketCalibration::turn`) comes back within 1e-5 rad of
+    /// core's own reading of it and the yaw within 1e-5 rad of the truth (the readings
+    /// are exact and the window's mean of a constant is the constant), the temperature
+    /// is the eight readings' mean, and OK keeps it as the record of the flange's
+    /// bracket.
     #[test]
     fn a_full_run_gives_back_the_brackets_turn() {
         let (config, mut s) = start();
-        let (a, b) = (deg_to_rad(0.41), deg_to_rad(-0.27));
-        let r = readings(a, b, 0.06);
+        let (a, b, c) = (deg_to_rad(0.41), deg_to_rad(-0.27), deg_to_rad(0.3));
+        let r = readings(a, b, c, 0.06, 5.0);
         let mut t = 0;
         // Without OK nothing is captured, however still.
         t = hold(&config, &mut s, t, r[0], 20.0);
         assert_eq!((s.taken(), s.step()), (0, BracketStep::Alone));
-        for (i, (reading, temp)) in r.iter().zip([20.0, 21.0, 22.0, 23.0]).enumerate() {
+        for (i, reading) in r.iter().enumerate() {
             assert_eq!(s.step(), BracketStep::CAPTURES[i]);
-            t = capture(&config, &mut s, t, *reading, temp);
+            t = capture(&config, &mut s, t, *reading, 20.0 + i as f64);
         }
         assert_eq!(s.step(), BracketStep::Done);
         let result = match s.outcome() {
             Some(Ok(result)) => *result,
             other => panic!("{other:?}"),
         };
+        let level = |i: usize| Reversal {
+            first: r[i],
+            second: r[i + 1],
+        };
+        let (core_turn, _) = calibrate(&level(0), &level(2), Convention::Axis, 0.2, 1e-5).unwrap();
         assert!(
-            (result.rotation_rad.x_rad - a).abs() < 1e-5
-                && (result.rotation_rad.y_rad - b).abs() < 1e-5,
+            (result.rotation_rad.x_rad - core_turn.x_rad).abs() < 1e-5
+                && (result.rotation_rad.y_rad - core_turn.y_rad).abs() < 1e-5
+                && (result.yaw.yaw_rad - c).abs() < 1e-5,
             "{result:?}"
         );
         assert!(result.uncertainty_rad > 0.0, "{result:?}");
-        // 20, 21, 22 and 23 °C.
-        assert_eq!(result.temperature_c, Some(21.5));
+        // 20 to 27 °C.
+        assert_eq!(result.temperature_c, Some(23.5));
         let BracketOutput::Keep(record) = bracket_step(&config, &mut s, Event::Ok) else {
             panic!("OK on a result keeps it");
         };
@@ -698,7 +841,7 @@ mod tests {
     #[test]
     fn a_tilted_plate_is_refused_by_name() {
         let (config, mut s) = start();
-        let r = readings(0.0, 0.0, 0.2);
+        let r = readings(0.0, 0.0, 0.0, 0.2, 5.0);
         let mut t = 0;
         for reading in &r[..2] {
             t = capture(&config, &mut s, t, *reading, 20.0);
@@ -724,7 +867,7 @@ mod tests {
     fn back_undoes_the_last_capture() {
         let (config, mut s) = start();
         let (a, b) = (deg_to_rad(-0.3), deg_to_rad(0.2));
-        let r = readings(a, b, 0.05);
+        let r = readings(a, b, 0.0, 0.05, 5.0);
         let mut t = 0;
         t = capture(&config, &mut s, t, r[0], 20.0);
         // A wrong reading (the reference put down turned) taken for the third, undone.
@@ -739,17 +882,22 @@ mod tests {
         // BACK disarms: no capture until OK.
         t = hold(&config, &mut s, t, r[2], 20.0);
         assert_eq!(s.step(), BracketStep::Seated);
-        t = capture(&config, &mut s, t, r[2], 20.0);
-        t = capture(&config, &mut s, t, r[3], 20.0);
+        for reading in &r[2..] {
+            t = capture(&config, &mut s, t, *reading, 20.0);
+        }
         assert!(matches!(s.outcome(), Some(Ok(_))));
         // From the result: the last capture goes, the result with it.
         bracket_step(&config, &mut s, Event::Back);
-        assert_eq!((s.step(), s.outcome()), (BracketStep::SeatedTurned, None));
-        capture(&config, &mut s, t, r[3], 20.0);
+        assert_eq!(
+            (s.step(), s.outcome()),
+            (BracketStep::SeatedTiltedTurned, None)
+        );
+        capture(&config, &mut s, t, r[7], 20.0);
         match s.outcome() {
             Some(Ok(result)) => assert!(
                 (result.rotation_rad.x_rad - a).abs() < 1e-5
-                    && (result.rotation_rad.y_rad - b).abs() < 1e-5,
+                    && (result.rotation_rad.y_rad - b).abs() < 1e-5
+                    && result.yaw.yaw_rad.abs() < 1e-5,
                 "{result:?}"
             ),
             other => panic!("{other:?}"),
@@ -777,13 +925,18 @@ mod tests {
             result: BracketResult {
                 rotation_rad: Tilt::from_deg(0.412_345_6, -0.27),
                 uncertainty_rad: deg_to_rad(0.000_83),
+                yaw: BracketYaw {
+                    yaw_rad: deg_to_rad(-0.123_45),
+                    uncertainty_rad: deg_to_rad(0.041),
+                },
                 temperature_c: Some(21.25_f64),
             },
         };
         let line = bracket_line(BracketMount::UpperArm, Some(&kept)).unwrap();
         assert_eq!(
             line.as_str(),
-            "bracket upper-arm id U-2 rot_deg +0.41235,-0.27000 u_deg 0.00083 temp_c 21.25"
+            "bracket upper-arm id U-2 rot_deg +0.41235,-0.27000 u_deg 0.00083 yaw_deg -0.12345 \
+             u_yaw_deg 0.04100 temp_c 21.25"
         );
         let (mount, back) = parse_bracket_line::<f64>(&line).unwrap();
         let back = back.unwrap();
@@ -801,7 +954,9 @@ mod tests {
             Err(BracketLineError::BadField("rot_deg"))
         );
         assert_eq!(
-            parse_bracket_line::<f64>("bracket flange id F-1 rot_deg 0.1,0 u_deg -1 temp_c none"),
+            parse_bracket_line::<f64>(
+                "bracket flange id F-1 rot_deg 0.1,0 u_deg -1 yaw_deg 0 u_yaw_deg 0 temp_c none"
+            ),
             Err(BracketLineError::BadField("u_deg"))
         );
         assert_eq!(

@@ -133,7 +133,11 @@ pub enum Record<T> {
         rotation_rad: Tilt<T>,
         /// The calibration's standard uncertainty (rad).
         uncertainty_rad: T,
-        /// The mean temperature of the four captures (°C), if the sensor gave one.
+        /// The bracket's yaw, the sine plate's (rad).
+        yaw_rad: T,
+        /// Its standard uncertainty (rad).
+        yaw_uncertainty_rad: T,
+        /// The mean temperature of the readings (°C), if the sensor gave one.
         temperature_c: Option<T>,
     },
     /// The last completed result.
@@ -497,6 +501,8 @@ impl<T: Real> Record<T> {
                 id_len,
                 rotation_rad,
                 uncertainty_rad,
+                yaw_rad,
+                yaw_uncertainty_rad,
                 temperature_c,
             } => {
                 w.put(&[mount_code(mount), id_len])?;
@@ -504,6 +510,8 @@ impl<T: Real> Record<T> {
                 w.f(rotation_rad.x_rad)?;
                 w.f(rotation_rad.y_rad)?;
                 w.f(uncertainty_rad)?;
+                w.f(yaw_rad)?;
+                w.f(yaw_uncertainty_rad)?;
                 w.temperature(temperature_c)?;
             }
             Record::PlanPose { index, joints_rad } => {
@@ -726,7 +734,9 @@ impl<T: Real> Record<T> {
                 }
                 let rotation_rad = r.tilt()?;
                 let uncertainty_rad: T = r.f()?;
-                if uncertainty_rad < T::zero() {
+                let yaw_rad: T = r.f()?;
+                let yaw_uncertainty_rad: T = r.f()?;
+                if uncertainty_rad < T::zero() || yaw_uncertainty_rad < T::zero() {
                     return Err(RecordError::BadField);
                 }
                 Record::BracketCalibration {
@@ -735,6 +745,8 @@ impl<T: Real> Record<T> {
                     id_len,
                     rotation_rad,
                     uncertainty_rad,
+                    yaw_rad,
+                    yaw_uncertainty_rad,
                     temperature_c: r.temperature()?,
                 }
             }
@@ -824,6 +836,8 @@ mod tests {
                 id_len: 5,
                 rotation_rad: t,
                 uncertainty_rad: 1.4e-5,
+                yaw_rad: -3e-3,
+                yaw_uncertainty_rad: 7e-4,
                 temperature_c,
             });
         }
@@ -877,6 +891,8 @@ mod tests {
             id_len: 3,
             rotation_rad: Tilt::new(0.0f32, 0.0),
             uncertainty_rad: 1e-5,
+            yaw_rad: 0.0,
+            yaw_uncertainty_rad: 7e-4,
             temperature_c: None,
         };
         let n = r.encode(&mut buf).unwrap();
