@@ -59,6 +59,18 @@ pub fn write_bracket<T: Real>(
     calibration: Option<&BracketCalibration<T>>,
 ) -> fmt::Result {
     write!(w, "# {}", bracket_key(mount))?;
+    write_bracket_fields(w, calibration)
+}
+
+/// Writes a bracket's calibration as the export's and the profile's lines carry it,
+/// after their key: ` id ID rot_deg x,y u_deg u date YYYYMMDD temp_c t`, or ` none`.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_bracket_fields<T: Real>(
+    w: &mut Line,
+    calibration: Option<&BracketCalibration<T>>,
+) -> fmt::Result {
     let Some(c) = calibration else {
         return w.write_str(" none");
     };
@@ -74,6 +86,50 @@ pub fn write_bracket<T: Real>(
         c.date,
         Fixed::new(c.temperature_c.to_f64(), super::TEMPERATURE_DECIMALS)
     )
+}
+
+/// Reads what [`write_bracket_fields`] wrote, to the end of the line: `Some(None)` for
+/// `none`, `None` for anything else than a calibration core accepts
+/// ([`bracket_id`], [`BracketCalibration::new`]) with an uncertainty within
+/// [`MAX_READING_DEG`] and a temperature within [`TEMPERATURE_RANGE_C`].
+pub fn parse_bracket_fields<'s, T: Real>(
+    mut rest: impl Iterator<Item = &'s str>,
+    parse: impl Fn(&str) -> Option<f64>,
+) -> Option<Option<BracketCalibration<T>>> {
+    let first = rest.next();
+    if first == Some("none") {
+        return rest.next().is_none().then_some(None);
+    }
+    let id = (first == Some("id"))
+        .then(|| rest.next())
+        .flatten()
+        .and_then(|s| bracket_id(s).ok());
+    let mut field = |name: &str| (rest.next() == Some(name)).then(|| rest.next()).flatten();
+    let rotation = field("rot_deg").and_then(|v| {
+        let (x, y) = v.split_once(',')?;
+        let (x, y) = (parse(x)?, parse(y)?);
+        (x.is_finite() && y.is_finite() && x.abs() <= MAX_READING_DEG && y.abs() <= MAX_READING_DEG)
+            .then(|| Tilt::from_deg(T::lit(x), T::lit(y)))
+    });
+    let u = field("u_deg")
+        .and_then(&parse)
+        .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
+    let date = field("date").and_then(|d| d.parse::<u32>().ok());
+    let temperature_c = field("temp_c")
+        .and_then(&parse)
+        .filter(|t| t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t));
+    if rest.next().is_some() {
+        return None;
+    }
+    BracketCalibration::new(
+        id?,
+        rotation?,
+        deg_to_rad(T::lit(u?)),
+        date?,
+        T::lit(temperature_c?),
+    )
+    .ok()
+    .map(Some)
 }
 
 /// The names of [`Extras`]' groups in `# fit_extras`, in order.
@@ -299,42 +355,8 @@ pub fn parse_meta<T: Real>(
                 line,
                 key: bracket_key(mount),
             };
-            let first = rest.next();
-            if first == Some("none") {
-                if rest.next().is_some() {
-                    return Err(bad);
-                }
-                return Ok(Some(MetaItem::Bracket(mount, None)));
-            }
-            fn field<'s>(name: &str, rest: &mut core::str::SplitWhitespace<'s>) -> Option<&'s str> {
-                (rest.next() == Some(name)).then(|| rest.next()).flatten()
-            }
-            let id = (first == Some("id"))
-                .then(|| rest.next())
-                .flatten()
-                .and_then(|s| bracket_id(s).ok());
-            let rotation = field("rot_deg", &mut rest).and_then(|v| pair(Some(v)));
-            let u = field("u_deg", &mut rest)
-                .and_then(&parse)
-                .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
-            let date = field("date", &mut rest).and_then(|d| d.parse::<u32>().ok());
-            let temp = field("temp_c", &mut rest).and_then(&parse).filter(|t| {
-                t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t)
-            });
-            match (id, rotation, u, date, temp, rest.next()) {
-                (Some(id), Some(rotation), Some(u), Some(date), Some(t), None) => {
-                    let c = BracketCalibration::new(
-                        id,
-                        rotation,
-                        deg_to_rad(T::lit(u)),
-                        date,
-                        T::lit(t),
-                    )
-                    .map_err(|_| bad)?;
-                    MetaItem::Bracket(mount, Some(c))
-                }
-                _ => return Err(bad),
-            }
+            let calibration = parse_bracket_fields(&mut rest, &parse).ok_or(bad)?;
+            MetaItem::Bracket(mount, calibration)
         }
         // Informational lines the pendant writes (each capture of stage 1, its result,
         // stage 2's): the solver recomputes them from the readings.
