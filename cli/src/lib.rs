@@ -2,6 +2,7 @@
 //! directly (see `tests/`) as well as through the binary.
 
 pub mod args;
+pub mod brackets;
 pub mod diagnose;
 pub mod error;
 pub mod identify;
