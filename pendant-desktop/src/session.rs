@@ -309,7 +309,7 @@ fn report_of(rig: &Rig, ended: Ended) -> SessionReport {
         result_screen: ended.result_screen,
         identified: identified(&ended.state),
         state: ended.state,
-        truth: Truth::of(&rig),
+        truth: Truth::of(rig),
         robot_time_s: ended.done_s,
         flash_operations,
         erases,
