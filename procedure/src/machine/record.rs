@@ -11,7 +11,9 @@
 //! whether masses are stored). Formats 1-3 are refused as `WrongFormat` and the pendant
 //! starts afresh.
 
+use super::profile::{MAX_MASS_KG, MAX_POSITION_M};
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
+use crate::log::{MAX_READING_DEG, TEMPERATURE_RANGE_C};
 use zerocal_core::bracket::{bracket_id, BracketCalibration, BRACKET_ID_LEN};
 use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES};
 use zerocal_core::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
@@ -194,8 +196,17 @@ impl<T: Real> StoredBracket<T> {
     }
 
     /// The calibration, checked as core checks one ([`bracket_id`],
-    /// [`BracketCalibration::new`]); `None` for fields no calibration has.
+    /// [`BracketCalibration::new`]) and as a profile line takes one (an uncertainty
+    /// within [`MAX_READING_DEG`], a temperature within [`TEMPERATURE_RANGE_C`]);
+    /// `None` for fields no calibration has.
     pub fn calibration(&self) -> Option<BracketCalibration<T>> {
+        let u_deg = self.uncertainty_rad.to_f64().to_degrees();
+        let t = self.temperature_c.to_f64();
+        if !(u_deg <= MAX_READING_DEG
+            && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(&t))
+        {
+            return None;
+        }
         let id = self.id.get(..usize::from(self.id_len))?;
         let id = bracket_id(core::str::from_utf8(id).ok()?).ok()?;
         BracketCalibration::new(
@@ -727,15 +738,20 @@ impl<T: Real> Record<T> {
                 if u16::from(part) != k - key::PROFILE_MASS {
                     return Err(RecordError::BadField);
                 }
+                // What a profile line takes: a mass from 0 to MAX_MASS_KG, a centre
+                // of mass within MAX_POSITION_M.
                 let kg: T = r.f()?;
-                if kg < T::zero() {
+                let com_m: [T; 3] = [r.f()?, r.f()?, r.f()?];
+                if !(T::zero()..=T::lit(MAX_MASS_KG)).contains(&kg)
+                    || com_m.iter().any(|c| c.abs() > T::lit(MAX_POSITION_M))
+                {
                     return Err(RecordError::BadField);
                 }
                 Record::ProfileMass {
                     generation,
                     part,
                     kg,
-                    com_m: [r.f()?, r.f()?, r.f()?],
+                    com_m,
                 }
             }
             k if k == key::PROFILE_BRACKET || k == key::PROFILE_BRACKET + 1 => {
@@ -990,8 +1006,10 @@ mod tests {
     }
 
     /// A stored mass or calibration that no profile line could have given is refused,
-    /// never used: a negative mass, a bracket ID with a foreign byte or bytes after its
-    /// length, a day that is not one, a turn beyond the design's.
+    /// never used: a negative mass or one beyond 10 t, a centre of mass 101 m away, a
+    /// bracket ID with a foreign byte or bytes after its length, a day that is not one,
+    /// a turn beyond the design's, an uncertainty beyond 180° (4 rad), a temperature
+    /// beyond the sensor's range.
     #[test]
     fn impossible_masses_and_calibrations_are_refused() {
         let refused = |r: Record<f32>| {
@@ -1003,12 +1021,14 @@ mod tests {
                 "{r:?}"
             );
         };
-        refused(Record::ProfileMass {
-            generation: 1,
-            part: 2,
-            kg: -1.0,
-            com_m: [0.0; 3],
-        });
+        for (kg, com_m) in [(-1.0, [0.0; 3]), (2e4, [0.0; 3]), (1.0, [0.0, 0.0, 101.0])] {
+            refused(Record::ProfileMass {
+                generation: 1,
+                part: 2,
+                kg,
+                com_m,
+            });
+        }
         let bracket = |edit: fn(&mut StoredBracket<f32>)| {
             let mut c = stored_bracket();
             edit(&mut c);
@@ -1023,6 +1043,8 @@ mod tests {
         refused(bracket(|c| c.id_len = 13));
         refused(bracket(|c| c.date = 20260230));
         refused(bracket(|c| c.rotation_rad[1] = 0.01));
+        refused(bracket(|c| c.uncertainty_rad = 4.0));
+        refused(bracket(|c| c.temperature_c = 200.0));
         // A mass stored under another part's key.
         let mut buf = [0u8; MAX_RECORD_LEN];
         let r = Record::ProfileMass {

@@ -52,9 +52,8 @@ pub const PROFILE_LINES: usize = FIXED_LINES + PROFILE_MASSES + BracketMount::AL
 /// by it too.
 pub const MAX_MASS_KG: f64 = 10_000.0;
 
-/// Decimals of a mass (kg) on a profile line: masses enter the sag term only as
-/// ratios, and 1e-9 of the lightest link the uniform model makes (a few centimetres'
-/// worth) is far below `f32`'s resolution of it.
+/// Decimals of a mass on a profile line: a mass of 0.01 (kg, or the uniform model's
+/// metres of link) keeps 7 significant digits, all an `f32` holds.
 const MASS_DECIMALS: u8 = 9;
 
 /// Decimals of a position (m) on a profile line: 0.1 µm.
@@ -62,7 +61,7 @@ const POSITION_DECIMALS: u8 = 7;
 
 /// The farthest a joint origin or a centre of mass may be on a profile line (m): a
 /// robot is metres, not kilometres.
-const MAX_POSITION_M: f64 = 100.0;
+pub const MAX_POSITION_M: f64 = 100.0;
 
 /// The seen-bit of `masses none`; the mass lines take the seven bits before it.
 const MASSES_NONE_BIT: u32 = (FIXED_LINES + PROFILE_MASSES) as u32;

@@ -19,7 +19,9 @@
 mod lines;
 mod records;
 
-pub use lines::{ProfileError, ProfileStep, ProfileUpload, MAX_MASS_KG, PROFILE_LINES};
+pub use lines::{
+    ProfileError, ProfileStep, ProfileUpload, MAX_MASS_KG, MAX_POSITION_M, PROFILE_LINES,
+};
 pub use records::{ProfileRecords, PROFILE_RECORDS};
 
 use crate::RobotName;
