@@ -43,8 +43,7 @@ pub struct Case {
 /// `SESSIONS: [Case; N]` and the name `MEASURED` of the session whose solve is timed.
 mod vectors {
     use crate::Case;
-    use zerocal_core::bracket::Brackets;
-use zerocal_core::model::{Convention, Tilt};
+    use zerocal_core::model::{Convention, Tilt};
     use zerocal_core::session::BiasSource;
     use zerocal_core::stage0::Reversal;
     use zerocal_core::stage1::AxisOneTurn;
@@ -63,6 +62,7 @@ use cortex_m::peripheral::syst::SystClkSource;
 use cortex_m::peripheral::SYST;
 use cortex_m_rt::{entry, exception, ExceptionFrame};
 use cortex_m_semihosting::{debug, hprintln};
+use zerocal_core::bracket::Brackets;
 use zerocal_core::error::Terse;
 use zerocal_core::model::{Arm, Convention};
 use zerocal_core::real::rad_to_deg;
