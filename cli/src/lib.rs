@@ -4,6 +4,7 @@
 pub mod args;
 pub mod bracket;
 pub mod bracket_report;
+pub mod brackets;
 pub mod diagnose;
 pub mod error;
 pub mod identify;

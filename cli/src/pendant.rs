@@ -2,10 +2,12 @@
 //! link (README, "The USB link").
 //!
 //! - `status`: the pendant's `status` lines.
-//! - `load-profile ROBOT [--plan FILE]`: the robot profile (`profile set`, the lines of
-//!   `zerocal_procedure::profile`), then the plan `zerocal program --robot ROBOT`
-//!   drives (or FILE, `zerocal plan --csv` output), so the pendant's screens, the
-//!   robot program and the export all name the same robot and poses.
+//! - `load-profile ROBOT [--plan FILE] [--brackets FILE]`: the robot profile (`profile
+//!   set`, the lines of `zerocal_procedure::profile`: its kinematics, display, masses
+//!   and the brackets' calibrations from the `--brackets` file, [`crate::brackets`]),
+//!   then the plan `zerocal program --robot ROBOT` drives (or FILE, `zerocal plan
+//!   --csv` output), so the pendant's screens, the robot program and the export all
+//!   name the same robot and poses, and the pendant's fit is `zerocal session`'s.
 //! - `export [--out FILE]`: the session as `zerocal session` reads it.
 //! - `erase`: `erase all` (session, bias, last result, profile, plan, brackets).
 //! - `brackets [--out FILE] [--date YYYY-MM-DD]`: the brackets' calibrations made on the
@@ -27,6 +29,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::{Args, Subcommand};
+use zerocal_core::bracket::Brackets;
 use zerocal_core::model::JOINTS;
 use zerocal_procedure::bracket_cal::parse_bracket_line;
 use zerocal_procedure::export_trailer;
@@ -82,6 +85,11 @@ pub enum PendantAction {
         /// The plan (`zerocal plan --csv`); default: the one `zerocal program` drives.
         #[arg(long, value_name = "FILE")]
         plan: Option<PathBuf>,
+        /// The brackets' calibrations (TOML, `[[bracket]]` tables: mount, id,
+        /// rotation_deg, uncertainty_deg, date, temperature_c); default: both
+        /// uncalibrated.
+        #[arg(long, value_name = "FILE")]
+        brackets: Option<PathBuf>,
     },
     /// Save the session (`zerocal session` reads it).
     Export {
@@ -180,11 +188,15 @@ pub fn brackets_toml(lines: &[&str], date: &str) -> Result<String, String> {
     Ok(out)
 }
 
-/// The profile as the pendant keeps it.
+/// The profile as the pendant keeps it, with the brackets' calibrations: the masses
+/// are the profile's (`Profile::mass_model`), as `zerocal session` takes them.
 ///
 /// # Errors
-/// A name or a joint name too long for the pendant.
-pub fn pendant_profile(profile: &Profile) -> Result<PendantProfile<f64>, CliError> {
+/// A name or a joint name too long for the pendant, a mass beyond what its line takes.
+pub fn pendant_profile(
+    profile: &Profile,
+    brackets: Brackets<f64>,
+) -> Result<PendantProfile<f64>, CliError> {
     let mut robot = RobotName::new();
     robot.push_str(&profile.name).map_err(|()| {
         CliError::Input(format!(
@@ -208,6 +220,8 @@ pub fn pendant_profile(profile: &Profile) -> Result<PendantProfile<f64>, CliErro
         arm: profile.arm,
         stage1_rad: [profile.stage1_joints_rad[0], profile.stage1_joints_rad[1]],
         display: profile.controller.display(names),
+        masses: profile.mass_model(),
+        brackets,
     })
 }
 
@@ -381,13 +395,21 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
             };
             vec![request(Command::Brackets, Expect::Brackets(date))]
         }
-        PendantAction::LoadProfile { robot, plan } => {
+        PendantAction::LoadProfile {
+            robot,
+            plan,
+            brackets,
+        } => {
             let profile = crate::robot::load(robot)?;
+            let brackets = match brackets {
+                Some(path) => crate::brackets::read(path)?,
+                None => Brackets::default(),
+            };
             let poses = match plan {
                 Some(path) => crate::program::read_plan(path, &profile)?,
                 None => crate::program::default_plan(robot, &default_timing()?)?,
             };
-            let pendant = pendant_profile(&profile)?;
+            let pendant = pendant_profile(&profile, brackets)?;
             vec![
                 Request {
                     bytes: profile_request(&pendant)?,

@@ -115,6 +115,7 @@ fn load(robot: &str) -> PendantAction {
     PendantAction::LoadProfile {
         robot: robot.into(),
         plan: None,
+        brackets: None,
     }
 }
 
@@ -185,7 +186,7 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
     }
     // The stored profile reads back as the one sent.
     let profile = zerocal_cli::robot::load("kuka-kr6-r900-sixx").unwrap();
-    let sent = pendant::pendant_profile(&profile).unwrap();
+    let sent = pendant::pendant_profile(&profile, Default::default()).unwrap();
     let mut up = ProfileUpload::<f64>::default();
     let mut back = None;
     for line in c.answers_after_reboot[0].lines() {
@@ -223,6 +224,92 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
             assert!((g - w).abs() <= 0.0005 + 3e-5, "{row} vs {sent_row}");
         }
     }
+}
+
+/// `load-profile --brackets FILE` of a profile with masses: the pendant's own link
+/// task stores the masses and both calibrations, and after a reboot its `profile`
+/// reply reads back (through the pendant's parser) as what was sent, within the
+/// `f32` the pendant keeps them in.
+#[test]
+fn masses_and_bracket_calibrations_survive_a_reboot() {
+    let dir = std::env::temp_dir().join(format!("zerocal-brackets-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("brackets.toml");
+    std::fs::write(
+        &file,
+        r#"
+[[bracket]]
+mount = "upper-arm"
+id = "U-017"
+rotation_deg = [0.213, -0.0417]
+uncertainty_deg = 0.0012
+date = "2026-11-27"
+temperature_c = 21.5
+
+[[bracket]]
+mount = "flange"
+id = "F_2"
+rotation_deg = [-0.4999, 0.125]
+uncertainty_deg = 0.0009
+date = "2026-11-26"
+temperature_c = 22.25
+"#,
+    )
+    .unwrap();
+    let robot = "kuka-kr6-r900-sixx";
+    let action = PendantAction::LoadProfile {
+        robot: robot.into(),
+        plan: None,
+        brackets: Some(file.clone()),
+    };
+    let requests = request_bytes(&action);
+    let c = converse(&requests, &[b"profile\r\n".to_vec()]).unwrap();
+    let out = replay(&action, &c.answers).unwrap();
+    assert!(
+        out.contains("ok: profile kuka-kr6-r900-sixx stored"),
+        "{out}"
+    );
+    let profile = zerocal_cli::robot::load(robot).unwrap();
+    let brackets = zerocal_cli::brackets::read(&file).unwrap();
+    let sent = pendant::pendant_profile(&profile, brackets).unwrap();
+    let mut up = ProfileUpload::<f64>::default();
+    let mut back = None;
+    for line in c.answers_after_reboot[0].lines() {
+        if let ProfileStep::Done(p) = up.feed(line).unwrap() {
+            back = Some(p);
+        }
+    }
+    let back = back.expect("the profile's lines, to 'end'");
+    // The masses are the profile's, the ones `zerocal session` fits with.
+    let (want, got) = (sent.masses.unwrap(), back.masses.unwrap());
+    assert_eq!(Some(want), profile.mass_model());
+    // f32's relative resolution (6e-8) on each mass and centre of mass.
+    for k in 0..6 {
+        assert!((want.link_kg[k] - got.link_kg[k]).abs() <= 1e-7 * want.link_kg[k].max(1.0));
+        assert!((want.com_m[k] - got.com_m[k]).amax() <= 1e-7);
+    }
+    assert!((want.pendant_kg - got.pendant_kg).abs() <= 1e-7);
+    for (mount, id) in [
+        (zerocal_core::bracket::BracketMount::UpperArm, "U-017"),
+        (zerocal_core::bracket::BracketMount::Flange, "F_2"),
+    ] {
+        let (a, b) = (
+            sent.brackets.get(mount).unwrap(),
+            back.brackets.get(mount).unwrap(),
+        );
+        assert_eq!((a.id.as_str(), b.id.as_str(), a.date), (id, id, b.date));
+        // f32 radians: 1e-9 rad on a turn below 0.01 rad.
+        assert!((a.rotation_rad.x_rad - b.rotation_rad.x_rad).abs() < 1e-9);
+        assert!((a.rotation_rad.y_rad - b.rotation_rad.y_rad).abs() < 1e-9);
+        assert!((a.uncertainty_rad - b.uncertainty_rad).abs() < 1e-11);
+        assert!((a.temperature_c - b.temperature_c).abs() < 1e-5);
+    }
+    // A brackets file that does not check is refused before anything is sent.
+    std::fs::write(&file, "[[bracket]]\nmount = \"elbow\"\n").unwrap();
+    let e = pendant::requests(&action).unwrap_err();
+    assert_eq!(e.exit_code(), 2, "{e}");
+    assert!(e.to_string().contains("brackets.toml"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -12,8 +12,8 @@ use zerocal_procedure::link::{parse_command, plan_line, PlanUpload, UploadStep};
 use zerocal_procedure::profile::{PendantProfile, ProfileStep, ProfileUpload};
 
 /// The `profile` reply of an uploaded profile reads back as the same profile (names,
-/// display, axes exactly; frames to the lines' decimals), every line within the link's
-/// 128 bytes.
+/// display, axes, whether it has masses, the brackets' IDs and days exactly; frames to
+/// the lines' decimals), every line within the link's 128 bytes.
 fn profile_round_trip(p: &PendantProfile<f32>) {
     let mut back = ProfileUpload::<f32>::default();
     let mut done = None;
@@ -38,6 +38,11 @@ fn profile_round_trip(p: &PendantProfile<f32>) {
         assert!((a.origin.rotation.matrix() - b.origin.rotation.matrix()).norm() < 1e-5);
         assert!((a.origin.translation_m - b.origin.translation_m).norm() < 1e-5);
     }
+    assert_eq!(q.masses.is_some(), p.masses.is_some());
+    let ids = |b: &zerocal_core::bracket::Brackets<f32>| {
+        [&b.upper_arm, &b.flange].map(|c| c.as_ref().map(|c| (c.id.clone(), c.date)))
+    };
+    assert_eq!(ids(&q.brackets), ids(&p.brackets));
 }
 
 /// A port that answers once with the fuzzer's bytes, then stays quiet.

@@ -12,7 +12,7 @@ use zerocal_core::stage2::PoseReading;
 use zerocal_pendant::config::procedure_config;
 use zerocal_procedure::link::status;
 use zerocal_procedure::log::{MAX_JOINT_DEG, MAX_READING_DEG, TEMPERATURE_RANGE_C};
-use zerocal_procedure::record::{Record, MAX_RECORD_LEN};
+use zerocal_procedure::record::{key, Record, MAX_RECORD_LEN, PROFILE_KEYS};
 use zerocal_procedure::{PendantProfile, ProcedureState};
 
 #[derive(Arbitrary, Debug)]
@@ -30,7 +30,7 @@ fn key_of(s: &Stored) -> u16 {
         2 => 0x200 + s.key % 64,
         // Stage 0-1 and closing readings; the robot profile's parts.
         3 => 0x10 + s.key % 8,
-        4 => 0x20 + s.key % 11,
+        4 => key::PROFILE_HEAD + s.key % PROFILE_KEYS as u16,
         _ => s.key,
     }
 }

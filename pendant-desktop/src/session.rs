@@ -8,13 +8,17 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use embassy_time::{Duration, Instant, Timer};
+use zerocal_core::model::JOINTS;
+use zerocal_core::plan::{Candidate, DEFAULT_POOL};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::SESSION_JOINTS;
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::channels::Shared;
+use zerocal_pendant::config::procedure_config;
 use zerocal_pendant::draw::lines;
 use zerocal_pendant::screen::{ResultScreen, Screen};
-use zerocal_procedure::{Approach, Phase, ProcedureState};
+use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
+use zerocal_procedure::{pendant_default, Approach, PendantProfile, Phase, ProcedureState};
 
 use crate::exec;
 use crate::operator::{calibrate, command, press, t_ms, ScriptError, PRESS_MS};
@@ -135,6 +139,91 @@ impl SessionReport {
     }
 }
 
+/// The requests that load `profile` over the link, as `zerocal pendant load-profile`
+/// sends them: `profile set`, its lines, then `plan set` with `plan` (model degrees,
+/// six decimals), each ended by `end`.
+///
+/// # Errors
+/// A profile line the pendant's line buffer cannot hold.
+pub fn load_requests(
+    profile: &PendantProfile<f64>,
+    plan: &[[f32; JOINTS]],
+) -> Result<Vec<Vec<u8>>, String> {
+    let mut profile_set = b"profile set\r\n".to_vec();
+    for i in 0.. {
+        let Some(line) = profile.line(i) else { break };
+        let line = line.map_err(|_| format!("profile line {} does not fit a line", i + 1))?;
+        profile_set.extend_from_slice(line.as_bytes());
+        profile_set.extend_from_slice(b"\r\n");
+    }
+    let mut plan_set = b"plan set\r\n".to_vec();
+    for q in plan {
+        let row: Vec<String> = q
+            .iter()
+            .map(|v| format!("{:.6}", f64::from(*v).to_degrees()))
+            .collect();
+        plan_set.extend_from_slice(row.join(",").as_bytes());
+        plan_set.extend_from_slice(b"\r\n");
+    }
+    plan_set.extend_from_slice(b"end\r\n");
+    Ok(vec![profile_set, plan_set])
+}
+
+/// One calibration session, as [`session`], on a robot whose profile the link loads
+/// first (`profile set`, then `plan set` with the plan the pendant's planner makes for
+/// that profile, as the firmware's build makes the built-in one): the robot's arm is
+/// the profile's with each calibrated bracket's turn in its mounting (the brackets as
+/// they are), and the pendant solves with the profile's masses and calibrations. The
+/// link's answers to the two uploads come back beside the report.
+///
+/// # Errors
+/// The planner's refusal, the script's or the simulation's failure, as text.
+pub fn session_with_profile(
+    world: WorldConfig,
+    profile: &PendantProfile<f64>,
+) -> Result<(SessionReport, Vec<String>), String> {
+    exec::reset_clock();
+    // The profile as the pendant will hold it: its own lines, parsed in f32.
+    let mut upload = ProfileUpload::<f32>::default();
+    let mut held = None;
+    for i in 0.. {
+        let Some(line) = profile.line(i) else { break };
+        let line = line.map_err(|_| format!("profile line {} does not fit a line", i + 1))?;
+        if let ProfileStep::Done(p) = upload.feed(&line).map_err(|e| e.to_string())? {
+            held = Some(p);
+        }
+    }
+    let held = held.ok_or("the profile's lines end without `end`")?;
+    let mut config = procedure_config();
+    config.apply(&held);
+    let mut pool = vec![Candidate::<f32>::default(); DEFAULT_POOL];
+    let plan = pendant_default(&config, &mut pool)
+        .map_err(|e| format!("core's planner refused the profile's plan: {e:?}"))?
+        .to_vec();
+    let mut rig = Rig::new(world, world.seed)?;
+    rig.world.borrow_mut().robot.arm = profile.brackets.apply(&profile.arm);
+    let requests = load_requests(profile, &plan)?;
+    rig.plan = plan;
+    let answers = RefCell::new(Vec::new());
+    let run = rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| async {
+        // The boot screen's time, then the uploads, each answered before the next.
+        Timer::after(Duration::from_secs(2)).await;
+        for r in &requests {
+            let answer = command(&rig, r, SILENCE).await;
+            answers
+                .borrow_mut()
+                .push(String::from_utf8_lossy(&answer).into_owned());
+        }
+        full_session(&rig, shared, false).await
+    });
+    let ended = match run {
+        Ok(Ok(ended)) => ended,
+        Ok(Err(e)) => return Err(format!("session script: {e:?}")),
+        Err(stop) => return Err(format!("session stopped: {stop:?}")),
+    };
+    Ok((report_of(&rig, ended), answers.into_inner()))
+}
+
 /// What the link and the session said at the end of [`full_session`].
 struct Ended {
     result_screen: Option<Vec<String>>,
@@ -204,24 +293,28 @@ pub fn session(
         Ok(Err(e)) => return Err(format!("session script: {e:?}")),
         Err(stop) => return Err(format!("session stopped: {stop:?}")),
     };
+    Ok((report_of(&rig, ended), rig.panel.clone()))
+}
+
+/// The report of a run that ended with `ended`.
+fn report_of(rig: &Rig, ended: Ended) -> SessionReport {
     let (flash_operations, erases) = {
         let memory = rig.flash.memory();
         (memory.operations, memory.erases)
     };
-    let report = SessionReport {
+    SessionReport {
         second_export_equal: ended.export == ended.second_export,
         export: ended.export,
         status: ended.status,
         result_screen: ended.result_screen,
         identified: identified(&ended.state),
         state: ended.state,
-        truth: Truth::of(&rig),
+        truth: Truth::of(rig),
         robot_time_s: ended.done_s,
         flash_operations,
         erases,
         poses: rig.plan.len(),
-    };
-    Ok((report, rig.panel.clone()))
+    }
 }
 
 /// Where the session stands: 0-1 stage 0, 2-5 stage 1's four captures, then 6 +

@@ -59,6 +59,8 @@ fn pendant_display(profile: &Profile) -> Option<ControllerDisplay<f32>> {
         arm: profile.arm,
         stage1_rad: [profile.stage1_joints_rad[0], profile.stage1_joints_rad[1]],
         display: profile.controller.display(names),
+        masses: profile.mass_model(),
+        brackets: Default::default(),
     };
     let mut upload = ProfileUpload::<f32>::default();
     for i in 0.. {

@@ -278,7 +278,7 @@ pub fn set_profile(
         .into_iter()
         .chain(profile.to_records(generation))
     {
-        // 1 + 2 + 11 records in a buffer of a whole plan's.
+        // 1 + 2 + PROFILE_RECORDS (at most 23) records in a buffer of a whole plan's.
         let _ = output.persist.push(r);
     }
     config.apply(profile);

@@ -433,7 +433,7 @@ impl ScreenKind {
             }
             ScreenKind::StageRefused => "redoes the step: the two readings did not agree",
             ScreenKind::ResultOffsets => {
-                "reads each offset as the controller takes it (its joint names, signs and J2-J3 coupling, in its joint degrees), a check on the spot; the numbers to enter are `zerocal session`'s on the export, which also fits the arm's sag from the profile's masses (the pendant stores none) and converts to motor radians or counts where the controller takes them; NEXT for details, hold OK for a new session"
+                "reads each offset as the controller takes it (its joint names, signs and J2-J3 coupling, in its joint degrees), a check on the spot; the numbers to enter are `zerocal session`'s on the export, the same fit (the profile's masses for the sag, the brackets' calibrations) in f64, converted to motor radians or counts where the controller takes them; NEXT for details, hold OK for a new session"
             }
             ScreenKind::ResultDetails => "checks residual and conditioning; NEXT for warnings",
             ScreenKind::ResultWarning => "reads what to distrust before entering the offsets",

@@ -39,8 +39,9 @@ pub const MAX_JOINT_DEG: f64 = zerocal_procedure::log::MAX_JOINT_DEG;
 /// radian-per-second figure was probably taken for degrees twice over.
 pub const SPEED_DEG_S: (f64, f64) = (0.1, 10_000.0);
 
-/// Link masses (kg): above 10 t a gram figure was probably taken for kilograms.
-pub const MAX_MASS_KG: f64 = 10_000.0;
+/// Link masses (kg): above 10 t a gram figure was probably taken for kilograms; the
+/// pendant's profile line takes no more.
+pub const MAX_MASS_KG: f64 = zerocal_procedure::profile::MAX_MASS_KG;
 
 /// Lengths and positions (m): a link origin, DH `a`/`d`, a flange offset or a centre of
 /// mass beyond 10 m is a millimetre figure taken for metres.

@@ -99,10 +99,12 @@ impl fmt::Display for LinkError {
                 )
             }
             LinkError::AngleOutOfRange { row } => {
+                // Through core's integer writer: `{}` on the f64 would link core's float
+                // formatting (about 7.7 KB of the firmware's flash) for this one number.
                 write!(
                     f,
                     "plan row {row}: an angle is outside +/-{} deg; plan unchanged",
-                    crate::text::MAX_JOINT_DEG
+                    zerocal_core::decimal::Fixed::new(crate::text::MAX_JOINT_DEG, 0)
                 )
             }
             LinkError::JointsOneTwoMoved { row } => write!(

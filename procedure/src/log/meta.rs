@@ -60,6 +60,18 @@ pub fn write_bracket<T: Real>(
     calibration: Option<&BracketCalibration<T>>,
 ) -> fmt::Result {
     write!(w, "# {}", bracket_key(mount))?;
+    write_bracket_fields(w, calibration)
+}
+
+/// Writes a bracket's calibration as the export's and the profile's lines carry it,
+/// after their key: ` id ID rot_deg x,y u_deg u date YYYYMMDD temp_c t`, or ` none`.
+///
+/// # Errors
+/// Only a full line buffer.
+pub fn write_bracket_fields<T: Real>(
+    w: &mut Line,
+    calibration: Option<&BracketCalibration<T>>,
+) -> fmt::Result {
     let Some(c) = calibration else {
         return w.write_str(" none");
     };
@@ -82,6 +94,72 @@ pub fn write_bracket<T: Real>(
         deg(w, y.uncertainty_rad)?;
     }
     Ok(())
+}
+
+/// Reads what [`write_bracket_fields`] wrote (the yaw where it has one), to the end of
+/// the line: `Some(None)` for `none`, `None` for anything else than a calibration core
+/// accepts
+/// ([`bracket_id`], [`BracketCalibration::new`]) with an uncertainty within
+/// [`MAX_READING_DEG`] and a temperature within [`TEMPERATURE_RANGE_C`].
+pub fn parse_bracket_fields<'s, T: Real>(
+    mut rest: impl Iterator<Item = &'s str>,
+    parse: impl Fn(&str) -> Option<f64>,
+) -> Option<Option<BracketCalibration<T>>> {
+    let first = rest.next();
+    if first == Some("none") {
+        return rest.next().is_none().then_some(None);
+    }
+    let id = (first == Some("id"))
+        .then(|| rest.next())
+        .flatten()
+        .and_then(|s| bracket_id(s).ok());
+    fn take<'s>(name: &str, rest: &mut impl Iterator<Item = &'s str>) -> Option<&'s str> {
+        (rest.next() == Some(name)).then(|| rest.next()).flatten()
+    }
+    let mut field = |name: &str| take(name, &mut rest);
+    let rotation = field("rot_deg").and_then(|v| {
+        let (x, y) = v.split_once(',')?;
+        let (x, y) = (parse(x)?, parse(y)?);
+        (x.is_finite() && y.is_finite() && x.abs() <= MAX_READING_DEG && y.abs() <= MAX_READING_DEG)
+            .then(|| Tilt::from_deg(T::lit(x), T::lit(y)))
+    });
+    let u = field("u_deg")
+        .and_then(&parse)
+        .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
+    let date = field("date").and_then(|d| d.parse::<u32>().ok());
+    let temperature_c = field("temp_c")
+        .and_then(&parse)
+        .filter(|t| t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t));
+    // The yaw, where the sine plate measured it: `yaw_deg c u_yaw_deg w` to the end.
+    let yaw = match rest.next() {
+        None => None,
+        Some("yaw_deg") => {
+            let value = rest.next().and_then(&parse).filter(|v| v.is_finite());
+            let u = take("u_yaw_deg", &mut rest)
+                .and_then(&parse)
+                .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
+            if rest.next().is_some() {
+                return None;
+            }
+            Some(BracketYaw {
+                yaw_rad: deg_to_rad(T::lit(value?)),
+                uncertainty_rad: deg_to_rad(T::lit(u?)),
+            })
+        }
+        Some(_) => return None,
+    };
+    let calibration = BracketCalibration::new(
+        id?,
+        rotation?,
+        deg_to_rad(T::lit(u?)),
+        date?,
+        T::lit(temperature_c?),
+    )
+    .ok()?;
+    match yaw {
+        Some(y) => calibration.with_yaw(y).ok().map(Some),
+        None => Some(Some(calibration)),
+    }
 }
 
 /// The names of [`Extras`]' groups in `# fit_extras`, in order.
@@ -307,63 +385,8 @@ pub fn parse_meta<T: Real>(
                 line,
                 key: bracket_key(mount),
             };
-            let first = rest.next();
-            if first == Some("none") {
-                if rest.next().is_some() {
-                    return Err(bad);
-                }
-                return Ok(Some(MetaItem::Bracket(mount, None)));
-            }
-            fn field<'s>(name: &str, rest: &mut core::str::SplitWhitespace<'s>) -> Option<&'s str> {
-                (rest.next() == Some(name)).then(|| rest.next()).flatten()
-            }
-            let id = (first == Some("id"))
-                .then(|| rest.next())
-                .flatten()
-                .and_then(|s| bracket_id(s).ok());
-            let rotation = field("rot_deg", &mut rest).and_then(|v| pair(Some(v)));
-            let u = field("u_deg", &mut rest)
-                .and_then(&parse)
-                .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
-            let date = field("date", &mut rest).and_then(|d| d.parse::<u32>().ok());
-            let temp = field("temp_c", &mut rest).and_then(&parse).filter(|t| {
-                t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t)
-            });
-            let yaw = match rest.next() {
-                None => Some(None),
-                Some("yaw_deg") => {
-                    let value = rest.next().and_then(&parse).filter(|v| v.is_finite());
-                    let u = field("u_yaw_deg", &mut rest)
-                        .and_then(&parse)
-                        .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
-                    match (value, u, rest.next()) {
-                        (Some(v), Some(u), None) => Some(Some(BracketYaw {
-                            yaw_rad: deg_to_rad(T::lit(v)),
-                            uncertainty_rad: deg_to_rad(T::lit(u)),
-                        })),
-                        _ => None,
-                    }
-                }
-                Some(_) => None,
-            };
-            match (id, rotation, u, date, temp, yaw) {
-                (Some(id), Some(rotation), Some(u), Some(date), Some(t), Some(yaw)) => {
-                    let c = BracketCalibration::new(
-                        id,
-                        rotation,
-                        deg_to_rad(T::lit(u)),
-                        date,
-                        T::lit(t),
-                    )
-                    .and_then(|c| match yaw {
-                        Some(y) => c.with_yaw(y),
-                        None => Ok(c),
-                    })
-                    .map_err(|_| bad)?;
-                    MetaItem::Bracket(mount, Some(c))
-                }
-                _ => return Err(bad),
-            }
+            let calibration = parse_bracket_fields(&mut rest, &parse).ok_or(bad)?;
+            MetaItem::Bracket(mount, calibration)
         }
         // Informational lines the pendant writes (each capture of stage 1, its result,
         // stage 2's): the solver recomputes them from the readings.

@@ -44,8 +44,8 @@ mod write;
 pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
 pub use error::{LogError, ShortText};
 pub use meta::{
-    bracket_key, metadata_key, parse_meta, write_bracket, write_fit_extras, write_reversal,
-    MetaItem, MetaKeys,
+    bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bracket,
+    write_bracket_fields, write_fit_extras, write_reversal, MetaItem, MetaKeys,
 };
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;

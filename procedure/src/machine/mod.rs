@@ -113,18 +113,20 @@ impl<T: Real> ProcedureConfig<T> {
         config
     }
 
-    /// Takes a robot profile: its kinematics, convention, stage-1 pose and display,
-    /// and the fit of a MEMS sensor on that arm (no sag term: the pendant has no
-    /// masses). The sensor's range and the stillness settings stay.
+    /// Takes a robot profile: its kinematics, convention, stage-1 pose, display, masses
+    /// and bracket calibrations, and the fit of a MEMS sensor on that arm with the sag
+    /// term where the profile has masses, as `zerocal session` fits the same profile.
+    /// The sensor's range and the stillness settings stay.
     pub fn apply(&mut self, p: &PendantProfile<T>) {
         let range = self.fit.sensor_range_rad;
         self.robot = p.robot.clone();
         self.convention = p.convention;
         self.arm = p.arm;
-        self.masses = None;
+        self.masses = p.masses;
+        self.brackets = p.brackets.clone();
         self.stage1_joints_rad = [T::zero(); JOINTS];
         self.stage1_joints_rad[..2].copy_from_slice(&p.stage1_rad);
-        self.fit = FitConfig::for_mems(&self.arm, false);
+        self.fit = FitConfig::for_mems(&self.arm, self.masses.is_some());
         self.fit.sensor_range_rad = range;
         self.display = p.display.clone();
     }
@@ -137,6 +139,8 @@ impl<T: Real> ProcedureConfig<T> {
             arm: self.arm,
             stage1_rad: [self.stage1_joints_rad[0], self.stage1_joints_rad[1]],
             display: self.display.clone(),
+            masses: self.masses,
+            brackets: self.brackets.clone(),
         }
     }
 }

@@ -6,11 +6,17 @@
 //! Encoding: a format byte, then little-endian fields; every angle as an `f64` of
 //! radians (exact for the pendant's `f32`). Format 3 (the two-sided procedure) keeps every
 //! capture of stages 0 and 1 and of the closing reversal with its temperature, and two
-//! stage-2 captures per plan pose (each under the index of its approach); formats 1
-//! and 2 are refused as `WrongFormat` and the pendant starts afresh.
+//! stage-2 captures per plan pose (each under the index of its approach); format 4 adds
+//! the profile's link masses and bracket calibrations (and the head's flag saying
+//! whether masses are stored). Formats 1-3 are refused as `WrongFormat` and the pendant
+//! starts afresh.
 
+use super::profile::{MAX_MASS_KG, MAX_POSITION_M};
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
-use zerocal_core::bracket::{bracket_id, BracketMount, BRACKET_ID_LEN};
+use crate::log::{MAX_READING_DEG, TEMPERATURE_RANGE_C};
+use zerocal_core::bracket::{
+    bracket_id, BracketCalibration, BracketMount, BracketYaw, BRACKET_ID_LEN,
+};
 use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES};
 use zerocal_core::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::MAX_POSES;
@@ -23,7 +29,7 @@ pub const MAX_RECORD_LEN: usize = 1 + 8 * 10;
 
 /// The record format this build writes and reads (the first byte of every value). A
 /// store holding another format is reset by the pendant, never misread.
-pub const FORMAT: u8 = 3;
+pub const FORMAT: u8 = 4;
 
 /// One stored fact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -85,6 +91,9 @@ pub enum Record<T> {
         stage1_rad: [T; 2],
         /// The controller's J3 is θ3 − θ2.
         j3_minus_j2: bool,
+        /// The profile has link masses (its [`Record::ProfileMass`] parts); else the
+        /// fit has no sag term.
+        masses: bool,
     },
     /// A joint's frame (parts 0-5) or the flange's (part 6).
     ProfilePlacement {
@@ -107,6 +116,27 @@ pub enum Record<T> {
         flange: bool,
         /// A unit quaternion `w,x,y,z`.
         rotation: [T; 4],
+    },
+    /// A link's mass (parts 0-5: the link after joint part+1) or the pendant's on the
+    /// flange (part 6), stored only when the head says the profile has masses.
+    ProfileMass {
+        /// As the head's.
+        generation: u8,
+        /// Which.
+        part: u8,
+        /// The mass (kg, or the profile's common unit), at least 0.
+        kg: T,
+        /// Its centre of mass in that joint's frame (the flange's for the pendant, m).
+        com_m: [T; 3],
+    },
+    /// A bracket's calibration: the upper arm's or the flange's, or that it has none.
+    ProfileBracket {
+        /// As the head's.
+        generation: u8,
+        /// The flange bracket (else the upper arm's).
+        flange: bool,
+        /// Its calibration, if it has one.
+        calibration: Option<StoredBracket<T>>,
     },
     /// How the controller shows the joints.
     ProfileDisplay {
@@ -153,6 +183,78 @@ pub enum Record<T> {
     },
 }
 
+/// A bracket calibration as a record holds it: [`BracketCalibration`]'s fields, the ID
+/// as bytes (a record is `Copy`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StoredBracket<T> {
+    /// The ID's bytes, `id_len` of them used.
+    pub id: [u8; BRACKET_ID_LEN],
+    /// Bytes of `id` used.
+    pub id_len: u8,
+    /// The pendant's turn in the bracket about its x and y (rad).
+    pub rotation_rad: [T; 2],
+    /// The calibration's standard uncertainty (rad).
+    pub uncertainty_rad: T,
+    /// `YYYYMMDD`.
+    pub date: u32,
+    /// The sensor's temperature during the calibration (°C).
+    pub temperature_c: T,
+    /// The yaw and its standard uncertainty (rad), where the sine plate measured it.
+    pub yaw_rad: Option<[T; 2]>,
+}
+
+impl<T: Real> StoredBracket<T> {
+    /// A calibration's fields.
+    pub fn of(c: &BracketCalibration<T>) -> Self {
+        let mut id = [0_u8; BRACKET_ID_LEN];
+        let bytes = c.id.as_bytes();
+        // A BracketId holds at most BRACKET_ID_LEN bytes.
+        id[..bytes.len()].copy_from_slice(bytes);
+        StoredBracket {
+            id,
+            id_len: bytes.len() as u8,
+            rotation_rad: [c.rotation_rad.x_rad, c.rotation_rad.y_rad],
+            uncertainty_rad: c.uncertainty_rad,
+            date: c.date,
+            temperature_c: c.temperature_c,
+            yaw_rad: c.yaw.map(|y| [y.yaw_rad, y.uncertainty_rad]),
+        }
+    }
+
+    /// The calibration, checked as core checks one ([`bracket_id`],
+    /// [`BracketCalibration::new`]) and as a profile line takes one (an uncertainty
+    /// within [`MAX_READING_DEG`], a temperature within [`TEMPERATURE_RANGE_C`]);
+    /// `None` for fields no calibration has.
+    pub fn calibration(&self) -> Option<BracketCalibration<T>> {
+        let u_deg = self.uncertainty_rad.to_f64().to_degrees();
+        let t = self.temperature_c.to_f64();
+        if !(u_deg <= MAX_READING_DEG
+            && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(&t))
+        {
+            return None;
+        }
+        let id = self.id.get(..usize::from(self.id_len))?;
+        let id = bracket_id(core::str::from_utf8(id).ok()?).ok()?;
+        let c = BracketCalibration::new(
+            id,
+            Tilt::new(self.rotation_rad[0], self.rotation_rad[1]),
+            self.uncertainty_rad,
+            self.date,
+            self.temperature_c,
+        )
+        .ok()?;
+        match self.yaw_rad {
+            Some([yaw_rad, uncertainty_rad]) => c
+                .with_yaw(BracketYaw {
+                    yaw_rad,
+                    uncertainty_rad,
+                })
+                .ok(),
+            None => Some(c),
+        }
+    }
+}
+
 /// Why a stored record could not be read back.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -196,6 +298,10 @@ pub mod key {
     pub const PROFILE_MOUNT: u16 = 0x28;
     /// [`super::Record::ProfileDisplay`].
     pub const PROFILE_DISPLAY: u16 = 0x2A;
+    /// [`super::Record::ProfileMass`] of part p is `PROFILE_MASS + p`.
+    pub const PROFILE_MASS: u16 = 0x2B;
+    /// [`super::Record::ProfileBracket`]: the upper arm's, then the flange's.
+    pub const PROFILE_BRACKET: u16 = 0x32;
     /// [`super::Record::BracketCalibration`] of the upper arm's bracket; the flange's
     /// is the next.
     pub const BRACKET_CALIBRATION: u16 = 0x40;
@@ -215,8 +321,12 @@ fn mount_code(m: BracketMount) -> u8 {
 /// Placements of a profile: six joints and the flange.
 pub const PROFILE_PLACEMENTS: usize = 7;
 
-/// The profile's keys: head, placements, two mounts, display.
-const PROFILE_KEYS: usize = 1 + PROFILE_PLACEMENTS + 2 + 1;
+/// Masses of a profile: six links and the pendant.
+pub const PROFILE_MASSES: usize = 7;
+
+/// The profile's keys (from [`key::PROFILE_HEAD`] on): head, placements, two mounts,
+/// display, masses, two brackets.
+pub const PROFILE_KEYS: usize = 1 + PROFILE_PLACEMENTS + 2 + 1 + PROFILE_MASSES + 2;
 
 /// The fixed keys, in the order a restore reads them.
 const FIXED_KEYS: [u16; 4] = [key::BIAS, key::PROGRESS, key::LAST_RESULT, key::PLAN_LEN];
@@ -360,6 +470,13 @@ impl Reader<'_> {
             _ => Err(RecordError::BadField),
         }
     }
+    fn flag(&mut self) -> Result<bool, RecordError> {
+        match self.u8()? {
+            0 => Ok(false),
+            1 => Ok(true),
+            _ => Err(RecordError::BadField),
+        }
+    }
     fn tilt<T: Real>(&mut self) -> Result<Tilt<T>, RecordError> {
         Ok(Tilt::new(self.f()?, self.f()?))
     }
@@ -396,6 +513,8 @@ impl<T: Real> Record<T> {
             Record::BracketCalibration { mount, .. } => {
                 key::BRACKET_CALIBRATION + u16::from(mount_code(*mount))
             }
+            Record::ProfileMass { part, .. } => key::PROFILE_MASS + u16::from(*part),
+            Record::ProfileBracket { flange, .. } => key::PROFILE_BRACKET + u16::from(*flange),
         }
     }
 
@@ -447,12 +566,14 @@ impl<T: Real> Record<T> {
                 convention,
                 stage1_rad,
                 j3_minus_j2,
+                masses,
             } => {
                 w.put(&[generation, name_len])?;
                 w.put(&name)?;
                 w.put(&[
                     u8::from(convention == Convention::Rpy),
                     u8::from(j3_minus_j2),
+                    u8::from(masses),
                 ])?;
                 for v in stage1_rad {
                     w.f(v)?;
@@ -478,6 +599,46 @@ impl<T: Real> Record<T> {
                 w.put(&[generation, u8::from(flange)])?;
                 for v in rotation {
                     w.f(v)?;
+                }
+            }
+            Record::ProfileMass {
+                generation,
+                part,
+                kg,
+                com_m,
+            } => {
+                w.put(&[generation, part])?;
+                w.f(kg)?;
+                for v in com_m {
+                    w.f(v)?;
+                }
+            }
+            Record::ProfileBracket {
+                generation,
+                flange,
+                calibration,
+            } => {
+                w.put(&[generation, u8::from(flange)])?;
+                match calibration {
+                    None => w.put(&[0])?,
+                    Some(c) => {
+                        w.put(&[1, c.id_len])?;
+                        w.put(&c.id)?;
+                        for v in c.rotation_rad {
+                            w.f(v)?;
+                        }
+                        w.f(c.uncertainty_rad)?;
+                        w.put(&c.date.to_le_bytes())?;
+                        w.f(c.temperature_c)?;
+                        match c.yaw_rad {
+                            None => w.put(&[0])?,
+                            Some([yaw, u]) => {
+                                w.put(&[1])?;
+                                w.f(yaw)?;
+                                w.f(u)?;
+                            }
+                        }
+                    }
                 }
             }
             Record::ProfileDisplay {
@@ -638,11 +799,8 @@ impl<T: Real> Record<T> {
                     1 => Convention::Rpy,
                     _ => return Err(RecordError::BadField),
                 };
-                let j3_minus_j2 = match r.u8()? {
-                    0 => false,
-                    1 => true,
-                    _ => return Err(RecordError::BadField),
-                };
+                let j3_minus_j2 = r.flag()?;
+                let masses = r.flag()?;
                 // A name goes into export and link lines as one word: printable ASCII.
                 let ok_name = name
                     .get(..usize::from(name_len))
@@ -657,6 +815,68 @@ impl<T: Real> Record<T> {
                     convention,
                     stage1_rad: [r.f()?, r.f()?],
                     j3_minus_j2,
+                    masses,
+                }
+            }
+            k if (key::PROFILE_MASS..key::PROFILE_MASS + PROFILE_MASSES as u16).contains(&k) => {
+                let generation = r.u8()?;
+                let part = r.u8()?;
+                if u16::from(part) != k - key::PROFILE_MASS {
+                    return Err(RecordError::BadField);
+                }
+                // What a profile line takes: a mass from 0 to MAX_MASS_KG, a centre
+                // of mass within MAX_POSITION_M.
+                let kg: T = r.f()?;
+                let com_m: [T; 3] = [r.f()?, r.f()?, r.f()?];
+                if !(T::zero()..=T::lit(MAX_MASS_KG)).contains(&kg)
+                    || com_m.iter().any(|c| c.abs() > T::lit(MAX_POSITION_M))
+                {
+                    return Err(RecordError::BadField);
+                }
+                Record::ProfileMass {
+                    generation,
+                    part,
+                    kg,
+                    com_m,
+                }
+            }
+            k if k == key::PROFILE_BRACKET || k == key::PROFILE_BRACKET + 1 => {
+                let generation = r.u8()?;
+                let flange = r.u8()?;
+                if u16::from(flange) != k - key::PROFILE_BRACKET {
+                    return Err(RecordError::BadField);
+                }
+                let calibration = if r.flag()? {
+                    let id_len = r.u8()?;
+                    let id = r.take::<BRACKET_ID_LEN>()?;
+                    let stored = StoredBracket {
+                        id,
+                        id_len,
+                        rotation_rad: [r.f()?, r.f()?],
+                        uncertainty_rad: r.f()?,
+                        date: u32::from_le_bytes(r.take::<4>()?),
+                        temperature_c: r.f()?,
+                        yaw_rad: if r.flag()? {
+                            Some([r.f()?, r.f()?])
+                        } else {
+                            None
+                        },
+                    };
+                    // Bytes past the ID zero, and a calibration core would accept.
+                    let padded = id
+                        .get(usize::from(id_len)..)
+                        .is_some_and(|pad| pad.iter().all(|b| *b == 0));
+                    if !padded || stored.calibration().is_none() {
+                        return Err(RecordError::BadField);
+                    }
+                    Some(stored)
+                } else {
+                    None
+                };
+                Record::ProfileBracket {
+                    generation,
+                    flange: flange == 1,
+                    calibration,
                 }
             }
             k if (key::PROFILE_PLACEMENT..key::PROFILE_MOUNT).contains(&k) => {
@@ -913,6 +1133,97 @@ mod tests {
         assert_eq!(
             Record::Bias(Tilt::new(0.0f32, 0.0)).encode(&mut [0u8; 4]),
             Err(RecordError::BufferTooSmall)
+        );
+    }
+
+    fn stored_bracket() -> StoredBracket<f32> {
+        let c = BracketCalibration::new(
+            bracket_id("U-017").unwrap(),
+            Tilt::new(0.0037_f32, -0.0007),
+            2.1e-5,
+            20261127,
+            21.5,
+        )
+        .unwrap();
+        StoredBracket::of(&c)
+    }
+
+    #[test]
+    fn profile_masses_and_brackets_round_trip_bit_exactly() {
+        for part in 0..PROFILE_MASSES as u8 {
+            round_trip(Record::ProfileMass {
+                generation: 9,
+                part,
+                kg: 0.123_456_79,
+                com_m: [0.01, -0.2, 1.5e-7],
+            });
+        }
+        for flange in [false, true] {
+            round_trip(Record::ProfileBracket {
+                generation: 9,
+                flange,
+                calibration: Some(stored_bracket()),
+            });
+            round_trip(Record::ProfileBracket {
+                generation: 9,
+                flange,
+                calibration: None,
+            });
+        }
+    }
+
+    /// A stored mass or calibration that no profile line could have given is refused,
+    /// never used: a negative mass or one beyond 10 t, a centre of mass 101 m away, a
+    /// bracket ID with a foreign byte or bytes after its length, a day that is not one,
+    /// a turn beyond the design's, an uncertainty beyond 180° (4 rad), a temperature
+    /// beyond the sensor's range.
+    #[test]
+    fn impossible_masses_and_calibrations_are_refused() {
+        let refused = |r: Record<f32>| {
+            let mut buf = [0u8; MAX_RECORD_LEN];
+            let n = r.encode(&mut buf).unwrap();
+            assert_eq!(
+                Record::<f32>::decode(r.key(), &buf[..n]),
+                Err(RecordError::BadField),
+                "{r:?}"
+            );
+        };
+        for (kg, com_m) in [(-1.0, [0.0; 3]), (2e4, [0.0; 3]), (1.0, [0.0, 0.0, 101.0])] {
+            refused(Record::ProfileMass {
+                generation: 1,
+                part: 2,
+                kg,
+                com_m,
+            });
+        }
+        let bracket = |edit: fn(&mut StoredBracket<f32>)| {
+            let mut c = stored_bracket();
+            edit(&mut c);
+            Record::ProfileBracket {
+                generation: 1,
+                flange: true,
+                calibration: Some(c),
+            }
+        };
+        refused(bracket(|c| c.id[1] = b'/'));
+        refused(bracket(|c| c.id[7] = b'x'));
+        refused(bracket(|c| c.id_len = 13));
+        refused(bracket(|c| c.date = 20260230));
+        refused(bracket(|c| c.rotation_rad[1] = 0.01));
+        refused(bracket(|c| c.uncertainty_rad = 4.0));
+        refused(bracket(|c| c.temperature_c = 200.0));
+        // A mass stored under another part's key.
+        let mut buf = [0u8; MAX_RECORD_LEN];
+        let r = Record::ProfileMass {
+            generation: 1,
+            part: 2,
+            kg: 1.0_f32,
+            com_m: [0.0; 3],
+        };
+        let n = r.encode(&mut buf).unwrap();
+        assert_eq!(
+            Record::<f32>::decode(key::PROFILE_MASS + 3, &buf[..n]),
+            Err(RecordError::BadField)
         );
     }
 

@@ -175,6 +175,8 @@ impl<T: Real> ProcedureState<T> {
                 Record::ProfileHead { .. }
                 | Record::ProfilePlacement { .. }
                 | Record::ProfileMount { .. }
+                | Record::ProfileMass { .. }
+                | Record::ProfileBracket { .. }
                 | Record::ProfileDisplay { .. } => {}
                 // The pendant's, read by `StoredBrackets::from_records`.
                 Record::BracketCalibration { .. } => {}

@@ -1,12 +1,16 @@
 //! A robot profile as the pendant keeps it: what the procedure needs (the kinematics
-//! with the two brackets, the sensor convention, the stage-1 pose) and how the
-//! controller shows each joint, so the pose screens give targets the technician can
-//! type. The desktop's `zerocal pendant load-profile` writes it from a TOML profile
-//! (`zerocal-profile`) as the link lines below; the pendant parses them here, stores
-//! them as records and rebuilds the procedure's configuration from them at power-up.
+//! with the two brackets' mountings, the sensor convention, the stage-1 pose, the
+//! links' masses for the sag term, the brackets' calibrations) and how the controller
+//! shows each joint, so the pose screens give targets the technician can type. The
+//! desktop's `zerocal pendant load-profile` writes it from a TOML profile
+//! (`zerocal-profile`) and the brackets' calibration file as the link lines below; the
+//! pendant parses them here, stores them as records and rebuilds the procedure's
+//! configuration from them at power-up.
 //!
-//! The links' masses stay on the desktop: the pendant fits no sag term, and
-//! `zerocal session` solves the export with the profile's masses.
+//! With the masses and brackets on board, the pendant's fit is the one `zerocal
+//! session` makes from the same profile: the sag term where the profile has masses,
+//! each calibrated bracket's turn applied to its mounting, and the export names the
+//! brackets it applied.
 //!
 //! The parts: this file the profile and the controller's display of each joint;
 //! `lines.rs` the link lines that carry a profile (written by [`PendantProfile::line`],
@@ -15,15 +19,19 @@
 mod lines;
 mod records;
 
-pub use lines::{ProfileError, ProfileStep, ProfileUpload, PROFILE_LINES};
-pub use records::PROFILE_RECORDS;
+pub use lines::{
+    ProfileError, ProfileStep, ProfileUpload, MAX_MASS_KG, MAX_POSITION_M, PROFILE_LINES,
+};
+pub use records::{ProfileRecords, PROFILE_RECORDS};
 
 use crate::RobotName;
 use core::fmt::Write;
 use nalgebra::{Quaternion, Rotation3, UnitQuaternion};
+use zerocal_core::bracket::Brackets;
 use zerocal_core::model::{Arm, Convention, JOINTS};
 use zerocal_core::real::{rad_to_deg, Real};
 use zerocal_core::session::SESSION_JOINTS;
+use zerocal_core::stage2::MassModel;
 
 /// A joint's name on the controller (`A2`, `J2`, `S`), at most 3 bytes.
 pub type JointName = heapless::String<3>;
@@ -181,6 +189,10 @@ pub struct PendantProfile<T: Real> {
     pub stage1_rad: [T; 2],
     /// How the controller shows the joints.
     pub display: ControllerDisplay<T>,
+    /// The links' and the pendant's masses for the sag term (`None`: no sag term).
+    pub masses: Option<MassModel<T>>,
+    /// The brackets' calibrations (a bracket without one: `None`).
+    pub brackets: Brackets<T>,
 }
 
 /// A rotation as a unit quaternion `w,x,y,z`.
@@ -226,7 +238,41 @@ pub(crate) mod testing {
             arm,
             stage1_rad: [0.0, deg_to_rad(-90.0)],
             display,
+            masses: None,
+            brackets: Brackets::default(),
         }
+    }
+
+    /// [`kuka_like`] with masses (made up for the test, every link and the pendant a
+    /// different one) and both brackets calibrated.
+    pub(crate) fn kuka_like_calibrated() -> PendantProfile<f64> {
+        use zerocal_core::bracket::{bracket_id, BracketCalibration};
+        use zerocal_core::model::Tilt;
+        let mut p = kuka_like();
+        p.masses = Some(MassModel {
+            link_kg: [9.5, 7.25, 4.125, 1.0625, 0.8, 0.123456789],
+            com_m: core::array::from_fn(|k| {
+                let k = k as f64;
+                Vector3::new(0.01 * k, -0.0203 * k, 0.1 + 0.0123457 * k)
+            }),
+            pendant_kg: 0.35,
+            pendant_com_m: Vector3::new(0.0, 0.012, 0.0475),
+        });
+        let calibration = |id: &str, x_deg: f64, y_deg: f64| {
+            BracketCalibration::new(
+                bracket_id(id).unwrap(),
+                Tilt::from_deg(x_deg, y_deg),
+                deg_to_rad(0.0012),
+                20261127,
+                21.5,
+            )
+            .unwrap()
+        };
+        p.brackets = Brackets {
+            upper_arm: Some(calibration("U-017", 0.213, -0.0417)),
+            flange: Some(calibration("F_2", -0.4999, 0.125)),
+        };
+        p
     }
 }
 
