@@ -3,8 +3,7 @@
 //! A bracket that seats the pendant turned by ε about joint 2's axis (upper arm) or
 //! joint 6's axis (flange) moves that joint's zero by ε, and no reading on the robot can
 //! tell: the brackets define the zeros. So each bracket is a part with an ID and a
-//! calibration, measured off the robot on a reference (docs/mounting.md, "Calibrating
-//! a bracket"):
+//! calibration, measured off the robot on a reference (docs/bracket-calibration.md):
 //!
 //! 1. the pendant alone on a surface plate, read, turned half a turn on the spot, read
 //!    (stage 0's reversal: the chip's offset in its box);
@@ -21,7 +20,9 @@
 //! [`UNCALIBRATED_BRACKET_DEG`].
 //!
 //! A turn about the pendant's z (the bracket's yaw) does not change what gravity reads
-//! on a level reference and is not calibrated here; the budget carries it
+//! on a level reference: the same two reversals on a sine plate against a fence
+//! measure it ([`calibrate_yaw`]), and [`BracketCalibration::turn`] applies it with the
+//! tilt. Where it was not measured the budget carries the design's tolerance
 //! ([`BRACKET_YAW_TOLERANCE_DEG`]).
 
 use crate::error::StageError;
