@@ -1,5 +1,7 @@
-//! The brackets' calibration file `zerocal pendant load-profile --brackets FILE` sends
-//! to the pendant with the robot profile: one `[[bracket]]` table per calibrated
+//! The brackets' calibration file: written by `zerocal pendant brackets` from the
+//! pendant's `brackets` lines ([`brackets_toml`]), read by `zerocal pendant
+//! load-profile --brackets FILE` ([`read`]), which sends it to the pendant with the robot
+//! profile: one `[[bracket]]` table per calibrated
 //! bracket, at most one per mount (docs/cli.md):
 //!
 //! ```toml
@@ -27,6 +29,7 @@ use zerocal_core::bracket::{
     bracket_id, check_date, BracketCalibration, BracketMount, BracketYaw, Brackets,
 };
 use zerocal_core::model::Tilt;
+use zerocal_procedure::bracket_cal::parse_bracket_line;
 use zerocal_procedure::log::{MAX_READING_DEG, TEMPERATURE_RANGE_C};
 
 use crate::error::CliError;
@@ -169,6 +172,83 @@ pub fn read(path: &Path) -> Result<Brackets<f64>, CliError> {
     parse(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
 }
 
+/// `YYYY-MM-DD` checked as a calendar day (core's check of a calibration date).
+///
+/// # Errors
+/// Exit 2, naming the date.
+pub fn calibration_date(date: &str) -> Result<String, CliError> {
+    let bad = || CliError::Input(format!("--date '{date}': not a day YYYY-MM-DD (2000-2999)"));
+    let parts: Vec<&str> = date.split('-').collect();
+    let [y, m, d] = parts.as_slice() else {
+        return Err(bad());
+    };
+    if y.len() != 4 || m.len() != 2 || d.len() != 2 {
+        return Err(bad());
+    }
+    let number: u32 = format!("{y}{m}{d}").parse().map_err(|_| bad())?;
+    zerocal_core::bracket::check_date(number).map_err(|_| bad())?;
+    Ok(date.to_owned())
+}
+
+/// Today's date (UTC) as `YYYY-MM-DD`: days since 1970 to the civil calendar
+/// (the proleptic Gregorian algorithm of H. Hinnant's `civil_from_days`).
+pub fn today_utc() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    civil_date(secs)
+}
+
+/// The UTC day of `secs` since 1970-01-01 as `YYYY-MM-DD`.
+fn civil_date(secs: u64) -> String {
+    let z = (secs / 86_400) as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
+/// The `brackets` reply's lines as the profile upload's `[[bracket]]` TOML, each
+/// calibration dated `date`; a mount without one is left out (said in a comment).
+///
+/// # Errors
+/// A line that is not a `brackets` line, naming it and what is wrong.
+pub fn brackets_toml(lines: &[&str], date: &str) -> Result<String, String> {
+    let mut out = String::from(
+        "# Brackets calibrated on the pendant (zerocal pendant brackets);\n\
+         # for zerocal pendant load-profile ROBOT --brackets FILE.\n",
+    );
+    for line in lines {
+        let (mount, kept) =
+            parse_bracket_line::<f64>(line).map_err(|e| format!("'{line}': {e}"))?;
+        let Some(b) = kept else {
+            out.push_str(&format!("# {}: none calibrated\n", mount.name()));
+            continue;
+        };
+        let (x_deg, y_deg) = b.result.rotation_rad.to_deg();
+        // The line's decimals, so the file says what the pendant said.
+        let decimals = usize::from(zerocal_procedure::bracket_cal::BRACKET_LINE_DECIMALS);
+        out.push_str(&format!(
+            "\n[[bracket]]\nmount = \"{}\"\nid = \"{}\"\nrotation_deg = [{x_deg:.decimals$}, {y_deg:.decimals$}]\nuncertainty_deg = {:.decimals$}\nyaw_deg = {:.decimals$}\nyaw_uncertainty_deg = {:.decimals$}\ndate = \"{date}\"\n",
+            mount.name(),
+            b.id,
+            b.result.uncertainty_rad.to_degrees(),
+            b.result.yaw.yaw_rad.to_degrees(),
+            b.result.yaw.uncertainty_rad.to_degrees(),
+        ));
+        match b.result.temperature_c {
+            Some(t) => out.push_str(&format!("temperature_c = {t:.2}\n")),
+            None => out.push_str("# temperature_c: the sensor gave none\n"),
+        }
+    }
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -252,5 +332,50 @@ temperature_c = -3.25
             "unknown field `temp`",
         );
         assert!(parse("").unwrap_err().contains("no [[bracket]] entries"));
+    }
+
+    /// Days to dates across a leap day and a century: 2000-02-29 00:00 UTC is
+    /// 951782400 s, 2026-11-27 is 20784 days after 1970-01-01.
+    #[test]
+    fn the_date_is_the_calendars() {
+        assert_eq!(civil_date(0), "1970-01-01");
+        assert_eq!(civil_date(951_782_400), "2000-02-29");
+        assert_eq!(civil_date(951_782_400 + 86_400), "2000-03-01");
+        assert_eq!(civil_date(20_784 * 86_400 + 86_399), "2026-11-27");
+        assert_eq!(calibration_date("2026-11-27").unwrap(), "2026-11-27");
+        for bad in [
+            "2026-02-30",
+            "26-11-27",
+            "2026-1-27",
+            "20261127",
+            "1999-12-31",
+        ] {
+            assert!(calibration_date(bad).is_err(), "{bad}");
+        }
+    }
+
+    /// The pendant's `brackets` lines become the profile upload's `[[bracket]]`
+    /// tables; a mount without a calibration is only a comment; a line that is not
+    /// one is refused by its field.
+    #[test]
+    fn brackets_become_the_uploads_toml() {
+        let toml = brackets_toml(
+            &[
+                "bracket upper-arm none",
+                "bracket flange id F-017 rot_deg +0.41000,-0.27000 u_deg 0.00083 yaw_deg -0.12300 \
+                 u_yaw_deg 0.04100 temp_c 21.25",
+            ],
+            "2026-11-27",
+        )
+        .unwrap();
+        assert!(toml.contains("# upper-arm: none calibrated"), "{toml}");
+        assert!(
+            toml.contains(
+                "[[bracket]]\nmount = \"flange\"\nid = \"F-017\"\nrotation_deg = [0.41000, -0.27000]\nuncertainty_deg = 0.00083\nyaw_deg = -0.12300\nyaw_uncertainty_deg = 0.04100\ndate = \"2026-11-27\"\ntemperature_c = 21.25\n"
+            ),
+            "{toml}"
+        );
+        let e = brackets_toml(&["bracket flange id F-017 rot_deg x,0"], "2026-11-27").unwrap_err();
+        assert!(e.contains("rot_deg"), "{e}");
     }
 }

@@ -3,7 +3,6 @@
 
 pub mod args;
 pub mod bracket;
-pub mod bracket_report;
 pub mod brackets;
 pub mod diagnose;
 pub mod error;
@@ -14,6 +13,7 @@ pub mod pendant;
 pub mod plan;
 pub mod plots;
 pub mod program;
+pub mod report_notes;
 pub mod robot;
 pub mod session;
 pub mod simulate;

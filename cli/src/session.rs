@@ -532,7 +532,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             BudgetTerm::UnknownSensorOffset.name()
         ));
     }
-    notes.push(offsets_meaning(&solution.fit));
+    notes.push(crate::report_notes::offsets_meaning(&solution.fit));
     notes.extend(pendant_note);
     notes.extend(profile.missing.iter().map(|m| format!("profile: {m}")));
     if !export.trailer_checked {
@@ -542,7 +542,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
                 .into(),
         );
     }
-    notes.extend(crate::bracket_report::bracket_notes(
+    notes.extend(crate::report_notes::bracket_notes(
         &export.brackets,
         args.seat_repeatability_deg,
     ));
@@ -669,40 +669,6 @@ pub fn fit_config(convention: Convention, profile: &Profile) -> FitConfig<f64> {
             }
         }
     }
-}
-
-/// What the offsets mean on a real arm, and which of its geometry the fit estimated.
-fn offsets_meaning(fit: &zerocal_core::stage2::FitResult<f64>) -> String {
-    let layout = fit.extras.layout();
-    let geometry: Vec<&str> = layout
-        .params()
-        .iter()
-        .filter(|p| {
-            matches!(
-                p,
-                zerocal_core::stage2::Param::Tilt(_) | zerocal_core::stage2::Param::WristSag(_)
-            )
-        })
-        .map(|p| p.name())
-        .collect();
-    format!(
-        "each offset is the zero that makes the controller's nominal model best match this arm \
-         over the working range the poses cover: the drawing's zero plus the joint's \
-         transmission error averaged over that range (budget term '{}'); the arm's geometry \
-         beyond its zeros estimated: {}; not separable by these poses, budgeted at its stated \
-         worst case: {} (docs/real-arm.md)",
-        BudgetTerm::Transmission.name(),
-        if geometry.is_empty() {
-            "none".to_owned()
-        } else {
-            geometry.join(", ")
-        },
-        if fit.dropped.0 == 0 {
-            "none".to_owned()
-        } else {
-            fit.dropped.to_string()
-        }
-    )
 }
 
 /// The whole result, in degrees and in the controller's terms.

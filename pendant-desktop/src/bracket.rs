@@ -66,6 +66,15 @@ async fn pendant_alone(rig: &Rig) -> Result<(), ScriptError> {
     .await
 }
 
+/// The bracket scenarios, for the pendant-sim report and its gallery: a calibration
+/// kept, and a plate not level.
+///
+/// # Errors
+/// The first scenario that failed.
+pub fn scenarios() -> Result<Vec<ScenarioReport>, String> {
+    Ok(vec![calibrated()?, plate_not_level()?])
+}
+
 /// A calibration on a levelled plate, kept, read out and read again after a power
 /// cycle. The link's answer (the `brackets` lines, before and after) is the report's
 /// text.

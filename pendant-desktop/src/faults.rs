@@ -467,7 +467,5 @@ pub fn fault_scenarios() -> Result<Vec<ScenarioReport>, String> {
         without_stage0()?,
         skip_everything()?,
         display_hang()?,
-        crate::bracket::calibrated()?,
-        crate::bracket::plate_not_level()?,
     ])
 }

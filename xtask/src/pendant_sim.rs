@@ -65,7 +65,8 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
     };
     let started = std::time::Instant::now();
     let (report, panel) = session::session(world, true).map_err(anyhow::Error::msg)?;
-    let scenarios = fault_scenarios().map_err(anyhow::Error::msg)?;
+    let mut scenarios = fault_scenarios().map_err(anyhow::Error::msg)?;
+    scenarios.extend(zerocal_pendant_desktop::bracket::scenarios().map_err(anyhow::Error::msg)?);
     let (link, findings) = link_faults().map_err(anyhow::Error::msg)?;
     let _ = link;
     let gallery = gallery(&panel.borrow(), &scenarios);

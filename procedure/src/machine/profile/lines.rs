@@ -728,7 +728,7 @@ mod tests {
             "bracket",
         );
         bad(
-            "bracket flange id F-1 rot_deg 0.6,0.2 u_deg 0.001 date 20261127 temp_c 21",
+            "bracket flange id F-1 rot_deg 1.2,0.2 u_deg 0.001 date 20261127 temp_c 21",
             "bracket",
         );
         bad(

@@ -1,5 +1,7 @@
-//! What `zerocal session`'s report says of the brackets: each calibration the export
-//! carries, applied, and each bracket without one, named (docs/bracket-calibration.md).
+//! What `zerocal session`'s report says beside the numbers: what each offset means
+//! (the zero that best matches the arm over the poses' range, and the geometry estimated
+//! or budgeted), and the brackets: each calibration the export carries, applied, and
+//! each bracket without one, named (docs/bracket-calibration.md).
 
 use zerocal_core::bracket::{BracketMount, Brackets, UNCALIBRATED_BRACKET_DEG};
 use zerocal_core::session::BudgetTerm;
@@ -58,4 +60,38 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
             ),
         })
         .collect()
+}
+
+/// What the offsets mean on a real arm, and which of its geometry the fit estimated.
+pub fn offsets_meaning(fit: &zerocal_core::stage2::FitResult<f64>) -> String {
+    let layout = fit.extras.layout();
+    let geometry: Vec<&str> = layout
+        .params()
+        .iter()
+        .filter(|p| {
+            matches!(
+                p,
+                zerocal_core::stage2::Param::Tilt(_) | zerocal_core::stage2::Param::WristSag(_)
+            )
+        })
+        .map(|p| p.name())
+        .collect();
+    format!(
+        "each offset is the zero that makes the controller's nominal model best match this arm \
+         over the working range the poses cover: the drawing's zero plus the joint's \
+         transmission error averaged over that range (budget term '{}'); the arm's geometry \
+         beyond its zeros estimated: {}; not separable by these poses, budgeted at its stated \
+         worst case: {} (docs/real-arm.md)",
+        BudgetTerm::Transmission.name(),
+        if geometry.is_empty() {
+            "none".to_owned()
+        } else {
+            geometry.join(", ")
+        },
+        if fit.dropped.0 == 0 {
+            "none".to_owned()
+        } else {
+            fit.dropped.to_string()
+        }
+    )
 }

@@ -1,0 +1,84 @@
+//! Every screen fits the panel: each line within its 21 characters, for the widest
+//! numbers and the longest names.
+
+use super::*;
+use crate::screen::Screen;
+
+/// Every line of every fixed screen fits the 21 glyphs of the 128 px line.
+#[test]
+fn lines_fit_the_display() {
+    let screens = [
+        Screen::Starting(None),
+        Screen::StorageReset(ResetReason::OtherFormat(1)),
+        Screen::StorageReset(ResetReason::Unreadable),
+        Screen::StorageReset(ResetReason::ForeignBytes),
+    ];
+    for screen in &screens {
+        for text in lines(screen) {
+            assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
+        }
+    }
+    // A bracket's every step, its result and refusals with the longest ID and
+    // mount name and the widest numbers a calibration gives.
+    let id = zerocal_core::bracket::bracket_id("ABCDEFGHIJKL").unwrap();
+    let result = zerocal_procedure::bracket_cal::BracketResult {
+        rotation_rad: zerocal_core::model::Tilt::from_deg(-0.999_99_f32, -0.999_99),
+        uncertainty_rad: 0.000_99_f32.to_radians(),
+        yaw: zerocal_core::bracket::BracketYaw {
+            yaw_rad: -0.999_f32.to_radians(),
+            uncertainty_rad: 0.099_f32.to_radians(),
+        },
+        temperature_c: Some(-40.5),
+    };
+    let outcomes = [
+        None,
+        Some(Ok(result)),
+        Some(Err(BracketError::PlateNotLevel { tilt_deg: 12.345 })),
+        Some(Err(BracketError::Implausible)),
+        Some(Err(BracketError::NotOnSinePlate { tilt_deg: 12.34 })),
+        Some(Err(BracketError::Reading(StageError::NonFiniteReading))),
+    ];
+    for outcome in outcomes {
+        for step in BracketStep::CAPTURES {
+            for notice in [
+                None,
+                Some(BracketNotice::Captured),
+                Some(BracketNotice::ReadingOutOfRange {
+                    axis: zerocal_core::model::TiltAxis::Y,
+                    value_deg: -12.34,
+                }),
+            ] {
+                let screen = Screen::Bracket(BracketScreen {
+                    mount: zerocal_core::bracket::BracketMount::UpperArm,
+                    id: id.clone(),
+                    step,
+                    outcome,
+                    live_deg: Some((-9.9999, -9.9999)),
+                    settle: Settle::Settling(99),
+                    armed: false,
+                    notice,
+                    fault: None,
+                    store_failed: false,
+                });
+                for text in lines(&screen) {
+                    assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
+                }
+            }
+        }
+    }
+    for fault in [
+        SensorFault::NotResponding,
+        SensorFault::FrameErrors,
+        SensorFault::ErrorStatus {
+            status_flags: 0x03ff,
+        },
+        SensorFault::Frozen,
+        SensorFault::NotPresent { whoami: 0xffff },
+        SensorFault::NotReady,
+        SensorFault::Bus,
+    ] {
+        for text in fault_lines(fault) {
+            assert!(text.chars().count() <= 21, "{text:?} of {fault:?}");
+        }
+    }
+}
