@@ -33,11 +33,11 @@
 //! profile's `[[bracket]]` TOML, stamping the date (the pendant has no calendar).
 
 use crate::capture::Capture;
+use crate::machine::record::{id_bytes, id_of};
 use crate::machine::{Event, ProcedureConfig, Record};
 use crate::stillness::{Stillness, StillnessFilter};
-use zerocal_core::bracket::BRACKET_ID_LEN;
 use zerocal_core::bracket::{
-    bracket_id, calibrate, calibrate_yaw, BracketError, BracketId, BracketMount, BracketYaw,
+    calibrate, calibrate_yaw, BracketError, BracketId, BracketMount, BracketYaw,
     CAPTURES_PER_READING,
 };
 use zerocal_core::model::{Tilt, TiltAxis};
@@ -121,16 +121,11 @@ pub struct StoredBracket<T> {
 impl<T: Real> StoredBracket<T> {
     /// The record that stores it.
     pub fn to_record(&self) -> Record<T> {
-        let mut id = [0_u8; BRACKET_ID_LEN];
-        let bytes = self.id.as_bytes();
-        // A `BracketId` holds at most BRACKET_ID_LEN bytes.
-        for (to, from) in id.iter_mut().zip(bytes) {
-            *to = *from;
-        }
+        let (id, id_len) = id_bytes(&self.id);
         Record::BracketCalibration {
             mount: self.mount,
             id,
-            id_len: bytes.len() as u8,
+            id_len,
             rotation_rad: self.result.rotation_rad,
             uncertainty_rad: self.result.uncertainty_rad,
             yaw_rad: self.result.yaw.yaw_rad,
@@ -154,10 +149,7 @@ impl<T: Real> StoredBracket<T> {
         else {
             return None;
         };
-        let id = id
-            .get(..usize::from(id_len))
-            .and_then(|b| core::str::from_utf8(b).ok())
-            .and_then(|s| bracket_id(s).ok())?;
+        let id = id_of(&id, id_len)?;
         Some(StoredBracket {
             mount,
             id,

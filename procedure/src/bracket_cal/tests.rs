@@ -1,6 +1,7 @@
 //! The bracket calibration's runs, refusals and its line.
 
 use super::*;
+use zerocal_core::bracket::bracket_id;
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, Convention, SensorModel};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::stage0::Reversal;

@@ -13,7 +13,7 @@
 
 use super::profile::{MAX_MASS_KG, MAX_POSITION_M};
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
-use zerocal_core::bracket::{bracket_id, BracketMount, BRACKET_ID_LEN};
+use zerocal_core::bracket::{BracketMount, BRACKET_ID_LEN};
 use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES};
 use zerocal_core::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::MAX_POSES;
@@ -26,7 +26,7 @@ mod stored_bracket;
 mod tests;
 
 use bytes::{Reader, Writer};
-pub use stored_bracket::StoredBracket;
+pub use stored_bracket::{id_bytes, id_of, StoredBracket};
 
 /// Largest encoded record (bytes): the last result (format, ten angles); a capture
 /// (format, slot, index, six joints, two readings, a flag and a temperature) is 76.
@@ -786,12 +786,7 @@ impl<T: Real> Record<T> {
                     .ok_or(RecordError::BadField)?;
                 let id_len = r.u8()?;
                 let id = r.take::<BRACKET_ID_LEN>()?;
-                // Spelled as an ID: it goes into link lines and files as one word.
-                let spelled = id
-                    .get(..usize::from(id_len))
-                    .and_then(|b| core::str::from_utf8(b).ok())
-                    .is_some_and(|s| bracket_id(s).is_ok());
-                if !spelled {
+                if id_of(&id, id_len).is_none() {
                     return Err(RecordError::BadField);
                 }
                 let rotation_rad = r.tilt()?;

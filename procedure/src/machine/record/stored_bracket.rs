@@ -1,7 +1,9 @@
 //! A bracket's calibration as a profile record holds it.
 
 use crate::log::{MAX_READING_DEG, TEMPERATURE_RANGE_C};
-use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketYaw, BRACKET_ID_LEN};
+use zerocal_core::bracket::{
+    bracket_id, BracketCalibration, BracketId, BracketYaw, BRACKET_ID_LEN,
+};
 use zerocal_core::model::Tilt;
 use zerocal_core::real::Real;
 
@@ -28,13 +30,10 @@ pub struct StoredBracket<T> {
 impl<T: Real> StoredBracket<T> {
     /// A calibration's fields.
     pub fn of(c: &BracketCalibration<T>) -> Self {
-        let mut id = [0_u8; BRACKET_ID_LEN];
-        let bytes = c.id.as_bytes();
-        // A BracketId holds at most BRACKET_ID_LEN bytes.
-        id[..bytes.len()].copy_from_slice(bytes);
+        let (id, id_len) = id_bytes(&c.id);
         StoredBracket {
             id,
-            id_len: bytes.len() as u8,
+            id_len,
             rotation_rad: [c.rotation_rad.x_rad, c.rotation_rad.y_rad],
             uncertainty_rad: c.uncertainty_rad,
             date: c.date,
@@ -55,8 +54,7 @@ impl<T: Real> StoredBracket<T> {
         {
             return None;
         }
-        let id = self.id.get(..usize::from(self.id_len))?;
-        let id = bracket_id(core::str::from_utf8(id).ok()?).ok()?;
+        let id = id_of(&self.id, self.id_len)?;
         let c = BracketCalibration::new(
             id,
             Tilt::new(self.rotation_rad[0], self.rotation_rad[1]),
@@ -75,4 +73,21 @@ impl<T: Real> StoredBracket<T> {
             None => Some(c),
         }
     }
+}
+
+/// A bracket ID as a record holds it: its bytes, zero-padded, and how many are used.
+pub fn id_bytes(id: &BracketId) -> ([u8; BRACKET_ID_LEN], u8) {
+    let mut bytes = [0_u8; BRACKET_ID_LEN];
+    // A `BracketId` holds at most BRACKET_ID_LEN bytes.
+    for (to, from) in bytes.iter_mut().zip(id.as_bytes()) {
+        *to = *from;
+    }
+    (bytes, id.len() as u8)
+}
+
+/// The ID the first `id_len` bytes of a record's `id` spell, if they spell one
+/// ([`bracket_id`]: it goes into link lines and files as one word).
+pub fn id_of(id: &[u8; BRACKET_ID_LEN], id_len: u8) -> Option<BracketId> {
+    let text = core::str::from_utf8(id.get(..usize::from(id_len))?).ok()?;
+    bracket_id(text).ok()
 }

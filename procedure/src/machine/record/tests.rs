@@ -1,7 +1,7 @@
 //! The records' round trips and refusals.
 
 use super::*;
-use zerocal_core::bracket::BracketCalibration;
+use zerocal_core::bracket::{bracket_id, BracketCalibration};
 
 fn round_trip(r: Record<f32>) {
     let mut buf = [0u8; MAX_RECORD_LEN];
