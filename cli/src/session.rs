@@ -18,7 +18,7 @@ use crate::args::RealIn;
 use crate::error::CliError;
 use crate::log_file::parse_number;
 use clap::Args;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use zerocal_core::bracket::{
@@ -240,7 +240,7 @@ fn check_rows(export: &ExportContents, stage1: &AxisOneTurn<f64>) -> Result<(), 
 }
 
 /// One joint in the `--json` output.
-#[derive(Serialize, Debug)]
+#[derive(Serialize, Deserialize, Debug, Clone)]
 pub struct JointJson {
     /// The controller's name for the joint.
     pub name: String,
@@ -255,13 +255,13 @@ pub struct JointJson {
     /// Δq in the controller's offset unit, where the profile has the scale.
     pub controller_offset_in_unit: Option<f64>,
     /// The unit.
-    pub controller_unit: &'static str,
+    pub controller_unit: String,
     /// False for a joint parallel to the one before it in every pose (joint 4 of a
     /// UR): gravity sees only their sum, which the earlier joint's offset carries; this
     /// one's zero needs another method and its numbers are not zeros.
     pub identifiable: bool,
     /// Why `controller_offset_in_unit` is absent.
-    pub controller_unit_missing: Option<&'static str>,
+    pub controller_unit_missing: Option<String>,
     /// Shares of the variance from stage 0, 1 and 2 (fractions).
     pub variance_shares: [f64; 3],
     /// The URDF form: `<calibration rising="…"/>` in radians (model terms; see
@@ -274,21 +274,21 @@ pub struct JointJson {
 }
 
 /// One term of a joint's budget.
-#[derive(Serialize, Debug)]
+#[derive(Serialize, Deserialize, Debug, Clone)]
 pub struct BudgetJson {
     /// What it is.
-    pub term: &'static str,
+    pub term: String,
     /// Its standard uncertainty (deg).
     pub standard_uncertainty_deg: f64,
 }
 
 /// The `--json` output.
-#[derive(Serialize, Debug)]
+#[derive(Serialize, Deserialize, Debug, Clone)]
 pub struct SessionJson {
     /// Robot profile.
     pub robot: String,
     /// Its controller family.
-    pub family: &'static str,
+    pub family: String,
     /// Where the controller keeps its zeros (the profile's `offset_where`).
     pub controller_offset_where: String,
     /// Δθ2..Δθ6.
@@ -397,8 +397,39 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         crate::input::MAX_EXPORT_BYTES,
         "pendant export",
     )?;
+    let analysis = analyse(args, &bytes)?;
+    if args.json {
+        return serde_json::to_string_pretty(&analysis.json)
+            .map_err(|e| CliError::Input(e.to_string()));
+    }
+    Ok(render(&analysis.json))
+}
+
+/// A session solved: its report and what it was solved from.
+#[derive(Clone, Debug)]
+pub struct Analysis {
+    /// The report (`--json`'s object).
+    pub json: SessionJson,
+    /// The export as read.
+    pub export: ExportContents,
+    /// The robot profile it was solved with.
+    pub profile: Profile,
+    /// The solution (the pendant's numbers where it agrees: see the notes).
+    pub solution: SessionSolution<f64>,
+    /// Its budget.
+    pub budget: Budget<f64>,
+    /// The fit as configured.
+    pub config: FitConfig<f64>,
+}
+
+/// Solves the export `bytes` (the file `args.export`, named in errors) as `zerocal
+/// session` does.
+///
+/// # Errors
+/// As [`run`].
+pub fn analyse(args: &SessionArgs, bytes: &[u8]) -> Result<Analysis, CliError> {
     let name = |what: &str| format!("{}: {what}", args.export.display());
-    let text = text_of(&bytes).map_err(|e| CliError::Input(name(&e.to_string())))?;
+    let text = text_of(bytes).map_err(|e| CliError::Input(name(&e.to_string())))?;
     let export = read_export(text).map_err(|e| CliError::Input(name(&e)))?;
     let (robot_name, convention) = export.robot.clone().ok_or_else(|| {
         CliError::Input(name(
@@ -568,10 +599,14 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         }
     }
     let json = to_json(&profile, &solution, &verdict, &budget, held, notes);
-    if args.json {
-        return serde_json::to_string_pretty(&json).map_err(|e| CliError::Input(e.to_string()));
-    }
-    Ok(render(&json))
+    Ok(Analysis {
+        json,
+        export,
+        profile,
+        solution,
+        budget,
+        config,
+    })
 }
 
 /// A refusal; when the readings do not fit the model at all, with the model change
@@ -702,9 +737,9 @@ pub fn to_json(
                 controller_offset_deg: c.shown_deg,
                 controller_sigma_deg: c.sigma_deg,
                 controller_offset_in_unit: c.in_unit,
-                controller_unit: profile.controller.unit.name(),
+                controller_unit: profile.controller.unit.name().to_owned(),
                 identifiable: k == 0 || !held[k - 1],
-                controller_unit_missing: c.no_unit_because,
+                controller_unit_missing: c.no_unit_because.map(str::to_owned),
                 variance_shares: shares.map(|v| if total > 0.0 { v / total } else { 0.0 }),
                 urdf_calibration_rising_rad: s.offsets_rad[k],
                 expanded_k2_deg: budget.expanded_rad[k].to_degrees(),
@@ -712,7 +747,7 @@ pub fn to_json(
                     .iter()
                     .zip(&budget.terms_rad)
                     .map(|(t, u)| BudgetJson {
-                        term: t.name(),
+                        term: t.name().to_owned(),
                         standard_uncertainty_deg: u[k].to_degrees(),
                     })
                     .collect(),
@@ -733,7 +768,7 @@ pub fn to_json(
         .collect();
     SessionJson {
         robot: profile.name.clone(),
-        family: profile.family.name(),
+        family: profile.family.name().to_owned(),
         controller_offset_where: profile.controller.offset_where.clone(),
         joints,
         correlations,
@@ -840,7 +875,7 @@ pub fn render(j: &SessionJson) -> String {
     for joint in j.joints.iter().filter(|joint| joint.identifiable) {
         let unit = match (
             joint.controller_offset_in_unit,
-            joint.controller_unit_missing,
+            joint.controller_unit_missing.as_deref(),
         ) {
             (Some(v), _) => format!("{v:+.6} {}", joint.controller_unit),
             (None, Some(why)) => format!("({why})"),

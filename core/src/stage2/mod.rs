@@ -13,6 +13,7 @@ mod information;
 mod model;
 pub mod params;
 pub mod refusal;
+mod refit;
 pub mod transmission;
 
 pub use bound::{
@@ -23,6 +24,7 @@ pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
 pub use model::{
     Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT, PENDANT_COM_M, PENDANT_KG,
 };
+pub use refit::{moved_reading, MovedReading};
 pub use params::{
     tilt_candidates, tilt_directions, Extras, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_ALL,
     WRIST_SAG_JOINTS,
