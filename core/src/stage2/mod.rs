@@ -12,8 +12,8 @@ pub mod geometry;
 mod information;
 mod model;
 pub mod params;
-pub mod refusal;
 mod refit;
+pub mod refusal;
 pub mod transmission;
 
 pub use bound::{
@@ -24,11 +24,11 @@ pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
 pub use model::{
     Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT, PENDANT_COM_M, PENDANT_KG,
 };
-pub use refit::{moved_reading, MovedReading};
 pub use params::{
     tilt_candidates, tilt_directions, Extras, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_ALL,
     WRIST_SAG_JOINTS,
 };
+pub use refit::{moved_reading, MovedReading};
 
 use crate::error::{FitError, ParamSet};
 use crate::linalg::Square;
