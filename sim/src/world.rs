@@ -274,6 +274,11 @@ pub struct RealSession {
     pub mount_errors_rad: [[f64; 3]; 2],
     /// The brackets' calibrations the session has (none for uncalibrated brackets).
     pub brackets: Brackets<f64>,
+    /// The chip's turn in the pendant's box (fixed for the unit).
+    pub chip_in_box: Rotation3<f64>,
+    /// Each bracket as made (upper arm, flange): its turns about the pendant's x, y, z
+    /// (rad), fixed for the bracket.
+    pub brackets_made_rad: [[f64; 3]; 2],
 }
 
 fn uniform(rng: &mut ChaCha8Rng, half: f64) -> f64 {
@@ -415,6 +420,15 @@ fn calibrate_bracket(
     .ok()
 }
 
+/// What stays from one session of a robot to the next: the robot, the pendant unit and
+/// the brackets (as made, and their calibrations once made).
+struct Rig {
+    robot: SimRobot,
+    sensor: Scl3300Unit,
+    chip_in_box: Rotation3<f64>,
+    brackets: Option<([[f64; 3]; 2], Brackets<f64>)>,
+}
+
 impl RealSession {
     /// The session as the pendant recorded it, for the session solver: stage 0's
     /// reversal, stage 1, the stage-2 captures, the stage temperatures and, when the
@@ -506,12 +520,7 @@ impl RealSession {
             offsets_rad,
             errors,
         };
-        let mut sensor = Scl3300Unit::draw(world.sensor, &mut rng);
-        let timeline = Timeline::default();
-        let temperature = |t_s: f64| {
-            world.ambient_c + world.warming_k * (1.0 - (-t_s / world.warming_tau_s.max(1.0)).exp())
-        };
-        let mut outside_range = 0;
+        let sensor = Scl3300Unit::draw(world.sensor, &mut rng);
         // The chip in the box: drawn only when on, so a world without it draws the same
         // numbers as before.
         let chip_in_box = if world.chip_rotation_deg > 0.0 {
@@ -519,6 +528,57 @@ impl RealSession {
         } else {
             Rotation3::identity()
         };
+        let rig = Rig {
+            robot,
+            sensor,
+            chip_in_box,
+            brackets: None,
+        };
+        Self::on_rig(profile, plan, world, rig, rng)
+    }
+
+    /// Another session of this robot with this pendant and these brackets (their
+    /// calibrations kept), its noise, seats and bench drawn from `seed`, after `change`
+    /// (a motor swap's new zero, the offsets a technician entered) was made to the robot.
+    pub fn again(
+        &self,
+        profile: &Profile,
+        plan: &[[f64; JOINTS]],
+        world: &WorldConfig,
+        seed: u64,
+        change: impl FnOnce(&mut SimRobot),
+    ) -> Self {
+        let rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut robot = self.robot;
+        change(&mut robot);
+        let rig = Rig {
+            robot,
+            sensor: self.sensor.clone(),
+            chip_in_box: self.chip_in_box,
+            brackets: Some((self.brackets_made_rad, self.brackets.clone())),
+        };
+        Self::on_rig(profile, plan, world, rig, rng)
+    }
+
+    /// A session on `rig`, drawing the rest from `rng`.
+    fn on_rig(
+        profile: &Profile,
+        plan: &[[f64; JOINTS]],
+        world: &WorldConfig,
+        rig: Rig,
+        mut rng: ChaCha8Rng,
+    ) -> Self {
+        let Rig {
+            robot,
+            mut sensor,
+            chip_in_box,
+            brackets: known,
+        } = rig;
+        let timeline = Timeline::default();
+        let temperature = |t_s: f64| {
+            world.ambient_c + world.warming_k * (1.0 - (-t_s / world.warming_tau_s.max(1.0)).exp())
+        };
+        let mut outside_range = 0;
         let mut take =
             |sensor: &mut Scl3300Unit, r: &Rotation3<f64>, t_s: f64, rng: &mut ChaCha8Rng| {
                 let c: UnitCapture =
@@ -554,29 +614,35 @@ impl RealSession {
                 deg_to_rad(uniform(rng, world.bracket_yaw_deg)),
             ]
         };
-        let (upper_made, flange_made) = (made(&mut rng), made(&mut rng));
-        let brackets = match world.brackets {
-            BracketKnowledge::Exact => Brackets {
-                upper_arm: Some(exact_calibration(&upper_made)),
-                flange: Some(exact_calibration(&flange_made)),
-            },
-            BracketKnowledge::Calibrated => {
-                let t_c = temperature(timeline.stage0_s[0]);
-                let mut cal = |b: &[f64; 3], id: &str, rng: &mut ChaCha8Rng| {
-                    let bench = BracketBench {
-                        chip_in_box: &chip_in_box,
-                        tilt_deg: world.plate_tilt_deg,
-                        seat_deg: world.seat_repeatability_deg,
-                        temperature_c: t_c,
+        let ((upper_made, flange_made), known) = match known {
+            Some((made, brackets)) => ((made[0], made[1]), Some(brackets)),
+            None => ((made(&mut rng), made(&mut rng)), None),
+        };
+        let brackets = match (known, world.brackets) {
+            (Some(b), _) => b,
+            (None, knowledge) => match knowledge {
+                BracketKnowledge::Exact => Brackets {
+                    upper_arm: Some(exact_calibration(&upper_made)),
+                    flange: Some(exact_calibration(&flange_made)),
+                },
+                BracketKnowledge::Calibrated => {
+                    let t_c = temperature(timeline.stage0_s[0]);
+                    let mut cal = |b: &[f64; 3], id: &str, rng: &mut ChaCha8Rng| {
+                        let bench = BracketBench {
+                            chip_in_box: &chip_in_box,
+                            tilt_deg: world.plate_tilt_deg,
+                            seat_deg: world.seat_repeatability_deg,
+                            temperature_c: t_c,
+                        };
+                        calibrate_bracket(&mut sensor, &bench, b, id, rng)
                     };
-                    calibrate_bracket(&mut sensor, &bench, b, id, rng)
-                };
-                Brackets {
-                    upper_arm: cal(&upper_made, "U-1", &mut rng),
-                    flange: cal(&flange_made, "F-1", &mut rng),
+                    Brackets {
+                        upper_arm: cal(&upper_made, "U-1", &mut rng),
+                        flange: cal(&flange_made, "F-1", &mut rng),
+                    }
                 }
-            }
-            BracketKnowledge::Uncalibrated => Brackets::default(),
+                BracketKnowledge::Uncalibrated => Brackets::default(),
+            },
         };
         let seat = |b: &[f64; 3], rng: &mut ChaCha8Rng| {
             let (s, r) = small_rotation(rng, world.seat_repeatability_deg);
@@ -696,6 +762,8 @@ impl RealSession {
             outside_range,
             mount_errors_rad: [upper_seat, flange_seat],
             brackets,
+            chip_in_box,
+            brackets_made_rad: [upper_made, flange_made],
         }
     }
 
@@ -716,6 +784,19 @@ impl RealSession {
     /// metadata with every stage's readings and temperatures, then one row per
     /// capture. `robot` is the profile's name.
     pub fn export_text(&self, robot: &str) -> String {
+        self.export_with(robot, true)
+    }
+
+    /// The session as the pendant's check exports it: stage 0's reversal, no stage 1,
+    /// the closing reversal and the stage-2 captures at the poses `keep` accepts (by
+    /// their commanded joints, rad).
+    pub fn check_export_text(&self, robot: &str, keep: impl Fn(&[f64; JOINTS]) -> bool) -> String {
+        let mut kept = self.clone();
+        kept.poses.retain(|p| keep(&p.joints_rad));
+        kept.export_with(robot, false)
+    }
+
+    fn export_with(&self, robot: &str, with_stage1: bool) -> String {
         use std::fmt::Write as _;
         let d = |r: f64| format!("{:.12}", r.to_degrees());
         let pair = |t: &Tilt<f64>| format!("{},{}", d(t.x_rad), d(t.y_rad));
@@ -742,15 +823,17 @@ impl RealSession {
                 Some(self.stage0_temperature_c)
             )
         );
-        let _ = writeln!(
-            out,
-            "# stage1_readings_deg before {} after {} j1_deg {} j2_deg {}",
-            pair(&self.stage1.before),
-            pair(&self.stage1.after),
-            d(self.stage1.j1_rad),
-            d(self.stage1.j2_rad)
-        );
-        let _ = writeln!(out, "# stage1_temp_c {:.2}", self.stage1_temperature_c);
+        if with_stage1 {
+            let _ = writeln!(
+                out,
+                "# stage1_readings_deg before {} after {} j1_deg {} j2_deg {}",
+                pair(&self.stage1.before),
+                pair(&self.stage1.after),
+                d(self.stage1.j1_rad),
+                d(self.stage1.j2_rad)
+            );
+            let _ = writeln!(out, "# stage1_temp_c {:.2}", self.stage1_temperature_c);
+        }
         let _ = writeln!(
             out,
             "{}",

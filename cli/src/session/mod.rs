@@ -83,6 +83,22 @@ pub struct SessionArgs {
     pub json: bool,
 }
 
+impl SessionArgs {
+    /// `zerocal session EXPORT` with every option at its default.
+    pub fn for_export(export: PathBuf) -> SessionArgs {
+        SessionArgs {
+            export,
+            robot: None,
+            seat_repeatability_deg: SEAT_REPEATABILITY_DEG,
+            bracket_yaw_deg: BRACKET_YAW_TOLERANCE_DEG,
+            half_turn_tolerance_deg: DEFAULT_HALF_TURN_TOLERANCE_DEG,
+            repeatability_deg: DEFAULT_REPEATABILITY_DEG,
+            lost_motion_deg: DEFAULT_LOST_MOTION_DEG,
+            json: false,
+        }
+    }
+}
+
 /// What the export holds.
 #[derive(Clone, Debug)]
 pub struct ExportContents {

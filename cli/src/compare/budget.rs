@@ -1,0 +1,179 @@
+//! The uncertainty of a difference between two measurements of one robot at the same
+//! poses (GUM, JCGM 100:2008 §5.2: correlated inputs; a term common to both cancels in
+//! their difference).
+//!
+//! Cancels: every term of the reference's budget that is a property of the robot, the
+//! pendant unit or the brackets at those commanded angles, the same in both: the
+//! geometry its fit estimated or could not separate, the reducers' transmission error
+//! (unless a gearbox was changed), the brackets' calibrations and yaws (the same brackets), and its stages 0-1 (the
+//! difference uses neither). What stays: both measurements' noise and repeatability
+//! (from the comparison's residuals), both stage-0 biases, the flange bracket seated
+//! twice, the transmission error over the angle the zero moved, a changed gearbox's
+//! whole transmission error, and joint 3's backlash side (which can flip where gravity
+//! barely holds it).
+
+use super::Comparison;
+use crate::session::{Analysis, ExportContents};
+use serde::{Deserialize, Serialize};
+use zerocal_core::bracket::{BracketMount, SEAT_REPEATABILITY_DEG};
+use zerocal_core::session::{BudgetTerm, COVERAGE_FACTOR, SESSION_JOINTS};
+use zerocal_core::stage2::transmission::TRANSMISSION_PP_MAX_DEG;
+use zerocal_core::stage2::MEMS_CAPTURE_NOISE_DEG;
+
+/// The highest harmonic of a joint's turn the budget's transmission error has (orders
+/// 2-4, `zerocal_core::stage2::transmission`): its steepest slope is `4·a` per radian.
+const TRANSMISSION_MAX_ORDER: f64 = 4.0;
+
+/// One term of a difference's budget.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct DifferenceTerm {
+    /// What it is.
+    pub term: String,
+    /// Its standard uncertainty for Δθ2..Δθ6 (deg).
+    pub standard_uncertainty_deg: [f64; SESSION_JOINTS],
+}
+
+/// The budget of a difference.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+pub struct DifferenceBudget {
+    /// The terms that stay.
+    pub terms: Vec<DifferenceTerm>,
+    /// The reference's terms that cancel, with the reference's values.
+    pub cancelled: Vec<DifferenceTerm>,
+    /// Combined standard uncertainty (deg).
+    pub combined_deg: [f64; SESSION_JOINTS],
+    /// Expanded, k = 2 (deg).
+    pub expanded_deg: [f64; SESSION_JOINTS],
+}
+
+/// What the budget is made from.
+pub(super) struct Inputs<'a> {
+    pub reference: &'a Analysis,
+    pub now: &'a ExportContents,
+    pub moved_rad: &'a [f64; SESSION_JOINTS],
+    pub type_a_rad: &'a [f64; SESSION_JOINTS],
+    pub bias_sensitivity: &'a [f64; SESSION_JOINTS],
+    pub bench_tilt_now_rad: f64,
+    pub options: &'a super::CompareOptions,
+}
+
+/// One stage-0 reversal's bias, one standard uncertainty (rad): the half-sum of two
+/// captures (σ/√2) and the half turn's tolerance on a bench tilted by `bench_tilt_rad`
+/// (moves the bias by tolerance × tilt / 2, uniform).
+fn reversal_u_rad(bench_tilt_rad: f64, half_turn_tolerance_deg: f64) -> f64 {
+    let noise = MEMS_CAPTURE_NOISE_DEG.to_radians() / 2f64.sqrt();
+    let half_turn = half_turn_tolerance_deg.to_radians() * bench_tilt_rad / 2.0;
+    (noise * noise + half_turn * half_turn / 3.0).sqrt()
+}
+
+fn deg(v: [f64; SESSION_JOINTS]) -> [f64; SESSION_JOINTS] {
+    v.map(f64::to_degrees)
+}
+
+pub(super) fn difference_budget(i: &Inputs<'_>) -> DifferenceBudget {
+    let reference_terms = &i.reference.budget.terms_rad;
+    let mut terms = vec![DifferenceTerm {
+        term: "readings of both (noise, repeatability; from the comparison's residuals)".into(),
+        standard_uncertainty_deg: deg(*i.type_a_rad),
+    }];
+    // Both stage-0 biases, through the offsets' response to the bias stage 0 fixes.
+    let reference_tilt = i.reference.export.stage0.map_or(0.0, |s| {
+        let dx = 0.5 * (s.reversal.first.x_rad - s.reversal.second.x_rad);
+        let dy = 0.5 * (s.reversal.first.y_rad - s.reversal.second.y_rad);
+        dx.hypot(dy)
+    });
+    let tolerance = i.options.half_turn_tolerance_deg;
+    let u_bias = reversal_u_rad(reference_tilt, tolerance)
+        .hypot(reversal_u_rad(i.bench_tilt_now_rad, tolerance));
+    terms.push(DifferenceTerm {
+        term: "both stage-0 biases (noise, half turn on a tilted bench)".into(),
+        standard_uncertainty_deg: deg(i.bias_sensitivity.map(|s| s * u_bias)),
+    });
+    // The flange bracket seated twice: a turn of the pendant about its x or y reads as
+    // a bias of the other axis (at the small tilts of the plan's window), so it follows
+    // the offsets' response to the bias stage 0 fixes (the other is estimated). A
+    // different calibration does not cancel.
+    let seat = SEAT_REPEATABILITY_DEG.to_radians() / 3f64.sqrt() * 2f64.sqrt();
+    terms.push(DifferenceTerm {
+        term: "flange bracket seated twice".into(),
+        standard_uncertainty_deg: deg(i.bias_sensitivity.map(|s| s * seat)),
+    });
+    let reference_flange = i.reference.export.brackets.get(BracketMount::Flange);
+    let now_flange = i.now.brackets.get(BracketMount::Flange);
+    let same_flange = reference_flange == now_flange;
+    if !same_flange {
+        let u = |c: Option<&zerocal_core::bracket::BracketCalibration<f64>>| {
+            c.map_or(
+                zerocal_core::bracket::UNCALIBRATED_BRACKET_DEG.to_radians() / 3f64.sqrt(),
+                |c| c.uncertainty_rad,
+            )
+        };
+        let u_other = u(reference_flange).hypot(u(now_flange));
+        let other = i.bias_sensitivity.map(|s| s * u_other);
+        terms.push(DifferenceTerm {
+            term: "flange bracket: another bracket or calibration than the reference's".into(),
+            standard_uncertainty_deg: deg(other),
+        });
+    }
+    // Transmission error over the angle each zero moved: its steepest slope times the
+    // move, uniform; a changed gearbox's whole error, in neither measurement's budget
+    // the same.
+    let amplitude_rad = (TRANSMISSION_PP_MAX_DEG / 2.0).to_radians();
+    let transmission = BudgetTerm::Transmission.index();
+    let over_move: [f64; SESSION_JOINTS] = core::array::from_fn(|k| {
+        if i.options.gearbox_replaced[k] {
+            reference_terms[transmission][k] * 2f64.sqrt()
+        } else {
+            TRANSMISSION_MAX_ORDER * amplitude_rad * i.moved_rad[k].abs() / 3f64.sqrt()
+        }
+    });
+    terms.push(DifferenceTerm {
+        term: "transmission error over the zero's move (a changed gearbox's whole)".into(),
+        standard_uncertainty_deg: deg(over_move),
+    });
+    // Joint 3's backlash: gravity holds it on one side at most poses, the same at the
+    // same angles, but where its torque is near the friction that lets it, the side
+    // can flip between two measurements (a zero moved, another load): budgeted as
+    // two independent draws of the reference's term.
+    let backlash = BudgetTerm::LoadedBacklash.index();
+    terms.push(DifferenceTerm {
+        term: "joint 3 backlash side, both (stated lost motion)".into(),
+        standard_uncertainty_deg: deg(reference_terms[backlash].map(|u| u * 2f64.sqrt())),
+    });
+    let gearbox = i.options.gearbox_replaced.iter().any(|g| *g);
+    let cancels = |t: BudgetTerm| match t {
+        BudgetTerm::LoadedBacklash => false,
+        BudgetTerm::Transmission => !gearbox,
+        BudgetTerm::Mounting => same_flange,
+        _ => true,
+    };
+    let cancelled = BudgetTerm::ALL
+        .iter()
+        .filter(|t| cancels(**t))
+        .map(|t| DifferenceTerm {
+            term: t.name().into(),
+            standard_uncertainty_deg: deg(reference_terms[t.index()]),
+        })
+        .filter(|t| t.standard_uncertainty_deg.iter().any(|u| *u > 0.0))
+        .collect();
+    let combined_deg: [f64; SESSION_JOINTS] = core::array::from_fn(|k| {
+        terms
+            .iter()
+            .map(|t| t.standard_uncertainty_deg[k].powi(2))
+            .sum::<f64>()
+            .sqrt()
+    });
+    DifferenceBudget {
+        terms,
+        cancelled,
+        combined_deg,
+        expanded_deg: combined_deg.map(|u| u * COVERAGE_FACTOR),
+    }
+}
+
+impl Comparison {
+    /// The moves in degrees.
+    pub fn moved_deg(&self) -> [f64; SESSION_JOINTS] {
+        self.moved_rad.map(f64::to_degrees)
+    }
+}

@@ -1,0 +1,415 @@
+//! Two measurements of one robot at the same poses: how far each joint's zero moved
+//! between them. The reference is a whole session, solved; the other (a check, or a
+//! session after a motor swap) needs only stage 0's bench reversal and some of the
+//! reference's stage-2 poses, commanded at the same joint angles.
+//!
+//! The reference's fitted model (its base tilt, its sensor gain and cross-axis, its
+//! sag, the misalignments it estimated) predicts the reading at each pose; its residual
+//! there (what the model does not hold: the reducers' transmission error at that
+//! angle, the geometry no pose separates, the bracket's calibration error) is the same
+//! at the same commanded angles on the same robot with the same bracket, so it is
+//! carried over whole, and only the offsets and the bias move. The bias' component
+//! that the poses cannot tell from Δθ6 comes from the two sessions' stage-0
+//! reversals; the other is estimated with the offsets, as the session estimates it.
+//!
+//! Gravity sees joints 2 and 3 only through their sum at the flange (they are
+//! parallel): without a stage 1, joint 2's zero is taken as unchanged and the sum's
+//! move is joint 3's. [`Comparison::notes`] says so.
+
+mod budget;
+
+pub use budget::{DifferenceBudget, DifferenceTerm};
+
+use crate::session::{Analysis, ExportContents};
+use nalgebra::{DMatrix, DVector};
+use zerocal_core::model::{Convention, Tilt, JOINTS, WRIST_JOINTS};
+use zerocal_core::session::SESSION_JOINTS;
+use zerocal_core::stage2::{
+    moved_reading, Param, PoseReading, MEMS_CAPTURE_NOISE_DEG, MEMS_RANGE_DEG,
+};
+
+/// Two commanded poses are the same when every joint agrees within this (rad): the
+/// export writes joints to 1e-12°, so anything larger is another pose.
+const SAME_POSE_RAD: f64 = 1e-9;
+
+/// Fewest poses the comparison solves on: four offsets and a bias component from two
+/// readings a pose need three poses; four leave room for σ.
+pub const MIN_COMPARED_POSES: usize = 4;
+
+/// Gauss-Newton steps at most; the model is smooth and a move of a degree converges in
+/// three.
+const MAX_STEPS: usize = 12;
+
+/// A step below this (rad) has converged.
+const CONVERGED_RAD: f64 = 1e-12;
+
+/// Why two measurements cannot be compared.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CompareError {
+    /// The measurement has no stage-0 reversal: its bias is unknown.
+    NoStage0,
+    /// Its stage-0 readings are refused (out of range).
+    Stage0(String),
+    /// Too few of its poses are the reference's.
+    TooFewCommonPoses {
+        /// Poses of the measurement.
+        poses: usize,
+        /// Of which at the reference's commanded joints.
+        common: usize,
+    },
+    /// The reference session was solved with another sensor convention.
+    Convention,
+    /// The solve did not converge or gave a non-finite number.
+    NoSolution(String),
+}
+
+impl core::fmt::Display for CompareError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            CompareError::NoStage0 => write!(
+                f,
+                "no stage-0 reversal in the export: the bias it was measured with is unknown \
+                 (make the bench reversal before mounting the pendant)"
+            ),
+            CompareError::Stage0(e) => write!(f, "stage 0: {e}"),
+            CompareError::TooFewCommonPoses { poses, common } => write!(
+                f,
+                "only {common} of the export's {poses} poses are at the reference session's \
+                 commanded joints (at least {MIN_COMPARED_POSES} are needed): run the check \
+                 program written for this robot's plan (zerocal program --check)"
+            ),
+            CompareError::Convention => write!(
+                f,
+                "the reference session is the paper's rpy sensor: a comparison needs the \
+                 SCL3300's axis convention"
+            ),
+            CompareError::NoSolution(e) => write!(f, "the comparison did not solve: {e}"),
+        }
+    }
+}
+
+/// What moved between the reference and the measurement.
+#[derive(Clone, Debug)]
+pub struct Comparison {
+    /// How far each zero moved, Δθ2..Δθ6 now less at the reference (rad, the model's
+    /// terms: true − commanded). Joint 2's is 0 by assumption (see the notes).
+    pub moved_rad: [f64; SESSION_JOINTS],
+    /// Its budget.
+    pub budget: DifferenceBudget,
+    /// Poses compared.
+    pub poses: usize,
+    /// The comparison's residual RMS (rad).
+    pub residual_rms_rad: f64,
+    /// Joints whose move is not a zero's (held twins: their sum is the earlier one's).
+    pub identifiable: [bool; SESSION_JOINTS],
+    /// What was assumed.
+    pub notes: Vec<String>,
+}
+
+/// One pose of both: the mean of each one's captures there.
+struct Pair {
+    joints_rad: [f64; JOINTS],
+    reference: Tilt<f64>,
+    reference_captures: usize,
+    now: Tilt<f64>,
+    now_captures: usize,
+    now_temperature_c: Option<f64>,
+    reference_temperature_c: Option<f64>,
+}
+
+fn same_pose(a: &[f64; JOINTS], b: &[f64; JOINTS]) -> bool {
+    a.iter().zip(b).all(|(x, y)| (x - y).abs() <= SAME_POSE_RAD)
+}
+
+/// The captures at one commanded pose, averaged: (mean reading, count, mean temperature).
+fn mean_at(
+    poses: &[PoseReading<f64>],
+    at: &[f64; JOINTS],
+) -> Option<(Tilt<f64>, usize, Option<f64>)> {
+    let here: Vec<&PoseReading<f64>> = poses
+        .iter()
+        .filter(|p| same_pose(&p.joints_rad, at))
+        .collect();
+    if here.is_empty() {
+        return None;
+    }
+    let n = here.len() as f64;
+    let x = here.iter().map(|p| p.reading.x_rad).sum::<f64>() / n;
+    let y = here.iter().map(|p| p.reading.y_rad).sum::<f64>() / n;
+    let temps: Vec<f64> = here.iter().filter_map(|p| p.temperature_c).collect();
+    let t = (temps.len() == here.len()).then(|| temps.iter().sum::<f64>() / n);
+    Some((Tilt::new(x, y), here.len(), t))
+}
+
+fn pairs(reference: &[PoseReading<f64>], now: &[PoseReading<f64>]) -> (Vec<Pair>, usize) {
+    let mut distinct: Vec<[f64; JOINTS]> = Vec::new();
+    for p in now {
+        if !distinct.iter().any(|d| same_pose(d, &p.joints_rad)) {
+            distinct.push(p.joints_rad);
+        }
+    }
+    let total = distinct.len();
+    let pairs = distinct
+        .iter()
+        .filter_map(|q| {
+            let (r, rn, rt) = mean_at(reference, q)?;
+            let (n, nn, nt) = mean_at(now, q)?;
+            Some(Pair {
+                joints_rad: *q,
+                reference: r,
+                reference_captures: rn,
+                now: n,
+                now_captures: nn,
+                now_temperature_c: nt,
+                reference_temperature_c: rt,
+            })
+        })
+        .collect();
+    (pairs, total)
+}
+
+/// The stage-0 bias of the measurement and its temperature.
+fn stage0_bias(now: &ExportContents) -> Result<(Tilt<f64>, Option<f64>, f64), CompareError> {
+    let s0 = now.stage0.ok_or(CompareError::NoStage0)?;
+    let bias = s0
+        .reversal
+        .bias(Convention::Axis, MEMS_RANGE_DEG.to_radians())
+        .map_err(|e| CompareError::Stage0(e.to_string()))?;
+    // The bench's tilt: half the readings' difference, for the half-turn term.
+    let d = Tilt::new(
+        0.5 * (s0.reversal.first.x_rad - s0.reversal.second.x_rad),
+        0.5 * (s0.reversal.first.y_rad - s0.reversal.second.y_rad),
+    );
+    let bench_tilt_rad = d.x_rad.hypot(d.y_rad);
+    Ok((bias, s0.temperature_c, bench_tilt_rad))
+}
+
+/// What a comparison assumes besides the two measurements.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CompareOptions {
+    /// `gearbox_replaced[k]`: joint k+2's reducer was changed between them (its
+    /// transmission error is then not the reference's).
+    pub gearbox_replaced: [bool; SESSION_JOINTS],
+    /// How far each stage-0 half turn may be off 180° (deg), as `zerocal session`'s
+    /// option of that name.
+    pub half_turn_tolerance_deg: f64,
+}
+
+impl Default for CompareOptions {
+    fn default() -> Self {
+        CompareOptions {
+            gearbox_replaced: [false; SESSION_JOINTS],
+            half_turn_tolerance_deg: zerocal_core::session::DEFAULT_HALF_TURN_TOLERANCE_DEG,
+        }
+    }
+}
+
+/// Compares the measurement `now` with the solved `reference`.
+///
+/// # Errors
+/// [`CompareError`]: no stage 0, too few common poses, no convergence.
+pub fn compare(
+    reference: &Analysis,
+    now: &ExportContents,
+    options: &CompareOptions,
+) -> Result<Comparison, CompareError> {
+    if reference.export.robot.as_ref().map(|r| r.1) != Some(Convention::Axis) {
+        return Err(CompareError::Convention);
+    }
+    let model = &reference.solution.model;
+    let fit = &reference.solution.fit;
+    let (b0_now, t0_now, bench_tilt_now_rad) = stage0_bias(now)?;
+    let (pairs, total) = pairs(&reference.export.poses, &now.poses);
+    if pairs.len() < MIN_COMPARED_POSES {
+        return Err(CompareError::TooFewCommonPoses {
+            poses: total,
+            common: pairs.len(),
+        });
+    }
+    // The bias the reference's model holds (its stages' plus what its fit estimated),
+    // at its reference temperature; the measurement's is its own stage 0's, moved to
+    // that temperature by the reference's drift.
+    let fitted = |p: Param| fit.values[p.index()];
+    let reference_bias = Tilt::new(
+        model.sensor.bias.x_rad + fitted(Param::BiasX),
+        model.sensor.bias.y_rad + fitted(Param::BiasY),
+    );
+    let dt = t0_now.map_or(0.0, |t| t - model.reference_temperature_c);
+    let now_bias = Tilt::new(
+        b0_now.x_rad - model.drift_per_k.x_rad * dt,
+        b0_now.y_rad - model.drift_per_k.y_rad * dt,
+    );
+    let shift = Tilt::new(
+        now_bias.x_rad - reference_bias.x_rad,
+        now_bias.y_rad - reference_bias.y_rad,
+    );
+    // The component stage 2 estimates is estimated here too; the other is stage 0's.
+    let free_bias = [fit.extras.bias_x, fit.extras.bias_y];
+    let held = fit.extras.held;
+    let wrist: Vec<usize> = (0..WRIST_JOINTS).filter(|&k| !held[k]).collect();
+    let free: Vec<usize> = (0..2).filter(|&c| free_bias[c]).collect();
+    let n_params = wrist.len() + free.len();
+    let w_y = model.y_weight;
+    // The reference's residual at each pose, carried over.
+    let pose_at = |p: &Pair, reading: Tilt<f64>, t: Option<f64>| PoseReading {
+        joints_rad: p.joints_rad,
+        reading,
+        temperature_c: t,
+    };
+    let carried: Vec<Tilt<f64>> = pairs
+        .iter()
+        .map(|p| {
+            let at = pose_at(p, p.reference, p.reference_temperature_c);
+            let f = moved_reading(model, fit, &at, &[0.0; WRIST_JOINTS], &Tilt::default());
+            Tilt::new(
+                p.reference.x_rad - f.reading.x_rad,
+                p.reference.y_rad - f.reading.y_rad,
+            )
+        })
+        .collect();
+    let mut offsets = [0.0; WRIST_JOINTS];
+    let mut bias_free = [0.0; 2];
+    let mut jacobian = DMatrix::<f64>::zeros(2 * pairs.len(), n_params);
+    let mut residual = DVector::<f64>::zeros(2 * pairs.len());
+    let mut converged = false;
+    for _ in 0..MAX_STEPS {
+        let bias = Tilt::new(shift.x_rad + bias_free[0], shift.y_rad + bias_free[1]);
+        for (i, (p, r)) in pairs.iter().zip(&carried).enumerate() {
+            let at = pose_at(p, p.now, p.now_temperature_c);
+            let m = moved_reading(model, fit, &at, &offsets, &bias);
+            let e = [
+                p.now.x_rad - r.x_rad - m.reading.x_rad,
+                p.now.y_rad - r.y_rad - m.reading.y_rad,
+            ];
+            for (axis, e_axis) in e.iter().enumerate() {
+                let w = if axis == 0 { 1.0 } else { w_y };
+                let row = 2 * i + axis;
+                residual[row] = e_axis * w;
+                for (c, &k) in wrist.iter().enumerate() {
+                    jacobian[(row, c)] = m.d_offsets[axis][k] * w;
+                }
+                for (c, &b) in free.iter().enumerate() {
+                    jacobian[(row, wrist.len() + c)] = m.d_bias[axis][b] * w;
+                }
+            }
+        }
+        let step = jacobian
+            .clone()
+            .svd(true, true)
+            .solve(&residual, 1e-12)
+            .map_err(|e| CompareError::NoSolution(e.to_owned()))?;
+        for (c, &k) in wrist.iter().enumerate() {
+            offsets[k] += step[c];
+        }
+        for (c, &b) in free.iter().enumerate() {
+            bias_free[b] += step[wrist.len() + c];
+        }
+        if step.iter().all(|s| s.abs() < CONVERGED_RAD) {
+            converged = true;
+            break;
+        }
+    }
+    if !converged || offsets.iter().any(|o| !o.is_finite()) {
+        return Err(CompareError::NoSolution(format!(
+            "no convergence in {MAX_STEPS} steps"
+        )));
+    }
+    // Residuals at the solution (the last pass computed them before its step).
+    let ssr: f64 = {
+        let bias = Tilt::new(shift.x_rad + bias_free[0], shift.y_rad + bias_free[1]);
+        pairs
+            .iter()
+            .zip(&carried)
+            .map(|(p, r)| {
+                let at = pose_at(p, p.now, p.now_temperature_c);
+                let m = moved_reading(model, fit, &at, &offsets, &bias);
+                let ex = p.now.x_rad - r.x_rad - m.reading.x_rad;
+                let ey = (p.now.y_rad - r.y_rad - m.reading.y_rad) * w_y;
+                ex * ex + ey * ey
+            })
+            .sum()
+    };
+    let readings = 2 * pairs.len();
+    let residual_rms_rad = (ssr / readings as f64).sqrt();
+    let dof = readings.saturating_sub(n_params);
+    // σ of one compared reading: what the residuals show, at least the sensor's noise
+    // figure through both sessions' means.
+    let per_pose_captures =
+        |p: &Pair| (1.0 / p.now_captures as f64) + (1.0 / p.reference_captures as f64);
+    let mean_factor = pairs.iter().map(per_pose_captures).sum::<f64>() / pairs.len() as f64;
+    let stated = MEMS_CAPTURE_NOISE_DEG.to_radians() * mean_factor.sqrt();
+    let from_residuals = if dof > 0 {
+        (ssr / dof as f64).sqrt()
+    } else {
+        0.0
+    };
+    let sigma_rad = from_residuals.max(stated);
+    let jtj = jacobian.transpose() * &jacobian;
+    let inverse = jtj
+        .try_inverse()
+        .ok_or_else(|| CompareError::NoSolution("the poses do not separate the offsets".into()))?;
+    let mut type_a = [0.0; SESSION_JOINTS];
+    for (c, &k) in wrist.iter().enumerate() {
+        type_a[k + 1] = (inverse[(c, c)].max(0.0)).sqrt() * sigma_rad;
+    }
+    // How the offsets follow the bias component stage 0 fixes: one unit of it, solved.
+    let fixed: Vec<usize> = (0..2).filter(|&c| !free_bias[c]).collect();
+    let mut bias_sensitivity = [0.0; SESSION_JOINTS];
+    if !fixed.is_empty() {
+        let mut column = DVector::<f64>::zeros(readings);
+        let bias = Tilt::new(shift.x_rad + bias_free[0], shift.y_rad + bias_free[1]);
+        for (i, p) in pairs.iter().enumerate() {
+            let at = pose_at(p, p.now, p.now_temperature_c);
+            let m = moved_reading(model, fit, &at, &offsets, &bias);
+            for axis in 0..2 {
+                let w = if axis == 0 { 1.0 } else { w_y };
+                column[2 * i + axis] = fixed.iter().map(|&b| m.d_bias[axis][b]).sum::<f64>() * w;
+            }
+        }
+        let response = &inverse * (jacobian.transpose() * column);
+        for (c, &k) in wrist.iter().enumerate() {
+            bias_sensitivity[k + 1] = response[c].abs();
+        }
+    }
+    let mut moved_rad = [0.0; SESSION_JOINTS];
+    moved_rad[1..].copy_from_slice(&offsets);
+    let mut identifiable = [true; SESSION_JOINTS];
+    for k in 0..WRIST_JOINTS {
+        identifiable[k + 1] = !held[k];
+    }
+    let budget = budget::difference_budget(&budget::Inputs {
+        reference,
+        now,
+        moved_rad: &moved_rad,
+        type_a_rad: &type_a,
+        bias_sensitivity: &bias_sensitivity,
+        bench_tilt_now_rad,
+        options,
+    });
+    let mut notes = vec![format!(
+        "joint 2's zero is taken as unchanged: gravity sees joints 2 and 3 only through their \
+         sum at the flange, and the sum's move is given as joint 3's. After a motor or gearbox \
+         change on joint 2, master it absolutely (zerocal session)"
+    )];
+    if held.iter().any(|h| *h) {
+        notes.push(
+            "a joint parallel to the one before it in every pose is not compared (its zero \
+             needs another method); the earlier joint's move holds their sum"
+                .into(),
+        );
+    }
+    if pairs.len() < total {
+        notes.push(format!(
+            "{} of the export's {total} poses are not the reference's and were not compared",
+            total - pairs.len()
+        ));
+    }
+    Ok(Comparison {
+        moved_rad,
+        budget,
+        poses: pairs.len(),
+        residual_rms_rad,
+        identifiable,
+        notes,
+    })
+}
