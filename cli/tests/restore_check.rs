@@ -154,3 +154,76 @@ fn restore_uncertainty_covers_its_error_over_sessions() {
         );
     }
 }
+
+/// The check's poses here: every fourth of the plan's (the pendant's own choice is
+/// tested with it).
+fn check_poses(plan: &[[f64; 6]]) -> impl Fn(&[f64; 6]) -> bool + '_ {
+    move |q| {
+        plan.iter()
+            .step_by(4)
+            .any(|p| p.iter().zip(q).all(|(a, b)| (a - b).abs() < 1e-12))
+    }
+}
+
+/// The reference's offsets entered, `left_deg` short on joint 3; the check's verdict.
+fn check_after_entering(seed: u64, left_j3_deg: f64) -> zerocal_cli::compare::check::CheckResult {
+    use zerocal_cli::compare::check::{judge, Expected};
+    let profile = kr6();
+    let plan = plan(&profile);
+    let reference = RealSession::simulate(&profile, &plan, &world(), seed);
+    let solved_reference = solved(&reference, &profile);
+    let entered = solved_reference.solution.offsets_rad;
+    // Entering dq moves the reading by +dq: Δθ = true − reading falls by it.
+    let after = reference.again(&profile, &plan, &world(), seed + 1, |r| {
+        for k in 0..5 {
+            r.offsets_rad[k + 1] -= entered[k];
+        }
+        r.offsets_rad[2] += left_j3_deg.to_radians();
+    });
+    let text = after.check_export_text(&profile.name, check_poses(&plan));
+    let export = read_export(&text).unwrap();
+    assert!(export.stage1.is_none(), "a check has no stage 1");
+    let c = compare(&solved_reference, &export, &options()).unwrap();
+    judge(&solved_reference, &c, Expected::Entered, None)
+}
+
+#[test]
+fn check_passes_after_the_offsets_are_entered() {
+    for seed in [41, 51, 61] {
+        let r = check_after_entering(seed, 0.0);
+        assert!(r.pass, "seed {seed}: {r:#?}");
+        assert_eq!(
+            r.joints[0].pass, None,
+            "joint 2 is not seen without stage 1"
+        );
+    }
+}
+
+#[test]
+fn check_fails_naming_joint_3_with_a_hundredth_of_a_degree_left() {
+    for seed in [41, 51, 61] {
+        let r = check_after_entering(seed, 0.01);
+        assert!(!r.pass, "seed {seed}: {r:#?}");
+        assert_eq!(r.failed(), vec!["A3"], "seed {seed}: {r:#?}");
+    }
+}
+
+/// Over many robots and sessions a check after a correct entry passes, and one with
+/// 0.01° left on joint 3 fails naming it: at least 29 of 30 each way (the tolerance of
+/// three standard uncertainties fails a correct joint about one time in 370).
+#[test]
+fn check_tells_a_correct_entry_from_a_hundredth_left_over_sessions() {
+    let sessions = 30;
+    let (mut passed, mut caught) = (0, 0);
+    for seed in 0..sessions {
+        let r = check_after_entering(3000 + 10 * seed, 0.0);
+        if r.pass {
+            passed += 1;
+        }
+        if check_after_entering(3000 + 10 * seed, 0.01).failed() == ["A3"] {
+            caught += 1;
+        }
+    }
+    println!("correct entries passed {passed} of {sessions}; 0.01 deg on A3 caught {caught}");
+    assert!(passed >= 29 && caught >= 29, "{passed} {caught}");
+}

@@ -17,6 +17,7 @@
 //! move is joint 3's. [`Comparison::notes`] says so.
 
 mod budget;
+pub mod check;
 
 pub use budget::{DifferenceBudget, DifferenceTerm};
 

@@ -1,0 +1,116 @@
+//! The check after offsets were entered: did the controller take them, with the right
+//! sign and unit? What a measurement at the reference session's poses says is left of
+//! each joint's offset, against a tolerance.
+
+use super::Comparison;
+use crate::session::Analysis;
+use serde::{Deserialize, Serialize};
+use zerocal_core::session::SESSION_JOINTS;
+
+/// The default tolerance in the check's combined standard uncertainties: three, so
+/// that a correct entry fails a joint about one time in 370 (normal, 99.73 %) while a
+/// hundredth of a degree left stands out (the check's u is about 0.001-0.002°).
+pub const CHECK_TOLERANCE_U: f64 = 3.0;
+
+/// What the check expects to find.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Expected {
+    /// The reference session's offsets were entered: every joint should now be at its
+    /// kinematic zero, nothing left.
+    Entered,
+    /// A restore to the reference session's zero was entered: every joint should be
+    /// where it was at the reference, no move.
+    Restored,
+}
+
+/// One joint's check.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct JointCheck {
+    /// The controller's name for the joint.
+    pub name: String,
+    /// What is left (deg, model terms: true − commanded); joint 3's is joints 2 and
+    /// 3's sum (gravity at the flange sees only it).
+    pub remaining_deg: f64,
+    /// The check's own expanded uncertainty, k = 2 (deg).
+    pub expanded_k2_deg: f64,
+    /// The tolerance it is judged against (deg).
+    pub tolerance_deg: f64,
+    /// Within it; `None` for a joint the check does not see (joint 2; a held twin).
+    pub pass: Option<bool>,
+}
+
+/// The check's result.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CheckResult {
+    /// Joints 2-6.
+    pub joints: Vec<JointCheck>,
+    /// Every checked joint within its tolerance.
+    pub pass: bool,
+    /// The rule, in words.
+    pub rule: String,
+}
+
+impl CheckResult {
+    /// The joints outside their tolerance, by name.
+    pub fn failed(&self) -> Vec<&str> {
+        self.joints
+            .iter()
+            .filter(|j| j.pass == Some(false))
+            .map(|j| j.name.as_str())
+            .collect()
+    }
+}
+
+/// Judges `comparison` (a measurement against `reference`) as a check: what is left is
+/// the reference's offsets plus the zeros' move ([`Expected::Entered`]) or the move
+/// alone ([`Expected::Restored`]). The tolerance of each joint is `tolerance_deg` where
+/// given, else [`CHECK_TOLERANCE_U`] times the check's own combined standard
+/// uncertainty, from the reference's budget less what cancels
+/// ([`super::DifferenceBudget`]): a remaining offset the check can tell from zero was
+/// not taken.
+pub fn judge(
+    reference: &Analysis,
+    comparison: &Comparison,
+    expected: Expected,
+    tolerance_deg: Option<f64>,
+) -> CheckResult {
+    let moved = comparison.moved_deg();
+    let joints: Vec<JointCheck> = (0..SESSION_JOINTS)
+        .map(|k| {
+            let entered = |i: usize| reference.json.joints[i].offset_deg;
+            let remaining_deg = match expected {
+                // Joint 2's offset was entered too, and the flange sees it only in its
+                // sum with joint 3's: joint 3's line is the sum's.
+                Expected::Entered if k == 1 => entered(0) + entered(1) + moved[k],
+                Expected::Entered => entered(k) + moved[k],
+                Expected::Restored => moved[k],
+            };
+            let expanded = comparison.budget.expanded_deg[k];
+            let tolerance =
+                tolerance_deg.unwrap_or(CHECK_TOLERANCE_U * comparison.budget.combined_deg[k]);
+            // Joint 2 is not seen without stage 1 (its sum with joint 3 is joint 3's).
+            let seen = k > 0 && comparison.identifiable[k];
+            JointCheck {
+                name: reference.json.joints[k].name.clone(),
+                remaining_deg: if seen { remaining_deg } else { 0.0 },
+                expanded_k2_deg: expanded,
+                tolerance_deg: tolerance,
+                pass: seen.then(|| remaining_deg.abs() <= tolerance),
+            }
+        })
+        .collect();
+    let pass = joints.iter().all(|j| j.pass != Some(false));
+    let rule = match tolerance_deg {
+        Some(t) => format!(
+            "a joint passes when what is left of its offset is within +/-{t} deg (the \
+             tolerance given)"
+        ),
+        None => format!(
+            "a joint passes when what is left of its offset is within {CHECK_TOLERANCE_U} \
+             times the check's own standard uncertainty (the reference session's budget less \
+             the terms common to both measurements): more than that is an offset the \
+             controller did not take (a sign, a unit, a joint mixed up, a value not activated)"
+        ),
+    };
+    CheckResult { joints, pass, rule }
+}
