@@ -175,8 +175,8 @@ fn check_after_entering(seed: u64, left_j3_deg: f64) -> zerocal_cli::compare::ch
     let entered = solved_reference.solution.offsets_rad;
     // Entering dq moves the reading by +dq: Δθ = true − reading falls by it.
     let after = reference.again(&profile, &plan, &world(), seed + 1, |r| {
-        for k in 0..5 {
-            r.offsets_rad[k + 1] -= entered[k];
+        for (o, e) in r.offsets_rad[1..].iter_mut().zip(&entered) {
+            *o -= e;
         }
         r.offsets_rad[2] += left_j3_deg.to_radians();
     });
