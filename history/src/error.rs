@@ -1,0 +1,94 @@
+//! What can go wrong opening or using a history database, each case naming its cause.
+
+use std::fmt;
+
+/// An error of the history database. Its `Display` names what is wrong and where.
+#[derive(Debug)]
+pub enum HistoryError {
+    /// The file or server database exists but is not a zerocal history (another
+    /// application's database, random bytes, a text file). It was left untouched.
+    NotZerocal {
+        /// The path or URL, and what was found there.
+        what: String,
+    },
+    /// The database was written by a newer zerocal (schema `found`); this build reads up
+    /// to `supported`. It was left untouched.
+    NewerSchema {
+        /// The schema version stored in the database.
+        found: i64,
+        /// The newest schema version this build knows.
+        supported: i64,
+    },
+    /// No record has this ID.
+    NoSuchRecord(i64),
+    /// A record given to [`crate::History::insert`] that cannot be stored as it is.
+    InvalidRecord(String),
+    /// A stored value that does not read as what the schema says it is.
+    Corrupt(String),
+    /// No `--db` given and neither `XDG_DATA_HOME` nor `HOME` is set.
+    NoDataDir,
+    /// SQLite refused an operation.
+    Sqlite(rusqlite::Error),
+    /// The PostgreSQL server or its client refused an operation.
+    Postgres(postgres::Error),
+    /// A file or directory could not be read or made.
+    Io(std::io::Error),
+}
+
+impl fmt::Display for HistoryError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NotZerocal { what } => write!(
+                f,
+                "{what} is not a zerocal history database (left untouched)"
+            ),
+            Self::NewerSchema { found, supported } => write!(
+                f,
+                "the history database has schema version {found}, written by a newer zerocal; \
+                 this build reads versions up to {supported} (left untouched: use a newer zerocal)"
+            ),
+            Self::NoSuchRecord(id) => write!(f, "no history record has ID {id}"),
+            Self::InvalidRecord(why) => write!(f, "record not stored: {why}"),
+            Self::Corrupt(why) => write!(
+                f,
+                "the history database holds a value that does not read: {why}"
+            ),
+            Self::NoDataDir => write!(
+                f,
+                "no history database location: give --db, or set XDG_DATA_HOME or HOME"
+            ),
+            Self::Sqlite(e) => write!(f, "SQLite: {e}"),
+            Self::Postgres(e) => write!(f, "PostgreSQL: {e}"),
+            Self::Io(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for HistoryError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Self::Sqlite(e) => Some(e),
+            Self::Postgres(e) => Some(e),
+            Self::Io(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<rusqlite::Error> for HistoryError {
+    fn from(e: rusqlite::Error) -> Self {
+        Self::Sqlite(e)
+    }
+}
+
+impl From<postgres::Error> for HistoryError {
+    fn from(e: postgres::Error) -> Self {
+        Self::Postgres(e)
+    }
+}
+
+impl From<std::io::Error> for HistoryError {
+    fn from(e: std::io::Error) -> Self {
+        Self::Io(e)
+    }
+}

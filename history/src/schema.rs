@@ -1,0 +1,322 @@
+//! The versioned schema: the migration steps, how a database says it is zerocal's and
+//! at which version, and the checks made before anything is written to it.
+//!
+//! SQLite marks the file itself (`PRAGMA application_id` = [`SQLITE_APPLICATION_ID`],
+//! `PRAGMA user_version` = the schema version), so a file is recognised from its
+//! header before any table is read. PostgreSQL has no such header: there the
+//! `zerocal_meta` table is the mark. Both backends keep `zerocal_meta` (one row:
+//! application name and schema version) so the schema is the same text for both; on
+//! SQLite the header is what opening checks, and both are set in the same transaction.
+
+use crate::db::{Conn, Value};
+use crate::HistoryError;
+use std::path::Path;
+use std::time::Duration;
+
+/// SQLite `application_id` of a zerocal history: "ZCAL" in ASCII.
+pub const SQLITE_APPLICATION_ID: i64 = 0x5A43_414C;
+
+/// The application name in `zerocal_meta`.
+pub const APPLICATION: &str = "zerocal";
+
+/// How long a writer waits for another process's write to finish before giving up.
+/// A whole insert takes milliseconds; ten seconds covers a slow disk and a queue of
+/// several writers.
+pub const BUSY_TIMEOUT: Duration = Duration::from_secs(10);
+
+/// One step of the schema: applied in its own transaction, after which the database
+/// is at `version`.
+pub struct Migration {
+    /// The schema version this step makes.
+    pub version: i64,
+    /// What it changes, for the docs and messages.
+    pub what: &'static str,
+    /// The statements, written once for both dialects (see `db::Dialect::sql`).
+    pub sql: &'static str,
+}
+
+/// Every step, oldest first. Never edit a step that has shipped: add one.
+pub const MIGRATIONS: &[Migration] = &[
+    Migration {
+        version: 1,
+        what: "records, joints and zerocal_meta; one record per serial, kind and export",
+        sql: "
+CREATE TABLE zerocal_meta (
+    application TEXT NOT NULL,
+    schema_version BIGINT NOT NULL
+);
+CREATE TABLE records (
+    id {id},
+    recorded_at TEXT NOT NULL,
+    kind TEXT NOT NULL CHECK (kind IN ('session', 'check')),
+    serial TEXT NOT NULL,
+    robot TEXT NOT NULL,
+    robot_title TEXT NOT NULL,
+    controller_family TEXT NOT NULL,
+    profile_toml TEXT NOT NULL,
+    profile_sha256 TEXT NOT NULL,
+    export {bytes} NOT NULL,
+    export_sha256 TEXT NOT NULL,
+    measured_on TEXT NOT NULL,
+    operator TEXT,
+    pendant_unit TEXT,
+    pendant_result_id BIGINT,
+    reference_id BIGINT REFERENCES records (id),
+    zerocal_version TEXT NOT NULL,
+    verdict TEXT NOT NULL,
+    brackets_json TEXT NOT NULL,
+    conditions_json TEXT NOT NULL,
+    result_json TEXT NOT NULL
+);
+CREATE UNIQUE INDEX records_once ON records (serial, kind, export_sha256);
+CREATE TABLE joints (
+    record_id BIGINT NOT NULL REFERENCES records (id),
+    joint BIGINT NOT NULL CHECK (joint BETWEEN 2 AND 6),
+    name TEXT NOT NULL,
+    offset_deg DOUBLE PRECISION NOT NULL,
+    expanded_k2_deg DOUBLE PRECISION NOT NULL,
+    controller_offset_deg DOUBLE PRECISION NOT NULL,
+    pass BIGINT CHECK (pass IN (0, 1)),
+    PRIMARY KEY (record_id, joint)
+);
+",
+    },
+    Migration {
+        version: 2,
+        what: "index of records by serial and ID (`zerocal history SERIAL` lists in ID order)",
+        sql: "CREATE INDEX records_by_serial ON records (serial, id);",
+    },
+];
+
+/// The newest schema version this build reads and writes.
+pub const SCHEMA_VERSION: i64 = MIGRATIONS[MIGRATIONS.len() - 1].version;
+
+/// What a database holds, as far as opening is concerned.
+#[derive(Debug, PartialEq)]
+enum Mark {
+    /// No tables and no mark: a new database, made here.
+    Empty,
+    /// Zerocal's, at this schema version.
+    Ours(i64),
+    /// Someone else's: what was found.
+    Foreign(String),
+}
+
+fn check(mark: Mark, what: &str) -> Result<i64, HistoryError> {
+    match mark {
+        Mark::Empty => Ok(0),
+        Mark::Foreign(found) => Err(HistoryError::NotZerocal {
+            what: format!("{what} ({found})"),
+        }),
+        Mark::Ours(found) if found > SCHEMA_VERSION => Err(HistoryError::NewerSchema {
+            found,
+            supported: SCHEMA_VERSION,
+        }),
+        Mark::Ours(v) => Ok(v),
+    }
+}
+
+fn sqlite_mark(c: &mut Conn) -> Result<Mark, HistoryError> {
+    let one = |c: &mut Conn, sql: &str, column: &str| -> Result<i64, HistoryError> {
+        c.query(sql, &[])?
+            .first()
+            .and_then(|r| r.first().cloned())
+            .ok_or_else(|| HistoryError::Corrupt(format!("{sql} returned nothing")))?
+            .i64(column)
+    };
+    let application_id = one(c, "PRAGMA application_id", "application_id")?;
+    let version = one(c, "PRAGMA user_version", "user_version")?;
+    let tables = one(c, "SELECT count(*) FROM sqlite_master", "count")?;
+    Ok(if application_id == SQLITE_APPLICATION_ID {
+        Mark::Ours(version)
+    } else if application_id == 0 && version == 0 && tables == 0 {
+        Mark::Empty
+    } else {
+        Mark::Foreign(format!(
+            "an SQLite database with application_id {application_id:#x}, \
+             user_version {version} and {tables} schema objects"
+        ))
+    })
+}
+
+fn postgres_mark(c: &mut Conn) -> Result<Mark, HistoryError> {
+    let tables: Vec<String> = c
+        .query(
+            "SELECT table_name::text FROM information_schema.tables \
+             WHERE table_schema = current_schema() \
+             AND table_name IN ('zerocal_meta', 'records', 'joints')",
+            &[],
+        )?
+        .iter()
+        .filter_map(|r| {
+            r.first()
+                .and_then(|v| v.opt_text("table_name").ok().flatten())
+        })
+        .collect();
+    if tables.is_empty() {
+        return Ok(Mark::Empty);
+    }
+    if !tables.iter().any(|t| t == "zerocal_meta") {
+        return Ok(Mark::Foreign(format!(
+            "tables {} not made by zerocal, and no zerocal_meta",
+            tables.join(", ")
+        )));
+    }
+    let rows = c.query("SELECT application, schema_version FROM zerocal_meta", &[])?;
+    match rows.as_slice() {
+        [row] if row.len() == 2 => {
+            let application = row[0].string("zerocal_meta.application")?;
+            let version = row[1].i64("zerocal_meta.schema_version")?;
+            if application == APPLICATION {
+                Ok(Mark::Ours(version))
+            } else {
+                Ok(Mark::Foreign(format!(
+                    "zerocal_meta names the application {application:?}"
+                )))
+            }
+        }
+        _ => Ok(Mark::Foreign(format!(
+            "zerocal_meta holds {} rows, not one",
+            rows.len()
+        ))),
+    }
+}
+
+fn mark(c: &mut Conn) -> Result<Mark, HistoryError> {
+    match c {
+        Conn::Sqlite(_) => sqlite_mark(c),
+        Conn::Postgres(_) => postgres_mark(c),
+    }
+}
+
+fn set_version(c: &mut Conn, version: i64) -> Result<(), HistoryError> {
+    let v = [Value::Int(Some(version))];
+    if c.execute("UPDATE zerocal_meta SET schema_version = $1", &v)? == 0 {
+        c.execute(
+            "INSERT INTO zerocal_meta (application, schema_version) VALUES ($1, $2)",
+            &[Value::text(APPLICATION), Value::Int(Some(version))],
+        )?;
+    }
+    if let Conn::Sqlite(_) = c {
+        // Pragmas take no parameters; both numbers are ours.
+        c.batch(&format!(
+            "PRAGMA application_id = {SQLITE_APPLICATION_ID}; PRAGMA user_version = {version};"
+        ))?;
+    }
+    Ok(())
+}
+
+/// Brings the database up to `target` (at most [`SCHEMA_VERSION`]), one transaction a
+/// step, each re-reading the mark under the write lock so that a process that opened
+/// it at the same time and migrated first is not repeated.
+fn migrate(c: &mut Conn, what: &str, target: i64) -> Result<(), HistoryError> {
+    if check(mark(c)?, what)? >= target {
+        return Ok(());
+    }
+    for step in MIGRATIONS.iter().filter(|m| m.version <= target) {
+        let lock = c.dialect().lock_schema;
+        c.write(|c| {
+            if let Some(lock) = lock {
+                c.execute(lock, &[])?;
+            }
+            let at = check(mark(c)?, what)?;
+            if at >= step.version {
+                return Ok(());
+            }
+            c.batch(step.sql)?;
+            set_version(c, step.version)
+        })?;
+    }
+    Ok(())
+}
+
+/// The schema version of an open database.
+pub(crate) fn version(c: &mut Conn, what: &str) -> Result<i64, HistoryError> {
+    check(mark(c)?, what)
+}
+
+fn not_a_database(e: &rusqlite::Error) -> bool {
+    matches!(
+        e,
+        rusqlite::Error::SqliteFailure(f, _) if f.code == rusqlite::ErrorCode::NotADatabase
+    )
+}
+
+/// Reads the file's mark through a read-only connection: nothing is written to a file
+/// that turns out not to be ours or to be newer. An absent or empty file passes (it
+/// is made here).
+fn inspect_sqlite(path: &Path, what: &str) -> Result<(), HistoryError> {
+    let meta = match std::fs::metadata(path) {
+        Ok(m) => m,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => {
+            return Err(HistoryError::Io(std::io::Error::new(
+                e.kind(),
+                format!("{what}: {e}"),
+            )))
+        }
+    };
+    if meta.is_dir() {
+        return Err(HistoryError::NotZerocal {
+            what: format!("{what} (a directory)"),
+        });
+    }
+    if meta.len() == 0 {
+        return Ok(());
+    }
+    let foreign = |e: &rusqlite::Error| HistoryError::NotZerocal {
+        what: format!("{what} ({e})"),
+    };
+    let ro = rusqlite::Connection::open_with_flags(
+        path,
+        rusqlite::OpenFlags::SQLITE_OPEN_READ_ONLY | rusqlite::OpenFlags::SQLITE_OPEN_NO_MUTEX,
+    )?;
+    ro.busy_timeout(BUSY_TIMEOUT)?;
+    let mut ro = Conn::Sqlite(ro);
+    match mark(&mut ro) {
+        Ok(m) => check(m, what).map(|_| ()),
+        Err(HistoryError::Sqlite(e)) if not_a_database(&e) => Err(foreign(&e)),
+        Err(e) => Err(e),
+    }
+}
+
+/// Opens (making it if absent or empty) the SQLite history at `path`, migrated up to
+/// `target`: WAL journal, the busy timeout, foreign keys on.
+pub(crate) fn open_sqlite(path: &Path, target: i64) -> Result<Conn, HistoryError> {
+    let what = path.display().to_string();
+    inspect_sqlite(path, &what)?;
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| {
+            HistoryError::Io(std::io::Error::new(
+                e.kind(),
+                format!("{}: {e}", dir.display()),
+            ))
+        })?;
+    }
+    let c = rusqlite::Connection::open(path)?;
+    c.busy_timeout(BUSY_TIMEOUT)?;
+    // WAL: readers never block the writer and a commit is one append to the log, so a
+    // process killed mid-write leaves the last committed state. `synchronous` stays at
+    // SQLite's FULL: a commit is on disk when insert returns.
+    let mode: String = c.query_row("PRAGMA journal_mode = WAL", [], |r| r.get(0))?;
+    if !mode.eq_ignore_ascii_case("wal") {
+        return Err(HistoryError::Corrupt(format!(
+            "{what}: SQLite kept journal mode {mode}, not WAL"
+        )));
+    }
+    c.execute_batch("PRAGMA foreign_keys = ON")?;
+    let mut c = Conn::Sqlite(c);
+    migrate(&mut c, &what, target)?;
+    Ok(c)
+}
+
+/// Opens the PostgreSQL history at `url` (`what` is the URL without its password),
+/// making the tables in an empty database, migrated up to `target`.
+pub(crate) fn open_postgres(url: &str, what: &str, target: i64) -> Result<Conn, HistoryError> {
+    let client = postgres::Client::connect(url, postgres::NoTls)?;
+    let mut c = Conn::Postgres(Box::new(client));
+    // The first look writes nothing: a foreign or newer database is refused as it is.
+    check(mark(&mut c)?, what)?;
+    migrate(&mut c, what, target)?;
+    Ok(c)
+}

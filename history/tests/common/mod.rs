@@ -1,0 +1,133 @@
+//! What the history tests share: the backends each test runs on and records made
+//! from a seed, so a reader (another process) can tell every byte they should hold.
+
+use std::path::PathBuf;
+use zerocal_history::{DbLocation, JointRow, NewRecord, RecordKind};
+
+/// The environment variable naming the PostgreSQL server of the tests.
+pub const POSTGRES_ENV: &str = "ZEROCAL_TEST_POSTGRES";
+
+/// A backend a test runs on; the temporary directory lives as long as it.
+pub struct Backend {
+    pub name: &'static str,
+    pub at: DbLocation,
+    _dir: Option<tempfile::TempDir>,
+}
+
+/// `url` with its database replaced by `database`.
+pub fn with_database(url: &str, database: &str) -> String {
+    let (base, query) = match url.split_once('?') {
+        Some((b, q)) => (b, format!("?{q}")),
+        None => (url, String::new()),
+    };
+    let (scheme, rest) = base.split_once("://").unwrap();
+    let authority = rest.split('/').next().unwrap();
+    format!("{scheme}://{authority}/{database}{query}")
+}
+
+/// A fresh SQLite file in a temporary directory, and a fresh PostgreSQL database
+/// (named after the test) on the server `ZEROCAL_TEST_POSTGRES` names. Without that
+/// variable the PostgreSQL half is skipped with a note, except under `CI=true`, where
+/// it fails: CI must not pass by skipping it.
+pub fn backends(test: &str) -> Vec<Backend> {
+    let dir = tempfile::tempdir().unwrap();
+    let mut out = vec![Backend {
+        name: "SQLite",
+        at: DbLocation::Sqlite(dir.path().join("history.sqlite")),
+        _dir: Some(dir),
+    }];
+    match std::env::var(POSTGRES_ENV) {
+        Ok(url) if !url.is_empty() => out.push(Backend {
+            name: "PostgreSQL",
+            at: DbLocation::Postgres(fresh_postgres_database(&url, test)),
+            _dir: None,
+        }),
+        _ => {
+            assert!(
+                std::env::var("CI").as_deref() != Ok("true"),
+                "CI=true but {POSTGRES_ENV} is unset: the PostgreSQL half of {test} would be \
+                 skipped (CI runs `cargo xtask postgres start` and exports it)"
+            );
+            eprintln!("{test}: {POSTGRES_ENV} unset, PostgreSQL not tested");
+        }
+    }
+    out
+}
+
+/// Drops and creates database `zc_TEST` on the server and returns its URL.
+pub fn fresh_postgres_database(url: &str, test: &str) -> String {
+    let name = format!("zc_{test}");
+    let mut admin = postgres::Client::connect(url, postgres::NoTls).unwrap();
+    admin
+        .batch_execute(&format!("DROP DATABASE IF EXISTS {name} WITH (FORCE)"))
+        .unwrap();
+    admin
+        .batch_execute(&format!("CREATE DATABASE {name}"))
+        .unwrap();
+    with_database(url, &name)
+}
+
+/// A temporary file path of its own directory.
+pub fn temp_file(name: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    (dir, path)
+}
+
+/// `len` bytes that depend on `seed` only (xorshift64).
+pub fn export_bytes(seed: u64, len: usize) -> Vec<u8> {
+    let mut x = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    (0..len)
+        .map(|_| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x as u8
+        })
+        .collect()
+}
+
+/// The seed of record `i` of `serial`.
+pub fn seed(serial: &str, i: u32) -> u64 {
+    serial.bytes().fold(u64::from(i) + 1, |h, b| {
+        h.wrapping_mul(31).wrapping_add(u64::from(b))
+    })
+}
+
+/// Record `i` of `serial`: its export (`export_len` bytes) and its offsets follow from
+/// the serial and `i`, and `pendant_result_id` is `i`.
+pub fn record(kind: RecordKind, serial: &str, i: u32, export_len: usize) -> NewRecord {
+    let joints = (2..=6u8)
+        .map(|joint| JointRow {
+            joint,
+            name: format!("A{joint}"),
+            offset_deg: 0.001 * f64::from(joint) + 1e-5 * f64::from(i),
+            expanded_k2_deg: 0.004 + 0.0005 * f64::from(joint),
+            controller_offset_deg: -0.001 * f64::from(joint),
+            pass: match kind {
+                RecordKind::Session => None,
+                RecordKind::Check => Some(joint != 4),
+            },
+        })
+        .collect();
+    NewRecord {
+        kind,
+        serial: serial.into(),
+        robot: "kuka-kr6-r900-sixx".into(),
+        robot_title: "KUKA KR 6 R900 sixx".into(),
+        controller_family: "kuka".into(),
+        profile_toml: "name = \"kuka-kr6-r900-sixx\"\n".into(),
+        export: export_bytes(seed(serial, i), export_len),
+        measured_on: "2026-11-27".into(),
+        operator: Some("A. Technician".into()),
+        pendant_unit: Some("ZC-0007".into()),
+        pendant_result_id: Some(i),
+        reference_id: None,
+        zerocal_version: "0.1.0".into(),
+        verdict: "PASS".into(),
+        brackets_json: r#"{"flange":"B-12"}"#.into(),
+        conditions_json: r#"{"temperature_c":21.5}"#.into(),
+        result_json: r#"{"verdict":"PASS"}"#.into(),
+        joints,
+    }
+}
