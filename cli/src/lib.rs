@@ -4,6 +4,7 @@
 pub mod args;
 pub mod bracket;
 pub mod brackets;
+pub mod check;
 pub mod compare;
 pub mod diagnose;
 pub mod error;
@@ -14,7 +15,9 @@ pub mod pendant;
 pub mod plan;
 pub mod plots;
 pub mod program;
+pub mod record;
 pub mod report_notes;
+pub mod restore;
 pub mod robot;
 pub mod session;
 pub mod simulate;

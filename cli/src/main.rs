@@ -9,6 +9,8 @@
 //! - `zerocal pendant --port P status|load-profile R|export|erase`: the pendant's link.
 //! - `zerocal bracket --robot R [--out FILE]`: the flange bracket's OpenSCAD parameters
 //!   from the profile's flange interface.
+//! - `zerocal check EXPORT --against ID`: after the offsets were entered, what is left.
+//! - `zerocal restore EXPORT --reference ID`: after a motor swap, back to a reference's zero.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -51,6 +53,12 @@ enum Command {
     /// Talk to a pendant over its USB serial port: status, load a robot profile and its
     /// plan, export the session, erase the store.
     Pendant(zerocal_cli::pendant::PendantArgs),
+    /// After the offsets were entered: what a check's export says is left of each
+    /// joint's offset against the session's record (recorded in the history).
+    Check(zerocal_cli::check::CheckArgs),
+    /// After a motor or gearbox change: the offsets that bring each joint back to a
+    /// reference session's zero.
+    Restore(zerocal_cli::restore::RestoreArgs),
     /// Write the flange bracket's OpenSCAD parameters (`include <flange_bracket.scad>`
     /// and the profile's ISO 9409-1 bolt circle and dowel) for the robot.
     Bracket(zerocal_cli::bracket::BracketArgs),
@@ -124,6 +132,8 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Program(args) => program::run(args),
         Command::Pendant(args) => zerocal_cli::pendant::run(args),
         Command::Bracket(args) => zerocal_cli::bracket::run(args),
+        Command::Check(args) => zerocal_cli::check::run(args),
+        Command::Restore(args) => zerocal_cli::restore::run(args),
     }
 }
 

@@ -23,9 +23,29 @@ pub fn load(name_or_path: &str) -> Result<Profile, CliError> {
         "robot profile",
     )
     .map_err(|e| match e {
-        CliError::Input(m) | CliError::Refused(m) => CliError::Input(format!("--robot: {m}")),
+        CliError::Input(m) | CliError::Refused(m) | CliError::Failed(m) => {
+            CliError::Input(format!("--robot: {m}"))
+        }
     })?;
     zerocal_profile::parse_file(name_or_path, &text).map_err(refused)
+}
+
+/// [`load`], with the profile's TOML text as read (a built-in's own text): what a
+/// record of the history keeps, so the session can be solved again as it was.
+///
+/// # Errors
+/// As [`load`].
+pub fn load_with_text(name_or_path: &str) -> Result<(Profile, String), CliError> {
+    let profile = load(name_or_path)?;
+    let text = match zerocal_profile::builtin_text(name_or_path) {
+        Some(t) if !zerocal_profile::is_file(name_or_path) => t.to_owned(),
+        _ => crate::input::read_capped(
+            std::path::Path::new(name_or_path),
+            zerocal_profile::bounds::MAX_PROFILE_BYTES,
+            "robot profile",
+        )?,
+    };
+    Ok((profile, text))
 }
 
 /// Arguments of `zerocal robots`.

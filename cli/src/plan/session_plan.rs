@@ -144,7 +144,7 @@ fn put_in_order(p: &mut Plan<f64>, order: &[usize]) {
 /// (`crate::timing::check_room`).
 fn program_refusal(profile: &Profile, poses: &SessionPoses) -> Option<String> {
     timing::check_room(profile, poses).err().map(|e| match e {
-        CliError::Input(m) | CliError::Refused(m) => m,
+        CliError::Input(m) | CliError::Refused(m) | CliError::Failed(m) => m,
     })
 }
 

@@ -81,6 +81,16 @@ pub struct SessionArgs {
     /// Print one JSON object instead of the report.
     #[arg(long)]
     pub json: bool,
+    /// Store the session in the history (`zerocal history`), with `--serial`.
+    #[arg(long, requires = "serial")]
+    pub record: bool,
+    /// The robot's serial number, as on its rating plate (with `--record`).
+    #[arg(long, value_name = "SN")]
+    pub serial: Option<String>,
+    #[command(flatten)]
+    pub meta: crate::record::RecordMeta,
+    #[command(flatten)]
+    pub db: crate::record::DbArg,
 }
 
 impl SessionArgs {
@@ -95,6 +105,10 @@ impl SessionArgs {
             repeatability_deg: DEFAULT_REPEATABILITY_DEG,
             lost_motion_deg: DEFAULT_LOST_MOTION_DEG,
             json: false,
+            record: false,
+            serial: None,
+            meta: crate::record::RecordMeta::default(),
+            db: crate::record::DbArg::default(),
         }
     }
 }
@@ -416,11 +430,34 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         "pendant export",
     )?;
     let analysis = analyse(args, &bytes)?;
+    let recorded = match (&args.serial, args.record) {
+        (Some(serial), true) => {
+            let record = crate::record::session_record(&analysis, &bytes, serial, &args.meta)?;
+            let mut history = args.db.open()?;
+            let inserted = history
+                .insert(&record)
+                .map_err(crate::record::history_error)?;
+            Some((inserted, history.location().to_owned()))
+        }
+        _ => None,
+    };
     if args.json {
-        return serde_json::to_string_pretty(&analysis.json)
-            .map_err(|e| CliError::Input(e.to_string()));
+        let mut value =
+            serde_json::to_value(&analysis.json).map_err(|e| CliError::Input(e.to_string()))?;
+        if let (Some((inserted, _)), Some(object)) = (&recorded, value.as_object_mut()) {
+            object.insert("record_id".into(), inserted.id.into());
+        }
+        return serde_json::to_string_pretty(&value).map_err(|e| CliError::Input(e.to_string()));
     }
-    Ok(render(&analysis.json))
+    let mut out = render(&analysis.json);
+    if let Some((inserted, at)) = recorded {
+        out.push_str(&if inserted.new {
+            format!("recorded: record {} in {at}\n", inserted.id)
+        } else {
+            format!("already recorded: record {} in {at} (the same export)\n", inserted.id)
+        });
+    }
+    Ok(out)
 }
 
 /// A session solved: its report and what it was solved from.
@@ -432,6 +469,8 @@ pub struct Analysis {
     pub export: ExportContents,
     /// The robot profile it was solved with.
     pub profile: Profile,
+    /// Its TOML text.
+    pub profile_toml: String,
     /// The solution (the pendant's numbers where it agrees: see the notes).
     pub solution: SessionSolution<f64>,
     /// Its budget.
@@ -446,6 +485,18 @@ pub struct Analysis {
 /// # Errors
 /// As [`run`].
 pub fn analyse(args: &SessionArgs, bytes: &[u8]) -> Result<Analysis, CliError> {
+    analyse_with(args, bytes, None)
+}
+
+/// [`analyse`] with the robot profile given (a record's own), not loaded by name.
+///
+/// # Errors
+/// As [`run`].
+pub fn analyse_with(
+    args: &SessionArgs,
+    bytes: &[u8],
+    given: Option<(Profile, String)>,
+) -> Result<Analysis, CliError> {
     let name = |what: &str| format!("{}: {what}", args.export.display());
     let text = text_of(bytes).map_err(|e| CliError::Input(name(&e.to_string())))?;
     let export = read_export(text).map_err(|e| CliError::Input(name(&e)))?;
@@ -454,7 +505,10 @@ pub fn analyse(args: &SessionArgs, bytes: &[u8]) -> Result<Analysis, CliError> {
             "no `# robot … convention …` line: not a pendant export",
         ))
     })?;
-    let profile = crate::robot::load(args.robot.as_deref().unwrap_or(&robot_name))?;
+    let (profile, profile_toml) = match given {
+        Some(p) => p,
+        None => crate::robot::load_with_text(args.robot.as_deref().unwrap_or(&robot_name))?,
+    };
     // Another robot's profile fits another arm: the solver would fail to converge or,
     // worse, converge on wrong numbers. A profile file of the same robot is welcome.
     if profile.name != robot_name {
@@ -621,6 +675,7 @@ pub fn analyse(args: &SessionArgs, bytes: &[u8]) -> Result<Analysis, CliError> {
         json,
         export,
         profile,
+        profile_toml,
         solution,
         budget,
         config,
