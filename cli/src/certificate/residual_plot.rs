@@ -15,8 +15,8 @@ use plotters::prelude::*;
 use zerocal_core::stage2::moved_reading;
 use zerocal_core::Tilt;
 
-/// The figure's size (px): the page's text width at 96 dpi, a sixth of its height.
-const SIZE: (u32, u32) = (680, 180);
+/// The figure's size (px): the page's text width at 96 dpi, a seventh of its height.
+const SIZE: (u32, u32) = (680, 155);
 
 /// The residuals (deg), one per capture of the export, x and y.
 pub(super) struct Residuals {
@@ -78,7 +78,7 @@ fn draw(out: &mut String, r: &Residuals, sigma_deg: f64) -> std::io::Result<()> 
     );
     let mut chart = ChartBuilder::on(&root)
         .margin(8)
-        .x_label_area_size(34)
+        .x_label_area_size(32)
         .y_label_area_size(64)
         .build_cartesian_2d(0f64..(n as f64 + 1.0), yr)
         .map_err(to_io)?;
@@ -86,6 +86,7 @@ fn draw(out: &mut String, r: &Residuals, sigma_deg: f64) -> std::io::Result<()> 
         .configure_mesh()
         .x_desc("capture (export row)")
         .y_desc("residual (deg)")
+        .y_labels(5)
         .x_label_formatter(&|v| format!("{v:.0}"))
         .y_label_formatter(&|v| format!("{v:.4}"))
         .light_line_style(WHITE)

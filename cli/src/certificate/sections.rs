@@ -1,7 +1,7 @@
 //! The certificate's sections, each as HTML: what was calibrated, by which method from
 //! which files, under which conditions, the offsets with their uncertainty, the
-//! decision, the budget, the residuals, the traceability and the notes. Each number
-//! through [`Printed`], each text through [`Printed::text`] or [`esc`].
+//! decision, the signatures, the budget, the residuals, the traceability and the notes.
+//! Each number through [`Printed`], each text through [`Printed::text`] or [`esc`].
 
 use super::printed::{esc, Printed};
 use super::residual_plot;
@@ -52,7 +52,7 @@ pub(super) fn title(c: &Context<'_>, p: &mut Printed) -> String {
     )
 }
 
-/// 1. The item: the robot, and where its controller takes the offsets.
+/// Section 1: the item: the robot, and where its controller takes the offsets.
 pub(super) fn item(c: &Context<'_>, p: &mut Printed) -> String {
     let j = &c.analysis.json;
     let profile = &c.analysis.profile;
@@ -76,7 +76,7 @@ pub(super) fn item(c: &Context<'_>, p: &mut Printed) -> String {
     format!("<section><h2>1. Item calibrated</h2><table class=\"kv\">{t}</table></section>")
 }
 
-/// 2. The method, its version, and the files the numbers come from.
+/// Section 2: the method, its version, and the files the numbers come from.
 pub(super) fn method(c: &Context<'_>, p: &mut Printed) -> String {
     let s = c.subject;
     let poses = p.count(c.analysis.json.poses);
@@ -133,7 +133,7 @@ fn temperature(p: &mut Printed, what: &str, t: Option<f64>) -> Result<String, Ce
     })
 }
 
-/// 3. The conditions: temperatures, the base's tilt, the fit's figures.
+/// Section 3: the conditions: temperatures, the base's tilt, the fit's figures.
 pub(super) fn conditions(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let a = c.analysis;
     let j = &a.json;
@@ -227,18 +227,17 @@ pub(super) enum JointResult {
     Exceeds,
     /// Gravity does not see this joint's zero: not judged.
     NotIdentifiable,
-    /// No tolerance stated: not judged.
-    NoTolerance,
 }
 
 impl JointResult {
-    fn of(joint: &JointJson, tolerance_deg: Option<f64>) -> Self {
-        match (joint.identifiable, tolerance_deg) {
-            (false, _) => JointResult::NotIdentifiable,
-            (true, None) => JointResult::NoTolerance,
-            // Unrounded, so a U printed equal to the tolerance may still exceed it.
-            (true, Some(t)) if joint.expanded_k2_deg <= t => JointResult::Conforms,
-            (true, Some(_)) => JointResult::Exceeds,
+    fn of(joint: &JointJson, tolerance_deg: f64) -> Self {
+        if !joint.identifiable {
+            JointResult::NotIdentifiable
+        // Unrounded, so a U printed equal to the tolerance may still exceed it.
+        } else if joint.expanded_k2_deg <= tolerance_deg {
+            JointResult::Conforms
+        } else {
+            JointResult::Exceeds
         }
     }
 
@@ -247,12 +246,12 @@ impl JointResult {
             JointResult::Conforms => "conforms",
             JointResult::Exceeds => "DOES NOT CONFORM",
             JointResult::NotIdentifiable => "not judged",
-            JointResult::NoTolerance => "no tolerance stated",
         }
     }
 }
 
-/// 4. The offsets in the controller's terms with their expanded uncertainty.
+/// Section 4: the offsets in the controller's terms with their expanded uncertainty,
+/// and each joint's result where a tolerance is stated.
 pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let j = &c.analysis.json;
     let profile = &c.analysis.profile;
@@ -266,10 +265,10 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
         if !joint.identifiable {
             let _ = write!(
                 rows,
-                "<tr><td>{name}</td><td colspan=\"5\">not identifiable by gravity: its axis is \
-                 parallel to the joint's before it in every pose, so gravity sees only their \
-                 sum, carried by that joint's line; its zero needs another method (the \
-                 controller's mastering marks or a fixture)</td></tr>"
+                "<tr><td>{name}</td><td colspan=\"{}\">not identifiable by gravity (parallel \
+                 to the joint before it, whose line carries their sum): its zero needs another \
+                 method; see the notes</td></tr>",
+                if tolerance.is_some() { 5 } else { 4 }
             );
             continue;
         }
@@ -290,11 +289,13 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
             (None, None) => "not given".to_owned(),
         };
         let u = p.fixed(&what("U"), joint.expanded_k2_deg, DEG_DECIMALS)?;
-        let result = JointResult::of(joint, tolerance).words();
+        let result = tolerance.map_or_else(String::new, |t| {
+            format!("<td>{}</td>", JointResult::of(joint, t).words())
+        });
         let _ = write!(
             rows,
             "<tr><td>{name}</td><td class=\"num\">{model}</td><td class=\"num\">{shown}</td>\
-             <td class=\"num\">{in_unit}</td><td class=\"num\">{u}</td><td>{result}</td></tr>"
+             <td class=\"num\">{in_unit}</td><td class=\"num\">{u}</td>{result}</tr>"
         );
     }
     let first = profile
@@ -305,8 +306,8 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
         "<p class=\"small\">Δq = true − commanded as the controller shows the joint: each \
          joint's reading moves by +Δq (where, and with which sign: docs/controllers/{}.md). \
          Δθ is the offset in the model's terms, which the budget is for; U is its expanded \
-         uncertainty, k = {kk}, about 95 % coverage for a near-normal distribution. {first} \
-         is not determined by this method.",
+         uncertainty, k = {kk}, about 95&nbsp;% coverage for a near-normal distribution. Joint 1 \
+         ({first}) is not determined by this method.",
         p.text(&j.family)
     );
     if profile.controller.coupling == Coupling::J3MinusJ2 {
@@ -326,12 +327,17 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
         "<section><h2>4. Results: zero offsets</h2><table class=\"grid\"><thead><tr>\
          <th>Joint</th><th class=\"num\">Δθ, model (deg)</th>\
          <th class=\"num\">Δq, controller (deg)</th><th class=\"num\">Δq in its unit</th>\
-         <th class=\"num\">U, k = {kk} (deg)</th><th>Result</th></tr></thead>\
-         <tbody>{rows}</tbody></table>{after}</section>"
+         <th class=\"num\">U, k = {kk} (deg)</th>{}</tr></thead>\
+         <tbody>{rows}</tbody></table>{after}</section>",
+        if tolerance.is_some() {
+            "<th>Result</th>"
+        } else {
+            ""
+        }
     ))
 }
 
-/// 5. The decision rule in words, the result per joint and overall, and the warnings.
+/// Section 5: the decision rule in words, the result per joint and overall, and the warnings.
 pub(super) fn decision(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let j = &c.analysis.json;
     let kk = k(p)?;
@@ -364,7 +370,7 @@ pub(super) fn decision(c: &Context<'_>, p: &mut Printed) -> Result<String, Certi
             let exceeding: Vec<String> = j
                 .joints
                 .iter()
-                .filter(|x| JointResult::of(x, Some(t)) == JointResult::Exceeds)
+                .filter(|x| JointResult::of(x, t) == JointResult::Exceeds)
                 .map(|x| esc(&x.name))
                 .collect();
             if !exceeding.is_empty() {
@@ -421,7 +427,23 @@ fn tolerance_decimals(t: f64) -> usize {
         .unwrap_or(DEG_DECIMALS)
 }
 
-/// 7. The uncertainty budget: every term for every joint, combined and expanded.
+/// Section 6: the statements and the signatures.
+pub(super) fn authorization(c: &Context<'_>, p: &mut Printed) -> String {
+    let id = p.count(c.subject.record_id);
+    format!(
+        "<section class=\"sign\"><h2>6. Authorization</h2><p class=\"small\">The results \
+         relate only to the robot identified above, as it was when measured (record {id}); \
+         the export and the profile of the SHA-256 above, solved again \
+         (<code>zerocal session</code>), give these numbers. This certificate shall not be \
+         reproduced except in full.</p>\
+         <table class=\"signatures\"><tr><td>Measured by</td><td>Checked by</td>\
+         <td>Authorized by</td></tr><tr class=\"blank\"><td>name, signature, date</td>\
+         <td>name, signature, date</td><td>name, function, signature, date</td></tr></table>\
+         </section>"
+    )
+}
+
+/// Section 7: the uncertainty budget: every term for every joint, combined and expanded.
 pub(super) fn budget(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let j = &c.analysis.json;
     let combined = &c.analysis.budget.combined_rad;
@@ -481,9 +503,9 @@ pub(super) fn budget(c: &Context<'_>, p: &mut Printed) -> Result<String, Certifi
     let held = j.joints.iter().any(|x| !x.identifiable);
     Ok(format!(
         "<section><h2>7. Uncertainty budget</h2><table class=\"grid budget\"><thead><tr>{head}\
-         </tr></thead><tbody>{rows}</tbody></table><p class=\"small\">After the GUM (JCGM \
-         100:2008): standard uncertainties of Δθ, Type A from this session's readings, Type B \
-         from stated tolerances, combined in quadrature.{}</p></section>",
+         </tr></thead><tbody>{rows}</tbody></table><p class=\"small\">GUM (JCGM 100:2008): \
+         standard uncertainties of Δθ, Type A from this session, Type B from stated \
+         tolerances, combined in quadrature.{}</p></section>",
         if held {
             " (b) not identifiable by gravity: its column is not a zero's uncertainty."
         } else {
@@ -492,7 +514,7 @@ pub(super) fn budget(c: &Context<'_>, p: &mut Printed) -> Result<String, Certifi
     ))
 }
 
-/// 8. The residual figure, with the σ it is judged against.
+/// Section 8: the residual figure, with the σ it is judged against.
 pub(super) fn residuals(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let r = residual_plot::residuals(c.analysis)?;
     let sigma_deg = c.analysis.solution.fit.noise_sigma_rad.to_degrees();
@@ -500,16 +522,16 @@ pub(super) fn residuals(c: &Context<'_>, p: &mut Printed) -> Result<String, Cert
     let svg = residual_plot::svg(&r, sigma_deg)?;
     Ok(format!(
         "<section class=\"figure\"><h2>8. Residuals of the fit</h2><div class=\"svg\">{svg}</div>\
-         <p class=\"small\">Each stage-2 capture's reading less the fitted model's, x (●) and \
-         y (▲), in export row order; dashed: ±σ = {sigma} deg, the fit's σ per reading ({}). \
-         The fit averages each pose's two captures, cancelling the gears' play; a capture \
-         also holds its side of the play, so captures scatter wider than σ. A trend along \
-         the captures, not scatter, is a model that does not fit the arm.</p></section>",
+         <p class=\"small\">The reading less the fitted model's reading at each stage-2 \
+         capture, x (●) and y (▲), in export row order; dashed: ±σ = {sigma} deg, the fit's σ \
+         per reading ({}). The fit averages each pose's two captures, cancelling the gears' \
+         play that a single capture holds: captures scatter wider than σ. A trend, not \
+         scatter, is a model that does not fit the arm.</p></section>",
         sigma_source(c.analysis.solution.fit.sigma_source)
     ))
 }
 
-/// 9. Traceability: the pendant, its measuring element, and each bracket's calibration.
+/// Section 9: traceability: the pendant, its measuring element, and each bracket's calibration.
 pub(super) fn traceability(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let brackets = &c.analysis.export.brackets;
     let mut t = String::new();
@@ -524,9 +546,9 @@ pub(super) fn traceability(c: &Context<'_>, p: &mut Printed) -> Result<String, C
     row(
         &mut t,
         "Measuring element",
-        "Murata SCL3300 MEMS inclinometer in the pendant, read on two axes, against the \
-         local direction of gravity: stage 0's reversal measures its offset; what the fit \
-         estimates of it is in the budget.",
+        "Murata SCL3300 MEMS inclinometer in the pendant (x and y), against the local \
+         direction of gravity: stage 0's reversal measures its offset, the fit's estimates \
+         of it are in the budget.",
     );
     let mut rows = String::new();
     for mount in BracketMount::ALL {
@@ -549,7 +571,7 @@ pub(super) fn traceability(c: &Context<'_>, p: &mut Printed) -> Result<String, C
                     "<tr><td>{name}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td>\
                      <td>{yaw}</td></tr>",
                     p.text(cal.id.as_str()),
-                    p.text(&bracket_date(cal.date)),
+                    p.text(&crate::report_notes::calibration_date(cal.date)),
                     p.fixed(
                         &format!("the {} bracket's uncertainty", mount.name()),
                         cal.uncertainty_rad.to_degrees(),
@@ -576,17 +598,7 @@ pub(super) fn traceability(c: &Context<'_>, p: &mut Printed) -> Result<String, C
     ))
 }
 
-/// A bracket calibration's `YYYYMMDD` as `YYYY-MM-DD`.
-fn bracket_date(date: u32) -> String {
-    format!(
-        "{}-{:02}-{:02}",
-        date / 10_000,
-        (date / 100) % 100,
-        date % 100
-    )
-}
-
-/// 10. The session's notes: what was assumed, what the profile lacks.
+/// Section 10: the session's notes: what was assumed, what the profile lacks.
 pub(super) fn notes(c: &Context<'_>, p: &mut Printed) -> String {
     let mut out =
         String::from("<section class=\"notes-section\"><h2>10. Notes</h2><ul class=\"notes\">");
@@ -597,18 +609,14 @@ pub(super) fn notes(c: &Context<'_>, p: &mut Printed) -> String {
     out
 }
 
-/// 6. The statements and the signatures.
-pub(super) fn authorization(c: &Context<'_>, p: &mut Printed) -> String {
-    let id = p.count(c.subject.record_id);
-    format!(
-        "<section class=\"sign\"><h2>6. Authorization</h2><p class=\"small\">The results \
-         relate only to the robot identified above, as it was when measured (record {id}); \
-         the export and the profile of the SHA-256 above, solved again \
-         (<code>zerocal session</code>), give these numbers. This certificate shall not be \
-         reproduced except in full.</p>\
-         <table class=\"signatures\"><tr><td>Measured by</td><td>Checked by</td>\
-         <td>Authorized by</td></tr><tr class=\"blank\"><td>name, signature, date</td>\
-         <td>name, signature, date</td><td>name, function, signature, date</td></tr></table>\
-         </section>"
-    )
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tolerance_prints_as_stated() {
+        for (t, decimals) in [(0.05, 2), (0.005, 3), (0.02, 2), (1.0, 0), (0.012_345_6, 5)] {
+            assert_eq!(tolerance_decimals(t), decimals, "{t}");
+        }
+    }
 }
