@@ -109,7 +109,7 @@ fn print_to_pdf(tools: &RenderTools, html: &Path, pdf: &Path, outdir: &Path) -> 
         ])
         .arg(format!("--user-data-dir={}", profile.display()))
         .arg(format!("--print-to-pdf={}", pdf.display()))
-        .arg(format!("file://{}", html.display()))
+        .arg(file_url(html)?)
         .stdin(Stdio::null())
         .stdout(log)
         .stderr(log_err)
@@ -136,8 +136,15 @@ fn print_to_pdf(tools: &RenderTools, html: &Path, pdf: &Path, outdir: &Path) -> 
     let _ = std::fs::remove_dir_all(&profile);
     let written = std::fs::metadata(pdf).map(|m| m.len()).unwrap_or(0);
     if !status.success() || written == 0 {
+        // Chromium exits 0 when the page did not load; its log says why.
+        let why = std::fs::read_to_string(&log_path)
+            .unwrap_or_default()
+            .lines()
+            .filter(|l| l.contains("Page load failed"))
+            .map(|l| format!(": {}", l.rsplit("] ").next().unwrap_or(l)))
+            .collect::<String>();
         bail!(
-            "chromium ({status}) wrote no PDF at {} (its output: {})",
+            "chromium ({status}) wrote no PDF at {}{why} (its output: {})",
             pdf.display(),
             log_path.display()
         );
@@ -160,6 +167,23 @@ fn first_page_png(tools: &RenderTools, pdf: &Path, png: &Path) -> Result<()> {
         bail!("pdftoppm wrote no {}", png.display());
     }
     Ok(())
+}
+
+/// `path` (absolute) as a `file://` URL, every byte but the unreserved ones and `/`
+/// percent-encoded: a space or a `#` in a directory's name would otherwise end the path.
+fn file_url(path: &Path) -> Result<String> {
+    let text = path
+        .to_str()
+        .with_context(|| format!("path is not UTF-8: {}", path.display()))?;
+    let mut url = String::from("file://");
+    for b in text.bytes() {
+        if b.is_ascii_alphanumeric() || matches!(b, b'/' | b'-' | b'_' | b'.' | b'~') {
+            url.push(char::from(b));
+        } else {
+            url.push_str(&format!("%{b:02X}"));
+        }
+    }
+    Ok(url)
 }
 
 /// A tool's standard output; its standard error in the message when it fails.
@@ -208,6 +232,16 @@ mod tests {
         let wanted = "+0.01234\n\n0.00412\n-0.00210\n0.00999\n+0.00388\n";
         assert_eq!(missing_numbers(text, wanted), vec!["0.00999", "+0.00388"]);
         assert!(missing_numbers(text, "0.00388\n").is_empty());
+    }
+
+    #[test]
+    fn a_path_becomes_a_file_url() {
+        assert_eq!(
+            file_url(Path::new("/tmp/a b/#1/cert-ä.html"))
+                .ok()
+                .as_deref(),
+            Some("file:///tmp/a%20b/%231/cert-%C3%A4.html")
+        );
     }
 
     #[test]
