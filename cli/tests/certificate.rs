@@ -488,6 +488,25 @@ fn a_non_finite_number_is_refused_by_name() {
         Err(CertificateError::NotFinite { what, .. }) => assert!(what.contains('β'), "{what}"),
         other => panic!("{other:?}"),
     }
+    // A capture's temperature: the line is named.
+    let mut a = kr6();
+    a.export.poses[3].temperature_c = Some(f64::NAN);
+    let line = a.export.lines[3];
+    match certificate_issued_on(&subject(), &a, ISSUED) {
+        Err(CertificateError::NotFinite { what, .. }) => {
+            assert!(what.contains(&format!("line {line}")), "{what}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // And one inside a note the certificate quotes.
+    let mut a = kr6();
+    a.json.notes.push("the drift was NaN K".into());
+    match certificate_issued_on(&subject(), &a, ISSUED) {
+        Err(CertificateError::NotFinite { what, .. }) => {
+            assert!(what.contains("the drift was NaN K"), "{what}");
+        }
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]

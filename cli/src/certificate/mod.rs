@@ -28,6 +28,7 @@ use crate::session::Analysis;
 use clap::Args;
 use std::fmt;
 use std::path::{Path, PathBuf};
+use zerocal_core::stage2::MEMS_RANGE_DEG;
 
 /// What the history record adds to the session: the robot's identity, when and by
 /// whom it was measured, and what the numbers were computed from.
@@ -118,9 +119,9 @@ impl From<CertificateError> for CliError {
     }
 }
 
-/// A tolerance per joint wider than the sensor's ±10° window (the range a session's
-/// readings are planned in) would accept any session: none is meant.
-const TOLERANCE: RealIn = RealIn::above(0.0, 10.0, "deg");
+/// A tolerance per joint wider than the sensor's specified range (mode 4's ±10°, within
+/// which every reading of a session lies) would accept any session: none is meant.
+const TOLERANCE: RealIn = RealIn::above(0.0, MEMS_RANGE_DEG, "deg");
 
 /// Arguments of `zerocal certificate` (the history database's option is the history's).
 #[derive(Args, Debug, Clone)]
@@ -226,7 +227,7 @@ fn check_subject(s: &CertificateSubject) -> Result<(), CertificateError> {
         if !TOLERANCE.contains(t) {
             return Err(CertificateError::Subject {
                 field: "tolerance_deg",
-                why: format!("{t} deg is outside (0, 10] deg"),
+                why: format!("{t} deg is outside (0, {MEMS_RANGE_DEG}] deg"),
             });
         }
     }

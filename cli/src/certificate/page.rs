@@ -75,5 +75,41 @@ pub(super) fn page(c: &Context<'_>) -> Result<(String, Printed), CertificateErro
          {title}\n{item}\n{method}\n{conditions}\n{results}\n{decision}\n{authorization}\n\
          {budget}\n{residuals}\n{traceability}\n{notes}\n</body></html>\n"
     );
+    refuse_non_finite_words(&html)?;
     Ok((html, p))
+}
+
+/// Refuses a document that prints `NaN` or `inf` anywhere: every number of the
+/// certificate's own is checked where it is formatted, and this catches one inside a
+/// text it quotes (a note, a warning).
+fn refuse_non_finite_words(html: &str) -> Result<(), CertificateError> {
+    for word in html.split(|c: char| !c.is_ascii_alphanumeric()) {
+        if matches!(word, "NaN" | "inf") {
+            // The word's place in the document (a split's piece lies inside it).
+            let at = word.as_ptr() as usize - html.as_ptr() as usize;
+            let before: Vec<char> = html[..at].chars().rev().take(40).collect();
+            let before: String = before.into_iter().rev().collect();
+            let after: String = html[at..].chars().take(word.len() + 40).collect();
+            return Err(CertificateError::NotFinite {
+                what: format!("a number in the text '…{before}{after}…'"),
+                value: f64::NAN,
+            });
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_nan_inside_a_quoted_text_is_refused() {
+        for bad in ["<li>u NaN deg</li>", "<li>drift +inf K</li>", "(inf)"] {
+            assert!(refuse_non_finite_words(bad).is_err(), "{bad}");
+        }
+        for good in ["information", "infinite", "NaNo", "<li>u 0.0004 deg</li>"] {
+            assert!(refuse_non_finite_words(good).is_ok(), "{good}");
+        }
+    }
 }

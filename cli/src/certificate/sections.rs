@@ -145,6 +145,20 @@ pub(super) fn conditions(c: &Context<'_>, p: &mut Printed) -> Result<String, Cer
     )?;
     let stage1 = temperature(p, "stage 1's temperature", e.stage1_temperature_c)?;
     let temps: Vec<f64> = e.poses.iter().filter_map(|r| r.temperature_c).collect();
+    // `f64::min` would pass over a NaN: refuse it first, naming its line.
+    if let Some(i) = e
+        .poses
+        .iter()
+        .position(|r| r.temperature_c.is_some_and(|t| !t.is_finite()))
+    {
+        return Err(CertificateError::NotFinite {
+            what: format!(
+                "the temperature of the capture on the export's line {}",
+                e.lines.get(i).copied().unwrap_or(0)
+            ),
+            value: e.poses[i].temperature_c.unwrap_or(f64::NAN),
+        });
+    }
     let stage2 = match (
         temps.iter().copied().reduce(f64::min),
         temps.iter().copied().reduce(f64::max),
