@@ -238,6 +238,9 @@ fn the_certificate_holds_every_required_item() {
     }
     // The residual figure, its σ, and the page.
     holds(&c, "the residual figure", "<svg");
+    // One mark per capture: x as a circle, y as a triangle.
+    assert_eq!(c.html.matches("<circle").count(), e.poses.len(), "x marks");
+    assert_eq!(c.html.matches("<polygon").count(), e.poses.len(), "y marks");
     holds(
         &c,
         "the fit's σ",
