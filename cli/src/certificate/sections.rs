@@ -9,6 +9,7 @@ use super::{CertificateError, CertificateSubject};
 use crate::session::{Analysis, JointJson};
 use std::fmt::Write as _;
 use zerocal_core::bracket::{BracketMount, UNCALIBRATED_BRACKET_DEG};
+use zerocal_core::report::RESIDUAL_WARN_FACTOR;
 use zerocal_core::session::COVERAGE_FACTOR;
 use zerocal_core::stage2::SigmaSource;
 use zerocal_profile::Coupling;
@@ -23,8 +24,8 @@ pub(super) struct Context<'a> {
     pub issued_on: &'a str,
 }
 
-/// Degrees of an offset, its uncertainty and the budget's terms: the 0.00001° the
-/// session's report prints, ten times finer than the best U a session reaches.
+/// Decimals of an offset, its uncertainty and the budget's terms (deg): the 0.00001°
+/// `zerocal session`'s report prints, so the two agree digit for digit.
 const DEG_DECIMALS: usize = 5;
 
 /// The coverage factor as printed.
@@ -358,9 +359,12 @@ pub(super) fn decision(c: &Context<'_>, p: &mut Printed) -> Result<String, Certi
     let mut out = String::from("<section><h2>5. Decision rule and result</h2>");
     let _ = write!(
         out,
-        "<p><b>Acceptance of the session:</b> accepted when the solver raised no warning \
-         (residuals within the sensor's noise, a well-conditioned pose set, the stages' \
-         checks of one another passed); any warning withholds it.</p>"
+        "<p><b>Acceptance of the session:</b> accepted when the solver raised no warning: \
+         the residual RMS within {} times the sensor's noise, the sensor's bias measured by \
+         stage 0's reversal, enough poses to estimate σ from the residuals. Any warning \
+         withholds acceptance. (A session the solver refuses has no numbers and no \
+         certificate.)</p>",
+        p.count(RESIDUAL_WARN_FACTOR)
     );
     let mut overall_pass = j.pass;
     let mut failures: Vec<String> = Vec::new();
@@ -557,12 +561,20 @@ pub(super) fn traceability(c: &Context<'_>, p: &mut Printed) -> Result<String, C
             .as_deref()
             .map_or_else(|| "not recorded".to_owned(), |u| p.text(u)),
     );
+    let e = &c.analysis.export;
+    let offset = if e.stage0.is_some() || e.bias.flatten().is_some() {
+        "stage 0's reversal measured its offset"
+    } else {
+        "no stage-0 reversal measured its offset, which the budget carries at its \
+         specification"
+    };
     row(
         &mut t,
         "Measuring element",
-        "Murata SCL3300 MEMS inclinometer in the pendant (x and y), against the local \
-         direction of gravity: stage 0's reversal measures its offset, the fit's estimates \
-         of it are in the budget.",
+        &format!(
+            "Murata SCL3300 MEMS inclinometer in the pendant (x and y), against the local \
+             direction of gravity: {offset}; the fit's estimates of it are in the budget."
+        ),
     );
     let mut rows = String::new();
     for mount in BracketMount::ALL {
