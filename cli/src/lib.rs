@@ -4,6 +4,7 @@
 pub mod args;
 pub mod bracket;
 pub mod brackets;
+pub mod certificate;
 pub mod check;
 pub mod compare;
 pub mod diagnose;

@@ -17,12 +17,12 @@ const SIZE: (u32, u32) = (900, 640);
 const BEFORE: RGBColor = RGBColor(200, 40, 40);
 const AFTER: RGBColor = RGBColor(30, 90, 200);
 
-fn to_io<E: std::fmt::Display>(e: E) -> io::Error {
+pub(crate) fn to_io<E: std::fmt::Display>(e: E) -> io::Error {
     io::Error::other(e.to_string())
 }
 
 /// Symmetric y range covering `values`, never empty.
-fn y_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
+pub(crate) fn y_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     let m = values.fold(
         0.0_f64,
         |m, v| if v.is_finite() { m.max(v.abs()) } else { m },

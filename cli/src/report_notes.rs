@@ -14,14 +14,12 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
         .into_iter()
         .map(|m| match brackets.get(m) {
             Some(c) => format!(
-                "{} bracket {}: calibrated {}-{:02}-{:02} at {:.1} C, turn {:+.4} deg about the \
+                "{} bracket {}: calibrated {} at {:.1} C, turn {:+.4} deg about the \
                  joint's axis ({:+.4} deg across), u {:.4} deg, applied; with the seat's \
                  +/-{} deg the budget's '{}' term is {:.4} deg; {}",
                 m.name(),
                 c.id,
-                c.date / 10_000,
-                (c.date / 100) % 100,
-                c.date % 100,
+                calibration_date(c.date),
                 c.temperature_c,
                 c.rotation_rad.x_rad.to_degrees(),
                 c.rotation_rad.y_rad.to_degrees(),
@@ -60,6 +58,16 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
             ),
         })
         .collect()
+}
+
+/// A bracket calibration's date, `YYYYMMDD` as stored, as `YYYY-MM-DD`.
+pub fn calibration_date(date: u32) -> String {
+    format!(
+        "{}-{:02}-{:02}",
+        date / 10_000,
+        (date / 100) % 100,
+        date % 100
+    )
 }
 
 /// What the offsets mean on a real arm, and which of its geometry the fit estimated.

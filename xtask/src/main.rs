@@ -7,6 +7,7 @@
 //! one owner of that knowledge; `cargo xtask setup` runs it alone.
 
 mod cad;
+mod certificate;
 mod dfu;
 mod dist;
 mod fuzz;
@@ -40,7 +41,8 @@ enum Command {
     /// Install and check what the thumb build and the QEMU check need (rustup's thumb
     /// target with its own rust-lld, `rustup target add` tried when missing; else
     /// Debian's rustc-web, cargo-web, rust-web-src and the lld-N of its LLVM;
-    /// qemu-system-arm), and print which tools are used.
+    /// qemu-system-arm; chromium, poppler-utils and fonts-dejavu-core for the
+    /// certificate), and print which tools are used.
     Setup,
     /// Build the release firmware (firmware/, thumbv7em-none-eabihf) and print its
     /// flash and static RAM use.
@@ -97,6 +99,19 @@ enum Command {
         /// The pendant-sim output directory, with session.txt beside its export.
         dir: PathBuf,
     },
+    /// Print a calibration certificate (`zerocal certificate`'s FILE.html) to
+    /// OUTDIR/certificate.pdf with headless Chromium and its first page to
+    /// OUTDIR/certificate.png; then fail naming each number of NUMBERS (FILE.numbers, one
+    /// a line) that the PDF's text does not hold, or a PDF of more than two A4 pages.
+    /// Installs chromium and poppler-utils when missing (as root).
+    CertificateRender {
+        /// The certificate's HTML.
+        html: PathBuf,
+        /// Every number it prints, one a line.
+        numbers: PathBuf,
+        /// Where the PDF and the PNG go (created).
+        outdir: PathBuf,
+    },
     /// Render the bracket designs of cad/ to docs/cad/*.png with OpenSCAD (under
     /// xvfb-run when there is no display). Not run by CI: run it after changing a
     /// design and commit the pictures.
@@ -136,6 +151,11 @@ fn main() -> Result<()> {
         Command::TargetTest => target_test::run(&repo_root(), cli.toolchain),
         Command::PendantAgree { dir } => pendant_sim::agree(&dir),
         Command::Cad => cad::run(&repo_root()),
+        Command::CertificateRender {
+            html,
+            numbers,
+            outdir,
+        } => certificate::run(&html, &numbers, &outdir),
         Command::PendantSim {
             out,
             seed,

@@ -1,5 +1,6 @@
-//! Provisioning: the one place that knows which tools the thumb build and the QEMU check
-//! need, where they live, and how to install them (`cargo xtask setup`).
+//! Provisioning: the one place that knows which tools the thumb build, the QEMU check and
+//! the certificate's rendering need, where they live, and how to install them (`cargo
+//! xtask setup`).
 //!
 //! Every xtask command that builds for the pendant's CPU or runs QEMU calls
 //! [`provision`] first; `.ci/run` calls `cargo xtask setup` and repeats no package list
@@ -24,7 +25,9 @@
 //! Debian's; `cargo xtask setup` first tries `rustup target add` (which fails offline).
 //! Installing is `apt-get install -y --no-install-recommends` as root (anyone else is
 //! told the command); QEMU (`qemu-system-arm`) for `cargo xtask target-test` comes the
-//! same way.
+//! same way, and so do the certificate's renderer and its check (`chromium`,
+//! `poppler-utils`, and `fonts-dejavu-core` so that the printed page's font is the same
+//! on every machine) for `cargo xtask certificate-render`.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -88,6 +91,26 @@ fn qemu_package() -> Package {
     Package::new("qemu-system-arm", "/usr/bin/qemu-system-arm")
 }
 
+/// What renders a certificate's HTML to PDF and checks it: headless Chromium, poppler's
+/// `pdftotext`, `pdftoppm` and `pdfinfo`, and the font the page names first.
+fn render_packages() -> [Package; 3] {
+    [
+        Package::new("chromium", CHROMIUM),
+        Package::new("poppler-utils", PDFTOTEXT),
+        Package::new(
+            "fonts-dejavu-core",
+            "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+        ),
+    ]
+}
+
+/// Debian's headless-capable Chromium.
+const CHROMIUM: &str = "/usr/bin/chromium";
+/// poppler-utils' tools, one package.
+const PDFTOTEXT: &str = "/usr/bin/pdftotext";
+const PDFTOPPM: &str = "/usr/bin/pdftoppm";
+const PDFINFO: &str = "/usr/bin/pdfinfo";
+
 /// Variables that cargo, rustc's wrappers and rustup set for the process running
 /// xtask. Left in place they would make the child build use the host toolchain, the
 /// host's target directory, its flags or its manifest.
@@ -116,19 +139,48 @@ pub struct Needs {
     pub thumb: bool,
     /// `qemu-system-arm`.
     pub qemu: bool,
+    /// Chromium and poppler-utils ([`RenderTools`]).
+    pub render: bool,
 }
 
 impl Needs {
-    /// Everything (`cargo xtask setup`, the target test).
+    /// Everything (`cargo xtask setup`).
     pub const ALL: Needs = Needs {
         thumb: true,
         qemu: true,
+        render: true,
+    };
+    /// The thumb build and QEMU (the target test).
+    pub const TARGET_TEST: Needs = Needs {
+        thumb: true,
+        qemu: true,
+        render: false,
     };
     /// The thumb build only.
     pub const THUMB: Needs = Needs {
         thumb: true,
         qemu: false,
+        render: false,
     };
+    /// The certificate's renderer only.
+    pub const RENDER: Needs = Needs {
+        thumb: false,
+        qemu: false,
+        render: true,
+    };
+}
+
+/// What prints a certificate and reads it back, each by absolute path.
+#[derive(Clone, Debug)]
+pub struct RenderTools {
+    /// Headless Chromium.
+    pub chromium: PathBuf,
+    /// The PDF's text, laid out (`pdftotext -layout`).
+    pub pdftotext: PathBuf,
+    /// A PDF page as PNG.
+    pub pdftoppm: PathBuf,
+    /// The PDF's page count.
+    pub pdfinfo: PathBuf,
 }
 
 /// The tools found, each by absolute path.
@@ -138,6 +190,8 @@ pub struct Tools {
     pub thumb: Option<ThumbToolchain>,
     /// `qemu-system-arm`, if asked for.
     pub qemu: Option<PathBuf>,
+    /// The certificate's renderer, if asked for.
+    pub render: Option<RenderTools>,
 }
 
 impl Tools {
@@ -159,6 +213,16 @@ impl Tools {
         self.qemu
             .as_deref()
             .context("internal: QEMU was not provisioned")
+    }
+
+    /// The certificate's renderer.
+    ///
+    /// # Errors
+    /// When [`provision`] was not asked for it.
+    pub fn render(&self) -> Result<&RenderTools> {
+        self.render
+            .as_ref()
+            .context("internal: the certificate's renderer was not provisioned")
     }
 }
 
@@ -237,6 +301,9 @@ pub fn provision(needs: Needs, choice: ToolchainChoice) -> Result<Tools> {
     if needs.qemu && !installed(&qemu_package()) {
         missing.push(qemu_package());
     }
+    if needs.render {
+        missing.extend(render_packages().into_iter().filter(|p| !installed(p)));
+    }
     if !missing.is_empty() {
         install(&missing)?;
     }
@@ -252,7 +319,22 @@ pub fn provision(needs: Needs, choice: ToolchainChoice) -> Result<Tools> {
     } else {
         None
     };
-    Ok(Tools { thumb, qemu })
+    let render = if needs.render {
+        require(&render_packages())?;
+        Some(RenderTools {
+            chromium: CHROMIUM.into(),
+            pdftotext: PDFTOTEXT.into(),
+            pdftoppm: PDFTOPPM.into(),
+            pdfinfo: PDFINFO.into(),
+        })
+    } else {
+        None
+    };
+    Ok(Tools {
+        thumb,
+        qemu,
+        render,
+    })
 }
 
 /// Debian's toolchain, its rustc installed: the `lld-N` of rustc's LLVM (installed if
@@ -333,6 +415,9 @@ pub fn setup(choice: ToolchainChoice) -> Result<()> {
     println!("  rustc:  {}", thumb.rustc.display());
     println!("  linker: {}", thumb.linker.display());
     println!("qemu:     {}", tools.qemu()?.display());
+    let render = tools.render()?;
+    println!("chromium: {}", render.chromium.display());
+    println!("pdftotext: {}", render.pdftotext.display());
     Ok(())
 }
 

@@ -196,7 +196,7 @@ pub fn run(root: &Path, choice: ToolchainChoice) -> Result<()> {
     );
 
     let program_dir = root.join("target-test");
-    let tools = crate::toolchain::provision(crate::toolchain::Needs::ALL, choice)?;
+    let tools = crate::toolchain::provision(crate::toolchain::Needs::TARGET_TEST, choice)?;
     let toolchain = tools.thumb()?;
     // The child cargo (and its build script) inherit xtask's environment; xtask is
     // single-threaded here.

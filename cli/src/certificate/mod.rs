@@ -1,0 +1,317 @@
+//! `zerocal certificate ID --out FILE.html`: a calibration certificate for one session of
+//! the history, in the manner of ISO/IEC 17025 §7.8 (the certificate's content) and
+//! §7.8.6 (a statement of conformity with its decision rule). One self-contained HTML
+//! page set for A4 (inline CSS and SVG; no external file, font or script), printed to
+//! PDF by headless Chromium (`cargo xtask certificate-render`).
+//!
+//! Everything on it comes from the history record ([`CertificateSubject`]: what was
+//! measured, when, by whom, with which pendant, and the SHA-256 of the profile and the
+//! export) and from the session solved again from its stored export
+//! ([`crate::session::analyse`]): the numbers are those `zerocal session` gives for that
+//! export, so the certificate can be checked by re-solving the export.
+//!
+//! Every number goes through one formatter that refuses a non-finite value, naming it,
+//! and lists the number as printed ([`Certificate::printed_numbers`]), so the PDF can be
+//! checked to hold every one; every text is escaped for HTML. docs/certificate.md says
+//! what each section is for.
+
+mod page;
+mod printed;
+mod residual_plot;
+mod sections;
+
+pub use printed::esc as escape_html;
+
+use crate::args::RealIn;
+use crate::error::CliError;
+use crate::session::Analysis;
+use clap::Args;
+use std::fmt;
+use std::path::{Path, PathBuf};
+use zerocal_core::stage2::MEMS_RANGE_DEG;
+
+/// What the history record adds to the session: the robot's identity, when and by
+/// whom it was measured, and what the numbers were computed from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CertificateSubject {
+    /// The record's number: the certificate's number.
+    pub record_id: i64,
+    /// The robot's serial number.
+    pub serial: String,
+    /// When the session was measured, `YYYY-MM-DD`.
+    pub measured_on: String,
+    /// When the record was stored (as the history keeps it).
+    pub recorded_at: String,
+    /// Who measured, if recorded.
+    pub operator: Option<String>,
+    /// The pendant's identification, if recorded.
+    pub pendant_unit: Option<String>,
+    /// SHA-256 of the robot profile the session was solved with (64 hex digits).
+    pub profile_sha256: String,
+    /// SHA-256 of the pendant's export (64 hex digits).
+    pub export_sha256: String,
+    /// The zerocal version that solved the session.
+    pub zerocal_version: String,
+    /// The decision's tolerance per joint (deg), if one is stated: a joint conforms when
+    /// its U (k = 2) is at most this.
+    pub tolerance_deg: Option<f64>,
+}
+
+/// A certificate: its HTML and every number it prints.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Certificate {
+    /// The certificate, a self-contained HTML document for A4.
+    pub html: String,
+    /// Every number printed in its text (as printed; the figure's axis scale is not
+    /// among them), for the check that the PDF holds them all.
+    pub printed_numbers: Vec<String>,
+}
+
+/// Why no certificate could be written.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CertificateError {
+    /// A quantity to be printed is not a finite number: the session's numbers cannot
+    /// be certified.
+    NotFinite {
+        /// Which quantity.
+        what: String,
+        /// Its value.
+        value: f64,
+    },
+    /// A field of the record is not what a certificate can state.
+    Subject {
+        /// The field.
+        field: &'static str,
+        /// What is wrong with it.
+        why: String,
+    },
+    /// The residual figure could not be drawn.
+    Figure(String),
+}
+
+impl fmt::Display for CertificateError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CertificateError::NotFinite { what, value } => write!(
+                f,
+                "certificate: {what} is {value}, not a number that can be certified"
+            ),
+            CertificateError::Subject { field, why } => {
+                write!(f, "certificate: the record's {field}: {why}")
+            }
+            CertificateError::Figure(e) => {
+                write!(f, "certificate: the residual figure cannot be drawn: {e}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for CertificateError {}
+
+impl From<CertificateError> for CliError {
+    fn from(e: CertificateError) -> Self {
+        match e {
+            CertificateError::Subject { .. } => CliError::Input(e.to_string()),
+            CertificateError::NotFinite { .. } | CertificateError::Figure(_) => {
+                CliError::Refused(e.to_string())
+            }
+        }
+    }
+}
+
+/// A tolerance per joint wider than the sensor's specified range (mode 4's ±10°, within
+/// which every reading of a session lies) would accept any session: none is meant.
+const TOLERANCE: RealIn = RealIn::above(0.0, MEMS_RANGE_DEG, "deg");
+
+/// Arguments of `zerocal certificate` (the history database's option is the history's).
+#[derive(Args, Debug, Clone)]
+pub struct CertificateArgs {
+    /// The history record's number.
+    pub id: i64,
+    /// Where the certificate goes (FILE.html); every number it prints goes beside it
+    /// (FILE.numbers, one a line) for `cargo xtask certificate-render`'s check.
+    #[arg(long, value_name = "FILE")]
+    pub out: PathBuf,
+    /// The tolerance per joint (deg): each joint conforms when its U (k = 2) is at most
+    /// this (simple acceptance). Without it the certificate states the session's own
+    /// acceptance only. Range: (0, 10] deg.
+    #[arg(long, value_name = "DEG", value_parser = TOLERANCE)]
+    pub tolerance_deg: Option<f64>,
+}
+
+/// The certificate of `analysis` (the session solved from the record's export) for the
+/// record `subject`, issued today (UTC).
+///
+/// # Errors
+/// A record field a certificate cannot state (a malformed date or hash, an empty
+/// serial, a tolerance that is not a positive number), a non-finite number in the
+/// session, the figure failing.
+pub fn certificate(
+    subject: &CertificateSubject,
+    analysis: &Analysis,
+) -> Result<Certificate, CertificateError> {
+    certificate_issued_on(subject, analysis, &today_utc())
+}
+
+/// [`certificate`] with its issue date given (`YYYY-MM-DD`).
+///
+/// # Errors
+/// As [`certificate`], and an `issued_on` that is not a date.
+pub fn certificate_issued_on(
+    subject: &CertificateSubject,
+    analysis: &Analysis,
+    issued_on: &str,
+) -> Result<Certificate, CertificateError> {
+    check_subject(subject)?;
+    check_date("issue date", issued_on)?;
+    let (html, printed) = page::page(&sections::Context {
+        subject,
+        analysis,
+        issued_on,
+    })?;
+    Ok(Certificate {
+        html,
+        printed_numbers: printed.into_numbers(),
+    })
+}
+
+/// Writes the certificate to `out` (its HTML) and `out` with the extension `numbers`
+/// (every number it prints, one a line). Returns the two paths.
+///
+/// # Errors
+/// As [`certificate`]; `out` named `.numbers`; a file that cannot be written.
+pub fn write(
+    subject: &CertificateSubject,
+    analysis: &Analysis,
+    out: &Path,
+) -> Result<Vec<PathBuf>, CliError> {
+    let numbers = out.with_extension("numbers");
+    if numbers == out {
+        return Err(CliError::Input(format!(
+            "{}: the certificate's numbers go to FILE.numbers beside it; name the \
+             certificate FILE.html",
+            out.display()
+        )));
+    }
+    let c = certificate(subject, analysis)?;
+    let mut list = c.printed_numbers.join("\n");
+    list.push('\n');
+    for (path, bytes) in [(out, c.html.as_bytes()), (&numbers, list.as_bytes())] {
+        std::fs::write(path, bytes)
+            .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    }
+    Ok(vec![out.to_path_buf(), numbers])
+}
+
+/// Refuses a record a certificate cannot state as it is.
+fn check_subject(s: &CertificateSubject) -> Result<(), CertificateError> {
+    if s.serial.trim().is_empty() {
+        return Err(CertificateError::Subject {
+            field: "serial",
+            why: "empty: a certificate names the robot it is for".into(),
+        });
+    }
+    check_date("measured_on", &s.measured_on)?;
+    for (field, hash) in [
+        ("profile_sha256", &s.profile_sha256),
+        ("export_sha256", &s.export_sha256),
+    ] {
+        if hash.len() != 64 || !hash.chars().all(|c| c.is_ascii_hexdigit()) {
+            return Err(CertificateError::Subject {
+                field,
+                why: format!("'{hash}' is not a SHA-256 (64 hexadecimal digits)"),
+            });
+        }
+    }
+    if let Some(t) = s.tolerance_deg {
+        if !TOLERANCE.contains(t) {
+            return Err(CertificateError::Subject {
+                field: "tolerance_deg",
+                why: format!("{t} deg is outside (0, {MEMS_RANGE_DEG}] deg"),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Refuses anything but a calendar date `YYYY-MM-DD`.
+fn check_date(field: &'static str, date: &str) -> Result<(), CertificateError> {
+    let bad = || CertificateError::Subject {
+        field,
+        why: format!("'{date}' is not a date YYYY-MM-DD"),
+    };
+    let parts: Vec<&str> = date.split('-').collect();
+    let [y, m, d] = parts.as_slice() else {
+        return Err(bad());
+    };
+    if y.len() != 4 || m.len() != 2 || d.len() != 2 {
+        return Err(bad());
+    }
+    let number = |s: &str| {
+        s.chars()
+            .all(|c| c.is_ascii_digit())
+            .then(|| s.parse::<u32>().ok())
+            .flatten()
+    };
+    match (number(y), number(m), number(d)) {
+        (Some(_), Some(1..=12), Some(1..=31)) => Ok(()),
+        _ => Err(bad()),
+    }
+}
+
+/// Today's date (UTC), `YYYY-MM-DD`.
+fn today_utc() -> String {
+    let seconds = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let (y, m, d) = civil_from_days(i64::try_from(seconds / 86_400).unwrap_or(0));
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
+/// The proleptic Gregorian date of `days` since 1970-01-01 (H. Hinnant's
+/// `civil_from_days`, chrono-compatible algorithms for the Gregorian calendar).
+fn civil_from_days(days: i64) -> (i64, u32, u32) {
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    // d is in 1..=31 and m in 1..=12 by construction.
+    (y, m as u32, d as u32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dates_from_days_since_the_epoch() {
+        assert_eq!(civil_from_days(0), (1970, 1, 1));
+        // 2000-02-29 (a leap day of a century year divisible by 400): 11 016 days.
+        assert_eq!(civil_from_days(11_016), (2000, 2, 29));
+        // 2026-11-27: 20 784 days.
+        assert_eq!(civil_from_days(20_784), (2026, 11, 27));
+        assert_eq!(civil_from_days(-1), (1969, 12, 31));
+    }
+
+    #[test]
+    fn only_a_calendar_date_passes() {
+        for good in ["2026-11-27", "1999-01-31"] {
+            assert!(check_date("d", good).is_ok(), "{good}");
+        }
+        for bad in [
+            "2026-13-01",
+            "2026-1-01",
+            "26-11-27",
+            "2026-11-27x",
+            "2026/11/27",
+            "",
+        ] {
+            assert!(check_date("d", bad).is_err(), "{bad}");
+        }
+    }
+}
