@@ -177,7 +177,11 @@ pub fn render(j: &CheckJson) -> String {
             let _ = writeln!(out, "{:<6} not seen by the check (see the note)", c.name);
             continue;
         };
-        let sum = if k == 1 { " (with joint 2: their sum)" } else { "" };
+        let sum = if k == 1 {
+            " (with joint 2: their sum)"
+        } else {
+            ""
+        };
         let _ = writeln!(
             out,
             "{:<6} {:+.5}    {:+.5}        {:.5}     {:.5}        {}{sum}",
@@ -251,4 +255,3 @@ pub fn run(args: &CheckArgs) -> Result<String, CliError> {
         Err(CliError::Failed(out))
     }
 }
-

@@ -9,6 +9,7 @@
 //! - `zerocal pendant --port P status|load-profile R|export|erase`: the pendant's link.
 //! - `zerocal bracket --robot R [--out FILE]`: the flange bracket's OpenSCAD parameters
 //!   from the profile's flange interface.
+//! - `zerocal certificate ID --out FILE.html`: a session's calibration certificate.
 //! - `zerocal check EXPORT --against ID`: after the offsets were entered, what is left.
 //! - `zerocal restore EXPORT --reference ID`: after a motor swap, back to a reference's zero.
 
@@ -56,6 +57,8 @@ enum Command {
     /// After the offsets were entered: what a check's export says is left of each
     /// joint's offset against the session's record (recorded in the history).
     Check(zerocal_cli::check::CheckArgs),
+    /// A calibration certificate (HTML for A4) of a session in the history.
+    Certificate(zerocal_cli::certificate::CertificateArgs),
     /// After a motor or gearbox change: the offsets that bring each joint back to a
     /// reference session's zero.
     Restore(zerocal_cli::restore::RestoreArgs),
@@ -73,6 +76,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
                 &world,
                 args.poses.unwrap_or(zerocal_sim::montecarlo::DEFAULT_POSES),
                 args.seed,
+                Some(&args.real),
             )?;
             let mut out = simulated_world::render(&run, &world, args.seed);
             if let Some(path) = &args.real.export {
@@ -133,6 +137,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Pendant(args) => zerocal_cli::pendant::run(args),
         Command::Bracket(args) => zerocal_cli::bracket::run(args),
         Command::Check(args) => zerocal_cli::check::run(args),
+        Command::Certificate(args) => zerocal_cli::certificate::run(args),
         Command::Restore(args) => zerocal_cli::restore::run(args),
     }
 }

@@ -89,7 +89,12 @@ pub fn brackets_json(brackets: &Brackets<f64>) -> serde_json::Value {
 
 /// The conditions: the stages' temperatures and the base's tilt.
 fn conditions_json(a: &Analysis) -> serde_json::Value {
-    let temps: Vec<f64> = a.export.poses.iter().filter_map(|p| p.temperature_c).collect();
+    let temps: Vec<f64> = a
+        .export
+        .poses
+        .iter()
+        .filter_map(|p| p.temperature_c)
+        .collect();
     let lo = temps.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = temps.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     json!({
@@ -171,7 +176,10 @@ pub fn solve_record(record: &Record) -> Result<Analysis, CliError> {
         )));
     }
     let profile = zerocal_profile::parse(&record.new.profile_toml).map_err(|e| {
-        CliError::Input(format!("record {}: its robot profile does not read: {e}", record.id))
+        CliError::Input(format!(
+            "record {}: its robot profile does not read: {e}",
+            record.id
+        ))
     })?;
     let args = SessionArgs::for_export(PathBuf::from(format!("record {}", record.id)));
     analyse_with(

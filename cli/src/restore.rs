@@ -84,7 +84,11 @@ pub fn against(
                 reference.profile.name
             ))))
         }
-        None => return Err(CliError::Input(name("no `# robot` line: not a pendant export"))),
+        None => {
+            return Err(CliError::Input(name(
+                "no `# robot` line: not a pendant export",
+            )))
+        }
     }
     let comparison = compare(&reference, &contents, options)
         .map_err(|e| CliError::Refused(name(&e.to_string())))?;

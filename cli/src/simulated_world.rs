@@ -156,6 +156,62 @@ pub struct WorldArgs {
     /// to read (a rehearsal before a real robot).
     #[arg(long, value_name = "FILE")]
     pub export: Option<std::path::PathBuf>,
+    /// Another session of the robot `--seed` draws, with the same pendant and brackets
+    /// (their calibrations kept): its noise, seats and bench drawn from this seed. For
+    /// rehearsing a history, a restore and a check. Range: [0, 18446744073709551615].
+    #[arg(long, value_name = "SEED")]
+    pub again: Option<u64>,
+    /// With `--again`: joint J's reading reads DEG more at the same arm position than at
+    /// the first session, as after a motor swap (J 2-6; repeat for more).
+    #[arg(long = "zero-moved", value_name = "J=DEG", value_parser = parse_zero_moved, requires = "again")]
+    pub zero_moved: Vec<(usize, f64)>,
+    /// With `--again`: the offsets entered into the controller since the first session,
+    /// Δθ2..Δθ6 in deg as `zerocal session` printed them (their readings moved by them).
+    #[arg(
+        long,
+        value_name = "DEG,DEG,DEG,DEG,DEG",
+        value_delimiter = ',',
+        num_args = 5,
+        allow_negative_numbers = true,
+        requires = "again"
+    )]
+    pub entered: Option<Vec<f64>>,
+}
+
+/// `J=DEG`: a joint 2-6 and a move within ±10°.
+fn parse_zero_moved(text: &str) -> Result<(usize, f64), String> {
+    let (j, d) = text
+        .split_once('=')
+        .ok_or_else(|| format!("'{text}': give J=DEG, e.g. 3=1.0"))?;
+    let joint: usize = j
+        .trim()
+        .parse()
+        .ok()
+        .filter(|j| (2..=6).contains(j))
+        .ok_or_else(|| format!("'{text}': the joint is 2-6"))?;
+    let deg = RealIn::closed(-10.0, 10.0, "deg").check(d.trim())?;
+    Ok((joint, deg))
+}
+
+impl WorldArgs {
+    /// The change between the first session and `--again`'s, on the simulated robot:
+    /// a moved zero makes the reading larger at the same position (Δθ = true − reading
+    /// falls), an entered offset moves the reading by itself (Δθ falls by it).
+    pub fn change(&self) -> impl Fn(&mut zerocal_sim::robot::SimRobot) + '_ {
+        move |r| {
+            for (joint, deg) in &self.zero_moved {
+                if let Some(o) = r.offsets_rad.get_mut(joint - 1) {
+                    *o -= deg.to_radians();
+                }
+            }
+            for (o, e) in r.offsets_rad[1..]
+                .iter_mut()
+                .zip(self.entered.iter().flatten())
+            {
+                *o -= e.to_radians();
+            }
+        }
+    }
 }
 
 /// `--brackets`: what the simulated session knows of its brackets.
@@ -217,11 +273,19 @@ pub fn run_session(
     world: &WorldConfig,
     poses: usize,
     seed: u64,
+    again: Option<&WorldArgs>,
 ) -> Result<RealRun, CliError> {
     let profile = crate::robot::load(robot)?;
     let (plan, fit) = montecarlo::setup(&profile, Method::Compensated, poses)
         .map_err(|e| CliError::Refused(format!("plan: {e}")))?;
-    let session = RealSession::simulate(&profile, &plan, world, seed);
+    let first = RealSession::simulate(&profile, &plan, world, seed);
+    let session = match again {
+        Some(args) => match args.again {
+            Some(n) => first.again(&profile, &plan, world, n, args.change()),
+            None => first,
+        },
+        None => first,
+    };
     let readings = session.readings(&profile, world);
     if session.outside_range > 0 {
         return Err(CliError::Refused(format!(

@@ -137,6 +137,37 @@ pub struct CertificateArgs {
     /// acceptance only. Range: (0, 10] deg.
     #[arg(long, value_name = "DEG", value_parser = TOLERANCE)]
     pub tolerance_deg: Option<f64>,
+    #[command(flatten)]
+    pub db: crate::record::DbArg,
+}
+
+/// Runs `zerocal certificate ID --out FILE.html`: the record's session solved again
+/// from its stored export and profile, certified.
+///
+/// # Errors
+/// No such record, a check's record, a record the certificate cannot state.
+pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
+    let mut history = args.db.open()?;
+    let record = history.get(args.id).map_err(crate::record::history_error)?;
+    let analysis = crate::record::solve_record(&record)?;
+    let subject = CertificateSubject {
+        record_id: record.id,
+        serial: record.new.serial.clone(),
+        measured_on: record.new.measured_on.clone(),
+        recorded_at: record.recorded_at.clone(),
+        operator: record.new.operator.clone(),
+        pendant_unit: record.new.pendant_unit.clone(),
+        profile_sha256: record.profile_sha256.clone(),
+        export_sha256: record.export_sha256.clone(),
+        zerocal_version: record.new.zerocal_version.clone(),
+        tolerance_deg: args.tolerance_deg,
+    };
+    let written = write(&subject, &analysis, &args.out)?;
+    Ok(written
+        .iter()
+        .map(|p| format!("wrote {}", p.display()))
+        .collect::<Vec<_>>()
+        .join("\n"))
 }
 
 /// The certificate of `analysis` (the session solved from the record's export) for the

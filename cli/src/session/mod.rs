@@ -454,7 +454,10 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         out.push_str(&if inserted.new {
             format!("recorded: record {} in {at}\n", inserted.id)
         } else {
-            format!("already recorded: record {} in {at} (the same export)\n", inserted.id)
+            format!(
+                "already recorded: record {} in {at} (the same export)\n",
+                inserted.id
+            )
         });
     }
     Ok(out)
