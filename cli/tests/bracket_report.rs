@@ -5,10 +5,7 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use zerocal_core::bracket::{BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG};
-use zerocal_core::session::{
-    DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG, JIG_HALF_TURN_TOLERANCE_DEG,
-};
+use zerocal_core::session::JIG_HALF_TURN_TOLERANCE_DEG;
 use zerocal_sim::montecarlo::{setup, Method, DEFAULT_POSES};
 use zerocal_sim::world::{BracketKnowledge, RealSession, WorldConfig};
 
@@ -32,14 +29,8 @@ fn the_report_names_an_uncalibrated_bracket() {
         let path = dir.join(format!("{knowledge:?}.csv"));
         std::fs::write(&path, s.export_text(&profile.name)).unwrap();
         let args = zerocal_cli::session::SessionArgs {
-            export: path,
-            robot: None,
-            seat_repeatability_deg: SEAT_REPEATABILITY_DEG,
-            bracket_yaw_deg: BRACKET_YAW_TOLERANCE_DEG,
             half_turn_tolerance_deg: JIG_HALF_TURN_TOLERANCE_DEG,
-            repeatability_deg: DEFAULT_REPEATABILITY_DEG,
-            lost_motion_deg: DEFAULT_LOST_MOTION_DEG,
-            json: false,
+            ..zerocal_cli::session::SessionArgs::for_export(path)
         };
         let report = zerocal_cli::session::run(&args).unwrap();
         for mount in ["upper-arm", "flange"] {

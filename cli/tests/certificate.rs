@@ -14,11 +14,7 @@ use zerocal_cli::certificate::{
     certificate_issued_on, escape_html, write, Certificate, CertificateError, CertificateSubject,
 };
 use zerocal_cli::session::{analyse, Analysis, SessionArgs};
-use zerocal_core::bracket::{BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG};
-use zerocal_core::session::{
-    COVERAGE_FACTOR, DEFAULT_HALF_TURN_TOLERANCE_DEG, DEFAULT_LOST_MOTION_DEG,
-    DEFAULT_REPEATABILITY_DEG,
-};
+use zerocal_core::session::COVERAGE_FACTOR;
 use zerocal_sim::world::{BracketKnowledge, RealSession, WorldConfig};
 
 const ISSUED: &str = "2026-11-27";
@@ -37,16 +33,7 @@ fn analysis(robot: &str, world: &WorldConfig, seed: u64) -> Analysis {
     let text = s.export_text(&profile.name);
     let path = dir().join(format!("{robot}-{seed}.csv"));
     std::fs::write(&path, &text).unwrap();
-    let args = SessionArgs {
-        export: path,
-        robot: None,
-        seat_repeatability_deg: SEAT_REPEATABILITY_DEG,
-        bracket_yaw_deg: BRACKET_YAW_TOLERANCE_DEG,
-        half_turn_tolerance_deg: DEFAULT_HALF_TURN_TOLERANCE_DEG,
-        repeatability_deg: DEFAULT_REPEATABILITY_DEG,
-        lost_motion_deg: DEFAULT_LOST_MOTION_DEG,
-        json: false,
-    };
+    let args = SessionArgs::for_export(path);
     analyse(&args, text.as_bytes()).unwrap()
 }
 

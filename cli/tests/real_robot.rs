@@ -153,14 +153,11 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
             let path = dir().join(format!("{name}.csv"));
             std::fs::write(&path, s.export_text(&profile.name)).unwrap();
             let args = zerocal_cli::session::SessionArgs {
-                export: path,
-                robot: None,
-                seat_repeatability_deg: zerocal_core::bracket::SEAT_REPEATABILITY_DEG,
-                bracket_yaw_deg: zerocal_core::bracket::BRACKET_YAW_TOLERANCE_DEG,
                 half_turn_tolerance_deg: 0.0,
                 repeatability_deg: 0.0,
                 lost_motion_deg: 0.0,
                 json: true,
+                ..zerocal_cli::session::SessionArgs::for_export(path)
             };
             let out = zerocal_cli::session::run(&args).unwrap_or_else(|e| panic!("{name}: {e}"));
             let v: serde_json::Value = serde_json::from_str(&out).unwrap();
