@@ -11,6 +11,7 @@ mod certificate;
 mod dfu;
 mod dist;
 mod fuzz;
+mod history_demo;
 mod pendant_sim;
 mod size;
 mod target_test;
@@ -104,6 +105,18 @@ enum Command {
     /// OUTDIR/certificate.png; then fail naming each number of NUMBERS (FILE.numbers, one
     /// a line) that the PDF's text does not hold, or a PDF of more than two A4 pages.
     /// Installs chromium and poppler-utils when missing (as root).
+    /// One simulated robot's history through `zerocal`: five sessions recorded, a
+    /// motor swap restored and checked, the history plotted, the first session's
+    /// certificate printed and checked (headless Chromium). `--write-docs DIR` copies
+    /// the A3 plot and the certificate's first page there.
+    HistoryDemo {
+        /// Where everything goes.
+        #[arg(long, default_value = "target/history-demo")]
+        out: PathBuf,
+        /// Copy the README's figures into this directory (docs).
+        #[arg(long)]
+        write_docs: Option<PathBuf>,
+    },
     CertificateRender {
         /// The certificate's HTML.
         html: PathBuf,
@@ -151,6 +164,9 @@ fn main() -> Result<()> {
         Command::TargetTest => target_test::run(&repo_root(), cli.toolchain),
         Command::PendantAgree { dir } => pendant_sim::agree(&dir),
         Command::Cad => cad::run(&repo_root()),
+        Command::HistoryDemo { out, write_docs } => {
+            history_demo::run(&out, write_docs.as_deref())
+        }
         Command::CertificateRender {
             html,
             numbers,
