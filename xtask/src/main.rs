@@ -11,6 +11,7 @@ mod dfu;
 mod dist;
 mod fuzz;
 mod pendant_sim;
+mod postgres;
 mod size;
 mod target_test;
 mod toolchain;
@@ -101,6 +102,13 @@ enum Command {
     /// xvfb-run when there is no display). Not run by CI: run it after changing a
     /// design and commit the pictures.
     Cad,
+    /// A throwaway PostgreSQL cluster in target/postgres for the history's tests:
+    /// `start` (fresh cluster on a free local port, database zerocal_test; prints its
+    /// URL, for ZEROCAL_TEST_POSTGRES) or `stop`.
+    Postgres {
+        #[arg(value_enum)]
+        action: PostgresAction,
+    },
     /// Fuzz the parsers of outside bytes (fuzz/, cargo-fuzz and libFuzzer on the stable
     /// toolchain with RUSTC_BOOTSTRAP=1; installs cargo-fuzz if missing). `--smoke`
     /// runs every target for 20 s from the committed corpus and fails on any crash,
@@ -125,6 +133,15 @@ enum Command {
     },
 }
 
+/// `cargo xtask postgres ACTION`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum PostgresAction {
+    /// Make and start a fresh cluster, print the test database's URL.
+    Start,
+    /// Stop it.
+    Stop,
+}
+
 fn main() -> Result<()> {
     let cli = Cli::parse();
     match cli.command {
@@ -136,6 +153,12 @@ fn main() -> Result<()> {
         Command::TargetTest => target_test::run(&repo_root(), cli.toolchain),
         Command::PendantAgree { dir } => pendant_sim::agree(&dir),
         Command::Cad => cad::run(&repo_root()),
+        Command::Postgres {
+            action: PostgresAction::Start,
+        } => postgres::start(&repo_root()),
+        Command::Postgres {
+            action: PostgresAction::Stop,
+        } => postgres::stop(&repo_root()),
         Command::PendantSim {
             out,
             seed,
