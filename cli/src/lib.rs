@@ -6,6 +6,7 @@ pub mod bracket;
 pub mod brackets;
 pub mod diagnose;
 pub mod error;
+pub mod history;
 pub mod identify;
 pub mod input;
 pub mod log_file;

@@ -9,6 +9,8 @@
 //! - `zerocal pendant --port P status|load-profile R|export|erase`: the pendant's link.
 //! - `zerocal bracket --robot R [--out FILE]`: the flange bracket's OpenSCAD parameters
 //!   from the profile's flange interface.
+//! - `zerocal history [SERIAL] [--db PATH|URL] [--json] [--plot DIR]`: the calibration
+//!   history per robot serial.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -54,6 +56,9 @@ enum Command {
     /// Write the flange bracket's OpenSCAD parameters (`include <flange_bracket.scad>`
     /// and the profile's ISO 9409-1 bolt circle and dowel) for the robot.
     Bracket(zerocal_cli::bracket::BracketArgs),
+    /// List the calibration history (every session and check, per robot serial) as a
+    /// table or JSON, or plot each joint's zero over time with its U(k=2) band.
+    History(zerocal_cli::history::HistoryArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
@@ -124,6 +129,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Program(args) => program::run(args),
         Command::Pendant(args) => zerocal_cli::pendant::run(args),
         Command::Bracket(args) => zerocal_cli::bracket::run(args),
+        Command::History(args) => zerocal_cli::history::run(args),
     }
 }
 

@@ -412,12 +412,7 @@ fn concurrent_writers_lose_nothing() {
         }
         let mut h = History::open(&b.at).unwrap();
         let all = h.list(None).unwrap();
-        assert_eq!(
-            all.len(),
-            (WRITERS.len() + 1) * N as usize,
-            "{}",
-            b.name
-        );
+        assert_eq!(all.len(), (WRITERS.len() + 1) * N as usize, "{}", b.name);
         let mut keys: Vec<(String, u32)> = all
             .iter()
             .map(|r| (r.new.serial.clone(), r.new.pendant_result_id.unwrap()))
