@@ -20,8 +20,14 @@ pub struct DbArg {
     pub db: Option<String>,
 }
 
-fn history_error(e: zerocal_history::HistoryError) -> CliError {
-    CliError::Input(format!("history: {e}"))
+/// The history's error as the CLI's, naming the database unless the error does.
+fn history_error(at: &DbLocation) -> impl Fn(zerocal_history::HistoryError) -> CliError + '_ {
+    move |e| match e {
+        zerocal_history::HistoryError::NotZerocal { .. } => {
+            CliError::Input(format!("history: {e}"))
+        }
+        _ => CliError::Input(format!("history {at}: {e}")),
+    }
 }
 
 impl DbArg {
@@ -30,7 +36,8 @@ impl DbArg {
     /// # Errors
     /// An empty `--db`; no `--db` and no data directory.
     pub fn location(&self) -> Result<DbLocation, CliError> {
-        DbLocation::from_arg(self.db.as_deref()).map_err(history_error)
+        DbLocation::from_arg(self.db.as_deref())
+            .map_err(|e| CliError::Input(format!("history: {e}")))
     }
 
     /// Opens (making or migrating) the history `--db` names.
@@ -38,7 +45,8 @@ impl DbArg {
     /// # Errors
     /// As [`History::open`], with the location named.
     pub fn open(&self) -> Result<History, CliError> {
-        History::open(&self.location()?).map_err(history_error)
+        let at = self.location()?;
+        History::open(&at).map_err(history_error(&at))
     }
 }
 
@@ -358,10 +366,10 @@ pub fn plots(dir: &Path, serial: &str, records: &[Record]) -> Result<Vec<PathBuf
 /// The history does not open or read; a plot cannot be written.
 pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
     let location = args.db.location()?;
-    let mut history = History::open(&location).map_err(history_error)?;
+    let mut history = History::open(&location).map_err(history_error(&location))?;
     let records = history
         .list(args.serial.as_deref())
-        .map_err(history_error)?;
+        .map_err(history_error(&location))?;
     if args.json {
         return to_json(&records);
     }
