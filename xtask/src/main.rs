@@ -41,7 +41,8 @@ enum Command {
     /// Install and check what the thumb build and the QEMU check need (rustup's thumb
     /// target with its own rust-lld, `rustup target add` tried when missing; else
     /// Debian's rustc-web, cargo-web, rust-web-src and the lld-N of its LLVM;
-    /// qemu-system-arm), and print which tools are used.
+    /// qemu-system-arm; Debian's postgresql for the history's tests), and print which
+    /// tools are used.
     Setup,
     /// Build the release firmware (firmware/, thumbv7em-none-eabihf) and print its
     /// flash and static RAM use.
@@ -145,7 +146,7 @@ enum PostgresAction {
 fn main() -> Result<()> {
     let cli = Cli::parse();
     match cli.command {
-        Command::Setup => toolchain::setup(cli.toolchain),
+        Command::Setup => toolchain::setup(cli.toolchain).and_then(|()| postgres::setup()),
         Command::Firmware => firmware(cli.toolchain),
         Command::Dfu => dfu::run(&repo_root(), cli.toolchain).map(|_| ()),
         Command::Dist => dist::run(&repo_root(), cli.toolchain),

@@ -179,6 +179,17 @@ fn free_port() -> Result<u16> {
     Ok(listener.local_addr()?.port())
 }
 
+/// `cargo xtask setup`'s part: installs Debian's PostgreSQL server when missing and
+/// says which is used.
+///
+/// # Errors
+/// Missing and not installable.
+pub fn setup() -> Result<()> {
+    provision_postgres()?;
+    println!("postgres: {}", bin_dir()?.display());
+    Ok(())
+}
+
 /// `cargo xtask postgres start`: prints the URL of the fresh test database.
 ///
 /// # Errors

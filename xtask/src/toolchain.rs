@@ -338,8 +338,8 @@ fn parse_rustc_verbose_version(verbose: &str) -> Result<(u32, u32)> {
 }
 
 /// `cargo xtask setup`: tries to add rustup's thumb target (unless Debian's toolchain
-/// is asked for), provisions everything (PostgreSQL for the history's tests too) and
-/// says what is used.
+/// is asked for), provisions everything and says what is used (`cargo xtask setup` then
+/// provisions PostgreSQL too: `postgres::setup`).
 ///
 /// # Errors
 /// As [`provision`].
@@ -354,8 +354,6 @@ pub fn setup(choice: ToolchainChoice) -> Result<()> {
     println!("  rustc:  {}", thumb.rustc.display());
     println!("  linker: {}", thumb.linker.display());
     println!("qemu:     {}", tools.qemu()?.display());
-    provision_postgres()?;
-    println!("postgres: {}", crate::postgres::bin_dir()?.display());
     Ok(())
 }
 
