@@ -9,6 +9,7 @@ pub mod check;
 pub mod compare;
 pub mod diagnose;
 pub mod error;
+pub mod history;
 pub mod identify;
 pub mod input;
 pub mod log_file;

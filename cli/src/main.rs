@@ -12,6 +12,8 @@
 //! - `zerocal certificate ID --out FILE.html`: a session's calibration certificate.
 //! - `zerocal check EXPORT --against ID`: after the offsets were entered, what is left.
 //! - `zerocal restore EXPORT --reference ID`: after a motor swap, back to a reference's zero.
+//! - `zerocal history [SERIAL] [--db PATH|URL] [--json] [--plot DIR]`: the calibration
+//!   history per robot serial.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -65,6 +67,9 @@ enum Command {
     /// Write the flange bracket's OpenSCAD parameters (`include <flange_bracket.scad>`
     /// and the profile's ISO 9409-1 bolt circle and dowel) for the robot.
     Bracket(zerocal_cli::bracket::BracketArgs),
+    /// List the calibration history (every session and check, per robot serial) as a
+    /// table or JSON, or plot each joint's zero over time with its U(k=2) band.
+    History(zerocal_cli::history::HistoryArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
@@ -139,6 +144,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Check(args) => zerocal_cli::check::run(args),
         Command::Certificate(args) => zerocal_cli::certificate::run(args),
         Command::Restore(args) => zerocal_cli::restore::run(args),
+        Command::History(args) => zerocal_cli::history::run(args),
     }
 }
 

@@ -9,35 +9,9 @@ use clap::Args;
 use serde_json::json;
 use std::path::PathBuf;
 use zerocal_core::bracket::{BracketMount, Brackets};
-use zerocal_history::{DbLocation, History, JointRow, NewRecord, Record, RecordKind};
+use zerocal_history::{JointRow, NewRecord, Record, RecordKind};
 
-/// Where the history is: `--db`.
-#[derive(Args, Debug, Clone, Default)]
-pub struct DbArg {
-    /// The history database: an SQLite file, or a PostgreSQL server's URL
-    /// (`postgres://user:password@host/database`). Default:
-    /// `$XDG_DATA_HOME/zerocal/history.sqlite` (else `~/.local/share/zerocal/history.sqlite`).
-    #[arg(long, value_name = "PATH|URL")]
-    pub db: Option<String>,
-}
-
-impl DbArg {
-    /// Opens it (creating an SQLite file and its directory where absent).
-    ///
-    /// # Errors
-    /// A foreign file, a newer schema, a server that does not answer: named.
-    pub fn open(&self) -> Result<History, CliError> {
-        let at = DbLocation::from_arg(self.db.as_deref()).map_err(history_error)?;
-        if let DbLocation::Sqlite(path) = &at {
-            if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(dir).map_err(|e| {
-                    CliError::Input(format!("history: cannot create {}: {e}", dir.display()))
-                })?;
-            }
-        }
-        History::open(&at).map_err(history_error)
-    }
-}
+pub use crate::history::DbArg;
 
 /// A history error as the CLI's.
 pub fn history_error(e: zerocal_history::HistoryError) -> CliError {

@@ -118,7 +118,7 @@ fn parse_range(text: &str) -> Option<Stated> {
 }
 
 /// Value names of options that take text, not a number.
-const TEXT_VALUES: [&str; 7] = [
+const TEXT_VALUES: [&str; 8] = [
     "<FILE>",
     "<PORT>",
     "<DIR>",
@@ -126,6 +126,7 @@ const TEXT_VALUES: [&str; 7] = [
     "<NAME>",
     "<NAMES>",
     "<SOURCES>",
+    "<PATH|URL>",
 ];
 
 /// `(flag line, its help text)` for every option of a subcommand, from its `--help`.
@@ -256,6 +257,12 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
             "status".into(),
         ],
         "bracket" => vec!["bracket".into(), "--robot".into(), "ur5e".into()],
+        // A history of its own next to the walk's log, never the user's default one.
+        "history" => vec![
+            "history".into(),
+            "--db".into(),
+            log.with_file_name("walk-history.sqlite").display().to_string(),
+        ],
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }
 }

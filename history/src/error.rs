@@ -58,7 +58,12 @@ impl fmt::Display for HistoryError {
                 "no history database location: give --db, or set XDG_DATA_HOME or HOME"
             ),
             Self::Sqlite(e) => write!(f, "SQLite: {e}"),
-            Self::Postgres(e) => write!(f, "PostgreSQL: {e}"),
+            // The client's own text is only the kind ("db error", "error connecting to
+            // server"); the cause says what the server or the socket said.
+            Self::Postgres(e) => match std::error::Error::source(e) {
+                Some(cause) => write!(f, "PostgreSQL: {e}: {cause}"),
+                None => write!(f, "PostgreSQL: {e}"),
+            },
             Self::Io(e) => write!(f, "{e}"),
         }
     }

@@ -12,6 +12,7 @@ pub mod schema;
 mod time;
 
 pub use error::HistoryError;
+pub use time::{date_of_day, day_number};
 
 use db::{Conn, Value};
 use serde::{Deserialize, Serialize};

@@ -55,6 +55,34 @@ pub(crate) fn now_utc() -> String {
     rfc3339_utc(seconds)
 }
 
+/// Days from 1970-01-01 to `date` (`YYYY-MM-DD`), or `None` if it is no such date
+/// (H. Hinnant's `days_from_civil`, public domain).
+#[must_use]
+pub fn day_number(date: &str) -> Option<i64> {
+    if !is_date(date) {
+        return None;
+    }
+    let (y, m, d): (i64, i64, i64) = (
+        date.get(0..4)?.parse().ok()?,
+        date.get(5..7)?.parse().ok()?,
+        date.get(8..10)?.parse().ok()?,
+    );
+    let y = if m <= 2 { y - 1 } else { y };
+    let era = y.div_euclid(400);
+    let yoe = y.rem_euclid(400);
+    let mp = (m + 9) % 12;
+    let doy = (153 * mp + 2) / 5 + d - 1;
+    let doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    Some(era * 146_097 + doe - 719_468)
+}
+
+/// The date `YYYY-MM-DD` of day `days` after 1970-01-01 (the inverse of [`day_number`]).
+#[must_use]
+pub fn date_of_day(days: i64) -> String {
+    let (y, m, d) = civil_from_days(days);
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
 /// Whether `text` is a calendar date written `YYYY-MM-DD`.
 pub(crate) fn is_date(text: &str) -> bool {
     let b = text.as_bytes();
@@ -84,6 +112,17 @@ mod tests {
         assert_eq!(rfc3339_utc(0), "1970-01-01T00:00:00Z");
         assert_eq!(rfc3339_utc(951_782_400), "2000-02-29T00:00:00Z");
         assert_eq!(rfc3339_utc(2_147_483_648), "2038-01-19T03:14:08Z");
+    }
+
+    #[test]
+    fn day_numbers_count_from_the_epoch_and_invert() {
+        assert_eq!(day_number("1970-01-01"), Some(0));
+        // 2000-02-29T00:00:00Z is 951 782 400 s = 11 016 days after the epoch.
+        assert_eq!(day_number("2000-02-29"), Some(11_016));
+        assert_eq!(day_number("2000-02-30"), None);
+        for days in [-1, 0, 11_016, 20_784, 24_837] {
+            assert_eq!(day_number(&date_of_day(days)), Some(days));
+        }
     }
 
     #[test]

@@ -13,6 +13,7 @@ mod dist;
 mod fuzz;
 mod history_demo;
 mod pendant_sim;
+mod postgres;
 mod size;
 mod target_test;
 mod toolchain;
@@ -43,7 +44,8 @@ enum Command {
     /// target with its own rust-lld, `rustup target add` tried when missing; else
     /// Debian's rustc-web, cargo-web, rust-web-src and the lld-N of its LLVM;
     /// qemu-system-arm; chromium, poppler-utils and fonts-dejavu-core for the
-    /// certificate), and print which tools are used.
+    /// certificate; Debian's postgresql for the history's tests), and print which tools
+    /// are used.
     Setup,
     /// Build the release firmware (firmware/, thumbv7em-none-eabihf) and print its
     /// flash and static RAM use.
@@ -129,6 +131,13 @@ enum Command {
     /// xvfb-run when there is no display). Not run by CI: run it after changing a
     /// design and commit the pictures.
     Cad,
+    /// A throwaway PostgreSQL cluster in target/postgres for the history's tests:
+    /// `start` (fresh cluster on a free local port, database zerocal_test; prints its
+    /// URL, for ZEROCAL_TEST_POSTGRES) or `stop`.
+    Postgres {
+        #[arg(value_enum)]
+        action: PostgresAction,
+    },
     /// Fuzz the parsers of outside bytes (fuzz/, cargo-fuzz and libFuzzer on the stable
     /// toolchain with RUSTC_BOOTSTRAP=1; installs cargo-fuzz if missing). `--smoke`
     /// runs every target for 20 s from the committed corpus and fails on any crash,
@@ -153,10 +162,19 @@ enum Command {
     },
 }
 
+/// `cargo xtask postgres ACTION`.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum PostgresAction {
+    /// Make and start a fresh cluster, print the test database's URL.
+    Start,
+    /// Stop it.
+    Stop,
+}
+
 fn main() -> Result<()> {
     let cli = Cli::parse();
     match cli.command {
-        Command::Setup => toolchain::setup(cli.toolchain),
+        Command::Setup => toolchain::setup(cli.toolchain).and_then(|()| postgres::setup()),
         Command::Firmware => firmware(cli.toolchain),
         Command::Dfu => dfu::run(&repo_root(), cli.toolchain).map(|_| ()),
         Command::Dist => dist::run(&repo_root(), cli.toolchain),
@@ -172,6 +190,12 @@ fn main() -> Result<()> {
             numbers,
             outdir,
         } => certificate::run(&html, &numbers, &outdir),
+        Command::Postgres {
+            action: PostgresAction::Start,
+        } => postgres::start(&repo_root()),
+        Command::Postgres {
+            action: PostgresAction::Stop,
+        } => postgres::stop(&repo_root()),
         Command::PendantSim {
             out,
             seed,

@@ -110,6 +110,25 @@ const CHROMIUM: &str = "/usr/bin/chromium";
 const PDFTOTEXT: &str = "/usr/bin/pdftotext";
 const PDFTOPPM: &str = "/usr/bin/pdftoppm";
 const PDFINFO: &str = "/usr/bin/pdfinfo";
+/// Debian's PostgreSQL server (the `postgresql` package pulls in the server of
+/// Debian's current major version, its binaries under `/usr/lib/postgresql/N/bin`), for
+/// the history's PostgreSQL tests (`cargo xtask postgres start`). The metapackage's own
+/// file is its copyright notice, which Debian's slim images keep.
+fn postgres_package() -> Package {
+    Package::new("postgresql", "/usr/share/doc/postgresql/copyright")
+}
+
+/// Installs Debian's PostgreSQL server when missing (see [`postgres_package`]).
+///
+/// # Errors
+/// Missing and not installable (the message names the command).
+pub fn provision_postgres() -> Result<()> {
+    let package = postgres_package();
+    if !installed(&package) {
+        install(std::slice::from_ref(&package))?;
+    }
+    require(std::slice::from_ref(&package))
+}
 
 /// Variables that cargo, rustc's wrappers and rustup set for the process running
 /// xtask. Left in place they would make the child build use the host toolchain, the
@@ -400,7 +419,8 @@ fn parse_rustc_verbose_version(verbose: &str) -> Result<(u32, u32)> {
 }
 
 /// `cargo xtask setup`: tries to add rustup's thumb target (unless Debian's toolchain
-/// is asked for), provisions everything and says what is used.
+/// is asked for), provisions everything and says what is used (`cargo xtask setup` then
+/// provisions PostgreSQL too: `postgres::setup`).
 ///
 /// # Errors
 /// As [`provision`].
@@ -624,7 +644,7 @@ fn install(packages: &[Package]) -> Result<()> {
         .env("DEBIAN_FRONTEND", "noninteractive"))
 }
 
-fn is_root() -> bool {
+pub(crate) fn is_root() -> bool {
     output_of(Command::new("id").arg("-u")).is_some_and(|uid| uid.trim() == "0")
 }
 

@@ -1,0 +1,390 @@
+//! `zerocal history [SERIAL] [--db PATH|URL] [--json] [--plot DIR]`: the calibration
+//! history of every robot or of one serial, as a table, a JSON array, or one SVG per
+//! joint of its zero over time with the U(k=2) band. [`DbArg`] is the `--db` option
+//! every command that reads or writes the history shares.
+
+use crate::error::CliError;
+use plotters::prelude::*;
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use zerocal_history::{DbLocation, History, Record, RecordKind, JOINTS};
+
+/// `--db PATH|URL`: where the history is.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct DbArg {
+    /// The history database: an SQLite file, or a PostgreSQL server
+    /// `postgres://USER:PASSWORD@HOST:PORT/DATABASE`. Default:
+    /// $XDG_DATA_HOME/zerocal/history.sqlite, else ~/.local/share/zerocal/history.sqlite.
+    #[arg(long, value_name = "PATH|URL")]
+    pub db: Option<String>,
+}
+
+/// The history's error as the CLI's, naming the database unless the error does.
+fn history_error(at: &DbLocation) -> impl Fn(zerocal_history::HistoryError) -> CliError + '_ {
+    move |e| match e {
+        zerocal_history::HistoryError::NotZerocal { .. } => {
+            CliError::Input(format!("history: {e}"))
+        }
+        _ => CliError::Input(format!("history {at}: {e}")),
+    }
+}
+
+impl DbArg {
+    /// The location `--db` names, or the default.
+    ///
+    /// # Errors
+    /// An empty `--db`; no `--db` and no data directory.
+    pub fn location(&self) -> Result<DbLocation, CliError> {
+        DbLocation::from_arg(self.db.as_deref())
+            .map_err(|e| CliError::Input(format!("history: {e}")))
+    }
+
+    /// Opens (making or migrating) the history `--db` names.
+    ///
+    /// # Errors
+    /// As [`History::open`], with the location named.
+    pub fn open(&self) -> Result<History, CliError> {
+        let at = self.location()?;
+        History::open(&at).map_err(history_error(&at))
+    }
+}
+
+/// Arguments of `zerocal history`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct HistoryArgs {
+    /// Only the records of this robot serial.
+    pub serial: Option<String>,
+    #[command(flatten)]
+    pub db: DbArg,
+    /// Print one JSON array of the records instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// Write DIR/SERIAL-jN.svg per joint: its zero over time with the U(k=2) band,
+    /// sessions as dots and checks as crosses (needs SERIAL; characters of the serial
+    /// other than letters, digits, `.`, `_` and `-` become `_` in the file name).
+    #[arg(long, value_name = "DIR", requires = "serial")]
+    pub plot: Option<PathBuf>,
+}
+
+/// One record in `zerocal history --json`: the stored fields less the export's and
+/// profile's text (named by their SHA-256), the JSON fields as JSON.
+#[derive(serde::Serialize, Debug)]
+pub struct RecordJson<'a> {
+    pub id: i64,
+    pub recorded_at: &'a str,
+    pub kind: RecordKind,
+    pub serial: &'a str,
+    pub robot: &'a str,
+    pub robot_title: &'a str,
+    pub controller_family: &'a str,
+    pub measured_on: &'a str,
+    pub operator: Option<&'a str>,
+    pub pendant_unit: Option<&'a str>,
+    pub pendant_result_id: Option<u32>,
+    pub reference_id: Option<i64>,
+    pub zerocal_version: &'a str,
+    pub verdict: &'a str,
+    pub export_sha256: &'a str,
+    pub export_bytes: usize,
+    pub profile_sha256: &'a str,
+    pub joints: &'a [zerocal_history::JointRow],
+    pub brackets: serde_json::Value,
+    pub conditions: serde_json::Value,
+    pub result: serde_json::Value,
+}
+
+fn json_field(record: &Record, field: &str, text: &str) -> Result<serde_json::Value, CliError> {
+    serde_json::from_str(text).map_err(|e| {
+        CliError::Input(format!(
+            "history: record {}: {field} is not JSON: {e}",
+            record.id
+        ))
+    })
+}
+
+fn to_json(records: &[Record]) -> Result<String, CliError> {
+    let rows = records
+        .iter()
+        .map(|r| {
+            let n = &r.new;
+            Ok(RecordJson {
+                id: r.id,
+                recorded_at: &r.recorded_at,
+                kind: n.kind,
+                serial: &n.serial,
+                robot: &n.robot,
+                robot_title: &n.robot_title,
+                controller_family: &n.controller_family,
+                measured_on: &n.measured_on,
+                operator: n.operator.as_deref(),
+                pendant_unit: n.pendant_unit.as_deref(),
+                pendant_result_id: n.pendant_result_id,
+                reference_id: n.reference_id,
+                zerocal_version: &n.zerocal_version,
+                verdict: &n.verdict,
+                export_sha256: &r.export_sha256,
+                export_bytes: n.export.len(),
+                profile_sha256: &r.profile_sha256,
+                joints: &n.joints,
+                brackets: json_field(r, "brackets_json", &n.brackets_json)?,
+                conditions: json_field(r, "conditions_json", &n.conditions_json)?,
+                result: json_field(r, "result_json", &n.result_json)?,
+            })
+        })
+        .collect::<Result<Vec<_>, CliError>>()?;
+    serde_json::to_string_pretty(&rows)
+        .map_err(|e| CliError::Input(format!("cannot write JSON: {e}")))
+}
+
+/// The table: one line a record, each joint's offset and U(k=2) in degrees.
+fn table(records: &[Record]) -> String {
+    let cell = |r: &Record, joint: u8| {
+        r.new.joints.iter().find(|j| j.joint == joint).map_or_else(
+            || "-".to_owned(),
+            |j| format!("{:+.5} +/- {:.5}", j.offset_deg, j.expanded_k2_deg),
+        )
+    };
+    let mut rows: Vec<Vec<String>> = vec![["id", "measured", "kind", "serial", "robot"]
+        .iter()
+        .map(|s| (*s).to_owned())
+        .chain(JOINTS.map(|j| format!("j{j} offset +/- U(k=2) deg")))
+        .chain(std::iter::once("verdict".to_owned()))
+        .collect()];
+    for r in records {
+        rows.push(
+            [
+                r.id.to_string(),
+                r.new.measured_on.clone(),
+                r.new.kind.as_str().to_owned(),
+                r.new.serial.clone(),
+                r.new.robot.clone(),
+            ]
+            .into_iter()
+            .chain(JOINTS.map(|j| cell(r, j)))
+            .chain(std::iter::once(r.new.verdict.clone()))
+            .collect(),
+        );
+    }
+    let columns = rows[0].len();
+    let widths: Vec<usize> = (0..columns)
+        .map(|c| {
+            rows.iter()
+                .map(|row| row[c].chars().count())
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let mut out = String::new();
+    for row in &rows {
+        let mut line = String::new();
+        for (c, text) in row.iter().enumerate() {
+            if c + 1 == columns {
+                line.push_str(text);
+            } else {
+                let _ = write!(line, "{text:<w$}  ", w = widths[c]);
+            }
+        }
+        out.push_str(line.trim_end());
+        out.push('\n');
+    }
+    out
+}
+
+/// `serial` as a file name: letters, digits, `.`, `_` and `-` kept, anything else `_`
+/// (a serial may hold `/` or spaces), and never `.` or `..` alone.
+#[must_use]
+pub fn file_stem(serial: &str) -> String {
+    let stem: String = serial
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || matches!(c, '.' | '_' | '-') {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    if stem.chars().all(|c| c == '.') {
+        stem.replace('.', "_")
+    } else {
+        stem
+    }
+}
+
+const SIZE: (u32, u32) = (900, 520);
+const SESSION: RGBColor = RGBColor(30, 90, 200);
+const CHECK: RGBColor = RGBColor(200, 40, 40);
+
+fn to_io<E: std::fmt::Display>(e: E) -> std::io::Error {
+    std::io::Error::other(e.to_string())
+}
+
+/// One joint's points: (day number, offset, U(k=2), kind), in record order.
+type Point = (f64, f64, f64, RecordKind);
+
+fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io::Result<()> {
+    let (mut x0, mut x1) = points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.0), b.max(p.0))
+        });
+    // One day at least either side, so a single day's records are not on the frame.
+    x0 -= 1.0;
+    x1 += 1.0;
+    let (mut y0, mut y1) = points
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p.1 - p.2), b.max(p.1 + p.2))
+        });
+    let pad = ((y1 - y0) * 0.1).max(1e-4);
+    y0 -= pad;
+    y1 += pad;
+    let root = SVGBackend::new(path, SIZE).into_drawing_area();
+    root.fill(&WHITE).map_err(to_io)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!("{serial}: joint {joint} zero offset over time, with U(k=2)"),
+            ("sans-serif", 18),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(to_io)?;
+    chart
+        .configure_mesh()
+        .x_desc("measured on")
+        .y_desc(format!("j{joint} offset (deg)"))
+        .x_label_formatter(&|d| zerocal_history::date_of_day(d.round() as i64))
+        .y_label_formatter(&|v| format!("{v:.4}"))
+        .draw()
+        .map_err(to_io)?;
+    // The band: the sessions' offset +/- U(k=2), joined from one session to the next.
+    let sessions: Vec<&Point> = points
+        .iter()
+        .filter(|p| p.3 == RecordKind::Session)
+        .collect();
+    if sessions.len() > 1 {
+        let band: Vec<(f64, f64)> = sessions
+            .iter()
+            .map(|p| (p.0, p.1 + p.2))
+            .chain(sessions.iter().rev().map(|p| (p.0, p.1 - p.2)))
+            .collect();
+        chart
+            .draw_series(std::iter::once(Polygon::new(
+                band,
+                SESSION.mix(0.15).filled(),
+            )))
+            .map_err(to_io)?
+            .label("session U(k=2) band")
+            .legend(|(x, y)| {
+                Rectangle::new([(x, y - 5), (x + 20, y + 5)], SESSION.mix(0.15).filled())
+            });
+    }
+    for (kind, color, label) in [
+        (RecordKind::Session, SESSION, "session: offset, bar U(k=2)"),
+        (RecordKind::Check, CHECK, "check: offset, bar U(k=2)"),
+    ] {
+        let of_kind: Vec<&Point> = points.iter().filter(|p| p.3 == kind).collect();
+        if of_kind.is_empty() {
+            continue;
+        }
+        chart
+            .draw_series(of_kind.iter().map(|p| {
+                PathElement::new(
+                    vec![(p.0, p.1 - p.2), (p.0, p.1 + p.2)],
+                    color.stroke_width(1),
+                )
+            }))
+            .map_err(to_io)?;
+        let series = match kind {
+            RecordKind::Session => chart.draw_series(
+                of_kind
+                    .iter()
+                    .map(|p| Circle::new((p.0, p.1), 4, color.filled()).into_dyn()),
+            ),
+            RecordKind::Check => chart.draw_series(
+                of_kind
+                    .iter()
+                    .map(|p| Cross::new((p.0, p.1), 5, color.stroke_width(2)).into_dyn()),
+            ),
+        };
+        series
+            .map_err(to_io)?
+            .label(label)
+            .legend(move |(x, y)| match kind {
+                RecordKind::Session => Circle::new((x + 10, y), 4, color.filled()).into_dyn(),
+                RecordKind::Check => Cross::new((x + 10, y), 5, color.stroke_width(2)).into_dyn(),
+            });
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+        .map_err(to_io)?;
+    root.present().map_err(to_io)
+}
+
+/// Writes DIR/SERIAL-jN.svg for every joint the records hold. Returns the files.
+///
+/// # Errors
+/// A record with a date that does not read; a file that cannot be written.
+pub fn plots(dir: &Path, serial: &str, records: &[Record]) -> Result<Vec<PathBuf>, CliError> {
+    let joints: BTreeSet<u8> = records
+        .iter()
+        .flat_map(|r| r.new.joints.iter().map(|j| j.joint))
+        .collect();
+    let written_error =
+        |p: &Path, e: std::io::Error| CliError::Input(format!("{}: {e}", p.display()));
+    std::fs::create_dir_all(dir).map_err(|e| written_error(dir, e))?;
+    let mut written = Vec::new();
+    for joint in joints {
+        let mut points = Vec::new();
+        for r in records {
+            let day = zerocal_history::day_number(&r.new.measured_on).ok_or_else(|| {
+                CliError::Input(format!(
+                    "history: record {}: measured_on {:?} is not a date",
+                    r.id, r.new.measured_on
+                ))
+            })?;
+            if let Some(j) = r.new.joints.iter().find(|j| j.joint == joint) {
+                points.push((day as f64, j.offset_deg, j.expanded_k2_deg, r.new.kind));
+            }
+        }
+        let path = dir.join(format!("{}-j{joint}.svg", file_stem(serial)));
+        joint_plot(&path, serial, joint, &points).map_err(|e| written_error(&path, e))?;
+        written.push(path);
+    }
+    Ok(written)
+}
+
+/// `zerocal history`.
+///
+/// # Errors
+/// The history does not open or read; a plot cannot be written.
+pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
+    let location = args.db.location()?;
+    let mut history = History::open(&location).map_err(history_error(&location))?;
+    let records = history
+        .list(args.serial.as_deref())
+        .map_err(history_error(&location))?;
+    if args.json {
+        return to_json(&records);
+    }
+    let mut out = if records.is_empty() {
+        match &args.serial {
+            Some(s) => format!("no records of serial {s:?} in {location}\n"),
+            None => format!("no records in {location}\n"),
+        }
+    } else {
+        table(&records)
+    };
+    if let (Some(dir), Some(serial)) = (&args.plot, &args.serial) {
+        for f in plots(dir, serial, &records)? {
+            let _ = writeln!(out, "wrote {}", f.display());
+        }
+    }
+    Ok(out)
+}
