@@ -174,7 +174,7 @@ impl DbLocation {
         home: Option<std::ffi::OsString>,
     ) -> Result<DbLocation, HistoryError> {
         match arg {
-            Some("") => Err(HistoryError::InvalidRecord(
+            Some("") => Err(HistoryError::BadLocation(
                 "--db is empty: give a file or a postgres:// URL".into(),
             )),
             Some(url) if url.starts_with("postgres://") || url.starts_with("postgresql://") => {
@@ -713,7 +713,10 @@ mod tests {
             DbLocation::from_arg(Some("plant/history.sqlite")).ok(),
             Some(DbLocation::Sqlite("plant/history.sqlite".into()))
         );
-        assert!(DbLocation::from_arg(Some("")).is_err());
+        assert!(matches!(
+            DbLocation::from_arg(Some("")),
+            Err(HistoryError::BadLocation(_))
+        ));
     }
 
     #[test]
