@@ -261,7 +261,9 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
         "history" => vec![
             "history".into(),
             "--db".into(),
-            log.with_file_name("walk-history.sqlite").display().to_string(),
+            log.with_file_name("walk-history.sqlite")
+                .display()
+                .to_string(),
         ],
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }

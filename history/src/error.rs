@@ -27,6 +27,8 @@ pub enum HistoryError {
     Corrupt(String),
     /// No `--db` given and neither `XDG_DATA_HOME` nor `HOME` is set.
     NoDataDir,
+    /// A `--db` that names no location (empty).
+    BadLocation(String),
     /// SQLite refused an operation.
     Sqlite(rusqlite::Error),
     /// The PostgreSQL server or its client refused an operation.
@@ -57,6 +59,7 @@ impl fmt::Display for HistoryError {
                 f,
                 "no history database location: give --db, or set XDG_DATA_HOME or HOME"
             ),
+            Self::BadLocation(why) => write!(f, "{why}"),
             Self::Sqlite(e) => write!(f, "SQLite: {e}"),
             // The client's own text is only the kind ("db error", "error connecting to
             // server"); the cause says what the server or the socket said.

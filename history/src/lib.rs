@@ -174,7 +174,7 @@ impl DbLocation {
         home: Option<std::ffi::OsString>,
     ) -> Result<DbLocation, HistoryError> {
         match arg {
-            Some("") => Err(HistoryError::InvalidRecord(
+            Some("") => Err(HistoryError::BadLocation(
                 "--db is empty: give a file or a postgres:// URL".into(),
             )),
             Some(url) if url.starts_with("postgres://") || url.starts_with("postgresql://") => {
@@ -643,12 +643,13 @@ impl History {
             .collect()
     }
 
-    /// SQLite's `PRAGMA integrity_check`: `ok`, or what it found. PostgreSQL checks its
-    /// own pages; there this returns `ok` without asking.
+    /// SQLite's `PRAGMA integrity_check` of the file: `Some("ok")`, or what it found.
+    /// `None` on PostgreSQL, which has no such check of a database (the server keeps its
+    /// own pages consistent; its `amcheck` extension is the administrator's tool).
     ///
     /// # Errors
     /// The backend's.
-    pub fn integrity_check(&mut self) -> Result<String, HistoryError> {
+    pub fn integrity_check(&mut self) -> Result<Option<String>, HistoryError> {
         match self.conn {
             Conn::Sqlite(_) => {
                 let rows = self.conn.query("PRAGMA integrity_check", &[])?;
@@ -659,9 +660,9 @@ impl History {
                             .and_then(|v| v.opt_text("integrity_check").ok().flatten())
                     })
                     .collect();
-                Ok(lines.join("\n"))
+                Ok(Some(lines.join("\n")))
             }
-            Conn::Postgres(_) => Ok("ok".into()),
+            Conn::Postgres(_) => Ok(None),
         }
     }
 }
@@ -712,7 +713,10 @@ mod tests {
             DbLocation::from_arg(Some("plant/history.sqlite")).ok(),
             Some(DbLocation::Sqlite("plant/history.sqlite".into()))
         );
-        assert!(DbLocation::from_arg(Some("")).is_err());
+        assert!(matches!(
+            DbLocation::from_arg(Some("")),
+            Err(HistoryError::BadLocation(_))
+        ));
     }
 
     #[test]

@@ -296,15 +296,16 @@ pub(crate) fn open_sqlite(path: &Path, target: i64) -> Result<Conn, HistoryError
     let c = rusqlite::Connection::open(path)?;
     c.busy_timeout(BUSY_TIMEOUT)?;
     // WAL: readers never block the writer and a commit is one append to the log, so a
-    // process killed mid-write leaves the last committed state. `synchronous` stays at
-    // SQLite's FULL: a commit is on disk when insert returns.
+    // process killed mid-write leaves the last committed state. `synchronous = FULL`
+    // (SQLite's default, set so that no build option changes it): a commit is on disk
+    // when insert returns, power cut included.
     let mode: String = c.query_row("PRAGMA journal_mode = WAL", [], |r| r.get(0))?;
     if !mode.eq_ignore_ascii_case("wal") {
         return Err(HistoryError::Corrupt(format!(
             "{what}: SQLite kept journal mode {mode}, not WAL"
         )));
     }
-    c.execute_batch("PRAGMA foreign_keys = ON")?;
+    c.execute_batch("PRAGMA synchronous = FULL; PRAGMA foreign_keys = ON")?;
     let mut c = Conn::Sqlite(c);
     migrate(&mut c, &what, target)?;
     Ok(c)
