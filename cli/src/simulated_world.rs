@@ -167,15 +167,18 @@ pub struct WorldArgs {
     pub zero_moved: Vec<(usize, f64)>,
     /// With `--again`: the offsets entered into the controller since the first session,
     /// Δθ2..Δθ6 in deg as `zerocal session` printed them (their readings moved by them).
-    #[arg(
-        long,
-        value_name = "DEG,DEG,DEG,DEG,DEG",
-        value_delimiter = ',',
-        num_args = 5,
-        allow_negative_numbers = true,
-        requires = "again"
-    )]
-    pub entered: Option<Vec<f64>>,
+    #[arg(long, value_name = "DEG,DEG,DEG,DEG,DEG", value_parser = parse_entered, allow_hyphen_values = true, requires = "again")]
+    pub entered: Option<[f64; 5]>,
+}
+
+/// Five offsets, comma-separated, each within ±10°.
+fn parse_entered(text: &str) -> Result<[f64; 5], String> {
+    let values = text
+        .split(',')
+        .map(|v| RealIn::closed(-10.0, 10.0, "deg").check(v.trim()))
+        .collect::<Result<Vec<f64>, String>>()?;
+    <[f64; 5]>::try_from(values)
+        .map_err(|v| format!("'{text}': five offsets (joints 2-6), not {}", v.len()))
 }
 
 /// `J=DEG`: a joint 2-6 and a move within ±10°.

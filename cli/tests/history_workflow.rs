@@ -100,7 +100,10 @@ fn record_restore_check_and_certify_one_robot() {
     let u = a3["expanded_k2_deg"].as_f64().unwrap();
     assert!((moved + 1.0).abs() <= u, "A3 restore {moved} +/- {u}");
     let session_u = session["joints"][1]["expanded_k2_deg"].as_f64().unwrap();
-    assert!(u < session_u, "the difference's U {u} below the session's {session_u}");
+    assert!(
+        u < session_u,
+        "the difference's U {u} below the session's {session_u}"
+    );
 
     // The session's offsets entered, then checked; then with 0.01 deg left on A3.
     let entered: Vec<String> = (0..5)
@@ -120,7 +123,10 @@ fn record_restore_check_and_certify_one_robot() {
     ]);
     assert!(check.contains("check: PASS"), "{check}");
     let mut short = entered.clone();
-    short[1] = format!("{}", session["joints"][1]["offset_deg"].as_f64().unwrap() - 0.01);
+    short[1] = format!(
+        "{}",
+        session["joints"][1]["offset_deg"].as_f64().unwrap() - 0.01
+    );
     let wrong = d.join("wrong.txt");
     simulate(&wrong, &["--again", "4", "--entered", &short.join(",")]);
     let failed = zerocal(&[
@@ -149,7 +155,14 @@ fn record_restore_check_and_certify_one_robot() {
     assert_eq!(kinds, ["session", "check", "check"], "{listed}");
 
     let html = d.join("certificate.html");
-    ok(&["certificate", &id, "--out", html.to_str().unwrap(), "--db", db]);
+    ok(&[
+        "certificate",
+        &id,
+        "--out",
+        html.to_str().unwrap(),
+        "--db",
+        db,
+    ]);
     let text = std::fs::read_to_string(&html).unwrap();
     assert!(text.contains("KR6-0001") && text.contains("A. Tech"));
 }

@@ -88,7 +88,13 @@ pub fn run(out: &Path, docs: Option<&Path>) -> Result<()> {
         zerocal(&args)?;
         let mut args = strings(&["session"]);
         args.push(path(&export));
-        args.extend(strings(&["--record", "--serial", SERIAL, "--operator", "A. Tech"]));
+        args.extend(strings(&[
+            "--record",
+            "--serial",
+            SERIAL,
+            "--operator",
+            "A. Tech",
+        ]));
         args.extend(["--measured-on".to_owned(), (*day).to_owned()]);
         args.extend(strings(&FENCE));
         args.extend(db_args.clone());
@@ -98,7 +104,13 @@ pub fn run(out: &Path, docs: Option<&Path>) -> Result<()> {
     let swap = out.join("swap.export");
     let mut args = strings(&["simulate"]);
     args.extend(strings(&ROBOT));
-    args.extend(strings(&["--again", "9", "--zero-moved", "3=1.0", "--export"]));
+    args.extend(strings(&[
+        "--again",
+        "9",
+        "--zero-moved",
+        "3=1.0",
+        "--export",
+    ]));
     args.push(path(&swap));
     zerocal(&args)?;
     let mut args = strings(&["restore"]);
@@ -115,13 +127,25 @@ pub fn run(out: &Path, docs: Option<&Path>) -> Result<()> {
     let checked = out.join("check.export");
     let mut args = strings(&["simulate"]);
     args.extend(strings(&ROBOT));
-    args.extend(strings(&["--again", "10", "--zero-moved", "3=1.0", "--entered"]));
+    args.extend(strings(&[
+        "--again",
+        "10",
+        "--zero-moved",
+        "3=1.0",
+        "--entered",
+    ]));
     args.push(format!("0,{a3},0,0,0"));
     args.extend(["--export".to_owned(), path(&checked)]);
     zerocal(&args)?;
     let mut args = strings(&["check"]);
     args.push(path(&checked));
-    args.extend(strings(&["--against", "1", "--restored", "--measured-on", "2026-10-05"]));
+    args.extend(strings(&[
+        "--against",
+        "1",
+        "--restored",
+        "--measured-on",
+        "2026-10-05",
+    ]));
     args.extend(strings(&FENCE));
     args.extend(db_args.clone());
     print!("{}", zerocal(&args)?);

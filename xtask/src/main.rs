@@ -182,9 +182,7 @@ fn main() -> Result<()> {
         Command::TargetTest => target_test::run(&repo_root(), cli.toolchain),
         Command::PendantAgree { dir } => pendant_sim::agree(&dir),
         Command::Cad => cad::run(&repo_root()),
-        Command::HistoryDemo { out, write_docs } => {
-            history_demo::run(&out, write_docs.as_deref())
-        }
+        Command::HistoryDemo { out, write_docs } => history_demo::run(&out, write_docs.as_deref()),
         Command::CertificateRender {
             html,
             numbers,
