@@ -107,7 +107,24 @@ fn to_json(a: &Against, r: &CheckResult) -> CheckJson {
     }
 }
 
-fn record_of(a: &Against, j: &CheckJson, meta: &RecordMeta) -> Result<NewRecord, CliError> {
+/// The check as the history keeps it. Each joint's offset is the one a session would
+/// measure now (what is left after an entry; the reference's offset plus the move after
+/// a restore), so the history's plot of a joint's zero puts a check beside the sessions.
+fn record_of(
+    a: &Against,
+    j: &CheckJson,
+    expected: Expected,
+    meta: &RecordMeta,
+) -> Result<NewRecord, CliError> {
+    let base = |k: usize| match expected {
+        Expected::Entered => 0.0,
+        Expected::Restored => a.reference.json.joints[k].offset_deg,
+    };
+    let mut now = [0.0; JOINTS];
+    for (k, x) in j.joints.iter().enumerate() {
+        now[k + 1] = (base(k) + x.check.remaining_deg).to_radians();
+    }
+    let shown = a.reference.profile.controller.offsets_deg(&now);
     let reference = &a.record.new;
     let failed: Vec<&str> = j
         .joints
@@ -150,9 +167,9 @@ fn record_of(a: &Against, j: &CheckJson, meta: &RecordMeta) -> Result<NewRecord,
             .map(|(k, x)| JointRow {
                 joint: (k + 2) as u8,
                 name: x.check.name.clone(),
-                offset_deg: x.check.remaining_deg,
+                offset_deg: base(k) + x.check.remaining_deg,
                 expanded_k2_deg: x.check.expanded_k2_deg,
-                controller_offset_deg: x.controller_remaining_deg,
+                controller_offset_deg: shown[k + 1],
                 pass: x.check.pass,
             })
             .collect(),
@@ -237,7 +254,7 @@ pub fn run(args: &CheckArgs) -> Result<String, CliError> {
     let result = judge(&a.reference, &a.comparison, expected, args.tolerance_deg);
     let mut json = to_json(&a, &result);
     if !args.no_record {
-        let record = record_of(&a, &json, &args.meta)?;
+        let record = record_of(&a, &json, expected, &args.meta)?;
         let mut history = args.db.open()?;
         let inserted = history
             .insert(&record)

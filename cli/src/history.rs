@@ -284,7 +284,11 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
     }
     for (kind, color, label) in [
         (RecordKind::Session, SESSION, "session: offset, bar U(k=2)"),
-        (RecordKind::Check, CHECK, "check: offset, bar U(k=2)"),
+        (
+            RecordKind::Check,
+            CHECK,
+            "check: the offset now, bar its U(k=2)",
+        ),
     ] {
         let of_kind: Vec<&Point> = points.iter().filter(|p| p.3 == kind).collect();
         if of_kind.is_empty() {
