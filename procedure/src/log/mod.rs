@@ -37,12 +37,16 @@
 //! This file holds what they share: the columns, the headers and the bounds.
 
 mod error;
+mod kept;
 mod meta;
 mod read;
 mod write;
 
 pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
 pub use error::{LogError, ShortText};
+#[cfg(any(test, feature = "std"))]
+pub use kept::read_kept_results;
+pub use kept::{write_kept_result, KeptResultReader, KEPT_RESULT_KEY, KEPT_RESULT_LINES};
 pub use meta::{
     bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bracket,
     write_bracket_fields, write_fit_extras, write_reversal, MetaItem, MetaKeys,

@@ -158,6 +158,27 @@ pub fn verdict_bits(v: &Verdict) -> u8 {
     v.warnings.iter().fold(0, |bits, w| bits | warning_bit(w))
 }
 
+/// A kept result of every kind of field, for tests.
+#[cfg(test)]
+pub(crate) fn example_kept_result(id: u32) -> KeptResult {
+    let mut robot = RobotName::new();
+    let _ = robot.push_str("kuka-kr6-r900-sixx");
+    let bracket = zerocal_core::bracket::bracket_id("UA-0042").ok();
+    KeptResult {
+        id,
+        robot,
+        offsets_deg: [-0.123_456_7, 0.5, -1.25e-3, 3.0, 1.0e-7],
+        sigma_deg: [0.001_234_5, 0.002, 0.003, 0.004, 0.005],
+        residual_rms_deg: 0.000_812,
+        warnings: 0b010,
+        temperatures_c: [Some(21.53), None, Some(22.07)],
+        brackets: [bracket, None],
+        unit: Some(UnitId([
+            0x36, 0, 0x2f, 0, 0x13, 0x47, 0x33, 0x31, 0x30, 0x37, 0x35, 0x39,
+        ])),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -200,25 +200,7 @@ impl KeptResult {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use zerocal_core::bracket::bracket_id;
-
-    pub(crate) fn example(id: u32) -> KeptResult {
-        let mut robot = RobotName::new();
-        robot.push_str("kuka-kr6-r900-sixx").unwrap();
-        KeptResult {
-            id,
-            robot,
-            offsets_deg: [-0.123_456_7, 0.5, -1.25e-3, 3.0, 1.0e-7],
-            sigma_deg: [0.001_234_5, 0.002, 0.003, 0.004, 0.005],
-            residual_rms_deg: 0.000_812,
-            warnings: 0b010,
-            temperatures_c: [Some(21.53), None, Some(22.07)],
-            brackets: [Some(bracket_id("UA-0042").unwrap()), None],
-            unit: Some(UnitId([
-                0x36, 0, 0x2f, 0, 0x13, 0x47, 0x33, 0x31, 0x30, 0x37, 0x35, 0x39,
-            ])),
-        }
-    }
+    use crate::machine::kept::example_kept_result as example;
 
     #[test]
     fn a_kept_result_reads_back_exactly_under_its_key() {
