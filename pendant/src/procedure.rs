@@ -19,9 +19,11 @@ use zerocal_core::plan::PoseList;
 use zerocal_procedure::bracket_cal::{
     bracket_step, BracketCalState, BracketOutput, StoredBracket, StoredBrackets,
 };
+use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
-    step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot,
+    step, Event, Notice, Output, PendantProfile, PendantUnit, Phase, ProcedureState, ReadingSlot,
+    Record,
 };
 
 use crate::buttons::{Button, ButtonEvent, Press};
@@ -41,6 +43,9 @@ pub struct Boot<'a, F> {
     pub default_plan: &'a [[f32; 6]],
     /// Why the board restarted, if a panic or the watchdog did it.
     pub restart: Option<RestartNote>,
+    /// This pendant unit (its chip's ID, its firmware's version): written into the
+    /// export and every kept result.
+    pub pendant: Option<PendantUnit>,
 }
 
 /// The presentation state this task keeps beside core's session.
@@ -60,6 +65,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     let mut reset = None;
     {
         let mut procedure = shared.procedure.lock().await;
+        procedure.config.pendant = boot.pendant;
         match store.as_mut() {
             Some(s) => match restore(s, &mut procedure) {
                 Ok(()) => {}
@@ -107,6 +113,19 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             shared.link_requests.receive(),
         )
         .await;
+        if let Either3::Third(LinkRequest::ReadKept { id }) = input {
+            // A read: nothing changes, nothing is shown.
+            let mut value = [0_u8; KEPT_RESULT_LEN];
+            let found = match store.as_mut() {
+                Some(s) => s.read_kept(id, &mut value).await.unwrap_or(false),
+                None => false,
+            };
+            shared
+                .link_replies
+                .send(LinkReply::Kept(found.then_some(value)))
+                .await;
+            continue;
+        }
         let from_link = matches!(input, Either3::Third(_));
         let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
         let mut procedure = shared.procedure.lock().await;
@@ -165,7 +184,8 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                     Either3::Third(
                         LinkRequest::SetProfile(_)
                         | LinkRequest::Erase
-                        | LinkRequest::CalibrateBracket { .. },
+                        | LinkRequest::CalibrateBracket { .. }
+                        | LinkRequest::ReadKept { .. },
                     ) => None,
                 };
                 event.map(|e| step(config, session, e))
@@ -173,6 +193,22 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
         };
         let refused = output.is_none() && from_link && !erase_failed;
         let mut stored = !erase_failed;
+        // A session just finished with a result: kept before the step's records, so a
+        // cut between the two leaves the result kept and the session before its last
+        // capture (finished again, it is kept again under a new ID), never a result
+        // shown but not kept.
+        let finished = output.as_ref().is_some_and(|o| {
+            o.persist
+                .iter()
+                .any(|r| matches!(r, Record::LastResult { .. }))
+        });
+        if let Some((id, value)) = finished.then(|| encode_kept(&mut procedure)).flatten() {
+            stored &= match store.as_mut() {
+                Some(s) => s.keep_result(id, &value).await.is_ok(),
+                None => false,
+            };
+            presentation.extras.store_failed = !stored;
+        }
         if let Some(output) = output {
             if !output.persist.is_empty() {
                 stored &= persist(&mut store, &output.persist).await;
@@ -233,7 +269,23 @@ fn restore<F: NorFlash>(
     // A store to be reset restores nothing: the session starts afresh.
     procedure.session = ProcedureState::restore(&procedure.config, restored.records());
     procedure.brackets = StoredBrackets::from_records(restored.records());
+    // Unreadable (a store to be reset that cannot be read): from the first ID.
+    procedure.next_result_id = embassy_futures::block_on(store.next_result_id())
+        .ok()
+        .flatten()
+        .unwrap_or(crate::store::FIRST_RESULT_ID);
     opened
+}
+
+/// The session's result as a kept result under the next ID, encoded; the next ID moves
+/// on whether or not the write will succeed (a failed write may have stored the ID).
+fn encode_kept(procedure: &mut Procedure) -> Option<(u32, [u8; KEPT_RESULT_LEN])> {
+    let id = procedure.next_result_id;
+    let kept = procedure.session.kept_result(&procedure.config, id)?;
+    let mut value = [0_u8; KEPT_RESULT_LEN];
+    kept.encode(&mut value).ok()?;
+    procedure.next_result_id = id.saturating_add(1);
+    Some((id, value))
 }
 
 /// How long the boot screen (with the robot's name) stays (ms).
@@ -289,7 +341,11 @@ pub fn set_profile(
 /// `erase all` (the store already erased): the built-in profile, no bias or result,
 /// the firmware's default plan, which the records returned store again.
 pub fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
+    // The unit stays the unit; the kept results' next ID stays too (the store's erase
+    // carried it over).
+    let pendant = procedure.config.pendant;
     procedure.config = crate::config::procedure_config();
+    procedure.config.pendant = pendant;
     procedure.profile_generation = 0;
     procedure.session = ProcedureState::new(PoseList::new(), None);
     procedure.brackets = StoredBrackets::default();
