@@ -6,7 +6,9 @@
 use zerocal_pendant::screen::ScreenKind;
 use zerocal_pendant_desktop::conversation::link_faults;
 use zerocal_pendant_desktop::faults::{self, StoreContents};
-use zerocal_pendant_desktop::power_cuts::{erase_operations, power_cuts, power_cuts_at};
+use zerocal_pendant_desktop::power_cuts::{
+    erase_operations, kept_write_operations, power_cuts, power_cuts_at,
+};
 use zerocal_pendant_desktop::session;
 use zerocal_pendant_desktop::world::WorldConfig;
 use zerocal_procedure::log::{LogLine, LogReader};
@@ -226,4 +228,36 @@ fn an_erase_cut_half_way_loses_no_record_of_the_page_it_emptied() {
     // records had been copied to and copied again from the wreck; the plan, the
     // oldest records, was gone at the next boot.
     erase_cuts_match_the_uncut_run(1);
+}
+
+/// Every operation of the kept result's write (its next ID, then the result) cut, before
+/// it and half-way through it: right after the cut the store holds the old results or
+/// the new, never a torn one or a reused ID, and the finished session's result is kept
+/// with the uncut run's numbers (`power_cuts::kept_difference`). On the filled store,
+/// whose earlier sessions fill every slot, so the write replaces the oldest result (a
+/// fresh board's write is one of the campaign's spread of cut points; all of them
+/// doubled this test's two minutes).
+#[test]
+fn a_cut_in_the_kept_results_write_leaves_the_old_set_or_the_new() {
+    let (seed, filled) = (3, true);
+    let operations = kept_write_operations(seed, filled).unwrap();
+    // The next ID (a few words) and a result of ~150 bytes in 4-byte words.
+    assert!(operations.len() > 30, "{operations:?}");
+    let cuts: Vec<(bool, CutPoint)> = operations
+        .iter()
+        .flat_map(|&operation| {
+            [false, true].map(|half_done| {
+                (
+                    filled,
+                    CutPoint {
+                        operation,
+                        half_done,
+                    },
+                )
+            })
+        })
+        .collect();
+    let report = power_cuts_at(seed, &cuts).unwrap();
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    assert_eq!(report.equal_results, cuts.len());
 }
