@@ -29,6 +29,7 @@ use zerocal_pendant::config::procedure_config;
 use zerocal_pendant::procedure::Boot;
 use zerocal_pendant::screen::RestartNote;
 use zerocal_pendant::Shared;
+use zerocal_procedure::PendantUnit;
 use {defmt_rtt as _, embassy_futures::join::join};
 
 use board::{Board, SENSOR_SPI_HZ, STORAGE_END, STORAGE_START, WATCHDOG_TIMEOUT_US};
@@ -187,6 +188,10 @@ async fn procedure_task(
         store_range: STORAGE_START..STORAGE_END,
         default_plan: &DEFAULT_PLAN_RAD,
         restart,
+        pendant: Some(PendantUnit {
+            id: board::unit_id(),
+            firmware: env!("CARGO_PKG_VERSION"),
+        }),
     };
     zerocal_pendant::procedure::run(shared, boot).await
 }
