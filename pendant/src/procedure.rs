@@ -145,8 +145,10 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                 set_profile(&mut procedure, &profile)
             }
             Either3::Third(LinkRequest::CalibrateBracket { mount, id }) => {
-                // Nothing to store until the operator keeps a result.
+                // Nothing to store until the operator keeps a result. The still window
+                // is the waiting session's, lent empty.
                 procedure.bracket_cal = Some(BracketCalState::new(mount, id));
+                procedure.session.stillness_window().reset();
                 Some(Output::default())
             }
             input @ (Either3::First(_) | Either3::Second(_)) if procedure.bracket_cal.is_some() => {
@@ -477,14 +479,18 @@ fn on_bracket_input(
     };
     let Procedure {
         config,
+        session,
         brackets,
         bracket_cal,
         ..
     } = procedure;
     let state = bracket_cal.as_mut()?;
-    match bracket_step(config, state, event) {
+    let window = session.stillness_window();
+    match bracket_step(config, state, window, event) {
         BracketOutput::Stay => None,
         BracketOutput::Leave => {
+            // The window goes back to the session empty.
+            window.reset();
             *bracket_cal = None;
             None
         }
@@ -492,6 +498,7 @@ fn on_bracket_input(
             if let Some(kept) = StoredBracket::from_record(&record) {
                 brackets.keep(kept);
             }
+            window.reset();
             *bracket_cal = None;
             let mut output = Output::default();
             // One record into a buffer of a whole plan's.

@@ -371,7 +371,10 @@ mod tests {
             brackets: [Some(long.clone()), Some(long)],
             ..example(1)
         };
-        assert_eq!(read_kept_results(&lines(std::slice::from_ref(&k))).unwrap(), [k]);
+        assert_eq!(
+            read_kept_results(&lines(std::slice::from_ref(&k))).unwrap(),
+            [k]
+        );
     }
 
     /// `text` with line `n` (1-based) replaced.
