@@ -26,10 +26,9 @@ use embassy_usb::class::cdc_acm::{CdcAcmClass, State};
 use embassy_usb::{Builder, Config};
 use static_cell::StaticCell;
 use zerocal_pendant::config::procedure_config;
-use zerocal_pendant::procedure::Boot;
+use zerocal_pendant::procedure::{Boot, PendantUnit};
 use zerocal_pendant::screen::RestartNote;
 use zerocal_pendant::Shared;
-use zerocal_procedure::PendantUnit;
 use {defmt_rtt as _, embassy_futures::join::join};
 
 use board::{Board, SENSOR_SPI_HZ, STORAGE_END, STORAGE_START, WATCHDOG_TIMEOUT_US};

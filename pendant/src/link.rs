@@ -427,11 +427,20 @@ impl<W: Write> Server<'_, W> {
         let first = next
             .saturating_sub(KEPT_RESULTS as u32)
             .max(FIRST_RESULT_ID);
-        self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
+        // The head goes out with the first answer: a pendant not ready (its storage
+        // reset screen up) says only that, as to every request.
+        let mut head = false;
         for id in first..next {
-            let value = match self.request(LinkRequest::ReadKept { id }).await {
+            let reply = self.request(LinkRequest::ReadKept { id }).await;
+            if reply == LinkReply::NotReady && !head {
+                return self.write_line(NOT_READY.as_bytes()).await;
+            }
+            if !head {
+                self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
+                head = true;
+            }
+            let value = match reply {
                 LinkReply::Kept(Some(value)) => value,
-                LinkReply::NotReady => return self.write_line(NOT_READY.as_bytes()).await,
                 // An empty slot (the result's write was cut) or an unreadable one.
                 _ => continue,
             };
@@ -443,6 +452,9 @@ impl<W: Write> Server<'_, W> {
                 let text = write_kept_result(&mut line, &kept, part).map(|()| line);
                 self.write_text(text).await?;
             }
+        }
+        if !head {
+            self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
         }
         self.write_line(KEPT_RESULTS_END.as_bytes()).await
     }

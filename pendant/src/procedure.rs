@@ -22,9 +22,10 @@ use zerocal_procedure::bracket_cal::{
 use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
-    step, Event, Notice, Output, PendantProfile, PendantUnit, Phase, ProcedureState, ReadingSlot,
-    Record,
+    step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot, Record,
 };
+/// What [`Boot::pendant`] holds, for the board to fill.
+pub use zerocal_procedure::{PendantUnit, UnitId};
 
 use crate::buttons::{Button, ButtonEvent, Press};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
