@@ -5,17 +5,18 @@
 //!
 //! ```text
 //! # kept_result id 7 robot kuka-kr6-r900-sixx unit 36002f001347333130373539 brackets UA-0042,none
-//! # kept_result id 7 verdict pass temps_c 21.53,none,22.07
-//! # kept_result id 7 offsets_deg -0.1234567,0.5,-0.00125,3,0.0000001
-//! # kept_result id 7 sigma_deg 0.0012345,0.002,0.003,0.004,0.005 residual_rms_deg 0.000812
+//! # kept_result id 7 verdict bias_x_unknown temps_c 21.530000686645508,none,22.06999969482422
+//! # kept_result id 7 offsets_deg -0.123456701636314,0.5,-0.00124999997206,3,0.000000100000001
+//! # kept_result id 7 sigma_deg 0.001234499970451,0.002000000094995,0.003000000026077,0.00400000018999,0.004999999888241 residual_rms_deg 0.000812000012957
 //! ```
 //!
 //! (the unit is one word of 24 hex digits, `none` where unknown). Offsets are Δθ2..Δθ6;
 //! the verdict is `pass` or its warnings ([`VERDICT_WORDS`]) joined by `,`; the
 //! temperatures are stage 0's, stage 1's and the closing reversal's
-//! ([`TEMPERATURE_STAGES`](crate::machine::kept::TEMPERATURE_STAGES)); the brackets the upper arm's then the flange's. Numbers are
-//! the shortest decimals that read back to the pendant's `f32`s, so the desktop gets
-//! exactly what the pendant holds. One line would pass the link's [`Line`] length.
+//! ([`TEMPERATURE_STAGES`](crate::machine::kept::TEMPERATURE_STAGES)); the brackets the upper arm's then the flange's. Numbers have
+//! [`KEPT_DECIMALS`] decimals (trailing zeros dropped), which read back to the
+//! pendant's `f32`s bit for bit, so the desktop gets exactly what the pendant holds.
+//! One line would pass the link's [`Line`] length.
 
 use core::fmt::{self, Write};
 
@@ -23,6 +24,7 @@ use super::{Line, LogError, MAX_READING_DEG, TEMPERATURE_RANGE_C};
 use crate::machine::kept::{KeptResult, UnitId, VERDICT_BITS, VERDICT_PASS, VERDICT_WORDS};
 use crate::text::RobotName;
 use zerocal_core::bracket::bracket_id;
+use zerocal_core::decimal::Fixed;
 use zerocal_core::session::SESSION_JOINTS;
 
 /// The first word of a kept result's lines (after `#`).
@@ -37,13 +39,36 @@ const PARTS: [&str; KEPT_RESULT_LINES] = ["robot", "verdict", "offsets_deg", "si
 /// The word for an absent value (a temperature, a bracket, the unit).
 const NONE: &str = "none";
 
+/// Decimals of a kept result's numbers: 1e-15 is below half an `f32`'s step for every
+/// magnitude down to 1e-8 (an `f32` carries 24 bits: a relative step of 6e-8), so the
+/// reader's nearest `f32` is the pendant's own, bit for bit; smaller numbers (no angle
+/// or 1σ the pendant computes) come back within 1e-15.
+pub const KEPT_DECIMALS: u8 = 15;
+
+/// Largest magnitude a kept result's number may have: the reader takes angles within
+/// ±180° and temperatures within the log's range; beyond, the writer refuses.
+const MAX_KEPT_NUMBER: f64 = 1.0e4;
+
+/// Writes `v` with [`KEPT_DECIMALS`] decimals, trailing zeros dropped (`0.5`, `3`):
+/// core's integer writer, not `{}` on a float, whose formatting machinery would take
+/// ~20 KiB of the firmware's flash.
+fn number_text(w: &mut Line, v: f32) -> fmt::Result {
+    let v = f64::from(v);
+    if !(v.abs() < MAX_KEPT_NUMBER) {
+        return Err(fmt::Error);
+    }
+    let mut text = heapless::String::<32>::new();
+    write!(text, "{}", Fixed::new(v, KEPT_DECIMALS))?;
+    let digits = text.trim_end_matches('0').trim_end_matches('.');
+    w.write_str(digits)
+}
+
 fn list(w: &mut Line, values: &[f32]) -> fmt::Result {
     for (i, v) in values.iter().enumerate() {
         if i > 0 {
             w.write_char(',')?;
         }
-        // `f32`'s Display: the shortest decimal that reads back to the same `f32`.
-        write!(w, "{v}")?;
+        number_text(w, *v)?;
     }
     Ok(())
 }
@@ -91,7 +116,7 @@ pub fn write_kept_result(w: &mut Line, k: &KeptResult, part: usize) -> fmt::Resu
                     w.write_char(',')?;
                 }
                 match t {
-                    Some(c) => write!(w, "{c}")?,
+                    Some(c) => number_text(w, *c)?,
                     None => w.write_str(NONE)?,
                 }
             }
@@ -350,7 +375,7 @@ mod tests {
     #[test]
     fn the_widest_result_fits_a_line() {
         // The longest name, both brackets of the longest ID, every warning, and
-        // numbers whose shortest decimals are long.
+        // numbers with every decimal used.
         let mut robot = RobotName::new();
         robot.push_str(&"r".repeat(32)).unwrap();
         let long = bracket_id("ABCDEFGHIJKL").unwrap();
@@ -375,6 +400,35 @@ mod tests {
             read_kept_results(&lines(std::slice::from_ref(&k))).unwrap(),
             [k]
         );
+    }
+
+    #[test]
+    fn the_example_reads_as_written_and_below_1e_8_comes_back_within_1e_15() {
+        let text = lines(&[example(7)]);
+        std::println!("{text}");
+        assert!(
+            text.contains("# kept_result id 7 offsets_deg -0.123456701636314,0.5,"),
+            "{text}"
+        );
+        assert!(
+            text.contains(" temps_c 21.530000686645508,none,22.06999969482422"),
+            "{text}"
+        );
+        let tiny = KeptResult {
+            offsets_deg: [1.0e-12, -3.0e-9, 0.0, 7.5e-9, 1.0e-8],
+            ..example(7)
+        };
+        let back = read_kept_results(&lines(std::slice::from_ref(&tiny))).unwrap();
+        for (a, b) in back[0].offsets_deg.iter().zip(&tiny.offsets_deg) {
+            assert!((f64::from(*a) - f64::from(*b)).abs() <= 1e-15, "{a} {b}");
+        }
+        assert_eq!(back[0].offsets_deg[4].to_bits(), 1.0e-8_f32.to_bits());
+        // Beyond what the reader takes: the writer refuses rather than write "huge".
+        let huge = KeptResult {
+            residual_rms_deg: 1.0e5,
+            ..example(7)
+        };
+        assert!(write_kept_result(&mut Line::new(), &huge, 3).is_err());
     }
 
     /// `text` with line `n` (1-based) replaced.

@@ -8,9 +8,9 @@
 //! result (`record::kept`), read back one at a time; `log::kept` writes and reads their
 //! lines for the desktop.
 //!
-//! Numbers are kept as the pendant showed them, `f32` degrees: the lines carry the
-//! shortest decimal that reads back to the same `f32`, so the desktop files exactly
-//! what the pendant holds. The pendant computes no uncertainty budget (the expanded
+//! Numbers are kept as the pendant showed them, `f32` degrees: the lines carry
+//! decimals that read back to the same `f32`, so the desktop files exactly what the
+//! pendant holds. The pendant computes no uncertainty budget (the expanded
 //! U(k=2) is the desktop's, from the profile's error budget): a kept result has the
 //! fit's 1σ only.
 
