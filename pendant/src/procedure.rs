@@ -116,15 +116,8 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
         .await;
         if let Either3::Third(LinkRequest::ReadKept { id }) = input {
             // A read: nothing changes, nothing is shown.
-            let mut value = [0_u8; KEPT_RESULT_LEN];
-            let found = match store.as_mut() {
-                Some(s) => s.read_kept(id, &mut value).await.unwrap_or(false),
-                None => false,
-            };
-            shared
-                .link_replies
-                .send(LinkReply::Kept(found.then_some(value)))
-                .await;
+            let reply = read_kept(store.as_mut(), id);
+            shared.link_replies.send(reply).await;
             continue;
         }
         let from_link = matches!(input, Either3::Third(_));
@@ -278,6 +271,16 @@ fn restore<F: NorFlash>(
         .flatten()
         .unwrap_or(crate::store::FIRST_RESULT_ID);
     opened
+}
+
+/// Kept result `id` as the link's reply. Driven to completion on the spot, as
+/// [`restore`]: reading flash never waits, and the read's buffers stay on the stack
+/// rather than in the task's state for good.
+fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
+    let mut value = [0_u8; KEPT_RESULT_LEN];
+    let found = store
+        .is_some_and(|s| embassy_futures::block_on(s.read_kept(id, &mut value)).unwrap_or(false));
+    LinkReply::Kept(found.then_some(value))
 }
 
 /// The session's result as a kept result under the next ID, encoded; the next ID moves

@@ -51,7 +51,9 @@ use sequential_storage::cache::page_states::ArrayPageStates;
 use sequential_storage::cache::{Cache, Uncached};
 use sequential_storage::map::{MapConfig, MapStorage};
 use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
-use zerocal_procedure::record::kept::{decode_next_id, encode_next_id, kept_key, KEPT_RESULT_LEN};
+use zerocal_procedure::record::kept::{
+    decode_next_id, encode_next_id, kept_key, KEPT_RESULT_LEN, NEXT_ID_LEN,
+};
 use zerocal_procedure::record::{key, Record, RecordError, FORMAT, MAX_RECORD_LEN};
 
 /// The key of the format marker.
@@ -614,11 +616,45 @@ impl<F: NorFlash> Store<F> {
     /// # Errors
     /// The flash's, or a map sequential-storage finds corrupted.
     pub async fn next_result_id(&mut self) -> Result<Option<u32>, StoreError> {
-        let map = self.map.as_mut().ok_or(StoreError::Map)?;
-        let value = map
-            .fetch_item::<&[u8]>(&mut self.buffer, &key::KEPT_NEXT_ID)
+        let mut value = [0_u8; NEXT_ID_LEN];
+        let len = self.read_kept_item(key::KEPT_NEXT_ID, &mut value).await?;
+        Ok(len
+            .and_then(|len| value.get(..len))
+            .and_then(decode_next_id))
+    }
+
+    /// Copies the newest value under `key` (a kept result's or the next ID's) into
+    /// `out`; its length, or `None` when the key has none. Read by walking the map's
+    /// items as [`Self::open`] does (a later item of a key is newer): the same code as
+    /// the power-up's, so the firmware carries no second reader (sequential-storage's
+    /// `fetch_item` is 1.3 KB of flash), and eight reads of three pages are
+    /// milliseconds.
+    ///
+    /// # Errors
+    /// The flash's, a corrupted map, or a value longer than `out` (not a kept result's
+    /// item).
+    async fn read_kept_item(
+        &mut self,
+        key: u16,
+        out: &mut [u8],
+    ) -> Result<Option<usize>, StoreError> {
+        let mut iter = self
+            .map
+            .as_mut()
+            .ok_or(StoreError::Map)?
+            .fetch_all_items(&mut self.buffer)
             .await?;
-        Ok(value.and_then(decode_next_id))
+        let mut value = [0_u8; ITEM_BUFFER_BYTES];
+        let mut found = None;
+        while let Some((k, bytes)) = iter.next::<&[u8]>(&mut value).await? {
+            if k == key {
+                out.get_mut(..bytes.len())
+                    .ok_or(StoreError::KeptResult(RecordError::BadField))?
+                    .copy_from_slice(bytes);
+                found = Some(bytes.len());
+            }
+        }
+        Ok(found)
     }
 
     async fn write_next_id(&mut self, next: u32) -> Result<(), StoreError> {
@@ -676,18 +712,11 @@ impl<F: NorFlash> Store<F> {
         id: u32,
         value: &mut [u8; KEPT_RESULT_LEN],
     ) -> Result<bool, StoreError> {
-        let map = self.map.as_mut().ok_or(StoreError::Map)?;
-        let Some(bytes) = map
-            .fetch_item::<&[u8]>(&mut self.buffer, &kept_key(id))
-            .await?
-        else {
-            return Ok(false);
-        };
-        if bytes.len() != KEPT_RESULT_LEN {
-            return Err(StoreError::KeptResult(RecordError::Truncated));
+        match self.read_kept_item(kept_key(id), value).await? {
+            None => Ok(false),
+            Some(KEPT_RESULT_LEN) => Ok(true),
+            Some(_) => Err(StoreError::KeptResult(RecordError::Truncated)),
         }
-        value.copy_from_slice(bytes);
-        Ok(true)
     }
 
     /// Writes `records` in order, each one in flash before the next.
