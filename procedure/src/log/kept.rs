@@ -54,7 +54,7 @@ const MAX_KEPT_NUMBER: f64 = 1.0e4;
 /// ~20 KiB of the firmware's flash.
 fn number_text(w: &mut Line, v: f32) -> fmt::Result {
     let v = f64::from(v);
-    if !(v.abs() < MAX_KEPT_NUMBER) {
+    if !v.is_finite() || v.abs() >= MAX_KEPT_NUMBER {
         return Err(fmt::Error);
     }
     let mut text = heapless::String::<32>::new();
