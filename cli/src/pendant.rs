@@ -8,7 +8,11 @@
 //!   then the plan `zerocal program --robot ROBOT` drives (or FILE, `zerocal plan
 //!   --csv` output), so the pendant's screens, the robot program and the export all
 //!   name the same robot and poses, and the pendant's fit is `zerocal session`'s.
-//! - `export [--out FILE]`: the session as `zerocal session` reads it.
+//! - `export [--out FILE] [--results FILE]`: the session as `zerocal session` reads it;
+//!   with a file, the results the pendant keeps (`results`, the lines
+//!   `zerocal_procedure::log::read_kept_results` reads) into their own file beside it.
+//! - `results [--out FILE]`: the results the pendant keeps (its last eight, each with
+//!   its ID and the pendant unit's).
 //! - `erase`: `erase all` (session, bias, last result, profile, plan, brackets).
 //! - `brackets [--out FILE] [--date YYYY-MM-DD]`: the brackets' calibrations made on the
 //!   pendant (`brackets`), as the `[[bracket]]` TOML `load-profile --brackets` reads,
@@ -32,13 +36,16 @@ use clap::{Args, Subcommand};
 use zerocal_core::bracket::Brackets;
 use zerocal_core::model::JOINTS;
 use zerocal_procedure::export_trailer;
+use zerocal_procedure::kept::KEPT_RESULTS;
 use zerocal_procedure::link::{
     parse_plan_stored, parse_profile_stored, parse_status, phase_name, Command, Stage2Status,
     Status, ERASED, ERROR_PREFIX, MAX_COMMAND_BYTES, PLAN_PROMPT, PROFILE_PROMPT, REPLY_LINE_BYTES,
     STATUS_LINES, UPLOAD_END,
 };
+use zerocal_procedure::link::{KEPT_RESULTS_END, KEPT_RESULTS_HEAD};
 use zerocal_procedure::log::{
-    parse_meta, LogError, LogLine, LogReader, EXPORT_MAX_LINES, LOG_HEADER,
+    parse_meta, read_kept_results, LogError, LogLine, LogReader, EXPORT_MAX_LINES,
+    KEPT_RESULT_LINES, LOG_HEADER,
 };
 use zerocal_procedure::profile::{JointName, PendantProfile};
 use zerocal_procedure::{RobotName, MAX_PLAN_POSES};
@@ -90,9 +97,20 @@ pub enum PendantAction {
         #[arg(long, value_name = "FILE")]
         brackets: Option<PathBuf>,
     },
-    /// Save the session (`zerocal session` reads it).
+    /// Save the session (`zerocal session` reads it), and with --out the results the
+    /// pendant keeps beside it.
     Export {
         /// Write it here instead of standard output.
+        #[arg(long, short, value_name = "FILE")]
+        out: Option<PathBuf>,
+        /// Write the kept results here; default with --out: FILE.results (a file of
+        /// their own: `zerocal session` reads the export alone).
+        #[arg(long, value_name = "FILE")]
+        results: Option<PathBuf>,
+    },
+    /// Read the results the pendant keeps (its last eight, oldest first).
+    Results {
+        /// Write them here instead of standard output.
         #[arg(long, short, value_name = "FILE")]
         out: Option<PathBuf>,
     },
@@ -236,6 +254,8 @@ pub enum Expect {
     PlanStored(usize),
     /// A `brackets` line a mount, turned into TOML dated this `YYYY-MM-DD`.
     Brackets(String),
+    /// The kept results: [`KEPT_RESULTS_HEAD`], their lines, [`KEPT_RESULTS_END`].
+    KeptResults,
 }
 
 impl Expect {
@@ -247,6 +267,7 @@ impl Expect {
             Expect::Erased => 1,
             Expect::ProfileStored(_) | Expect::PlanStored(_) => 2,
             Expect::Brackets(_) => zerocal_core::bracket::BracketMount::ALL.len(),
+            Expect::KeptResults => 2 + KEPT_RESULTS * KEPT_RESULT_LINES,
         }
     }
 
@@ -270,6 +291,7 @@ impl Expect {
                 Expect::ProfileStored(_) => last != PROFILE_PROMPT,
                 Expect::PlanStored(_) => last != PLAN_PROMPT,
                 Expect::Brackets(_) => lines.len() >= self.max_lines(),
+                Expect::KeptResults => last == KEPT_RESULTS_END,
             }
     }
 
@@ -283,6 +305,7 @@ impl Expect {
             Expect::ProfileStored(_) => Command::ProfileSet.word(),
             Expect::PlanStored(_) => Command::PlanSet.word(),
             Expect::Brackets(_) => Command::Brackets.word(),
+            Expect::KeptResults => Command::Results.word(),
         }
     }
 }
@@ -309,6 +332,7 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
     Ok(match action {
         PendantAction::Status => vec![request(Command::Status, Expect::Status)],
         PendantAction::Export { .. } => vec![request(Command::Export, Expect::Export)],
+        PendantAction::Results { .. } => vec![request(Command::Results, Expect::KeptResults)],
         PendantAction::Erase => vec![request(Command::Erase, Expect::Erased)],
         PendantAction::Brackets { date, .. } => {
             let date = match date {
@@ -614,6 +638,25 @@ pub fn check_reply(expect: &Expect, reply: &Reply) -> Result<String, CliError> {
             }
             crate::brackets::brackets_toml(&lines, date).map_err(wrong)
         }
+        Expect::KeptResults => {
+            if !reply.over {
+                return Err(wrong(format!(
+                    "cut after {} lines (no '{KEPT_RESULTS_END}'){}",
+                    lines.len(),
+                    cut()
+                )));
+            }
+            if lines.first() != Some(&KEPT_RESULTS_HEAD) {
+                return Err(wrong(format!(
+                    "not the pendant's answer: '{}'",
+                    lines.first().copied().unwrap_or("")
+                )));
+            }
+            let mut text = lines.join("\n");
+            text.push('\n');
+            read_kept_results(&text).map_err(|e| wrong(e.to_string()))?;
+            Ok(text)
+        }
         Expect::PlanStored(poses) => match lines.as_slice() {
             [PLAN_PROMPT, stored] if parse_plan_stored(stored) == Some(*poses) => {
                 Ok(format!("{stored}\n"))
@@ -760,16 +803,53 @@ pub fn run(args: &PendantArgs) -> Result<String, CliError> {
         .timeout(Duration::from_millis(50))
         .open()
         .map_err(|e| CliError::Input(format!("{}: {e}", args.port)))?;
-    let out = perform(&mut port, &args.action, Timeouts::LINK).map_err(|e| match e {
+    let out_text = perform(&mut port, &args.action, Timeouts::LINK).map_err(|e| match e {
         CliError::Input(m) => CliError::Input(format!("{}: {m}", args.port)),
         refused => refused,
     })?;
-    if let PendantAction::Export { out: Some(path) } = &args.action {
-        std::fs::write(path, &out)
-            .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let write = |path: &PathBuf, text: &str| {
+        std::fs::write(path, text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+    };
+    if let PendantAction::Export { out, results } = &args.action {
+        let results = results
+            .clone()
+            .or_else(|| out.as_ref().map(|p| results_path(p)));
+        let mut said = String::new();
+        if let Some(path) = out {
+            write(path, &out_text)?;
+            said = format!(
+                "wrote {} (read it with `zerocal session {}`)\n",
+                path.display(),
+                path.display()
+            );
+        }
+        let Some(path) = results else {
+            return Ok(out_text);
+        };
+        let kept = perform(
+            &mut port,
+            &PendantAction::Results { out: None },
+            Timeouts::LINK,
+        )
+        .map_err(|e| match e {
+            CliError::Input(m) => CliError::Input(format!("{}: {m}", args.port)),
+            refused => refused,
+        })?;
+        write(&path, &kept)?;
+        if out.is_none() {
+            // The export still goes to standard output, alone.
+            return Ok(out_text);
+        }
+        said.push_str(&format!(
+            "wrote {} (the results the pendant keeps)\n",
+            path.display()
+        ));
+        return Ok(said);
+    }
+    if let PendantAction::Results { out: Some(path) } = &args.action {
+        write(path, &out_text)?;
         return Ok(format!(
-            "wrote {} (read it with `zerocal session {}`)\n",
-            path.display(),
+            "wrote {} (the results the pendant keeps)\n",
             path.display()
         ));
     }
@@ -777,13 +857,19 @@ pub fn run(args: &PendantArgs) -> Result<String, CliError> {
         out: Some(path), ..
     } = &args.action
     {
-        std::fs::write(path, &out)
-            .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+        write(path, &out_text)?;
         return Ok(format!(
             "wrote {} (give it to `zerocal pendant load-profile ROBOT --brackets {}`)\n",
             path.display(),
             path.display()
         ));
     }
-    Ok(out)
+    Ok(out_text)
+}
+
+/// Where `export --out FILE` puts the kept results: `FILE.results`.
+pub fn results_path(export: &std::path::Path) -> PathBuf {
+    let mut name = export.as_os_str().to_owned();
+    name.push(".results");
+    PathBuf::from(name)
 }

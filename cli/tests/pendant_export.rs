@@ -38,6 +38,13 @@ fn export_round_trip_through_zerocal_session() {
     let (report, _) = session(world, false).expect("a whole session");
     let text = report.export_text();
     println!("{}", text.lines().take(9).collect::<Vec<_>>().join("\n"));
+    // The export names the pendant unit (the desktop's fake), and the desktop's strict
+    // reader takes the line.
+    let contents = zerocal_cli::session::read_export(&text).unwrap();
+    assert_eq!(
+        contents.pendant_unit,
+        Some(zerocal_pendant_desktop::DESKTOP_UNIT.id.to_string())
+    );
     let host = zerocal_session(&text, "f32.csv");
     let fit = report
         .state

@@ -318,7 +318,10 @@ fn erase_status_export_and_refusals_against_the_pendant() {
         request_bytes(&load("abb-irb140")),
         request_bytes(&PendantAction::Erase),
         request_bytes(&PendantAction::Status),
-        request_bytes(&PendantAction::Export { out: None }),
+        request_bytes(&PendantAction::Export {
+            out: None,
+            results: None,
+        }),
         vec![b"profile set\r\nname x convention axis\r\nend\r\n".to_vec()],
     ]
     .concat();
@@ -331,7 +334,14 @@ fn erase_status_export_and_refusals_against_the_pendant() {
     assert!(status.starts_with("phase: stage 0"), "{status}");
     assert!(status.contains("bias: none"), "{status}");
     // The export of an erased pendant: no captures, whole by its trailer.
-    let export = replay(&PendantAction::Export { out: None }, &c.answers[4..5]).unwrap();
+    let export = replay(
+        &PendantAction::Export {
+            out: None,
+            results: None,
+        },
+        &c.answers[4..5],
+    )
+    .unwrap();
     assert!(
         export.contains("# robot paper-wrist convention axis"),
         "{export}"
@@ -462,7 +472,10 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
     let lines = export_lines(&whole_session());
     let refs: Vec<&str> = lines.iter().map(String::as_str).collect();
     assert!(refs.len() > 29, "{}", refs.len());
-    let export = PendantAction::Export { out: None };
+    let export = PendantAction::Export {
+        out: None,
+        results: None,
+    };
     let whole = pendant::perform(&mut Scripted::bytes([crlf(&refs)]), &export, FAST).unwrap();
     assert_eq!(
         whole,
@@ -501,7 +514,7 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
                     .iter()
                     .enumerate()
                     .map(|(k, l)| {
-                        if k == 22 {
+                        if k == 23 {
                             "1,2,3,4,5,6,0.1,0.2,20,above,4"
                         } else {
                             l
@@ -517,7 +530,7 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
                 &refs
                     .iter()
                     .enumerate()
-                    .filter(|(k, _)| *k != 22)
+                    .filter(|(k, _)| *k != 23)
                     .map(|(_, l)| *l)
                     .collect::<Vec<_>>(),
             ),
@@ -537,7 +550,10 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
 
 #[test]
 fn a_flood_is_refused_within_the_reply_s_bounds() {
-    let export = PendantAction::Export { out: None };
+    let export = PendantAction::Export {
+        out: None,
+        results: None,
+    };
     let max = Expect::Export.max_bytes();
     // Valid-looking rows without end: refused at the most lines an export has.
     let mut port = Scripted::new([Script::Forever(b"1,2,3,4,5,6,0.1,0.2,20\r\n".to_vec())]);
@@ -580,7 +596,10 @@ fn a_silent_port_is_no_answer_within_its_timeout() {
     for action in [
         PendantAction::Status,
         PendantAction::Erase,
-        PendantAction::Export { out: None },
+        PendantAction::Export {
+            out: None,
+            results: None,
+        },
     ] {
         let start = Instant::now();
         let (code, e) = refusal(&mut Scripted::bytes([]), &action);
@@ -678,4 +697,55 @@ fn brackets_read_out_as_the_uploads_toml() {
         date: Some("2026-02-30".into()),
     };
     assert_eq!(pendant::requests(&bad).unwrap_err().exit_code(), 2);
+}
+
+/// `zerocal pendant results` against the pendant: a fresh one keeps none (its reply is
+/// the head and the end line); a reply with results reads back through the desktop's
+/// `read_kept_results`, and a malformed result line is refused, exit 3, by its line.
+#[test]
+fn results_are_read_whole_and_a_malformed_line_is_refused_by_number() {
+    use zerocal_procedure::link::{KEPT_RESULTS_END, KEPT_RESULTS_HEAD};
+    let action = PendantAction::Results { out: None };
+    let c = converse(&request_bytes(&action), &[]).unwrap();
+    let none = replay(&action, &c.answers[..1]).unwrap();
+    assert_eq!(none, format!("{KEPT_RESULTS_HEAD}\n{KEPT_RESULTS_END}\n"));
+    assert_eq!(
+        zerocal_procedure::log::read_kept_results(&none).unwrap(),
+        []
+    );
+    let one = [
+        KEPT_RESULTS_HEAD,
+        "# kept_result id 7 robot abb-irb140 unit 36002f001347333130373539 brackets U-017,none",
+        "# kept_result id 7 verdict pass temps_c 21.53,none,22.07",
+        "# kept_result id 7 offsets_deg -0.1234567,0.5,-0.00125,3,0.0000001",
+        "# kept_result id 7 sigma_deg 0.0012345,0.002,0.003,0.004,0.005 residual_rms_deg 0.000812",
+        KEPT_RESULTS_END,
+    ];
+    let text = replay(&action, &[String::from_utf8(crlf(&one)).unwrap()]).unwrap();
+    let kept = zerocal_procedure::log::read_kept_results(&text).unwrap();
+    assert_eq!(kept.len(), 1);
+    assert_eq!(kept[0].id, 7);
+    assert_eq!(kept[0].offsets_deg[0], -0.123_456_7_f32);
+    let mut bad = one;
+    bad[3] = "# kept_result id 7 offsets_deg -0.1234567,0.5,-0.00125,3";
+    let mut port = Scripted::bytes([crlf(&bad)]);
+    let (code, words) = refusal(&mut port, &action);
+    assert_eq!(code, 3, "{words}");
+    assert!(
+        words.contains("line 4") && words.contains("kept_result"),
+        "{words}"
+    );
+    // Cut before its end line: refused, not taken for fewer results.
+    let mut port = Scripted::bytes([crlf(&one[..5])]);
+    let (code, words) = refusal(&mut port, &action);
+    assert_eq!(code, 3, "{words}");
+}
+
+#[test]
+fn export_out_puts_the_kept_results_beside_it() {
+    let path = std::path::Path::new("/tmp/x/session.csv");
+    assert_eq!(
+        pendant::results_path(path),
+        std::path::Path::new("/tmp/x/session.csv.results")
+    );
 }

@@ -56,6 +56,14 @@ pub const OLED_ADDRESS: u8 = 0x3C;
 /// shorter than nominal), so the watchdog task pets it four times as often.
 pub const WATCHDOG_TIMEOUT_US: u32 = 4_000_000;
 
+/// This pendant unit's ID: the STM32F411's 96-bit unique device ID, read from its
+/// factory-programmed registers at 0x1FFF_7A10 (RM0383, "Unique device
+/// ID register (96 bits)"), byte 0 first. The USB serial number is the same 24 hex
+/// digits (uppercase), so a desktop can tell which pendant wrote a file.
+pub fn unit_id() -> zerocal_pendant::procedure::UnitId {
+    zerocal_pendant::procedure::UnitId(embassy_stm32::uid::uid())
+}
+
 /// The sensor's pins and bus.
 pub struct SensorPins {
     /// SPI2.

@@ -26,7 +26,7 @@ use embassy_usb::class::cdc_acm::{CdcAcmClass, State};
 use embassy_usb::{Builder, Config};
 use static_cell::StaticCell;
 use zerocal_pendant::config::procedure_config;
-use zerocal_pendant::procedure::Boot;
+use zerocal_pendant::procedure::{Boot, PendantUnit};
 use zerocal_pendant::screen::RestartNote;
 use zerocal_pendant::Shared;
 use {defmt_rtt as _, embassy_futures::join::join};
@@ -187,6 +187,10 @@ async fn procedure_task(
         store_range: STORAGE_START..STORAGE_END,
         default_plan: &DEFAULT_PLAN_RAD,
         restart,
+        pendant: Some(PendantUnit {
+            id: board::unit_id(),
+            firmware: env!("CARGO_PKG_VERSION"),
+        }),
     };
     zerocal_pendant::procedure::run(shared, boot).await
 }

@@ -33,7 +33,7 @@ use embassy_futures::join::join5;
 use embassy_futures::select::{select, Either};
 use embassy_time::Instant;
 use zerocal_core::plan::{Candidate, DEFAULT_POOL};
-use zerocal_procedure::pendant_default;
+use zerocal_procedure::{pendant_default, PendantUnit, UnitId};
 
 use exec::Stop;
 use io::{ButtonLevels, HostButtons, HostLink, HostSpi, PendantRx, PendantTx};
@@ -57,6 +57,13 @@ pub fn default_plan() -> Result<Vec<[f32; 6]>, String> {
         .map(|plan| plan.to_vec())
         .map_err(|e| format!("core's planner refused the default plan: {e:?}"))
 }
+
+/// The desktop pendant's unit: a fixed fake ID (the bytes of `desktop-sim!`; a real
+/// unit's is its chip's) and this crate's version as the firmware's.
+pub const DESKTOP_UNIT: PendantUnit = PendantUnit {
+    id: UnitId(*b"desktop-sim!"),
+    firmware: env!("CARGO_PKG_VERSION"),
+};
 
 /// Everything around the pendant that outlives a power cut: the world, the flash, the
 /// display's log, the buttons, the cable.
@@ -107,6 +114,7 @@ impl Rig {
                     store_range: STORE_RANGE,
                     default_plan: &self.plan,
                     restart,
+                    pendant: Some(DESKTOP_UNIT),
                 },
             ),
             zerocal_pendant::sensor::run(shared, HostSpi::new(self.world.clone())),

@@ -4,6 +4,10 @@
 //! records migrate and a sector is erased). The world is frozen (no white noise) so a
 //! capture retaken after a cut reads what the uncut run read, and an equal export can
 //! be demanded.
+//!
+//! The kept results too: right after a cut the store holds the results kept before the
+//! session or those after it (never a torn one, never an ID naming another result), and
+//! the finished session's result is the last kept, with the uncut run's numbers.
 
 use std::collections::BTreeSet;
 
@@ -11,8 +15,10 @@ use embassy_time::{Duration, Instant, Timer};
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::channels::Shared;
 use zerocal_pendant::screen::{Prompt, Screen, ScreenKind};
+use zerocal_pendant::store::{Restored, Store};
+use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
 use zerocal_procedure::{Approach, Phase, ProcedureState};
-use zerocal_sim::flash::CutPoint;
+use zerocal_sim::flash::{CutPoint, SimFlash, STORE_RANGE};
 
 use crate::exec::{self, Stop};
 use crate::operator::{calibrate, command, press, wait_for, ScriptError, LONG_PRESS_MS};
@@ -89,10 +95,95 @@ async fn cut_script(rig: &Rig, mut started: bool) -> Result<Vec<u8>, ScriptError
     Ok(command(rig, b"export\r\n", SILENCE).await)
 }
 
-/// What the uncut run left: its export and the plan its session held.
+/// What the uncut run left: its export and the plan its session held, and the kept
+/// results before and after it.
 struct Uncut {
     export: Vec<u8>,
     plan: Vec<[f32; 6]>,
+    kept_before: Kept,
+    kept_after: Kept,
+}
+
+/// The kept results a store holds, as the pendant reads them at power-up.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Kept {
+    /// The next result's ID, as stored.
+    pub next_id: Option<u32>,
+    /// The results, oldest first.
+    pub results: Vec<KeptResult>,
+}
+
+/// The kept results of a flash image (`None`: an erased chip), read through the
+/// pendant's store on a copy of it.
+///
+/// # Errors
+/// A store that does not open or a result that does not read, as text.
+pub fn kept_in(bytes: Option<&[u8]>) -> Result<Kept, String> {
+    let flash = SimFlash::new(0);
+    if let Some(bytes) = bytes {
+        flash.memory().bytes.copy_from_slice(bytes);
+    }
+    let mut store = Store::new(flash, STORE_RANGE).map_err(|e| format!("{e:?}"))?;
+    embassy_futures::block_on(store.open(&mut Restored::default()))
+        .map_err(|e| format!("the store does not open: {e:?}"))?;
+    let next_id = embassy_futures::block_on(store.next_result_id())
+        .map_err(|e| format!("the next ID does not read: {e:?}"))?;
+    let mut results = Vec::new();
+    if let Some(next) = next_id {
+        for id in next.saturating_sub(KEPT_RESULTS as u32).max(1)..next {
+            match embassy_futures::block_on(store.kept_result(id)) {
+                Ok(Some(k)) => results.push(k),
+                Ok(None) => {}
+                Err(e) => return Err(format!("result {id} does not read: {e:?}")),
+            }
+        }
+    }
+    Ok(Kept { next_id, results })
+}
+
+/// What is wrong with the kept results right after a cut (`after_cut`) and once the
+/// session is finished (`finished`), against the uncut run's.
+fn kept_difference(reference: &Uncut, after_cut: &Kept, finished: &Kept) -> Option<String> {
+    let (before, after) = (
+        &reference.kept_before.results,
+        &reference.kept_after.results,
+    );
+    if after_cut.results != *before && after_cut.results != *after {
+        return Some(format!(
+            "kept results after the cut: IDs {:?}, neither the old set {:?} nor the new {:?}",
+            ids(&after_cut.results),
+            ids(before),
+            ids(after)
+        ));
+    }
+    for kept in [after_cut, finished] {
+        let next = kept.next_id.unwrap_or(1);
+        if kept.results.iter().any(|k| k.id >= next) {
+            return Some(format!(
+                "a kept result's ID is not below the next ID {next}: {:?}",
+                ids(&kept.results)
+            ));
+        }
+    }
+    // An ID never names two results: what the cut left stays as it was.
+    for k in &finished.results {
+        if let Some(old) = after_cut.results.iter().find(|o| o.id == k.id) {
+            if old != k {
+                return Some(format!("ID {} names two results", k.id));
+            }
+        }
+    }
+    let numbers = |k: &KeptResult| KeptResult { id: 0, ..k.clone() };
+    match (finished.results.last(), after.last()) {
+        (Some(ours), Some(uncut)) if numbers(ours) == numbers(uncut) => None,
+        (ours, uncut) => Some(format!(
+            "the last kept result differs from the uncut run's: {ours:?} | uncut: {uncut:?}"
+        )),
+    }
+}
+
+fn ids(results: &[KeptResult]) -> Vec<u32> {
+    results.iter().map(|k| k.id).collect()
 }
 
 /// The plan `shared`'s session holds (as restored or set).
@@ -102,17 +193,21 @@ async fn session_plan(shared: &Shared) -> Vec<[f32; 6]> {
 
 /// The campaign's session on `rig`, uncut: what every cut run is compared with.
 fn uncut_run(rig: &Rig, fresh: bool) -> Result<Uncut, String> {
+    let before = rig.flash.memory().bytes.clone();
+    let kept_before = kept_in((!fresh).then_some(before.as_slice()))?;
     match rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| async move {
         let export = cut_script(rig, fresh).await?;
-        Ok::<_, ScriptError>(Uncut {
-            export,
-            plan: session_plan(shared).await,
-        })
+        Ok::<_, ScriptError>((export, session_plan(shared).await))
     }) {
-        Ok(Ok(uncut)) => Ok(uncut),
+        Ok(Ok((export, plan))) => Ok(Uncut {
+            export,
+            plan,
+            kept_after: kept_in(Some(&rig.flash.memory().bytes.clone()))?,
+            kept_before,
+        }),
         other => Err(format!(
             "the uncut run failed: {:?}",
-            other.map(|r| r.map(|u| u.export.len()))
+            other.map(|r| r.map(|(export, _)| export.len()))
         )),
     }
 }
@@ -170,6 +265,8 @@ fn cut_one(
     if first != Err(Stop::PowerCut) {
         return Err(format!("{cut:?}: the power was never cut ({first:?})"));
     }
+    let kept_after_cut = kept_in(Some(&rig.flash.memory().bytes.clone()))
+        .map_err(|e| format!("{cut:?}: right after the cut: {e}"))?;
     let shown = rig.panel.borrow().shown.clone();
     let acked = screen_progress(shown.as_ref(), poses);
     // The new session had begun on the screen unless the old result was still shown.
@@ -248,7 +345,10 @@ fn cut_one(
                     reference.plan.len()
                 )
             });
-            let difference = plan_difference.or_else(|| {
+            let finished = kept_in(Some(&rig.flash.memory().bytes.clone()))
+                .map_err(|e| format!("{cut:?}: after the session: {e}"))?;
+            let kept = kept_difference(reference, &kept_after_cut, &finished);
+            let difference = plan_difference.or(kept).or_else(|| {
                 (export != reference.export).then(|| {
                     let (ours, uncut) = (
                         String::from_utf8_lossy(&export).into_owned(),
@@ -457,4 +557,75 @@ pub fn power_cuts_at(seed: u64, cuts: &[(bool, CutPoint)]) -> Result<CutReport, 
         }
     }
     Ok(report)
+}
+
+/// The flash operations of the kept result's write at the end of a session (the next
+/// ID's item, then the result's), on the filled store (`filled`, whose store already
+/// holds earlier sessions' results, so the write may replace the oldest) or a fresh
+/// board: found by cutting the uncut session at chosen operations and reading what the
+/// store holds then.
+///
+/// # Errors
+/// A reference run's failure.
+pub fn kept_write_operations(seed: u64, filled: bool) -> Result<Vec<u64>, String> {
+    let world = WorldConfig {
+        seed,
+        frozen: true,
+        ..WorldConfig::default()
+    };
+    let prefilled = if filled {
+        Some(store_before_an_erase(world)?)
+    } else {
+        None
+    };
+    let image = prefilled.as_deref();
+    exec::reset_clock();
+    let reference_rig = campaign_rig(world, image, seed)?;
+    let reference = uncut_run(&reference_rig, image.is_none())?;
+    if filled && reference.kept_before.results.len() < KEPT_RESULTS {
+        return Err(format!(
+            "the filled store keeps {} results: its session's write would not replace one",
+            reference.kept_before.results.len()
+        ));
+    }
+    let operations = reference_rig.flash.memory().operations;
+    // What the store holds when the power goes just before `operation`.
+    let state_at = |operation: u64| -> Result<Kept, String> {
+        exec::reset_clock();
+        let rig = campaign_rig(world, image, seed)?;
+        rig.flash.memory().cut = Some(CutPoint {
+            operation,
+            half_done: false,
+        });
+        let run = rig.run(Instant::from_secs(0) + RUN_LIMIT, |_| {
+            cut_script(&rig, image.is_none())
+        });
+        if run != Err(Stop::PowerCut) {
+            return Err(format!("a cut at {operation} did not happen: {run:?}"));
+        }
+        let bytes = rig.flash.memory().bytes.clone();
+        kept_in(Some(&bytes))
+    };
+    // The first operation before which `done` holds (it holds from there on).
+    let first = |done: &dyn Fn(&Kept) -> bool| -> Result<u64, String> {
+        let (mut low, mut high) = (0, operations);
+        while low < high {
+            let mid = (low + high) / 2;
+            if done(&state_at(mid)?) {
+                high = mid;
+            } else {
+                low = mid + 1;
+            }
+        }
+        Ok(low)
+    };
+    let id_written = first(&|k| k.next_id != reference.kept_before.next_id)?;
+    let result_written = first(&|k| k.results == reference.kept_after.results)?;
+    if result_written <= id_written {
+        return Err(format!(
+            "the result was whole before operation {result_written}, the next ID only before {id_written}"
+        ));
+    }
+    // The next ID's item takes a few words before the first operation after it.
+    Ok((id_written.saturating_sub(6)..=result_written).collect())
 }

@@ -6,7 +6,9 @@
 use zerocal_pendant::screen::ScreenKind;
 use zerocal_pendant_desktop::conversation::link_faults;
 use zerocal_pendant_desktop::faults::{self, StoreContents};
-use zerocal_pendant_desktop::power_cuts::{erase_operations, power_cuts, power_cuts_at};
+use zerocal_pendant_desktop::power_cuts::{
+    erase_operations, kept_write_operations, power_cuts, power_cuts_at,
+};
 use zerocal_pendant_desktop::session;
 use zerocal_pendant_desktop::world::WorldConfig;
 use zerocal_procedure::log::{LogLine, LogReader};
@@ -226,4 +228,95 @@ fn an_erase_cut_half_way_loses_no_record_of_the_page_it_emptied() {
     // records had been copied to and copied again from the wreck; the plan, the
     // oldest records, was gone at the next boot.
     erase_cuts_match_the_uncut_run(1);
+}
+
+/// Every operation of the kept result's write (its next ID, then the result) cut, before
+/// it and half-way through it: right after the cut the store holds the old results or
+/// the new, never a torn one or a reused ID, and the finished session's result is kept
+/// with the uncut run's numbers (`power_cuts::kept_difference`). On the filled store,
+/// whose earlier sessions fill every slot, so the write replaces the oldest result (a
+/// fresh board's write is one of the campaign's spread of cut points; all of them
+/// doubled this test's two minutes).
+#[test]
+fn a_cut_in_the_kept_results_write_leaves_the_old_set_or_the_new() {
+    let (seed, filled) = (3, true);
+    let operations = kept_write_operations(seed, filled).unwrap();
+    // The next ID (a few words) and a result of ~150 bytes in 4-byte words.
+    assert!(operations.len() > 30, "{operations:?}");
+    let cuts: Vec<(bool, CutPoint)> = operations
+        .iter()
+        .flat_map(|&operation| {
+            [false, true].map(|half_done| {
+                (
+                    filled,
+                    CutPoint {
+                        operation,
+                        half_done,
+                    },
+                )
+            })
+        })
+        .collect();
+    let report = power_cuts_at(seed, &cuts).unwrap();
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    assert_eq!(report.equal_results, cuts.len());
+}
+
+/// Two sessions, then `results` over the link: the lines read back (the desktop's
+/// `read_kept_results`) exactly the results the pendant holds, oldest first, IDs 1 and
+/// 2, with the desktop unit's ID; the export names the unit on its `# pendant` line.
+#[test]
+fn results_carry_exactly_what_the_pendant_keeps() {
+    use embassy_time::{Duration, Instant};
+    use zerocal_pendant::buttons::Button;
+    use zerocal_pendant::screen::Screen;
+    use zerocal_pendant_desktop::operator::{calibrate, command, press, wait_for, LONG_PRESS_MS};
+    use zerocal_pendant_desktop::session::{PATIENCE, RUN_LIMIT, SILENCE};
+    use zerocal_pendant_desktop::{Rig, DESKTOP_UNIT};
+    use zerocal_procedure::log::{parse_meta, read_kept_results, MetaItem};
+
+    let world = WorldConfig {
+        seed: 5,
+        frozen: true,
+        ..WorldConfig::default()
+    };
+    let rig = Rig::new(world, 5).unwrap();
+    let rig = &rig;
+    let (results, export, held) = rig
+        .run(Instant::from_secs(0) + RUN_LIMIT, |shared| async move {
+            let mut held = Vec::new();
+            wait_for(rig, "the first screen", Duration::from_secs(10), |s| {
+                !matches!(s, Screen::Starting(_))
+            })
+            .await
+            .unwrap();
+            for session in 0..2_u32 {
+                if session > 0 {
+                    press(rig, Button::Ok, LONG_PRESS_MS).await;
+                }
+                calibrate(rig, PATIENCE).await.unwrap();
+                let p = shared.procedure.lock().await;
+                held.push(p.session.kept_result(&p.config, session + 1).unwrap());
+            }
+            let results = command(rig, b"results\r\n", SILENCE).await;
+            let export = command(rig, b"export\r\n", SILENCE).await;
+            (results, export, held)
+        })
+        .unwrap();
+    let text = String::from_utf8(results).unwrap();
+    let read = read_kept_results(&text).unwrap();
+    assert_eq!(read, held, "{text}");
+    assert_eq!(read.iter().map(|k| k.id).collect::<Vec<_>>(), [1, 2]);
+    assert!(read.iter().all(|k| k.unit == Some(DESKTOP_UNIT.id)));
+    // The frozen world repeats the session: the same numbers under two IDs.
+    assert_eq!(read[0].offsets_deg, read[1].offsets_deg);
+    let export = String::from_utf8(export).unwrap();
+    let unit = export
+        .lines()
+        .filter_map(|l| l.strip_prefix('#'))
+        .find_map(|c| match parse_meta::<f64>(c, 0, |s| s.parse().ok()) {
+            Ok(Some(MetaItem::Pendant(unit, _))) => Some(unit),
+            _ => None,
+        });
+    assert_eq!(unit, Some(DESKTOP_UNIT.id), "{export}");
 }

@@ -133,3 +133,119 @@ fn a_store_erased_then_written_opens_at_the_next_power_up() {
     let restored = restored.unwrap();
     assert_eq!(restored.records().collect::<Vec<_>>(), [pose]);
 }
+
+/// A kept result of session `n` (its numbers differ with `n`), under `id`.
+fn kept(id: u32, n: u16) -> zerocal_procedure::kept::KeptResult {
+    let mut robot = zerocal_procedure::RobotName::new();
+    robot.push_str("kuka-kr6-r900-sixx").unwrap();
+    let x = f32::from(n);
+    zerocal_procedure::kept::KeptResult {
+        id,
+        robot,
+        offsets_deg: [x, -x, 0.5 * x, 1.0e-3 * x, -2.0],
+        sigma_deg: [1.0e-3; 5],
+        residual_rms_deg: 2.0e-3,
+        warnings: 0,
+        temperatures_c: [Some(21.5), Some(21.75), None],
+        brackets: [None, None],
+        unit: Some(zerocal_procedure::UnitId(*b"desktop-sim!")),
+    }
+}
+
+fn keep(store: &mut Store<SimFlash>, k: &zerocal_procedure::kept::KeptResult) {
+    let mut value = [0_u8; zerocal_procedure::record::kept::KEPT_RESULT_LEN];
+    k.encode(&mut value).unwrap();
+    embassy_futures::block_on(store.keep_result(k.id, &value)).unwrap();
+}
+
+fn next_id(store: &mut Store<SimFlash>) -> Option<u32> {
+    embassy_futures::block_on(store.next_result_id()).unwrap()
+}
+
+fn kept_result(
+    store: &mut Store<SimFlash>,
+    id: u32,
+) -> Option<zerocal_procedure::kept::KeptResult> {
+    embassy_futures::block_on(store.kept_result(id)).unwrap()
+}
+
+/// Eight results are kept; the ninth replaces the first, and the other seven stay as
+/// they were, across a power cycle.
+#[test]
+fn the_ninth_result_drops_the_first() {
+    let flash = SimFlash::new(2);
+    let (mut store, restored) = power_up(&flash);
+    restored.unwrap();
+    assert_eq!(next_id(&mut store), None, "a fresh store never kept one");
+    for id in 1..=9 {
+        keep(&mut store, &kept(id, id as u16));
+    }
+    let (mut store, restored) = power_up(&flash);
+    restored.unwrap();
+    assert_eq!(next_id(&mut store), Some(10));
+    assert_eq!(kept_result(&mut store, 1), None, "the oldest went first");
+    for id in 2..=9 {
+        assert_eq!(
+            kept_result(&mut store, id),
+            Some(kept(id, id as u16)),
+            "result {id}"
+        );
+    }
+    // Results are items of their own: the session's records restore as before.
+    assert!(restored_is_empty(&flash));
+}
+
+fn restored_is_empty(flash: &SimFlash) -> bool {
+    let (_, restored) = power_up(flash);
+    restored.unwrap().is_empty()
+}
+
+/// `erase all` and the storage reset erase the store, results included; the next
+/// result's ID is carried over, so an ID never names two results on one pendant. A
+/// store of another record format (a firmware update) is reset the same way.
+#[test]
+fn ids_never_repeat_across_an_erase() {
+    let flash = SimFlash::new(4);
+    let (mut store, restored) = power_up(&flash);
+    restored.unwrap();
+    for id in 1..=3 {
+        keep(&mut store, &kept(id, id as u16));
+    }
+    embassy_futures::block_on(store.erase()).unwrap();
+    let (mut store, restored) = power_up(&flash);
+    assert!(restored.unwrap().is_empty());
+    assert_eq!(next_id(&mut store), Some(4), "the count goes on");
+    for id in 1..=3 {
+        assert_eq!(kept_result(&mut store, id), None, "result {id} was erased");
+    }
+    keep(&mut store, &kept(4, 40));
+    // The marker rewritten as another format's: the pendant must reset the store, and
+    // the reset keeps the count.
+    let format_key = zerocal_pendant::store::FORMAT_KEY;
+    let marker = [
+        b'z',
+        b'c',
+        b'a',
+        b'l',
+        zerocal_procedure::record::FORMAT + 1,
+    ];
+    drop(store);
+    let mut map = sequential_storage::map::MapStorage::<u16, _, _>::new(
+        flash.clone(),
+        sequential_storage::map::MapConfig::new(STORE_RANGE),
+        sequential_storage::cache::Cache::new_uncached(),
+    );
+    let mut buffer = [0_u8; 64];
+    embassy_futures::block_on(map.store_item(&mut buffer, &format_key, &&marker[..])).unwrap();
+    let (mut store, restored) = power_up(&flash);
+    assert!(
+        matches!(restored, Err(ResetReason::OtherFormat(_))),
+        "{:?}",
+        restored.err()
+    );
+    embassy_futures::block_on(store.erase()).unwrap();
+    let (mut store, restored) = power_up(&flash);
+    restored.unwrap();
+    assert_eq!(next_id(&mut store), Some(5));
+    assert_eq!(kept_result(&mut store, 4), None);
+}

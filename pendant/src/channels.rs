@@ -23,6 +23,7 @@ use embassy_sync::signal::Signal;
 use zerocal_core::bracket::{BracketId, BracketMount};
 use zerocal_core::plan::PoseList;
 use zerocal_procedure::bracket_cal::{BracketCalState, StoredBrackets};
+use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
 use zerocal_procedure::{PendantProfile, ProcedureConfig, ProcedureState};
 
 use crate::messages::{ButtonEvent, SensorReport};
@@ -45,6 +46,9 @@ pub struct Procedure {
     /// A bracket calibration in progress: the buttons and samples go to it, the
     /// session waits as it was.
     pub bracket_cal: Option<BracketCalState<f32>>,
+    /// The ID the next kept result takes (`store::FIRST_RESULT_ID` on a store that
+    /// never kept one).
+    pub next_result_id: u32,
 }
 
 /// A change the USB host asks for.
@@ -68,6 +72,12 @@ pub enum LinkRequest {
         /// Its ID.
         id: BracketId,
     },
+    /// `results`: read kept result `id` from the store (the store is the procedure
+    /// task's; the link asks for one result at a time).
+    ReadKept {
+        /// The result's ID.
+        id: u32,
+    },
 }
 
 /// What became of a [`LinkRequest`].
@@ -83,6 +93,10 @@ pub enum LinkReply {
     NotReady,
     /// A new profile was refused: a session is in progress (`clear` first).
     SessionInProgress,
+    /// The answer to [`LinkRequest::ReadKept`]: the value under the result's slot
+    /// (`KeptResult::decode` reads it; a newer result may have taken the slot), or
+    /// `None` when empty or unreadable.
+    Kept(Option<[u8; KEPT_RESULT_LEN]>),
 }
 
 /// The pendant's shared state.
@@ -118,6 +132,7 @@ impl Shared {
                 profile_generation: 0,
                 brackets: StoredBrackets::default(),
                 bracket_cal: None,
+                next_result_id: crate::store::FIRST_RESULT_ID,
             }),
             sensor_reports: Channel::new(),
             button_events: Channel::new(),

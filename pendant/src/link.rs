@@ -29,15 +29,20 @@ use heapless::Vec;
 use zerocal_core::bracket::BracketMount;
 use zerocal_core::decimal::Fixed;
 use zerocal_procedure::bracket_cal::bracket_line;
+use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
 use zerocal_procedure::link::{
     bracket_started, parse_bracket_calibrate, parse_command, pendant_status, plan_line,
     plan_stored, profile_stored, status, Command, Line, PlanUpload, UploadStep, ERASED, HELP,
     NOT_READY, PLAN_PROMPT, PROFILE_PROMPT,
 };
+use zerocal_procedure::link::{KEPT_RESULTS_END, KEPT_RESULTS_HEAD};
+use zerocal_procedure::log::{write_kept_result, KEPT_RESULT_LINES};
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
+use zerocal_procedure::record::kept::kept_key;
 use zerocal_procedure::replies::Reply;
 
 use crate::channels::{LinkReply, LinkRequest, Shared};
+use crate::store::FIRST_RESULT_ID;
 
 /// Longest command line; longer lines are refused whole (core's, which the desktop
 /// writes to).
@@ -255,6 +260,8 @@ impl<W: Write> Server<'_, W> {
                             self.reply(Reply::ProfileWriteFailed).await?
                         }
                         LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                        // Not an answer to a profile.
+                        LinkReply::Kept(_) => self.reply(Reply::ProfileWriteFailed).await?,
                     }
                 }
                 Err(error) => {
@@ -273,7 +280,10 @@ impl<W: Write> Server<'_, W> {
                     match self.request(LinkRequest::SetPlan(plan)).await {
                         LinkReply::Done => self.write_text(plan_stored(poses)).await?,
                         LinkReply::PlanLocked => self.reply(Reply::PlanLocked).await?,
-                        LinkReply::StoreFailed => self.reply(Reply::PlanWriteFailed).await?,
+                        // Not an answer to a plan.
+                        LinkReply::StoreFailed | LinkReply::Kept(_) => {
+                            self.reply(Reply::PlanWriteFailed).await?
+                        }
                         LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                         LinkReply::SessionInProgress => {
                             self.reply(Reply::PlanRefusedSessionInProgress).await?
@@ -370,10 +380,13 @@ impl<W: Write> Server<'_, W> {
                     self.write_text(text).await?;
                 }
             }
+            Command::Results => self.results().await?,
             Command::Live => return Ok(Next::Live),
             Command::Clear => match self.request(LinkRequest::Clear).await {
                 LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::Cleared).await?,
-                LinkReply::StoreFailed => self.reply(Reply::ClearWriteFailed).await?,
+                LinkReply::StoreFailed | LinkReply::Kept(_) => {
+                    self.reply(Reply::ClearWriteFailed).await?
+                }
                 LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
                 LinkReply::SessionInProgress => {}
             },
@@ -405,6 +418,45 @@ impl<W: Write> Server<'_, W> {
             shared.display_faults.load(Ordering::Relaxed),
         ))
         .await
+    }
+
+    /// `results`: the kept results, oldest first, each read from the store by the
+    /// procedure task when its turn comes (one in RAM at a time).
+    async fn results(&mut self) -> Result<(), Disconnected> {
+        let next = self.shared.procedure.lock().await.next_result_id;
+        let first = next
+            .saturating_sub(KEPT_RESULTS as u32)
+            .max(FIRST_RESULT_ID);
+        // The head goes out with the first answer: a pendant not ready (its storage
+        // reset screen up) says only that, as to every request.
+        let mut head = false;
+        for id in first..next {
+            let reply = self.request(LinkRequest::ReadKept { id }).await;
+            if reply == LinkReply::NotReady && !head {
+                return self.write_line(NOT_READY.as_bytes()).await;
+            }
+            if !head {
+                self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
+                head = true;
+            }
+            let value = match reply {
+                LinkReply::Kept(Some(value)) => value,
+                // An empty slot (the result's write was cut) or an unreadable one.
+                _ => continue,
+            };
+            let Ok(kept) = KeptResult::decode(kept_key(id), &value) else {
+                continue;
+            };
+            for part in 0..KEPT_RESULT_LINES {
+                let mut line = Line::new();
+                let text = write_kept_result(&mut line, &kept, part).map(|()| line);
+                self.write_text(text).await?;
+            }
+        }
+        if !head {
+            self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
+        }
+        self.write_line(KEPT_RESULTS_END.as_bytes()).await
     }
 
     /// Streams `export`, the session held for the whole of it.

@@ -19,10 +19,13 @@ use zerocal_core::plan::PoseList;
 use zerocal_procedure::bracket_cal::{
     bracket_step, BracketCalState, BracketOutput, StoredBracket, StoredBrackets,
 };
+use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
-    step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot,
+    step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot, Record,
 };
+/// What [`Boot::pendant`] holds, for the board to fill.
+pub use zerocal_procedure::{PendantUnit, UnitId};
 
 use crate::buttons::{Button, ButtonEvent, Press};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
@@ -41,6 +44,9 @@ pub struct Boot<'a, F> {
     pub default_plan: &'a [[f32; 6]],
     /// Why the board restarted, if a panic or the watchdog did it.
     pub restart: Option<RestartNote>,
+    /// This pendant unit (its chip's ID, its firmware's version): written into the
+    /// export and every kept result.
+    pub pendant: Option<PendantUnit>,
 }
 
 /// The presentation state this task keeps beside core's session.
@@ -60,6 +66,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     let mut reset = None;
     {
         let mut procedure = shared.procedure.lock().await;
+        procedure.config.pendant = boot.pendant;
         match store.as_mut() {
             Some(s) => match restore(s, &mut procedure) {
                 Ok(()) => {}
@@ -107,6 +114,12 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             shared.link_requests.receive(),
         )
         .await;
+        if let Either3::Third(LinkRequest::ReadKept { id }) = input {
+            // A read: nothing changes, nothing is shown.
+            let reply = read_kept(store.as_mut(), id);
+            shared.link_replies.send(reply).await;
+            continue;
+        }
         let from_link = matches!(input, Either3::Third(_));
         let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
         let mut procedure = shared.procedure.lock().await;
@@ -126,8 +139,10 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                 set_profile(&mut procedure, &profile)
             }
             Either3::Third(LinkRequest::CalibrateBracket { mount, id }) => {
-                // Nothing to store until the operator keeps a result.
+                // Nothing to store until the operator keeps a result. The still window
+                // is the waiting session's, lent empty.
                 procedure.bracket_cal = Some(BracketCalState::new(mount, id));
+                procedure.session.stillness_window().reset();
                 Some(Output::default())
             }
             input @ (Either3::First(_) | Either3::Second(_)) if procedure.bracket_cal.is_some() => {
@@ -165,7 +180,8 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                     Either3::Third(
                         LinkRequest::SetProfile(_)
                         | LinkRequest::Erase
-                        | LinkRequest::CalibrateBracket { .. },
+                        | LinkRequest::CalibrateBracket { .. }
+                        | LinkRequest::ReadKept { .. },
                     ) => None,
                 };
                 event.map(|e| step(config, session, e))
@@ -173,6 +189,22 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
         };
         let refused = output.is_none() && from_link && !erase_failed;
         let mut stored = !erase_failed;
+        // A session just finished with a result: kept before the step's records, so a
+        // cut between the two leaves the result kept and the session before its last
+        // capture (finished again, it is kept again under a new ID), never a result
+        // shown but not kept.
+        let finished = output.as_ref().is_some_and(|o| {
+            o.persist
+                .iter()
+                .any(|r| matches!(r, Record::LastResult { .. }))
+        });
+        if let Some((id, value)) = finished.then(|| encode_kept(&mut procedure)).flatten() {
+            stored &= match store.as_mut() {
+                Some(s) => s.keep_result(id, &value).await.is_ok(),
+                None => false,
+            };
+            presentation.extras.store_failed = !stored;
+        }
         if let Some(output) = output {
             if !output.persist.is_empty() {
                 stored &= persist(&mut store, &output.persist).await;
@@ -233,7 +265,33 @@ fn restore<F: NorFlash>(
     // A store to be reset restores nothing: the session starts afresh.
     procedure.session = ProcedureState::restore(&procedure.config, restored.records());
     procedure.brackets = StoredBrackets::from_records(restored.records());
+    // Unreadable (a store to be reset that cannot be read): from the first ID.
+    procedure.next_result_id = embassy_futures::block_on(store.next_result_id())
+        .ok()
+        .flatten()
+        .unwrap_or(crate::store::FIRST_RESULT_ID);
     opened
+}
+
+/// Kept result `id` as the link's reply. Driven to completion on the spot, as
+/// [`restore`]: reading flash never waits, and the read's buffers stay on the stack
+/// rather than in the task's state for good.
+fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
+    let mut value = [0_u8; KEPT_RESULT_LEN];
+    let found = store
+        .is_some_and(|s| embassy_futures::block_on(s.read_kept(id, &mut value)).unwrap_or(false));
+    LinkReply::Kept(found.then_some(value))
+}
+
+/// The session's result as a kept result under the next ID, encoded; the next ID moves
+/// on whether or not the write will succeed (a failed write may have stored the ID).
+fn encode_kept(procedure: &mut Procedure) -> Option<(u32, [u8; KEPT_RESULT_LEN])> {
+    let id = procedure.next_result_id;
+    let kept = procedure.session.kept_result(&procedure.config, id)?;
+    let mut value = [0_u8; KEPT_RESULT_LEN];
+    kept.encode(&mut value).ok()?;
+    procedure.next_result_id = id.saturating_add(1);
+    Some((id, value))
 }
 
 /// How long the boot screen (with the robot's name) stays (ms).
@@ -289,7 +347,11 @@ pub fn set_profile(
 /// `erase all` (the store already erased): the built-in profile, no bias or result,
 /// the firmware's default plan, which the records returned store again.
 pub fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
+    // The unit stays the unit; the kept results' next ID stays too (the store's erase
+    // carried it over).
+    let pendant = procedure.config.pendant;
     procedure.config = crate::config::procedure_config();
+    procedure.config.pendant = pendant;
     procedure.profile_generation = 0;
     procedure.session = ProcedureState::new(PoseList::new(), None);
     procedure.brackets = StoredBrackets::default();
@@ -421,14 +483,18 @@ fn on_bracket_input(
     };
     let Procedure {
         config,
+        session,
         brackets,
         bracket_cal,
         ..
     } = procedure;
     let state = bracket_cal.as_mut()?;
-    match bracket_step(config, state, event) {
+    let window = session.stillness_window();
+    match bracket_step(config, state, window, event) {
         BracketOutput::Stay => None,
         BracketOutput::Leave => {
+            // The window goes back to the session empty.
+            window.reset();
             *bracket_cal = None;
             None
         }
@@ -436,6 +502,7 @@ fn on_bracket_input(
             if let Some(kept) = StoredBracket::from_record(&record) {
                 brackets.keep(kept);
             }
+            window.reset();
             *bracket_cal = None;
             let mut output = Output::default();
             // One record into a buffer of a whole plan's.

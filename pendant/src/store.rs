@@ -23,6 +23,14 @@
 //! changes only after the last: a power cut in between leaves the previous state, which
 //! core's restore falls back to.
 //!
+//! Kept results (`zerocal_procedure::kept`): not records of the restore but items of
+//! their own, [`KEPT_RESULTS`] slots taken in turn ([`kept_key`]), read one at a time
+//! ([`Store::kept_result`]); the next result's ID has its own item, written before the
+//! result ([`Store::keep_result`]), so a cut between the two skips an ID rather than
+//! reusing one, and [`Store::erase`] writes it back after erasing: an ID never names
+//! two results on one pendant (unless the map is so corrupted that the ID cannot be
+//! read before the erase; see docs/pendant.md).
+//!
 //! Erases: sequential-storage erases a page when the page it writes fills. An erase
 //! stalls the CPU (single-bank flash), so [`Store::make_room_when_idle`] moves on to a
 //! fresh page, erase included, while the robot is moving between poses, so that no
@@ -42,7 +50,11 @@ use sequential_storage::cache::page_pointers::ArrayPagePointers;
 use sequential_storage::cache::page_states::ArrayPageStates;
 use sequential_storage::cache::{Cache, Uncached};
 use sequential_storage::map::{MapConfig, MapStorage};
-use zerocal_procedure::record::{Record, RecordError, FORMAT, MAX_RECORD_LEN};
+use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
+use zerocal_procedure::record::kept::{
+    decode_next_id, encode_next_id, kept_key, KEPT_RESULT_LEN, NEXT_ID_LEN,
+};
+use zerocal_procedure::record::{key, Record, RecordError, FORMAT, MAX_RECORD_LEN};
 
 /// The key of the format marker.
 pub const FORMAT_KEY: u16 = 0;
@@ -62,9 +74,19 @@ pub const FIRST_WRITE_BYTES: usize = 64;
 /// rest; a write may meet an erase only once a page is this close to full.
 const IDLE_HEADROOM_BYTES: u32 = 512;
 
+/// The longest value: a record's or a kept result's.
+const MAX_VALUE_LEN: usize = if KEPT_RESULT_LEN > MAX_RECORD_LEN {
+    KEPT_RESULT_LEN
+} else {
+    MAX_RECORD_LEN
+};
+
 /// Serialised key (2 bytes) plus the longest value, rounded up to 16 bytes (a multiple
 /// of every flash word size).
-const ITEM_BUFFER_BYTES: usize = (2 + MAX_RECORD_LEN).div_ceil(16) * 16;
+const ITEM_BUFFER_BYTES: usize = (2 + MAX_VALUE_LEN).div_ceil(16) * 16;
+
+/// The ID of the first result a pendant keeps.
+pub const FIRST_RESULT_ID: u32 = 1;
 
 /// Pages the store may have (the F411 uses 3).
 pub const MAX_PAGES: usize = 4;
@@ -94,6 +116,9 @@ pub enum StoreError {
     Corrupted,
     /// A record did not encode (a buffer too small: a programming error).
     Encode(RecordError),
+    /// A kept result's value does not decode (written by another build, or damaged
+    /// under a CRC that held).
+    KeptResult(RecordError),
     /// Any other map error (buffer sizes, serialisation): a programming error.
     Map,
 }
@@ -285,8 +310,9 @@ impl<F: NorFlash> NorFlash for View<F> {
 struct Keys {
     /// Core's keys, by [`Restored::slot`].
     known: [bool; STORED_KEYS],
-    /// The marker, the filler, another build's keys.
-    other: heapless::Vec<u16, 8>,
+    /// The marker, the filler, the kept results and their next ID, another build's
+    /// keys.
+    other: heapless::Vec<u16, { 8 + KEPT_RESULTS + 1 }>,
 }
 
 impl Keys {
@@ -538,11 +564,23 @@ impl<F: NorFlash> Store<F> {
         Ok(())
     }
 
-    /// Erases the whole store and writes the marker.
+    /// Erases the whole store and writes the marker, then the next result's ID if the
+    /// store held one: results kept after the erase get IDs none before it had.
     ///
     /// # Errors
     /// The flash's.
     pub async fn erase(&mut self) -> Result<(), StoreError> {
+        // Whatever the rest of the store holds (another format, a foreign marker): the
+        // ID's item has a layout of its own. Unreadable, there is nothing to carry.
+        let next_id = self.next_result_id().await.ok().flatten();
+        self.erase_all().await?;
+        match next_id {
+            Some(next) => self.write_next_id(next).await,
+            None => Ok(()),
+        }
+    }
+
+    async fn erase_all(&mut self) -> Result<(), StoreError> {
         let mut map = self.map.take().ok_or(StoreError::Map)?;
         let erased = map.erase_all().await;
         // sequential-storage's `erase_all` erases the flash and nothing else: the map's
@@ -570,6 +608,115 @@ impl<F: NorFlash> Store<F> {
             .store_item(&mut self.buffer, &FORMAT_KEY, &&MARKER[..])
             .await?;
         Ok(())
+    }
+
+    /// The ID the next kept result takes, as stored (`None`: no result was ever kept
+    /// here, or its item does not read).
+    ///
+    /// # Errors
+    /// The flash's, or a map sequential-storage finds corrupted.
+    pub async fn next_result_id(&mut self) -> Result<Option<u32>, StoreError> {
+        let mut value = [0_u8; NEXT_ID_LEN];
+        let len = self.read_kept_item(key::KEPT_NEXT_ID, &mut value).await?;
+        Ok(len
+            .and_then(|len| value.get(..len))
+            .and_then(decode_next_id))
+    }
+
+    /// Copies the newest value under `key` (a kept result's or the next ID's) into
+    /// `out`; its length, or `None` when the key has none. Read by walking the map's
+    /// items as [`Self::open`] does (a later item of a key is newer): the same code as
+    /// the power-up's, so the firmware carries no second reader (sequential-storage's
+    /// `fetch_item` is 1.3 KB of flash), and eight reads of three pages are
+    /// milliseconds.
+    ///
+    /// # Errors
+    /// The flash's, a corrupted map, or a value longer than `out` (not a kept result's
+    /// item).
+    async fn read_kept_item(
+        &mut self,
+        key: u16,
+        out: &mut [u8],
+    ) -> Result<Option<usize>, StoreError> {
+        let mut iter = self
+            .map
+            .as_mut()
+            .ok_or(StoreError::Map)?
+            .fetch_all_items(&mut self.buffer)
+            .await?;
+        let mut value = [0_u8; ITEM_BUFFER_BYTES];
+        let mut found = None;
+        while let Some((k, bytes)) = iter.next::<&[u8]>(&mut value).await? {
+            if k == key {
+                out.get_mut(..bytes.len())
+                    .ok_or(StoreError::KeptResult(RecordError::BadField))?
+                    .copy_from_slice(bytes);
+                found = Some(bytes.len());
+            }
+        }
+        Ok(found)
+    }
+
+    async fn write_next_id(&mut self, next: u32) -> Result<(), StoreError> {
+        let value = encode_next_id(next);
+        self.map
+            .as_mut()
+            .ok_or(StoreError::Map)?
+            .store_item(&mut self.buffer, &key::KEPT_NEXT_ID, &&value[..])
+            .await?;
+        Ok(())
+    }
+
+    /// Keeps `result` (encoded by [`KeptResult::encode`]) under its ID's slot, the
+    /// oldest of the last [`KEPT_RESULTS`] giving way. The next ID (`id + 1`) is
+    /// written first: a cut between the two skips `id`, never reuses it; either write
+    /// is whole or absent (sequential-storage's items).
+    ///
+    /// # Errors
+    /// The first write that failed; [`StoreError::Encode`] for a value that is not a
+    /// kept result's.
+    pub async fn keep_result(&mut self, id: u32, encoded: &[u8]) -> Result<(), StoreError> {
+        // 4 billion results: not in a pendant's life; refused rather than wrapped.
+        let next = id.checked_add(1).ok_or(StoreError::Full)?;
+        self.write_next_id(next).await?;
+        self.map
+            .as_mut()
+            .ok_or(StoreError::Map)?
+            .store_item(&mut self.buffer, &kept_key(id), &encoded)
+            .await?;
+        Ok(())
+    }
+
+    /// The kept result `id`, if the store still holds it (`None`: never kept, or
+    /// replaced by a newer one in its slot).
+    ///
+    /// # Errors
+    /// The flash's, a corrupted map, or a value under its key that does not decode.
+    pub async fn kept_result(&mut self, id: u32) -> Result<Option<KeptResult>, StoreError> {
+        let mut value = [0_u8; KEPT_RESULT_LEN];
+        if !self.read_kept(id, &mut value).await? {
+            return Ok(None);
+        }
+        let kept = KeptResult::decode(kept_key(id), &value).map_err(StoreError::KeptResult)?;
+        Ok((kept.id == id).then_some(kept))
+    }
+
+    /// Copies the value under result `id`'s slot into `value` (the bytes
+    /// [`KeptResult::decode`] reads; the slot may hold a newer result by now); `false`
+    /// when the slot is empty.
+    ///
+    /// # Errors
+    /// The flash's, a corrupted map, or a value of another length than a kept result's.
+    pub async fn read_kept(
+        &mut self,
+        id: u32,
+        value: &mut [u8; KEPT_RESULT_LEN],
+    ) -> Result<bool, StoreError> {
+        match self.read_kept_item(kept_key(id), value).await? {
+            None => Ok(false),
+            Some(KEPT_RESULT_LEN) => Ok(true),
+            Some(_) => Err(StoreError::KeptResult(RecordError::Truncated)),
+        }
     }
 
     /// Writes `records` in order, each one in flash before the next.

@@ -150,6 +150,9 @@ pub struct ExportContents {
     /// nothing lost or changed since the pendant wrote it. Without one (a file edited by
     /// hand, or not from a pendant) it is read unchecked, with a note.
     pub trailer_checked: bool,
+    /// `# pendant unit HEX firmware VERSION`: the pendant unit's ID (24 hex digits),
+    /// where the export names it.
+    pub pendant_unit: Option<String>,
 }
 
 /// Reads a pendant export, strictly ([`LogReader::for_export`], [`MetaKeys`]): an
@@ -179,6 +182,7 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
         approaches: None,
         captures: None,
         trailer_checked: false,
+        pendant_unit: None,
     };
     for line in text.lines() {
         match reader.feed(line, parse_number).map_err(|e| e.to_string())? {
@@ -212,6 +216,9 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
                     }
                     Some(MetaItem::Bracket(BracketMount::Flange, c)) => {
                         export.brackets.flange = c;
+                    }
+                    Some(MetaItem::Pendant(unit, _)) => {
+                        export.pendant_unit = Some(unit.to_string())
                     }
                     None => {}
                 }

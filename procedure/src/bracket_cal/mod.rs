@@ -247,7 +247,6 @@ pub struct BracketCalState<T> {
     /// The still windows of the reading under way: their sums and counts.
     windows: Windows<T>,
     outcome: Option<Result<BracketResult<T>, BracketError>>,
-    filter: StillnessFilter<T>,
     stillness: Stillness<T>,
     armed: bool,
     live: Option<Tilt<T>>,
@@ -263,7 +262,6 @@ impl<T: Real> BracketCalState<T> {
             captures: [None; BRACKET_CAPTURES],
             windows: Windows::default(),
             outcome: None,
-            filter: StillnessFilter::new(),
             stillness: Stillness::Moving,
             armed: false,
             live: None,
@@ -359,8 +357,8 @@ impl<T: Real> BracketCalState<T> {
         )
     }
 
-    fn restart_window(&mut self) {
-        self.filter.reset();
+    fn restart_window(&mut self, window: &mut StillnessFilter<T>) {
+        window.reset();
         self.stillness = Stillness::Moving;
         self.armed = false;
         self.windows = Windows::default();
@@ -376,9 +374,15 @@ impl<T: Real> BracketCalState<T> {
 
 /// Advances a bracket calibration by one event (the session's [`Event`]s: a sample,
 /// a sensor fault, OK and BACK; the others mean nothing here).
+///
+/// `window` is the still window: the waiting session's
+/// ([`crate::machine::ProcedureState::stillness_window`]), lent for the calibration's
+/// length, so the pendant holds one window (2.5 KiB of RAM) rather than two. Whoever
+/// lends it empties it before the first step and after the last.
 pub fn bracket_step<T: Real>(
     config: &ProcedureConfig<T>,
     s: &mut BracketCalState<T>,
+    window: &mut StillnessFilter<T>,
     event: Event<T>,
 ) -> BracketOutput<T> {
     match event {
@@ -386,15 +390,18 @@ pub fn bracket_step<T: Real>(
             t_ms,
             reading,
             temperature_c,
-        } => on_sample(config, s, t_ms, reading, temperature_c),
+        } => on_sample(config, s, window, t_ms, reading, temperature_c),
         Event::SensorFault => {
-            s.restart_window();
+            s.restart_window(window);
             s.live = None;
             s.notice = Some(BracketNotice::SensorFault);
         }
         Event::Ok => match (&s.outcome, s.kept()) {
             (Some(Ok(_)), Some(record)) => return BracketOutput::Keep(record),
-            (Some(_), _) => *s = BracketCalState::new(s.mount, s.id.clone()),
+            (Some(_), _) => {
+                *s = BracketCalState::new(s.mount, s.id.clone());
+                window.reset();
+            }
             (None, _) => {
                 s.armed = true;
                 s.notice = None;
@@ -410,7 +417,7 @@ pub fn bracket_step<T: Real>(
                 *last = None;
             }
             s.notice = None;
-            s.restart_window();
+            s.restart_window(window);
         }
         Event::Next | Event::SetPlan(_) | Event::Clear => {}
     }
@@ -420,6 +427,7 @@ pub fn bracket_step<T: Real>(
 fn on_sample<T: Real>(
     config: &ProcedureConfig<T>,
     s: &mut BracketCalState<T>,
+    window: &mut StillnessFilter<T>,
     t_ms: u32,
     reading: Tilt<T>,
     temperature_c: Option<T>,
@@ -431,9 +439,7 @@ fn on_sample<T: Real>(
     if s.outcome.is_some() {
         return;
     }
-    s.stillness = s
-        .filter
-        .push(&config.stillness, t_ms, reading, temperature_c);
+    s.stillness = window.push(&config.stillness, t_ms, reading, temperature_c);
     let Stillness::Still {
         mean,
         temperature_c,
@@ -463,7 +469,7 @@ fn on_sample<T: Real>(
     }
     w.count += 1;
     if usize::from(w.count) < CAPTURES_PER_READING {
-        s.filter.reset();
+        window.reset();
         s.stillness = Stillness::Moving;
         return;
     }
@@ -479,7 +485,7 @@ fn on_sample<T: Real>(
     };
     *slot = Some(capture);
     s.notice = Some(BracketNotice::Captured);
-    s.restart_window();
+    s.restart_window(window);
     s.outcome = check_after(config, s, taken + 1).err().map(Err);
     if s.outcome.is_none() && taken + 1 == BRACKET_CAPTURES {
         s.outcome = result(config, s);

@@ -6,6 +6,18 @@ use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, Convention, SensorM
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::stage0::Reversal;
 
+/// A step with the still window the pendant lends from its session: one per test
+/// thread here (each test runs on its own).
+fn step(
+    config: &ProcedureConfig<f64>,
+    s: &mut BracketCalState<f64>,
+    event: Event<f64>,
+) -> BracketOutput<f64> {
+    std::thread_local!(static WINDOW: std::cell::RefCell<StillnessFilter<f64>> =
+        std::cell::RefCell::new(StillnessFilter::new()));
+    WINDOW.with(|w| bracket_step(config, s, &mut w.borrow_mut(), event))
+}
+
 /// A chip offset of 0.58° in its box, as core's bracket test.
 fn bias() -> Tilt<f64> {
     Tilt::from_deg(0.5, -0.3)
@@ -30,7 +42,7 @@ fn hold(
     let taken = s.taken();
     // Four still windows a reading, each some 40 samples.
     for _ in 0..1000 {
-        bracket_step(
+        step(
             config,
             s,
             Event::Sample {
@@ -55,11 +67,7 @@ fn capture(
     reading: Tilt<f64>,
     temperature_c: f64,
 ) -> u32 {
-    assert_eq!(
-        bracket_step(config, s, Event::Ok),
-        BracketOutput::Stay,
-        "OK arms"
-    );
+    assert_eq!(step(config, s, Event::Ok), BracketOutput::Stay, "OK arms");
     hold(config, s, t_ms, reading, temperature_c)
 }
 
@@ -134,7 +142,7 @@ fn a_full_run_gives_back_the_brackets_turn() {
     assert!(result.uncertainty_rad > 0.0, "{result:?}");
     // 20 to 27 °C.
     assert_eq!(result.temperature_c, Some(23.5));
-    let BracketOutput::Keep(record) = bracket_step(&config, &mut s, Event::Ok) else {
+    let BracketOutput::Keep(record) = step(&config, &mut s, Event::Ok) else {
         panic!("OK on a result keeps it");
     };
     let kept = StoredBrackets::from_records([record]);
@@ -163,10 +171,7 @@ fn a_tilted_plate_is_refused_by_name() {
         }
         other => panic!("{other:?}"),
     }
-    assert_eq!(
-        bracket_step(&config, &mut s, Event::Ok),
-        BracketOutput::Stay
-    );
+    assert_eq!(step(&config, &mut s, Event::Ok), BracketOutput::Stay);
     assert_eq!((s.step(), s.taken()), (BracketStep::Alone, 0));
 }
 
@@ -183,10 +188,7 @@ fn back_undoes_the_last_capture() {
     t = capture(&config, &mut s, t, r[1], 20.0);
     t = capture(&config, &mut s, t, r[3], 20.0);
     assert_eq!(s.step(), BracketStep::SeatedTurned);
-    assert_eq!(
-        bracket_step(&config, &mut s, Event::Back),
-        BracketOutput::Stay
-    );
+    assert_eq!(step(&config, &mut s, Event::Back), BracketOutput::Stay);
     assert_eq!(s.step(), BracketStep::Seated);
     // BACK disarms: no capture until OK.
     t = hold(&config, &mut s, t, r[2], 20.0);
@@ -196,7 +198,7 @@ fn back_undoes_the_last_capture() {
     }
     assert!(matches!(s.outcome(), Some(Ok(_))));
     // From the result: the last capture goes, the result with it.
-    bracket_step(&config, &mut s, Event::Back);
+    step(&config, &mut s, Event::Back);
     assert_eq!(
         (s.step(), s.outcome()),
         (BracketStep::SeatedTiltedTurned, None)
@@ -212,16 +214,10 @@ fn back_undoes_the_last_capture() {
         other => panic!("{other:?}"),
     }
     for _ in 0..BRACKET_CAPTURES {
-        assert_eq!(
-            bracket_step(&config, &mut s, Event::Back),
-            BracketOutput::Stay
-        );
+        assert_eq!(step(&config, &mut s, Event::Back), BracketOutput::Stay);
     }
     assert_eq!(s.taken(), 0);
-    assert_eq!(
-        bracket_step(&config, &mut s, Event::Back),
-        BracketOutput::Leave
-    );
+    assert_eq!(step(&config, &mut s, Event::Back), BracketOutput::Leave);
 }
 
 /// The `brackets` line reads back to 1e-5° (its decimals), `none` included; a

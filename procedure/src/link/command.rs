@@ -19,6 +19,7 @@ pub const HELP: &[&str] = &[
     "  erase all  erase session, bias, last result, profile, plan and brackets",
     "  bracket calibrate upper-arm|flange ID  calibrate a bracket, guided on the pendant",
     "  brackets   the brackets' calibrations kept (zerocal pendant brackets)",
+    "  results    the last results kept, oldest first (zerocal pendant export)",
 ];
 
 /// A parsed command.
@@ -48,6 +49,8 @@ pub enum Command {
     Erase,
     /// `brackets`
     Brackets,
+    /// `results`
+    Results,
 }
 
 /// What is wrong with a line.
@@ -135,7 +138,7 @@ impl fmt::Display for LinkError {
 
 impl Command {
     /// Every command, in the order `help` lists them.
-    pub const ALL: [Command; 11] = [
+    pub const ALL: [Command; 12] = [
         Command::Help,
         Command::Status,
         Command::Live,
@@ -147,6 +150,7 @@ impl Command {
         Command::ProfileSet,
         Command::Erase,
         Command::Brackets,
+        Command::Results,
     ];
 
     /// The words a person (or `zerocal pendant`) types for it: defined here once, for
@@ -164,6 +168,7 @@ impl Command {
             Command::ProfileSet => "profile set",
             Command::Erase => "erase all",
             Command::Brackets => "brackets",
+            Command::Results => "results",
         }
     }
 }
@@ -254,6 +259,11 @@ mod tests {
             Err(LinkError::EraseNeedsAll)
         );
         assert_eq!(parse_command("brackets"), Ok(Command::Brackets));
+        assert_eq!(parse_command("results"), Ok(Command::Results));
+        assert_eq!(
+            parse_command("results all"),
+            Err(LinkError::UnexpectedArgument)
+        );
     }
 
     #[test]

@@ -14,6 +14,7 @@
 //! | `erase all` | erases the store: session, bias, last result, profile, plan and brackets |
 //! | `bracket calibrate upper-arm\|flange ID` | starts a bracket's calibration on the pendant ([`parse_bracket_calibrate`]) |
 //! | `brackets` | the brackets' calibrations kept, one line a mount (`crate::bracket_cal::bracket_line`) |
+//! | `results` | the results kept ([`crate::kept`]): [`KEPT_RESULTS_HEAD`], each result's lines (`crate::log::write_kept_result`), oldest first, then [`KEPT_RESULTS_END`] |
 //!
 //! Unknown or malformed lines get an `error:` line and change nothing. Parsing and
 //! formatting live here; the firmware's link task only moves bytes.
@@ -81,6 +82,12 @@ const PROFILE_STORED: (&str, &str) = (
 );
 
 const PLAN_STORED: (&str, &str) = ("ok: plan set, ", " poses");
+
+/// The first line of the `results` reply (a free comment to the lines' reader).
+pub const KEPT_RESULTS_HEAD: &str = "# zerocal pendant kept results, oldest first";
+
+/// The last line of the `results` reply: the desktop knows the reply is whole.
+pub const KEPT_RESULTS_END: &str = "# end of kept results";
 
 /// The answer to `bracket calibrate` once the pendant shows its first step.
 pub fn bracket_started(

@@ -15,6 +15,8 @@ use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::Extras;
 
+use crate::machine::kept::{PendantUnit, UnitId};
+
 /// A metadata item of the pendant's export that the session solver needs.
 #[derive(Clone, Debug, PartialEq)]
 pub enum MetaItem<T> {
@@ -39,6 +41,17 @@ pub enum MetaItem<T> {
     /// temp_c t [yaw_deg c u_yaw_deg w]` (`None` for `none`): the bracket's calibration
     /// the session applied (the yaw where the sine plate measured it).
     Bracket(BracketMount, Option<BracketCalibration<T>>),
+    /// `# pendant unit HEX firmware VERSION`: the pendant unit that wrote the export
+    /// (its 96-bit ID, 24 hex digits) and its firmware's version.
+    Pendant(UnitId, ShortText),
+}
+
+/// Writes `# pendant unit HEX firmware VERSION`.
+///
+/// # Errors
+/// A full line buffer.
+pub fn write_pendant(w: &mut Line, p: &PendantUnit) -> fmt::Result {
+    write!(w, "# pendant unit {} firmware {}", p.id, p.firmware)
 }
 
 /// The metadata key of `mount`'s bracket.
@@ -388,6 +401,28 @@ pub fn parse_meta<T: Real>(
             let calibration = parse_bracket_fields(&mut rest, &parse).ok_or(bad)?;
             MetaItem::Bracket(mount, calibration)
         }
+        "pendant" => {
+            let bad = LogError::BadMetadata {
+                line,
+                key: "pendant",
+            };
+            let unit = (rest.next() == Some("unit"))
+                .then(|| rest.next().and_then(UnitId::parse))
+                .flatten()
+                .ok_or(bad)?;
+            // A version is one word of printable ASCII, short enough to quote whole.
+            let firmware = (rest.next() == Some("firmware"))
+                .then(|| rest.next())
+                .flatten()
+                .filter(|v| {
+                    v.len() <= ShortText::CAPACITY && v.bytes().all(|b| b.is_ascii_graphic())
+                })
+                .ok_or(bad)?;
+            if rest.next().is_some() {
+                return Err(bad);
+            }
+            MetaItem::Pendant(unit, ShortText::new(firmware))
+        }
         // Informational lines the pendant writes (each capture of stage 1, its result,
         // stage 2's): the solver recomputes them from the readings.
         "stage1_captures_deg" | "stage1" | "stage2" => return Ok(None),
@@ -421,7 +456,7 @@ pub fn metadata_key(comment: &str) -> Option<&str> {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MetaKeys {
     /// The line each item was first given on (0: not yet).
-    first_line: [usize; 8],
+    first_line: [usize; 9],
 }
 
 impl MetaKeys {
@@ -440,6 +475,7 @@ impl MetaKeys {
             MetaItem::FitExtras(_) => (5, "fit_extras"),
             MetaItem::Bracket(BracketMount::UpperArm, _) => (6, "bracket_upper_arm"),
             MetaItem::Bracket(BracketMount::Flange, _) => (7, "bracket_flange"),
+            MetaItem::Pendant(..) => (8, "pendant"),
         };
         match self.first_line[slot] {
             0 => {
@@ -459,6 +495,53 @@ impl MetaKeys {
 mod tests {
     use super::*;
     use zerocal_core::testing::isclose;
+
+    #[test]
+    fn the_pendant_line_reads_back_and_malformed_ones_are_refused() {
+        let parse = |s: &str| s.parse::<f64>().ok();
+        let unit = PendantUnit {
+            id: UnitId([
+                0x36, 0, 0x2f, 0, 0x13, 0x47, 0x33, 0x31, 0x30, 0x37, 0x35, 0x39,
+            ]),
+            firmware: "0.1.0",
+        };
+        let mut w = Line::new();
+        write_pendant(&mut w, &unit).unwrap();
+        assert_eq!(
+            w.as_str(),
+            "# pendant unit 36002f001347333130373539 firmware 0.1.0"
+        );
+        let text = w.as_str().trim_start_matches('#');
+        assert_eq!(
+            parse_meta::<f64>(text, 3, parse),
+            Ok(Some(MetaItem::Pendant(unit.id, ShortText::new("0.1.0"))))
+        );
+        let bad = Err(LogError::BadMetadata {
+            line: 3,
+            key: "pendant",
+        });
+        for text in [
+            " pendant unit 36002f00134733313037353 firmware 0.1.0",
+            " pendant unit 36002f001347333130373539",
+            " pendant unit 36002f001347333130373539 firmware",
+            " pendant unit 36002f001347333130373539 firmware 0.1.0 extra",
+            " pendant 36002f001347333130373539 firmware 0.1.0",
+        ] {
+            assert_eq!(parse_meta::<f64>(text, 3, parse), bad, "{text}");
+        }
+        // Given twice: refused by MetaKeys like every key.
+        let mut keys = MetaKeys::default();
+        let item = MetaItem::<f64>::Pendant(unit.id, ShortText::new("0.1.0"));
+        assert_eq!(keys.note(&item, 3), Ok(()));
+        assert!(matches!(
+            keys.note(&item, 9),
+            Err(LogError::DuplicateKey {
+                line: 9,
+                first_line: 3,
+                ..
+            })
+        ));
+    }
 
     #[test]
     fn reversals_and_temperatures_round_trip() {

@@ -16,7 +16,8 @@
 //! `stage0_bias_deg x,y`, `stage0_reversal_deg first x,y second x,y temp_c t`,
 //! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c`, `stage1_temp_c t`,
 //! stage 1's results, `closing_reversal_deg first x,y second x,y temp_c t` (the reversal
-//! after stage 2 that measures the bias' drift), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! after stage 2 that measures the bias' drift), `pendant unit HEX firmware VERSION` (the
+//! pendant unit that wrote it), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
 //! [`MetaItem`] the metadata the session solver needs.
 //!
 //! The export is read strictly, because a line it ignores can make a session silently
@@ -37,15 +38,19 @@
 //! This file holds what they share: the columns, the headers and the bounds.
 
 mod error;
+mod kept;
 mod meta;
 mod read;
 mod write;
 
 pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
 pub use error::{LogError, ShortText};
+#[cfg(any(test, feature = "std"))]
+pub use kept::read_kept_results;
+pub use kept::{write_kept_result, KeptResultReader, KEPT_RESULT_KEY, KEPT_RESULT_LINES};
 pub use meta::{
     bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bracket,
-    write_bracket_fields, write_fit_extras, write_reversal, MetaItem, MetaKeys,
+    write_bracket_fields, write_fit_extras, write_pendant, write_reversal, MetaItem, MetaKeys,
 };
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;
@@ -127,7 +132,7 @@ pub fn quantise_temperature<T: Real>(celsius: T) -> T {
 pub const EXPORT_DECIMALS: u8 = 12;
 
 /// Every metadata key an export may hold (the first word of a `# key value…` line).
-pub const METADATA_KEYS: [&str; 12] = [
+pub const METADATA_KEYS: [&str; 13] = [
     "robot",
     "stage0_bias_deg",
     "stage0_reversal_deg",
@@ -140,6 +145,7 @@ pub const METADATA_KEYS: [&str; 12] = [
     "stage2",
     "bracket_upper_arm",
     "bracket_flange",
+    "pendant",
 ];
 
 /// [`METADATA_KEYS`], comma-separated, for messages.

@@ -1,7 +1,7 @@
 //! The writers: the pendant's export a line at a time ([`Export`]), a stage-2 log's
 //! row and an export's row, and the degree format they share.
 
-use super::meta::{write_bracket, write_fit_extras, write_reversal};
+use super::meta::{write_bracket, write_fit_extras, write_pendant, write_reversal};
 use super::{approach_name, deg, pair, Line, EXPORT_HEADER};
 use crate::capture::Capture;
 use crate::export_trailer::TrailerSum;
@@ -49,6 +49,8 @@ pub struct ExportSession<'a, T: Real, R> {
     pub brackets: &'a Brackets<T>,
     /// The pendant's result, once the session is done.
     pub result: Option<&'a Result<SessionSolution<T>, SessionError>>,
+    /// The pendant unit that wrote the export, where known.
+    pub pendant: Option<crate::machine::kept::PendantUnit>,
 }
 
 /// The stage-2 captures of an export, in the order taken: whatever the procedure keeps
@@ -90,7 +92,7 @@ pub fn export<T: Real, R: CaptureRows<T>>(session: ExportSession<'_, T, R>) -> E
     }
 }
 
-const EXPORT_HEAD: usize = 13;
+const EXPORT_HEAD: usize = 14;
 
 /// Most lines an export has: the head, a row per capture, the result line and the
 /// trailer.
@@ -196,6 +198,10 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
             9 => write_fit_extras(w, s.fit_extras),
             10 => write_bracket(w, BracketMount::UpperArm, s.brackets.upper_arm.as_ref()),
             11 => write_bracket(w, BracketMount::Flange, s.brackets.flange.as_ref()),
+            12 => match &s.pendant {
+                Some(p) => write_pendant(w, p),
+                None => w.write_str("# no pendant unit recorded"),
+            },
             _ => w.write_str(EXPORT_HEADER),
         }
     }

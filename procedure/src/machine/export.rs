@@ -41,6 +41,7 @@ impl<T: Real> ProcedureState<T> {
             fit_extras: config.fit.extras,
             brackets: &config.brackets,
             result: self.outcome().map(|o| &o.result),
+            pendant: config.pendant,
         }
     }
 

@@ -29,11 +29,13 @@
 //! capture, whatever the stage.
 
 mod export;
+pub mod kept;
 pub mod profile;
 pub mod record;
 mod state;
 
 use crate::stillness::{Stillness, StillnessConfig};
+pub use kept::{KeptResult, PendantUnit, UnitId, KEPT_RESULTS};
 pub use profile::{ControllerDisplay, ControllerOffset, PendantProfile};
 pub use record::{Record, RecordError};
 pub use state::{ProcedureState, View};
@@ -76,6 +78,9 @@ pub struct ProcedureConfig<T: Real> {
     pub fit: FitConfig<T>,
     /// How the controller shows the joints (the pose screens' targets).
     pub display: ControllerDisplay<T>,
+    /// The pendant unit running the procedure (its ID and firmware, written into the
+    /// export and every kept result); `None` off a pendant.
+    pub pendant: Option<PendantUnit>,
 }
 
 impl<T: Real> Default for ProcedureConfig<T> {
@@ -96,6 +101,7 @@ impl<T: Real> Default for ProcedureConfig<T> {
             stage1_joints_rad: [T::zero(); JOINTS],
             fit: FitConfig::default(),
             display: ControllerDisplay::default(),
+            pendant: None,
         }
     }
 }

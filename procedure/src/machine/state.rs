@@ -554,6 +554,14 @@ impl<T: Real> ProcedureState<T> {
         }
     }
 
+    /// The session's still window, for a bracket calibration to borrow while the
+    /// session waits (`crate::bracket_cal::bracket_step`): one window in RAM for both.
+    /// The lender empties it before the calibration and after it, so neither reads the
+    /// other's samples.
+    pub fn stillness_window(&mut self) -> &mut StillnessFilter<T> {
+        &mut self.filter
+    }
+
     /// Goes to `phase` at `cursor`, disarmed, with a fresh stillness window.
     pub(super) fn enter(&mut self, phase: Phase, cursor: usize) {
         self.phase = phase;

@@ -24,6 +24,10 @@ impl Writer<'_> {
     pub(super) fn f<T: Real>(&mut self, v: T) -> Result<(), RecordError> {
         self.put(&v.to_f64().to_le_bytes())
     }
+    /// An `f32` as its own four bytes (a kept result's numbers: the pendant's `f32`s).
+    pub(super) fn f32(&mut self, v: f32) -> Result<(), RecordError> {
+        self.put(&v.to_le_bytes())
+    }
     pub(super) fn temperature<T: Real>(&mut self, c: Option<T>) -> Result<(), RecordError> {
         match c {
             Some(c) => {
@@ -60,6 +64,15 @@ impl Reader<'_> {
         let t = T::lit(v);
         if v.is_finite() && t.to_f64().is_finite() {
             Ok(t)
+        } else {
+            Err(RecordError::BadField)
+        }
+    }
+    /// A finite `f32` written by [`Writer::f32`].
+    pub(super) fn f32(&mut self) -> Result<f32, RecordError> {
+        let v = f32::from_le_bytes(self.take::<4>()?);
+        if v.is_finite() {
+            Ok(v)
         } else {
             Err(RecordError::BadField)
         }

@@ -21,6 +21,7 @@ use zerocal_core::real::Real;
 use zerocal_core::stage2::PoseReading;
 
 mod bytes;
+pub mod kept;
 mod stored_bracket;
 #[cfg(test)]
 mod tests;
@@ -238,6 +239,11 @@ pub mod key {
     /// [`super::Record::BracketCalibration`] of the upper arm's bracket; the flange's
     /// is the next.
     pub const BRACKET_CALIBRATION: u16 = 0x40;
+    /// The next kept result's ID ([`super::kept`]; not a [`super::Record`]).
+    pub const KEPT_NEXT_ID: u16 = 0x70;
+    /// The kept results' slots ([`super::kept::kept_key`]; not [`super::Record`]s):
+    /// `KEPT_RESULT + id % KEPT_RESULTS`.
+    pub const KEPT_RESULT: u16 = 0x71;
 }
 
 /// The stored bracket calibrations: one a mount.
