@@ -39,7 +39,7 @@ use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{FitConfig, PoseReading};
 use zerocal_core::Tilt;
 use zerocal_procedure::log::{
-    parse_meta, strip_bom, text_of, LogLine, LogReader, MetaItem, MetaKeys,
+    parse_meta, strip_bom, text_of, ExportMode, LogLine, LogReader, MetaItem, MetaKeys,
 };
 use zerocal_procedure::Approach;
 use zerocal_profile::Profile;
@@ -118,6 +118,8 @@ pub struct ExportContents {
     /// nothing lost or changed since the pendant wrote it. Without one (a file edited by
     /// hand, or not from a pendant) it is read unchecked, with a note.
     pub trailer_checked: bool,
+    /// `# mode`: a session's export or a check's (no line: a session).
+    pub mode: ExportMode,
 }
 
 /// Reads a pendant export, strictly ([`LogReader::for_export`], [`MetaKeys`]): an
@@ -147,6 +149,7 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
         approaches: None,
         captures: None,
         trailer_checked: false,
+        mode: ExportMode::Session,
     };
     for line in text.lines() {
         match reader.feed(line, parse_number).map_err(|e| e.to_string())? {
@@ -181,6 +184,7 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
                     Some(MetaItem::Bracket(BracketMount::Flange, c)) => {
                         export.brackets.flange = c;
                     }
+                    Some(MetaItem::Mode(m)) => export.mode = m,
                     None => {}
                 }
             }
@@ -400,6 +404,11 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
     let name = |what: &str| format!("{}: {what}", args.export.display());
     let text = text_of(&bytes).map_err(|e| CliError::Input(name(&e.to_string())))?;
     let export = read_export(text).map_err(|e| CliError::Input(name(&e)))?;
+    if export.mode == ExportMode::Check {
+        return Err(CliError::Input(name(
+            "a check export (`# mode check`): it holds no stage 1 and solves nothing; use zerocal check",
+        )));
+    }
     let (robot_name, convention) = export.robot.clone().ok_or_else(|| {
         CliError::Input(name(
             "no `# robot … convention …` line: not a pendant export",

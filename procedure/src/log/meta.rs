@@ -39,6 +39,41 @@ pub enum MetaItem<T> {
     /// temp_c t [yaw_deg c u_yaw_deg w]` (`None` for `none`): the bracket's calibration
     /// the session applied (the yaw where the sine plate measured it).
     Bracket(BracketMount, Option<BracketCalibration<T>>),
+    /// `# mode session|check`: what the export holds (absent: a session).
+    Mode(ExportMode),
+}
+
+/// What a pendant export holds: a calibration session, or a check of the offsets
+/// entered after one (stage 0, the flange's check poses and the closing reversal; no
+/// stage 1, no result: `zerocal check` compares it with the reference session).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum ExportMode {
+    /// A session (also an export without a `# mode` line).
+    #[default]
+    Session,
+    /// A check.
+    Check,
+}
+
+impl ExportMode {
+    /// The `# mode` line's word.
+    pub fn name(self) -> &'static str {
+        match self {
+            ExportMode::Session => "session",
+            ExportMode::Check => "check",
+        }
+    }
+
+    /// Inverse of [`name`](Self::name).
+    pub fn parse(word: &str) -> Option<Self> {
+        match word {
+            "session" => Some(ExportMode::Session),
+            "check" => Some(ExportMode::Check),
+            _ => None,
+        }
+    }
 }
 
 /// The metadata key of `mount`'s bracket.
@@ -388,6 +423,14 @@ pub fn parse_meta<T: Real>(
             let calibration = parse_bracket_fields(&mut rest, &parse).ok_or(bad)?;
             MetaItem::Bracket(mount, calibration)
         }
+        "mode" => {
+            let bad = LogError::BadMetadata { line, key: "mode" };
+            let mode = rest.next().and_then(ExportMode::parse).ok_or(bad)?;
+            if rest.next().is_some() {
+                return Err(bad);
+            }
+            MetaItem::Mode(mode)
+        }
         // Informational lines the pendant writes (each capture of stage 1, its result,
         // stage 2's): the solver recomputes them from the readings.
         "stage1_captures_deg" | "stage1" | "stage2" => return Ok(None),
@@ -421,7 +464,7 @@ pub fn metadata_key(comment: &str) -> Option<&str> {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MetaKeys {
     /// The line each item was first given on (0: not yet).
-    first_line: [usize; 8],
+    first_line: [usize; 9],
 }
 
 impl MetaKeys {
@@ -440,6 +483,7 @@ impl MetaKeys {
             MetaItem::FitExtras(_) => (5, "fit_extras"),
             MetaItem::Bracket(BracketMount::UpperArm, _) => (6, "bracket_upper_arm"),
             MetaItem::Bracket(BracketMount::Flange, _) => (7, "bracket_flange"),
+            MetaItem::Mode(_) => (8, "mode"),
         };
         match self.first_line[slot] {
             0 => {

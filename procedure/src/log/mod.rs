@@ -16,7 +16,9 @@
 //! `stage0_bias_deg x,y`, `stage0_reversal_deg first x,y second x,y temp_c t`,
 //! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c`, `stage1_temp_c t`,
 //! stage 1's results, `closing_reversal_deg first x,y second x,y temp_c t` (the reversal
-//! after stage 2 that measures the bias' drift), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! after stage 2 that measures the bias' drift), and after the rows the result line.
+//! A check's export (`mode check`) has a `mode check` line instead of stage 1's lines
+//! and no result line, its rows' `pose` the plan's pose index. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
 //! [`MetaItem`] the metadata the session solver needs.
 //!
 //! The export is read strictly, because a line it ignores can make a session silently
@@ -45,7 +47,7 @@ pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
 pub use error::{LogError, ShortText};
 pub use meta::{
     bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bracket,
-    write_bracket_fields, write_fit_extras, write_reversal, MetaItem, MetaKeys,
+    write_bracket_fields, write_fit_extras, write_reversal, ExportMode, MetaItem, MetaKeys,
 };
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;
@@ -127,7 +129,7 @@ pub fn quantise_temperature<T: Real>(celsius: T) -> T {
 pub const EXPORT_DECIMALS: u8 = 12;
 
 /// Every metadata key an export may hold (the first word of a `# key value…` line).
-pub const METADATA_KEYS: [&str; 12] = [
+pub const METADATA_KEYS: [&str; 13] = [
     "robot",
     "stage0_bias_deg",
     "stage0_reversal_deg",
@@ -140,6 +142,7 @@ pub const METADATA_KEYS: [&str; 12] = [
     "stage2",
     "bracket_upper_arm",
     "bracket_flange",
+    "mode",
 ];
 
 /// [`METADATA_KEYS`], comma-separated, for messages.
