@@ -371,6 +371,12 @@ impl<W: Write> Server<'_, W> {
                 }
             }
             Command::Live => return Ok(Next::Live),
+            Command::Check => match self.request(LinkRequest::Check).await {
+                LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::CheckStarted).await?,
+                LinkReply::StoreFailed => self.reply(Reply::ClearWriteFailed).await?,
+                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                LinkReply::SessionInProgress => {}
+            },
             Command::Clear => match self.request(LinkRequest::Clear).await {
                 LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::Cleared).await?,
                 LinkReply::StoreFailed => self.reply(Reply::ClearWriteFailed).await?,

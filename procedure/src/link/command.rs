@@ -14,6 +14,7 @@ pub const HELP: &[&str] = &[
     "  plan set   upload a pose list: j1..j6 or j3..j6 in degrees, one pose a line, then 'end'",
     "  export     the whole session for 'zerocal session'",
     "  clear      clear the session in progress",
+    "  check      start a check of entered offsets: stage 0, the flange's check poses (zerocal program --check)",
     "  profile    the robot profile in use",
     "  profile set  upload a robot profile (zerocal pendant load-profile), then 'end'",
     "  erase all  erase session, bias, last result, profile, plan and brackets",
@@ -48,6 +49,8 @@ pub enum Command {
     Erase,
     /// `brackets`
     Brackets,
+    /// `check`
+    Check,
 }
 
 /// What is wrong with a line.
@@ -135,7 +138,7 @@ impl fmt::Display for LinkError {
 
 impl Command {
     /// Every command, in the order `help` lists them.
-    pub const ALL: [Command; 11] = [
+    pub const ALL: [Command; 12] = [
         Command::Help,
         Command::Status,
         Command::Live,
@@ -147,6 +150,7 @@ impl Command {
         Command::ProfileSet,
         Command::Erase,
         Command::Brackets,
+        Command::Check,
     ];
 
     /// The words a person (or `zerocal pendant`) types for it: defined here once, for
@@ -164,6 +168,7 @@ impl Command {
             Command::ProfileSet => "profile set",
             Command::Erase => "erase all",
             Command::Brackets => "brackets",
+            Command::Check => "check",
         }
     }
 }
@@ -254,6 +259,7 @@ mod tests {
             Err(LinkError::EraseNeedsAll)
         );
         assert_eq!(parse_command("brackets"), Ok(Command::Brackets));
+        assert_eq!(parse_command("check"), Ok(Command::Check));
     }
 
     #[test]
