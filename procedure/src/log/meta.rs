@@ -505,6 +505,41 @@ mod tests {
     use zerocal_core::testing::isclose;
 
     #[test]
+    fn the_mode_line_reads_session_or_check_and_nothing_else() {
+        let parse = zerocal_core::decimal::parse;
+        for mode in [ExportMode::Session, ExportMode::Check] {
+            let line = std::format!("mode {}", mode.name());
+            assert_eq!(
+                parse_meta::<f64>(&line, 3, parse),
+                Ok(Some(MetaItem::Mode(mode)))
+            );
+        }
+        for bad in ["mode", "mode checks", "mode check extra"] {
+            assert_eq!(
+                parse_meta::<f64>(bad, 3, parse),
+                Err(LogError::BadMetadata {
+                    line: 3,
+                    key: "mode"
+                }),
+                "{bad}"
+            );
+        }
+        // Given twice, it is refused: which one holds would be a guess.
+        let mut keys = MetaKeys::default();
+        let item = MetaItem::<f64>::Mode(ExportMode::Check);
+        assert!(keys.note(&item, 3).is_ok());
+        assert!(matches!(
+            keys.note(&item, 9),
+            Err(LogError::DuplicateKey {
+                line: 9,
+                key: "mode",
+                first_line: 3
+            })
+        ));
+        assert_eq!(ExportMode::default(), ExportMode::Session);
+    }
+
+    #[test]
     fn reversals_and_temperatures_round_trip() {
         let parse = |s: &str| s.parse::<f64>().ok();
         let r = ClosingReversal {
