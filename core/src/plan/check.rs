@@ -19,6 +19,7 @@
 use crate::linalg::{log_det, svd, Square};
 use crate::model::{Arm, BaseTilt, Convention, SensorModel, Tilt, JOINTS, WRIST_JOINTS};
 use crate::real::Real;
+use crate::stage2::MAX_PARAMS;
 use crate::stage2::{information, Extras, MassModel, Stage2Model, MEMS_Y_WEIGHT};
 use core::fmt;
 
@@ -129,7 +130,10 @@ pub fn check_model<T: Real>(
     }
 }
 
-type Gram4<T> = Square<T, WRIST_JOINTS>;
+/// The information over the free offsets (active size 3 or 4). Sized as the fit's, so
+/// that the pendant's firmware shares the fit's and the planner's linear algebra
+/// (Cholesky, log det, SVD) instead of carrying a second copy for a 4×4.
+type OffsetGram<T> = Square<T, MAX_PARAMS>;
 
 /// The offsets a check can tell apart: Δθ3..Δθ6 less those whose joint is parallel to
 /// the previous one in every pose (a UR's joint 4 after joint 3: to gravity the two are
@@ -144,9 +148,9 @@ fn pose_information<T: Real>(
     model: &Stage2Model<T>,
     free: &[usize],
     q: &[T; JOINTS],
-) -> Option<Gram4<T>> {
+) -> Option<OffsetGram<T>> {
     let full = information(model, Extras::NONE, &[*q], &[T::zero(); WRIST_JOINTS]).gram();
-    let mut m = Gram4::zeros(free.len());
+    let mut m = OffsetGram::zeros(free.len());
     for (a, &i) in free.iter().enumerate() {
         for (b, &j) in free.iter().enumerate() {
             let v = full.m[i][j];
@@ -159,10 +163,11 @@ fn pose_information<T: Real>(
     Some(m)
 }
 
-fn add<T: Real>(a: &Gram4<T>, b: &Gram4<T>) -> Gram4<T> {
+fn add<T: Real>(a: &OffsetGram<T>, b: &OffsetGram<T>) -> OffsetGram<T> {
     let mut s = *a;
-    for (rs, rb) in s.m.iter_mut().zip(&b.m) {
-        for (x, y) in rs.iter_mut().zip(rb) {
+    let n = s.n;
+    for (rs, rb) in s.m.iter_mut().zip(&b.m).take(n) {
+        for (x, y) in rs.iter_mut().zip(rb).take(n) {
             *x += *y;
         }
     }
@@ -171,7 +176,7 @@ fn add<T: Real>(a: &Gram4<T>, b: &Gram4<T>) -> Gram4<T> {
 
 /// The condition number of the Jacobian whose information is `m`: the square root of
 /// the information's.
-fn jacobian_condition<T: Real>(m: &Gram4<T>) -> T {
+fn jacobian_condition<T: Real>(m: &OffsetGram<T>) -> T {
     svd(m).condition_number().sqrt()
 }
 
@@ -207,12 +212,12 @@ pub fn check_poses<T: Real>(
     // A small ridge makes log det defined while the set has rank < 4 (each pose's
     // information is O(1): a reading moves about a radian per radian of joint), as the
     // planner's greedy build does.
-    let mut m = Gram4::identity(free.len());
+    let mut m = OffsetGram::identity(free.len());
     for i in 0..free.len() {
         m.m[i][i] = T::lit(1e-4);
     }
     while chosen.len() < CHECK_POSES.min(plan.len()) {
-        let mut best: Option<(u8, T, Gram4<T>)> = None;
+        let mut best: Option<(u8, T)> = None;
         for (i, q) in plan.iter().enumerate() {
             let i = i as u8;
             if chosen.contains(&i) {
@@ -226,20 +231,33 @@ pub fn check_poses<T: Real>(
                 continue;
             };
             let beats = |b: T| score - b > T::lit(TIE_RELATIVE) * b.abs().max(T::one());
-            if best.as_ref().is_none_or(|(_, b, _)| beats(*b)) {
-                best = Some((i, score, trial));
+            if best.is_none_or(|(_, b)| beats(b)) {
+                best = Some((i, score));
             }
         }
-        let Some((i, _, trial)) = best else {
+        let Some((i, _)) = best else {
             break;
         };
-        m = trial;
+        if let Some(info) = plan
+            .get(usize::from(i))
+            .and_then(|q| pose_information(model, &free, q))
+        {
+            m = add(&m, &info);
+        }
         // At most CHECK_POSES pushes: cannot fail.
         let _ = chosen.push(i);
     }
-    chosen.sort_unstable();
+    // In the plan's order. Five entries: an insertion sort, no general sort's code on
+    // the pendant.
+    for i in 1..chosen.len() {
+        let mut j = i;
+        while j > 0 && chosen[j - 1] > chosen[j] {
+            chosen.swap(j - 1, j);
+            j -= 1;
+        }
+    }
     // The condition of the chosen set without the ridge.
-    let mut info = Gram4::zeros(free.len());
+    let mut info = OffsetGram::zeros(free.len());
     for &i in &chosen {
         if let Some(p) = plan
             .get(usize::from(i))
@@ -312,7 +330,7 @@ mod tests {
         let (check, _) = check_poses(&model, &poses).unwrap_or_else(|e| panic!("{e}"));
         let log_det_of = |idx: &[usize]| {
             let free = free_offsets(&model);
-            let mut m = Gram4::zeros(free.len());
+            let mut m = OffsetGram::zeros(free.len());
             for &i in idx {
                 m = add(&m, &pose_information(&model, &free, &poses[i]).unwrap());
             }
