@@ -142,7 +142,7 @@ fn record_of(
         export: a.bytes.clone(),
         measured_on: meta.day()?,
         operator: meta.operator.clone(),
-        pendant_unit: None,
+        pendant_unit: a.export.pendant_unit.clone(),
         pendant_result_id: None,
         reference_id: Some(a.record.id),
         zerocal_version: env!("CARGO_PKG_VERSION").to_owned(),

@@ -125,7 +125,7 @@ pub fn session_record(
         export: export.to_vec(),
         measured_on: meta.day()?,
         operator: meta.operator.clone(),
-        pendant_unit: None,
+        pendant_unit: a.export.pendant_unit.clone(),
         pendant_result_id: None,
         reference_id: None,
         zerocal_version: env!("CARGO_PKG_VERSION").to_owned(),

@@ -54,9 +54,45 @@ fn one_program_per_family_matches_its_golden_file() {
         ("staubli-tx2-60", "zc_tx260", Format::Val3, None),
         ("ur5e", "zc_ur5e.script", Format::Urscript, Some(&ur_plan)),
     ];
-    let tmp = std::env::temp_dir().join(format!("zerocal-golden-{}", std::process::id()));
+    compare_with_goldens(&cases, &[], bless);
+}
+
+/// The check's programs (`--check`), one per family, on the same robots and plans.
+#[test]
+fn one_check_program_per_family_matches_its_golden_file() {
+    let bless = std::env::var("ZEROCAL_BLESS").is_ok_and(|v| v == "1");
+    let gp7 = golden().join("yaskawa-gp7-pulses.toml");
+    let ur_plan = ur5e_plan(false);
+    let cases: [(&str, &str, Format, Option<&Path>); 6] = [
+        ("kuka-kr16", "zc_chk16.src", Format::Krl, None),
+        ("abb-irb140", "zc_chk140.mod", Format::Rapid, None),
+        ("fanuc-m20ia", "zc_chk20.ls", Format::Tp, None),
+        (gp7.to_str().unwrap(), "zc_chkgp7.jbi", Format::Inform, None),
+        ("staubli-tx2-60", "zc_chktx", Format::Val3, None),
+        (
+            "ur5e",
+            "zc_chkur5e.script",
+            Format::Urscript,
+            Some(&ur_plan),
+        ),
+    ];
+    compare_with_goldens(&cases, &["--check"], bless);
+}
+
+/// Writes each case's program with the `zerocal` binary (`extra` arguments added) and
+/// compares it byte for byte with its golden file (or writes it, blessing).
+fn compare_with_goldens(
+    cases: &[(&str, &str, Format, Option<&Path>)],
+    extra: &[&str],
+    bless: bool,
+) {
+    let tmp = std::env::temp_dir().join(format!(
+        "zerocal-golden-{}{}",
+        std::process::id(),
+        extra.concat()
+    ));
     std::fs::create_dir_all(&tmp).unwrap();
-    for (robot, out, format, plan) in cases {
+    for &(robot, out, format, plan) in cases {
         let target = tmp.join(out);
         let mut cmd = Command::new(env!("CARGO_BIN_EXE_zerocal"));
         cmd.env("SOURCE_DATE_EPOCH", EPOCH).args([
@@ -71,6 +107,7 @@ fn one_program_per_family_matches_its_golden_file() {
         if let Some(p) = plan {
             cmd.args(["--plan", p.to_str().unwrap()]);
         }
+        cmd.args(extra);
         let run = cmd.output().unwrap();
         assert_eq!(
             run.status.code(),
@@ -179,4 +216,53 @@ fn golden_files_read_back() {
         .split('\n')
         .filter(|l| !l.is_empty())
         .all(|l| l.ends_with('\r')));
+}
+
+/// The check's golden files read back through the readers: the check's poses only
+/// (no stage 1), each captured twice; the first stop clips the pendant to the flange,
+/// the last is the closing reversal's, after the last move.
+#[test]
+fn check_golden_files_read_back() {
+    let g = golden();
+    let text = |n: &str| std::fs::read_to_string(g.join(n)).unwrap();
+    let gp7 = common::gp7_with_pulses();
+    let pulses = match gp7.controller.unit {
+        zerocal_profile::OffsetUnit::Counts(Some(c)) => c,
+        _ => panic!("test profile without pulses"),
+    };
+    let all = [
+        read::krl(&text("zc_chk16.src")),
+        read::rapid(&text("zc_chk140.mod")),
+        read::tp(&text("zc_chk20.ls")),
+        read::inform(&text("zc_chkgp7.jbi"), &pulses),
+        read::val3(&text("zc_chktx/ZC_CHKTX.dtx"), &text("zc_chktx/start.pgx")),
+        read::urscript(&text("zc_chkur5e.script")),
+    ];
+    for (i, moves) in all.into_iter().enumerate() {
+        let moves = moves.unwrap_or_else(|e| panic!("file {i}: {e}"));
+        assert_eq!(
+            moves.iter().filter(|m| m.dwell_s.is_some()).count(),
+            CAPTURES_PER_POSE * zerocal_core::plan::CHECK_POSES,
+            "file {i}"
+        );
+        let stops: Vec<String> = moves
+            .iter()
+            .filter_map(|m| m.stop.clone())
+            .map(|s| s.to_lowercase())
+            .collect();
+        assert!(
+            stops.first().is_some_and(|s| s.contains("flange")),
+            "file {i}: {stops:?}"
+        );
+        assert!(
+            !stops.iter().any(|s| s.contains("upper arm")),
+            "file {i}: {stops:?}"
+        );
+        let last = moves.last().unwrap();
+        let closing = last.stop.clone().unwrap_or_default().to_lowercase();
+        assert!(
+            last.dwell_s.is_none() && closing.contains("closing reversal"),
+            "file {i}: {closing}"
+        );
+    }
 }

@@ -231,6 +231,7 @@ fn a_partial_limits_file_keeps_the_profiles_other_limits() {
         plan: Some(csv),
         format: zerocal_cli::program::Format::Krl,
         out: dir.join("zc.src"),
+        check: false,
         timing: TimingArgs::default(),
     };
     let wrote = zerocal_cli::program::run(&program).unwrap_or_else(|e| panic!("{e}"));

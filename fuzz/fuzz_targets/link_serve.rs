@@ -103,6 +103,10 @@ fuzz_target!(|data: &[u8]| {
                         let _ = step(&p.config, &mut p.session, Event::Clear);
                         LinkReply::Done
                     }
+                    LinkRequest::Check => {
+                        let _ = step(&p.config, &mut p.session, Event::Check);
+                        LinkReply::Done
+                    }
                     LinkRequest::SetProfile(profile) => match set_profile(p, &profile) {
                         Some(_) => LinkReply::Done,
                         None => LinkReply::SessionInProgress,

@@ -80,6 +80,9 @@ pub struct Rig {
     pub link: HostLink,
     /// The plan the pendant starts with, and the robot program's poses.
     pub plan: Vec<[f32; 6]>,
+    /// In a check, the check program's poses: indices into `plan` (core's
+    /// `check_poses`, as `zerocal program --check` writes them).
+    pub check: RefCell<Option<Vec<usize>>>,
     /// The note the board hands the next boot (a panic's message).
     pub restart: RefCell<Option<RestartNote>>,
 }
@@ -99,6 +102,7 @@ impl Rig {
             buttons: Rc::new(ButtonLevels::default()),
             link: HostLink::default(),
             plan: default_plan()?,
+            check: RefCell::new(None),
             restart: RefCell::new(None),
         })
     }

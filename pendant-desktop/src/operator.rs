@@ -115,9 +115,13 @@ fn wanted(rig: &Rig, prompt: &Prompt) -> Result<(Place, Option<[f64; JOINTS]>), 
             None,
         ),
         Prompt::Pose { number, .. } => {
-            let pose = rig
-                .plan
-                .get(number.wrapping_sub(1))
+            // A check's screen counts the check's poses; its program drives the plan's.
+            let index = match rig.check.borrow().as_ref() {
+                Some(check) => check.get(number.wrapping_sub(1)).copied(),
+                None => Some(number.wrapping_sub(1)),
+            };
+            let pose = index
+                .and_then(|i| rig.plan.get(i))
                 .ok_or_else(|| ScriptError::Unexpected(format!("pose {number} not in plan")))?;
             (
                 Place::Flange,
@@ -174,7 +178,7 @@ pub async fn operate_until(
             Screen::StorageReset(_) | Screen::Restarted(_) => {
                 press(rig, Button::Ok, PRESS_MS).await
             }
-            Screen::Result(_) => return Ok(screen),
+            Screen::Result(_) | Screen::CheckDone(_) => return Ok(screen),
             // A session's operator does not calibrate brackets (`bracket calibrate`).
             Screen::Bracket(_) => {
                 return Err(ScriptError::Unexpected(

@@ -9,7 +9,7 @@ use std::rc::Rc;
 
 use embassy_time::{Duration, Instant, Timer};
 use zerocal_core::model::JOINTS;
-use zerocal_core::plan::{Candidate, DEFAULT_POOL};
+use zerocal_core::plan::{check_model, check_poses, Candidate, DEFAULT_POOL};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::SESSION_JOINTS;
 use zerocal_pendant::buttons::Button;
@@ -21,7 +21,7 @@ use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
 use zerocal_procedure::{pendant_default, Approach, PendantProfile, Phase, ProcedureState};
 
 use crate::exec;
-use crate::operator::{calibrate, command, press, t_ms, ScriptError, PRESS_MS};
+use crate::operator::{calibrate, command, operate_until, press, t_ms, ScriptError, PRESS_MS};
 use crate::panel::PanelLog;
 use crate::world::WorldConfig;
 use crate::Rig;
@@ -294,6 +294,64 @@ pub fn session(
         Err(stop) => return Err(format!("session stopped: {stop:?}")),
     };
     Ok((report_of(&rig, ended), rig.panel.clone()))
+}
+
+/// A check run on the pendant: the export and what was captured.
+pub struct CheckReport {
+    /// The check's export (`export` over the link after the check).
+    pub export: Vec<u8>,
+    /// The check's poses: indices into the plan.
+    pub check: Vec<usize>,
+    /// Captures made (two a check pose).
+    pub captures: usize,
+    /// The plan's poses.
+    pub plan_poses: usize,
+}
+
+/// A check on a fresh pendant in the world `world`: `check` over the link, stage 0,
+/// the check program's poses on the flange (core's `check_poses` on the plan and the
+/// pendant's profile, as `zerocal program --check` chooses them), the closing reversal,
+/// until the check-captured screen; then `export`. The panel's log holds its screens.
+///
+/// # Errors
+/// The check poses' refusal, the script's or the simulation's failure, as text.
+pub fn check(world: WorldConfig) -> Result<(CheckReport, Rc<RefCell<PanelLog>>), String> {
+    exec::reset_clock();
+    let rig = Rig::new(world, world.seed)?;
+    let config = procedure_config();
+    let model = check_model(config.arm, config.convention, config.masses);
+    let (chosen, _) = check_poses(&model, &rig.plan).map_err(|e| e.to_string())?;
+    let chosen: Vec<usize> = chosen.iter().map(|&i| usize::from(i)).collect();
+    *rig.check.borrow_mut() = Some(chosen.clone());
+    let run = rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| async {
+        // The boot screen's time, then the link's `check`.
+        Timer::after(Duration::from_secs(2)).await;
+        let answer = command(&rig, b"check\r\n", SILENCE).await;
+        if !String::from_utf8_lossy(&answer).contains("ok: check started") {
+            return Err(ScriptError::Unexpected(format!(
+                "`check` answered {:?}",
+                String::from_utf8_lossy(&answer)
+            )));
+        }
+        operate_until(&rig, PATIENCE, |s| matches!(s, Screen::CheckDone(_))).await?;
+        let export = command(&rig, b"export\r\n", SILENCE).await;
+        let captures = shared.procedure.lock().await.session.captures().len();
+        Ok((export, captures))
+    });
+    let (export, captures) = match run {
+        Ok(Ok(ended)) => ended,
+        Ok(Err(e)) => return Err(format!("check script: {e:?}")),
+        Err(stop) => return Err(format!("check stopped: {stop:?}")),
+    };
+    Ok((
+        CheckReport {
+            export,
+            check: chosen,
+            captures,
+            plan_poses: rig.plan.len(),
+        },
+        rig.panel.clone(),
+    ))
 }
 
 /// The report of a run that ended with `ended`.

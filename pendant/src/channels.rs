@@ -61,6 +61,8 @@ pub enum LinkRequest {
     SetPlan(PoseList<f32>),
     /// `clear`.
     Clear,
+    /// `check`: start a check.
+    Check,
     /// `profile set` … `end`: the new robot profile.
     SetProfile(PendantProfile<f32>),
     /// `erase all`.

@@ -382,6 +382,14 @@ impl<W: Write> Server<'_, W> {
             }
             Command::Results => self.results().await?,
             Command::Live => return Ok(Next::Live),
+            Command::Check => match self.request(LinkRequest::Check).await {
+                LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::CheckStarted).await?,
+                LinkReply::StoreFailed | LinkReply::Kept(_) => {
+                    self.reply(Reply::ClearWriteFailed).await?
+                }
+                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                LinkReply::SessionInProgress => {}
+            },
             Command::Clear => match self.request(LinkRequest::Clear).await {
                 LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::Cleared).await?,
                 LinkReply::StoreFailed | LinkReply::Kept(_) => {

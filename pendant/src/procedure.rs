@@ -177,6 +177,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                     Either3::Second(press) => on_press(&mut presentation, session.phase(), press),
                     Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
                     Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
+                    Either3::Third(LinkRequest::Check) => Some(Event::Check),
                     Either3::Third(
                         LinkRequest::SetProfile(_)
                         | LinkRequest::Erase

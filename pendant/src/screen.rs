@@ -36,6 +36,17 @@ pub enum Screen {
     Result(ResultScreen),
     /// A bracket's calibration: its steps, its result or its refusal.
     Bracket(BracketScreen),
+    /// A check captured: how many poses (the pendant solves nothing of a check).
+    CheckDone(CheckDoneScreen),
+}
+
+/// The end of a check: it is captured, to be exported and compared on the desktop.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CheckDoneScreen {
+    /// The check's poses captured from both sides.
+    pub poses: usize,
+    /// The last flash write failed.
+    pub store_failed: bool,
 }
 
 /// A bracket calibration's screen (`zerocal_procedure::bracket_cal`).
@@ -326,6 +337,8 @@ pub enum ScreenKind {
     BracketResult,
     /// A bracket calibration refused, and why.
     BracketRefused,
+    /// A check captured.
+    CheckDone,
 }
 
 impl ScreenKind {
@@ -368,6 +381,7 @@ impl ScreenKind {
             ScreenKind::BracketSineSeatedTurned => "bracket-sine-seated-turned",
             ScreenKind::BracketResult => "bracket-result",
             ScreenKind::BracketRefused => "bracket-refused",
+            ScreenKind::CheckDone => "check-done",
         }
     }
 
@@ -465,6 +479,9 @@ impl ScreenKind {
             ScreenKind::BracketResult => {
                 "reads the bracket's turn about x and y, its uncertainty and the temperature; OK keeps it in flash (the last per mount, read out by `zerocal pendant brackets`), BACK retakes the last capture"
             }
+            ScreenKind::CheckDone => {
+                "exports the check (`zerocal pendant export`) and runs `zerocal check` against the reference session: the pendant solves nothing of a check; hold OK for a new session"
+            }
             ScreenKind::BracketRefused => {
                 "reads why (a plate tilted more than 0.1°, a turn no bracket has, a reading out of range), fixes it, then OK starts again or BACK retakes the last capture"
             }
@@ -495,6 +512,7 @@ impl Screen {
             Screen::Starting(Some(_)) => ScreenKind::BootRobot,
             Screen::StorageReset(_) => ScreenKind::StorageReset,
             Screen::Restarted(_) => ScreenKind::Restarted,
+            Screen::CheckDone(_) => ScreenKind::CheckDone,
             Screen::Result(result) => match (&result.fit, result.page) {
                 (Err(_), _) => ScreenKind::NoResult,
                 (Ok(_), 0) => ScreenKind::ResultOffsets,
@@ -560,6 +578,13 @@ impl Screen {
         display: &ControllerDisplay<f32>,
         extras: PendantState,
     ) -> Screen {
+        if view.phase == Phase::Done && view.check {
+            // Both captures of a pose: the poses taken whole (a skipped pose has none).
+            return Screen::CheckDone(CheckDoneScreen {
+                poses: view.captured / zerocal_procedure::CAPTURES_PER_POSE,
+                store_failed: extras.store_failed,
+            });
+        }
         if view.phase == Phase::Done {
             let fit = match view.outcome {
                 Some(outcome) => summarize(outcome, display),
@@ -682,6 +707,7 @@ mod tests {
             armed: false,
             approach: Some(Approach::FromAbove),
             pose: Some((2, 24, joints)),
+            check: false,
             captured: 5,
             bias: None,
             notice: None,

@@ -31,6 +31,8 @@ pub enum Reply {
     Cleared,
     /// `clear` done in RAM, not in the flash.
     ClearWriteFailed,
+    /// `check` started.
+    CheckStarted,
 }
 
 impl fmt::Display for Reply {
@@ -49,6 +51,7 @@ impl fmt::Display for Reply {
             Reply::EraseFailed => "error: the erase or the default plan's write failed",
             Reply::Cleared => "ok: session cleared (bias and plan kept)",
             Reply::ClearWriteFailed => "error: cleared but the flash write failed",
+            Reply::CheckStarted => "ok: check started at stage 0 (the session in progress cleared)",
         })
     }
 }
@@ -56,7 +59,7 @@ impl fmt::Display for Reply {
 impl Reply {
     /// Whether the desktop must read it as a refusal.
     pub fn is_refusal(self) -> bool {
-        self != Reply::Cleared
+        !matches!(self, Reply::Cleared | Reply::CheckStarted)
     }
 }
 
@@ -80,6 +83,7 @@ mod tests {
             EraseFailed,
             Cleared,
             ClearWriteFailed,
+            CheckStarted,
         ] {
             let text = std::format!("{reply}");
             assert_eq!(text.starts_with(ERROR_PREFIX), reply.is_refusal(), "{text}");

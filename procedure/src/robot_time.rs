@@ -178,6 +178,17 @@ pub struct SessionPath<'a, T> {
     pub park: [T; JOINTS],
 }
 
+/// The poses of a check, in the controller's joint coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CheckPath<'a, T> {
+    /// Where the robot stands while the pendant is clipped to the flange.
+    pub mount: [T; JOINTS],
+    /// The check's poses (the session plan's, a subset), in order.
+    pub poses: &'a [[T; JOINTS]],
+    /// Where the robot parks while the pendant is taken off for the closing reversal.
+    pub park: [T; JOINTS],
+}
+
 impl<T: Real> TimeModel<T> {
     /// Checks the settings.
     ///
@@ -337,33 +348,78 @@ impl<T: Real> TimeModel<T> {
         }
         // The pendant to the flange.
         run(&mut s, &[path.turned, path.mount2]);
-        mount(&mut s);
-        // Stage 2.
-        let mut here = path.mount2;
-        for (i, q) in path.poses.iter().enumerate() {
+        self.on_the_flange(&mut s, path.mount2, path.poses, path.park, &needs_ok);
+        s
+    }
+
+    /// The robot time of a check along `path`: the pendant clipped to the flange at
+    /// `mount` (the move to it starts from a pose unknown here and is not counted), two
+    /// captures of every check pose in order, then the robot parked at `park` for the
+    /// closing reversal on the bench, counted as a session's is. No stage 1. `needs_ok`
+    /// as for [`session_time`](Self::session_time).
+    pub fn check_time(
+        &self,
+        path: &CheckPath<'_, T>,
+        needs_ok: impl Fn(Mounting, &[[T; JOINTS]]) -> bool,
+    ) -> SessionTime<T> {
+        let mut s = SessionTime::default();
+        self.on_the_flange(&mut s, path.mount, path.poses, path.park, &needs_ok);
+        s
+    }
+
+    /// The part a session and a check share, added to `s`: the pendant clipped to the
+    /// flange at `mount`, two captures of every pose, the park and the closing
+    /// reversal; then the total.
+    fn on_the_flange(
+        &self,
+        s: &mut SessionTime<T>,
+        mount2: [T; JOINTS],
+        poses: &[[T; JOINTS]],
+        park: [T; JOINTS],
+        needs_ok: &impl Fn(Mounting, &[[T; JOINTS]]) -> bool,
+    ) {
+        let run = |s: &mut SessionTime<T>, points: &[[T; JOINTS]]| {
+            s.motion_s += self.path_s(points);
+            s.moves += points.len().saturating_sub(1) as u16;
+        };
+        let capture = |s: &mut SessionTime<T>| {
+            s.dwell_s += self.dwell_s();
+            s.captures += 1;
+        };
+        let ok = |s: &mut SessionTime<T>| {
+            s.operator_s += self.operator_ok_s;
+            s.ok_stops += 1;
+        };
+        let mount = |s: &mut SessionTime<T>| {
+            s.remount_s += self.remount_s;
+            s.mountings += 1;
+        };
+        mount(s);
+        // Stage 2 (or the check's poses).
+        let mut here = mount2;
+        for (i, q) in poses.iter().enumerate() {
             let p = self.first_capture_path(&here, q);
-            run(&mut s, &p);
+            run(s, &p);
             if i > 0 && needs_ok(Mounting::Flange, &p) {
-                ok(&mut s);
+                ok(s);
             }
-            capture(&mut s);
+            capture(s);
             let p = self.second_capture_path(q);
-            run(&mut s, &p);
+            run(s, &p);
             if needs_ok(Mounting::Flange, &p) {
-                ok(&mut s);
+                ok(s);
             }
-            capture(&mut s);
+            capture(s);
             here = *q;
         }
         // The closing reversal: park, the pendant to the bench, two captures (an OK
         // arms the one after the half turn).
-        run(&mut s, &[here, path.park]);
-        mount(&mut s);
-        capture(&mut s);
-        ok(&mut s);
-        capture(&mut s);
+        run(s, &[here, park]);
+        mount(s);
+        capture(s);
+        ok(s);
+        capture(s);
         s.total_s = s.motion_s + s.dwell_s + s.remount_s + s.operator_s;
-        s
     }
 }
 
@@ -633,6 +689,42 @@ mod tests {
         bad = m;
         bad.window_s = 0.0;
         assert_eq!(bad.validate(), Err(TimeSetting::Duration));
+    }
+
+    /// A check is the session without stage 1: its flange part alone, the same moves,
+    /// captures and OKs from the flange's mounting on.
+    #[test]
+    fn check_time_is_the_sessions_flange_part() {
+        let m = model();
+        let mount2 = [0.0, 0.0, 30.0, 0.0, 45.0, 0.0];
+        let poses = [
+            [0.0, 0.0, 30.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, 60.0, 0.0, 0.0, 0.0],
+        ];
+        let check = m.check_time(
+            &CheckPath {
+                mount: mount2,
+                poses: &poses,
+                park: mount2,
+            },
+            |_, _| true,
+        );
+        let j = |k, d| m.joint_move_s(k, d);
+        let (up, over) = (0.2, 2.0 * j(0, 2.0));
+        let expect_motion = j(4, 46.0) + up + over + j(2, 29.0) + up + over + j(4, 45.0);
+        assert!(
+            isclose(check.motion_s, expect_motion, 0.0, 1e-9),
+            "{check:?}"
+        );
+        // Two captures a pose and the closing reversal's two; the flange and the bench
+        // mountings; pose 1's second, pose 2's both and the reversal's OK.
+        assert_eq!((check.captures, check.mountings, check.ok_stops), (6, 2, 4));
+        assert!(isclose(
+            check.total_s,
+            check.motion_s + 6.0 * 3.1 + 2.0 * 60.0 + 4.0 * 10.0,
+            0.0,
+            1e-9
+        ));
     }
 
     /// Costs between points on a line, visited from 0: the shortest path is sorted.

@@ -69,6 +69,15 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
     scenarios.extend(zerocal_pendant_desktop::bracket::scenarios().map_err(anyhow::Error::msg)?);
     let (link, findings) = link_faults().map_err(anyhow::Error::msg)?;
     let _ = link;
+    // A check after the session, on a fresh pendant: its screens join the gallery.
+    let (check, check_panel) = session::check(world).map_err(anyhow::Error::msg)?;
+    scenarios.push(zerocal_pendant_desktop::faults::ScenarioReport {
+        name: "check",
+        panel: check_panel,
+        link_text: String::new(),
+        progress: check.captures,
+        display_faults: 0,
+    });
     let gallery = gallery(&panel.borrow(), &scenarios);
 
     let out = &options.out;
@@ -76,6 +85,8 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
     fs::create_dir_all(&screens_dir)
         .with_context(|| format!("creating {}", screens_dir.display()))?;
     fs::write(out.join("export"), &report.export)?;
+    // The check's export beside the session's, for `zerocal check`.
+    fs::write(out.join("check-export"), &check.export)?;
     // The numbers the pendant showed and said, for `cargo xtask pendant-agree` beside
     // `zerocal session` on the export.
     fs::write(out.join("status"), &report.status)?;
@@ -158,8 +169,41 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
         started.elapsed().as_secs_f64()
     );
 
+    let check_text = String::from_utf8_lossy(&check.export);
+    println!(
+        "check: poses {:?} of the plan's {} (1-based: {}), {} captures, export {} lines{}",
+        check.check,
+        check.plan_poses,
+        check
+            .check
+            .iter()
+            .map(|i| (i + 1).to_string())
+            .collect::<Vec<_>>()
+            .join(","),
+        check.captures,
+        check_text.lines().count(),
+        if check_text.contains("# mode check") {
+            ", mode check"
+        } else {
+            ""
+        }
+    );
     let mut problems = Vec::new();
     check_session(&report, &mut problems);
+    if !check_text.contains("# mode check")
+        || check.captures != zerocal_core::capture::CAPTURES_PER_POSE * check.check.len()
+    {
+        problems.push(format!(
+            "the check captured {} of {} and its export {} a `# mode check` line",
+            check.captures,
+            zerocal_core::capture::CAPTURES_PER_POSE * check.check.len(),
+            if check_text.contains("# mode check") {
+                "has"
+            } else {
+                "lacks"
+            }
+        ));
+    }
     if gallery.len() < 12 {
         problems.push(format!(
             "only {} distinct screens (at least 12)",

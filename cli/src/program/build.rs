@@ -7,11 +7,13 @@
 
 use super::checks::{check_capture_ranges, check_every_point, check_format};
 use super::steps::{Capture, Role, Session, Side, Step};
-use super::text::header_lines;
+use super::text::{check_header_lines, header_lines};
 use super::Format;
 use crate::error::CliError;
 use crate::timing::{self, Pendant, SessionPoses, Timing, TimingArgs};
+use zerocal_core::model::Convention;
 use zerocal_core::model::JOINTS;
+use zerocal_core::plan::{check_model, check_poses};
 use zerocal_procedure::robot_time::{Mounting, TimeModel};
 use zerocal_profile::Profile;
 
@@ -48,11 +50,90 @@ pub fn build(
     w.stage1(&poses, &j1)?;
     w.remount_on_flange(&poses, &j1)?;
     let last = w.stage2(&poses)?;
-    w.closing_reversal(&poses, &last)?;
+    w.closing_reversal(&poses, &last, false)?;
     let steps = w.steps;
     check_every_point(&profile, &steps, &t.model, &j1)?;
 
     let header = header_lines(&profile, format, &t, &time, poses.poses.len(), &j1);
+    Ok(Session {
+        name,
+        profile,
+        header,
+        steps,
+        timing: t,
+        time,
+        poses,
+    })
+}
+
+/// The indices into `plan_rad` (model radians, the session's plan in its order) of the
+/// check's poses: core's [`check_poses`] on the profile's arm and masses with the
+/// pendant's sensor (the `axis` convention), the choice the pendant makes on the same
+/// plan.
+///
+/// # Errors
+/// A plan core cannot choose a well-determined check from (naming why).
+pub fn check_indices(
+    profile: &Profile,
+    plan_rad: &[[f64; JOINTS]],
+) -> Result<Vec<usize>, CliError> {
+    let model = check_model(profile.arm, Convention::Axis, profile.mass_model());
+    let (chosen, _) = check_poses(&model, plan_rad)
+        .map_err(|e| CliError::Refused(format!("no check: {e}; nothing was written")))?;
+    Ok(chosen.iter().map(|&i| usize::from(i)).collect())
+}
+
+/// Builds the check a program drives, from the session's plan `plan_rad`: the stop to
+/// clip the pendant to the flange, the check's poses ([`check_indices`], the session's
+/// commanded angles) each from below then from above, the park for the closing
+/// reversal. No stage 1. Checked as [`build`](fn@build) checks a session.
+///
+/// # Errors
+/// As [`build`](fn@build); a plan with no well-determined check.
+pub fn build_check(
+    profile: Profile,
+    plan_rad: &[[f64; JOINTS]],
+    format: Format,
+    name: String,
+    timing_args: &TimingArgs,
+) -> Result<Session, CliError> {
+    check_format(&profile, format)?;
+    let plan_index = check_indices(&profile, plan_rad)?;
+    let chosen: Vec<[f64; JOINTS]> = plan_index
+        .iter()
+        .filter_map(|&i| plan_rad.get(i).copied())
+        .collect();
+    let poses = SessionPoses::new(&profile, &chosen).with_mounts(&profile)?;
+    timing::check_room(&profile, &poses)?;
+    let t = Timing::new(&profile, timing_args)?;
+    let pendant = Pendant::new(&profile);
+    check_capture_ranges(&pendant, &poses)?;
+    let time = timing::check_time(&pendant, &t.model, &poses);
+    let j1 = timing::joint_label(&profile, 0);
+
+    let mut w = StepWriter {
+        pendant: &pendant,
+        time: &t.model,
+        steps: Vec::new(),
+    };
+    w.steps.push(Step::Comment(
+        "zerocal check: the pendant goes on the flange here, tilted past its range so that it cannot capture yet".into(),
+    ));
+    w.steps.push(Step::Move {
+        target_deg: poses.mount2,
+        role: Role::Mount(Mounting::Flange),
+        time_s: None,
+    });
+    w.steps.push(Step::Stop(vec![
+        "zerocal: clip the pendant to the flange".into(),
+        "(its screen at POSE 1), then continue.".into(),
+    ]));
+    let last = w.flange_poses(&poses, &plan_index, plan_rad.len(), "check")?;
+    w.closing_reversal(&poses, &last, true)?;
+    let steps = w.steps;
+    check_every_point(&profile, &steps, &t.model, &j1)?;
+
+    let header = check_header_lines(&profile, format, &t, &time, &plan_index, plan_rad.len());
     Ok(Session {
         name,
         profile,
@@ -219,16 +300,31 @@ impl StepWriter<'_> {
     /// with a stop for an OK where a move is too small to arm the next capture. Gives
     /// where the robot stands after it.
     fn stage2(&mut self, poses: &SessionPoses) -> Result<[f64; JOINTS], CliError> {
-        let flange = Mounting::Flange;
         let n = poses.poses.len();
+        let every: Vec<usize> = (0..n).collect();
+        self.flange_poses(poses, &every, n, "stage 2")
+    }
+
+    /// The flange's poses (`poses.poses`, the plan's poses `plan_index` of a plan of
+    /// `plan_len`) from both sides, in order, with a stop for an OK where a move is
+    /// too small to arm the next capture; `what` names the part in the comments.
+    /// Gives where the robot stands after them.
+    fn flange_poses(
+        &mut self,
+        poses: &SessionPoses,
+        plan_index: &[usize],
+        plan_len: usize,
+        what: &str,
+    ) -> Result<[f64; JOINTS], CliError> {
+        let flange = Mounting::Flange;
         let mut last = poses.mount2;
-        for (i, q) in poses.poses.iter().enumerate() {
+        for (k, (q, &i)) in poses.poses.iter().zip(plan_index).enumerate() {
             self.steps.push(Step::Comment(format!(
-                "zerocal stage 2: pose {} of {n}, captured from below, then from above",
+                "zerocal {what}: pose {} of {plan_len}, captured from below, then from above",
                 i + 1
             )));
             let armed = self.capture_from_below(Capture::Pose(i), &last, q, flange)?;
-            if i > 0 && !armed {
+            if k > 0 && !armed {
                 self.steps.push(ok_stop("this move"));
             }
             self.dwell();
@@ -238,16 +334,22 @@ impl StepWriter<'_> {
         Ok(last)
     }
 
-    /// The park (from `last`, where stage 2 ended) and the stop for the closing
-    /// reversal on the bench.
+    /// The park (from `last`, where stage 2 or the check's poses ended) and the stop
+    /// for the closing reversal on the bench.
     fn closing_reversal(
         &mut self,
         poses: &SessionPoses,
         last: &[f64; JOINTS],
+        check: bool,
     ) -> Result<(), CliError> {
-        self.steps.push(Step::Comment(
-            "zerocal: stage 2 done; the robot parks where the pendant went on the flange (tilted past its range) for the closing reversal".into(),
-        ));
+        let (done, end) = if check {
+            ("the check's poses", "check done; export it from the pendant (zerocal pendant export), then zerocal check")
+        } else {
+            ("stage 2", "session done; the pendant shows the result")
+        };
+        self.steps.push(Step::Comment(format!(
+            "zerocal: {done} done; the robot parks where the pendant went on the flange (tilted past its range) for the closing reversal"
+        )));
         self.drive(
             &[*last, poses.park],
             &[Role::Park],
@@ -260,9 +362,7 @@ impl StepWriter<'_> {
             "capture, turn it 180 deg on the same spot,".into(),
             "press OK, let it capture. Then continue.".into(),
         ]));
-        self.steps.push(Step::Comment(
-            "zerocal: session done; the pendant shows the result".into(),
-        ));
+        self.steps.push(Step::Comment(format!("zerocal: {end}")));
         Ok(())
     }
 }

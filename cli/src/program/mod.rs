@@ -8,6 +8,11 @@
 //! joint moving in its positive direction, its second with every joint moving
 //! negative: the session averages the two, the middle of each gear's backlash.
 //!
+//! `--check` writes the check instead (after the offsets were entered): a stop to clip
+//! the pendant to the flange, the check's poses of the plan (core's `check_poses`, the
+//! pendant's choice on the same plan) each captured twice at the session's commanded
+//! angles, the park for the closing reversal; no stage 1.
+//!
 //! The session is built once ([`build`](fn@build)), as a list of [`Step`]s in the
 //! controller's joint degrees ([`Session`], [`steps`]), after the safety checks
 //! ([`checks`]), and written by one module per family (`krl`, `rapid`, `tp`, `inform`,
@@ -42,7 +47,7 @@ pub mod tp;
 pub mod urscript;
 pub mod val3;
 
-pub use build::build;
+pub use build::{build, build_check, check_indices};
 pub use files::{destinations, output_folder, render, Files};
 pub use format::Format;
 pub use plan_file::{default_plan, parse_plan, read_plan};
@@ -74,6 +79,12 @@ pub struct ProgramArgs {
     /// Where to write it: a file (a folder for val3). Its name gives the program's.
     #[arg(long, value_name = "PATH")]
     pub out: PathBuf,
+    /// Write the check instead of the session: after the offsets were entered, the
+    /// pendant on the flange only, a handful of the plan's poses (the same commanded
+    /// angles as the session's, both approaches), then the closing reversal; no stage
+    /// 1. The plan must be the reference session's.
+    #[arg(long)]
+    pub check: bool,
     /// The session's timing.
     #[command(flatten)]
     pub timing: TimingArgs,
@@ -94,18 +105,32 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
         None => default_plan(&args.robot, &args.timing)?,
     };
     let name = program_name(&args.out, args.format.max_name());
-    let session = build(profile, &poses_rad, args.format, name, &args.timing)?;
-    let files = render(&session, args.format)?;
-    let mut written = Vec::new();
-    for (path, text) in destinations(&args.out, args.format, &files)? {
-        std::fs::write(&path, text)
-            .map_err(|e| CliError::Input(format!("cannot write {}: {e}", path.display())))?;
-        written.push(path.display().to_string());
+    if args.check {
+        let check = build_check(profile, &poses_rad, args.format, name, &args.timing)?;
+        let written = write_files(&check, args)?;
+        let t = &check.time;
+        let run_s = t.total_s - t.remount_s;
+        return Ok(format!(
+            "wrote {written}: {} check program {} for {} ({} of the plan's {} poses, each captured twice; {} moves) at {} % speed.\nPredicted robot time {:.1} min: the program's run {:.1} min (moves, dwells, OKs; a check keeps it within {:.0} min) and {} mountings of the pendant {:.1} min (stated default each), the closing reversal included.\nRun it after stage 0 of the pendant's check mode. Check the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
+            args.format,
+            check.name,
+            check.profile.name,
+            check.poses.poses.len(),
+            poses_rad.len(),
+            t.moves,
+            check.timing.speed_percent,
+            t.total_s / 60.0,
+            run_s / 60.0,
+            crate::timing::CHECK_RUN_LIMIT_S / 60.0,
+            t.mountings,
+            t.remount_s / 60.0,
+        ));
     }
+    let session = build(profile, &poses_rad, args.format, name, &args.timing)?;
+    let written = write_files(&session, args)?;
     let t = &session.time;
     Ok(format!(
-        "wrote {}: {} program {} for {} ({} stage-2 poses, each captured twice; {} moves), predicted robot time {:.1} min at {} % speed, the closing reversal included.\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
-        written.join(", "),
+        "wrote {written}: {} program {} for {} ({} stage-2 poses, each captured twice; {} moves), predicted robot time {:.1} min at {} % speed, the closing reversal included.\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
         args.format,
         session.name,
         session.profile.name,
@@ -114,4 +139,19 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
         t.total_s / 60.0,
         session.timing.speed_percent
     ))
+}
+
+/// Writes `session`'s files where `args` says; gives their paths, comma-separated.
+///
+/// # Errors
+/// A file that cannot be written.
+fn write_files(session: &Session, args: &ProgramArgs) -> Result<String, CliError> {
+    let files = render(session, args.format)?;
+    let mut written = Vec::new();
+    for (path, text) in destinations(&args.out, args.format, &files)? {
+        std::fs::write(&path, text)
+            .map_err(|e| CliError::Input(format!("cannot write {}: {e}", path.display())))?;
+        written.push(path.display().to_string());
+    }
+    Ok(written.join(", "))
 }

@@ -195,6 +195,40 @@ pub fn header_lines(
     ]
 }
 
+/// The header of a check's program: what it does (the flange, the check's poses of the
+/// plan, the closing reversal; no stage 1), the speed, the dwell, the predicted robot
+/// time and the collision warning. `plan_index` are the check's poses in the session
+/// plan of `plan_len` poses.
+pub fn check_header_lines(
+    profile: &Profile,
+    format: Format,
+    timing: &Timing,
+    time: &SessionTime<f64>,
+    plan_index: &[usize],
+    plan_len: usize,
+) -> Vec<String> {
+    let session = header_lines(profile, format, timing, time, plan_index.len(), "");
+    let shown: Vec<String> = plan_index.iter().map(|i| (i + 1).to_string()).collect();
+    let mut lines = vec![
+        "zerocal robot program: a check of the offsets entered after a calibration session.".to_owned(),
+        format!(
+            "Robot {} (profile {}); {} of the session plan's {plan_len} poses ({}), at the session's commanded angles. Written by zerocal {}.",
+            profile.title,
+            profile.name,
+            plan_index.len(),
+            shown.join(", "),
+            env!("CARGO_PKG_VERSION")
+        ),
+    ];
+    // The capture scheme's line as the session's header words it.
+    lines.extend(session.get(2).cloned());
+    lines.push(
+        "Before it: stage 0 on the bench (the pendant's check mode starts there). Stop: clip the pendant to the flange (the robot stands with the pendant tilted past its range, so it cannot capture early). Then the check's poses in the plan's order, twice each; the pendant must hold the same plan as the session (plan set). No stage 1.".to_owned(),
+    );
+    lines.extend(session.into_iter().skip(4));
+    lines
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -41,7 +41,7 @@ use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{FitConfig, PoseReading};
 use zerocal_core::Tilt;
 use zerocal_procedure::log::{
-    parse_meta, strip_bom, text_of, LogLine, LogReader, MetaItem, MetaKeys,
+    parse_meta, strip_bom, text_of, ExportMode, LogLine, LogReader, MetaItem, MetaKeys,
 };
 use zerocal_procedure::Approach;
 use zerocal_profile::Profile;
@@ -153,6 +153,8 @@ pub struct ExportContents {
     /// `# pendant unit HEX firmware VERSION`: the pendant unit's ID (24 hex digits),
     /// where the export names it.
     pub pendant_unit: Option<String>,
+    /// `# mode`: a session's export or a check's (no line: a session).
+    pub mode: ExportMode,
 }
 
 /// Reads a pendant export, strictly ([`LogReader::for_export`], [`MetaKeys`]): an
@@ -183,6 +185,7 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
         captures: None,
         trailer_checked: false,
         pendant_unit: None,
+        mode: ExportMode::Session,
     };
     for line in text.lines() {
         match reader.feed(line, parse_number).map_err(|e| e.to_string())? {
@@ -220,6 +223,7 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
                     Some(MetaItem::Pendant(unit, _)) => {
                         export.pendant_unit = Some(unit.to_string())
                     }
+                    Some(MetaItem::Mode(m)) => export.mode = m,
                     None => {}
                 }
             }
@@ -510,6 +514,11 @@ pub fn analyse_with(
     let name = |what: &str| format!("{}: {what}", args.export.display());
     let text = text_of(bytes).map_err(|e| CliError::Input(name(&e.to_string())))?;
     let export = read_export(text).map_err(|e| CliError::Input(name(&e)))?;
+    if export.mode == ExportMode::Check {
+        return Err(CliError::Input(name(
+            "a check export (`# mode check`): it holds no stage 1 and solves nothing; use zerocal check",
+        )));
+    }
     let (robot_name, convention) = export.robot.clone().ok_or_else(|| {
         CliError::Input(name(
             "no `# robot … convention …` line: not a pendant export",

@@ -40,7 +40,7 @@ pub mod tour;
 pub use capture_rule::{LegCheck, Pendant, ARM_MARGIN, EARLY_STILL_MARGIN};
 pub use joint_limits::{check_limits, check_room, planner_limits};
 pub use poses::{mount_poses, SessionPoses, MOUNT_MARGIN_DEG, MOUNT_TURN_DEG};
-pub use tour::{session_time, time_order};
+pub use tour::{check_time, session_time, time_order};
 
 use crate::args::{CountIn, RealIn};
 use crate::error::CliError;
@@ -81,6 +81,13 @@ pub const DEFAULT_REMOUNT_S: f64 = 60.0;
 /// An operator's OK on the pendant at a stop of the program, and the restart (s): a
 /// stated default.
 pub const OPERATOR_OK_S: f64 = 10.0;
+
+/// Longest run of a check's program (s): its moves, dwells and operator OKs, the two
+/// mountings of the pendant (the technician's, [`DEFAULT_REMOUNT_S`] each) apart. Three
+/// minutes: a check is meant to take no longer than a break in production (a stated
+/// target, not a source's figure); five check poses keep every built-in profile inside
+/// it at [`DEFAULT_SPEED_PERCENT`].
+pub const CHECK_RUN_LIMIT_S: f64 = 180.0;
 
 /// The capture scheme's approach and overshoot distances (deg): `zerocal_core::capture`
 /// says why each is what it is.

@@ -4,7 +4,7 @@
 use super::capture_rule::Pendant;
 use super::poses::SessionPoses;
 use zerocal_core::model::JOINTS;
-use zerocal_procedure::robot_time::{shortest_tour, Mounting, SessionTime, TimeModel};
+use zerocal_procedure::robot_time::{shortest_tour, CheckPath, Mounting, SessionTime, TimeModel};
 
 /// Penalty (s) in the tour's costs for a move that could be captured early: high
 /// enough that the tour avoids it whenever an order exists that does.
@@ -61,4 +61,19 @@ pub fn session_time(
     poses: &SessionPoses,
 ) -> SessionTime<f64> {
     time.session_time(&poses.path(), |m, p| !pendant.leg(time, m, p).armed)
+}
+
+/// The robot time of a check on `poses` (its `poses` the check's, in order): from the
+/// flange's mounting pose on, no stage 1.
+pub fn check_time(
+    pendant: &Pendant<'_>,
+    time: &TimeModel<f64>,
+    poses: &SessionPoses,
+) -> SessionTime<f64> {
+    let path = CheckPath {
+        mount: poses.mount2,
+        poses: &poses.poses,
+        park: poses.park,
+    };
+    time.check_time(&path, |m, p| !pendant.leg(time, m, p).armed)
 }

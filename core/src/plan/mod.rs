@@ -29,11 +29,18 @@
 //! the plan is a `heapless::Vec` of at most [`MAX_POSES`].
 //!
 //! The stage-1 pose is planned too: [`stage1`] turns the profile's stated pose into the
-//! nearest one with no gravity torque on joints 2 and 3.
+//! nearest one with no gravity torque on joints 2 and 3. A check after the offsets were
+//! entered revisits a handful of the plan's poses: [`check_poses`] picks them.
 
+mod check;
 mod design;
 mod random;
 pub mod stage1;
+
+pub use check::{
+    check_model, check_poses, CheckPlanError, CheckPoses, CHECK_POSES, MAX_CHECK_CONDITION,
+    TIE_RELATIVE,
+};
 
 pub use design::Candidate;
 pub use random::Xorshift64Star;

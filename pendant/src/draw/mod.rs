@@ -114,6 +114,18 @@ pub fn lines(screen: &Screen) -> [Text; 6] {
         Screen::Capture(capture) => capture_lines(capture),
         Screen::Result(result) => result_lines(result),
         Screen::Bracket(bracket) => bracket_lines(bracket),
+        Screen::CheckDone(done) => [
+            fixed("CHECK CAPTURED"),
+            line(format_args!("{} poses, both sides", done.poses)),
+            fixed("not solved here:"),
+            fixed("zerocal pendant"),
+            fixed("export; zerocal check"),
+            if done.store_failed {
+                fixed("! FLASH WRITE FAILED")
+            } else {
+                fixed("hold OK: new session")
+            },
+        ],
     }
 }
 
@@ -572,6 +584,7 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
         Notice::PlanLocked => fixed("! plan locked: clear"),
         Notice::PlanTooLong => line(format_args!("! plan > {MAX_PLAN_POSES} poses")),
         Notice::Captured => fixed("captured"),
+        Notice::NoCheck(_) => fixed("! plan gives no check"),
     }
 }
 

@@ -419,7 +419,7 @@ pub fn bracket_step<T: Real>(
             s.notice = None;
             s.restart_window(window);
         }
-        Event::Next | Event::SetPlan(_) | Event::Clear => {}
+        Event::Next | Event::SetPlan(_) | Event::Clear | Event::Check => {}
     }
     BracketOutput::Stay
 }

@@ -14,6 +14,7 @@ pub const HELP: &[&str] = &[
     "  plan set   upload a pose list: j1..j6 or j3..j6 in degrees, one pose a line, then 'end'",
     "  export     the whole session for 'zerocal session'",
     "  clear      clear the session in progress",
+    "  check      start a check of entered offsets: stage 0, the flange's check poses (zerocal program --check)",
     "  profile    the robot profile in use",
     "  profile set  upload a robot profile (zerocal pendant load-profile), then 'end'",
     "  erase all  erase session, bias, last result, profile, plan and brackets",
@@ -51,6 +52,8 @@ pub enum Command {
     Brackets,
     /// `results`
     Results,
+    /// `check`
+    Check,
 }
 
 /// What is wrong with a line.
@@ -138,7 +141,7 @@ impl fmt::Display for LinkError {
 
 impl Command {
     /// Every command, in the order `help` lists them.
-    pub const ALL: [Command; 12] = [
+    pub const ALL: [Command; 13] = [
         Command::Help,
         Command::Status,
         Command::Live,
@@ -151,6 +154,7 @@ impl Command {
         Command::Erase,
         Command::Brackets,
         Command::Results,
+        Command::Check,
     ];
 
     /// The words a person (or `zerocal pendant`) types for it: defined here once, for
@@ -169,6 +173,7 @@ impl Command {
             Command::Erase => "erase all",
             Command::Brackets => "brackets",
             Command::Results => "results",
+            Command::Check => "check",
         }
     }
 }
@@ -264,6 +269,7 @@ mod tests {
             parse_command("results all"),
             Err(LinkError::UnexpectedArgument)
         );
+        assert_eq!(parse_command("check"), Ok(Command::Check));
     }
 
     #[test]

@@ -44,6 +44,8 @@ pub enum MetaItem<T> {
     /// `# pendant unit HEX firmware VERSION`: the pendant unit that wrote the export
     /// (its 96-bit ID, 24 hex digits) and its firmware's version.
     Pendant(UnitId, ShortText),
+    /// `# mode session|check`: what the export holds (absent: a session).
+    Mode(ExportMode),
 }
 
 /// Writes `# pendant unit HEX firmware VERSION`.
@@ -52,6 +54,39 @@ pub enum MetaItem<T> {
 /// A full line buffer.
 pub fn write_pendant(w: &mut Line, p: &PendantUnit) -> fmt::Result {
     write!(w, "# pendant unit {} firmware {}", p.id, p.firmware)
+}
+
+/// What a pendant export holds: a calibration session, or a check of the offsets
+/// entered after one (stage 0, the flange's check poses and the closing reversal; no
+/// stage 1, no result: `zerocal check` compares it with the reference session).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum ExportMode {
+    /// A session (also an export without a `# mode` line).
+    #[default]
+    Session,
+    /// A check.
+    Check,
+}
+
+impl ExportMode {
+    /// The `# mode` line's word.
+    pub fn name(self) -> &'static str {
+        match self {
+            ExportMode::Session => "session",
+            ExportMode::Check => "check",
+        }
+    }
+
+    /// Inverse of [`name`](Self::name).
+    pub fn parse(word: &str) -> Option<Self> {
+        match word {
+            "session" => Some(ExportMode::Session),
+            "check" => Some(ExportMode::Check),
+            _ => None,
+        }
+    }
 }
 
 /// The metadata key of `mount`'s bracket.
@@ -423,6 +458,14 @@ pub fn parse_meta<T: Real>(
             }
             MetaItem::Pendant(unit, ShortText::new(firmware))
         }
+        "mode" => {
+            let bad = LogError::BadMetadata { line, key: "mode" };
+            let mode = rest.next().and_then(ExportMode::parse).ok_or(bad)?;
+            if rest.next().is_some() {
+                return Err(bad);
+            }
+            MetaItem::Mode(mode)
+        }
         // Informational lines the pendant writes (each capture of stage 1, its result,
         // stage 2's): the solver recomputes them from the readings.
         "stage1_captures_deg" | "stage1" | "stage2" => return Ok(None),
@@ -456,7 +499,7 @@ pub fn metadata_key(comment: &str) -> Option<&str> {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MetaKeys {
     /// The line each item was first given on (0: not yet).
-    first_line: [usize; 9],
+    first_line: [usize; 10],
 }
 
 impl MetaKeys {
@@ -476,6 +519,7 @@ impl MetaKeys {
             MetaItem::Bracket(BracketMount::UpperArm, _) => (6, "bracket_upper_arm"),
             MetaItem::Bracket(BracketMount::Flange, _) => (7, "bracket_flange"),
             MetaItem::Pendant(..) => (8, "pendant"),
+            MetaItem::Mode(_) => (9, "mode"),
         };
         match self.first_line[slot] {
             0 => {
@@ -541,6 +585,41 @@ mod tests {
                 ..
             })
         ));
+    }
+
+    #[test]
+    fn the_mode_line_reads_session_or_check_and_nothing_else() {
+        let parse = zerocal_core::decimal::parse;
+        for mode in [ExportMode::Session, ExportMode::Check] {
+            let line = std::format!("mode {}", mode.name());
+            assert_eq!(
+                parse_meta::<f64>(&line, 3, parse),
+                Ok(Some(MetaItem::Mode(mode)))
+            );
+        }
+        for bad in ["mode", "mode checks", "mode check extra"] {
+            assert_eq!(
+                parse_meta::<f64>(bad, 3, parse),
+                Err(LogError::BadMetadata {
+                    line: 3,
+                    key: "mode"
+                }),
+                "{bad}"
+            );
+        }
+        // Given twice, it is refused: which one holds would be a guess.
+        let mut keys = MetaKeys::default();
+        let item = MetaItem::<f64>::Mode(ExportMode::Check);
+        assert!(keys.note(&item, 3).is_ok());
+        assert!(matches!(
+            keys.note(&item, 9),
+            Err(LogError::DuplicateKey {
+                line: 9,
+                key: "mode",
+                first_line: 3
+            })
+        ));
+        assert_eq!(ExportMode::default(), ExportMode::Session);
     }
 
     #[test]

@@ -17,7 +17,9 @@
 //! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c`, `stage1_temp_c t`,
 //! stage 1's results, `closing_reversal_deg first x,y second x,y temp_c t` (the reversal
 //! after stage 2 that measures the bias' drift), `pendant unit HEX firmware VERSION` (the
-//! pendant unit that wrote it), and after the rows the result line. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
+//! pendant unit that wrote it), and after the rows the result line.
+//! A check's export (`mode check`) has a `mode check` line instead of stage 1's lines
+//! and no result line, its rows' `pose` the plan's pose index. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
 //! [`MetaItem`] the metadata the session solver needs.
 //!
 //! The export is read strictly, because a line it ignores can make a session silently
@@ -50,7 +52,8 @@ pub use kept::read_kept_results;
 pub use kept::{write_kept_result, KeptResultReader, KEPT_RESULT_KEY, KEPT_RESULT_LINES};
 pub use meta::{
     bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bracket,
-    write_bracket_fields, write_fit_extras, write_pendant, write_reversal, MetaItem, MetaKeys,
+    write_bracket_fields, write_fit_extras, write_pendant, write_reversal, ExportMode, MetaItem,
+    MetaKeys,
 };
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;
@@ -132,7 +135,7 @@ pub fn quantise_temperature<T: Real>(celsius: T) -> T {
 pub const EXPORT_DECIMALS: u8 = 12;
 
 /// Every metadata key an export may hold (the first word of a `# key value…` line).
-pub const METADATA_KEYS: [&str; 13] = [
+pub const METADATA_KEYS: [&str; 14] = [
     "robot",
     "stage0_bias_deg",
     "stage0_reversal_deg",
@@ -146,6 +149,7 @@ pub const METADATA_KEYS: [&str; 13] = [
     "bracket_upper_arm",
     "bracket_flange",
     "pendant",
+    "mode",
 ];
 
 /// [`METADATA_KEYS`], comma-separated, for messages.

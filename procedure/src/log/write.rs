@@ -1,7 +1,7 @@
 //! The writers: the pendant's export a line at a time ([`Export`]), a stage-2 log's
 //! row and an export's row, and the degree format they share.
 
-use super::meta::{write_bracket, write_fit_extras, write_pendant, write_reversal};
+use super::meta::{write_bracket, write_fit_extras, write_pendant, write_reversal, ExportMode};
 use super::{approach_name, deg, pair, Line, EXPORT_HEADER};
 use crate::capture::Capture;
 use crate::export_trailer::TrailerSum;
@@ -24,6 +24,8 @@ use zerocal_core::stage2::{Extras, PoseReading};
 /// builds it; the writer reads nothing else.
 #[derive(Clone, Copy)]
 pub struct ExportSession<'a, T: Real, R> {
+    /// A session's export, or a check's (a `mode check` line, none of stage 1's).
+    pub mode: ExportMode,
     /// The robot profile's name.
     pub robot: &'a str,
     /// The sensor's reading convention.
@@ -94,6 +96,9 @@ pub fn export<T: Real, R: CaptureRows<T>>(session: ExportSession<'_, T, R>) -> E
 
 const EXPORT_HEAD: usize = 14;
 
+/// The head's lines a check leaves out: stage 1's temperature, captures and result.
+const CHECK_LEFT_OUT: core::ops::Range<usize> = 4..8;
+
 /// Most lines an export has: the head, a row per capture, the result line and the
 /// trailer.
 pub const EXPORT_MAX_LINES: usize = EXPORT_HEAD + zerocal_core::plan::MAX_POSES + 2;
@@ -102,6 +107,9 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
         let s = &self.session;
         match i {
+            0 if s.mode == ExportMode::Check => {
+                w.write_str("# zerocal pendant export of a check: read it with 'zerocal check'")
+            }
             0 => w.write_str("# zerocal pendant export: read it with 'zerocal session'"),
             1 => write!(w, "# robot {} convention {}", s.robot, s.convention.name()),
             // This session's reversal when it ran (the bias and its temperature follow
@@ -121,6 +129,7 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
                 }
                 BiasSource::Unknown => w.write_str("# stage0_bias_deg none"),
             },
+            3 if s.mode == ExportMode::Check => write!(w, "# mode {}", s.mode.name()),
             3 => match s.stage1 {
                 Some(t) => {
                     w.write_str("# stage1_readings_deg before ")?;
@@ -268,8 +277,13 @@ impl<T: Real, R: CaptureRows<T>> Iterator for Export<'_, T, R> {
 
 impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     fn session_line(&mut self) -> Option<Result<Line, fmt::Error>> {
-        let i = self.line;
-        self.line += 1;
+        let mut i = self.line;
+        // A check has no stage 1: its `mode` line stands where stage 1's first is, and
+        // the others are left out.
+        if self.session.mode == ExportMode::Check && CHECK_LEFT_OUT.contains(&i) {
+            i = CHECK_LEFT_OUT.end;
+        }
+        self.line = i + 1;
         let mut w = Line::new();
         let captures = &self.session.captures;
         let r = if i < EXPORT_HEAD {

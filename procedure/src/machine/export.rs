@@ -2,7 +2,7 @@
 //! built here, so the writer reads no procedure internals.
 
 use super::{ProcedureConfig, ProcedureState, ReadingSlot};
-use crate::log::{export, Export, ExportSession};
+use crate::log::{export, Export, ExportMode, ExportSession};
 use zerocal_core::capture::CaptureIndex;
 use zerocal_core::real::Real;
 use zerocal_core::stage2::PoseReading;
@@ -15,6 +15,11 @@ impl<T: Real> ProcedureState<T> {
     ) -> ExportSession<'a, T, &'a [(CaptureIndex, PoseReading<T>)]> {
         let slot = |s: ReadingSlot| self.reading(s);
         ExportSession {
+            mode: if self.is_check() {
+                ExportMode::Check
+            } else {
+                ExportMode::Session
+            },
             robot: config.robot.as_str(),
             convention: config.convention,
             bias: self.bias_source(),

@@ -19,6 +19,13 @@
 //!    again, so the bias' drift with temperature over the session is measured (NEXT
 //!    skips it; without stage 0 there is nothing to close).
 //!
+//! A **check** (after the offsets were typed into the controller; [`Event::Check`]) is
+//! stage 0, then the flange with a handful of the plan's poses (core's `check_poses`:
+//! the same indices the desktop picks, at the plan's commanded angles, each from below
+//! then from above), then the closing reversal if stage 0 ran, then `Done`: no stage 1,
+//! nothing solved (the desktop's `zerocal check` compares the export with the
+//! reference session). It is stored like a session, so a power cut resumes it.
+//!
 //! Capture rule: a capture is *armed* by OK, or by the reading having moved by more than
 //! `rearm_motion_rad` since the last capture (the robot went to the next pose or to
 //! the other side of the backlash, or the pendant was carried to the bench; not after
@@ -28,6 +35,8 @@
 //! captured, and one that has not moved yet is not captured twice. BACK undoes the last
 //! capture, whatever the stage.
 
+#[cfg(test)]
+mod check_tests;
 mod export;
 pub mod kept;
 pub mod profile;
@@ -267,6 +276,11 @@ impl ReadingSlot {
         self as usize
     }
 
+    /// Whether the slot is one of stage 1's (a check has none).
+    pub fn is_stage1(self) -> bool {
+        (ReadingSlot::Stage1BeforeBelow..=ReadingSlot::Stage1AfterAbove).contains(&self)
+    }
+
     /// Inverse of [`index`](Self::index).
     pub fn from_index(i: usize) -> Option<Self> {
         Self::ALL.get(i).copied()
@@ -325,6 +339,9 @@ pub enum Event<T> {
     SetPlan(PoseList<T>),
     /// Clear the session in progress (the stored bias and last result stay).
     Clear,
+    /// Start a check (the pendant's menu or the link's `check`): the procedure in
+    /// progress is cleared, as by [`Clear`](Self::Clear).
+    Check,
 }
 
 /// Something the operator must see.
@@ -353,6 +370,8 @@ pub enum Notice {
     PlanTooLong,
     /// Captured (briefly shown).
     Captured,
+    /// The plan gives no check (too short, or its poses cannot separate the offsets).
+    NoCheck(zerocal_core::plan::CheckPlanError),
 }
 
 /// What the firmware must do after a step.
@@ -396,7 +415,7 @@ pub struct LastResult<T> {
     pub residual_rms_rad: T,
 }
 
-pub use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES, MAX_PLAN_POSES};
+pub use zerocal_core::capture::{CaptureIndex, CAPTURES_PER_POSE, MAX_CAPTURES, MAX_PLAN_POSES};
 
 /// Poses in the pendant's default plan: 24, each captured twice, chosen by Monte-Carlo
 /// on a real sensor and robot (docs/error-budget.md; `zerocal plan --poses 24` prints
@@ -479,7 +498,7 @@ pub fn step<T: Real>(
             Phase::Stage0First | Phase::Stage0Second => {
                 s.clear_slots(ReadingSlot::Stage0First..=ReadingSlot::Stage0Second);
                 s.stage0_skipped = true;
-                s.enter(Phase::Stage1Before, 0);
+                after_stage0(s);
                 out.push(s.progress());
             }
             Phase::Stage2 if s.cursor < s.plan_captures() => {
@@ -495,7 +514,7 @@ pub fn step<T: Real>(
                     {
                         s.captures.pop();
                     }
-                    s.cursor = CaptureIndex::first_of(usize::from(at.pose) + 1);
+                    s.cursor = CaptureIndex::first_of(s.cursor / CAPTURES_PER_POSE + 1);
                 }
                 s.armed = false;
                 after_capture_in_stage2(config, s, &mut out);
@@ -530,11 +549,19 @@ pub fn step<T: Real>(
                 }
                 out.push(Record::PlanLen(plan.len() as u8));
                 s.plan = plan;
+                if s.check.is_some() {
+                    // A check's poses are the new plan's.
+                    if let Some(e) = s.choose_check(config) {
+                        s.notice = Some(Notice::NoCheck(e));
+                    }
+                }
                 if s.phase == Phase::Stage2 && s.captures.is_empty() {
                     s.cursor = 0;
                     out.push(s.progress());
                 }
-                s.notice = None;
+                if !matches!(s.notice, Some(Notice::NoCheck(_))) {
+                    s.notice = None;
+                }
             } else {
                 s.notice = Some(Notice::PlanLocked);
             }
@@ -543,8 +570,27 @@ pub fn step<T: Real>(
             s.restart();
             out.push(s.progress());
         }
+        Event::Check => {
+            s.restart();
+            if let Some(e) = s.choose_check(config) {
+                s.notice = Some(Notice::NoCheck(e));
+            }
+            out.push(s.progress());
+        }
     }
     out
+}
+
+/// After stage 0 (taken or skipped): stage 1 in a session; in a check, the flange.
+fn after_stage0<T: Real>(s: &mut ProcedureState<T>) {
+    if s.is_check() {
+        s.enter(Phase::Stage2, 0);
+        if s.plan.is_empty() {
+            s.notice = Some(Notice::NoPlan);
+        }
+    } else {
+        s.enter(Phase::Stage1Before, 0);
+    }
 }
 
 fn on_sample<T: Real>(
@@ -642,7 +688,7 @@ fn capture<T: Real>(
                 index: at,
                 pose,
             });
-            s.enter(Phase::Stage2, at.sequence() + 1);
+            s.enter(Phase::Stage2, s.cursor + 1);
             after_capture_in_stage2(config, s, out);
         }
         phase => {
@@ -693,7 +739,7 @@ fn capture<T: Real>(
             out.push(Record::Reading { slot, capture: c });
             match slot {
                 ReadingSlot::Stage0First => s.enter(Phase::Stage0Second, 0),
-                ReadingSlot::Stage0Second => s.enter(Phase::Stage1Before, 0),
+                ReadingSlot::Stage0Second => after_stage0(s),
                 ReadingSlot::Stage1BeforeBelow => s.enter(Phase::Stage1Before, 1),
                 ReadingSlot::Stage1BeforeAbove => s.enter(Phase::Stage1After, 0),
                 ReadingSlot::Stage1AfterBelow => s.enter(Phase::Stage1After, 1),
@@ -728,8 +774,15 @@ fn after_capture_in_stage2<T: Real>(
     }
 }
 
-/// Solves the session and shows its result.
+/// Solves the session and shows its result; a check is only captured (the desktop
+/// compares it with the reference session).
 fn finish<T: Real>(config: &ProcedureConfig<T>, s: &mut ProcedureState<T>, out: &mut Output<T>) {
+    if s.is_check() {
+        s.outcome = None;
+        s.notice = None;
+        s.enter(Phase::Done, 0);
+        return;
+    }
     let outcome = s.compute(config);
     if let Ok(r) = &outcome.result {
         // The session's numbers: Δθ3..Δθ6 and their 1σ from its full covariance (stage-2
@@ -802,12 +855,24 @@ fn back<T: Real>(s: &mut ProcedureState<T>) {
 fn undo_stage2<T: Real>(s: &mut ProcedureState<T>) -> Option<Tilt<T>> {
     match s.captures.pop() {
         Some((index, pose)) => {
-            s.enter(Phase::Stage2, index.sequence());
+            s.enter(Phase::Stage2, s.cursor_of(index));
             Some(pose.reading)
         }
-        None if s.phase != Phase::Stage2 && !s.plan.is_empty() => {
-            s.enter(Phase::Stage2, CaptureIndex::first_of(s.plan.len() - 1));
+        None if s.phase != Phase::Stage2 && s.flange_poses() > 0 => {
+            s.enter(Phase::Stage2, CaptureIndex::first_of(s.flange_poses() - 1));
             None
+        }
+        // A check's flange comes after stage 0: back to its last capture.
+        None if s.is_check() && s.stage0_skipped => {
+            s.stage0_skipped = false;
+            s.enter(Phase::Stage0First, 0);
+            None
+        }
+        None if s.is_check() => {
+            s.enter(Phase::Stage0Second, 0);
+            s.readings[ReadingSlot::Stage0Second.index()]
+                .take()
+                .map(|c| c.reading)
         }
         None => {
             s.stage1 = None;

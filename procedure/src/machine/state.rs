@@ -9,9 +9,10 @@ use super::{
     ReadingSlot, MAX_CAPTURES, READING_SLOTS,
 };
 use crate::stillness::{Stillness, StillnessFilter};
+use zerocal_core::capture::CAPTURES_PER_POSE;
 use zerocal_core::error::StageError;
 use zerocal_core::model::{Tilt, JOINTS};
-use zerocal_core::plan::{PoseList, MAX_POSES};
+use zerocal_core::plan::{check_model, check_poses, CheckPoses, PoseList, CHECK_POSES, MAX_POSES};
 use zerocal_core::real::Real;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{self, BiasSource, SessionError, SessionReadings, StageTemperatures};
@@ -29,6 +30,10 @@ pub struct ProcedureState<T: Real> {
     pub(super) bias: Option<Tilt<T>>,
     pub(super) stage0_skipped: bool,
     pub(super) closing_skipped: bool,
+    /// A check, not a session: stage 0, the plan's check poses, the closing reversal;
+    /// the check poses as indices into the plan (core's `check_poses`; none: the plan
+    /// gives no check).
+    pub(super) check: Option<CheckList>,
     /// The captures of stages 0 and 1 and of the closing reversal.
     pub(super) readings: [Option<Capture<T>>; READING_SLOTS],
     pub(super) stage1: Option<Stage1Result<T>>,
@@ -51,6 +56,33 @@ pub struct ProcedureState<T: Real> {
     pub(super) notice: Option<Notice>,
 }
 
+/// A check's poses: indices into the plan, ascending, the first `len` used. Seven bytes,
+/// so that a check costs the pendant's RAM almost nothing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct CheckList {
+    index: [u8; CHECK_POSES],
+    len: u8,
+}
+
+impl CheckList {
+    /// From core's choice.
+    pub fn new(poses: &CheckPoses) -> Self {
+        let mut index = [0; CHECK_POSES];
+        for (slot, i) in index.iter_mut().zip(poses.iter()) {
+            *slot = *i;
+        }
+        CheckList {
+            index,
+            len: poses.len().min(CHECK_POSES) as u8,
+        }
+    }
+
+    /// The plan's pose indices.
+    pub fn as_slice(&self) -> &[u8] {
+        &self.index[..usize::from(self.len).min(CHECK_POSES)]
+    }
+}
+
 /// What the display shows, as data.
 #[derive(Clone, Debug, PartialEq)]
 pub struct View<'a, T: Real> {
@@ -66,6 +98,8 @@ pub struct View<'a, T: Real> {
     pub approach: Option<Approach>,
     /// In stage 2: (index, plan length, joint targets in rad) of the pose to take.
     pub pose: Option<(usize, usize, [T; JOINTS])>,
+    /// A check, not a session.
+    pub check: bool,
     /// Stage-2 captures so far.
     pub captured: usize,
     /// The bias in use, if any.
@@ -102,6 +136,7 @@ impl<T: Real> ProcedureState<T> {
             bias,
             stage0_skipped: false,
             closing_skipped: false,
+            check: None,
             readings: [None; READING_SLOTS],
             stage1: None,
             cursor: 0,
@@ -130,6 +165,7 @@ impl<T: Real> ProcedureState<T> {
         let mut slots: [Option<(CaptureIndex, PoseReading<T>)>; MAX_CAPTURES] =
             [None; MAX_CAPTURES];
         let mut count = 0;
+        let mut checking = false;
         for r in records {
             match r {
                 Record::Bias(b) => s.bias = Some(b),
@@ -139,12 +175,14 @@ impl<T: Real> ProcedureState<T> {
                     captures,
                     stage0_skipped,
                     closing_skipped,
+                    check,
                 } => {
                     s.phase = phase;
                     s.cursor = usize::from(cursor);
                     count = usize::from(captures);
                     s.stage0_skipped = stage0_skipped;
                     s.closing_skipped = closing_skipped;
+                    checking = check;
                 }
                 Record::Reading { slot, capture } => s.readings[slot.index()] = Some(capture),
                 Record::Capture { slot, index, pose } => {
@@ -205,6 +243,10 @@ impl<T: Real> ProcedureState<T> {
             last = Some(*index);
             let _ = s.captures.push((*index, *pose));
         }
+        if checking {
+            // The check's poses follow from the plan, as when the check started.
+            s.choose_check(config);
+        }
         s.settle_restored(config);
         // After a reset the pendant may have been moved: re-arm only on motion (from
         // the first reading after power-up) or OK.
@@ -227,8 +269,10 @@ impl<T: Real> ProcedureState<T> {
             Phase::Stage2 | Phase::Done => ReadingSlot::ClosingFirst.index(),
             phase => ReadingSlot::at(phase, self.cursor).map_or(0, ReadingSlot::index),
         };
+        let checking = self.check.is_some();
         let needed = |slot: ReadingSlot| {
             slot.index() < taken
+                && !(checking && slot.is_stage1())
                 && !(self.stage0_skipped && slot <= ReadingSlot::Stage0Second)
                 && !(self.closing_skipped && slot >= ReadingSlot::ClosingFirst)
         };
@@ -241,7 +285,7 @@ impl<T: Real> ProcedureState<T> {
             .into_iter()
             .find(|slot| needed(*slot) && self.readings[slot.index()].is_none());
         if let Some(slot) = missing {
-            let (phase, cursor) = slot.phase_cursor();
+            let (phase, cursor) = self.phase_cursor_of(slot);
             self.phase = phase;
             self.cursor = cursor;
             self.clear_slots(slot..=ReadingSlot::ClosingSecond);
@@ -257,7 +301,7 @@ impl<T: Real> ProcedureState<T> {
         if self.phase == Phase::Stage2 && !self.plan.is_empty() {
             self.cursor = self.cursor.min(self.plan_captures());
         }
-        if self.readings[ReadingSlot::Stage1AfterAbove.index()].is_some() {
+        if !checking && self.readings[ReadingSlot::Stage1AfterAbove.index()].is_some() {
             self.stage1 = self.solve_stage1(config).and_then(Result::ok);
             if self.stage1.is_none() {
                 self.phase = Phase::Stage1Before;
@@ -266,8 +310,86 @@ impl<T: Real> ProcedureState<T> {
                 self.captures.clear();
             }
         }
-        if self.phase == Phase::Done {
+        if self.phase == Phase::Done && !checking {
             self.outcome = Some(self.compute(config));
+        }
+    }
+
+    /// Where the procedure stands when `slot` is the next to take: a check goes from
+    /// stage 0 to the flange, with no stage 1.
+    pub(super) fn phase_cursor_of(&self, slot: ReadingSlot) -> (Phase, usize) {
+        match slot.phase_cursor() {
+            (Phase::Stage1Before | Phase::Stage1After, _) if self.check.is_some() => {
+                (Phase::Stage2, 0)
+            }
+            other => other,
+        }
+    }
+
+    /// Whether this is a check, not a session.
+    pub fn is_check(&self) -> bool {
+        self.check.is_some()
+    }
+
+    /// A check's poses: indices into the plan (empty outside a check, or when the plan
+    /// gives no check).
+    pub fn check_poses(&self) -> &[u8] {
+        self.check.as_ref().map_or(&[], CheckList::as_slice)
+    }
+
+    /// Makes this a check and chooses its poses from the plan (core's `check_poses` on
+    /// the profile's arm, convention and masses: the desktop's choice on the same
+    /// plan). Gives why the plan has no check, if it has none.
+    pub(super) fn choose_check(
+        &mut self,
+        config: &ProcedureConfig<T>,
+    ) -> Option<zerocal_core::plan::CheckPlanError> {
+        let model = check_model(config.arm, config.convention, config.masses);
+        match check_poses(&model, &self.plan) {
+            Ok((poses, _)) => {
+                self.check = Some(CheckList::new(&poses));
+                None
+            }
+            Err(e) => {
+                self.check = Some(CheckList::default());
+                Some(e)
+            }
+        }
+    }
+
+    /// The flange's poses this procedure visits: the plan's, or a check's.
+    pub(super) fn flange_poses(&self) -> usize {
+        match &self.check {
+            Some(c) => c.as_slice().len(),
+            None => self.plan.len(),
+        }
+    }
+
+    /// The capture at `cursor` in stage 2: its pose is the plan's index (a check's
+    /// `k`-th pose is the plan's `check[k]`).
+    pub(super) fn capture_at(&self, cursor: usize) -> Option<CaptureIndex> {
+        let at = CaptureIndex::from_sequence(cursor)?;
+        match &self.check {
+            None => Some(at),
+            Some(c) => Some(CaptureIndex {
+                pose: *c.as_slice().get(usize::from(at.pose))?,
+                approach: at.approach,
+            }),
+        }
+    }
+
+    /// The stage-2 cursor of a capture (inverse of [`capture_at`](Self::capture_at)).
+    pub(super) fn cursor_of(&self, index: CaptureIndex) -> usize {
+        match &self.check {
+            None => index.sequence(),
+            Some(c) => {
+                let k = c
+                    .as_slice()
+                    .iter()
+                    .position(|&p| p == index.pose)
+                    .unwrap_or(0);
+                k * CAPTURES_PER_POSE + index.approach.ordinal()
+            }
         }
     }
 
@@ -291,7 +413,7 @@ impl<T: Real> ProcedureState<T> {
     /// capacity.
     pub(super) fn stage2_capture(&self) -> Option<CaptureIndex> {
         (self.phase == Phase::Stage2)
-            .then(|| CaptureIndex::from_sequence(self.cursor))
+            .then(|| self.capture_at(self.cursor))
             .flatten()
     }
 
@@ -385,9 +507,9 @@ impl<T: Real> ProcedureState<T> {
         self.last_result = last;
     }
 
-    /// Captures the plan asks for.
+    /// Captures the plan (or the check) asks for.
     pub(super) fn plan_captures(&self) -> usize {
-        CaptureIndex::captures_of(self.plan.len())
+        CaptureIndex::captures_of(self.flange_poses())
     }
 
     /// Whether only OK arms the next capture: after the half turns (stage 0's and the
@@ -467,9 +589,10 @@ impl<T: Real> ProcedureState<T> {
 
     /// What to draw.
     pub fn view(&self) -> View<'_, T> {
+        // A check's screens count its own poses (the plan's joints).
         let pose = self.stage2_capture().and_then(|at| {
-            let i = usize::from(at.pose);
-            self.plan.get(i).map(|q| (i, self.plan.len(), *q))
+            let q = *self.plan.get(usize::from(at.pose))?;
+            Some((self.cursor / CAPTURES_PER_POSE, self.flange_poses(), q))
         });
         View {
             phase: self.phase,
@@ -483,6 +606,7 @@ impl<T: Real> ProcedureState<T> {
                 _ => None,
             },
             pose,
+            check: self.check.is_some(),
             captured: self.captures.len(),
             bias: self.bias,
             notice: self.notice,
@@ -497,6 +621,7 @@ impl<T: Real> ProcedureState<T> {
             captures: self.captures.len() as u8,
             stage0_skipped: self.stage0_skipped,
             closing_skipped: self.closing_skipped,
+            check: self.check.is_some(),
         }
     }
 
@@ -593,6 +718,7 @@ mod tests {
             captures: 0,
             stage0_skipped: false,
             closing_skipped,
+            check: false,
         }
     }
 
@@ -644,6 +770,7 @@ mod tests {
             captures: 3,
             stage0_skipped: false,
             closing_skipped: false,
+            check: false,
         });
         for i in 0..3_u8 {
             records.push(Record::Capture {

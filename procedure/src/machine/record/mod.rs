@@ -55,6 +55,8 @@ pub enum Record<T> {
         stage0_skipped: bool,
         /// Whether the closing reversal was skipped this session.
         closing_skipped: bool,
+        /// Whether this is a check, not a session.
+        check: bool,
     },
     /// A capture of stage 0, stage 1 or the closing reversal.
     Reading {
@@ -384,11 +386,12 @@ impl<T: Real> Record<T> {
                 captures,
                 stage0_skipped,
                 closing_skipped,
+                check,
             } => w.put(&[
                 phase.code(),
                 cursor,
                 captures,
-                u8::from(stage0_skipped) | u8::from(closing_skipped) << 1,
+                u8::from(stage0_skipped) | u8::from(closing_skipped) << 1 | u8::from(check) << 2,
             ])?,
             Record::Reading { slot, capture } => {
                 w.put(&[slot.index() as u8])?;
@@ -567,7 +570,7 @@ impl<T: Real> Record<T> {
                 let flags = r.u8()?;
                 if usize::from(cursor) > MAX_CAPTURES
                     || usize::from(captures) > MAX_CAPTURES
-                    || flags > 3
+                    || flags > 7
                 {
                     return Err(RecordError::BadField);
                 }
@@ -577,6 +580,7 @@ impl<T: Real> Record<T> {
                     captures,
                     stage0_skipped: flags & 1 != 0,
                     closing_skipped: flags & 2 != 0,
+                    check: flags & 4 != 0,
                 }
             }
             k if reading_range.contains(&k) => {

@@ -36,13 +36,18 @@ fn every_kind_round_trips_bit_exactly() {
             temperature_c: None,
         },
     });
-    for (stage0_skipped, closing_skipped) in [(true, false), (false, true), (true, true)] {
+    for (stage0_skipped, closing_skipped, check) in [
+        (true, false, false),
+        (false, true, true),
+        (true, true, false),
+    ] {
         round_trip(Record::Progress {
             phase: Phase::ClosingSecond,
             cursor: 7,
             captures: 6,
             stage0_skipped,
             closing_skipped,
+            check,
         });
     }
     round_trip(Record::Capture {
