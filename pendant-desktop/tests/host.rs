@@ -234,9 +234,10 @@ fn an_erase_cut_half_way_loses_no_record_of_the_page_it_emptied() {
 /// it and half-way through it: right after the cut the store holds the old results or
 /// the new, never a torn one or a reused ID, and the finished session's result is kept
 /// with the uncut run's numbers (`power_cuts::kept_difference`). On the filled store,
-/// whose earlier sessions fill every slot, so the write replaces the oldest result (a
-/// fresh board's write is one of the campaign's spread of cut points; all of them
-/// doubled this test's two minutes).
+/// which holds the results of the sessions before it (five with seed 3: the write adds
+/// a sixth; the ninth replacing the first is `store.rs`'s, uncut). A fresh board's write
+/// is one of the campaign's spread of cut points; all of them doubled this test's two
+/// minutes.
 #[test]
 fn a_cut_in_the_kept_results_write_leaves_the_old_set_or_the_new() {
     let (seed, filled) = (3, true);
