@@ -65,6 +65,12 @@ pub struct HistoryArgs {
     /// other than letters, digits, `.`, `_` and `-` become `_` in the file name).
     #[arg(long, value_name = "DIR", requires = "serial")]
     pub plot: Option<PathBuf>,
+    /// Import the pendant's kept results from FILE (`zerocal pendant results`, or the
+    /// `.results` file beside `zerocal pendant export --out`) under SERIAL, each once.
+    #[arg(long, value_name = "FILE", requires = "serial")]
+    pub import: Option<PathBuf>,
+    #[command(flatten)]
+    pub meta: crate::record::RecordMeta,
 }
 
 /// One record in `zerocal history --json`: the stored fields less the export's and
@@ -371,20 +377,37 @@ pub fn plots(dir: &Path, serial: &str, records: &[Record]) -> Result<Vec<PathBuf
 pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
     let location = args.db.location()?;
     let mut history = History::open(&location).map_err(history_error(&location))?;
+    let mut imported = String::new();
+    if let (Some(file), Some(serial)) = (&args.import, &args.serial) {
+        let text = crate::input::read_capped(file, crate::input::MAX_EXPORT_BYTES, "kept results")?;
+        for (id, inserted) in crate::import::import(&mut history, &text, serial, &args.meta)? {
+            let _ = writeln!(
+                imported,
+                "kept result {id}: {} record {}",
+                if inserted.new {
+                    "imported as"
+                } else {
+                    "already imported as"
+                },
+                inserted.id
+            );
+        }
+    }
     let records = history
         .list(args.serial.as_deref())
         .map_err(history_error(&location))?;
     if args.json {
         return to_json(&records);
     }
-    let mut out = if records.is_empty() {
+    let mut out = imported;
+    out.push_str(&if records.is_empty() {
         match &args.serial {
             Some(s) => format!("no records of serial {s:?} in {location}\n"),
             None => format!("no records in {location}\n"),
         }
     } else {
         table(&records)
-    };
+    });
     if let (Some(dir), Some(serial)) = (&args.plot, &args.serial) {
         for f in plots(dir, serial, &records)? {
             let _ = writeln!(out, "wrote {}", f.display());

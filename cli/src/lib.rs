@@ -11,6 +11,7 @@ pub mod diagnose;
 pub mod error;
 pub mod history;
 pub mod identify;
+pub mod import;
 pub mod input;
 pub mod log_file;
 pub mod pendant;

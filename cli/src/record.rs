@@ -149,6 +149,15 @@ pub fn solve_record(record: &Record) -> Result<Analysis, CliError> {
             record.new.kind.as_str()
         )));
     }
+    if record.new.pendant_result_id.is_some()
+        && !record.new.export.starts_with(b"# zerocal pendant export")
+    {
+        return Err(CliError::Input(format!(
+            "record {}: {}",
+            record.id,
+            crate::import::KEPT_RESULT_NOTE
+        )));
+    }
     let profile = zerocal_profile::parse(&record.new.profile_toml).map_err(|e| {
         CliError::Input(format!(
             "record {}: its robot profile does not read: {e}",

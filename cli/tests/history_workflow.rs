@@ -166,3 +166,78 @@ fn record_restore_check_and_certify_one_robot() {
     let text = std::fs::read_to_string(&html).unwrap();
     assert!(text.contains("KR6-0001") && text.contains("A. Tech"));
 }
+
+/// The pendant's kept results, imported under a serial: each once, however often the
+/// file is imported; the record says its U is the fit's and cannot be certified.
+#[test]
+fn kept_results_are_imported_once_each() {
+    use zerocal_procedure::log::{write_kept_result, Line, KEPT_RESULT_LINES};
+    use zerocal_procedure::{KeptResult, UnitId};
+    let d = dir();
+    let db = d.join("kept.sqlite");
+    let db = db.to_str().unwrap();
+    let mut text = String::new();
+    for id in [7u32, 8] {
+        let mut robot = zerocal_procedure::text::RobotName::new();
+        robot.push_str("kuka-kr6-r900-sixx").unwrap();
+        let k = KeptResult {
+            id,
+            robot,
+            offsets_deg: [0.1, -0.2, 0.3, -0.4, 0.05],
+            sigma_deg: [0.004, 0.005, 0.001, 0.001, 0.003],
+            residual_rms_deg: 0.0021,
+            warnings: 0,
+            temperatures_c: [Some(23.1), Some(23.6), Some(25.0)],
+            brackets: [None, None],
+            unit: Some(UnitId([
+                0x36, 0, 0x2f, 0, 0x13, 0x47, 0x33, 0x31, 0x30, 0x37, 0x35, 0x39,
+            ])),
+        };
+        for part in 0..KEPT_RESULT_LINES {
+            let mut line = Line::new();
+            write_kept_result(&mut line, &k, part).unwrap();
+            text.push_str(line.as_str());
+            text.push('\n');
+        }
+    }
+    let file = d.join("pendant.results");
+    std::fs::write(&file, text).unwrap();
+    let import = || {
+        ok(&[
+            "history",
+            "KR6-0002",
+            "--import",
+            file.to_str().unwrap(),
+            "--db",
+            db,
+        ])
+    };
+    let first = import();
+    assert!(
+        first.contains("kept result 7: imported as record 1"),
+        "{first}"
+    );
+    assert!(
+        first.contains("kept result 8: imported as record 2"),
+        "{first}"
+    );
+    let again = import();
+    assert!(
+        again.contains("kept result 7: already imported as record 1"),
+        "{again}"
+    );
+    let listed: serde_json::Value =
+        serde_json::from_str(&ok(&["history", "KR6-0002", "--json", "--db", db])).unwrap();
+    assert_eq!(listed.as_array().unwrap().len(), 2, "{listed}");
+    assert_eq!(listed[0]["pendant_result_id"], 7);
+    let refused = zerocal(&[
+        "certificate",
+        "1",
+        "--out",
+        d.join("k.html").to_str().unwrap(),
+        "--db",
+        db,
+    ]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("kept results"));
+}
