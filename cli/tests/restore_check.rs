@@ -155,12 +155,19 @@ fn restore_uncertainty_covers_its_error_over_sessions() {
     }
 }
 
-/// The check's poses here: every fourth of the plan's (the pendant's own choice is
-/// tested with it).
-fn check_poses(plan: &[[f64; 6]]) -> impl Fn(&[f64; 6]) -> bool + '_ {
+/// The check's poses: the pendant's own choice from the plan
+/// (`zerocal_core::plan::check_poses`, what `zerocal program --check` drives).
+fn check_poses<'a>(profile: &Profile, plan: &'a [[f64; 6]]) -> impl Fn(&[f64; 6]) -> bool + 'a {
+    let model = zerocal_core::plan::check_model(
+        profile.arm,
+        zerocal_core::model::Convention::Axis,
+        profile.mass_model(),
+    );
+    let (chosen, _) = zerocal_core::plan::check_poses(&model, plan).unwrap();
+    let chosen: Vec<[f64; 6]> = chosen.iter().map(|&i| plan[usize::from(i)]).collect();
     move |q| {
-        plan.iter()
-            .step_by(4)
+        chosen
+            .iter()
             .any(|p| p.iter().zip(q).all(|(a, b)| (a - b).abs() < 1e-12))
     }
 }
@@ -180,7 +187,7 @@ fn check_after_entering(seed: u64, left_j3_deg: f64) -> zerocal_cli::compare::ch
         }
         r.offsets_rad[2] += left_j3_deg.to_radians();
     });
-    let text = after.check_export_text(&profile.name, check_poses(&plan));
+    let text = after.check_export_text(&profile.name, check_poses(&profile, &plan));
     let export = read_export(&text).unwrap();
     assert!(export.stage1.is_none(), "a check has no stage 1");
     let c = compare(&solved_reference, &export, &options()).unwrap();

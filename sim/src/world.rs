@@ -823,6 +823,9 @@ impl RealSession {
                 Some(self.stage0_temperature_c)
             )
         );
+        if !with_stage1 {
+            let _ = writeln!(out, "# mode check");
+        }
         if with_stage1 {
             let _ = writeln!(
                 out,
