@@ -49,6 +49,7 @@ fn is_numeric(a: &clap::Arg) -> bool {
         TypeId::of::<u32>(),
         TypeId::of::<u64>(),
         TypeId::of::<usize>(),
+        TypeId::of::<i64>(),
     ]
     .into_iter()
     .any(|id| t == id)
@@ -68,6 +69,9 @@ pub fn criterion() -> impl TypedValueParser<Value = zerocal_core::plan::Criterio
 
 /// Seeds: any `u64`.
 pub const SEED: CountIn<u64> = CountIn::new(0, u64::MAX);
+
+/// A record of the history: its ID, from 1.
+pub const RECORD_ID: CountIn<i64> = CountIn::new(1, i64::MAX as u64);
 
 /// A base tilt or a sensor bias, per axis: a robot base tilted more than 10° is not
 /// standing on its foundation, and the SCL3300's offset is at most ±1.15°.

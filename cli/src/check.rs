@@ -5,8 +5,9 @@
 
 use crate::compare::check::{judge, CheckResult, Expected, JointCheck};
 use crate::compare::{CompareOptions, DifferenceBudget};
+use crate::db::DbArg;
+use crate::db::RecordMeta;
 use crate::error::CliError;
-use crate::record::{DbArg, RecordMeta};
 use crate::restore::{against, render_budget, Against};
 use clap::Args;
 use serde::Serialize;
@@ -20,8 +21,9 @@ use zerocal_history::{JointRow, NewRecord, RecordKind};
 pub struct CheckArgs {
     /// The pendant's check export (stage 0 and the check's poses).
     pub export: PathBuf,
-    /// The session whose offsets were entered: its record in the history.
-    #[arg(long, value_name = "ID")]
+    /// The session whose offsets were entered: its record in the history. Range: [1,
+    /// 9223372036854775807].
+    #[arg(long, value_name = "ID", value_parser = crate::args::RECORD_ID)]
     pub against: i64,
     /// A restore to that session's zero was entered (`zerocal restore`), not its
     /// offsets: nothing should have moved since it.
@@ -151,7 +153,7 @@ fn record_of(
         } else {
             format!("FAIL {}", failed.join(" "))
         },
-        brackets_json: crate::record::brackets_json(&a.export.brackets).to_string(),
+        brackets_json: crate::session::brackets_json(&a.export.brackets).to_string(),
         conditions_json: serde_json::json!({
             "stage0_temperature_c": a.export.stage0.and_then(|s| s.temperature_c),
             "poses": j.poses,
@@ -256,9 +258,7 @@ pub fn run(args: &CheckArgs) -> Result<String, CliError> {
     if !args.no_record {
         let record = record_of(&a, &json, expected, &args.meta)?;
         let mut history = args.db.open()?;
-        let inserted = history
-            .insert(&record)
-            .map_err(crate::record::history_error)?;
+        let inserted = history.insert(&record).map_err(crate::db::history_failed)?;
         json.record_id = Some(inserted.id);
     }
     let out = if args.json {

@@ -8,47 +8,10 @@ use plotters::prelude::*;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use zerocal_history::{DbLocation, History, Record, RecordKind, JOINTS};
+use zerocal_history::{History, Record, RecordKind, JOINTS};
 
-/// `--db PATH|URL`: where the history is.
-#[derive(clap::Args, Debug, Clone, Default)]
-pub struct DbArg {
-    /// The history database: an SQLite file, or a PostgreSQL server
-    /// `postgres://USER:PASSWORD@HOST:PORT/DATABASE`. Default:
-    /// $XDG_DATA_HOME/zerocal/history.sqlite, else ~/.local/share/zerocal/history.sqlite.
-    #[arg(long, value_name = "PATH|URL")]
-    pub db: Option<String>,
-}
-
-/// The history's error as the CLI's, naming the database unless the error does.
-fn history_error(at: &DbLocation) -> impl Fn(zerocal_history::HistoryError) -> CliError + '_ {
-    move |e| match e {
-        zerocal_history::HistoryError::NotZerocal { .. } => {
-            CliError::Input(format!("history: {e}"))
-        }
-        _ => CliError::Input(format!("history {at}: {e}")),
-    }
-}
-
-impl DbArg {
-    /// The location `--db` names, or the default.
-    ///
-    /// # Errors
-    /// An empty `--db`; no `--db` and no data directory.
-    pub fn location(&self) -> Result<DbLocation, CliError> {
-        DbLocation::from_arg(self.db.as_deref())
-            .map_err(|e| CliError::Input(format!("history: {e}")))
-    }
-
-    /// Opens (making or migrating) the history `--db` names.
-    ///
-    /// # Errors
-    /// As [`History::open`], with the location named.
-    pub fn open(&self) -> Result<History, CliError> {
-        let at = self.location()?;
-        History::open(&at).map_err(history_error(&at))
-    }
-}
+use crate::db::history_error;
+pub use crate::db::DbArg;
 
 /// Arguments of `zerocal history`.
 #[derive(clap::Args, Debug, Clone)]
@@ -70,7 +33,7 @@ pub struct HistoryArgs {
     #[arg(long, value_name = "FILE", requires = "serial")]
     pub import: Option<PathBuf>,
     #[command(flatten)]
-    pub meta: crate::record::RecordMeta,
+    pub meta: crate::db::RecordMeta,
 }
 
 /// One record in `zerocal history --json`: the stored fields less the export's and

@@ -8,19 +8,15 @@
 //! record says so; it cannot be certified or checked against (those solve the export
 //! again). Record the export itself for that (`zerocal session EXPORT --record`).
 
+use crate::db::RecordMeta;
 use crate::error::CliError;
-use crate::record::RecordMeta;
+use crate::record::KEPT_RESULT_NOTE;
 use serde_json::json;
 use zerocal_core::session::COVERAGE_FACTOR;
 use zerocal_history::{History, Inserted, JointRow, NewRecord, RecordKind};
 use zerocal_procedure::kept::VERDICT_WORDS;
 use zerocal_procedure::log::{read_kept_results, write_kept_result, Line, KEPT_RESULT_LINES};
 use zerocal_procedure::KeptResult;
-
-/// What a record imported from a kept result says of its uncertainty.
-pub const KEPT_RESULT_NOTE: &str = "imported from the pendant's kept results: U(k = 2) is twice \
-     the fit's 1-sigma (the pendant keeps no budget); record the export itself (zerocal session \
-     EXPORT --record) for the whole budget, a certificate or a check";
 
 /// The kept result's own lines, as the pendant writes them: the record's bytes.
 fn lines_of(k: &KeptResult) -> Result<String, CliError> {
@@ -124,9 +120,7 @@ pub fn import(
     kept.iter()
         .map(|k| {
             let record = record_of(k, serial, meta)?;
-            let inserted = history
-                .insert(&record)
-                .map_err(crate::record::history_error)?;
+            let inserted = history.insert(&record).map_err(crate::db::history_failed)?;
             Ok((k.id, inserted))
         })
         .collect()

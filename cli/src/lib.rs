@@ -7,6 +7,7 @@ pub mod brackets;
 pub mod certificate;
 pub mod check;
 pub mod compare;
+pub mod db;
 pub mod diagnose;
 pub mod error;
 pub mod history;

@@ -8,8 +8,8 @@
 //! export read.
 
 use crate::compare::{compare, CompareOptions, Comparison, DifferenceBudget};
+use crate::db::DbArg;
 use crate::error::CliError;
-use crate::record::DbArg;
 use crate::session::{read_export, Analysis, ExportContents};
 use clap::Args;
 use serde::Serialize;
@@ -25,12 +25,13 @@ pub struct RestoreArgs {
     /// The pendant's export after the change (its check, or a whole session).
     pub export: PathBuf,
     /// The reference: the history's record of a session taken while the robot was
-    /// healthy (`zerocal history SN` lists them).
-    #[arg(long, value_name = "ID")]
+    /// healthy (`zerocal history SN` lists them). Range: [1, 9223372036854775807].
+    #[arg(long, value_name = "ID", value_parser = crate::args::RECORD_ID)]
     pub reference: i64,
     /// A joint whose gearbox (reducer) was changed, 3-6 (repeat for more): its
-    /// transmission error is then not the reference's, and the budget says so.
-    #[arg(long = "gearbox-replaced", value_name = "JOINT", value_parser = clap::value_parser!(u8).range(3..=6))]
+    /// transmission error is then not the reference's, and the budget says so. Range:
+    /// [3, 6].
+    #[arg(long = "gearbox-replaced", value_name = "JOINT", value_parser = crate::args::CountIn::<u8>::new(3, 6))]
     pub gearbox_replaced: Vec<u8>,
     /// How far each stage-0 half turn may be off 180° (deg), as for `zerocal session`
     /// (default: by hand, 1). Range: [0, 10] deg.
@@ -68,7 +69,7 @@ pub fn against(
     options: &CompareOptions,
 ) -> Result<Against, CliError> {
     let mut history = db.open()?;
-    let record = history.get(id).map_err(crate::record::history_error)?;
+    let record = history.get(id).map_err(crate::db::history_failed)?;
     let reference = crate::record::solve_record(&record)?;
     let bytes =
         crate::input::read_capped_bytes(export, crate::input::MAX_EXPORT_BYTES, "pendant export")?;

@@ -159,7 +159,7 @@ pub struct WorldArgs {
     /// Another session of the robot `--seed` draws, with the same pendant and brackets
     /// (their calibrations kept): its noise, seats and bench drawn from this seed. For
     /// rehearsing a history, a restore and a check. Range: [0, 18446744073709551615].
-    #[arg(long, value_name = "SEED")]
+    #[arg(long, value_name = "SEED", value_parser = crate::args::SEED)]
     pub again: Option<u64>,
     /// With `--again`: joint J's reading reads DEG more at the same arm position than at
     /// the first session, as after a motor swap (J 2-6; repeat for more).

@@ -184,7 +184,7 @@ fn plot_writes_one_svg_per_joint_with_sessions_and_checks() {
         let svg = std::fs::read_to_string(&path).unwrap();
         assert!(svg.starts_with("<svg"), "{}", path.display());
         assert!(svg.contains(&format!("joint {joint} zero offset over time")));
-        assert!(svg.contains("session U(k=2) band") && svg.contains("check: offset"));
+        assert!(svg.contains("session U(k=2) band") && svg.contains("check: the offset now"));
     }
     assert_eq!(
         std::fs::read_dir(&plots).unwrap().count(),

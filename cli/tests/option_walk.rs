@@ -118,7 +118,11 @@ fn parse_range(text: &str) -> Option<Stated> {
 }
 
 /// Value names of options that take text, not a number.
-const TEXT_VALUES: [&str; 8] = [
+const TEXT_VALUES: [&str; 12] = [
+    "<SN>",
+    "<DAY>",
+    "<J=DEG>",
+    "<DEG,DEG,DEG,DEG,DEG>",
     "<FILE>",
     "<PORT>",
     "<DIR>",
@@ -220,6 +224,32 @@ fn sample_export() -> PathBuf {
     path
 }
 
+/// A history beside the walk's log holding the sample session as record 1.
+fn walk_history(log: &std::path::Path) -> String {
+    let db = log
+        .with_file_name("walk-records.sqlite")
+        .display()
+        .to_string();
+    let out = Command::new(env!("CARGO_BIN_EXE_zerocal"))
+        .args([
+            "session",
+            &sample_export().display().to_string(),
+            "--record",
+            "--serial",
+            "WALK",
+            "--db",
+            &db,
+        ])
+        .output()
+        .expect("zerocal session --record");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    db
+}
+
 /// The arguments that make each subcommand run at all; a new subcommand must be added
 /// here, or the walk fails.
 fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
@@ -265,6 +295,38 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
                 .display()
                 .to_string(),
         ],
+        // On a history holding the sample session as record 1, checked against itself.
+        "check" | "restore" | "certificate" => {
+            let db = walk_history(log);
+            match subcommand {
+                "check" => vec![
+                    "check".into(),
+                    sample_export().display().to_string(),
+                    "--against=1".into(),
+                    "--restored".into(),
+                    "--no-record".into(),
+                    "--db".into(),
+                    db,
+                ],
+                "restore" => vec![
+                    "restore".into(),
+                    sample_export().display().to_string(),
+                    "--reference=1".into(),
+                    "--db".into(),
+                    db,
+                ],
+                _ => vec![
+                    "certificate".into(),
+                    "1".into(),
+                    "--out".into(),
+                    log.with_file_name("walk-certificate.html")
+                        .display()
+                        .to_string(),
+                    "--db".into(),
+                    db,
+                ],
+            }
+        }
         other => panic!("option walk: no base invocation for the subcommand '{other}'"),
     }
 }

@@ -32,6 +32,7 @@
 pub mod bracket_cal;
 pub mod capture;
 pub mod export_trailer;
+pub mod kept;
 pub mod link;
 pub mod log;
 pub mod machine;

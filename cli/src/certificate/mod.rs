@@ -138,7 +138,7 @@ pub struct CertificateArgs {
     #[arg(long, value_name = "DEG", value_parser = TOLERANCE)]
     pub tolerance_deg: Option<f64>,
     #[command(flatten)]
-    pub db: crate::record::DbArg,
+    pub db: crate::db::DbArg,
 }
 
 /// Runs `zerocal certificate ID --out FILE.html`: the record's session solved again
@@ -148,7 +148,7 @@ pub struct CertificateArgs {
 /// No such record, a check's record, a record the certificate cannot state.
 pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
     let mut history = args.db.open()?;
-    let record = history.get(args.id).map_err(crate::record::history_error)?;
+    let record = history.get(args.id).map_err(crate::db::history_failed)?;
     let analysis = crate::record::solve_record(&record)?;
     let subject = CertificateSubject {
         record_id: record.id,

@@ -14,7 +14,9 @@
 //! line (and key, column or byte). A session without a stage-0 reversal is solved, with
 //! the sensor's unknown x offset in its budget and a note saying so.
 
+mod record;
 mod render;
+pub use record::{brackets_json, session_record, verdict_of};
 pub use render::render;
 
 use crate::args::RealIn;
@@ -88,9 +90,9 @@ pub struct SessionArgs {
     #[arg(long, value_name = "SN")]
     pub serial: Option<String>,
     #[command(flatten)]
-    pub meta: crate::record::RecordMeta,
+    pub meta: crate::db::RecordMeta,
     #[command(flatten)]
-    pub db: crate::record::DbArg,
+    pub db: crate::db::DbArg,
 }
 
 impl SessionArgs {
@@ -107,8 +109,8 @@ impl SessionArgs {
             json: false,
             record: false,
             serial: None,
-            meta: crate::record::RecordMeta::default(),
-            db: crate::record::DbArg::default(),
+            meta: crate::db::RecordMeta::default(),
+            db: crate::db::DbArg::default(),
         }
     }
 }
@@ -443,11 +445,9 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
     let analysis = analyse(args, &bytes)?;
     let recorded = match (&args.serial, args.record) {
         (Some(serial), true) => {
-            let record = crate::record::session_record(&analysis, &bytes, serial, &args.meta)?;
+            let record = session_record(&analysis, &bytes, serial, &args.meta)?;
             let mut history = args.db.open()?;
-            let inserted = history
-                .insert(&record)
-                .map_err(crate::record::history_error)?;
+            let inserted = history.insert(&record).map_err(crate::db::history_failed)?;
             Some((inserted, history.location().to_owned()))
         }
         _ => None,

@@ -13,7 +13,7 @@
 //! (the unit is one word of 24 hex digits, `none` where unknown). Offsets are Δθ2..Δθ6;
 //! the verdict is `pass` or its warnings ([`VERDICT_WORDS`]) joined by `,`; the
 //! temperatures are stage 0's, stage 1's and the closing reversal's
-//! ([`TEMPERATURE_STAGES`](crate::machine::kept::TEMPERATURE_STAGES)); the brackets the upper arm's then the flange's. Numbers have
+//! ([`TEMPERATURE_STAGES`](crate::kept::TEMPERATURE_STAGES)); the brackets the upper arm's then the flange's. Numbers have
 //! [`KEPT_DECIMALS`] decimals (trailing zeros dropped), which read back to the
 //! pendant's `f32`s bit for bit, so the desktop gets exactly what the pendant holds.
 //! One line would pass the link's [`Line`] length.
@@ -21,7 +21,7 @@
 use core::fmt::{self, Write};
 
 use super::{Line, LogError, MAX_READING_DEG, TEMPERATURE_RANGE_C};
-use crate::machine::kept::{KeptResult, UnitId, VERDICT_BITS, VERDICT_PASS, VERDICT_WORDS};
+use crate::kept::{KeptResult, UnitId, VERDICT_BITS, VERDICT_PASS, VERDICT_WORDS};
 use crate::text::RobotName;
 use zerocal_core::bracket::bracket_id;
 use zerocal_core::decimal::Fixed;
@@ -335,7 +335,7 @@ pub fn read_kept_results(text: &str) -> Result<std::vec::Vec<KeptResult>, LogErr
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::machine::kept::example_kept_result as example;
+    use crate::kept::example_kept_result as example;
     use std::string::{String, ToString};
 
     fn lines(results: &[KeptResult]) -> String {

@@ -15,7 +15,7 @@ use zerocal_core::stage0::{ClosingReversal, Reversal};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::Extras;
 
-use crate::machine::kept::{PendantUnit, UnitId};
+use crate::kept::{PendantUnit, UnitId};
 
 /// A metadata item of the pendant's export that the session solver needs.
 #[derive(Clone, Debug, PartialEq)]

@@ -52,7 +52,7 @@ pub struct ExportSession<'a, T: Real, R> {
     /// The pendant's result, once the session is done.
     pub result: Option<&'a Result<SessionSolution<T>, SessionError>>,
     /// The pendant unit that wrote the export, where known.
-    pub pendant: Option<crate::machine::kept::PendantUnit>,
+    pub pendant: Option<crate::kept::PendantUnit>,
 }
 
 /// The stage-2 captures of an export, in the order taken: whatever the procedure keeps
