@@ -109,9 +109,21 @@ fn restore_after_a_motor_swap_gives_minus_one_degree_within_its_uncertainty() {
             "j{} {moved:?}",
             k + 2
         );
-        for t in &r.budget.terms {
-            println!("  {} {:.5}", t.term, t.standard_uncertainty_deg[k]);
-        }
+    }
+    // The session after the swap, solved on its own: the difference's budget is below
+    // both sessions'.
+    let solved_after = solved(&after, &profile);
+    for k in 1..5 {
+        let (u, before, after) = (
+            r.budget.expanded_deg[k],
+            solved_reference.json.joints[k].expanded_k2_deg,
+            solved_after.json.joints[k].expanded_k2_deg,
+        );
+        assert!(
+            u < before && u < after,
+            "j{}: the difference's U {u} against the sessions' {before} and {after}",
+            k + 2
+        );
     }
 }
 
