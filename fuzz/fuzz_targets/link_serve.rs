@@ -119,6 +119,8 @@ fuzz_target!(|data: &[u8]| {
                         p.bracket_cal = Some(BracketCalState::new(mount, id));
                         LinkReply::Done
                     }
+                    // No store here: no kept result has that ID.
+                    LinkRequest::ReadKept { .. } => LinkReply::Kept(None),
                 }
             };
             shared.link_replies.send(reply).await;
