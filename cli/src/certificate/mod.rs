@@ -181,7 +181,7 @@ pub fn certificate(
     subject: &CertificateSubject,
     analysis: &Analysis,
 ) -> Result<Certificate, CertificateError> {
-    certificate_issued_on(subject, analysis, &today_utc())
+    certificate_issued_on(subject, analysis, &crate::brackets::today_utc())
 }
 
 /// [`certificate`] with its issue date given (`YYYY-MM-DD`).
@@ -290,44 +290,9 @@ fn check_date(field: &'static str, date: &str) -> Result<(), CertificateError> {
     }
 }
 
-/// Today's date (UTC), `YYYY-MM-DD`.
-fn today_utc() -> String {
-    let seconds = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    let (y, m, d) = civil_from_days(i64::try_from(seconds / 86_400).unwrap_or(0));
-    format!("{y:04}-{m:02}-{d:02}")
-}
-
-/// The proleptic Gregorian date of `days` since 1970-01-01 (H. Hinnant's
-/// `civil_from_days`, chrono-compatible algorithms for the Gregorian calendar).
-fn civil_from_days(days: i64) -> (i64, u32, u32) {
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z.rem_euclid(146_097);
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    // d is in 1..=31 and m in 1..=12 by construction.
-    (y, m as u32, d as u32)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn dates_from_days_since_the_epoch() {
-        assert_eq!(civil_from_days(0), (1970, 1, 1));
-        // 2000-02-29 (a leap day of a century year divisible by 400): 11 016 days.
-        assert_eq!(civil_from_days(11_016), (2000, 2, 29));
-        // 2026-11-27: 20 784 days.
-        assert_eq!(civil_from_days(20_784), (2026, 11, 27));
-        assert_eq!(civil_from_days(-1), (1969, 12, 31));
-    }
 
     #[test]
     fn only_a_calendar_date_passes() {
