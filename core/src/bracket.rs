@@ -28,7 +28,7 @@
 use crate::error::StageError;
 use crate::model::{rot_x, rot_y, rot_z, Arm, Convention, Gain, Tilt};
 use crate::real::{deg_to_rad, Real};
-use crate::stage0::Reversal;
+use crate::stage0::BenchTurns;
 use nalgebra::{Rotation3, Vector3};
 
 /// The seat repeatability the bracket designs require: a bracket taken off and clipped
@@ -356,13 +356,13 @@ fn up_vector<T: Real>(
 
 /// A reversal's half difference as an up-vector difference in the pendant's frame.
 fn half_difference<T: Real>(
-    r: &Reversal<T>,
+    r: &BenchTurns<T>,
     bias: &Tilt<T>,
     convention: Convention,
 ) -> Option<Vector3<T>> {
     let (a, b) = (
-        up_vector(&r.first, bias, convention)?,
-        up_vector(&r.second, bias, convention)?,
+        up_vector(&r.readings[0], bias, convention)?,
+        up_vector(&r.readings[1], bias, convention)?,
     );
     Some((a - b) * T::lit(0.5))
 }
@@ -381,8 +381,8 @@ fn half_difference<T: Real>(
 /// [`SINE_PLATE_MIN_DEG`]..[`SINE_PLATE_MAX_DEG`]; [`BracketError::Implausible`] for a
 /// yaw beyond [`MAX_BRACKET_TURN_DEG`] or readings no orientation gives.
 pub fn calibrate_yaw<T: Real>(
-    pendant: &Reversal<T>,
-    in_bracket: &Reversal<T>,
+    pendant: &BenchTurns<T>,
+    in_bracket: &BenchTurns<T>,
     tilt_rad: &Tilt<T>,
     bias: &Tilt<T>,
     convention: Convention,
@@ -427,14 +427,11 @@ pub fn calibrate_yaw<T: Real>(
     Ok(yaw)
 }
 
-/// A reversal's half difference: the plate's tilt as the first reading saw it (rad).
-fn plate_tilt<T: Real>(r: &Reversal<T>) -> T {
-    let half = T::lit(0.5);
-    let (tx, ty) = (
-        (r.first.x_rad - r.second.x_rad) * half,
-        (r.first.y_rad - r.second.y_rad) * half,
-    );
-    (tx * tx + ty * ty).sqrt()
+/// The plate's tilt the bench readings show (rad): a reversal's half difference, the
+/// circle's radius for headings turned by hand.
+fn plate_tilt<T: Real>(r: &BenchTurns<T>) -> T {
+    let t = r.tilt_seen_first();
+    (t.x_rad * t.x_rad + t.y_rad * t.y_rad).sqrt()
 }
 
 /// The pendant's turn in a bracket from the two reversals on the plate (the pendant
@@ -453,8 +450,8 @@ fn plate_tilt<T: Real>(r: &Reversal<T>) -> T {
 /// A reading out of range or not a number ([`BracketError::Reading`]), or a turn no
 /// bracket of the design has ([`BracketError::Implausible`]).
 pub fn calibrate<T: Real>(
-    pendant: &Reversal<T>,
-    in_bracket: &Reversal<T>,
+    pendant: &BenchTurns<T>,
+    in_bracket: &BenchTurns<T>,
     convention: Convention,
     range_rad: T,
     capture_noise_rad: T,
@@ -485,7 +482,15 @@ pub fn calibrate<T: Real>(
         }
     };
     let turn = deg_to_rad(T::lit(REFERENCE_TURN_TOLERANCE_DEG));
-    let half_turn_u = |r: &Reversal<T>| plate_tilt(r) * turn * T::lit(0.5) / T::lit(3.0).sqrt();
+    // A half turn by hand moves a reversal's half-sum by half its error times the tilt;
+    // headings turned by hand solve their own turns.
+    let half_turn_u = |r: &BenchTurns<T>| {
+        if r.count == 2 {
+            plate_tilt(r) * turn * T::lit(0.5) / T::lit(3.0).sqrt()
+        } else {
+            T::zero()
+        }
+    };
     let (u0, u1) = (half_turn_u(pendant), half_turn_u(in_bracket));
     let noise2 = capture_noise_rad * capture_noise_rad / T::lit(CAPTURES_PER_READING as f64);
     let u = (noise2 + u0 * u0 + u1 * u1).sqrt();
@@ -586,17 +591,14 @@ mod tests {
         let plate = rot_x(deg_to_rad(0.06)) * rot_y(deg_to_rad(-0.04)) * crate::model::rot_z(0.7);
         let half = crate::model::rot_z(core::f64::consts::PI);
         let (a, b) = (deg_to_rad(0.41), deg_to_rad(-0.27));
-        let pendant = Reversal {
-            first: read(&plate, &bias),
-            second: read(&(plate * half), &bias),
-        };
+        let pendant = BenchTurns::half_turn(read(&plate, &bias), read(&(plate * half), &bias));
         for yaw_deg in [0.0, 0.3] {
             let c = deg_to_rad(yaw_deg);
             let bracket = rot_x(a) * rot_y(b) * crate::model::rot_z(c);
-            let seated = Reversal {
-                first: read(&(plate * bracket), &bias),
-                second: read(&(plate * half * bracket), &bias),
-            };
+            let seated = BenchTurns::half_turn(
+                read(&(plate * bracket), &bias),
+                read(&(plate * half * bracket), &bias),
+            );
             let (rot, u) = calibrate(&pendant, &seated, Convention::Axis, 0.2, 1e-5).unwrap();
             let bound = 1e-6 + 1.05 * (c * b).abs();
             assert!(
@@ -624,14 +626,11 @@ mod tests {
             * crate::model::rot_z(deg_to_rad(0.5));
         let reversals = |plate: &Rotation3<f64>| {
             (
-                Reversal {
-                    first: read(plate, &bias),
-                    second: read(&(plate * half), &bias),
-                },
-                Reversal {
-                    first: read(&(plate * bracket), &bias),
-                    second: read(&(plate * half * bracket), &bias),
-                },
+                BenchTurns::half_turn(read(plate, &bias), read(&(plate * half), &bias)),
+                BenchTurns::half_turn(
+                    read(&(plate * bracket), &bias),
+                    read(&(plate * half * bracket), &bias),
+                ),
             )
         };
         let (alone, seated) = reversals(&level);
@@ -663,10 +662,7 @@ mod tests {
         let bias = Tilt::from_deg(0.5, -0.3);
         let half = crate::model::rot_z(core::f64::consts::PI);
         let flat = rot_x(deg_to_rad(0.5));
-        let r = Reversal {
-            first: read(&flat, &bias),
-            second: read(&(flat * half), &bias),
-        };
+        let r = BenchTurns::half_turn(read(&flat, &bias), read(&(flat * half), &bias));
         let e = calibrate_yaw(&r, &r, &Tilt::default(), &bias, Convention::Axis, 1e-5).unwrap_err();
         assert!(
             matches!(e, BracketError::NotOnSinePlate { tilt_deg } if (tilt_deg - 0.5).abs() < 0.01),
@@ -680,10 +676,7 @@ mod tests {
         let bias = Tilt::from_deg(0.5, -0.3);
         let plate = rot_x(deg_to_rad(0.2));
         let half = crate::model::rot_z(core::f64::consts::PI);
-        let r = Reversal {
-            first: read(&plate, &bias),
-            second: read(&(plate * half), &bias),
-        };
+        let r = BenchTurns::half_turn(read(&plate, &bias), read(&(plate * half), &bias));
         let e = calibrate(&r, &r, Convention::Axis, 0.2, 1e-5).unwrap_err();
         assert!(
             matches!(e, BracketError::PlateNotLevel { tilt_deg } if (tilt_deg - 0.2).abs() < 0.01),

@@ -7,8 +7,9 @@
 /// Captures per pose: one from below, one from above.
 pub const CAPTURES_PER_POSE: usize = 2;
 
-/// How many stage-2 captures the pendant holds (its flash records and its RAM).
-pub const MAX_CAPTURES: usize = 48;
+/// How many stage-2 captures the pendant holds (its flash records and its RAM): a
+/// plan's [`crate::plan::MAX_POSES`] poses, each twice.
+pub const MAX_CAPTURES: usize = 96;
 
 /// How many poses a plan sent to the pendant may have: every pose takes
 /// [`CAPTURES_PER_POSE`] of the [`MAX_CAPTURES`].

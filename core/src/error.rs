@@ -6,29 +6,34 @@ use core::fmt;
 
 /// The names of stage 2's parameters, by index (`stage2::Param`'s order).
 /// `tiltJ` is joint J's axis misalignment (`tiltJb` its second direction, where J's
-/// axis is parallel to the one before), `sagJ` joint J's compliance under the wrist's
-/// load.
-pub const PARAM_NAMES: [&str; 31] = [
+/// axis is parallel to the one before), `sagJ` joint J's compliance under its load
+/// (`sag` joint 3's, `sag2` joint 2's where stage 2 moves joint 2), `lashJ` half of
+/// joint J's lost motion on the side gravity loads it, `teJcN`/`teJsN` the cosine and
+/// sine coefficients of joint J's transmission error N times per turn.
+pub const PARAM_NAMES: [&str; 61] = [
     "j3", "j4", "j5", "j6", "gain_x", "gain_y", "cross_xy", "cross_yx", "cross_xz", "cross_yz",
     "cross_zx", "cross_zy", "gain_z", "sag", "bias_x", "bias_y", "drift_x", "drift_y", "tilt2",
     "tilt2b", "tilt3", "tilt3b", "tilt4", "tilt4b", "tilt5", "tilt5b", "tilt6", "tilt6b", "sag4",
-    "sag5", "sag6",
+    "sag5", "sag6", "psag4", "psag5", "psag6", "sag2", "lash2", "lash3", "te2c1", "te2s1", "te2c2",
+    "te2s2", "te3c1", "te3s1", "te3c2", "te3s2", "te4c1", "te4s1", "te4c2", "te4s2", "te5c1",
+    "te5s1", "te5c2", "te5s2", "te6c1", "te6s1", "te6c2", "te6s2", "te2c3", "te2s3", "te2c4",
+    "te2s4",
 ];
 
 /// A set of stage-2 parameters by index (bit k = parameter k; 0..=3 are Δθ3..Δθ6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct ParamSet(pub u32);
+pub struct ParamSet(pub u64);
 
 impl ParamSet {
     /// How many parameters a set can name.
-    pub const CAPACITY: usize = 32;
+    pub const CAPACITY: usize = 64;
 
     /// Adds parameter `k` (0 = Δθ3). An index past [`CAPACITY`](Self::CAPACITY) names
     /// no parameter and leaves the set as it is.
     pub fn with(self, k: usize) -> Self {
-        match u32::try_from(k).ok().and_then(|k| 1u32.checked_shl(k)) {
+        match u32::try_from(k).ok().and_then(|k| 1u64.checked_shl(k)) {
             Some(bit) => ParamSet(self.0 | bit),
             None => self,
         }
@@ -38,7 +43,7 @@ impl ParamSet {
     pub fn contains(self, k: usize) -> bool {
         u32::try_from(k)
             .ok()
-            .and_then(|k| 1u32.checked_shl(k))
+            .and_then(|k| 1u64.checked_shl(k))
             .is_some_and(|bit| self.0 & bit != 0)
     }
 
@@ -141,6 +146,24 @@ pub enum FitError {
         /// The size of the jump (deg).
         step_deg: f32,
     },
+    /// A pose the plan visits again reads differently the second time: the pendant
+    /// moved on the flange between the two visits (knocked, or the bracket creeping).
+    RevisitDisagrees {
+        /// The pose's first visit (0-based, in the order fitted).
+        pose: usize,
+        /// Its later visit (0-based, in the order fitted).
+        revisit: usize,
+        /// How far apart the two read (deg).
+        difference_deg: f32,
+        /// The most a tight bracket on a real arm shows (deg).
+        limit_deg: f32,
+    },
+    /// The readings drift steadily over stage 2 as a pendant turning slowly on the flange
+    /// would: the bracket creeps (a clamp not quite tight).
+    PendantCreeping {
+        /// How far the readings drifted from the first pose to the last (deg).
+        drift_deg: f32,
+    },
     /// The two captures of a pose (approached from either side) disagree by more than
     /// the gears' lost motion and the sensor's noise explain: the flange bracket moves.
     CapturesDisagree {
@@ -239,6 +262,28 @@ impl fmt::Display for FitError {
                 from_pose + 1,
                 Fixed::new(f64::from(step_deg), 4)
             ),
+            FitError::RevisitDisagrees {
+                pose,
+                revisit,
+                difference_deg,
+                limit_deg,
+            } => write!(
+                f,
+                "the pendant moved on the flange between pose {} and its revisit (pose {}): \
+                 the same pose reads {} deg apart (limit {} deg); tighten the flange \
+                 bracket's clamp and repeat stage 2",
+                pose + 1,
+                revisit + 1,
+                Fixed::new(f64::from(difference_deg), 4),
+                Fixed::new(f64::from(limit_deg), 4)
+            ),
+            FitError::PendantCreeping { drift_deg } => write!(
+                f,
+                "the pendant crept on the flange: the readings drift steadily by {} deg from \
+                 the first pose to the last (a revisited pose no longer reads as it did); \
+                 tighten the flange bracket's clamp and repeat stage 2",
+                Fixed::new(f64::from(drift_deg), 4)
+            ),
             FitError::CapturesDisagree {
                 rms_deg,
                 limit_deg,
@@ -304,6 +349,19 @@ pub enum StageError {
     Unresolvable,
     /// A commanded joint angle is NaN or infinite.
     NonFiniteCommand,
+    /// Fewer than two bench readings.
+    TooFewHeadings {
+        /// Readings taken.
+        got: u8,
+    },
+    /// The bench readings do not lie on one circle: the pendant was moved between
+    /// headings, not turned on the spot (or knocked, or the bench is not flat).
+    NotTurnedOnTheSpot {
+        /// The solve's residual RMS (deg).
+        rms_deg: f32,
+        /// The limit ([`crate::stage0::BENCH_RESIDUAL_LIMIT`] readings' noise, deg).
+        limit_deg: f32,
+    },
 }
 
 impl fmt::Display for StageError {
@@ -329,6 +387,16 @@ impl fmt::Display for StageError {
             StageError::NonFiniteCommand => {
                 f.write_str("a commanded joint angle is not a finite number")
             }
+            StageError::TooFewHeadings { got } => write!(
+                f,
+                "{got} bench reading(s): at least two headings are needed (four by hand)"
+            ),
+            StageError::NotTurnedOnTheSpot { rms_deg, limit_deg } => write!(
+                f,
+                "the bench readings do not lie on one circle ({} deg RMS, limit {} deg): turn the pendant on the same spot of a flat, steady bench without lifting it, and read it again",
+                Fixed::new(f64::from(rms_deg), 4),
+                Fixed::new(f64::from(limit_deg), 4)
+            ),
         }
     }
 }
@@ -355,6 +423,10 @@ impl fmt::Display for Terse<'_, FitError> {
             }
             FitError::PoseNotReached { pose, .. } => write!(f, "PoseNotReached {pose}"),
             FitError::PendantMoved { from_pose, .. } => write!(f, "PendantMoved {from_pose}"),
+            FitError::PendantCreeping { .. } => f.write_str("PendantCreeping"),
+            FitError::RevisitDisagrees { pose, revisit, .. } => {
+                write!(f, "RevisitDisagrees {pose} {revisit}")
+            }
             FitError::CapturesDisagree { worst_pose, .. } => {
                 write!(f, "CapturesDisagree {worst_pose}")
             }
@@ -373,6 +445,8 @@ impl fmt::Display for Terse<'_, StageError> {
             StageError::InconsistentReading => f.write_str("InconsistentReading"),
             StageError::Unresolvable => f.write_str("Unresolvable"),
             StageError::NonFiniteCommand => f.write_str("NonFiniteCommand"),
+            StageError::TooFewHeadings { got } => write!(f, "TooFewHeadings {got}"),
+            StageError::NotTurnedOnTheSpot { .. } => f.write_str("NotTurnedOnTheSpot"),
         }
     }
 }

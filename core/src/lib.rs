@@ -55,7 +55,7 @@ pub use session::BiasSource;
 pub use session::{
     solve, SessionError, SessionOutcome, SessionReadings, SessionSolution, StageTemperatures,
 };
-pub use stage0::Reversal;
+pub use stage0::{BenchTurns, BenchTurnsAt};
 pub use stage1::{AxisOneTurn, Stage1Result};
 pub use stage2::{
     covariance_bound, fit, FitConfig, FitResult, PoseReading, SigmaSource, Stage2Model,

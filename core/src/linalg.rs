@@ -138,6 +138,15 @@ impl<T: Real, const N: usize> Square<T, N> {
     }
 }
 
+/// `A⁻¹` and `log det A` of a symmetric positive-definite block, from its Cholesky
+/// factor (`A⁻¹ = L⁻ᵀ·L⁻¹`), or `None` if it is not positive definite.
+pub fn spd_inverse<T: Real, const N: usize>(a: &Square<T, N>) -> Option<(Square<T, N>, T)> {
+    let l = a.cholesky()?;
+    let log_det = (0..l.n).fold(T::zero(), |s, i| s + T::lit(2.0) * l.m[i][i].ln());
+    let li = l.transpose().upper_inverse()?;
+    Some((li.mul(&li.transpose()), log_det))
+}
+
 /// `log det A` of a symmetric positive-definite block, from its Cholesky factor.
 pub fn log_det<T: Real, const N: usize>(a: &Square<T, N>) -> Option<T> {
     let l = a.cholesky()?;

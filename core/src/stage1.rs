@@ -59,6 +59,9 @@ pub struct Stage1Result<T> {
     pub delta_theta2_rad: T,
     /// Whether a sensor x bias (from stage 0) was removed. If not, Δθ2 includes it.
     pub bias_x_known: bool,
+    /// Joint 2's commanded angle c2 during the half turn (rad): Δθ2 is measured there,
+    /// with joint 2's transmission error at that angle in it.
+    pub j2_rad: T,
     /// Covariance of (α, β, Δθ2, bias x, bias y) in units of one reading's noise
     /// variance: the readings' noise and stage 0's, propagated through the model.
     pub covariance: [[T; 5]; 5],
@@ -200,6 +203,7 @@ impl<T: Real> AxisOneTurn<T> {
             core::array::from_fn(|j| covariance[i][j] - with_readings_only[i][j])
         });
         Ok(Stage1Result {
+            j2_rad: self.j2_rad,
             base_tilt: BaseTilt {
                 alpha_rad: p[0],
                 beta_rad: p[1],
@@ -350,7 +354,7 @@ mod properties {
     //! formulas are exact, not small-angle), and the closed form's covariance.
     use super::*;
     use crate::model::{rot_x, rot_y, rot_z, JointAxis};
-    use crate::stage0::Reversal;
+    use crate::stage0::BenchTurns;
     use crate::testing::isclose;
     use proptest::prelude::*;
 
@@ -366,10 +370,10 @@ mod properties {
         ) {
             let sensor = SensorModel::new(c, Tilt::new(bx, by));
             let surface = rot_y(ty) * rot_x(tx) * rot_z(yaw);
-            let rev = Reversal {
-                first: sensor.reading(&surface),
-                second: sensor.reading(&(surface * rot_z(core::f64::consts::PI))),
-            };
+            let rev = BenchTurns::half_turn(
+                sensor.reading(&surface),
+                sensor.reading(&(surface * rot_z(core::f64::consts::PI))),
+            );
             let b = rev.bias(c, 0.5).unwrap();
             prop_assert!((b.x_rad - bx).abs() < 1e-14 && (b.y_rad - by).abs() < 1e-14);
         }

@@ -7,7 +7,7 @@
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::{rot_x, rot_y, rot_z, BaseTilt, Convention, Tilt};
-use zerocal_core::stage0::Reversal;
+use zerocal_core::stage0::BenchTurns;
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_sim::{Noise, SimInclinometer, SimRobot};
 
@@ -31,10 +31,10 @@ fn stage0_and_stage1_are_exact_in_3d() {
         let surface = rot_y(rng.gen_range(-0.09..0.09))
             * rot_x(rng.gen_range(-0.09..0.09))
             * rot_z(rng.gen_range(-3.1..3.1));
-        let rev = Reversal {
-            first: sensor.exact(&surface),
-            second: sensor.exact(&(surface * rot_z(std::f64::consts::PI))),
-        };
+        let rev = BenchTurns::half_turn(
+            sensor.exact(&surface),
+            sensor.exact(&(surface * rot_z(std::f64::consts::PI))),
+        );
         let found = rev.bias(conv, RANGE_RAD).expect("in range");
         worst_bias = worst_bias
             .max((found.x_rad - bias.x_rad).to_degrees().abs())

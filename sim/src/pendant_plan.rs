@@ -18,6 +18,7 @@ pub fn plan_for(profile: &Profile, config: &PlanConfig<f64>) -> Result<Plan<f64>
         sensor: SensorModel::new(Convention::Axis, Tilt::default()),
         masses: profile.mass_model(),
         y_weight: zerocal_core::stage2::MEMS_Y_WEIGHT,
+        stage1_j2_rad: profile.stage1_joints_rad[1],
         ..Stage2Model::default()
     };
     let mut config = *config;
@@ -25,6 +26,17 @@ pub fn plan_for(profile: &Profile, config: &PlanConfig<f64>) -> Result<Plan<f64>
     for k in 0..WRIST_JOINTS {
         let j = &profile.joints[k + 2];
         config.limits_rad[k] = (j.min_deg.to_radians(), j.max_deg.to_radians());
+    }
+    // Joint 2 swings in stage 2 where the fit models its transmission error.
+    if config.extras.transmission != 0 {
+        let j2 = &profile.joints[1];
+        config.joint2_range_rad = zerocal_core::plan::joint2_range(
+            profile.stage1_joints_rad[1],
+            (j2.min_deg.to_radians(), j2.max_deg.to_radians()),
+            zerocal_core::plan::JOINT2_SWING_DEG.to_radians(),
+        );
+        config.min_flange_height_m = Some(zerocal_core::plan::shoulder_height_m(&profile.arm));
+        config.revisits = zerocal_core::plan::SESSION_REVISITS;
     }
     let mut pool = vec![Candidate::default(); config.candidates];
     plan(&model, &config, &mut pool)
@@ -41,8 +53,8 @@ pub enum Method {
     Compensated,
 }
 
-/// Stage-2 poses the pendant plans by default: the procedure's own figure.
-pub const DEFAULT_POSES: usize = zerocal_procedure::PENDANT_PLAN_POSES;
+/// Stage-2 poses a session plans by default (distinct; the revisits come on top).
+pub const DEFAULT_POSES: usize = zerocal_core::plan::SESSION_POSES;
 
 /// The pendant's plan and fit settings for `profile` under `method`, with `poses`
 /// stage-2 poses.
@@ -70,6 +82,7 @@ pub fn setup(
     };
     let config = PlanConfig {
         poses,
+        candidates: zerocal_core::plan::SESSION_POOL,
         extras: fit.extras,
         noise_sigma_rad: fit.sensor_noise_rad,
         window_rad: PLAN_WINDOW_DEG.to_radians(),

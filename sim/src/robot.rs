@@ -92,10 +92,23 @@ pub struct RobotSpec {
     /// The same where the two axes are parallel (J2-J3; J3-J4 on a UR): UR's
     /// calibrations give 0.07-0.7° between J2-J3-J4, the FANUC data 0.010-0.016°.
     pub misalignment_parallel_deg: (f64, f64),
-    /// Transmission error per joint, peak to peak over a turn (deg): a sum of harmonics
-    /// 2-4 of the joint angle with drawn phases. The FANUC data: J2, J3, J5
-    /// 0.03-0.06° over their swept ranges.
+    /// Transmission error per joint, peak to peak over a turn (deg): harmonics 1 and 2
+    /// of the joint angle (each of drawn weight and phase), harmonics 3 and 4 up to
+    /// [`RobotSpec::higher_harmonic_share`] of the larger of those, scaled together to
+    /// a peak to peak drawn in this range, and a ripple many times a turn
+    /// ([`RobotSpec::ripple_deg`]). The FANUC data: J2, J3, J5 0.03-0.06° over their
+    /// swept ranges, once and twice per turn.
     pub transmission_pp_deg: (f64, f64),
+    /// Harmonics 3 and 4 of a joint's transmission error, each up to this share of the
+    /// larger of harmonics 1 and 2: a stated range (no public spectrum of a robot
+    /// reducer's error beyond twice a turn was found), the budget's
+    /// [`zerocal_core::stage2::transmission::HIGHER_HARMONIC_SHARE`].
+    pub higher_harmonic_share: f64,
+    /// A ripple of each reducer many times a turn (20-60 cycles: a cycloid's pins, a
+    /// strain wave's teeth seen through the output), amplitude up to this (deg): a stated
+    /// range, below one capture's noise; the fit cannot follow it and need not (the
+    /// poses sample it at unrelated phases).
+    pub ripple_deg: f64,
     /// Once-per-turn error of joints 4 and 6, peak to peak (deg): the FANUC data's
     /// 0.023-0.027°.
     pub once_per_turn_pp_deg: (f64, f64),
@@ -116,6 +129,8 @@ impl RobotSpec {
         misalignment_perpendicular_deg: (0.01, 0.05),
         misalignment_parallel_deg: (0.01, 0.5),
         transmission_pp_deg: (0.005, 0.03),
+        higher_harmonic_share: zerocal_core::stage2::transmission::HIGHER_HARMONIC_SHARE,
+        ripple_deg: 0.001,
         once_per_turn_pp_deg: (0.005, 0.025),
         wrist_sag_full_lever_deg: (0.01, 0.03),
     };
@@ -164,8 +179,8 @@ pub struct Harmonic {
     pub phase_rad: f64,
 }
 
-/// Harmonics 2, 3, 4 and the once-per-turn term.
-pub const TRANSMISSION_TERMS: usize = 4;
+/// Harmonics 1-4, the ripple and the once-per-turn term of joints 4 and 6.
+pub const TRANSMISSION_TERMS: usize = 6;
 
 impl RobotErrors {
     /// None at all.
@@ -369,32 +384,47 @@ pub fn peak_to_peak_rad(terms: &[Harmonic]) -> f64 {
     hi - lo
 }
 
-/// Joint `k`'s transmission error: harmonics 2-4 with drawn weights and phases, scaled
-/// to a drawn peak to peak; on joints 4 and 6 (indices 3, 5) a once-per-turn term too.
+/// Joint `k`'s transmission error: harmonics 1 and 2 with drawn weights and phases,
+/// harmonics 3 and 4 up to [`RobotSpec::higher_harmonic_share`] of the larger, all
+/// scaled to a drawn peak to peak; a ripple of 20-60 cycles a turn; on joints 4 and 6
+/// (indices 3, 5) a once-per-turn term too (the wrist twisting under gravity).
 fn draw_transmission(
     k: usize,
     spec: &RobotSpec,
     rng: &mut ChaCha8Rng,
 ) -> [Harmonic; TRANSMISSION_TERMS] {
     let mut terms = [Harmonic::default(); TRANSMISSION_TERMS];
-    for (h, order) in terms.iter_mut().zip([2.0, 3.0, 4.0]) {
-        *h = Harmonic {
+    let phase = |rng: &mut ChaCha8Rng| rng.gen_range(0.0..core::f64::consts::TAU);
+    let low: [f64; 2] = [rng.gen_range(0.2..=1.0), rng.gen_range(0.2..=1.0)];
+    let top = low[0].max(low[1]);
+    for (i, order) in [1.0, 2.0, 3.0, 4.0].into_iter().enumerate() {
+        let weight = if i < 2 {
+            low[i]
+        } else {
+            top * rng.gen_range(0.0..=spec.higher_harmonic_share)
+        };
+        terms[i] = Harmonic {
             order,
-            amplitude_rad: rng.gen_range(0.2..=1.0),
-            phase_rad: rng.gen_range(0.0..core::f64::consts::TAU),
+            amplitude_rad: weight,
+            phase_rad: phase(rng),
         };
     }
     let (lo, hi) = spec.transmission_pp_deg;
-    let scale = deg_to_rad(rng.gen_range(lo..=hi)) / peak_to_peak_rad(&terms[..3]);
-    for h in &mut terms[..3] {
+    let scale = deg_to_rad(rng.gen_range(lo..=hi)) / peak_to_peak_rad(&terms[..4]);
+    for h in &mut terms[..4] {
         h.amplitude_rad *= scale;
     }
+    terms[4] = Harmonic {
+        order: f64::from(rng.gen_range(20u8..=60)),
+        amplitude_rad: deg_to_rad(rng.gen_range(0.0..=spec.ripple_deg)),
+        phase_rad: phase(rng),
+    };
     if k == 3 || k == 5 {
         let (lo, hi) = spec.once_per_turn_pp_deg;
-        terms[3] = Harmonic {
+        terms[5] = Harmonic {
             order: 1.0,
             amplitude_rad: 0.5 * deg_to_rad(rng.gen_range(lo..=hi)),
-            phase_rad: rng.gen_range(0.0..core::f64::consts::TAU),
+            phase_rad: phase(rng),
         };
     }
     terms

@@ -8,7 +8,7 @@ use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::{rot_x, rot_y, rot_z, Convention, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::session::{BiasSource, SessionReadings, SessionSolution};
-use zerocal_core::stage0::Reversal;
+use zerocal_core::stage0::BenchTurns;
 use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
 use zerocal_core::stage2::{PoseReading, Stage2Model};
 use zerocal_core::{FitConfig, FitResult, StageError};
@@ -95,7 +95,7 @@ pub struct SimSession {
     /// The sensor (true bias, noise).
     pub sensor: SimInclinometer,
     /// Stage-0 readings, if run.
-    pub stage0: Option<Reversal<f64>>,
+    pub stage0: Option<BenchTurns<f64>>,
     /// Stage-1 readings.
     pub stage1: AxisOneTurn<f64>,
     /// Stage-2 readings.
@@ -195,10 +195,10 @@ impl SimSession {
             let surface = rot_y(deg_to_rad(uniform(rng, 2.0)))
                 * rot_x(deg_to_rad(uniform(rng, 2.0)))
                 * rot_z(uniform(rng, std::f64::consts::PI));
-            Reversal {
-                first: sensor.read(&surface),
-                second: sensor.read(&(surface * rot_z(std::f64::consts::PI))),
-            }
+            BenchTurns::half_turn(
+                sensor.read(&surface),
+                sensor.read(&(surface * rot_z(std::f64::consts::PI))),
+            )
         });
         // The paper's stage 1: joint 2 commanded a little away from 0 so the readings
         // are not at 0; it stays there for stage 2 (axis 1 goes back to its mark).
@@ -244,9 +244,7 @@ impl SimSession {
             arm: self.robot.arm,
             masses: None,
             brackets: &crate::NO_BRACKETS,
-            bias: self
-                .stage0
-                .map_or(BiasSource::Unknown, BiasSource::Reversal),
+            bias: self.stage0.map_or(BiasSource::Unknown, BiasSource::Bench),
             stage1: self.stage1,
             poses: &self.poses,
             capture_index: None,

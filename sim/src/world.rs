@@ -22,7 +22,7 @@ use zerocal_core::bracket::{
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::session::{BiasSource, BudgetInputs, SessionReadings, StageTemperatures};
-use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage0::{BenchTurns, BenchTurnsAt, BENCH_HEADINGS};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{PoseReading, MEMS_CAPTURE_NOISE_DEG, MEMS_RANGE_DEG};
 use zerocal_profile::Profile;
@@ -63,6 +63,13 @@ pub enum SessionFault {
         pose: usize,
         /// The turn (deg).
         deg: f64,
+    },
+    /// The flange bracket creeps (a clamp not quite tight): from stage 2's first
+    /// capture on, its seat turns a little further at each capture about a direction
+    /// drawn in the pendant's plane (and a third as much about its normal).
+    Creeping {
+        /// The turn per capture (deg).
+        deg_per_capture: f64,
     },
 }
 
@@ -117,6 +124,11 @@ pub struct WorldConfig {
     pub chip_rotation_deg: f64,
     /// The stage-0 bench's tilt, ± this about each horizontal axis (deg).
     pub bench_tilt_deg: f64,
+    /// How many headings the pendant is read at on the bench (stage 0, the closing
+    /// readings, the brackets' level step): [`BENCH_HEADINGS`] turned by hand about a
+    /// quarter turn each (each turn off by up to ±[`HAND_TURN_SPREAD_DEG`]), or 2, a half
+    /// turn (off by up to `half_turn_error_deg`).
+    pub bench_headings: usize,
     /// Stage 0's half turn off 180° by up to ± this (deg), turned by hand without a jig.
     pub half_turn_error_deg: f64,
 }
@@ -171,6 +183,7 @@ impl WorldConfig {
             } else {
                 0.0
             },
+            stage1_joints_rad: None,
         }
     }
 
@@ -196,6 +209,7 @@ impl WorldConfig {
             fault: SessionFault::None,
             chip_rotation_deg: 0.0,
             bench_tilt_deg: 2.0,
+            bench_headings: BENCH_HEADINGS,
             half_turn_error_deg: 0.0,
         }
     }
@@ -256,13 +270,13 @@ pub struct RealSession {
     /// The sensor unit (truth: its errors).
     pub sensor: Scl3300Unit,
     /// Stage 0's reversal.
-    pub stage0: Reversal<f64>,
+    pub stage0: BenchTurns<f64>,
     /// Stage 0's mean temperature (°C).
     pub stage0_temperature_c: f64,
     /// Stage 1's mean temperature (°C).
     pub stage1_temperature_c: f64,
     /// The closing reversal on the bench after stage 2.
-    pub closing: ClosingReversal<f64>,
+    pub closing: BenchTurnsAt<f64>,
     /// Stage 1's half turn.
     pub stage1: AxisOneTurn<f64>,
     /// Stage 2's captures.
@@ -323,9 +337,37 @@ const SIM_CALIBRATION_DATE: u32 = 20_261_127;
 /// horizontal axis), the box, and the temperature.
 struct BracketBench<'a> {
     chip_in_box: &'a Rotation3<f64>,
+    headings: usize,
     tilt_deg: f64,
     seat_deg: f64,
     temperature_c: f64,
+}
+
+/// How far each turn between two of the bench's headings, made by hand about a quarter
+/// turn (or a third, for three), may be off that (± deg): a stated figure for a turn
+/// judged by eye; the solve finds the turns, so any figure would do.
+pub const HAND_TURN_SPREAD_DEG: f64 = 30.0;
+
+/// The headings (rad, the first at 0) of `count` bench readings turned by hand: two a
+/// half turn off by up to ±`half_turn_error_deg`; more, spread over a turn, each off
+/// its share by up to ±[`HAND_TURN_SPREAD_DEG`].
+fn bench_headings(count: usize, half_turn_error_deg: f64) -> impl Fn(&mut ChaCha8Rng) -> Vec<f64> {
+    move |rng: &mut ChaCha8Rng| {
+        let pi = core::f64::consts::PI;
+        if count <= 2 {
+            return vec![0.0, pi + deg_to_rad(uniform(rng, half_turn_error_deg))];
+        }
+        (0..count)
+            .map(|k| {
+                if k == 0 {
+                    0.0
+                } else {
+                    2.0 * pi * k as f64 / count as f64
+                        + deg_to_rad(uniform(rng, HAND_TURN_SPREAD_DEG))
+                }
+            })
+            .collect()
+    }
 }
 
 /// A bracket's calibration as docs/bracket-calibration.md describes it, with this
@@ -347,9 +389,7 @@ fn calibrate_bracket(
     let plate = rot_y(deg_to_rad(uniform(rng, bench.tilt_deg)))
         * rot_x(deg_to_rad(uniform(rng, bench.tilt_deg)))
         * rot_z(uniform(rng, core::f64::consts::PI));
-    let turn = |rng: &mut ChaCha8Rng| {
-        rot_z(core::f64::consts::PI + deg_to_rad(uniform(rng, REFERENCE_TURN_TOLERANCE_DEG)))
-    };
+    let headings = bench_headings(bench.headings, REFERENCE_TURN_TOLERANCE_DEG);
     let bracket = rot_x(made[0]) * rot_y(made[1]) * rot_z(made[2]);
     // Each reading the mean of the calibration's captures.
     let mut read = |r: &Rotation3<f64>, rng: &mut ChaCha8Rng| {
@@ -363,16 +403,17 @@ fn calibrate_bracket(
         let n = CAPTURES_PER_READING as f64;
         Tilt::new(x / n, y / n)
     };
-    let pendant = Reversal {
-        first: read(&plate, rng),
-        second: read(&(plate * turn(rng)), rng),
+    let mut turned = |on: &Rotation3<f64>, rng: &mut ChaCha8Rng| {
+        let taken: Vec<Tilt<f64>> = headings(rng)
+            .iter()
+            .map(|h| read(&(plate * rot_z(*h) * on), rng))
+            .collect();
+        BenchTurns::from_readings(&taken)
     };
+    let pendant = turned(&Rotation3::identity(), rng)?;
     let seat_on_reference = small_rotation(rng, bench.seat_deg).1;
     let seated = bracket * seat_on_reference;
-    let in_bracket = Reversal {
-        first: read(&(plate * seated), rng),
-        second: read(&(plate * turn(rng) * seated), rng),
-    };
+    let in_bracket = turned(&seated, rng)?;
     let noise = deg_to_rad(MEMS_CAPTURE_NOISE_DEG);
     let (rotation, u) = calibrate(
         &pendant,
@@ -389,14 +430,14 @@ fn calibrate_bracket(
         rot_z(half + deg_to_rad(uniform(rng, FENCE_CONTACT_TOLERANCE_DEG)))
     };
     let pi = core::f64::consts::PI;
-    let pendant_tilted = Reversal {
-        first: read(&(sine * at_fence(rng, 0.0)), rng),
-        second: read(&(sine * at_fence(rng, pi)), rng),
-    };
-    let bracket_tilted = Reversal {
-        first: read(&(sine * at_fence(rng, 0.0) * seated), rng),
-        second: read(&(sine * at_fence(rng, pi) * seated), rng),
-    };
+    let pendant_tilted = BenchTurns::half_turn(
+        read(&(sine * at_fence(rng, 0.0)), rng),
+        read(&(sine * at_fence(rng, pi)), rng),
+    );
+    let bracket_tilted = BenchTurns::half_turn(
+        read(&(sine * at_fence(rng, 0.0) * seated), rng),
+        read(&(sine * at_fence(rng, pi) * seated), rng),
+    );
     let bias = pendant
         .bias(Convention::Axis, deg_to_rad(MEMS_RANGE_DEG))
         .ok()?;
@@ -444,7 +485,7 @@ impl RealSession {
             arm: profile.arm,
             masses: profile.mass_model(),
             brackets: &self.brackets,
-            bias: BiasSource::Reversal(self.stage0),
+            bias: BiasSource::Bench(self.stage0),
             stage1: self.stage1,
             poses: &self.poses,
             temperatures: StageTemperatures {
@@ -590,20 +631,33 @@ impl RealSession {
             };
 
         // Stage 0: a bench tilted by up to `bench_tilt_deg`, the pendant at any heading,
-        // turned half a turn on the spot (off by up to `half_turn_error_deg`).
+        // turned on the spot by hand between readings.
         let surface = rot_y(deg_to_rad(uniform(&mut rng, world.bench_tilt_deg)))
             * rot_x(deg_to_rad(uniform(&mut rng, world.bench_tilt_deg)))
             * rot_z(uniform(&mut rng, core::f64::consts::PI));
-        let half_turn = |rng: &mut ChaCha8Rng| {
-            rot_z(core::f64::consts::PI + deg_to_rad(uniform(rng, world.half_turn_error_deg)))
-        };
-        let turned = surface * half_turn(&mut rng);
-        let c0 = take(&mut sensor, &surface, timeline.stage0_s[0], &mut rng);
-        let c1 = take(&mut sensor, &turned, timeline.stage0_s[1], &mut rng);
-        let stage0 = Reversal {
-            first: c0.reading,
-            second: c1.reading,
-        };
+        let headings = bench_headings(world.bench_headings, world.half_turn_error_deg);
+        type Take<'t> =
+            dyn FnMut(&mut Scl3300Unit, &Rotation3<f64>, f64, &mut ChaCha8Rng) -> UnitCapture + 't;
+        let on_bench =
+            |take: &mut Take<'_>, sensor: &mut Scl3300Unit, t0_s: f64, rng: &mut ChaCha8Rng| {
+                let mut taken = Vec::new();
+                let mut temps = Vec::new();
+                for (k, h) in headings(rng).iter().enumerate() {
+                    let c = take(sensor, &(surface * rot_z(*h)), t0_s + 30.0 * k as f64, rng);
+                    taken.push(c.reading);
+                    temps.push(c.temperature_c);
+                }
+                let temperature_c = temps.iter().sum::<f64>() / temps.len().max(1) as f64;
+                (
+                    BenchTurns::from_readings(&taken).unwrap_or(BenchTurns::half_turn(
+                        taken.first().copied().unwrap_or_default(),
+                        taken.get(1).copied().unwrap_or_default(),
+                    )),
+                    temperature_c,
+                )
+            };
+        let (stage0, stage0_temperature_c) =
+            on_bench(&mut take, &mut sensor, timeline.stage0_s[0], &mut rng);
 
         // The brackets: each as made (fixed), seated anew at each clip-on, and what the
         // session knows of them.
@@ -630,6 +684,7 @@ impl RealSession {
                     let mut cal = |b: &[f64; 3], id: &str, rng: &mut ChaCha8Rng| {
                         let bench = BracketBench {
                             chip_in_box: &chip_in_box,
+                            headings: world.bench_headings,
                             tilt_deg: world.plate_tilt_deg,
                             seat_deg: world.seat_repeatability_deg,
                             temperature_c: t_c,
@@ -692,6 +747,16 @@ impl RealSession {
 
         // Stage 2.
         let mut poses = Vec::with_capacity(plan.len() * approaches.len());
+        // A creeping bracket turns about a direction drawn once (in the pendant's plane,
+        // a third as much about its normal); drawn only for that fault, so every other
+        // world draws the same numbers as before.
+        let creep_axis = match world.fault {
+            SessionFault::Creeping { .. } => {
+                let a = rng.gen_range(0.0..core::f64::consts::TAU);
+                Vector3::new(a.cos(), a.sin(), 1.0 / 3.0)
+            }
+            _ => Vector3::z(),
+        };
         let mut previous = q1;
         let mut t_s = timeline.stage2_start_s;
         for (index, q) in plan.iter().enumerate() {
@@ -725,6 +790,14 @@ impl RealSession {
                     SessionFault::Knocked { pose, deg } if index >= pose => {
                         seat = seat * rot_x(deg_to_rad(deg)) * rot_y(deg_to_rad(deg));
                     }
+                    SessionFault::Creeping { deg_per_capture } => {
+                        let turned = deg_to_rad(deg_per_capture) * poses.len() as f64;
+                        seat = seat
+                            * nalgebra::Rotation3::from_axis_angle(
+                                &nalgebra::Unit::new_normalize(creep_axis),
+                                turned,
+                            );
+                    }
                     _ => {}
                 }
                 let r = robot.arm.flange_sensor(&robot.base_tilt, &reached) * seat;
@@ -738,23 +811,17 @@ impl RealSession {
             }
         }
 
-        // The closing reversal on the same bench, two minutes after the last capture.
-        let t_end = t_s + 120.0;
-        let turned = surface * half_turn(&mut rng);
-        let e0 = take(&mut sensor, &surface, t_end, &mut rng);
-        let e1 = take(&mut sensor, &turned, t_end + 30.0, &mut rng);
-        let closing = ClosingReversal {
-            reversal: Reversal {
-                first: e0.reading,
-                second: e1.reading,
-            },
-            temperature_c: Some(0.5 * (e0.temperature_c + e1.temperature_c)),
+        // The closing readings on the same bench, two minutes after the last capture.
+        let (closing_turns, closing_c) = on_bench(&mut take, &mut sensor, t_s + 120.0, &mut rng);
+        let closing = BenchTurnsAt {
+            turns: closing_turns,
+            temperature_c: Some(closing_c),
         };
         RealSession {
             robot,
             sensor,
             stage0,
-            stage0_temperature_c: 0.5 * (c0.temperature_c + c1.temperature_c),
+            stage0_temperature_c,
             stage1_temperature_c,
             closing,
             stage1,
@@ -806,21 +873,21 @@ impl RealSession {
             "# zerocal pendant export: read it with 'zerocal session'"
         );
         let _ = writeln!(out, "# robot {robot} convention axis");
-        let reversal = |key: &str, r: &Reversal<f64>, t: Option<f64>| {
-            format!(
-                "# {key} first {} second {} temp_c {}",
-                pair(&r.first),
-                pair(&r.second),
-                t.map_or("none".to_owned(), |t| format!("{t:.2}"))
-            )
+        let bench = |key: &str, r: &BenchTurnsAt<f64>| {
+            let mut line = zerocal_procedure::log::Line::new();
+            // A bench line of four headings fits a line: cannot fail.
+            let _ = zerocal_procedure::log::write_bench(&mut line, key, r);
+            line.to_string()
         };
         let _ = writeln!(
             out,
             "{}",
-            reversal(
-                "stage0_reversal_deg",
-                &self.stage0,
-                Some(self.stage0_temperature_c)
+            bench(
+                zerocal_procedure::log::STAGE0_BENCH_KEY,
+                &BenchTurnsAt {
+                    turns: self.stage0,
+                    temperature_c: Some(self.stage0_temperature_c),
+                }
             )
         );
         if !with_stage1 {
@@ -840,11 +907,7 @@ impl RealSession {
         let _ = writeln!(
             out,
             "{}",
-            reversal(
-                "closing_reversal_deg",
-                &self.closing.reversal,
-                self.closing.temperature_c
-            )
+            bench(zerocal_procedure::log::CLOSING_BENCH_KEY, &self.closing)
         );
         // The brackets' lines in the pendant's own format.
         for m in BracketMount::ALL {

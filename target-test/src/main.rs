@@ -45,7 +45,7 @@ mod vectors {
     use crate::Case;
     use zerocal_core::model::{Convention, Tilt};
     use zerocal_core::session::BiasSource;
-    use zerocal_core::stage0::Reversal;
+    use zerocal_core::stage0::BenchTurns;
     use zerocal_core::stage1::AxisOneTurn;
     use zerocal_core::stage2::PoseReading;
 
@@ -167,6 +167,7 @@ fn run(case: &Case) {
             hprintln!("case {} fit {:?} {:?} {:?} {:?}", name, d3, d4, d5, d6);
         }
         Err(SessionError::Stage0(e)) => hprintln!("case {} stage0 error {}", name, Terse(&e)),
+        Err(SessionError::Closing(e)) => hprintln!("case {} closing error {}", name, Terse(&e)),
         Err(SessionError::Stage1(e)) => hprintln!("case {} stage1 error {}", name, Terse(&e)),
         Err(SessionError::Stage2(e)) => hprintln!("case {} fit error {}", name, Terse(&e)),
         Err(SessionError::Warmed { .. }) => hprintln!("case {} session error Warmed", name),

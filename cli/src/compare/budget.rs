@@ -77,11 +77,11 @@ pub(super) fn difference_budget(i: &Inputs<'_>) -> DifferenceBudget {
         standard_uncertainty_deg: deg(*i.type_a_rad),
     }];
     // Both stage-0 biases, through the offsets' response to the bias stage 0 fixes.
-    let reference_tilt = i.reference.export.stage0.map_or(0.0, |s| {
-        let dx = 0.5 * (s.reversal.first.x_rad - s.reversal.second.x_rad);
-        let dy = 0.5 * (s.reversal.first.y_rad - s.reversal.second.y_rad);
-        dx.hypot(dy)
-    });
+    let reference_tilt = i
+        .reference
+        .export
+        .stage0
+        .map_or(0.0, |s| s.turns.half_turn_tilt_rad());
     let tolerance = i.options.half_turn_tolerance_deg;
     let u_bias = reversal_u_rad(reference_tilt, tolerance)
         .hypot(reversal_u_rad(i.bench_tilt_now_rad, tolerance));

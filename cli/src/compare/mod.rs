@@ -173,15 +173,11 @@ fn pairs(reference: &[PoseReading<f64>], now: &[PoseReading<f64>]) -> (Vec<Pair>
 fn stage0_bias(now: &ExportContents) -> Result<(Tilt<f64>, Option<f64>, f64), CompareError> {
     let s0 = now.stage0.ok_or(CompareError::NoStage0)?;
     let bias = s0
-        .reversal
+        .turns
         .bias(Convention::Axis, MEMS_RANGE_DEG.to_radians())
         .map_err(|e| CompareError::Stage0(e.to_string()))?;
-    // The bench's tilt: half the readings' difference, for the half-turn term.
-    let d = Tilt::new(
-        0.5 * (s0.reversal.first.x_rad - s0.reversal.second.x_rad),
-        0.5 * (s0.reversal.first.y_rad - s0.reversal.second.y_rad),
-    );
-    let bench_tilt_rad = d.x_rad.hypot(d.y_rad);
+    // The bench's tilt where a half turn was assumed, for the half-turn term.
+    let bench_tilt_rad = s0.turns.half_turn_tilt_rad();
     Ok((bias, s0.temperature_c, bench_tilt_rad))
 }
 

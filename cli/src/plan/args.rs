@@ -21,10 +21,20 @@ use zerocal_profile::Profile;
 /// Arguments of `zerocal plan`.
 #[derive(Args, Debug, Clone)]
 pub struct PlanArgs {
-    /// Poses to plan (`zerocal_core::plan::MAX_POSES` at most; the SCL3300's model
-    /// needs 24 for its 13-17 parameters: docs/error-budget.md). Range: [4, 48].
-    #[arg(long, default_value_t = zerocal_sim::montecarlo::DEFAULT_POSES, value_parser = CountIn::<usize>::new(4, 48))]
+    /// Distinct poses to plan (the revisits come on top; `zerocal_core::plan::MAX_POSES`
+    /// in all at most; the SCL3300's model with the reducers' terms needs 40 for its
+    /// 45-51 parameters: docs/error-budget.md). Range: [4, 45].
+    #[arg(long, default_value_t = zerocal_core::plan::SESSION_POSES, value_parser = CountIn::<usize>::new(4, 45))]
     pub poses: usize,
+    /// How far stage 2 swings joint 2 either side of its stage-1 angle, within its
+    /// limits (deg): its transmission error is then told from its zero; 0 holds joint 2
+    /// where stage 1 had it (its error there is then budgeted whole). Range: [0, 120] deg.
+    #[arg(long, default_value_t = zerocal_core::plan::JOINT2_SWING_DEG, value_parser = RealIn::closed(0.0, 120.0, "deg"))]
+    pub joint2_swing_deg: f64,
+    /// Poses visited again later in the session, so that a bracket creeping on the
+    /// flange shows. Range: [0, 3].
+    #[arg(long, default_value_t = zerocal_core::plan::SESSION_REVISITS, value_parser = CountIn::<usize>::new(0, 3))]
+    pub revisits: usize,
     /// Sensor window: readings must stay within ±W degrees. Range: (0, 90] deg.
     #[arg(long, default_value_t = 10.0, value_name = "W", value_parser = RealIn::above(0.0, 90.0, "deg"))]
     pub window_deg: f64,
@@ -49,7 +59,7 @@ pub struct PlanArgs {
     #[arg(long, default_value_t = 1, value_parser = SEED)]
     pub seed: u64,
     /// Feasible candidate poses to choose from (at least --poses). Range: [4, 65535].
-    #[arg(long, default_value_t = 256, value_parser = CountIn::<usize>::new(4, 65_535))]
+    #[arg(long, default_value_t = zerocal_core::plan::SESSION_POOL, value_parser = CountIn::<usize>::new(4, 65_535))]
     pub candidates: usize,
     /// Optimality criterion: a (A-optimal, least sum of the four predicted variances)
     /// or d (D-optimal, greatest log det JᵀJ).
@@ -163,7 +173,26 @@ impl PlanArgs {
             }
         }
         let q1 = profile.stage1_joints_rad;
+        let j2 = timing::planner_limit(
+            profile,
+            1,
+            (profile.joints[1].min_deg, profile.joints[1].max_deg),
+        );
+        let swings = self.convention == Convention::Axis;
+        let joint2_range_rad = zerocal_core::plan::joint2_range(
+            q1[1],
+            (deg_to_rad(j2.0), deg_to_rad(j2.1)),
+            if swings {
+                deg_to_rad(self.joint2_swing_deg)
+            } else {
+                0.0
+            },
+        );
         Ok(PlanConfig {
+            joint2_range_rad,
+            min_flange_height_m: joint2_range_rad
+                .map(|_| zerocal_core::plan::shoulder_height_m(&profile.arm)),
+            revisits: if swings { self.revisits } else { 0 },
             poses: self.poses,
             window_rad: deg_to_rad(self.window_deg),
             margin_rad: deg_to_rad(self.margin_deg),

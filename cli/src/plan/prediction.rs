@@ -82,6 +82,7 @@ pub fn predicted_k2_deg(
             bracket_yaw_u_rad: [BRACKET_YAW_TOLERANCE_DEG.to_radians() / 3f64.sqrt(); 2],
             repeatability_rad: DEFAULT_REPEATABILITY_DEG.to_radians(),
             lost_motion_rad: DEFAULT_LOST_MOTION_DEG.to_radians(),
+            stage1_joints_rad: Some(profile.stage1_joints_rad),
         },
     )
     .map_err(|e| CliError::Refused(format!("plan refused: {e}")))?;
@@ -97,7 +98,14 @@ pub fn correlations(
     extras: Extras,
     poses_rad: &[[f64; JOINTS]],
 ) -> Result<Correlations, CliError> {
-    let gram = information(model, extras, poses_rad, &[0.0; WRIST_JOINTS]).gram();
+    let gram = information(
+        model,
+        extras,
+        poses_rad,
+        &[0.0; WRIST_JOINTS],
+        zerocal_core::stage2::MEMS_CAPTURE_NOISE_DEG.to_radians(),
+    )
+    .gram();
     let singular = || CliError::Refused("plan refused: its information matrix is singular".into());
     let l = gram.cholesky().ok_or_else(singular)?;
     let ui = l.transpose().upper_inverse().ok_or_else(singular)?;

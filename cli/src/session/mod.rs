@@ -38,7 +38,7 @@ use zerocal_core::session::{
     DEFAULT_HALF_TURN_TOLERANCE_DEG, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
     SESSION_JOINTS, STAGE1_JOINT2_TOLERANCE_DEG,
 };
-use zerocal_core::stage0::ClosingReversal;
+use zerocal_core::stage0::BenchTurnsAt;
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{FitConfig, PoseReading};
 use zerocal_core::Tilt;
@@ -125,11 +125,11 @@ pub struct ExportContents {
     /// `# stage1_readings_deg`.
     pub stage1: Option<Option<AxisOneTurn<f64>>>,
     /// `# stage0_reversal_deg`: stage 0's readings and temperature.
-    pub stage0: Option<ClosingReversal<f64>>,
+    pub stage0: Option<BenchTurnsAt<f64>>,
     /// `# stage1_temp_c`.
     pub stage1_temperature_c: Option<f64>,
     /// `# closing_reversal_deg`.
-    pub closing: Option<ClosingReversal<f64>>,
+    pub closing: Option<BenchTurnsAt<f64>>,
     /// `# bracket_upper_arm`, `# bracket_flange`: the calibrations the pendant applied
     /// (none where the export has none).
     pub brackets: Brackets<f64>,
@@ -212,7 +212,7 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
                         export.stage1 = Some(s);
                         export.stage1_line = reader.line();
                     }
-                    Some(MetaItem::Stage0Reversal(r)) => export.stage0 = Some(r),
+                    Some(MetaItem::Stage0Bench(r)) => export.stage0 = Some(r),
                     Some(MetaItem::Stage1Temperature(t)) => export.stage1_temperature_c = Some(t),
                     Some(MetaItem::Closing(r)) => export.closing = Some(r),
                     Some(MetaItem::FitExtras(e)) => export.extras = Some(e),
@@ -543,7 +543,7 @@ pub fn analyse_with(
     // The reversal's own readings where the export has them (the drift model needs
     // their temperature), else the bias it computed.
     let bias = match (export.stage0, export.bias.flatten()) {
-        (Some(r), _) => BiasSource::Reversal(r.reversal),
+        (Some(r), _) => BiasSource::Bench(r.turns),
         (None, Some(b)) => BiasSource::Stored(b),
         (None, None) => BiasSource::Unknown,
     };
@@ -570,6 +570,9 @@ pub fn analyse_with(
             held: config.extras.held,
             tilt: config.extras.tilt,
             wrist_sag: config.extras.wrist_sag,
+            sag2: config.extras.sag2,
+            lash: config.extras.lash,
+            transmission: config.extras.transmission,
             ..e
         };
     }
@@ -609,6 +612,17 @@ pub fn analyse_with(
             }),
             repeatability_rad: args.repeatability_deg.to_radians(),
             lost_motion_rad: args.lost_motion_deg.to_radians(),
+            // The profile's stage-1 pose, where the export's stage 1 stood at it: whether
+            // joint 2 rests unloaded there follows from the profile's masses.
+            stage1_joints_rad: export
+                .stage1
+                .flatten()
+                .filter(|s| {
+                    let q = profile.stage1_joints_rad;
+                    (s.j1_rad - q[0]).abs().max((s.j2_rad - q[1]).abs())
+                        < zerocal_core::session::STAGE1_JOINT2_TOLERANCE_DEG.to_radians()
+                })
+                .map(|_| profile.stage1_joints_rad),
         },
     );
     let half_turn = half_turn_half_width(

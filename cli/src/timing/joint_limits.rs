@@ -53,12 +53,25 @@ pub fn check_room(profile: &Profile, poses: &SessionPoses) -> Result<(), CliErro
     Ok(())
 }
 
-/// The limits (model degrees) of joints 3-6 the planner keeps its poses inside:
-/// `limits_deg` less the room the two captures of a pose need, the model angles the
-/// approach from [`APPROACH_DEG`] below and the overshoot to [`OVERSHOOT_DEG`] above
-/// (controller degrees, on every joint) reach through the profile's signs and
-/// coupling. So every planned pose passes [`check_room`] on joints 3-6 (joints 1 and
-/// 2 stand at the stage-1 pose, which the planner does not choose).
+/// The limits (model degrees) of joint `joint` (0-based) the planner keeps its poses
+/// inside: `limits_deg` less the room the two captures of a pose need, the model angles
+/// the approach from [`APPROACH_DEG`] below and the overshoot to [`OVERSHOOT_DEG`]
+/// above (controller degrees, on every joint) reach through the profile's signs and
+/// coupling. So every planned pose passes [`check_room`] on the joints the plan moves
+/// (joint 1 stands at the stage-1 pose, which the planner does not choose).
+pub fn planner_limit(profile: &Profile, joint: usize, limits_deg: (f64, f64)) -> (f64, f64) {
+    let origin = profile.model_rad(&[0.0; JOINTS]);
+    let (mut below, mut above) = (0.0f64, 0.0f64);
+    for d in [-APPROACH_DEG, OVERSHOOT_DEG] {
+        let m = profile.model_rad(&[d; JOINTS]);
+        let change = (m[joint] - origin[joint]).to_degrees();
+        above = above.max(change);
+        below = below.max(-change);
+    }
+    (limits_deg.0 + below, limits_deg.1 - above)
+}
+
+/// [`planner_limit`] for joints 3-6.
 pub fn planner_limits(
     profile: &Profile,
     limits_deg: &[(f64, f64); WRIST_JOINTS],

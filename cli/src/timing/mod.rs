@@ -38,7 +38,7 @@ pub mod poses;
 pub mod tour;
 
 pub use capture_rule::{LegCheck, Pendant, ARM_MARGIN, EARLY_STILL_MARGIN};
-pub use joint_limits::{check_limits, check_room, planner_limits};
+pub use joint_limits::{check_limits, check_room, planner_limit, planner_limits};
 pub use poses::{mount_poses, SessionPoses, MOUNT_MARGIN_DEG, MOUNT_TURN_DEG};
 pub use tour::{check_time, session_time, time_order};
 

@@ -149,7 +149,14 @@ fn pose_information<T: Real>(
     free: &[usize],
     q: &[T; JOINTS],
 ) -> Option<OffsetGram<T>> {
-    let full = information(model, Extras::NONE, &[*q], &[T::zero(); WRIST_JOINTS]).gram();
+    let full = information(
+        model,
+        Extras::NONE,
+        &[*q],
+        &[T::zero(); WRIST_JOINTS],
+        T::one(),
+    )
+    .gram();
     let mut m = OffsetGram::zeros(free.len());
     for (a, &i) in free.iter().enumerate() {
         for (b, &j) in free.iter().enumerate() {

@@ -50,6 +50,26 @@ const MAX_BISECTIONS: usize = 200;
 /// stated angle (the joint is then kept as stated): rounding in the torque sum.
 const BALANCED_FRACTION: f64 = 1e-12;
 
+/// The masses a profile gives are within ± this share of the real arm's: a stated bound
+/// (CAD-derived link masses in robot descriptions carry no stated tolerance; the
+/// simulator draws the true masses within it).
+pub const MASS_UNCERTAINTY: f64 = 0.3;
+
+/// Whether joint 2 at stage-1 pose `q_rad` rests where the approach left it: its
+/// gravity torque, with every link's mass off by [`MASS_UNCERTAINTY`] the way that adds
+/// up, stays below [`crate::stage2::transmission::UNLOADED_SHARE`] of the most it could
+/// carry. Then the two approaches straddle its play and their mean is its middle; where
+/// not, gravity may hold it on one flank in both.
+pub fn joint2_unloaded<T: Real>(arm: &Arm<T>, masses: &MassModel<T>, q_rad: &[T; JOINTS]) -> bool {
+    let torque = masses.gravity_torques_nm(arm, q_rad)[1].abs();
+    let spread = masses.moment_magnitudes_nm(arm, q_rad)[1];
+    let most = masses.stretched_torques_nm(arm)[1];
+    let worst = torque + T::lit(MASS_UNCERTAINTY) * spread;
+    most > T::zero()
+        && worst.is_finite()
+        && worst < T::lit(crate::stage2::transmission::UNLOADED_SHARE) * most
+}
+
 /// Why no stage-1 pose without gravity torque on joints 2 and 3 could be found.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage1PoseError {

@@ -22,8 +22,9 @@
 use super::{merge_repeats, SessionSolution, SESSION_JOINTS};
 use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::real::Real;
+use crate::stage2::params::{HARMONIC_JOINTS, HARMONIC_ORDERS};
 use crate::stage2::transmission::{
-    transmission_variance, ONCE_PER_TURN_PP_MAX_DEG, TRANSMISSION_PP_MAX_DEG,
+    transmission_variance, BUDGET_ORDERS, HIGHER_HARMONIC_SHARE, TRANSMISSION_PP_MAX_DEG,
 };
 use crate::stage2::{covariance_bound, Extras, PoseReading};
 
@@ -45,17 +46,23 @@ pub enum BudgetTerm {
     /// Estimating the joint-axis misalignments and wrist compliances the poses separate
     /// (Type A).
     Geometry,
+    /// Estimating each joint's transmission error once and twice per turn (Type A, each
+    /// coefficient with its stated prior where the poses do not determine it).
+    Transmission,
+    /// Estimating the lost motion of joints 2 and 3 where gravity loads them (Type A,
+    /// with its stated prior).
+    Lash,
     /// The misalignments and wrist compliances the poses cannot separate, at their
     /// stated worst case, propagated (Type B).
     UnfittedGeometry,
-    /// Each joint's angle-dependent (transmission) error averaged into its zero: the
-    /// stated bound or what the residuals show, whichever is larger, propagated through
-    /// the poses' angles (Type B from a Type A figure).
-    Transmission,
+    /// The transmission error the fit does not model: its third and fourth harmonics,
+    /// and the first two of a joint the poses do not move, at their stated size,
+    /// propagated through the poses' angles (Type B).
+    HigherHarmonics,
     /// The robot's repeatability, propagated (Type B: the residuals barely show it).
     Repeatability,
-    /// Joint 3's backlash where gravity holds it on one side whatever the approach
-    /// (Type B, the stated lost motion, propagated).
+    /// Joint 3's backlash where gravity holds it on one side whatever the approach,
+    /// where the fit does not estimate it (Type B, the stated lost motion, propagated).
     LoadedBacklash,
     /// Joint 2 at the stage-1 pose, which has no gravity torque on it: where within its
     /// play it rests (Type B, the stated lost motion).
@@ -86,8 +93,10 @@ impl BudgetTerm {
         BudgetTerm::Sag,
         BudgetTerm::FlangeTilt,
         BudgetTerm::Geometry,
-        BudgetTerm::UnfittedGeometry,
         BudgetTerm::Transmission,
+        BudgetTerm::Lash,
+        BudgetTerm::UnfittedGeometry,
+        BudgetTerm::HigherHarmonics,
         BudgetTerm::Repeatability,
         BudgetTerm::LoadedBacklash,
         BudgetTerm::Stage1Backlash,
@@ -106,8 +115,10 @@ impl BudgetTerm {
             BudgetTerm::Sag => "sag of joints 2-3 (estimated)",
             BudgetTerm::FlangeTilt => "flange bracket tilt (estimated)",
             BudgetTerm::Geometry => "axis misalignment, wrist sag (estimated)",
+            BudgetTerm::Transmission => "transmission error 1-2x a turn (estimated)",
+            BudgetTerm::Lash => "lost motion of joints 2-3 (estimated)",
             BudgetTerm::UnfittedGeometry => "axis misalignment, wrist sag (not separable)",
-            BudgetTerm::Transmission => "transmission error (averaged into the zero)",
+            BudgetTerm::HigherHarmonics => "transmission error not modelled (stated)",
             BudgetTerm::Repeatability => "robot repeatability (stated, propagated)",
             BudgetTerm::LoadedBacklash => "joint 3 backlash under gravity (stated)",
             BudgetTerm::Stage1Backlash => "joint 2 at stage 1 (backlash side)",
@@ -126,7 +137,7 @@ impl BudgetTerm {
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 15;
+pub const BUDGET_TERMS: usize = 17;
 
 /// The SCL3300's offset specification on X (g, ±), the chip crate's
 /// [`zerocal_scl3300::spec::OFFSET_X_SPEC_G`]. X is the axis stage 0 measures and stage 1
@@ -167,9 +178,13 @@ pub struct BudgetInputs<T> {
     pub repeatability_rad: T,
     /// The gears' lost motion (rad): joint 3, loaded by the arm, may sit on gravity's
     /// side of it whatever the approach, so averaging both approaches does not cancel it
-    /// there; taken uniform within ±half of it at every pose. Joint 2, unloaded at the
-    /// stage-1 pose, may rest anywhere within it there.
+    /// there; taken uniform within ±half of it at every pose. Joint 2 at the stage-1
+    /// pose may rest anywhere within it, unless that pose is shown unloaded.
     pub lost_motion_rad: T,
+    /// The stage-1 pose (rad), where known with the arm's masses: where joint 2 is
+    /// unloaded there ([`crate::plan::stage1::joint2_unloaded`]) the two approaches
+    /// straddle its play and no backlash term is carried for it.
+    pub stage1_joints_rad: Option<[T; JOINTS]>,
 }
 
 /// The gears' lost motion when no figure is stated: 1 arc min, the Nabtesco RV-42N's
@@ -222,34 +237,52 @@ pub fn budget<T: Real>(
         held: extras.held,
         ..Extras::NONE
     };
+    let sensor = Extras {
+        gain: extras.gain,
+        cross_z: extras.cross_z,
+        ..offsets_only
+    };
+    let sag = Extras {
+        sag: extras.sag,
+        sag2: extras.sag2,
+        ..sensor
+    };
+    let flange = Extras {
+        bias_x: extras.bias_x,
+        bias_y: extras.bias_y,
+        drift: extras.drift,
+        ..sag
+    };
+    let geometry = Extras {
+        tilt: extras.tilt,
+        wrist_sag: extras.wrist_sag,
+        ..flange
+    };
+    let transmission = Extras {
+        transmission: extras.transmission,
+        ..geometry
+    };
     let steps = [
         offsets_only,
-        Extras {
-            gain: extras.gain,
-            cross_z: extras.cross_z,
-            ..offsets_only
-        },
-        Extras {
-            gain: extras.gain,
-            cross_z: extras.cross_z,
-            sag: extras.sag,
-            ..offsets_only
-        },
-        extras.without_geometry(),
+        sensor,
+        sag,
+        flange,
+        geometry,
+        transmission,
         extras,
     ];
-    let mut previous = [T::zero(); WRIST_JOINTS];
+    let mut previous = [T::zero(); SESSION_JOINTS];
     for (step, group) in steps.iter().enumerate() {
-        let variance: [T; WRIST_JOINTS] =
+        let variance: [T; SESSION_JOINTS] =
             match covariance_bound(&solution.model, *group, &joints, &offsets, sigma) {
-                Ok(b) => b.sigma_rad.map(|s| s * s),
+                Ok(b) => b.zeros_sigma_rad.map(|s| s * s),
                 // A group the poses cannot separate on its own: the fit either refused
                 // it or estimated it with the others; its cost is then in the next step.
                 Err(_) => previous,
             };
-        for k in 0..WRIST_JOINTS {
+        for k in 0..SESSION_JOINTS {
             let grown = (variance[k] - previous[k]).max(T::zero());
-            terms[BudgetTerm::Readings.index() + step][k + 1] = grown.sqrt();
+            terms[BudgetTerm::Readings.index() + step][k] = grown.sqrt();
         }
         previous = variance;
     }
@@ -263,7 +296,6 @@ pub fn budget<T: Real>(
     let stage1_part = rep2 / (T::lit(2.0) * per_row);
     let inherited_by_j3 = rep2 / per_row;
     let repeatability = BudgetTerm::Repeatability.index();
-    terms[repeatability][0] = stage1_part.sqrt();
     let rep = crate::stage2::repeatability_covariance(
         &solution.model,
         extras,
@@ -271,24 +303,42 @@ pub fn budget<T: Real>(
         &offsets,
         rep2,
         per_row,
+        sigma,
     );
-    for k in 0..WRIST_JOINTS {
+    for k in 0..SESSION_JOINTS {
         let v = rep.map_or(T::zero(), |c| c[k][k]).max(T::zero());
-        let inherited = if k == 0 { inherited_by_j3 } else { T::zero() };
-        terms[repeatability][k + 1] = (v + inherited).sqrt();
+        let inherited = match k {
+            0 => stage1_part,
+            1 => inherited_by_j3,
+            _ => T::zero(),
+        };
+        terms[repeatability][k] = (v + inherited).sqrt();
     }
 
-    // Joint 3 under gravity: ±half the lost motion at each pose, both captures alike.
+    // Joint 3 under gravity where the fit does not estimate its lost motion: ±half of
+    // it at each pose, both captures alike.
     let half = inputs.lost_motion_rad.abs() * T::lit(0.5);
-    let mut loaded = [T::zero(); WRIST_JOINTS + 1];
-    loaded[1] = half * half / T::lit(3.0);
-    let backlash =
-        crate::stage2::joint_error_covariance(&solution.model, extras, poses, &offsets, &loaded);
-    for k in 0..WRIST_JOINTS {
-        terms[BudgetTerm::LoadedBacklash.index()][k + 1] = backlash
-            .map_or(T::zero(), |c| c[k][k])
-            .max(T::zero())
-            .sqrt();
+    if !solution
+        .fit
+        .estimated
+        .contains(crate::stage2::Param::Lash(1).index())
+    {
+        let mut loaded = [T::zero(); WRIST_JOINTS + 1];
+        loaded[1] = half * half / T::lit(3.0);
+        let backlash = crate::stage2::joint_error_covariance(
+            &solution.model,
+            extras,
+            poses,
+            &offsets,
+            &loaded,
+            sigma,
+        );
+        for k in 0..SESSION_JOINTS {
+            terms[BudgetTerm::LoadedBacklash.index()][k] = backlash
+                .map_or(T::zero(), |c| c[k][k])
+                .max(T::zero())
+                .sqrt();
+        }
     }
 
     // Joint 2 at stage 1: the stage-1 pose has no gravity torque on joints 2 and 3
@@ -299,7 +349,15 @@ pub fn budget<T: Real>(
     // would go to α at half size, not to Δθ2). Δθ2 takes it whole; Δθ3, which
     // inherits joint 2's angle (as with repeatability above), takes it back with the
     // opposite sign.
-    let u_side = half / T::lit(3.0).sqrt();
+    let unloaded = match (inputs.stage1_joints_rad, &solution.model.masses) {
+        (Some(q), Some(m)) => crate::plan::stage1::joint2_unloaded(&solution.model.arm, m, &q),
+        _ => false,
+    };
+    let u_side = if unloaded {
+        T::zero()
+    } else {
+        half / T::lit(3.0).sqrt()
+    };
     let side = BudgetTerm::Stage1Backlash.index();
     terms[side][0] = u_side;
     terms[side][1] = u_side;
@@ -323,32 +381,31 @@ pub fn budget<T: Real>(
         terms[BudgetTerm::UnfittedGeometry.index()][k + 1] = solution.fit.unfitted_rad[k];
     }
 
-    // Transmission error: the stated bound, or what the residuals show beyond the
-    // sensor's noise and the robot's repeatability, whichever is larger.
-    let noise = crate::real::deg_to_rad(T::lit(crate::stage2::MEMS_CAPTURE_NOISE_DEG));
-    let power = crate::stage2::joint_sensitivity_power(&solution.model, extras, &joints, &offsets);
-    let expected = noise * noise / per_row + rep2 * power / per_row;
-    let from_residuals =
-        crate::stage2::transmission::amplitude_from_residuals(sigma * sigma, expected, power);
-    let half_pp = |deg: f64| crate::real::deg_to_rad(T::lit(deg * 0.5));
-    let amplitude = half_pp(TRANSMISSION_PP_MAX_DEG).max(from_residuals);
-    let once = half_pp(ONCE_PER_TURN_PP_MAX_DEG);
-    let transmission = BudgetTerm::Transmission.index();
-    // Joint 2 stands at one angle in stages 1 and 2: Δθ2 holds its error there whole
-    // (a harmonic of unknown phase: a/√2).
-    terms[transmission][0] = amplitude / T::lit(2.0).sqrt();
-    let amplitudes = [amplitude; WRIST_JOINTS];
-    let once_per_turn = [T::zero(), once, T::zero(), once];
-    if let Ok(v) = transmission_variance(
-        &solution.model,
-        extras,
-        poses,
-        &offsets,
-        &amplitudes,
-        &once_per_turn,
-    ) {
-        for k in 0..WRIST_JOINTS {
-            terms[transmission][k + 1] = v[k].max(T::zero()).sqrt();
+    // The transmission error the fit does not model: every joint's third and fourth
+    // harmonics, and the first two of a joint whose harmonics it does not estimate
+    // (joint 2 where the poses hold it), at their stated sizes: amplitudes anywhere up
+    // to those (rectangular, RMS a/√3, GUM 4.3.7).
+    let half_pp =
+        crate::real::deg_to_rad(T::lit(TRANSMISSION_PP_MAX_DEG * 0.5)) / T::lit(3.0).sqrt();
+    let higher = half_pp * T::lit(HIGHER_HARMONIC_SHARE);
+    let amplitudes: [[T; BUDGET_ORDERS]; HARMONIC_JOINTS] = core::array::from_fn(|j| {
+        core::array::from_fn(|o| {
+            let modelled = [false, true].iter().all(|&s| {
+                crate::stage2::params::harmonic_slot(j + 2, o + 1, s)
+                    .is_some_and(|h| extras.transmission & (1 << h) != 0)
+            });
+            match (modelled, o < HARMONIC_ORDERS) {
+                (true, _) => T::zero(),
+                (false, true) => half_pp,
+                (false, false) => higher,
+            }
+        })
+    });
+    if let Ok(v) =
+        transmission_variance(&solution.model, extras, poses, &offsets, &amplitudes, sigma)
+    {
+        for k in 0..SESSION_JOINTS {
+            terms[BudgetTerm::HigherHarmonics.index()][k] = v[k].max(T::zero()).sqrt();
         }
     }
 
@@ -466,9 +523,9 @@ pub fn predict_budget<T: Real>(
         arm: *arm,
         masses: robot.masses,
         brackets: &crate::bracket::Brackets::default(),
-        bias: super::BiasSource::Reversal(crate::stage0::Reversal {
-            first: level_reading,
-            second: level_reading,
+        bias: super::BiasSource::Bench(crate::stage0::BenchTurns {
+            readings: [level_reading; crate::stage0::MAX_HEADINGS],
+            count: crate::stage0::BENCH_HEADINGS as u8,
         }),
         stage1,
         poses: &captures,
@@ -488,6 +545,7 @@ pub fn predict_budget<T: Real>(
                 bias_y_rad: T::zero(),
                 delta_theta2_rad: T::zero(),
                 bias_x_known: true,
+                j2_rad: stage1_joints_rad[1],
                 covariance: [[T::zero(); 5]; 5],
                 covariance_from_stage0: [[T::zero(); 5]; 5],
             },
@@ -558,6 +616,7 @@ mod tests {
                 bracket_yaw_u_rad: [0.0; 2],
                 repeatability_rad: 0.0,
                 lost_motion_rad,
+                stage1_joints_rad: None,
             },
         )
         .unwrap_or_else(|e| panic!("{e}"))

@@ -48,6 +48,9 @@ pub struct Evidence<T> {
     pub outlier: (usize, T, T, T),
     /// The likeliest step: the first pose after it, its size (rad) and its F.
     pub step: (usize, T, T),
+    /// A steady drift of every reading over the poses in the order taken: its size from
+    /// the first pose to the last (rad) and its F.
+    pub ramp: (T, T),
     /// The residual RMS (rad, per reading).
     pub residual_rms_rad: T,
 }
@@ -74,6 +77,42 @@ pub fn capture_difference<T: Real>(
         }
     }
     (count > 0).then(|| ((sum / T::lit(f64::from(count))).sqrt(), worst.1))
+}
+
+/// The poses visited twice, compared without any model: the largest difference
+/// between two visits of one pose (first visit, later visit, the larger of x and y in
+/// rad), each reading corrected for the bias' drift with temperature
+/// (`drift_per_k`, the bench readings'). Visits are the merged poses (each the mean of
+/// its two approaches) whose commanded joints are equal. `None` without a revisit.
+pub fn revisit_difference<T: Real>(
+    poses: &[PoseReading<T>],
+    drift_per_k: &crate::model::Tilt<T>,
+) -> Option<(usize, usize, T)> {
+    let mut worst: Option<(usize, usize, T)> = None;
+    let corrected = |p: &PoseReading<T>, t0: Option<T>| {
+        let dt = match (p.temperature_c, t0) {
+            (Some(t), Some(t0)) => t - t0,
+            _ => T::zero(),
+        };
+        (
+            p.reading.x_rad - drift_per_k.x_rad * dt,
+            p.reading.y_rad - drift_per_k.y_rad * dt,
+        )
+    };
+    for (i, a) in poses.iter().enumerate() {
+        for (j, b) in poses.iter().enumerate().skip(i + 1) {
+            if a.joints_rad != b.joints_rad {
+                continue;
+            }
+            let (ax, ay) = corrected(a, a.temperature_c);
+            let (bx, by) = corrected(b, a.temperature_c);
+            let d = (bx - ax).abs().max((by - ay).abs());
+            if worst.is_none_or(|(_, _, w)| d > w) {
+                worst = Some((i, j, d));
+            }
+        }
+    }
+    worst
 }
 
 /// A 2×2 symmetric matrix's inverse applied to `v`: `M⁻¹·v`, and `vᵀ·M⁻¹·v`; `None`
@@ -143,17 +182,19 @@ pub fn evidence<T: Real>(
             }
         }
     }
-    add_held(&mut info, &fit.extras);
+    add_held(&mut info, &fit.extras, fit.prior_noise_rad);
     let readings = 2 * poses.len();
     let residual_rms_rad = (ssr / T::lit(readings.max(1) as f64)).sqrt();
     let dof = readings.saturating_sub(n);
     let mut outlier = (0, T::zero(), T::zero(), T::zero());
     let mut step = (0, T::zero(), T::zero());
+    let mut ramp = (T::zero(), T::zero());
     let Some(inv) = info.inverse_gram() else {
         return Evidence {
             capture_difference,
             outlier,
             step,
+            ramp,
             residual_rms_rad,
         };
     };
@@ -175,6 +216,40 @@ pub fn evidence<T: Real>(
             T::zero()
         }
     };
+    // The ramp: S = every reading shifted by t̃ (its place in the order taken, from
+    // −½ at the first pose to +½ at the last), so the shift is the drift over stage 2.
+    let count = poses.len();
+    let t_of = |m: usize| {
+        if count > 1 {
+            T::lit(m as f64 / (count - 1) as f64) - T::lit(0.5)
+        } else {
+            T::zero()
+        }
+    };
+    let mut rj = [[T::zero(); MAX_PARAMS]; 2];
+    let mut rr = [T::zero(); 2];
+    let mut rss = [T::zero(); 2];
+    for (m, pose) in poses.iter().enumerate() {
+        let (rows, r) = at(pose);
+        let t = t_of(m);
+        for a in 0..2 {
+            rr[a] += t * d[a] * r[a];
+            rss[a] += t * t * d[a] * d[a];
+            for (v, j) in rj[a].iter_mut().zip(rows[a].iter()).take(n) {
+                *v += t * d[a] * *j;
+            }
+        }
+    }
+    let g = [
+        [rss[0] - quad(&rj[0], &rj[0]), -quad(&rj[0], &rj[1])],
+        [-quad(&rj[1], &rj[0]), rss[1] - quad(&rj[1], &rj[1])],
+    ];
+    if let Some((shift, delta)) = solve2(g, rr) {
+        ramp = (
+            (shift[0] * shift[0] + shift[1] * shift[1]).sqrt(),
+            f_of(delta),
+        );
+    }
     // Prefix sums for the steps: suffix = total − prefix.
     let mut pj = [[T::zero(); MAX_PARAMS]; 2];
     let mut pr = [T::zero(); 2];
@@ -244,6 +319,7 @@ pub fn evidence<T: Real>(
         capture_difference,
         outlier,
         step,
+        ramp,
         residual_rms_rad,
     }
 }
@@ -278,6 +354,17 @@ pub fn judge<T: Real>(
             pose,
             residual_deg: deg(size),
             others_rms_deg: deg(others),
+        });
+    }
+    // A creep is a drift, a knock a step: the larger F names which it was.
+    let (drift, ramp_f) = e.ramp;
+    if beyond(drift, rule.ramp_floor_deg)
+        && rule.ramp_limit.is_finite()
+        && ramp_f > T::lit(rule.ramp_limit)
+        && ramp_f >= e.step.2
+    {
+        return Err(FitError::PendantCreeping {
+            drift_deg: deg(drift),
         });
     }
     let (from_pose, step, f) = e.step;

@@ -25,7 +25,7 @@ use crate::error::{FitError, StageError};
 use crate::model::{Arm, Convention, Gain, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
 use crate::plan::MAX_POSES;
 use crate::real::Real;
-use crate::stage0::{BiasOverTemperature, ClosingReversal, Reversal};
+use crate::stage0::{BenchStep, BenchTurns, BenchTurnsAt, BiasOverTemperature};
 use crate::stage1::{AxisOneTurn, Stage1Result};
 use crate::stage2::{fit, FitConfig, FitResult, MassModel, Param, PoseReading, Stage2Model};
 use core::fmt;
@@ -38,8 +38,8 @@ pub const SESSION_JOINTS: usize = WRIST_JOINTS + 1;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum BiasSource<T> {
-    /// This session's stage-0 reversal.
-    Reversal(Reversal<T>),
+    /// This session's stage-0 bench readings (four headings by hand, or a reversal).
+    Bench(BenchTurns<T>),
     /// The bias an earlier reversal measured (kept in the pendant's flash).
     Stored(SensorBias<T>),
     /// No reversal: the x bias is unknown (taken as 0; the report warns).
@@ -72,7 +72,7 @@ pub struct SessionReadings<'a, T: Real> {
     /// The sensor's temperature at stages 0 and 1, where recorded.
     pub temperatures: StageTemperatures<T>,
     /// The reversal on the bench after stage 2, if made: it measures the bias' drift.
-    pub closing: Option<ClosingReversal<T>>,
+    pub closing: Option<BenchTurnsAt<T>>,
 }
 
 /// The sensor's temperature during stages 0 and 1 (°C), where recorded.
@@ -141,6 +141,7 @@ pub fn handover_at<T: Real>(
             arm,
             base_tilt: stage1.base_tilt,
             delta_theta2_rad: stage1.delta_theta2_rad,
+            stage1_j2_rad: stage1.j2_rad,
             sensor: SensorModel::new(
                 convention,
                 Tilt::new(
@@ -169,6 +170,8 @@ pub fn handover_at<T: Real>(
 pub enum SessionError {
     /// Stage 0 refused its readings.
     Stage0(StageError),
+    /// The closing bench readings after stage 2 refused.
+    Closing(StageError),
     /// Stage 1 refused its readings.
     Stage1(StageError),
     /// Stage 2 refused to give numbers.
@@ -188,6 +191,7 @@ impl fmt::Display for SessionError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SessionError::Stage0(e) => write!(f, "stage 0: {e}"),
+            SessionError::Closing(e) => write!(f, "closing bench readings (after stage 2): {e}"),
             SessionError::Stage1(e) => write!(f, "stage 1: {e}"),
             SessionError::Stage2(e) => write!(f, "stage 2: {e}"),
             SessionError::Warmed {
@@ -270,8 +274,12 @@ pub fn solve_stages01<T: Real>(
         bias,
         &StageTemperatures::default(),
         None,
-        convention,
-        range_rad,
+        &BenchSettings {
+            convention,
+            gain: Gain::default(),
+            range_rad,
+            noise_rad: T::zero(),
+        },
     )?;
     let s1 = solve_stage1(
         &bias,
@@ -288,17 +296,38 @@ pub fn solve_stages01<T: Real>(
     Ok((bias.map(|b| b.bias), s1))
 }
 
+/// What the bench readings are solved with: the convention, the sensor's gain (stage
+/// 2's, once known), the range, and one reading's noise to judge their residuals by.
+struct BenchSettings<T> {
+    convention: Convention,
+    gain: Gain<T>,
+    range_rad: T,
+    noise_rad: T,
+}
+
 fn bias_over_temperature<T: Real>(
     bias: &BiasSource<T>,
     temperatures: &StageTemperatures<T>,
-    closing: Option<&ClosingReversal<T>>,
-    convention: Convention,
-    range_rad: T,
+    closing: Option<&BenchTurnsAt<T>>,
+    settings: &BenchSettings<T>,
 ) -> Result<Option<BiasOverTemperature<T>>, SessionError> {
     Ok(match bias {
-        BiasSource::Reversal(r) => Some(
-            BiasOverTemperature::measure(r, temperatures.stage0_c, closing, convention, range_rad)
-                .map_err(SessionError::Stage0)?,
+        BiasSource::Bench(r) => Some(
+            BiasOverTemperature::measure(
+                &BenchTurnsAt {
+                    turns: *r,
+                    temperature_c: temperatures.stage0_c,
+                },
+                closing,
+                settings.convention,
+                settings.gain,
+                settings.range_rad,
+                settings.noise_rad,
+            )
+            .map_err(|(step, e)| match step {
+                BenchStep::Stage0 => SessionError::Stage0(e),
+                BenchStep::Closing => SessionError::Closing(e),
+            })?,
         ),
         BiasSource::Stored(b) => Some(BiasOverTemperature::constant(*b, None)),
         BiasSource::Unknown => None,
@@ -411,24 +440,37 @@ pub fn solve<T: Real>(
         convention: readings.convention,
         range_rad: range,
     };
+    // A bench reading averages no captures: its noise is a capture's, `per_reading`
+    // times a stage-2 row's variance.
+    // The bench's readings are judged (do they lie on one circle?) once the sensor's
+    // gain is known: without it a tilted bench's circle is an ellipse.
+    let bench = |gain: Gain<T>| BenchSettings {
+        convention: readings.convention,
+        gain,
+        range_rad: range,
+        noise_rad: if gain == Gain::default() {
+            T::zero()
+        } else {
+            config.handover_noise_rad
+        },
+    };
     let chain = bias_over_temperature(
         &readings.bias,
         temps,
         readings.closing.as_ref(),
-        readings.convention,
-        range,
+        &bench(Gain::default()),
     )
     .and_then(|b| {
         check_temperatures(&b, readings.poses)?;
         let s1 = solve_stage1(&b, temps.stage1_c, &setup, Gain::default(), per_reading)?;
         Ok((b, s1))
     });
-    let (bias_t, stage1) = match chain {
+    let (mut bias_t, stage1) = match chain {
         Ok(v) => v,
         Err(e) => {
             let bias = match readings.bias {
                 BiasSource::Stored(b) => Some(b),
-                BiasSource::Reversal(r) => r.bias(readings.convention, range).ok(),
+                BiasSource::Bench(r) => r.bias(readings.convention, range).ok(),
                 BiasSource::Unknown => None,
             };
             return SessionOutcome {
@@ -438,44 +480,81 @@ pub fn solve<T: Real>(
             };
         }
     };
-    let stage2 = |stage1: &Stage1Result<T>, arm: Arm<T>| {
-        let h = handover_at(
-            stage1,
-            arm,
-            readings.convention,
-            bias_t.as_ref(),
-            temps.stage1_c,
-            readings.masses,
-        );
-        let fit_config = FitConfig {
-            model_covariance: h.covariance,
-            // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
-            handover_noise_rad: config.handover_noise_rad / per_reading.sqrt(),
-            // The residuals are judged below, with the rest of the evidence.
-            max_residual_rms_rad: T::zero(),
-            ..*config
+    let stage2 =
+        |stage1: &Stage1Result<T>, arm: Arm<T>, bias_t: &Option<BiasOverTemperature<T>>| {
+            let h = handover_at(
+                stage1,
+                arm,
+                readings.convention,
+                bias_t.as_ref(),
+                temps.stage1_c,
+                readings.masses,
+            );
+            let fit_config = FitConfig {
+                model_covariance: h.covariance,
+                // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
+                handover_noise_rad: config.handover_noise_rad / per_reading.sqrt(),
+                // The residuals are judged below, with the rest of the evidence.
+                max_residual_rms_rad: T::zero(),
+                ..*config
+            };
+            fit(&h.model, merged, &fit_config)
+                .map_err(SessionError::Stage2)
+                .map(|r| (h, r))
         };
-        fit(&h.model, merged, &fit_config)
-            .map_err(SessionError::Stage2)
-            .map(|r| (h, r))
-    };
     let mut stage1 = stage1;
-    // The first pass has stage 1 without the sensor's gain: its residuals are not yet
-    // the session's, so only the last pass is judged by them.
-    let mut result = stage2(&stage1, arm);
-    // Stage 2 measured the sensor's gain: stage 1's readings are solved again with it,
-    // and stage 2 with the better hand-over (the gain moves Δθ2 by ~1 % of the upper
-    // arm's tilt, and stage 2 by far less than its noise, so once is enough).
+    // The first pass has stages 0-1 without the sensor's gain: its residuals are not
+    // yet the session's, so only the last pass is judged by them.
+    let mut result = stage2(&stage1, arm, &bias_t);
+    // Stage 2 measured the sensor's gain: the bench readings and stage 1's are solved
+    // again with it, and stage 2 with the better hand-over (the gain moves a bench's
+    // circle centre by ~1 % of its tilt and Δθ2 by ~1 % of the upper arm's, stage 2 by
+    // far less than its noise, so once is enough). A refusal of that second pass is
+    // the step's own: it is named as such.
     if let Ok((_, r)) = &result {
         let gain = estimated_gain(r);
         if gain != Gain::default() {
             // The brackets' calibrations read back through the same gain.
             let arm = readings.brackets.apply_with_gain(&readings.arm, &gain);
             let setup = Stage1Setup { arm: &arm, ..setup };
-            if let Ok(again) = solve_stage1(&bias_t, temps.stage1_c, &setup, gain, per_reading) {
-                stage1 = again;
-                result = stage2(&stage1, arm);
+            let again = bias_over_temperature(
+                &readings.bias,
+                temps,
+                readings.closing.as_ref(),
+                &bench(gain),
+            )
+            .and_then(|b| {
+                Ok((
+                    b,
+                    solve_stage1(&b, temps.stage1_c, &setup, gain, per_reading)?,
+                ))
+            });
+            match again {
+                Ok((b, s1)) => {
+                    bias_t = b;
+                    stage1 = s1;
+                    result = stage2(&stage1, arm, &bias_t);
+                }
+                Err(e) => result = Err(e),
             }
+        }
+    }
+    // A pose visited twice that reads differently: the pendant moved on the flange
+    // between the visits. Judged before any fit's evidence, since it needs no model:
+    // a bracket that creeps can drag a fit anywhere (into no convergence), and the
+    // refusal must name it, not the fit.
+    if let Some((pose, revisit, d)) = judge::revisit_difference(
+        merged,
+        &bias_t.as_ref().map_or(Tilt::default(), |b| b.drift_per_k),
+    ) {
+        let limit = config.refusal.max_revisit_difference_deg;
+        if limit.is_finite() && d > crate::real::deg_to_rad(T::lit(limit)) {
+            result = Err(SessionError::Stage2(FitError::RevisitDisagrees {
+                pose,
+                revisit,
+                difference_deg: crate::real::rad_to_deg(d).to_f64() as f32,
+                limit_deg: limit as f32,
+            }));
         }
     }
     // The refusal rule on the last pass: a fault is named, a robot is solved.
@@ -517,9 +596,11 @@ pub fn merge_repeats<T: Real>(
     merge_captures(poses, None)
 }
 
-/// Whether captures `i` and `j` are of the same pose: by their [`CaptureIndex`] where
-/// `index` has both (the export's `pose` column), else by equal commanded joints (a
-/// plain stage-2 log, whose rows carry no index).
+/// Whether captures `i` and `j` are of the same visit of a pose: by their
+/// [`CaptureIndex`] where `index` has both (the export's `pose` column: a pose the plan
+/// visits again has another index), else by equal commanded joints in one run of
+/// captures (a plain stage-2 log, whose rows carry no index: a pose visited again later
+/// is another visit, which is what shows a bracket creeping).
 fn same_pose<T: Real>(
     poses: &[PoseReading<T>],
     index: Option<&[CaptureIndex]>,
@@ -528,7 +609,13 @@ fn same_pose<T: Real>(
 ) -> bool {
     match index.and_then(|x| Some((x.get(i)?, x.get(j)?))) {
         Some((a, b)) => a.pose == b.pose,
-        None => poses[i].joints_rad == poses[j].joints_rad,
+        None => {
+            let (lo, hi) = (i.min(j), i.max(j));
+            hi < poses.len()
+                && poses[lo..=hi]
+                    .iter()
+                    .all(|p| p.joints_rad == poses[lo].joints_rad)
+        }
     }
 }
 
@@ -643,32 +730,32 @@ pub fn half_turn_half_width<T: Real>(
     config: &FitConfig<T>,
     tolerance_rad: T,
 ) -> Result<Option<[T; SESSION_JOINTS]>, SessionError> {
-    let BiasSource::Reversal(opening) = readings.bias else {
+    let BiasSource::Bench(opening) = readings.bias else {
         return Ok(None);
     };
+    // Three or more headings solve their own turns: no half turn is assumed.
+    if opening.count != 2 {
+        return Ok(None);
+    }
     let half = T::lit(0.5);
     // The reversal moved as a turn of π ± tolerance would move it: ε·|t|/2 along the
     // tilt t (the readings' half difference) turned a quarter turn, (−t_y, t_x)·ε/2.
-    let moved = |r: &Reversal<T>, sign: T| {
-        let (tx, ty) = (
-            (r.first.x_rad - r.second.x_rad) * half,
-            (r.first.y_rad - r.second.y_rad) * half,
-        );
-        let (sx, sy) = (
-            -ty * tolerance_rad * half * sign,
-            tx * tolerance_rad * half * sign,
-        );
-        Reversal {
-            first: Tilt::new(r.first.x_rad + sx, r.first.y_rad + sy),
-            second: Tilt::new(r.second.x_rad + sx, r.second.y_rad + sy),
+    let moved = |r: &BenchTurns<T>, sign: T| {
+        if r.count != 2 {
+            return *r;
         }
+        let t = r.tilt_seen_first();
+        r.shifted(&Tilt::new(
+            -t.y_rad * tolerance_rad * half * sign,
+            t.x_rad * tolerance_rad * half * sign,
+        ))
     };
     // Both reversals (the closing one too, where made) off the same way: the worst case.
     let at = |sign: T| {
         let moved_readings = SessionReadings {
-            bias: BiasSource::Reversal(moved(&opening, sign)),
-            closing: readings.closing.map(|c| ClosingReversal {
-                reversal: moved(&c.reversal, sign),
+            bias: BiasSource::Bench(moved(&opening, sign)),
+            closing: readings.closing.map(|c| BenchTurnsAt {
+                turns: moved(&c.turns, sign),
                 ..c
             }),
             ..*readings
@@ -748,8 +835,12 @@ fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
     }
 }
 
-/// Δθ2..Δθ6 and their covariance: Δθ2's own, stage 2's, and the cross terms through
-/// the hand-over parameters Δθ2 shares with stage 2 (Cov(Δθ2, Δθk) = C₂ₘ·Sₖᵀ·σ²).
+/// Δθ2..Δθ6 and their covariance. Δθ2 is stage 1's, corrected by stage 2 for joint 2's
+/// transmission error at its stage-1 angle where the poses moved joint 2
+/// ([`crate::stage2::FitResult::joint2_correction_rad`]); Δθ3..Δθ6 are stage 2's. Every
+/// zero moves with the hand-over's errors (α, β, Δθ2, the biases) through its
+/// sensitivity S, Δθ2 also directly: with `s` a zero's sensitivity (Δθ2's: S₀ + e₂),
+/// Cov = sᵢᵀ·D·sⱼ·σₕ² + the stage-2 readings' own.
 fn combine<T: Real>(
     stage1: &Stage1Result<T>,
     h: &Handover<T>,
@@ -759,42 +850,50 @@ fn combine<T: Real>(
     /// Δθ2's place among the hand-over parameters (α, β, Δθ2, bias x, bias y).
     const J2: usize = 2;
     // As stage 2 did (`FitConfig::handover_noise_rad`).
-    let variance =
-        (handover_noise_rad * handover_noise_rad).max(fit.noise_sigma_rad * fit.noise_sigma_rad);
+    let variance = handover_noise_rad * handover_noise_rad;
     let mut offsets_rad = [T::zero(); SESSION_JOINTS];
-    offsets_rad[0] = stage1.delta_theta2_rad;
+    offsets_rad[0] = stage1.delta_theta2_rad + fit.joint2_correction_rad;
     offsets_rad[1..].copy_from_slice(&fit.offsets_rad);
-    let mut cov = [[T::zero(); SESSION_JOINTS]; SESSION_JOINTS];
-    cov[0][0] = h.covariance[J2][J2] * variance;
-    for k in 0..WRIST_JOINTS {
-        let mut c = T::zero();
-        for (m, s) in fit.model_sensitivity[k].iter().enumerate() {
-            c += h.covariance[J2][m] * *s;
+    // Each zero's total sensitivity to the hand-over.
+    let sens: [[T; 5]; SESSION_JOINTS] = core::array::from_fn(|a| {
+        let mut s = fit.zeros_sensitivity[a];
+        if a == 0 {
+            s[J2] += T::one();
         }
-        cov[0][k + 1] = c * variance;
-        cov[k + 1][0] = c * variance;
-        for j in 0..WRIST_JOINTS {
-            cov[k + 1][j + 1] = fit.covariance_rad2[k][j];
-        }
-    }
-    // Shares: Δθ2 has stage 0's and stage 1's; Δθk inherits S·D₀·Sᵀ from stage 0 and
-    // S·(D − D₀)·Sᵀ from stage 1, and has its own stage-2 noise.
-    let d0 = &stage1.covariance_from_stage0;
-    let mut shares = [[T::zero(); 3]; SESSION_JOINTS];
-    shares[0][0] = d0[J2][J2] * variance;
-    shares[0][1] = (h.covariance[J2][J2] - d0[J2][J2]) * variance;
-    for k in 0..WRIST_JOINTS {
-        let s = &fit.model_sensitivity[k];
-        let (mut from0, mut from01) = (T::zero(), T::zero());
-        for a in 0..5 {
-            for b in 0..5 {
-                from0 += s[a] * d0[a][b] * s[b];
-                from01 += s[a] * h.covariance[a][b] * s[b];
+        s
+    });
+    let form = |d: &[[T; 5]; 5], a: &[T; 5], b: &[T; 5]| {
+        let mut acc = T::zero();
+        for i in 0..5 {
+            for j in 0..5 {
+                acc += a[i] * d[i][j] * b[j];
             }
         }
-        let stage2 = fit.sigma_stage2_rad[k] * fit.sigma_stage2_rad[k];
-        shares[k + 1] = [from0 * variance, (from01 - from0) * variance, stage2];
+        acc
+    };
+    // The fit's zeros covariance holds S·D·Sᵀ·σₕ² and the readings' own; Δθ2's row adds
+    // its direct share: e₂ᵀD·e₂ and the cross terms e₂ᵀD·S.
+    let e2 = {
+        let mut e = [T::zero(); 5];
+        e[J2] = T::one();
+        e
+    };
+    let d = &h.covariance;
+    let mut cov = fit.zeros_covariance_rad2;
+    cov[0][0] +=
+        (form(d, &e2, &e2) + T::lit(2.0) * form(d, &e2, &fit.zeros_sensitivity[0])) * variance;
+    for k in 1..SESSION_JOINTS {
+        let c = form(d, &e2, &fit.zeros_sensitivity[k]) * variance;
+        cov[0][k] += c;
+        cov[k][0] += c;
     }
+    let d0 = &stage1.covariance_from_stage0;
+    let shares: [[T; 3]; SESSION_JOINTS] = core::array::from_fn(|a| {
+        let from0 = form(d0, &sens[a], &sens[a]);
+        let from01 = form(d, &sens[a], &sens[a]);
+        let stage2 = fit.zeros_sigma_stage2_rad[a] * fit.zeros_sigma_stage2_rad[a];
+        [from0 * variance, (from01 - from0) * variance, stage2]
+    });
     SessionSolution {
         model: h.model,
         fit,

@@ -3,7 +3,7 @@
 
 use super::{
     check_conditioning, information, Extras, PoseReading, Stage2Model, MAX_PARAMS, MIN_POSES,
-    RANK_DEFICIENT_CONDITION,
+    RANK_DEFICIENT_CONDITION, ZEROS,
 };
 use crate::error::FitError;
 use crate::model::{JOINTS, WRIST_JOINTS};
@@ -16,6 +16,9 @@ pub struct CovarianceBound<T> {
     pub sigma_rad: [T; WRIST_JOINTS],
     /// The same for every estimated parameter, by slot of `Extras::layout`.
     pub all_sigma: [T; MAX_PARAMS],
+    /// The same for the zeros ([`super::ZEROS`]: the correction of stage 1's Δθ2, then
+    /// Δθ3..Δθ6).
+    pub zeros_sigma_rad: [T; ZEROS],
     /// Condition number of J.
     pub condition_number: T,
 }
@@ -48,13 +51,26 @@ pub fn covariance_bound<T: Real>(
         });
     }
     let layout = extras.layout();
-    let info = information(model, extras, joints_rad, offsets_rad);
+    let info = information(model, extras, joints_rad, offsets_rad, noise_sigma_rad);
     let condition_number = check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
     let unit = info.unit_sigma().ok_or(FitError::NonFiniteResult)?;
     let all_sigma = unit.map(|u| u * noise_sigma_rad);
+    let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
+    let l = super::zeros_map(model, &layout);
+    let n = layout.len();
+    let zeros_sigma_rad = l.map(|row| {
+        let mut acc = T::zero();
+        for i in 0..n {
+            for j in 0..n {
+                acc += row[i] * inv.m[i][j] * row[j];
+            }
+        }
+        acc.max(T::zero()).sqrt() * noise_sigma_rad
+    });
     Ok(CovarianceBound {
         sigma_rad: core::array::from_fn(|k| all_sigma[k]),
         all_sigma,
+        zeros_sigma_rad,
         condition_number,
     })
 }
@@ -79,9 +95,17 @@ pub fn repeatability_covariance<T: Real>(
     offsets_rad: &[T; WRIST_JOINTS],
     joint_variance_rad2: T,
     captures_per_row: T,
-) -> Result<[[T; WRIST_JOINTS]; WRIST_JOINTS], FitError> {
+    noise_rad: T,
+) -> Result<[[T; ZEROS]; ZEROS], FitError> {
     let v = joint_variance_rad2 / captures_per_row;
-    joint_error_covariance(model, extras, poses, offsets_rad, &[v; WRIST_JOINTS + 1])
+    joint_error_covariance(
+        model,
+        extras,
+        poses,
+        offsets_rad,
+        &[v; WRIST_JOINTS + 1],
+        noise_rad,
+    )
 }
 
 /// As [`repeatability_covariance`], with each of joints 2-6 off by its own variance
@@ -96,7 +120,8 @@ pub fn joint_error_covariance<T: Real>(
     poses: &[PoseReading<T>],
     offsets_rad: &[T; WRIST_JOINTS],
     joint_variance_rad2: &[T; WRIST_JOINTS + 1],
-) -> Result<[[T; WRIST_JOINTS]; WRIST_JOINTS], FitError> {
+    noise_rad: T,
+) -> Result<[[T; ZEROS]; ZEROS], FitError> {
     let layout = extras.layout();
     let n = layout.len();
     let estimate = super::Estimate {
@@ -136,16 +161,24 @@ pub fn joint_error_covariance<T: Real>(
             }
         }
     }
-    super::add_held(&mut info, &extras);
+    super::add_held(&mut info, &extras, noise_rad);
     check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
     let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
-    let mut cov = [[T::zero(); WRIST_JOINTS]; WRIST_JOINTS];
+    // The zeros' rows of (JᵀJ)⁻¹ first: L·(JᵀJ)⁻¹ (ZEROS × n), then L·inv·O·invᵀ·Lᵀ.
+    let l = super::zeros_map(model, &layout);
+    let mut li = [[T::zero(); MAX_PARAMS]; ZEROS];
+    for (lia, la) in li.iter_mut().zip(&l) {
+        for (j, v) in lia.iter_mut().enumerate().take(n) {
+            *v = (0..n).fold(T::zero(), |acc, i| acc + la[i] * inv.m[i][j]);
+        }
+    }
+    let mut cov = [[T::zero(); ZEROS]; ZEROS];
     for (a, row) in cov.iter_mut().enumerate() {
         for (c, v) in row.iter_mut().enumerate() {
             let mut acc = T::zero();
             for i in 0..n {
                 for k in 0..n {
-                    acc += inv.m[a][i] * outer.m[i][k] * inv.m[k][c];
+                    acc += li[a][i] * outer.m[i][k] * li[c][k];
                 }
             }
             *v = acc;

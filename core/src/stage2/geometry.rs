@@ -71,26 +71,32 @@ pub fn identifiable<T: Real>(
     // the readings only through the base's tilt, a few thousandths of a joint's turn;
     // any unmodelled error would be read as tens of degrees of it.
     {
-        let info = information_at(model, e, joints_rad.clone(), offsets_rad);
+        let info = information_at(model, e, joints_rad.clone(), offsets_rad, noise_rad);
         let gram = info.gram();
         let layout = e.layout();
         let norm = |slot: usize| gram.m[slot][slot].max(T::zero()).sqrt();
         let offsets = (0..WRIST_JOINTS).fold(T::zero(), |m, k| m.max(norm(k)));
         for (slot, p) in layout.params().iter().enumerate() {
-            let geometric_turn = matches!(p, Param::Tilt(_));
-            if geometric_turn && norm(slot) < T::lit(MIN_VISIBILITY) * offsets {
-                if let Param::Tilt(t) = p {
-                    e.tilt &= !(1 << t);
-                }
+            // A turn, a reducer's error or joint 2's own sag that the poses barely show
+            // (joint 2's harmonics and sag where stage 2 holds joint 2).
+            let candidate = matches!(
+                p,
+                Param::Tilt(_) | Param::Harmonic(_) | Param::Sag2 | Param::Lash(_)
+            );
+            if candidate && norm(slot) < T::lit(MIN_VISIBILITY) * offsets {
+                e = without(e, *p);
                 dropped = dropped.with(p.index());
             }
         }
     }
-    while e.tilt != 0 || e.wrist_sag != 0 {
-        let info = information_at(model, e, joints_rad.clone(), offsets_rad);
+    while e.tilt != 0 || e.wrist_sag != 0 || e.sag2 {
+        let info = information_at(model, e, joints_rad.clone(), offsets_rad, noise_rad);
         let c = info.conditioning();
         let layout = e.layout();
         let geometric = |p: &Param| matches!(p, Param::Tilt(_) | Param::WristSag(_));
+        // Joint 2's sag is dropped as the geometry is where the poses do not separate it
+        // from joint 3's (joint 2 barely moving); it has no prior to hold it.
+        let droppable = |p: &Param| geometric(p) || matches!(p, Param::Sag2);
         let worst = if c.condition_number.is_finite() && c.condition_number <= limit {
             // Separable: is each determined better than it is known?
             let Some(sigma) = info.unit_sigma() else {
@@ -120,21 +126,33 @@ pub fn identifiable<T: Real>(
                 .params()
                 .iter()
                 .zip(c.weakest_direction.iter())
-                .filter(|(p, _)| geometric(p))
+                .filter(|(p, _)| droppable(p))
                 .fold(None, |best: Option<(Param, T)>, (&p, &w)| match best {
                     Some((_, b)) if b >= w.abs() => best,
                     _ => Some((p, w.abs())),
                 })
         };
         let Some((p, _)) = worst else { break };
-        match p {
-            Param::Tilt(t) => e.tilt &= !(1 << t),
-            Param::WristSag(i) => e.wrist_sag &= !(1 << i),
-            _ => break,
+        if !droppable(&p) {
+            break;
         }
+        e = without(e, p);
         dropped = dropped.with(p.index());
     }
     (e, dropped)
+}
+
+/// `extras` without candidate `p`.
+fn without(mut e: Extras, p: Param) -> Extras {
+    match p {
+        Param::Tilt(t) => e.tilt &= !(1 << t),
+        Param::WristSag(i) => e.wrist_sag &= !(1 << i),
+        Param::Sag2 => e.sag2 = false,
+        Param::Lash(i) => e.lash &= !(1 << i),
+        Param::Harmonic(h) => e.transmission &= !(1 << h),
+        _ => {}
+    }
+    e
 }
 
 /// A misalignment whose column of J is shorter than this share of the longest offset's
@@ -167,9 +185,17 @@ pub fn worst_case<T: Real>(
             }))
         }
         Param::WristSag(i) => {
-            let k = 3 + usize::from(i).min(WRIST_SAG_JOINTS - 1);
+            let i = usize::from(i);
+            let k = 3 + i % WRIST_SAG_JOINTS;
             let lever = model.masses.map_or(T::zero(), |m| {
-                joints_rad.fold(T::zero(), |w, q| w.max(m.levers_m(&model.arm, &q)[k].abs()))
+                joints_rad.fold(T::zero(), |w, q| {
+                    let l = if i < WRIST_SAG_JOINTS {
+                        m.without_pendant().levers_m(&model.arm, &q)[k]
+                    } else {
+                        super::MassModel::pendant_levers_kgm(&model.arm, &q)[k]
+                    };
+                    w.max(l.abs())
+                })
             });
             if lever > T::zero() {
                 deg_to_rad(T::lit(WRIST_SAG_MAX_DEG)) / lever

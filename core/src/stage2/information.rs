@@ -28,7 +28,7 @@ pub struct Information<T: Real> {
 pub(crate) struct Conditioning<T> {
     pub(crate) condition_number: T,
     /// Slots of the weakest direction (bit i = slot i).
-    pub(crate) weakest_slots: u32,
+    pub(crate) weakest_slots: u64,
     /// The weakest direction itself (unit, over the slots; columns scaled).
     pub(crate) weakest_direction: [T; MAX_PARAMS],
 }
@@ -41,7 +41,7 @@ impl<T: Real> Conditioning<T> {
 }
 
 /// The slots whose component in a unit direction exceeds [`WEAK_DIRECTION_SHARE`].
-fn named_components<T: Real>(direction: &[T]) -> u32 {
+fn named_components<T: Real>(direction: &[T]) -> u64 {
     direction
         .iter()
         .enumerate()

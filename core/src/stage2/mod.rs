@@ -35,6 +35,31 @@ use crate::linalg::Square;
 use crate::model::{Tilt, TiltAxis, JOINTS, WRIST_JOINTS};
 use crate::real::{deg_to_rad, rad_to_deg, Real};
 
+/// The zeros a session reports from stage 2: the correction to stage 1's Δθ2 (joint 2's
+/// transmission error at its stage-1 angle, taken off) and Δθ3..Δθ6.
+pub const ZEROS: usize = WRIST_JOINTS + 1;
+
+/// The zeros as linear functions of the fit's slots: row 0 the correction to stage 1's
+/// Δθ2 (`−Σ cₕ·basisₕ(c2)` over joint 2's harmonics: stage 1 measured the constant zero
+/// plus the error at its angle c2), rows 1-4 Δθ3..Δθ6.
+pub(crate) fn zeros_map<T: Real>(
+    model: &Stage2Model<T>,
+    layout: &Layout,
+) -> [[T; MAX_PARAMS]; ZEROS] {
+    let mut l = [[T::zero(); MAX_PARAMS]; ZEROS];
+    let at_stage1 = model::harmonic_basis(model.stage1_j2_rad);
+    for (slot, p) in layout.params().iter().enumerate() {
+        match *p {
+            Param::Offset(k) => l[1 + usize::from(k).min(WRIST_JOINTS - 1)][slot] = T::one(),
+            Param::Harmonic(h) if params::harmonic_of(h).0 == 2 => {
+                l[0][slot] = -at_stage1[params::basis_index(h)];
+            }
+            _ => {}
+        }
+    }
+    l
+}
+
 /// Fewest poses the fit accepts: 2N readings must exceed the 4 unknowns with room for σ.
 pub const MIN_POSES: usize = 4;
 
@@ -205,6 +230,19 @@ pub struct FitResult<T: Real> {
     /// What those may do to Δθ3..Δθ6 at their stated worst case: a standard
     /// uncertainty per offset (rad; [`geometry::unfitted_effect`]).
     pub unfitted_rad: [T; WRIST_JOINTS],
+    /// The reading noise the priors were weighted with (rad): a prior of standard
+    /// deviation s is a pseudo-reading of weight `prior_noise_rad / s`.
+    pub prior_noise_rad: T,
+    /// The correction to stage 1's Δθ2 (rad, [`zeros_map`]'s row 0): 0 unless the poses
+    /// moved joint 2 and its harmonics were estimated.
+    pub joint2_correction_rad: T,
+    /// Covariance of the zeros (the correction, Δθ3..Δθ6) (rad²), the hand-over's
+    /// uncertainty included.
+    pub zeros_covariance_rad2: [[T; ZEROS]; ZEROS],
+    /// Their 1σ from the stage-2 readings alone (rad).
+    pub zeros_sigma_stage2_rad: [T; ZEROS],
+    /// How the zeros move with an error in the hand-over parameters (rad per rad).
+    pub zeros_sensitivity: [[T; HANDOVER_PARAMS]; ZEROS],
 }
 
 impl<T: Real> FitResult<T> {
@@ -349,16 +387,29 @@ fn linearise<T: Real>(
     (info, ssr, worst)
 }
 
+/// The priors are weighted again against the residuals' scatter where it exceeds the
+/// sensor's noise by more than this factor.
+const PRIOR_REWEIGHT: f64 = 1.1;
+
 /// The weight of a held offset's pseudo-reading, in readings.
 const HELD_WEIGHT: f64 = 10.0;
 
 /// A held offset's pseudo-reading in an information matrix without residuals (planning,
-/// bounds): it pins the offset, and its twin's variance is the sum's.
-pub fn add_held<T: Real>(info: &mut Information<T>, extras: &Extras) {
+/// bounds): it pins the offset, and its twin's variance is the sum's. With it, the
+/// stated priors of `extras`' reducer terms ([`transmission::prior_sd_rad`]) for a
+/// reading noise of `noise_rad`: the fit's information has them too.
+pub fn add_held<T: Real>(info: &mut Information<T>, extras: &Extras, noise_rad: T) {
     for (k, &h) in extras.held.iter().enumerate() {
         if h {
             let mut row = [T::zero(); MAX_PARAMS];
             row[k] = T::lit(HELD_WEIGHT);
+            info.add_row(&row, T::zero());
+        }
+    }
+    for (slot, p) in extras.layout().params().iter().enumerate() {
+        if let Some(sd) = transmission::prior_sd_rad::<T>(*p) {
+            let mut row = [T::zero(); MAX_PARAMS];
+            row[slot] = noise_rad / sd;
             info.add_row(&row, T::zero());
         }
     }
@@ -371,8 +422,9 @@ struct Held<T> {
     prior_weight: [T; MAX_PARAMS],
 }
 
-/// The prior weights of `layout`'s geometric terms: the reading noise over each one's
-/// stated worst case.
+/// The prior weights of `layout`'s geometric terms and reducer terms: the reading
+/// noise over each one's stated worst case (geometry) or stated standard deviation
+/// (transmission error, lost motion: [`transmission::prior_sd_rad`]).
 fn prior_weights<T: Real>(
     model: &Stage2Model<T>,
     layout: &Layout,
@@ -381,7 +433,8 @@ fn prior_weights<T: Real>(
 ) -> [T; MAX_PARAMS] {
     let mut w = [T::zero(); MAX_PARAMS];
     for (slot, p) in layout.params().iter().enumerate() {
-        let worst = geometry::worst_case(model, *p, poses.iter().map(|p| p.joints_rad));
+        let worst = transmission::prior_sd_rad(*p)
+            .unwrap_or_else(|| geometry::worst_case(model, *p, poses.iter().map(|p| p.joints_rad)));
         if worst > T::zero() {
             w[slot] = noise_rad / worst;
         }
@@ -466,7 +519,7 @@ pub fn fit<T: Real>(
         let mut xb = [T::zero(); MAX_PARAMS];
         xb[..WRIST_JOINTS].copy_from_slice(&config.initial_offsets_rad);
         let held_base = Held {
-            prior_weight: [T::zero(); MAX_PARAMS],
+            prior_weight: prior_weights(model, &base, poses, config.sensor_noise_rad),
             ..held
         };
         if let Ok(start) = levenberg_marquardt(model, &base, poses, xb, &held_base, config) {
@@ -477,13 +530,46 @@ pub fn fit<T: Real>(
             }
         }
     }
+    let mut solved = levenberg_marquardt(model, &layout, poses, x, &held, config)?;
+    // The priors are pseudo-readings weighted against one reading's noise: where the
+    // residuals show more scatter than the sensor's (the robot's repeatability, its
+    // unmodelled errors), they are weighed against that instead, and the fit is run
+    // again from where it stands, so that a prior is worth its stated size against
+    // these readings and not against a quieter sensor's.
+    let mut prior_noise_rad = config.sensor_noise_rad;
+    let prior_part = |x: &[T; MAX_PARAMS], held: &Held<T>| {
+        (0..n).fold(T::zero(), |acc, i| {
+            let v = held.prior_weight[i] * x[i];
+            acc + v * v
+        })
+    };
+    let dof = (2 * poses.len()).saturating_sub(n);
+    if dof >= config.min_residual_dof && held.prior_weight.iter().any(|w| *w > T::zero()) {
+        let data = (solved.cost - prior_part(&solved.x, &held)).max(T::zero());
+        let shown = (data / T::lit(dof as f64)).sqrt();
+        if shown > prior_noise_rad * T::lit(PRIOR_REWEIGHT) {
+            prior_noise_rad = shown;
+            let reweighted = Held {
+                prior_weight: prior_weights(model, &layout, poses, shown),
+                ..held
+            };
+            if let Ok(again) =
+                levenberg_marquardt(model, &layout, poses, solved.x, &reweighted, config)
+            {
+                solved = Solved {
+                    iterations: solved.iterations + again.iterations,
+                    ..again
+                };
+            }
+        }
+    }
     let Solved {
         x,
         info,
         cost,
         worst,
         iterations,
-    } = levenberg_marquardt(model, &layout, poses, x, &held, config)?;
+    } = solved;
 
     let condition_number = check_conditioning(&info, &layout, config.max_condition_number)?;
     let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
@@ -558,6 +644,7 @@ pub fn fit<T: Real>(
     }
     let unfitted_rad = geometry::unfitted_effect(model, &layout, dropped, poses, &x, &inv);
     finish(
+        model,
         &layout,
         &x,
         &inv,
@@ -573,6 +660,7 @@ pub fn fit<T: Real>(
             extras,
             dropped,
             unfitted_rad,
+            prior_noise_rad,
         },
         config,
     )
@@ -696,6 +784,7 @@ struct Summary<T> {
     extras: Extras,
     dropped: ParamSet,
     unfitted_rad: [T; WRIST_JOINTS],
+    prior_noise_rad: T,
 }
 
 /// σ from the residuals (or the sensor's figure), and the result in physical form.
@@ -703,6 +792,7 @@ struct Summary<T> {
 // (the pendant's fit is stack-measured on target).
 #[inline(never)]
 fn finish<T: Real>(
+    model: &Stage2Model<T>,
     layout: &Layout,
     x: &[T; MAX_PARAMS],
     inv: &Square<T, MAX_PARAMS>,
@@ -726,12 +816,11 @@ fn finish<T: Real>(
         (config.sensor_noise_rad, SigmaSource::SensorNoise)
     };
     let variance = noise_sigma_rad * noise_sigma_rad;
-    // The larger of the stated figure and what this session's residuals show: a
-    // session noisier than the data sheet is budgeted as it is.
-    // The larger of the stated figure and what this session's residuals show: a
-    // session noisier than the data sheet is budgeted as it is (the residuals also hold
-    // part of the robot's repeatability, so this errs on the safe side).
-    let handover_variance = (config.handover_noise_rad * config.handover_noise_rad).max(variance);
+    // Stages 0-1's readings have the sensor's noise (their own robot scatter is the
+    // repeatability term's): stage 2's residuals hold what stage 2 alone has (the
+    // robot's scatter at each pose, what the model leaves), and scaling the hand-over
+    // by them would count that twice.
+    let handover_variance = config.handover_noise_rad * config.handover_noise_rad;
     let cov_of =
         |r: usize, c: usize| inv.m[r][c] * variance + handover_part.m[r][c] * handover_variance;
     let mut values = [T::zero(); MAX_PARAMS];
@@ -752,6 +841,28 @@ fn finish<T: Real>(
         core::array::from_fn(|r| core::array::from_fn(|c| cov_of(r, c)));
     let model_sensitivity: [[T; HANDOVER_PARAMS]; WRIST_JOINTS] =
         core::array::from_fn(|r| sensitivity[r]);
+    // The zeros through their map: L·x, L·C·Lᵀ, L·S.
+    let l = zeros_map(model, layout);
+    let dot = |row: &[T; MAX_PARAMS], v: &dyn Fn(usize) -> T| {
+        (0..n).fold(T::zero(), |acc, i| {
+            if row[i] == T::zero() {
+                acc
+            } else {
+                acc + row[i] * v(i)
+            }
+        })
+    };
+    let joint2_correction_rad = dot(&l[0], &|i| x[i]);
+    let quad = |a: &[T; MAX_PARAMS], b: &[T; MAX_PARAMS], m: &dyn Fn(usize, usize) -> T| {
+        dot(a, &|i| dot(b, &|j| m(i, j)))
+    };
+    let zeros_covariance_rad2: [[T; ZEROS]; ZEROS] =
+        core::array::from_fn(|r| core::array::from_fn(|c| quad(&l[r], &l[c], &cov_of)));
+    let zeros_sigma_stage2_rad: [T; ZEROS] = core::array::from_fn(|r| {
+        (quad(&l[r], &l[r], &|i, j| inv.m[i][j]).max(T::zero()) * variance).sqrt()
+    });
+    let zeros_sensitivity: [[T; HANDOVER_PARAMS]; ZEROS] =
+        core::array::from_fn(|r| core::array::from_fn(|m| dot(&l[r], &|i| sensitivity[i][m])));
     if config.max_residual_rms_rad > T::zero() && residual_rms_rad > config.max_residual_rms_rad {
         return Err(FitError::ResidualTooLarge {
             rms_deg: rad_to_deg(residual_rms_rad).to_f64() as f32,
@@ -787,6 +898,11 @@ fn finish<T: Real>(
         extras: s.extras,
         dropped: s.dropped,
         unfitted_rad: s.unfitted_rad,
+        prior_noise_rad: s.prior_noise_rad,
+        joint2_correction_rad,
+        zeros_covariance_rad2,
+        zeros_sigma_stage2_rad,
+        zeros_sensitivity,
     })
 }
 
@@ -814,14 +930,69 @@ pub fn single_linearised_step<T: Real>(
 }
 
 /// J of commanded poses at the given offsets (zero when planning: none are known yet),
-/// no readings needed.
+/// no readings needed, with the held offsets and the stated priors for a reading noise
+/// of `noise_rad` ([`add_held`]).
 pub fn information<T: Real>(
     model: &Stage2Model<T>,
     extras: Extras,
     joints_rad: &[[T; JOINTS]],
     offsets_rad: &[T; WRIST_JOINTS],
+    noise_rad: T,
 ) -> Information<T> {
-    information_at(model, extras, joints_rad.iter().copied(), offsets_rad)
+    information_at(
+        model,
+        extras,
+        joints_rad.iter().copied(),
+        offsets_rad,
+        noise_rad,
+    )
+}
+
+/// J of commanded poses as [`information`], without the held offsets or any prior: one
+/// pose's share of a design's information (the planner adds them once).
+pub fn information_without_priors<T: Real>(
+    model: &Stage2Model<T>,
+    extras: Extras,
+    joints_rad: &[[T; JOINTS]],
+    offsets_rad: &[T; WRIST_JOINTS],
+) -> Information<T> {
+    let layout = extras.layout();
+    let estimate = Estimate {
+        offsets_rad: *offsets_rad,
+        ..Estimate::default()
+    };
+    let pass = model.pass(&estimate, &layout);
+    let mut info = Information::new(layout.len());
+    for q in joints_rad {
+        let pose = PoseReading {
+            joints_rad: *q,
+            reading: Tilt::default(),
+            temperature_c: None,
+        };
+        let p = model.predict_rows(&pass, &layout, &estimate, &pose, false);
+        info.add_row(&p.rows[0], T::zero());
+        info.add_row(&p.rows[1], T::zero());
+    }
+    info
+}
+
+/// The two rows of J (x, then y weighted) of commanded pose `q` at zero offsets over
+/// `layout`: one candidate pose's share of a design's information.
+pub fn rows_at<T: Real>(
+    model: &Stage2Model<T>,
+    layout: &Layout,
+    q: &[T; JOINTS],
+) -> [[T; MAX_PARAMS]; 2] {
+    let estimate = Estimate::default();
+    let pass = model.pass(&estimate, layout);
+    let pose = PoseReading {
+        joints_rad: *q,
+        reading: Tilt::default(),
+        temperature_c: None,
+    };
+    model
+        .predict_rows(&pass, layout, &estimate, &pose, false)
+        .rows
 }
 
 /// [`information`] over any sequence of commanded poses.
@@ -830,6 +1001,7 @@ pub(crate) fn information_at<T: Real>(
     extras: Extras,
     joints_rad: impl Iterator<Item = [T; JOINTS]>,
     offsets_rad: &[T; WRIST_JOINTS],
+    noise_rad: T,
 ) -> Information<T> {
     let layout = extras.layout();
     let poses = joints_rad.map(|q| PoseReading {
@@ -848,7 +1020,7 @@ pub(crate) fn information_at<T: Real>(
         info.add_row(&p.rows[0], T::zero());
         info.add_row(&p.rows[1], T::zero());
     }
-    add_held(&mut info, &extras);
+    add_held(&mut info, &extras, noise_rad);
     info
 }
 

@@ -9,7 +9,10 @@
 //! propagated through the chain ([`WristChain::up_and_partials_with`]).
 
 use super::information::Row;
-use super::params::{tilt_directions, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_JOINTS};
+use super::params::{
+    basis_index, harmonic_of, tilt_directions, Layout, Param, HARMONIC_SLOTS, MAX_HARMONIC_ORDER,
+    MAX_PARAMS, TILT_SLOTS, WRIST_SAG_JOINTS, WRIST_SAG_SLOTS,
+};
 use super::PoseReading;
 use crate::model::{
     joint_trig, Arm, BaseTilt, Gain, SensorModel, Tilt, WristChain, JOINTS, WRIST_JOINTS,
@@ -110,6 +113,28 @@ impl<T: Real> MassModel<T> {
         })
     }
 
+    /// The links alone, the pendant taken off.
+    pub fn without_pendant(&self) -> Self {
+        MassModel {
+            pendant_kg: T::zero(),
+            ..*self
+        }
+    }
+
+    /// The pendant's own gravity lever about each joint's axis at true joint angles
+    /// `q_rad` (kg·m): [`PENDANT_KG`] at [`PENDANT_COM_M`] on the flange, whatever the
+    /// model's own pendant (a profile's relative masses carry none).
+    pub fn pendant_levers_kgm(arm: &Arm<T>, q_rad: &[T; JOINTS]) -> [T; JOINTS] {
+        let (frames, flange) = arm.frames(q_rad);
+        let down = -Vector3::z();
+        let c = flange.translation_m
+            + flange.rotation * Vector3::new(T::zero(), T::zero(), T::lit(PENDANT_COM_M));
+        core::array::from_fn(|j| {
+            let axis = frames[j].rotation * arm.joints[j].axis.unit::<T>();
+            T::lit(PENDANT_KG) * axis.dot(&(c - frames[j].translation_m).cross(&down))
+        })
+    }
+
     /// With the pendant (and a tool of `tool_kg` lumped at its centre) on the flange:
     /// [`PENDANT_KG`] at [`PENDANT_COM_M`].
     pub fn with_pendant(mut self, tool_kg: T) -> Self {
@@ -132,6 +157,20 @@ impl<T: Real> MassModel<T> {
         })
     }
 
+    /// The sum of the magnitudes of each link's own gravity torque about each joint at
+    /// true joint angles `q_rad` (N·m): what the torque could be if every mass were off
+    /// by the same share in the direction that adds up.
+    pub fn moment_magnitudes_nm(&self, arm: &Arm<T>, q_rad: &[T; JOINTS]) -> [T; JOINTS] {
+        let (frames, points) = self.mass_points(arm, q_rad);
+        let down = -Vector3::z() * T::lit(GRAVITY_M_S2);
+        core::array::from_fn(|k| {
+            let axis = frames[k].rotation * arm.joints[k].axis.unit::<T>();
+            points.iter().skip(k).fold(T::zero(), |sum, (kg, c)| {
+                sum + (*kg * axis.dot(&(c - frames[k].translation_m).cross(&down))).abs()
+            })
+        })
+    }
+
     /// The full-load torque about each joint at `q_rad` (N·m): what
     /// [`Self::gravity_torques_nm`] would be with every mass after the joint at its
     /// present distance from the axis, all on the same horizontal side of it
@@ -146,6 +185,34 @@ impl<T: Real> MassModel<T> {
                 let r = c - frames[k].translation_m;
                 sum + *kg * g * (r - axis * axis.dot(&r)).norm()
             })
+        })
+    }
+
+    /// The largest gravity torque each joint could carry (N·m): every mass after it at
+    /// its greatest possible distance from the axis, the links stretched out in a line
+    /// (the sum of the link lengths between them, plus the centre of mass's own offset).
+    /// No pose gives more: the scale a joint's load is judged against
+    /// ([`super::transmission::loaded_side`]).
+    pub fn stretched_torques_nm(&self, arm: &Arm<T>) -> [T; JOINTS] {
+        let g = T::lit(GRAVITY_M_S2);
+        let length = |k: usize| {
+            if k < JOINTS {
+                arm.joints[k].origin.translation_m.norm()
+            } else {
+                arm.flange.translation_m.norm()
+            }
+        };
+        core::array::from_fn(|j| {
+            let mut torque = T::zero();
+            let mut reach = T::zero();
+            for i in j..JOINTS {
+                if i > j {
+                    reach += length(i);
+                }
+                torque += self.link_kg[i] * g * (reach + self.com_m[i].norm());
+            }
+            reach += length(JOINTS);
+            torque + self.pendant_kg * g * (reach + self.pendant_com_m.norm())
         })
     }
 
@@ -206,8 +273,12 @@ pub struct Stage2Model<T: Real> {
     pub arm: Arm<T>,
     /// Base tilt measured in stage 1.
     pub base_tilt: BaseTilt<T>,
-    /// Δθ2 measured in stage 1 (rad): joint 2's true angle is the recorded one plus this.
+    /// Δθ2 measured in stage 1 (rad): joint 2's true angle is the recorded one plus this
+    /// at stage 1's angle. Where stage 2 moves joint 2, its transmission error's change
+    /// from stage 1's angle is added ([`Param::Harmonic`]).
     pub delta_theta2_rad: T,
+    /// Joint 2's commanded angle during stage 1 (rad): where Δθ2 was measured.
+    pub stage1_j2_rad: T,
     /// Convention, bias (stages 0-1) and nominal gain of the sensor.
     pub sensor: SensorModel<T>,
     /// The temperature the bias was measured at (°C): the drift terms are relative to it.
@@ -233,6 +304,7 @@ impl<T: Real> Default for Stage2Model<T> {
             arm: Arm::paper(),
             base_tilt: BaseTilt::level(),
             delta_theta2_rad: T::zero(),
+            stage1_j2_rad: T::zero(),
             sensor: SensorModel::default(),
             reference_temperature_c: T::zero(),
             drift_per_k: Tilt::default(),
@@ -257,8 +329,15 @@ pub struct Estimate<T> {
     pub drift_per_k: Tilt<T>,
     /// Misalignments by [`Param::Tilt`] slot (rad).
     pub tilt_rad: [T; TILT_SLOTS],
-    /// Compliances of joints 4, 5, 6 (rad per metre of lever).
-    pub wrist_sag_rad_per_m: [T; WRIST_SAG_JOINTS],
+    /// Compliances of joints 4, 5, 6 under their links' load (rad per metre of
+    /// lever), then under the pendant's (rad per kg·m).
+    pub wrist_sag_rad_per_m: [T; WRIST_SAG_SLOTS],
+    /// Compliance of joint 2 (rad per metre of lever).
+    pub sag2_rad_per_m: T,
+    /// Half the lost motion of joints 2 and 3 (rad).
+    pub lash_rad: [T; 2],
+    /// Transmission-error coefficients by [`Param::Harmonic`] slot (rad).
+    pub harmonics_rad: [T; HARMONIC_SLOTS],
 }
 
 impl<T: Real> Estimate<T> {
@@ -284,8 +363,11 @@ impl<T: Real> Estimate<T> {
                 Param::DriftY => e.drift_per_k.y_rad = v,
                 Param::Tilt(t) => e.tilt_rad[usize::from(t).min(TILT_SLOTS - 1)] = v,
                 Param::WristSag(i) => {
-                    e.wrist_sag_rad_per_m[usize::from(i).min(WRIST_SAG_JOINTS - 1)] = v
+                    e.wrist_sag_rad_per_m[usize::from(i).min(WRIST_SAG_SLOTS - 1)] = v
                 }
+                Param::Sag2 => e.sag2_rad_per_m = v,
+                Param::Lash(i) => e.lash_rad[usize::from(i).min(1)] = v,
+                Param::Harmonic(h) => e.harmonics_rad[usize::from(h).min(HARMONIC_SLOTS - 1)] = v,
             }
         }
         e
@@ -307,6 +389,29 @@ pub(crate) struct Pass<T: Real> {
     up_in_base_partials: [Vector3<T>; 2],
     offset_trig: [(T, T); WRIST_JOINTS],
     gain: Gain<T>,
+    /// Joint 2's harmonic basis at its stage-1 angle.
+    stage1_basis: [T; 2 * MAX_HARMONIC_ORDER],
+    /// The layout's terms that need each pose's gravity levers and torques.
+    needs_levers: bool,
+    needs_wrist: bool,
+    needs_torques: bool,
+    /// What each joint could carry at most (N·m), for the loaded side of its play.
+    stretched_nm: [T; JOINTS],
+}
+
+/// A joint's harmonic basis at angle `q_rad`: cos q, sin q, cos 2q, sin 2q, … up to
+/// the fourth order (a [`Param::Harmonic`] slot takes entry
+/// [`super::params::basis_index`]), by the angle-addition recurrence.
+pub(crate) fn harmonic_basis<T: Real>(q_rad: T) -> [T; 2 * MAX_HARMONIC_ORDER] {
+    let (s1, c1) = q_rad.fast_sin_cos();
+    let mut out = [T::zero(); 2 * MAX_HARMONIC_ORDER];
+    let (mut c, mut s) = (c1, s1);
+    for n in 0..MAX_HARMONIC_ORDER {
+        out[2 * n] = c;
+        out[2 * n + 1] = s;
+        (c, s) = (c * c1 - s * s1, s * c1 + c * s1);
+    }
+    out
 }
 
 /// A predicted reading and its derivatives.
@@ -343,6 +448,19 @@ impl<T: Real> Stage2Model<T> {
             wrist.fixed[k] *= turns[k + 1];
         }
         let any_tilt = layout.params().iter().any(|p| matches!(p, Param::Tilt(_)));
+        let needs_levers = layout
+            .params()
+            .iter()
+            .any(|p| matches!(p, Param::Sag | Param::Sag2));
+        let needs_wrist = layout
+            .params()
+            .iter()
+            .any(|p| matches!(p, Param::WristSag(_)));
+        let needs_torques = layout.params().iter().any(|p| matches!(p, Param::Lash(_)));
+        let stretched_nm = match (&self.masses, needs_torques) {
+            (Some(m), true) => m.stretched_torques_nm(&self.arm),
+            _ => [T::zero(); JOINTS],
+        };
         Pass {
             fixed_in_use: wrist.fixed_in_use(),
             wrist,
@@ -353,18 +471,23 @@ impl<T: Real> Stage2Model<T> {
             up_in_base_partials: self.base_tilt.up_in_base_partials(),
             offset_trig: estimate.offsets_rad.map(|d| d.fast_sin_cos()),
             gain: self.sensor.gain.plus(&estimate.gain),
+            stage1_basis: harmonic_basis(self.stage1_j2_rad),
+            needs_levers,
+            needs_wrist,
+            needs_torques,
+            stretched_nm,
         }
     }
 
     /// The up vector in the frame after joint 2 (before joint 3's fixed rotation) for
     /// the recorded joints 1-2, and the rotation that takes base vectors there.
-    fn shoulder(&self, joints_rad: &[T; JOINTS], tilt: &Rotation3<T>) -> Rotation3<T> {
+    fn shoulder(&self, j1_rad: T, j2_true_rad: T, tilt: &Rotation3<T>) -> Rotation3<T> {
         let [j1, j2, ..] = self.arm.joints;
         let r = j1.origin.rotation
-            * j1.axis.rotation(joints_rad[0])
+            * j1.axis.rotation(j1_rad)
             * j2.origin.rotation
             * tilt
-            * j2.axis.rotation(joints_rad[1] + self.delta_theta2_rad);
+            * j2.axis.rotation(j2_true_rad);
         r.inverse()
     }
 
@@ -379,32 +502,68 @@ impl<T: Real> Stage2Model<T> {
         with_handover: bool,
     ) -> Prediction<T> {
         let q = &pose.joints_rad;
-        let to_link2 = self.shoulder(q, &pass.shoulder_tilt);
-        let base_up = to_link2 * pass.up_in_base;
-        // The levers at the commanded pose: the offsets and Δθ2 (tenths of a degree)
-        // change them by far less than the model's own accuracy, and they keep J exact.
-        let wants_lever = layout
-            .params()
-            .iter()
-            .any(|p| matches!(p, Param::Sag | Param::WristSag(_)));
-        let levers = match (&self.masses, wants_lever) {
+        // The levers and torques at the commanded pose: the offsets and Δθ2 (tenths of
+        // a degree) change them by far less than the model's own accuracy, and they keep
+        // J exact.
+        let levers = match (&self.masses, pass.needs_levers) {
             (Some(m), true) => m.levers_m(&self.arm, q),
             _ => [T::zero(); JOINTS],
         };
+        // The wrist's two loads apart: its links' (their lever) and the pendant's.
+        let (link_levers, pendant_levers) = match (&self.masses, pass.needs_wrist) {
+            (Some(m), true) => (
+                m.without_pendant().levers_m(&self.arm, q),
+                MassModel::pendant_levers_kgm(&self.arm, q),
+            ),
+            _ => ([T::zero(); JOINTS], [T::zero(); JOINTS]),
+        };
+        let sides = match (&self.masses, pass.needs_torques) {
+            (Some(m), true) => {
+                let tau = m.gravity_torques_nm(&self.arm, q);
+                [1, 2].map(|k| super::transmission::loaded_side(tau[k], pass.stretched_nm[k]))
+            }
+            _ => [T::zero(); 2],
+        };
+        // Each joint's harmonic basis; joint 2's taken from its stage-1 angle, where
+        // Δθ2 was measured with its error there.
+        let mut basis = [[T::zero(); 2 * MAX_HARMONIC_ORDER]; 5];
+        for (k, b) in basis.iter_mut().enumerate() {
+            *b = harmonic_basis(q[k + 1]);
+        }
+        for (b, s1) in basis[0].iter_mut().zip(&pass.stage1_basis) {
+            *b -= *s1;
+        }
+        // Each joint's angle-dependent part: harmonics, sag, lost motion.
+        let mut moved = [T::zero(); WRIST_JOINTS + 1];
+        for (h, c) in estimate.harmonics_rad.iter().enumerate() {
+            if *c != T::zero() {
+                let (joint, _, _) = harmonic_of(h as u8);
+                moved[joint - 2] += *c * basis[joint - 2][basis_index(h as u8)];
+            }
+        }
+        moved[0] += estimate.sag2_rad_per_m * levers[1] + estimate.lash_rad[0] * sides[0];
+        moved[1] += estimate.sag_rad_per_m * levers[2] + estimate.lash_rad[1] * sides[1];
+        for i in 0..WRIST_SAG_SLOTS {
+            if layout.slot(Param::WristSag(i as u8)).is_some() {
+                let k = i % WRIST_SAG_JOINTS;
+                let lever = if i < WRIST_SAG_JOINTS {
+                    link_levers[k + 3]
+                } else {
+                    pendant_levers[k + 3]
+                };
+                moved[k + 2] += estimate.wrist_sag_rad_per_m[i] * lever;
+            }
+        }
+        let j2_true = q[1] + self.delta_theta2_rad + moved[0];
+        let to_link2 = self.shoulder(q[0], j2_true, &pass.shoulder_tilt);
+        let base_up = to_link2 * pass.up_in_base;
         let lever = if layout.slot(Param::Sag).is_some() {
             levers[2]
         } else {
             T::zero()
         };
         let mut offset_trig = pass.offset_trig;
-        let mut deflection = [T::zero(); WRIST_JOINTS];
-        deflection[0] = estimate.sag_rad_per_m * lever;
-        for i in 0..WRIST_SAG_JOINTS {
-            if layout.slot(Param::WristSag(i as u8)).is_some() {
-                deflection[i + 1] = estimate.wrist_sag_rad_per_m[i] * levers[i + 3];
-            }
-        }
-        for (k, d) in deflection.iter().enumerate() {
+        for (k, d) in moved[1..].iter().enumerate() {
             if *d != T::zero() {
                 offset_trig[k] = (estimate.offsets_rad[k] + *d).fast_sin_cos();
             }
@@ -441,6 +600,11 @@ impl<T: Real> Stage2Model<T> {
         let (reading, grad, d_bias) = (read.reading, read.grad, read.d_bias);
         // Through the gain: d(reading)/dv = grad·G·dv for a change dv of u.
         let through = |axis: usize, dv: &Vector3<T>| grad[axis].dot(&g.apply_linear(dv));
+        // Turning joint 2 by dq turns the up vector in link 2 by (u × a₂)·dq.
+        let axis2 = self.arm.joints[1].axis.unit::<T>();
+        let d_j2 = pass
+            .wrist
+            .to_sensor(&pass.fixed_in_use, &base_up.cross(&axis2), &trig);
         let mut rows = [[T::zero(); MAX_PARAMS]; 2];
         for (slot, &p) in layout.params().iter().enumerate() {
             for (axis, row) in rows.iter_mut().enumerate() {
@@ -465,7 +629,7 @@ impl<T: Real> Stage2Model<T> {
                         // before its own turn) moves the up vector there by (u × E₂ᵀd)·ε.
                         let d = pass.tilt_dirs[usize::from(t)];
                         let axis2 = self.arm.joints[1].axis;
-                        let (s, c) = (q[1] + self.delta_theta2_rad).fast_sin_cos();
+                        let (s, c) = j2_true.fast_sin_cos();
                         let moved = base_up.cross(&axis2.rotate_transposed(&d, s, c));
                         through(
                             axis,
@@ -474,8 +638,26 @@ impl<T: Real> Stage2Model<T> {
                     }
                     Param::Tilt(t) => through(axis, &dtilt[usize::from(t).min(TILT_SLOTS - 1) - 2]),
                     Param::WristSag(i) => {
-                        let i = usize::from(i).min(WRIST_SAG_JOINTS - 1);
-                        levers[i + 3] * through(axis, &du[i + 1])
+                        let i = usize::from(i).min(WRIST_SAG_SLOTS - 1);
+                        let k = i % WRIST_SAG_JOINTS;
+                        let lever = if i < WRIST_SAG_JOINTS {
+                            link_levers[k + 3]
+                        } else {
+                            pendant_levers[k + 3]
+                        };
+                        lever * through(axis, &du[k + 1])
+                    }
+                    Param::Sag2 => levers[1] * through(axis, &d_j2),
+                    Param::Lash(0) => sides[0] * through(axis, &d_j2),
+                    Param::Lash(_) => sides[1] * through(axis, &du[0]),
+                    Param::Harmonic(h) => {
+                        let (joint, _, _) = harmonic_of(h);
+                        let b = basis[joint - 2][basis_index(h)];
+                        if joint == 2 {
+                            b * through(axis, &d_j2)
+                        } else {
+                            b * through(axis, &du[joint - 3])
+                        }
                     }
                 };
             }
@@ -492,11 +674,6 @@ impl<T: Real> Stage2Model<T> {
                 &(to_link2 * pass.up_in_base_partials[1]),
                 &trig,
             );
-            // Turning joint 2 by dq turns the up vector in link 2 by (u × a₂)·dq.
-            let axis2 = self.arm.joints[1].axis.unit::<T>();
-            let d_j2 = pass
-                .wrist
-                .to_sensor(&pass.fixed_in_use, &base_up.cross(&axis2), &trig);
             for (axis, row) in handover_rows.iter_mut().enumerate() {
                 *row = [
                     through(axis, &d_alpha),

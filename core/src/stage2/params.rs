@@ -17,24 +17,70 @@
 //!   the two axes are parallel ([`tilt_directions`]);
 //! - **wrist sag**: the deflection of joints 4, 5 and 6 under the weight of what they
 //!   carry (the links after them, the pendant, a tool), one compliance each times its
-//!   gravity lever.
+//!   gravity lever;
+//! - **joint 2's sag**: where stage 2 moves joint 2, its own compliance times its
+//!   gravity lever (the upper arm's mass included), apart from joint 3's;
+//! - **lash**: half the lost motion of joints 2 and 3, on the side gravity loads them
+//!   ([`super::transmission::loaded_side`]): stage 1's unloaded pose and the two
+//!   approaches find the middle of the play, a loaded joint sits on one flank;
+//! - **transmission error**: each of joints 2-6's reducer error over its output turn,
+//!   its first and second harmonics (cosine and sine): the zero is the constant part
+//!   ([`super::transmission`]).
 //!
 //! The geometric terms (tilt, wrist sag) are candidates: the fit keeps those the poses
-//! separate from everything else ([`super::geometry::identifiable`]) and carries the others in the
-//! budget at their stated worst case.
+//! separate from everything else ([`super::geometry::identifiable`]) and carries the
+//! others in the budget at their stated worst case. The harmonics and the lash are
+//! candidates too, kept wherever their joint's motion shows them, each with a prior at
+//! its stated size: where the poses determine one it is measured, where they do not the
+//! prior carries its stated size into the zeros' uncertainty.
 
 use crate::error::{ParamSet, PARAM_NAMES};
 
 const _: () = assert!(PARAM_NAMES.len() == MAX_PARAMS);
 
 /// Most parameters stage 2 estimates.
-pub const MAX_PARAMS: usize = 18 + TILT_SLOTS + WRIST_SAG_JOINTS;
+pub const MAX_PARAMS: usize = 18 + TILT_SLOTS + WRIST_SAG_SLOTS + 3 + HARMONIC_SLOTS;
+
+/// Joints whose transmission error stage 2 models: 2-6.
+pub const HARMONIC_JOINTS: usize = 5;
+
+/// Harmonics per joint: once and twice per output turn.
+pub const HARMONIC_ORDERS: usize = 2;
+
+/// Joint 2's harmonics beyond the second (3 and 4 times a turn, cosine and sine): its
+/// zero is extrapolated from the part of a turn stage 2 sweeps to its stage-1 angle,
+/// where these would otherwise be read as the first two
+/// ([`super::transmission::HIGHER_HARMONIC_SHARE`]).
+pub const JOINT2_HIGHER_SLOTS: usize = 4;
+
+/// Transmission-error slots: a cosine and a sine per order and joint (slot
+/// `4·(j − 2) + 2·(n − 1) + s`, s = 1 for the sine), then joint 2's orders 3 and 4
+/// (slot `20 + 2·(n − 3) + s`).
+pub const HARMONIC_SLOTS: usize = HARMONIC_JOINTS * HARMONIC_ORDERS * 2 + JOINT2_HIGHER_SLOTS;
+
+/// Joint 2's transmission-error slots (orders 1-4).
+pub const JOINT2_HARMONICS: u32 =
+    0b1111 | (((1 << JOINT2_HIGHER_SLOTS) - 1) << (HARMONIC_JOINTS * HARMONIC_ORDERS * 2));
+
+/// The highest order a slot has: joint 2's fourth.
+pub const MAX_HARMONIC_ORDER: usize = 4;
+
+/// Every transmission-error slot.
+pub const HARMONIC_ALL: u32 = (1 << HARMONIC_SLOTS) - 1;
+
+/// Joints whose lost motion under gravity is modelled: 2 (bit 0) and 3 (bit 1).
+pub const LASH_ALL: u8 = 0b11;
 
 /// Misalignment slots: two directions for each of joints 2-6 (slot `2·(j − 2) + d`).
 pub const TILT_SLOTS: usize = 10;
 
 /// Joints whose compliance under the wrist's own load can be fitted: 4, 5, 6.
 pub const WRIST_SAG_JOINTS: usize = 3;
+
+/// Wrist-sag slots: the links' load on joints 4, 5, 6, then the pendant's (slot 3 + i):
+/// a profile's link masses are often relative (links of uniform mass per metre), so how
+/// much of a joint's load is the pendant's is not known, and each is fitted apart.
+pub const WRIST_SAG_SLOTS: usize = 2 * WRIST_SAG_JOINTS;
 
 /// One stage-2 parameter. Its index (the order below) is what a [`ParamSet`] names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -74,8 +120,48 @@ pub enum Param {
     /// Misalignment slot `s` (rad): joint `2 + s/2` turned about its `s % 2`-th
     /// [`tilt_directions`] direction.
     Tilt(u8),
-    /// Compliance of joint `4 + i` (rad per metre of its gravity lever).
+    /// Compliance of joint `4 + i % 3` under its links' load (`i` < 3, rad per metre of
+    /// their gravity lever) or under the pendant's (`i` ≥ 3, rad per kg·m).
     WristSag(u8),
+    /// Compliance of joint 2 (rad per metre of its gravity lever, the upper arm's mass
+    /// in it), where stage 2 moves joint 2.
+    Sag2,
+    /// Half the lost motion of joint `2 + i` (rad), on the side gravity loads it.
+    Lash(u8),
+    /// Transmission-error coefficient slot `h` (rad): joint `2 + h/4`, order
+    /// `1 + (h/2)%2`, cosine (`h` even) or sine.
+    Harmonic(u8),
+}
+
+/// A transmission-error slot's joint (2..=6), order (1..=4) and whether it is the sine.
+pub const fn harmonic_of(h: u8) -> (usize, u8, bool) {
+    let low = (HARMONIC_JOINTS * HARMONIC_ORDERS * 2) as u8;
+    if h < low {
+        (2 + (h as usize) / 4, 1 + (h / 2) % 2, h % 2 == 1)
+    } else {
+        (2, 3 + ((h - low) / 2) % 2, h % 2 == 1)
+    }
+}
+
+/// A slot's place in its joint's basis ([`super::model`]'s `harmonic_basis`: cos q,
+/// sin q, cos 2q, …).
+pub const fn basis_index(h: u8) -> usize {
+    let (_, order, sine) = harmonic_of(h);
+    2 * (order as usize - 1) + sine as usize
+}
+
+/// The slot of joint `joint`'s harmonic of `order`, cosine or sine, if there is one.
+pub const fn harmonic_slot(joint: usize, order: usize, sine: bool) -> Option<u8> {
+    let s = sine as usize;
+    if joint < 2 || joint > 1 + HARMONIC_JOINTS || order < 1 {
+        None
+    } else if order <= HARMONIC_ORDERS {
+        Some((4 * (joint - 2) + 2 * (order - 1) + s) as u8)
+    } else if joint == 2 && order <= MAX_HARMONIC_ORDER {
+        Some((HARMONIC_JOINTS * HARMONIC_ORDERS * 2 + 2 * (order - 3) + s) as u8)
+    } else {
+        None
+    }
 }
 
 impl Param {
@@ -112,14 +198,21 @@ impl Param {
             Param::DriftX,
             Param::DriftY,
         ];
+        const SAG2: usize = 18 + TILT_SLOTS + WRIST_SAG_SLOTS;
         if i < FIXED.len() {
             FIXED[i]
         } else if i < FIXED.len() + TILT_SLOTS {
             Param::Tilt((i - FIXED.len()) as u8)
-        } else if i < MAX_PARAMS {
+        } else if i < SAG2 {
             Param::WristSag((i - FIXED.len() - TILT_SLOTS) as u8)
+        } else if i == SAG2 {
+            Param::Sag2
+        } else if i < SAG2 + 3 {
+            Param::Lash((i - SAG2 - 1) as u8)
+        } else if i < MAX_PARAMS {
+            Param::Harmonic((i - SAG2 - 3) as u8)
         } else {
-            Param::WristSag(WRIST_SAG_JOINTS as u8 - 1)
+            Param::Harmonic(HARMONIC_SLOTS as u8 - 1)
         }
     }
 
@@ -142,7 +235,12 @@ impl Param {
             Param::DriftX => 16,
             Param::DriftY => 17,
             Param::Tilt(s) => 18 + usize::from(s).min(TILT_SLOTS - 1),
-            Param::WristSag(i) => 18 + TILT_SLOTS + usize::from(i).min(WRIST_SAG_JOINTS - 1),
+            Param::WristSag(i) => 18 + TILT_SLOTS + usize::from(i).min(WRIST_SAG_SLOTS - 1),
+            Param::Sag2 => 18 + TILT_SLOTS + WRIST_SAG_SLOTS,
+            Param::Lash(i) => 19 + TILT_SLOTS + WRIST_SAG_SLOTS + usize::from(i).min(1),
+            Param::Harmonic(h) => {
+                21 + TILT_SLOTS + WRIST_SAG_SLOTS + usize::from(h).min(HARMONIC_SLOTS - 1)
+            }
         }
     }
 
@@ -183,6 +281,12 @@ pub struct Extras {
     pub tilt: u16,
     /// Wrist-sag candidates (bit i = joint 4 + i; needs the masses): as `tilt`.
     pub wrist_sag: u8,
+    /// Joint 2's own sag (needs the masses, and poses that move joint 2).
+    pub sag2: bool,
+    /// Lost-motion candidates (bit 0: joint 2, bit 1: joint 3; needs the masses).
+    pub lash: u8,
+    /// Transmission-error candidates (bit h = [`Param::Harmonic`] slot h).
+    pub transmission: u32,
 }
 
 impl Extras {
@@ -197,6 +301,9 @@ impl Extras {
         held: [false; 4],
         tilt: 0,
         wrist_sag: 0,
+        sag2: false,
+        lash: 0,
+        transmission: 0,
     };
 
     /// What a session with a MEMS inclinometer (the SCL3300, `axis` convention) fits
@@ -222,15 +329,38 @@ impl Extras {
             held: arm.parallel_twins(),
             tilt: tilt_candidates(arm),
             wrist_sag: if sag { WRIST_SAG_ALL } else { 0 },
+            sag2: sag,
+            lash: if sag { LASH_ALL } else { 0 },
+            transmission: HARMONIC_ALL,
         }
     }
 
-    /// Without the geometric candidates (tilt, wrist sag): the terms of the sensor and
-    /// joints 2-3 only.
+    /// Without the geometric candidates (tilt, wrist sag): the terms of the sensor,
+    /// joints 2-3 and the transmission errors only.
     pub fn without_geometry(self) -> Extras {
         Extras {
             tilt: 0,
             wrist_sag: 0,
+            ..self
+        }
+    }
+
+    /// Without the terms that only poses moving joint 2 show: joint 2's sag, its lost
+    /// motion and its harmonics.
+    pub fn without_joint2(self) -> Extras {
+        Extras {
+            sag2: false,
+            lash: self.lash & !1,
+            transmission: self.transmission & !JOINT2_HARMONICS,
+            ..self
+        }
+    }
+
+    /// Without the transmission-error harmonics and the lost motion.
+    pub fn without_reducers(self) -> Extras {
+        Extras {
+            lash: 0,
+            transmission: 0,
             ..self
         }
     }
@@ -254,6 +384,9 @@ impl Extras {
                 Param::DriftX | Param::DriftY => self.drift,
                 Param::Tilt(t) => self.tilt & (1 << t) != 0,
                 Param::WristSag(i) => self.wrist_sag & (1 << i) != 0,
+                Param::Sag2 => self.sag2,
+                Param::Lash(i) => self.lash & (1 << i) != 0,
+                Param::Harmonic(h) => self.transmission & (1 << h) != 0,
             };
             if on {
                 params[n] = p;
@@ -264,8 +397,8 @@ impl Extras {
     }
 }
 
-/// Every wrist-sag candidate (joints 4, 5, 6).
-pub const WRIST_SAG_ALL: u8 = (1 << WRIST_SAG_JOINTS) - 1;
+/// Every wrist-sag candidate (joints 4, 5, 6, links and pendant).
+pub const WRIST_SAG_ALL: u8 = (1 << WRIST_SAG_SLOTS) - 1;
 
 /// The directions (unit, in joint `j`'s frame before its turn) about which joint `j`
 /// (2..=6) may be misaligned, with whether the pair (j−1, j) is parallel: one direction
@@ -374,6 +507,9 @@ mod tests {
             held: [false; 4],
             tilt: (1 << TILT_SLOTS) - 1,
             wrist_sag: WRIST_SAG_ALL,
+            sag2: true,
+            lash: LASH_ALL,
+            transmission: HARMONIC_ALL,
         }
         .layout();
         assert_eq!(all.len(), MAX_PARAMS);

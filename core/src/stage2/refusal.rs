@@ -34,6 +34,21 @@ pub const STEP_LIMIT: f64 = 60.0;
 /// A step below this (deg) is never called a move.
 pub const STEP_FLOOR_DEG: f64 = 0.01;
 
+/// A steady drift of the readings over stage 2 whose F
+/// ([`crate::session::judge::evidence`]) exceeds this (and whose size exceeds
+/// [`RAMP_FLOOR_DEG`]) is a bracket creeping: set by the Monte-Carlo of
+/// docs/error-budget.md (the refusal rule).
+pub const RAMP_LIMIT: f64 = 20.0;
+
+/// A drift over stage 2 below this (deg) is never called a creep.
+pub const RAMP_FLOOR_DEG: f64 = 0.005;
+
+/// Two visits of one pose may read at most this far apart (deg, the larger of x and y,
+/// the bias' drift with temperature taken out): the robot's repeatability and the
+/// sensor's noise between them on a tight bracket. Set by the Monte-Carlo of
+/// docs/error-budget.md (the refusal rule).
+pub const MAX_REVISIT_DIFFERENCE_DEG: f64 = 0.015;
+
 /// The limits of the rule (deg, or factors), by default those above.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RefusalRule {
@@ -47,6 +62,12 @@ pub struct RefusalRule {
     pub step_limit: f64,
     /// [`STEP_FLOOR_DEG`].
     pub step_floor_deg: f64,
+    /// [`RAMP_LIMIT`].
+    pub ramp_limit: f64,
+    /// [`RAMP_FLOOR_DEG`].
+    pub ramp_floor_deg: f64,
+    /// [`MAX_REVISIT_DIFFERENCE_DEG`].
+    pub max_revisit_difference_deg: f64,
 }
 
 impl RefusalRule {
@@ -57,6 +78,9 @@ impl RefusalRule {
         outlier_floor_deg: OUTLIER_FLOOR_DEG,
         step_limit: STEP_LIMIT,
         step_floor_deg: STEP_FLOOR_DEG,
+        ramp_limit: RAMP_LIMIT,
+        ramp_floor_deg: RAMP_FLOOR_DEG,
+        max_revisit_difference_deg: MAX_REVISIT_DIFFERENCE_DEG,
     };
 
     /// No fault is looked for (a measurement of the evidence itself).
@@ -66,6 +90,9 @@ impl RefusalRule {
         outlier_floor_deg: f64::INFINITY,
         step_limit: f64::INFINITY,
         step_floor_deg: f64::INFINITY,
+        ramp_limit: f64::INFINITY,
+        ramp_floor_deg: f64::INFINITY,
+        max_revisit_difference_deg: f64::INFINITY,
     };
 }
 

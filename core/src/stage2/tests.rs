@@ -33,6 +33,7 @@ fn model(conv: Convention) -> Stage2Model<f64> {
         arm,
         base_tilt: BaseTilt::from_deg(0.3, -0.5),
         delta_theta2_rad: 0.004,
+        stage1_j2_rad: -1.2,
         sensor: SensorModel {
             convention: conv,
             bias: Tilt::from_deg(0.01, -0.02),
@@ -65,6 +66,9 @@ const ALL: Extras = Extras {
     drift: true,
     tilt: (1 << TILT_SLOTS) - 1,
     wrist_sag: WRIST_SAG_ALL,
+    sag2: true,
+    lash: super::params::LASH_ALL,
+    transmission: super::params::HARMONIC_ALL,
 };
 
 #[test]

@@ -9,11 +9,13 @@
 //! `Σᵢ gᵢ·a·sin(n·qᵢ + φ)` has variance `a²/2·|Σᵢ gᵢ·e^{i·n·qᵢ}|²`: small where the poses
 //! spread the joint over whole periods, up to `a²/2` where they sit at one angle.
 
-use super::{add_held, RANK_DEFICIENT_CONDITION};
+use super::params::HARMONIC_JOINTS;
+use super::Param;
+use super::{add_held, RANK_DEFICIENT_CONDITION, ZEROS};
 use super::{check_conditioning, Extras, PoseReading, Stage2Model, MAX_PARAMS};
 use crate::error::FitError;
 use crate::model::WRIST_JOINTS;
-use crate::real::Real;
+use crate::real::{deg_to_rad, Real};
 
 /// The largest peak-to-peak transmission error of one joint the budget assumes (deg),
 /// harmonics 2-4 of the joint's turn: reducer catalogues state about 1 arc min of
@@ -27,15 +29,81 @@ pub const TRANSMISSION_PP_MAX_DEG: f64 = 0.03;
 /// Boby and Klimchik), the wrist twisting under gravity.
 pub const ONCE_PER_TURN_PP_MAX_DEG: f64 = 0.025;
 
-/// Orders of the harmonics the budget considers: once per turn (joints 4 and 6 only),
-/// then 2-4.
-const ORDERS: [u8; 4] = [1, 2, 3, 4];
+/// A joint whose gravity torque is below this share of the most it could carry
+/// ([`super::MassModel::stretched_torques_nm`]) is unloaded: friction holds its output
+/// where the approach left it, and the two approaches average to the middle of its
+/// play. A stated bound (no source gives a reducer's friction against its load): a
+/// reducer's no-load running torque is a few percent of its rating.
+pub const UNLOADED_SHARE: f64 = 0.02;
 
-/// The variance of Δθ3..Δθ6 (rad²) from each joint's angle-dependent error of amplitude
-/// `amplitude_rad[j]` (joints 3-6, half its peak to peak, in whichever one of orders 2-4
-/// moves the offsets most) and `once_per_turn_rad[j]`, of unknown phase and independent
-/// from joint to joint, through the fit of `extras` on `poses`. Joint 2 is held where
-/// stage 1 had it, so its error there is part of Δθ2 and not of these.
+/// A joint whose gravity torque exceeds this share of the most it could carry is
+/// loaded: gravity holds its output on one flank of its play whatever the approach. A
+/// stated bound, well above any friction; the planner keeps joints 2 and 3 out of the
+/// band between the two shares ([`crate::plan`]).
+pub const LOADED_SHARE: f64 = 0.3;
+
+/// Where within its play a joint sits, as a share of half its lost motion: +1 on the
+/// positive flank (gravity turning it positive), −1 on the negative, 0 in the middle
+/// (unloaded, the approaches averaged); a ramp between [`UNLOADED_SHARE`] and
+/// [`LOADED_SHARE`] of its most (`stretched_nm`), where the side is not known.
+pub fn loaded_side<T: Real>(torque_nm: T, stretched_nm: T) -> T {
+    if !(stretched_nm > T::zero()) || !torque_nm.is_finite() {
+        return T::zero();
+    }
+    let share = torque_nm.abs() / stretched_nm;
+    let (lo, hi) = (T::lit(UNLOADED_SHARE), T::lit(LOADED_SHARE));
+    let ramp = ((share - lo) / (hi - lo)).max(T::zero()).min(T::one());
+    if torque_nm < T::zero() {
+        -ramp
+    } else {
+        ramp
+    }
+}
+
+/// The prior a transmission-error coefficient carries in the fit (deg, 1σ): a harmonic
+/// whose amplitude lies anywhere up to half [`TRANSMISSION_PP_MAX_DEG`] (a stated range,
+/// taken rectangular as GUM 4.3.7 takes one: RMS amplitude `a/√3`) at an unknown phase
+/// has cosine and sine coefficients of RMS `a/√6` each.
+pub const HARMONIC_PRIOR_SD_DEG: f64 = TRANSMISSION_PP_MAX_DEG / 2.0 / 2.449_489_742_783_178;
+
+/// The prior half a loaded joint's lost motion carries in the fit (deg, 1σ): uniform
+/// between none and half the stated lost motion
+/// ([`crate::session::DEFAULT_LOST_MOTION_DEG`]), its RMS `L/(2√3)` about zero.
+pub const LASH_PRIOR_SD_DEG: f64 =
+    crate::session::DEFAULT_LOST_MOTION_DEG / 2.0 / 1.732_050_807_568_877_2;
+
+/// A reducer term's prior standard deviation (rad): the transmission-error harmonics'
+/// and the lost motion's stated sizes; `None` for every other parameter.
+pub fn prior_sd_rad<T: Real>(p: Param) -> Option<T> {
+    match p {
+        Param::Harmonic(h) if super::params::harmonic_of(h).1 > 2 => Some(deg_to_rad(T::lit(
+            HARMONIC_PRIOR_SD_DEG * HIGHER_HARMONIC_SHARE,
+        ))),
+        Param::Harmonic(_) => Some(deg_to_rad(T::lit(HARMONIC_PRIOR_SD_DEG))),
+        Param::Lash(_) => Some(deg_to_rad(T::lit(LASH_PRIOR_SD_DEG))),
+        _ => None,
+    }
+}
+
+/// Orders of a joint's transmission error the budget carries: the fitted ones (1, 2)
+/// where the fit does not estimate them, and the two after them, which it never does.
+pub const BUDGET_ORDERS: usize = 4;
+
+/// The largest amplitude of a transmission error's third and fourth harmonics, as a
+/// share of [`TRANSMISSION_PP_MAX_DEG`]'s half: a stated bound. The laser-tracker data
+/// of a FANUC R-2000iC/165F (Boby and Klimchik) show the joints' errors once and twice
+/// per turn; no public spectrum of a robot reducer's error beyond that was found.
+pub const HIGHER_HARMONIC_SHARE: f64 = 0.25;
+
+/// The variance of the zeros ([`super::ZEROS`]: Δθ2's correction with stage 1's own
+/// error, Δθ3..Δθ6) (rad²) from each joint's transmission error that the fit of
+/// `extras` does not model: `amplitude_rad[j][o]`, the amplitude of order `o + 1` of
+/// joint `j + 2` (0 where the fit estimates it), of unknown phase and independent from
+/// joint to joint and order to order. A harmonic `a·sin(n·q + φ)` moves the readings
+/// by its joint's column times its value at each pose; the fit takes a share of that
+/// into every zero, `L·(JᵀJ)⁻¹·Σᵢ Jᵢᵀ·jᵢ·e^{i·n·qᵢ}`, with variance
+/// `a²/2·|…|²` over the phase. Joint 2's enters relative to its stage-1 angle c2
+/// (stage 1's Δθ2 holds its error there), and Δθ2 takes `e^{i·n·c2}` of it directly.
 ///
 /// # Errors
 /// A pose set the fit could not have solved.
@@ -44,55 +112,88 @@ pub fn transmission_variance<T: Real>(
     extras: Extras,
     poses: &[PoseReading<T>],
     offsets_rad: &[T; WRIST_JOINTS],
-    amplitude_rad: &[T; WRIST_JOINTS],
-    once_per_turn_rad: &[T; WRIST_JOINTS],
-) -> Result<[T; WRIST_JOINTS], FitError> {
+    amplitude_rad: &[[T; BUDGET_ORDERS]; HARMONIC_JOINTS],
+    noise_rad: T,
+) -> Result<[T; ZEROS], FitError> {
     let layout = extras.layout();
     let n = layout.len();
     let estimate = super::Estimate {
         offsets_rad: *offsets_rad,
         ..super::Estimate::default()
     };
+    // The joints' columns come from a layout with each offset and Δθ2's hand-over row.
     let pass = model.pass(&estimate, &layout);
     let mut info = super::information::Information::new(n);
-    // z[o][j]: Σᵢ J_iᵀ·(∂reading/∂θⱼ)·e^{i·n·qᵢⱼ}, real and imaginary parts.
-    let mut z = [[([T::zero(); MAX_PARAMS], [T::zero(); MAX_PARAMS]); WRIST_JOINTS]; 4];
+    // z[j][o]: Σᵢ Jᵢᵀ·(∂reading/∂θⱼ)·(e^{i·n·qᵢⱼ} − [j = 2]·e^{i·n·c2}), real and
+    // imaginary parts, for the orders that carry an amplitude.
+    let mut z =
+        [[([T::zero(); MAX_PARAMS], [T::zero(); MAX_PARAMS]); BUDGET_ORDERS]; HARMONIC_JOINTS];
+    let c2 = model.stage1_j2_rad;
     for pose in poses {
-        let p = model.predict_rows(&pass, &layout, &estimate, pose, false);
+        let p = model.predict_rows(&pass, &layout, &estimate, pose, true);
         info.add_row(&p.rows[0], T::zero());
         info.add_row(&p.rows[1], T::zero());
-        for j in 0..WRIST_JOINTS {
-            let q = pose.joints_rad[j + 2];
-            for (o, order) in ORDERS.iter().enumerate() {
-                let (s, c) = (q * T::lit(f64::from(*order))).fast_sin_cos();
-                let (re, im) = &mut z[o][j];
+        for j in 0..HARMONIC_JOINTS {
+            // Joint 2's column is the hand-over's Δθ2 row; the others their offsets'.
+            let column = |axis: usize| {
+                if j == 0 {
+                    p.handover_rows[axis][2]
+                } else {
+                    p.rows[axis][j - 1]
+                }
+            };
+            let q = pose.joints_rad[j + 1];
+            for o in 0..BUDGET_ORDERS {
+                if amplitude_rad[j][o] == T::zero() {
+                    continue;
+                }
+                let order = T::lit((o + 1) as f64);
+                let (mut s, mut c) = (q * order).fast_sin_cos();
+                if j == 0 {
+                    let (s1, c1) = (c2 * order).fast_sin_cos();
+                    s -= s1;
+                    c -= c1;
+                }
+                let (re, im) = &mut z[j][o];
                 for i in 0..n {
-                    let b = p.rows[0][i] * p.rows[0][j] + p.rows[1][i] * p.rows[1][j];
+                    let b = p.rows[0][i] * column(0) + p.rows[1][i] * column(1);
                     re[i] += b * c;
                     im[i] += b * s;
                 }
             }
         }
     }
-    add_held(&mut info, &extras);
+    add_held(&mut info, &extras, noise_rad);
     check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
     let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
-    let mut variance = [T::zero(); WRIST_JOINTS];
-    for (k, v) in variance.iter_mut().enumerate() {
-        for j in 0..WRIST_JOINTS {
-            let power = |o: usize| {
-                let (re, im) = &z[o][j];
-                let (mut a, mut b) = (T::zero(), T::zero());
-                for i in 0..n {
-                    a += inv.m[k][i] * re[i];
-                    b += inv.m[k][i] * im[i];
+    let l = super::zeros_map(model, &layout);
+    let mut variance = [T::zero(); ZEROS];
+    for (a, v) in variance.iter_mut().enumerate() {
+        // Row a of L·(JᵀJ)⁻¹.
+        let mut li = [T::zero(); MAX_PARAMS];
+        for (k, lik) in li.iter_mut().enumerate().take(n) {
+            *lik = (0..n).fold(T::zero(), |acc, i| acc + l[a][i] * inv.m[i][k]);
+        }
+        for j in 0..HARMONIC_JOINTS {
+            for o in 0..BUDGET_ORDERS {
+                let amp = amplitude_rad[j][o];
+                if amp == T::zero() {
+                    continue;
                 }
-                a * a + b * b
-            };
-            let worst_order = (1..ORDERS.len()).fold(T::zero(), |w, o| w.max(power(o)));
-            let half = T::lit(0.5);
-            *v += half * amplitude_rad[j] * amplitude_rad[j] * worst_order;
-            *v += half * once_per_turn_rad[j] * once_per_turn_rad[j] * power(0);
+                let (re, im) = &z[j][o];
+                let (mut x, mut y) = (T::zero(), T::zero());
+                for k in 0..n {
+                    x += li[k] * re[k];
+                    y += li[k] * im[k];
+                }
+                // Δθ2 keeps joint 2's error at c2 itself, less what the fit removes.
+                if a == 0 && j == 0 {
+                    let (s1, c1) = (c2 * T::lit((o + 1) as f64)).fast_sin_cos();
+                    x += c1;
+                    y += s1;
+                }
+                *v += T::lit(0.5) * amp * amp * (x * x + y * y);
+            }
         }
     }
     Ok(variance)

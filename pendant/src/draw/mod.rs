@@ -577,6 +577,8 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
             StageError::Unresolvable | StageError::NonFiniteCommand => {
                 fixed("! config: j2 setting")
             }
+            StageError::TooFewHeadings { .. } => fixed("! redo: too few turns"),
+            StageError::NotTurnedOnTheSpot { .. } => fixed("! redo: turn on spot"),
         },
         // Shown in full on the result screen.
         Notice::Refused(_) => fixed("! refused"),
@@ -715,6 +717,14 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
                 Text::new(),
             ]
         }
+        Refusal::Session(SessionError::Closing(_)) => {
+            return [
+                fixed("closing bench refused"),
+                fixed("BACK, redo it"),
+                Text::new(),
+                Text::new(),
+            ]
+        }
         Refusal::Session(SessionError::Stage1(_)) => {
             return [
                 fixed("stage 1 refused"),
@@ -829,6 +839,27 @@ fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
             line(format_args!("flange before pose {}", from_pose + 1)),
             line(format_args!("jump {}\u{b0}", fx(step_deg, 3))),
             fixed("tighten, redo stage 2"),
+        ],
+        FitError::RevisitDisagrees {
+            pose,
+            revisit,
+            difference_deg,
+            ..
+        } => [
+            fixed("pendant moved on"),
+            line(format_args!("flange: pose {} read", pose + 1)),
+            line(format_args!(
+                "{}\u{b0} off at {}",
+                fx(difference_deg, 3),
+                revisit + 1
+            )),
+            fixed("tighten, redo stage 2"),
+        ],
+        FitError::PendantCreeping { drift_deg } => [
+            fixed("pendant crept on"),
+            line(format_args!("flange: {}\u{b0} drift", fx(drift_deg, 3))),
+            fixed("tighten the clamp,"),
+            fixed("repeat stage 2"),
         ],
         FitError::CapturesDisagree {
             rms_deg,

@@ -42,7 +42,7 @@ use zerocal_core::bracket::{
 };
 use zerocal_core::model::{Tilt, TiltAxis};
 use zerocal_core::real::{rad_to_deg, Real};
-use zerocal_core::stage0::Reversal;
+use zerocal_core::stage0::BenchTurns;
 
 mod line;
 #[cfg(test)]
@@ -321,13 +321,10 @@ impl<T: Real> BracketCalState<T> {
     }
 
     /// The reversal of captures `first` and `first + 1`, if both are in.
-    fn reversal(&self, first: usize) -> Option<Reversal<T>> {
+    fn reversal(&self, first: usize) -> Option<BenchTurns<T>> {
         let a = self.captures.get(first).copied().flatten()?;
         let b = self.captures.get(first + 1).copied().flatten()?;
-        Some(Reversal {
-            first: a.reading,
-            second: b.reading,
-        })
+        Some(BenchTurns::half_turn(a.reading, b.reading))
     }
 
     /// The mean temperature of the captures that carried one.

@@ -4,7 +4,7 @@ use super::*;
 use zerocal_core::bracket::bracket_id;
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, Convention, SensorModel};
 use zerocal_core::real::deg_to_rad;
-use zerocal_core::stage0::Reversal;
+use zerocal_core::stage0::BenchTurns;
 
 /// A step with the still window the pendant lends from its session: one per test
 /// thread here (each test runs on its own).
@@ -128,10 +128,7 @@ fn a_full_run_gives_back_the_brackets_turn() {
         Some(Ok(result)) => *result,
         other => panic!("{other:?}"),
     };
-    let level = |i: usize| Reversal {
-        first: r[i],
-        second: r[i + 1],
-    };
+    let level = |i: usize| BenchTurns::half_turn(r[i], r[i + 1]);
     let (core_turn, _) = calibrate(&level(0), &level(2), Convention::Axis, 0.2, 1e-5).unwrap();
     assert!(
         (result.rotation_rad.x_rad - core_turn.x_rad).abs() < 1e-5

@@ -1,5 +1,5 @@
 //! The export's metadata lines, `# key value…`: the keys an export may hold, their
-//! grammar (written by [`write_reversal`] and [`write_fit_extras`], read by
+//! grammar (written by [`write_bench`] and [`write_fit_extras`], read by
 //! [`parse_meta`]), and the check that each is given once ([`MetaKeys`]).
 
 use super::{
@@ -11,7 +11,7 @@ use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketMount, Bracke
 use zerocal_core::decimal::Fixed;
 use zerocal_core::model::{Convention, Tilt};
 use zerocal_core::real::{deg_to_rad, Real};
-use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage0::{BenchTurns, BenchTurnsAt, MAX_HEADINGS};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::Extras;
 
@@ -27,14 +27,15 @@ pub enum MetaItem<T> {
     /// `# stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` (`None` for
     /// `none`): the readings and the commanded joints 1 (before the half turn) and 2.
     Stage1(Option<AxisOneTurn<T>>),
-    /// `# stage0_reversal_deg first x,y second x,y temp_c t|none`: stage 0's own
-    /// readings and temperature (the bias follows from them).
-    Stage0Reversal(ClosingReversal<T>),
+    /// `# stage0_bench_deg x,y x,y x,y x,y temp_c t|none` (two to six headings), or
+    /// the older `# stage0_reversal_deg first x,y second x,y temp_c t|none` (a half
+    /// turn): stage 0's own readings and temperature (the bias follows from them).
+    Stage0Bench(BenchTurnsAt<T>),
     /// `# stage1_temp_c t`: the sensor's temperature during stage 1.
     Stage1Temperature(T),
-    /// `# closing_reversal_deg first x,y second x,y temp_c t|none`: the reversal after
-    /// stage 2 that measures the bias' drift.
-    Closing(ClosingReversal<T>),
+    /// `# closing_bench_deg x,y … temp_c t|none` (or the older `closing_reversal_deg`):
+    /// the bench readings after stage 2 that measure the bias' drift.
+    Closing(BenchTurnsAt<T>),
     /// `# fit_extras gain,cross_z,…|none`: what the pendant's fit estimated.
     FitExtras(Extras),
     /// `# bracket_upper_arm|bracket_flange id ID rot_deg x,y u_deg u date YYYYMMDD
@@ -240,20 +241,25 @@ pub fn write_fit_extras(w: &mut Line, extras: Extras) -> fmt::Result {
     Ok(())
 }
 
-/// Writes a reversal with its temperature as a metadata line: `# KEY first x,y second
-/// x,y temp_c t|none`.
+/// Stage 0's bench readings' key.
+pub const STAGE0_BENCH_KEY: &str = "stage0_bench_deg";
+
+/// The closing bench readings' key.
+pub const CLOSING_BENCH_KEY: &str = "closing_bench_deg";
+
+/// Writes bench readings with their temperature as a metadata line: `# KEY x,y x,y …
+/// temp_c t|none` (KEY [`STAGE0_BENCH_KEY`] or [`CLOSING_BENCH_KEY`]).
 ///
 /// # Errors
 /// Only a full line buffer.
-pub fn write_reversal<T: Real>(w: &mut Line, key: &str, r: &ClosingReversal<T>) -> fmt::Result {
-    write!(w, "# {key} first ")?;
-    deg(w, r.reversal.first.x_rad)?;
-    w.write_char(',')?;
-    deg(w, r.reversal.first.y_rad)?;
-    w.write_str(" second ")?;
-    deg(w, r.reversal.second.x_rad)?;
-    w.write_char(',')?;
-    deg(w, r.reversal.second.y_rad)?;
+pub fn write_bench<T: Real>(w: &mut Line, key: &str, r: &BenchTurnsAt<T>) -> fmt::Result {
+    write!(w, "# {key}")?;
+    for t in r.turns.taken() {
+        w.write_char(' ')?;
+        deg(w, t.x_rad)?;
+        w.write_char(',')?;
+        deg(w, t.y_rad)?;
+    }
     w.write_str(" temp_c ")?;
     match r.temperature_c {
         Some(c) => write!(w, "{}", Fixed::new(c.to_f64(), super::TEMPERATURE_DECIMALS)),
@@ -364,11 +370,15 @@ pub fn parse_meta<T: Real>(
                 bias_x: flags[3],
                 bias_y: flags[4],
                 drift: flags[5],
-                // Which offsets are held, and which misalignments and wrist
-                // compliances are candidates, follow from the arm, not the export.
+                // Which offsets are held, and which misalignments, wrist compliances
+                // and reducer terms are candidates, follow from the arm and its
+                // masses, not the export.
                 held: [false; 4],
                 tilt: 0,
                 wrist_sag: 0,
+                sag2: false,
+                lash: 0,
+                transmission: 0,
             })
         }
         "stage1_temp_c" => {
@@ -386,20 +396,35 @@ pub fn parse_meta<T: Real>(
                 _ => return Err(bad),
             }
         }
-        "stage0_reversal_deg" | "closing_reversal_deg" => {
-            let key: &'static str = if key == "closing_reversal_deg" {
-                "closing_reversal_deg"
-            } else {
-                "stage0_reversal_deg"
+        "stage0_reversal_deg" | "closing_reversal_deg" | STAGE0_BENCH_KEY | CLOSING_BENCH_KEY => {
+            let closing = key.starts_with("closing");
+            let bench = key.ends_with("bench_deg");
+            let key: &'static str = match (closing, bench) {
+                (true, true) => CLOSING_BENCH_KEY,
+                (false, true) => STAGE0_BENCH_KEY,
+                (true, false) => "closing_reversal_deg",
+                (false, false) => "stage0_reversal_deg",
             };
             let bad = LogError::BadMetadata { line, key };
-            let first = (rest.next() == Some("first"))
-                .then(|| pair(rest.next()))
-                .flatten();
-            let second = (rest.next() == Some("second"))
-                .then(|| pair(rest.next()))
-                .flatten();
-            let temperature = match (rest.next(), rest.next()) {
+            let mut taken: heapless::Vec<Tilt<T>, MAX_HEADINGS> = heapless::Vec::new();
+            let mut word = rest.next();
+            if bench {
+                // x,y pairs until `temp_c`.
+                while let Some(w) = word.filter(|w| *w != "temp_c") {
+                    taken.push(pair(Some(w)).ok_or(bad)?).map_err(|_| bad)?;
+                    word = rest.next();
+                }
+            } else {
+                // The older reversal: `first x,y second x,y`.
+                for label in ["first", "second"] {
+                    if word != Some(label) {
+                        return Err(bad);
+                    }
+                    taken.push(pair(rest.next()).ok_or(bad)?).map_err(|_| bad)?;
+                    word = rest.next();
+                }
+            }
+            let temperature = match (word, rest.next()) {
                 (Some("temp_c"), Some("none")) => Some(None),
                 (Some("temp_c"), Some(t)) => parse(t)
                     .filter(|t| {
@@ -408,16 +433,16 @@ pub fn parse_meta<T: Real>(
                     .map(|t| Some(T::lit(t))),
                 _ => None,
             };
-            match (first, second, temperature, rest.next()) {
-                (Some(first), Some(second), Some(temperature_c), None) => {
-                    let r = ClosingReversal {
-                        reversal: Reversal { first, second },
+            match (BenchTurns::from_readings(&taken), temperature, rest.next()) {
+                (Some(turns), Some(temperature_c), None) => {
+                    let r = BenchTurnsAt {
+                        turns,
                         temperature_c,
                     };
-                    if key == "closing_reversal_deg" {
+                    if closing {
                         MetaItem::Closing(r)
                     } else {
-                        MetaItem::Stage0Reversal(r)
+                        MetaItem::Stage0Bench(r)
                     }
                 }
                 _ => return Err(bad),
@@ -511,10 +536,10 @@ impl MetaKeys {
         let (slot, key) = match item {
             MetaItem::Robot(..) => (0, "robot"),
             MetaItem::Bias(_) => (1, "stage0_bias_deg"),
-            MetaItem::Stage0Reversal(_) => (1, "stage0_reversal_deg"),
+            MetaItem::Stage0Bench(_) => (1, STAGE0_BENCH_KEY),
             MetaItem::Stage1(_) => (2, "stage1_readings_deg"),
             MetaItem::Stage1Temperature(_) => (3, "stage1_temp_c"),
-            MetaItem::Closing(_) => (4, "closing_reversal_deg"),
+            MetaItem::Closing(_) => (4, CLOSING_BENCH_KEY),
             MetaItem::FitExtras(_) => (5, "fit_extras"),
             MetaItem::Bracket(BracketMount::UpperArm, _) => (6, "bracket_upper_arm"),
             MetaItem::Bracket(BracketMount::Flange, _) => (7, "bracket_flange"),
@@ -623,34 +648,50 @@ mod tests {
     }
 
     #[test]
-    fn reversals_and_temperatures_round_trip() {
+    fn bench_readings_and_temperatures_round_trip() {
         let parse = |s: &str| s.parse::<f64>().ok();
-        let r = ClosingReversal {
-            reversal: Reversal {
-                first: Tilt::from_deg(1.25_f64, -0.5),
-                second: Tilt::from_deg(-0.75, 0.125),
-            },
-            temperature_c: Some(25.5),
-        };
-        for (key, closing) in [
-            ("closing_reversal_deg", true),
-            ("stage0_reversal_deg", false),
+        // Four headings (the pendant's), and two: a reversal.
+        for taken in [
+            &[
+                Tilt::from_deg(1.25_f64, -0.5),
+                Tilt::from_deg(-0.75, 0.125),
+                Tilt::from_deg(0.5, 1.0),
+                Tilt::from_deg(-1.5, -0.25),
+            ][..],
+            &[Tilt::from_deg(1.25_f64, -0.5), Tilt::from_deg(-0.75, 0.125)][..],
         ] {
-            let mut w = Line::new();
-            write_reversal(&mut w, key, &r).unwrap();
-            let text = w.as_str().trim_start_matches('#');
-            match parse_meta::<f64>(text, 1, parse).unwrap() {
-                Some(MetaItem::Closing(b)) if closing => assert_eq!(b.temperature_c, Some(25.5)),
-                Some(MetaItem::Stage0Reversal(b)) if !closing => {
-                    assert!(isclose(
-                        b.reversal.second.y_rad,
-                        r.reversal.second.y_rad,
-                        0.0,
-                        1e-14
-                    ));
+            let r = BenchTurnsAt {
+                turns: BenchTurns::from_readings(taken).unwrap(),
+                temperature_c: Some(25.5),
+            };
+            for (key, closing) in [(CLOSING_BENCH_KEY, true), (STAGE0_BENCH_KEY, false)] {
+                let mut w = Line::new();
+                write_bench(&mut w, key, &r).unwrap();
+                let text = w.as_str().trim_start_matches('#');
+                match parse_meta::<f64>(text, 1, parse).unwrap() {
+                    Some(MetaItem::Closing(b)) if closing => {
+                        assert_eq!(b.temperature_c, Some(25.5));
+                        assert_eq!(b.turns.count, r.turns.count);
+                    }
+                    Some(MetaItem::Stage0Bench(b)) if !closing => {
+                        for (a, c) in b.turns.taken().iter().zip(r.turns.taken()) {
+                            assert!(isclose(a.y_rad, c.y_rad, 0.0, 1e-14));
+                        }
+                    }
+                    other => panic!("{key}: {other:?}"),
                 }
-                other => panic!("{key}: {other:?}"),
             }
+        }
+        // The older reversal line still reads, as two headings.
+        match parse_meta::<f64>(
+            " stage0_reversal_deg first 1,2 second 3,4 temp_c none",
+            1,
+            parse,
+        )
+        .unwrap()
+        {
+            Some(MetaItem::Stage0Bench(b)) => assert_eq!(b.turns.count, 2),
+            other => panic!("{other:?}"),
         }
         assert_eq!(
             parse_meta::<f64>("stage1_temp_c 24.1", 1, parse),
@@ -764,11 +805,8 @@ mod tests {
         let bias = MetaItem::<f64>::Bias(None);
         assert_eq!(keys.note(&bias, 3), Ok(()));
         assert_eq!(keys.note(&MetaItem::Stage1Temperature(20.0), 4), Ok(()));
-        let reversal = MetaItem::Stage0Reversal(ClosingReversal {
-            reversal: Reversal {
-                first: Tilt::new(0.0, 0.0),
-                second: Tilt::new(0.0, 0.0),
-            },
+        let reversal = MetaItem::Stage0Bench(BenchTurnsAt {
+            turns: BenchTurns::half_turn(Tilt::new(0.0, 0.0), Tilt::new(0.0, 0.0)),
             temperature_c: None,
         });
         // Stage 0 twice, whichever key the second uses.

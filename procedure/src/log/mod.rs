@@ -51,9 +51,9 @@ pub use error::{LogError, ShortText};
 pub use kept::read_kept_results;
 pub use kept::{write_kept_result, KeptResultReader, KEPT_RESULT_KEY, KEPT_RESULT_LINES};
 pub use meta::{
-    bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bracket,
-    write_bracket_fields, write_fit_extras, write_pendant, write_reversal, ExportMode, MetaItem,
-    MetaKeys,
+    bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bench, write_bracket,
+    write_bracket_fields, write_fit_extras, write_pendant, ExportMode, MetaItem, MetaKeys,
+    CLOSING_BENCH_KEY, STAGE0_BENCH_KEY,
 };
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;
@@ -135,14 +135,16 @@ pub fn quantise_temperature<T: Real>(celsius: T) -> T {
 pub const EXPORT_DECIMALS: u8 = 12;
 
 /// Every metadata key an export may hold (the first word of a `# key value…` line).
-pub const METADATA_KEYS: [&str; 14] = [
+pub const METADATA_KEYS: [&str; 16] = [
     "robot",
     "stage0_bias_deg",
+    "stage0_bench_deg",
     "stage0_reversal_deg",
     "stage1_readings_deg",
     "stage1_temp_c",
     "stage1_captures_deg",
     "stage1",
+    "closing_bench_deg",
     "closing_reversal_deg",
     "fit_extras",
     "stage2",

@@ -1,7 +1,10 @@
 //! The writers: the pendant's export a line at a time ([`Export`]), a stage-2 log's
 //! row and an export's row, and the degree format they share.
 
-use super::meta::{write_bracket, write_fit_extras, write_pendant, write_reversal, ExportMode};
+use super::meta::{
+    write_bench, write_bracket, write_fit_extras, write_pendant, ExportMode, CLOSING_BENCH_KEY,
+    STAGE0_BENCH_KEY,
+};
 use super::{approach_name, deg, pair, Line, EXPORT_HEADER};
 use crate::capture::Capture;
 use crate::export_trailer::TrailerSum;
@@ -12,7 +15,7 @@ use zerocal_core::decimal::Fixed;
 use zerocal_core::model::Convention;
 use zerocal_core::real::Real;
 use zerocal_core::session::{BiasSource, SessionError, SessionSolution, StageTemperatures};
-use zerocal_core::stage0::ClosingReversal;
+use zerocal_core::stage0::BenchTurnsAt;
 use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
 use zerocal_core::stage2::{Extras, PoseReading};
 
@@ -37,7 +40,7 @@ pub struct ExportSession<'a, T: Real, R> {
     /// The sensor's temperature at stages 0 and 1, where recorded.
     pub temperatures: StageTemperatures<T>,
     /// The reversal after stage 2, if made.
-    pub closing: Option<ClosingReversal<T>>,
+    pub closing: Option<BenchTurnsAt<T>>,
     /// Stage 2: every capture, in the order taken, with its index in the plan.
     pub captures: R,
     /// Stage 1's single captures, `[before, after]` × `[below, above]`, for the record
@@ -115,11 +118,11 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
             // This session's reversal when it ran (the bias and its temperature follow
             // from it); else the bias an earlier session stored, if any.
             2 => match s.bias {
-                BiasSource::Reversal(reversal) => write_reversal(
+                BiasSource::Bench(turns) => write_bench(
                     w,
-                    "stage0_reversal_deg",
-                    &ClosingReversal {
-                        reversal,
+                    STAGE0_BENCH_KEY,
+                    &BenchTurnsAt {
+                        turns,
                         temperature_c: s.temperatures.stage0_c,
                     },
                 ),
@@ -201,7 +204,7 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
                 None => w.write_str("# stage1 none"),
             },
             8 => match s.closing {
-                Some(r) => write_reversal(w, "closing_reversal_deg", &r),
+                Some(r) => write_bench(w, CLOSING_BENCH_KEY, &r),
                 None => w.write_str("# closing reversal not made"),
             },
             9 => write_fit_extras(w, s.fit_extras),

@@ -16,7 +16,7 @@ use zerocal_core::plan::{check_model, check_poses, CheckPoses, PoseList, CHECK_P
 use zerocal_core::real::Real;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{self, BiasSource, SessionError, SessionReadings, StageTemperatures};
-use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage0::{BenchTurns, BenchTurnsAt};
 use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
 use zerocal_core::stage2::{PoseReading, Stage2Model};
 
@@ -433,28 +433,25 @@ impl<T: Real> ProcedureState<T> {
     }
 
     /// Stage 0's reversal, once both readings are in (with its mean temperature).
-    pub fn stage0_reversal(&self) -> Option<ClosingReversal<T>> {
+    pub fn stage0_reversal(&self) -> Option<BenchTurnsAt<T>> {
         self.reversal_of(ReadingSlot::Stage0First, ReadingSlot::Stage0Second)
     }
 
     /// The closing reversal, once both readings are in (with its mean temperature).
-    pub fn closing_reversal(&self) -> Option<ClosingReversal<T>> {
+    pub fn closing_reversal(&self) -> Option<BenchTurnsAt<T>> {
         self.reversal_of(ReadingSlot::ClosingFirst, ReadingSlot::ClosingSecond)
     }
 
-    fn reversal_of(&self, a: ReadingSlot, b: ReadingSlot) -> Option<ClosingReversal<T>> {
+    fn reversal_of(&self, a: ReadingSlot, b: ReadingSlot) -> Option<BenchTurnsAt<T>> {
         let (first, second) = (self.reading(a)?, self.reading(b)?);
-        Some(ClosingReversal {
-            reversal: Reversal {
-                first: first.reading,
-                second: second.reading,
-            },
+        Some(BenchTurnsAt {
+            turns: BenchTurns::half_turn(first.reading, second.reading),
             temperature_c: mean(Some(first), Some(second)).and_then(|m| m.temperature_c),
         })
     }
 
-    pub(super) fn reversal(&self) -> Option<Reversal<T>> {
-        self.stage0_reversal().map(|r| r.reversal)
+    pub(super) fn reversal(&self) -> Option<BenchTurns<T>> {
+        self.stage0_reversal().map(|r| r.turns)
     }
 
     /// Stage 1's readings (before, after), once both pairs are in: each the mean of
@@ -571,7 +568,7 @@ impl<T: Real> ProcedureState<T> {
 
     pub(super) fn bias_source(&self) -> BiasSource<T> {
         match (self.stage0_skipped, self.reversal(), self.bias) {
-            (false, Some(r), _) => BiasSource::Reversal(r),
+            (false, Some(r), _) => BiasSource::Bench(r),
             (_, _, Some(b)) => BiasSource::Stored(b),
             _ => BiasSource::Unknown,
         }

@@ -10,7 +10,7 @@ use zerocal_core::error::Terse;
 use zerocal_core::model::{Arm, Tilt};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::session::{self, BiasSource, SessionError, SessionReadings};
-use zerocal_core::stage0::Reversal;
+use zerocal_core::stage0::BenchTurns;
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::{FitConfig, PoseReading};
 
@@ -53,9 +53,9 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
             masses: None,
             brackets: &Brackets::default(),
             bias: match &case.bias {
-                BiasSource::Reversal(r) => BiasSource::Reversal(Reversal {
-                    first: tilt(&r.first),
-                    second: tilt(&r.second),
+                BiasSource::Bench(r) => BiasSource::Bench(BenchTurns {
+                    readings: r.readings.map(|t| tilt(&t)),
+                    count: r.count,
                 }),
                 BiasSource::Stored(b) => BiasSource::Stored(tilt(b)),
                 BiasSource::Unknown => BiasSource::Unknown,
@@ -104,6 +104,10 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
             )),
             Err(SessionError::Stage0(e)) => {
                 record("stage0", Value::Error(Terse(&e).to_string()));
+                None
+            }
+            Err(SessionError::Closing(e)) => {
+                record("closing", Value::Error(Terse(&e).to_string()));
                 None
             }
             Err(SessionError::Stage1(e)) => {

@@ -9,7 +9,7 @@ use rand_chacha::ChaCha8Rng;
 use zerocal_core::model::{Convention, Tilt};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::session::BiasSource;
-use zerocal_core::stage0::Reversal;
+use zerocal_core::stage0::BenchTurns;
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::PoseReading;
 use zerocal_sim::session::SessionConfig;
@@ -134,9 +134,9 @@ fn to_case(name: &'static str, s: &SimSession, expected_error: Option<&'static s
         name,
         convention: s.sensor.model.convention,
         bias: s.stage0.map_or(BiasSource::Unknown, |r| {
-            BiasSource::Reversal(Reversal {
-                first: tilt(&r.first),
-                second: tilt(&r.second),
+            BiasSource::Bench(BenchTurns {
+                readings: r.readings.map(|t| tilt(&t)),
+                count: r.count,
             })
         }),
         stage1: AxisOneTurn {
@@ -204,10 +204,14 @@ pub(super) fn render_vectors(cases: &[Case]) -> Result<String> {
     );
     for (i, case) in cases.iter().enumerate() {
         let bias = match &case.bias {
-            BiasSource::Reversal(r) => format!(
-                "BiasSource::Reversal(Reversal {{ first: {}, second: {} }})",
-                tilt_literal(&r.first)?,
-                tilt_literal(&r.second)?
+            BiasSource::Bench(r) => format!(
+                "BiasSource::Bench(BenchTurns {{ readings: [{}], count: {} }})",
+                r.readings
+                    .iter()
+                    .map(tilt_literal)
+                    .collect::<Result<Vec<_>>>()?
+                    .join(", "),
+                r.count
             ),
             BiasSource::Stored(b) => format!("BiasSource::Stored({})", tilt_literal(b)?),
             BiasSource::Unknown => "BiasSource::Unknown".to_owned(),
