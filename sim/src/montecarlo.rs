@@ -98,10 +98,7 @@ pub fn run_with_tcp(
                 let mut b = budget(
                     sol,
                     &session.poses,
-                    &zerocal_core::session::BudgetInputs {
-                        stage1_joints_rad: Some(profile.stage1_joints_rad),
-                        ..world.budget_inputs(fit.extras, &session.brackets)
-                    },
+                    &world.budget_inputs(profile, fit.extras, &session.brackets),
                 );
                 // Stage 0's half turn, at the world's own tolerance.
                 if world.half_turn_error_deg > 0.0 {

@@ -155,6 +155,7 @@ impl WorldConfig {
     /// `zerocal simulate` and the Monte-Carlo runs.
     pub fn budget_inputs(
         &self,
+        profile: &Profile,
         extras: zerocal_core::stage2::Extras,
         brackets: &Brackets<f64>,
     ) -> BudgetInputs<f64> {
@@ -183,7 +184,7 @@ impl WorldConfig {
             } else {
                 0.0
             },
-            stage1_joints_rad: None,
+            stage1_joints_rad: Some(profile.stage1_joints_rad),
         }
     }
 

@@ -31,9 +31,10 @@ pub struct Correlation {
 /// The correlations of the plan's parameters (the stage-2 offsets).
 #[derive(Serialize, Debug, Clone, PartialEq)]
 pub struct Correlations {
-    /// The parameters, in the matrix's order.
+    /// The parameters the matrix holds: the four offsets.
     pub params: Vec<&'static str>,
-    /// Correlation coefficients of (JᵀJ)⁻¹.
+    /// Correlation coefficients of (JᵀJ)⁻¹ among the offsets (the pairs of every other
+    /// parameter that correlate badly are in `poorly_separated`).
     pub matrix: Vec<Vec<f64>>,
     /// The largest |coefficient| off the diagonal.
     pub worst: Correlation,
@@ -42,6 +43,9 @@ pub struct Correlations {
     /// The threshold.
     pub threshold: f64,
 }
+
+/// The correlations are written to 1/this.
+const CORRELATION_SCALE: f64 = 1e4;
 
 /// What [`predicted_k2_deg`] includes (printed beside the figures).
 pub const PREDICTED_FROM: &str = "the session's budget predicted before the robot moves (core's predict_budget): stages 0-1 handed over, the plan's readings with the sensor's noise, the cost of estimating the sensor's gain and cross-axis, the sag and the flange bracket's tilt, the robot's repeatability (0.0015 deg per joint) and the gears' lost motion (1 arc min: joint 3 held on gravity's side, joint 2 free within its play at stage 1); not the brackets' seats";
@@ -113,7 +117,9 @@ pub fn correlations(
     let layout = extras.layout();
     let n = layout.len();
     let params: Vec<&'static str> = layout.params().iter().map(|p| p.name()).collect();
-    let mut matrix = vec![vec![0.0; n]; n];
+    // The offsets come first in every layout.
+    let offsets = WRIST_JOINTS.min(n);
+    let mut matrix = vec![vec![0.0; offsets]; offsets];
     let mut worst = Correlation {
         params: [params[0], params[1]],
         value: 0.0,
@@ -122,7 +128,10 @@ pub fn correlations(
     for i in 0..n {
         for j in 0..n {
             let r = cov.m[i][j] / (cov.m[i][i] * cov.m[j][j]).sqrt();
-            matrix[i][j] = r;
+            if i < offsets && j < offsets {
+                // Four decimals say how well two parameters separate.
+                matrix[i][j] = (r * CORRELATION_SCALE).round() / CORRELATION_SCALE;
+            }
             if j > i {
                 let c = Correlation {
                     params: [params[i], params[j]],
@@ -138,7 +147,7 @@ pub fn correlations(
         }
     }
     Ok(Correlations {
-        params,
+        params: params.into_iter().take(offsets).collect(),
         matrix,
         worst,
         poorly_separated,

@@ -50,7 +50,7 @@ pub mod val3;
 pub use build::{build, build_check, check_indices};
 pub use files::{destinations, output_folder, render, Files};
 pub use format::Format;
-pub use plan_file::{default_plan, parse_plan, read_plan};
+pub use plan_file::{default_plan, parse_plan, plan_with, read_plan};
 pub use read::ReadMove;
 pub use steps::{Capture, Role, Session, Side, Step};
 pub use text::{pieces, program_name, Stamp};

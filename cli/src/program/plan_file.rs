@@ -142,12 +142,26 @@ fn check_plan_poses(poses_deg: &[[f64; JOINTS]], profile: &Profile) -> Result<()
 /// The plan `zerocal plan --robot R` would make with its defaults and these timing
 /// options, in the session's order (model radians).
 pub fn default_plan(robot: &str, timing: &TimingArgs) -> Result<Vec<[f64; JOINTS]>, CliError> {
+    plan_with(robot, timing, &[])
+}
+
+/// The plan `zerocal plan --robot ROBOT` makes with the further `flags`.
+///
+/// # Errors
+/// As [`default_plan`].
+pub fn plan_with(
+    robot: &str,
+    timing: &TimingArgs,
+    flags: &[&str],
+) -> Result<Vec<[f64; JOINTS]>, CliError> {
     #[derive(Parser)]
     struct Defaults {
         #[command(flatten)]
         plan: PlanArgs,
     }
-    let mut args = Defaults::try_parse_from(["plan", "--robot", robot])
+    let mut argv = vec!["plan", "--robot", robot];
+    argv.extend_from_slice(flags);
+    let mut args = Defaults::try_parse_from(argv)
         .map_err(|e| CliError::Input(e.to_string()))?
         .plan;
     args.timing = timing.clone();

@@ -15,6 +15,7 @@
 //! the sensor's unknown x offset in its budget and a note saying so.
 
 mod record;
+pub mod reducers;
 mod render;
 pub use record::{brackets_json, session_record, verdict_of};
 pub use render::render;
@@ -33,7 +34,7 @@ use zerocal_core::model::{Convention, JOINTS};
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
     budget, half_turn_half_width, one_sided_pose, sensor_offset_x_spec_deg, solve,
-    stage1_joint2_mismatch, unknown_offset_half_width, BiasSource, Budget, BudgetInputs,
+    stage1_joint1_mismatch, unknown_offset_half_width, BiasSource, Budget, BudgetInputs,
     BudgetTerm, SessionError, SessionReadings, SessionSolution, StageTemperatures,
     DEFAULT_HALF_TURN_TOLERANCE_DEG, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
     SESSION_JOINTS, STAGE1_JOINT2_TOLERANCE_DEG,
@@ -248,15 +249,15 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
 /// silently wrong: rows at another joint 2 than stage 1's, a pose captured from one
 /// side only.
 fn check_rows(export: &ExportContents, stage1: &AxisOneTurn<f64>) -> Result<(), String> {
-    if let Some(i) = stage1_joint2_mismatch(stage1, &export.poses) {
+    if let Some(i) = stage1_joint1_mismatch(stage1, &export.poses) {
         return Err(format!(
-            "line {}: joint 2 at {} deg, but stage 1's j2_deg (line {}) says {} deg: stage 2 runs \
-             with joint 2 where stage 1 had it (tolerance {STAGE1_JOINT2_TOLERANCE_DEG} deg), and a wrong \
-             record would move Δθ2 and Δθ3 by its error unseen; correct the export",
+            "line {}: joint 1 at {} deg, but stage 1's j1_deg (line {}) says {} deg: stage 2 runs \
+             with joint 1 where stage 1 had it (tolerance {STAGE1_JOINT2_TOLERANCE_DEG} deg), and \
+             the base's tilt seen from another joint 1 would be read as an offset; correct the export",
             export.lines.get(i).copied().unwrap_or(0),
-            export.poses[i].joints_rad[1].to_degrees(),
+            export.poses[i].joints_rad[0].to_degrees(),
             export.stage1_line,
-            stage1.j2_rad.to_degrees()
+            stage1.j1_rad.to_degrees()
         ));
     }
     if let Some(i) = one_sided_pose(
@@ -354,6 +355,9 @@ pub struct SessionJson {
     pub warnings: Vec<String>,
     /// Every note (what was assumed, what the profile lacks).
     pub notes: Vec<String>,
+    /// Each joint's transmission error, harmonic by harmonic.
+    #[serde(default)]
+    pub reducers: Vec<reducers::ReducerJson>,
 }
 
 /// How far this `f64` re-solve of a pendant's export may lie from the pendant's own
@@ -631,9 +635,12 @@ pub fn analyse_with(
         args.half_turn_tolerance_deg.to_radians(),
     )
     .map_err(|e| {
+        // The refusal names its own step: it is what the session, solved again with the
+        // half turn at the edge of its tolerance, shows (a knock, say), not the bench.
         CliError::Refused(name(&format!(
-            "with stage 0's half turn off 180 deg by +/-{} deg the session is refused ({e}): \
-             level the bench and repeat stage 0",
+            "{e} (found solving the session again with stage 0's half turn off 180 deg by \
+             +/-{} deg, as its budget term does; stage 0 read at four headings assumes no \
+             half turn)",
             args.half_turn_tolerance_deg
         )))
     })?;
@@ -888,5 +895,6 @@ pub fn to_json(
         pass: verdict.is_pass(),
         warnings: verdict.warnings.iter().map(ToString::to_string).collect(),
         notes,
+        reducers: reducers::reducers(&s.fit),
     }
 }

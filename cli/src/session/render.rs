@@ -110,6 +110,7 @@ pub fn render(j: &SessionJson) -> String {
         "each joint's reading must move by +dq: docs/controllers/{}.md says where and with which sign",
         j.family
     );
+    super::reducers::render(&mut out, &j.reducers);
     if j.pass {
         let _ = writeln!(out, "verdict: PASS");
     }

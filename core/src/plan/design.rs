@@ -187,16 +187,14 @@ pub(super) fn one_turn<T: Real>((lo, hi): (T, T)) -> (T, T) {
 /// (gravity's flank), not in between ([`crate::stage2::transmission::loaded_side`]).
 /// Always where the model has no masses or does not estimate the lost motion.
 fn load_is_clear<T: Real>(model: &Stage2Model<T>, layout: &Layout, q: &[T; JOINTS]) -> bool {
-    let wants = layout
-        .params()
-        .iter()
-        .any(|p| matches!(p, crate::stage2::Param::Lash(_)));
-    let Some(m) = model.masses.as_ref().filter(|_| wants) else {
+    let wants = |i: u8| layout.slot(crate::stage2::Param::Lash(i)).is_some();
+    let Some(m) = model.masses.as_ref().filter(|_| wants(0) || wants(1)) else {
         return true;
     };
     let tau = m.gravity_torques_nm(&model.arm, q);
     let most = m.stretched_torques_nm(&model.arm);
-    [1, 2].iter().all(|&k| {
+    (0..2u8).filter(|i| wants(*i)).all(|i| {
+        let k = usize::from(i) + 1;
         let side = loaded_side(tau[k], most[k]).abs();
         side == T::zero() || side == T::one()
     })

@@ -208,6 +208,33 @@ pub struct Plan<T> {
     pub candidates: usize,
     /// Swaps the exchange made.
     pub exchanges: u32,
+    /// Poses visited again ([`with_revisits`]): `poses_rad` holds them in their places.
+    pub revisits: usize,
+}
+
+impl<T: Real> Plan<T> {
+    /// The plan's poses without its revisits, in its order.
+    pub fn distinct_poses(&self) -> PoseList<T> {
+        without_revisits(&self.poses_rad, self.revisits)
+    }
+
+    /// The plan with its distinct poses put in `order` (indices into
+    /// [`Self::distinct_poses`]) and its revisits placed again after them.
+    pub fn reordered(&self, order: &[usize]) -> Self {
+        let distinct = self.distinct_poses();
+        let mut poses: PoseList<T> = PoseList::new();
+        for &i in order {
+            if let Some(q) = distinct.get(i) {
+                let _ = poses.push(*q);
+            }
+        }
+        let n = poses.len();
+        with_revisits(&mut poses, n, self.revisits);
+        Plan {
+            poses_rad: poses,
+            ..self.clone()
+        }
+    }
 }
 
 /// Which setting is wrong.
@@ -474,6 +501,11 @@ pub fn plan<T: Real>(
         draws,
         candidates: found,
         exchanges,
+        revisits: if distinct >= 2 {
+            config.revisits.min(MAX_REVISITS)
+        } else {
+            0
+        },
     })
 }
 
@@ -544,6 +576,28 @@ pub fn with_revisits<T: Real>(poses: &mut PoseList<T>, distinct: usize, revisits
         let _ = out.push(middle);
     }
     *poses = out;
+}
+
+/// The poses of a plan made by [`with_revisits`] with `revisits`, without them.
+pub fn without_revisits<T: Real>(poses: &[[T; JOINTS]], revisits: usize) -> PoseList<T> {
+    let revisits = revisits.min(MAX_REVISITS);
+    let mut out: PoseList<T> = PoseList::new();
+    if revisits == 0 || poses.len() < revisits + 2 {
+        for q in poses {
+            let _ = out.push(*q);
+        }
+        return out;
+    }
+    // The end's one or two, and (with three) the one halfway through.
+    let distinct = poses.len() - revisits;
+    let at_end = revisits.min(2);
+    let middle = (revisits >= 3).then_some(distinct / 2);
+    for (i, q) in poses.iter().take(poses.len() - at_end).enumerate() {
+        if Some(i) != middle {
+            let _ = out.push(*q);
+        }
+    }
+    out
 }
 
 /// Converts per-joint (min, max) limits in degrees to radians.

@@ -795,25 +795,25 @@ pub fn one_sided_pose<T: Real>(
     })
 }
 
-/// How far a stage-2 capture's joint 2 may lie from stage 1's (deg): the tolerance the
-/// pendant also holds a plan's joints 1-2 to against stage 1's (the link's 3 decimals,
-/// and an `f32` of a few hundred degrees); 5× below the 0.005° aimed at, so a
-/// difference within it moves no offset by anything that matters.
+/// How far a stage-2 capture's joint 1 may lie from stage 1's (deg): the tolerance the
+/// pendant also holds a plan's joint 1 to against stage 1's (the link's 3 decimals, and
+/// an `f32` of a few hundred degrees); 5× below the 0.005° aimed at, so a difference
+/// within it moves no offset by anything that matters.
 pub const STAGE1_JOINT2_TOLERANCE_DEG: f64 = 1e-3;
 
-/// The first stage-2 capture whose joint 2 differs from stage 1's by more than
-/// [`STAGE1_JOINT2_TOLERANCE_DEG`]. Stage 2 runs with joint 2 where stage 1 had it, and
-/// stage 1's Δθ2 is the measured arm angle minus the recorded joint 2: a wrong record
-/// moves Δθ2 by its error, and Δθ3 takes it back (joints 2 and 3 are parallel), so the
-/// fit cannot see it. Joint 1 may differ: the model turns the base tilt with the
-/// recorded joint 1 (docs/mounting.md).
-pub fn stage1_joint2_mismatch<T: Real>(
+/// The first stage-2 capture whose joint 1 differs from stage 1's first reading by more
+/// than [`STAGE1_JOINT2_TOLERANCE_DEG`]. Stage 1's half turn measures the base's tilt
+/// with joint 1 at its mark, and stage 2 inherits joint 2's angle about that mark's
+/// direction (α + Δθ2): a stage 2 at another joint 1 reads that tilt turned, which the
+/// fit would take for Δθ3. Joint 2 may differ: stage 2 swings it, and its transmission
+/// error is modelled from stage 1's angle on ([`crate::stage2::Param::Harmonic`]).
+pub fn stage1_joint1_mismatch<T: Real>(
     stage1: &AxisOneTurn<T>,
     poses: &[PoseReading<T>],
 ) -> Option<usize> {
     let tolerance = crate::real::deg_to_rad(T::lit(STAGE1_JOINT2_TOLERANCE_DEG));
     poses.iter().position(|p| {
-        let off = (p.joints_rad[1] - stage1.j2_rad).abs();
+        let off = (p.joints_rad[0] - stage1.j1_rad).abs();
         // A non-finite joint disagrees too.
         !off.is_finite() || off > tolerance
     })
@@ -964,20 +964,20 @@ mod tests {
     }
 
     #[test]
-    fn joint_2_must_stay_where_stage_1_had_it() {
+    fn joint_1_must_stay_where_stage_1_had_it() {
         let turn = AxisOneTurn {
             before: Tilt::new(0.0, 0.0),
             after: Tilt::new(0.0, 0.0),
             j1_rad: 0.0,
             j2_rad: (-90.0f64).to_radians(),
         };
-        // Within the tolerance, and joint 1 elsewhere (the model follows joint 1).
-        let near = -90.0 + 0.5 * STAGE1_JOINT2_TOLERANCE_DEG;
+        // Within the tolerance, and joint 2 elsewhere (stage 2 swings it).
+        let near = 0.5 * STAGE1_JOINT2_TOLERANCE_DEG;
         let poses = [
-            at([5.0, near, 10.0, 0.0, 0.0, 0.0]),
-            at([0.0, -89.5, 10.0, 0.0, 0.0, 0.0]),
+            at([near, -60.0, 10.0, 0.0, 0.0, 0.0]),
+            at([-90.0, -90.0, 10.0, 0.0, 0.0, 0.0]),
         ];
-        assert_eq!(stage1_joint2_mismatch(&turn, &poses[..1]), None);
-        assert_eq!(stage1_joint2_mismatch(&turn, &poses), Some(1));
+        assert_eq!(stage1_joint1_mismatch(&turn, &poses[..1]), None);
+        assert_eq!(stage1_joint1_mismatch(&turn, &poses), Some(1));
     }
 }

@@ -243,6 +243,10 @@ pub struct FitResult<T: Real> {
     pub zeros_sigma_stage2_rad: [T; ZEROS],
     /// How the zeros move with an error in the hand-over parameters (rad per rad).
     pub zeros_sensitivity: [[T; HANDOVER_PARAMS]; ZEROS],
+    /// The covariance of each harmonic's cosine and sine coefficients (rad², pair `p`
+    /// = slots `2p`, `2p + 1` of [`Param::Harmonic`]; 0 where not estimated): with
+    /// their σ, the uncertainty of its amplitude ([`transmission::reducer_harmonics`]).
+    pub harmonic_pair_cov_rad2: [T; params::HARMONIC_SLOTS / 2],
 }
 
 impl<T: Real> FitResult<T> {
@@ -861,6 +865,13 @@ fn finish<T: Real>(
     let zeros_sigma_stage2_rad: [T; ZEROS] = core::array::from_fn(|r| {
         (quad(&l[r], &l[r], &|i, j| inv.m[i][j]).max(T::zero()) * variance).sqrt()
     });
+    let harmonic_pair_cov_rad2: [T; params::HARMONIC_SLOTS / 2] = core::array::from_fn(|p| {
+        let slot = |h: usize| layout.slot(Param::Harmonic(h as u8));
+        match (slot(2 * p), slot(2 * p + 1)) {
+            (Some(a), Some(b)) => cov_of(a, b),
+            _ => T::zero(),
+        }
+    });
     let zeros_sensitivity: [[T; HANDOVER_PARAMS]; ZEROS] =
         core::array::from_fn(|r| core::array::from_fn(|m| dot(&l[r], &|i| sensitivity[i][m])));
     if config.max_residual_rms_rad > T::zero() && residual_rms_rad > config.max_residual_rms_rad {
@@ -903,6 +914,7 @@ fn finish<T: Real>(
         zeros_covariance_rad2,
         zeros_sigma_stage2_rad,
         zeros_sensitivity,
+        harmonic_pair_cov_rad2,
     })
 }
 

@@ -199,6 +199,70 @@ pub fn transmission_variance<T: Real>(
     Ok(variance)
 }
 
+/// One harmonic of a joint's transmission error as a session measured it:
+/// `e(q) = A·sin(n·q + φ)` over the joint's output angle q (model angles).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct ReducerHarmonic<T> {
+    /// The joint (2..=6).
+    pub joint: u8,
+    /// Cycles per output turn (1..=4).
+    pub order: u8,
+    /// A (rad).
+    pub amplitude_rad: T,
+    /// φ (rad, in (−π, π]).
+    pub phase_rad: T,
+    /// The expanded uncertainty (k = 2) of A (rad), from the fit's covariance.
+    pub amplitude_k2_rad: T,
+    /// Whether this session's readings determine it: its coefficients' σ under half
+    /// their stated prior's. Where not, the fit took the prior (the joint's motion did
+    /// not show it), and A is no measurement of the reducer.
+    pub measured: bool,
+}
+
+/// A measured harmonic's coefficients are known to better than this share of their
+/// prior's standard deviation ([`HARMONIC_PRIOR_SD_DEG`]).
+pub const MEASURED_SHARE: f64 = 0.5;
+
+/// Every harmonic the fit estimated, joint by joint and order by order: its amplitude
+/// and phase from the cosine and sine coefficients `(c, s)` (A = √(c² + s²),
+/// φ = atan2(c, s)), and A's uncertainty by the coefficients' covariance
+/// (`(c²·v_c + s²·v_s + 2cs·v_cs)/A²`, or, where A is within three of its σ of 0 and
+/// that linearisation fails, their mean variance).
+pub fn reducer_harmonics<T: Real>(
+    fit: &super::FitResult<T>,
+) -> heapless::Vec<ReducerHarmonic<T>, { super::params::HARMONIC_SLOTS / 2 }> {
+    let mut out = heapless::Vec::new();
+    for p in 0..super::params::HARMONIC_SLOTS / 2 {
+        let (ch, sh) = (
+            Param::Harmonic((2 * p) as u8),
+            Param::Harmonic((2 * p + 1) as u8),
+        );
+        let (Some((c, sc)), Some((s, ss))) = (fit.get(ch), fit.get(sh)) else {
+            continue;
+        };
+        let (joint, order, _) = super::params::harmonic_of((2 * p) as u8);
+        let (vc, vs, vcs) = (sc * sc, ss * ss, fit.harmonic_pair_cov_rad2[p]);
+        let a = (c * c + s * s).sqrt();
+        let mean = (vc + vs) * T::lit(0.5);
+        let var = if a * a > T::lit(9.0) * mean {
+            ((c * c * vc + s * s * vs + T::lit(2.0) * c * s * vcs) / (a * a)).max(T::zero())
+        } else {
+            mean
+        };
+        let prior = prior_sd_rad::<T>(ch).unwrap_or(T::zero());
+        let _ = out.push(ReducerHarmonic {
+            joint: joint as u8,
+            order,
+            amplitude_rad: a,
+            phase_rad: c.atan2(s),
+            amplitude_k2_rad: T::lit(2.0) * var.sqrt(),
+            measured: mean.sqrt() < T::lit(MEASURED_SHARE) * prior,
+        });
+    }
+    out
+}
+
 /// The amplitude of an angle-dependent joint error the residuals show: the part of the
 /// residuals' variance beyond the sensor's noise and the robot's repeatability
 /// (`expected_rad2`, per reading), taken as every joint's error of amplitude `a` in a
