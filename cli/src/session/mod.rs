@@ -14,6 +14,7 @@
 //! line (and key, column or byte). A session without a stage-0 reversal is solved, with
 //! the sensor's unknown x offset in its budget and a note saying so.
 
+pub mod entry;
 mod record;
 mod render;
 pub use record::{brackets_json, session_record, verdict_of};
@@ -316,6 +317,13 @@ pub struct JointJson {
     pub expanded_k2_deg: f64,
     /// The budget: each term's standard uncertainty (deg).
     pub budget_deg: Vec<BudgetJson>,
+    /// The number to type on this robot (deg, the controller's terms): Δq through its
+    /// entry convention ([`entry`]); absent: Δq.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub to_enter_deg: Option<f64>,
+    /// This robot's entry convention for the joint, where a check measured it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub entry_convention: Option<entry::EntryConvention>,
 }
 
 /// One term of a joint's budget.
@@ -442,7 +450,18 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         crate::input::MAX_EXPORT_BYTES,
         "pendant export",
     )?;
-    let analysis = analyse(args, &bytes)?;
+    let mut analysis = analyse(args, &bytes)?;
+    if let Some(serial) = &args.serial {
+        // The numbers to type on this robot, through what its checks measured.
+        let recorded = args.db.open()?.conventions(serial);
+        let recorded = recorded.map_err(crate::db::history_failed)?;
+        entry::apply(
+            &mut analysis.json,
+            serial,
+            &recorded,
+            analysis.profile.family,
+        );
+    }
     let recorded = match (&args.serial, args.record) {
         (Some(serial), true) => {
             let record = session_record(&analysis, &bytes, serial, &args.meta)?;
@@ -843,6 +862,8 @@ pub fn to_json(
                         standard_uncertainty_deg: u[k].to_degrees(),
                     })
                     .collect(),
+                to_enter_deg: None,
+                entry_convention: None,
             }
         })
         .collect();
