@@ -373,12 +373,16 @@ pub fn render(j: &CheckJson) -> String {
         let _ = writeln!(out, "note: {n}");
     }
     for c in &j.conventions {
-        let how = crate::session::entry::EntryConvention {
-            factor: c.measured_factor,
-            measured_by_check: j.record_id.unwrap_or(0),
-            verified_by_checks: Vec::new(),
-        }
-        .words();
+        let f = c.measured_factor;
+        let how = match (f < 0.0, (f.abs() - 1.0).abs() > 1e-9) {
+            (false, false) => "as typed (the controller page's convention)".to_owned(),
+            (true, false) => "with its sign reversed".to_owned(),
+            (false, true) => format!("times {f:.4} (its unit or gear ratio)"),
+            (true, true) => format!(
+                "with its sign reversed, times {:.4} (its unit or gear ratio)",
+                f.abs()
+            ),
+        };
         let recorded = match (c.recorded, j.record_id) {
             (true, Some(id)) if c.verified => {
                 format!(": verified on this robot, check {id} recorded as its evidence")
@@ -392,8 +396,8 @@ pub fn render(j: &CheckJson) -> String {
         };
         let _ = writeln!(
             out,
-            "convention: {} takes a typed value {} (factor {:+.4}){recorded}",
-            c.name, how, c.measured_factor
+            "convention: {} takes a typed value {how} (factor {f:+.4}){recorded}",
+            c.name
         );
     }
     if let Some(id) = j.record_id {
