@@ -43,6 +43,8 @@ ul.notes li { margin-bottom: 0.4mm; }
 section { break-inside: avoid; }
 section.notes-section { break-inside: auto; }
 .svg svg { width: 100%; height: auto; display: block; }
+.lab { margin: 0 0 1.5mm; font-size: 8pt; }
+.equipment { margin-top: 1.5mm; font-size: 7pt; }
 .brackets { margin-top: 1.5mm; }
 .signatures td { border: 0.5pt solid #000; width: 33%; }
 .signatures tr.blank td { height: 13mm; vertical-align: bottom; font-size: 7pt; }
@@ -61,12 +63,18 @@ pub(super) fn page(c: &Context<'_>) -> Result<(String, Printed), CertificateErro
     let results = sections::results(c, &mut p)?;
     let decision = sections::decision(c, &mut p)?;
     let authorization = sections::authorization(c, &mut p);
-    let budget = sections::budget(c, &mut p)?;
+    let budget = super::gum::section(c, &mut p)?;
     let residuals = sections::residuals(c, &mut p)?;
-    let traceability = sections::traceability(c, &mut p)?;
+    let traceability = super::trace::section(c, &mut p)?;
     let notes = sections::notes(c, &mut p);
-    // The number is an integer: nothing in it can end the CSS string.
-    let id = c.subject.record_id;
+    // The number's characters are letters, digits and '-' (issuer::new_number): nothing
+    // in it can end the CSS string; anything else is left out of the page's foot.
+    let id: String = c
+        .subject
+        .number
+        .chars()
+        .filter(|ch| ch.is_ascii_alphanumeric() || *ch == '-')
+        .collect();
     let html = format!(
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
          <title>Calibration certificate no. {id}</title>\
