@@ -145,7 +145,10 @@ fn a_certificate_keeps_its_number_and_a_number_is_given_once() {
             },
         ] {
             assert!(
-                matches!(h.issue_certificate(&bad), Err(HistoryError::InvalidRecord(_))),
+                matches!(
+                    h.issue_certificate(&bad),
+                    Err(HistoryError::InvalidRecord(_))
+                ),
                 "{}: {bad:?}",
                 b.name
             );
