@@ -623,9 +623,13 @@ fn the_certificate_carries_what_a_quality_department_files() {
     holds(
         &c,
         "a block's calibration, due date and certificate",
-        "<td>2025-12-01</td><td>2026-12-01</td><td>EXT-2025-4411",
+        "<td class=\"date\">2025-12-01</td><td class=\"date\">2026-12-01</td><td>EXT-2025-4411",
     );
-    holds(&c, "a bracket's due date", "<td>2027-01-05</td>");
+    holds(
+        &c,
+        "a bracket's due date",
+        "<td class=\"date\">2027-01-05</td>",
+    );
     holds(
         &c,
         "as found beside as left",
@@ -648,12 +652,12 @@ fn the_certificate_carries_what_a_quality_department_files() {
     holds(&c, "why", "the check after the entry failed");
     for head in [
         "Input quantity X<sub>i</sub>",
-        "Type, distribution",
+        "Type, distrib.",
         "u(x<sub>i</sub>) (deg)",
         "sensitivity c<sub>i</sub>",
         "contribution u<sub>i</sub>(y)",
         "A, normal",
-        "B, rectangular",
+        "B, rectang.",
         "B, arcsine",
     ] {
         holds(&c, "the GUM table's columns and distributions", head);

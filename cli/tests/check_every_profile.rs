@@ -377,3 +377,50 @@ fn a_measured_convention_is_recorded_and_the_next_session_prints_numbers_with_it
         );
     });
 }
+
+#[test]
+fn a_measured_scale_is_recorded_where_the_unit_is_unknown() {
+    every_profile("scale", |name, profile, d| {
+        let db = d.join("history.sqlite");
+        let db = db.to_str().unwrap();
+        let first = d.join("session.export");
+        simulate(name, 41, None, None, &first);
+        let s1 = session(&first, "R-1", db);
+        // This robot's controller takes every typed value 2.5 times (its counts per
+        // degree, or gear ratio, not the one the technician converted with).
+        let entered = model_of(profile, s1.to_type.map(|v| 2.5 * v));
+        let after = d.join("after.export");
+        simulate(name, 41, Some(42), Some(entered), &after);
+        let (code, j) = check(&after, &s1.id, db, true);
+        assert_eq!(code, 4, "{name}: {j:#}");
+        let unit_unknown = profile.family.entry().unit == Known::Unknown;
+        let measured: Vec<(usize, f64)> = j["conventions"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["recorded"] == true)
+            .map(|c| {
+                let f = c["measured_factor"].as_f64().unwrap();
+                assert!((f - 2.5).abs() < 0.1, "{name}: {c}");
+                (c["joint"].as_u64().unwrap() as usize - 2, f)
+            })
+            .collect();
+        assert_eq!(!measured.is_empty(), unit_unknown, "{name}: {j:#}");
+        let second = d.join("session2.export");
+        simulate(name, 41, Some(43), Some(entered), &second);
+        let s2 = session(&second, "R-1", db);
+        for k in 0..5 {
+            let want = measured
+                .iter()
+                .find(|(j, _)| *j == k)
+                .map_or(s2.dq[k], |(_, f)| s2.dq[k] / f);
+            assert!(
+                (s2.to_type[k] - want).abs() < 1e-12,
+                "{name} joint {}: prints {} for dq {}",
+                k + 2,
+                s2.to_type[k],
+                s2.dq[k]
+            );
+        }
+    });
+}

@@ -40,7 +40,7 @@ impl Distribution {
     pub(super) fn name(self) -> &'static str {
         match self {
             Distribution::Normal => "normal",
-            Distribution::Rectangular => "rectangular",
+            Distribution::Rectangular => "rectang.",
             Distribution::Arcsine => "arcsine",
         }
     }
@@ -49,8 +49,10 @@ impl Distribution {
 /// One row: an input quantity and its contribution to each joint's zero.
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct Row {
-    /// The input quantity, in words.
+    /// The input quantity: the budget term's name (`BudgetTerm::name`).
     pub quantity: String,
+    /// Whether its u(xᵢ) is its largest contribution (several stated figures at once).
+    pub at_largest: bool,
     /// Its evaluation.
     pub evaluation: Evaluation,
     /// Its distribution.
@@ -82,100 +84,48 @@ pub(super) fn rows(analysis: &Analysis) -> Vec<Row> {
         .map(|&t| {
             let contribution_deg = terms[t.index()].map(f64::to_degrees);
             let largest = contribution_deg.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-            let (quantity, evaluation, distribution, u_deg) = match t {
-                BudgetTerm::Handover => (
-                    "stages 0-1: the reversals' and the half turn's readings (σ per reading)",
-                    A,
-                    Normal,
-                    sigma_deg,
-                ),
-                BudgetTerm::Readings => ("stage-2 readings (σ per reading)", A, Normal, sigma_deg),
-                BudgetTerm::SensorGain => (
-                    "sensor gain and cross-axis, estimated from the readings (σ)",
-                    A,
-                    Normal,
-                    sigma_deg,
-                ),
-                BudgetTerm::Sag => (
-                    "sag of joints 2-3, estimated from the readings (σ)",
-                    A,
-                    Normal,
-                    sigma_deg,
-                ),
-                BudgetTerm::FlangeTilt => (
-                    "flange bracket tilt, estimated from the readings (σ)",
-                    A,
-                    Normal,
-                    sigma_deg,
-                ),
-                BudgetTerm::Geometry => (
-                    "axis misalignment and wrist sag, estimated from the readings (σ)",
-                    A,
-                    Normal,
-                    sigma_deg,
-                ),
-                BudgetTerm::UnfittedGeometry => (
-                    "axis misalignment the poses cannot separate (stated worst case; at its \
-                     largest effect)",
-                    B,
-                    Rectangular,
-                    largest,
-                ),
-                BudgetTerm::Transmission => (
-                    "reducers' transmission error (a harmonic; joint 2's at its one angle)",
-                    B,
-                    Arcsine,
-                    if contribution_deg[0] > 0.0 {
-                        contribution_deg[0]
-                    } else {
-                        largest
-                    },
-                ),
-                BudgetTerm::Repeatability => (
-                    "robot repeatability per joint (stated, 1σ)",
-                    B,
-                    Normal,
-                    DEFAULT_REPEATABILITY_DEG,
-                ),
-                BudgetTerm::LoadedBacklash => (
-                    "joint 3's backlash side under gravity (± half the stated lost motion)",
-                    B,
-                    Rectangular,
-                    half_play,
-                ),
-                BudgetTerm::Stage1Backlash => (
-                    "joint 2's rest in its play at the stage-1 pose (± half the lost motion)",
-                    B,
-                    Rectangular,
-                    half_play,
-                ),
-                BudgetTerm::Mounting => (
-                    "brackets' calibration and seat (at the larger bracket's)",
-                    B,
-                    Normal,
-                    largest,
-                ),
-                BudgetTerm::HalfTurn => (
-                    "stage 0's half turn off 180° on the tilted bench (at its largest effect)",
-                    B,
-                    Rectangular,
-                    largest,
-                ),
+            // Each input, its evaluation, distribution and standard uncertainty; the last
+            // field: given at its largest contribution (several stated figures at once).
+            let (evaluation, distribution, u_deg, at_largest) = match t {
+                // The readings of stages 0-1 and 2, and what the fit estimates from them:
+                // the fit's σ per reading.
+                BudgetTerm::Handover
+                | BudgetTerm::Readings
+                | BudgetTerm::SensorGain
+                | BudgetTerm::Sag
+                | BudgetTerm::FlangeTilt
+                | BudgetTerm::Geometry => (A, Normal, sigma_deg, false),
+                // The misalignments the poses cannot separate, at their stated worst case.
+                BudgetTerm::UnfittedGeometry => (B, Rectangular, largest, true),
+                // A harmonic of unknown phase: joint 2 stands at one angle, so its term is
+                // the input's a/√2 itself.
+                BudgetTerm::Transmission if contribution_deg[0] > 0.0 => {
+                    (B, Arcsine, contribution_deg[0], false)
+                }
+                BudgetTerm::Transmission => (B, Arcsine, largest, true),
+                // The robot's stated repeatability per joint, 1σ.
+                BudgetTerm::Repeatability => (B, Normal, DEFAULT_REPEATABILITY_DEG, false),
+                // ± half the gears' stated lost motion.
+                BudgetTerm::LoadedBacklash | BudgetTerm::Stage1Backlash => {
+                    (B, Rectangular, half_play, false)
+                }
+                // Both brackets' calibrations and seats.
+                BudgetTerm::Mounting => (B, Normal, largest, true),
+                // The stage-0 turn's tolerance times the bench's tilt.
+                BudgetTerm::HalfTurn => (B, Rectangular, largest, true),
+                // The SCL3300's offset specification.
                 BudgetTerm::UnknownSensorOffset => (
-                    "sensor offset without stage 0 (the SCL3300's specification)",
                     B,
                     Rectangular,
                     sensor_offset_x_spec_deg() / 3f64.sqrt(),
+                    false,
                 ),
-                BudgetTerm::BracketYaw => (
-                    "brackets' yaws times the base's tilt (at its largest effect)",
-                    B,
-                    Normal,
-                    largest,
-                ),
+                // Both brackets' yaws times the base's tilt.
+                BudgetTerm::BracketYaw => (B, Normal, largest, true),
             };
             Row {
-                quantity: quantity.to_owned(),
+                quantity: t.name().to_owned(),
+                at_largest,
                 evaluation,
                 distribution,
                 u_deg,
@@ -212,7 +162,7 @@ pub(super) fn section(
     )?;
     let mut head = String::from(
         "<tr><th rowspan=\"2\">Input quantity X<sub>i</sub></th><th rowspan=\"2\">Type, \
-         distribution</th><th rowspan=\"2\" class=\"num\">u(x<sub>i</sub>) (deg)</th>",
+         distrib.</th><th rowspan=\"2\" class=\"num\">u(x<sub>i</sub>) (deg)</th>",
     );
     let _ = write!(
         head,
@@ -230,8 +180,9 @@ pub(super) fn section(
         let what = |q: &str| format!("the budget's '{}' {q}", r.quantity);
         let _ = write!(
             body,
-            "<tr><td>{}</td><td>{}, {}</td><td class=\"num\">{}</td>",
+            "<tr><td>{}{}</td><td>{}, {}</td><td class=\"num\">{}</td>",
             p.text(&r.quantity),
+            if r.at_largest { " (d)" } else { "" },
             match r.evaluation {
                 Evaluation::A => "A",
                 Evaluation::B => "B",
@@ -241,7 +192,7 @@ pub(super) fn section(
         );
         for (k, cs) in r.sensitivity().iter().enumerate() {
             let cell = match cs {
-                Some(v) => p.fixed(&what(&format!("c of {}", j.joints[k].name)), *v, 3)?,
+                Some(v) => p.fixed(&what(&format!("c of {}", j.joints[k].name)), *v, 2)?,
                 None => "–".to_owned(),
             };
             let _ = write!(body, "<td class=\"num\">{cell}</td>");
@@ -288,10 +239,10 @@ pub(super) fn section(
     Ok(format!(
         "<section><h2>7. Uncertainty budget</h2><table class=\"grid budget\"><thead>{head}\
          </thead><tbody>{body}</tbody></table><p class=\"small\">GUM (JCGM 100:2008): \
-         contributions to Δθ, combined in quadrature; Type A from this session's readings, \
-         Type B from stated figures. c<sub>i</sub> is how the fit carries each input into \
-         each joint's zero (the contribution over u(x<sub>i</sub>)); an input given at its \
-         largest effect has c<sub>i</sub> at most 1.{}</p></section>",
+         contributions to Δθ in quadrature. Type A: u(x<sub>i</sub>) the fit's σ per \
+         reading; Type B: stated figures. c<sub>i</sub>: how the fit carries the input into \
+         each zero. (d) several stated figures, given at their largest effect.{}</p>\
+         </section>",
         if held {
             " (b) not identifiable by gravity: its column is not a zero's uncertainty."
         } else {

@@ -81,9 +81,9 @@ impl EquipmentKind {
     /// In words.
     pub fn name(self) -> &'static str {
         match self {
-            EquipmentKind::Pendant => "pendant unit",
+            EquipmentKind::Pendant => "pendant",
             EquipmentKind::Bracket => "bracket",
-            EquipmentKind::ReferenceBlock => "reference block",
+            EquipmentKind::ReferenceBlock => "ref. block",
             EquipmentKind::Plate => "plate",
         }
     }
@@ -192,7 +192,8 @@ pub fn parse(text: &str) -> Result<Issuer, String> {
 pub struct Used {
     /// What it is.
     pub kind: EquipmentKind,
-    /// What it did (`upper-arm bracket`, `measuring`, `bracket calibration`).
+    /// What it did (`measuring`, `upper-arm`, `flange`, `bracket cal.`: the brackets'
+    /// calibration).
     pub role: String,
     /// Its ID (as the export or the register names it).
     pub id: String,
@@ -237,16 +238,12 @@ pub fn equipment_used(
             id: "not recorded".into(),
             entry: None,
             used_on: measured_on.to_owned(),
-            flag: Some(
-                "the export names no pendant unit: which unit measured, and its calibration, \
-                 cannot be stated"
-                    .into(),
-            ),
+            flag: Some("the export names no pendant unit: its calibration cannot be stated".into()),
         }),
     }
     let mut calibrated_on = Vec::new();
     for mount in BracketMount::ALL {
-        let role = format!("{} bracket", mount.name());
+        let role = mount.name().to_owned();
         match brackets.get(mount) {
             Some(cal) => {
                 let date = crate::report_notes::calibration_date(cal.date);
@@ -279,7 +276,7 @@ pub fn equipment_used(
         {
             used.push(Used {
                 kind: e.kind,
-                role: "bracket calibration".into(),
+                role: "bracket cal.".into(),
                 id: e.id.clone(),
                 entry: Some(e.clone()),
                 used_on: last.clone(),
@@ -289,9 +286,7 @@ pub fn equipment_used(
     }
     for u in &mut used {
         if u.flag.is_none() && u.entry.is_none() {
-            u.flag = Some(format!(
-                "not in the equipment register: its calibration and due date cannot be stated"
-            ));
+            u.flag = Some("not in the equipment register: no calibration or due date".into());
         }
         if let Some(e) = &u.entry {
             let day = zerocal_history::day_number;

@@ -588,10 +588,9 @@ pub(super) fn authorization(c: &Context<'_>, p: &mut Printed) -> String {
     let number = p.text(&c.subject.number);
     format!(
         "<section class=\"sign\"><h2>6. Authorization</h2><p class=\"small\">The results \
-         relate only to the robot identified above, as it was when measured (history record \
-         {id}); the export and the profile of the SHA-256 above, solved again \
-         (<code>zerocal session</code>), give these numbers. Certificate {number} shall not \
-         be reproduced except in full.</p>\
+         relate only to the robot above as measured (history record {id}); the export and \
+         profile of the SHA-256 above, solved again (<code>zerocal session</code>), give \
+         them. Certificate {number} shall not be reproduced except in full.</p>\
          <table class=\"signatures\"><tr><td>Measured by</td><td>Checked by</td>\
          <td>Authorized by</td></tr><tr class=\"blank\"><td>name, signature, date</td>\
          <td>name, signature, date</td><td>name, function, signature, date</td></tr></table>\
@@ -607,11 +606,11 @@ pub(super) fn residuals(c: &Context<'_>, p: &mut Printed) -> Result<String, Cert
     let svg = residual_plot::svg(&r, sigma_deg)?;
     Ok(format!(
         "<section class=\"figure\"><h2>8. Residuals of the fit</h2><div class=\"svg\">{svg}</div>\
-         <p class=\"small\">The reading less the fitted model's reading at each stage-2 \
-         capture, x (●) and y (▲), in export row order; dashed: ±σ = {sigma} deg, the fit's σ \
-         per reading ({}). The fit averages each pose's two captures, cancelling the gears' \
-         play that a single capture holds: captures scatter wider than σ. A trend, not \
-         scatter, is a model that does not fit the arm.</p></section>",
+         <p class=\"small\">Reading less the fitted model's at each stage-2 capture, x (●) \
+         and y (▲), in export row order; dashed: ±σ = {sigma} deg, the fit's σ per reading \
+         ({}). The fit averages each pose's two captures (the gears' play): single captures \
+         scatter wider than σ. A trend, not scatter, is a model that does not fit the \
+         arm.</p></section>",
         sigma_source(c.analysis.solution.fit.sigma_source)
     ))
 }

@@ -14,31 +14,29 @@ fn row(out: &mut String, heading: &str, value: &str) {
     let _ = write!(out, "<tr><th>{}</th><td>{value}</td></tr>", esc(heading));
 }
 
-/// The equipment table.
+/// The equipment table: one line a piece.
 fn equipment(p: &mut Printed, used: &[Used]) -> String {
     let mut rows = String::new();
     for u in used {
-        let (calibrated, due, certificate, what) = match &u.entry {
+        let (calibrated, due, certificate) = match &u.entry {
             Some(e) => (
                 p.text(&e.calibrated),
                 p.text(&e.due),
                 e.certificate
                     .as_deref()
                     .map_or_else(|| "–".to_owned(), |c| p.text(c)),
-                e.description
-                    .as_deref()
-                    .map_or_else(String::new, |d| format!("<br>{}", p.text(d))),
             ),
-            None => ("–".into(), "–".into(), "–".into(), String::new()),
+            None => ("–".into(), "–".into(), "–".into()),
         };
         let flag = u
             .flag
             .as_deref()
-            .map_or_else(String::new, |f| format!("<br><b>FLAG</b>: {}", p.text(f)));
+            .map_or_else(String::new, |f| format!(" <b>FLAG</b>: {}", p.text(f)));
         let _ = write!(
             rows,
-            "<tr><td>{}{what}</td><td>{}</td><td class=\"mono\">{}</td><td>{}</td>\
-             <td>{calibrated}</td><td>{due}</td><td>{certificate}{flag}</td></tr>",
+            "<tr><td>{}</td><td>{}</td><td class=\"mono\">{}</td><td class=\"date\">{}</td>\
+             <td class=\"date\">{calibrated}</td><td class=\"date\">{due}</td>\
+             <td>{certificate}{flag}</td></tr>",
             esc(u.kind.name()),
             esc(&u.role),
             p.text(&u.id),
@@ -65,10 +63,7 @@ pub(super) fn section(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
     row(
         &mut t,
         "Measuring element",
-        &format!(
-            "Murata SCL3300 MEMS inclinometer in the pendant (x and y), against the local \
-             direction of gravity: {offset}; the fit's estimates of it are in the budget."
-        ),
+        &format!("Murata SCL3300 MEMS inclinometer in the pendant (x and y): {offset}."),
     );
     let mut rows = String::new();
     for mount in BracketMount::ALL {
@@ -118,11 +113,11 @@ pub(super) fn section(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
         "<section><h2>9. Traceability and equipment</h2><table class=\"kv\">{t}</table>\
          <table class=\"grid brackets\"><thead><tr><th>Bracket</th><th>ID</th>\
          <th>Calibrated</th><th class=\"num\">u (deg)</th><th>Yaw</th></tr></thead>\
-         <tbody>{rows}</tbody></table>{register}<p class=\"small\">The equipment as the \
-         issuer's register states it; a piece past its due date on the day it was used \
-         refuses the certificate. The brackets are calibrated by reversal on a levelled \
-         plate and the sensor's offset by stage 0's reversal: the reference is the local \
-         direction of gravity, so no external angle standard enters the zero; whether that \
-         meets a laboratory's traceability policy is the laboratory's decision.</p></section>"
+         <tbody>{rows}</tbody></table>{register}<p class=\"small\">Equipment as the \
+         issuer's register states it (a piece past its due date when used refuses the \
+         certificate). The reference is the local direction of gravity (the brackets \
+         calibrated by reversal on a levelled plate, the sensor's offset by stage 0's \
+         reversal): no external angle standard enters the zero; whether that meets a \
+         laboratory's traceability policy is the laboratory's decision.</p></section>"
     ))
 }
