@@ -8,6 +8,8 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+// Shared with store.rs, which uses the rest of it.
+#[allow(dead_code)]
 mod common;
 
 use common::{backends, record};
@@ -68,7 +70,7 @@ fn conventions_are_kept_per_serial_once_per_check_and_only_from_a_check() {
         ] {
             assert!(
                 matches!(
-                    h.record_conventions(&[bad.clone()]),
+                    h.record_conventions(std::slice::from_ref(&bad)),
                     Err(HistoryError::InvalidRecord(_))
                 ),
                 "{}: {bad:?}",

@@ -223,8 +223,7 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
             .checks_against(record.id)
             .map_err(crate::db::history_failed)?
             .into_iter()
-            .filter(|c| as_left::is_after_entry(c, record.id))
-            .next_back(),
+            .rfind(|c| as_left::is_after_entry(c, record.id)),
     };
     let as_left = left
         .map(|c| as_left::as_left(&c, record.id))
