@@ -4,7 +4,8 @@
 //! whose offsets were entered ([`crate::compare::check`]); recorded in the history.
 
 use crate::compare::check::{judge, CheckResult, Expected, JointCheck};
-use crate::compare::{CompareOptions, DifferenceBudget};
+use crate::compare::mistake::{classify, EntryJoint, Mistake};
+use crate::compare::{CompareOptions, Consistency, DifferenceBudget};
 use crate::db::DbArg;
 use crate::db::RecordMeta;
 use crate::error::CliError;
@@ -14,7 +15,7 @@ use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use zerocal_core::model::JOINTS;
-use zerocal_history::{JointRow, NewRecord, RecordKind};
+use zerocal_history::{JointRow, NewConvention, NewRecord, RecordKind};
 
 /// Arguments of `zerocal check`.
 #[derive(Args, Debug, Clone)]
@@ -57,6 +58,30 @@ pub struct CheckJoint {
     pub check: JointCheck,
     /// What is left as the controller shows the joint (deg).
     pub controller_remaining_deg: f64,
+    /// After an entry: what the controller was to take (the session's Δq, deg).
+    pub to_take_deg: Option<f64>,
+    /// What is left over what was to be taken, where the offset stands out of the
+    /// tolerance: 0 taken, 1 not taken, 2 the sign reversed, `1 − f` a factor `f`.
+    pub left_ratio: Option<f64>,
+    /// What went wrong with the entry (after an entry, for a joint the check sees).
+    pub mistake: Option<Mistake>,
+}
+
+/// What the check found of how the controller takes a typed value, per joint.
+#[derive(Serialize, Debug, Clone)]
+pub struct ConventionFinding {
+    /// The controller's name for the joint.
+    pub name: String,
+    /// The joint, 2-6.
+    pub joint: u8,
+    /// What the session's numbers assumed the controller takes of a typed value.
+    pub assumed_factor: f64,
+    /// What it took (the assumed factor times what the check measured).
+    pub measured_factor: f64,
+    /// The entry was taken as typed: the assumed convention is verified.
+    pub verified: bool,
+    /// Stored in the history for this robot (a family whose sign or unit is unknown).
+    pub recorded: bool,
 }
 
 /// `zerocal check --json`.
@@ -78,16 +103,84 @@ pub struct CheckJson {
     pub joints: Vec<CheckJoint>,
     /// The check's budget.
     pub budget: DifferenceBudget,
+    /// What was expected: the session's offsets entered, or a restore.
+    pub expected: Expected,
+    /// The test that the export is of the reference's robot, passed.
+    pub consistency: Consistency,
+    /// How this robot's controller took the entry, per joint (after an entry).
+    pub conventions: Vec<ConventionFinding>,
     /// What was assumed.
     pub notes: Vec<String>,
 }
 
-fn to_json(a: &Against, r: &CheckResult) -> CheckJson {
-    let mut delta = [0.0; JOINTS];
-    for (k, j) in r.joints.iter().enumerate() {
-        delta[k + 1] = j.remaining_deg.to_radians();
+/// The linear map from the model's offsets to the controller's (deg per deg), its rows
+/// the controller's joints 1-6: what an error of one model offset does to each shown one.
+fn controller_map(a: &Against) -> [[f64; JOINTS]; JOINTS] {
+    let c = &a.reference.profile.controller;
+    let mut m = [[0.0; JOINTS]; JOINTS];
+    for i in 0..JOINTS {
+        let mut unit = [0.0; JOINTS];
+        unit[i] = 1f64.to_radians();
+        let column = c.offsets_deg(&unit);
+        for (k, row) in m.iter_mut().enumerate() {
+            row[i] = column[k];
+        }
     }
-    let shown = a.reference.profile.controller.offsets_deg(&delta);
+    m
+}
+
+/// What is left in the controller's terms, and each shown joint's tolerance. Joint 2's
+/// line is its own; the others' take joint 2 as entered where joint 3's line holds the
+/// two together (joint 2 passed, or was not seen).
+fn in_controller_terms(a: &Against, r: &CheckResult) -> ([f64; JOINTS], [f64; JOINTS]) {
+    let controller = &a.reference.profile.controller;
+    let together = r.joints.get(1).is_some_and(|j| j.with_joint2);
+    let model = |with_joint2: bool| {
+        let mut delta = [0.0; JOINTS];
+        for (k, j) in r.joints.iter().enumerate() {
+            delta[k + 1] = j.remaining_deg.to_radians();
+        }
+        if with_joint2 {
+            delta[1] = 0.0;
+        }
+        controller.offsets_deg(&delta)
+    };
+    let own = model(false);
+    let mut shown = model(together);
+    shown[1] = own[1];
+    let map = controller_map(a);
+    let tolerance = core::array::from_fn(|k| {
+        r.joints
+            .iter()
+            .enumerate()
+            .filter(|(i, j)| j.pass.is_some() && !(*i == 0 && together && k != 1))
+            .map(|(i, j)| (map[k][i + 1] * j.tolerance_deg).powi(2))
+            .sum::<f64>()
+            .sqrt()
+    });
+    (shown, tolerance)
+}
+
+fn to_json(a: &Against, r: &CheckResult, expected: Expected) -> CheckJson {
+    let (shown, tolerance_q) = in_controller_terms(a, r);
+    let entries: Vec<EntryJoint> = r
+        .joints
+        .iter()
+        .enumerate()
+        .map(|(k, j)| EntryJoint {
+            name: j.name.clone(),
+            to_take_deg: a.reference.json.joints[k].controller_offset_deg,
+            left_deg: shown[k + 1],
+            tolerance_deg: tolerance_q[k + 1],
+            seen: j.pass.is_some(),
+        })
+        .collect();
+    let entered = expected == Expected::Entered;
+    let mistakes = if entered {
+        classify(&entries)
+    } else {
+        vec![None; entries.len()]
+    };
     CheckJson {
         reference_id: a.record.id,
         record_id: None,
@@ -98,15 +191,55 @@ fn to_json(a: &Against, r: &CheckResult) -> CheckJson {
         joints: r
             .joints
             .iter()
+            .zip(entries)
+            .zip(mistakes)
             .enumerate()
-            .map(|(k, j)| CheckJoint {
+            .map(|(k, ((j, e), mistake))| CheckJoint {
                 check: j.clone(),
                 controller_remaining_deg: shown[k + 1],
+                to_take_deg: entered.then_some(e.to_take_deg),
+                left_ratio: (entered && e.seen && e.to_take_deg.abs() > e.tolerance_deg)
+                    .then(|| e.left_deg / e.to_take_deg),
+                mistake,
             })
             .collect(),
         budget: a.comparison.budget.clone(),
+        expected,
+        consistency: a.comparison.consistency,
+        conventions: Vec::new(),
         notes: a.comparison.notes.clone(),
     }
+}
+
+/// What the entry says of this robot's conventions: for each joint whose mistake is one
+/// of sign or scale (or none), what the controller takes of a typed value, from the
+/// factor the session's numbers assumed (its stored record's) times what the check
+/// measured; `recorded` where the family leaves that aspect unknown.
+fn conventions(a: &Against, j: &CheckJson) -> Vec<ConventionFinding> {
+    // The numbers the technician typed: the session's as it printed them (its record).
+    let printed: Option<crate::session::SessionJson> =
+        serde_json::from_str(&a.record.new.result_json).ok();
+    let entry = a.reference.profile.family.entry();
+    j.joints
+        .iter()
+        .enumerate()
+        .filter_map(|(k, x)| {
+            let f = x.mistake.as_ref()?.factor()?;
+            let assumed = printed
+                .as_ref()
+                .and_then(|p| p.joints.get(k))
+                .map_or(1.0, crate::session::JointJson::entry_factor);
+            let verified = f == 1.0;
+            Some(ConventionFinding {
+                name: x.check.name.clone(),
+                joint: (k + 2) as u8,
+                assumed_factor: assumed,
+                measured_factor: assumed * f,
+                verified,
+                recorded: entry.any_unknown() && entry.learns(f),
+            })
+        })
+        .collect()
 }
 
 /// The check as the history keeps it. Each joint's offset is the one a session would
@@ -158,6 +291,8 @@ fn record_of(
             "stage0_temperature_c": a.export.stage0.and_then(|s| s.temperature_c),
             "poses": j.poses,
             "residual_rms_deg": a.comparison.residual_rms_rad.to_degrees(),
+            "expected": expected,
+            "upper_arm_compared": a.comparison.identifiable[0],
         })
         .to_string(),
         result_json: serde_json::to_string(j).map_err(|e| CliError::Input(e.to_string()))?,
@@ -188,22 +323,42 @@ pub fn render(j: &CheckJson) -> String {
     );
     let _ = writeln!(
         out,
-        "joint  left_deg    controller_deg  U(k=2)_deg  tolerance_deg  result"
+        "the same robot: the comparison leaves {:.5} deg RMS where two measurements of one \
+         robot leave {:.5} deg ({:.1} times; another robot's export is refused above {})",
+        j.consistency.residual_rms_deg,
+        j.consistency.expected_rms_deg,
+        j.consistency.ratio,
+        crate::compare::consistency::CONSISTENCY_LIMIT
     );
-    for (k, joint) in j.joints.iter().enumerate() {
+    let entered = j.expected == Expected::Entered;
+    let _ = writeln!(
+        out,
+        "joint  left_deg    controller_deg  U(k=2)_deg  tolerance_deg  result{}",
+        if entered {
+            "  left/to enter: what went wrong"
+        } else {
+            ""
+        }
+    );
+    for joint in &j.joints {
         let c = &joint.check;
         let Some(pass) = c.pass else {
             let _ = writeln!(out, "{:<6} not seen by the check (see the note)", c.name);
             continue;
         };
-        let sum = if k == 1 {
-            " (with joint 2: their sum)"
+        let sum = if c.with_joint2 {
+            " (with joint 2's: their combination at the flange)"
         } else {
             ""
         };
+        let what = match (&joint.mistake, joint.left_ratio) {
+            (Some(m), Some(ratio)) if !pass => format!("  {ratio:.3}: {}", m.words()),
+            (Some(m), None) if !pass => format!("  {}", m.words()),
+            _ => String::new(),
+        };
         let _ = writeln!(
             out,
-            "{:<6} {:+.5}    {:+.5}        {:.5}     {:.5}        {}{sum}",
+            "{:<6} {:+.5}    {:+.5}        {:.5}     {:.5}        {}{sum}{what}",
             c.name,
             c.remaining_deg,
             joint.controller_remaining_deg,
@@ -217,6 +372,34 @@ pub fn render(j: &CheckJson) -> String {
     for n in &j.notes {
         let _ = writeln!(out, "note: {n}");
     }
+    for c in &j.conventions {
+        let f = c.measured_factor;
+        let how = match (f < 0.0, (f.abs() - 1.0).abs() > 1e-9) {
+            (false, false) => "as typed (the controller page's convention)".to_owned(),
+            (true, false) => "with its sign reversed".to_owned(),
+            (false, true) => format!("times {f:.4} (its unit or gear ratio)"),
+            (true, true) => format!(
+                "with its sign reversed, times {:.4} (its unit or gear ratio)",
+                f.abs()
+            ),
+        };
+        let recorded = match (c.recorded, j.record_id) {
+            (true, Some(id)) if c.verified => {
+                format!(": verified on this robot, check {id} recorded as its evidence")
+            }
+            (true, Some(id)) => format!(
+                ": recorded for this robot, check {id} its evidence; the next session of it \
+                 prints the numbers to type with it"
+            ),
+            (true, None) => ": not recorded (--no-record)".to_owned(),
+            (false, _) => String::new(),
+        };
+        let _ = writeln!(
+            out,
+            "convention: {} takes a typed value {how} (factor {f:+.4}){recorded}",
+            c.name
+        );
+    }
     if let Some(id) = j.record_id {
         let _ = writeln!(out, "recorded: record {id}");
     }
@@ -228,10 +411,18 @@ pub fn render(j: &CheckJson) -> String {
         .collect();
     if j.pass {
         let _ = writeln!(out, "check: PASS");
+    } else if entered {
+        let _ = writeln!(
+            out,
+            "check: FAIL {}: the controller did not take these offsets as given (what went \
+             wrong is on each joint's line); correct the entry and check again",
+            failed.join(" ")
+        );
     } else {
         let _ = writeln!(
             out,
-            "check: FAIL {}: the controller did not take these offsets as given (a sign, a unit, a joint mixed up, a value not activated): compare what was typed with the session's report",
+            "check: FAIL {}: the restore was not taken as given: compare what was typed with \
+             the restore's report",
             failed.join(" ")
         );
     }
@@ -254,12 +445,34 @@ pub fn run(args: &CheckArgs) -> Result<String, CliError> {
         Expected::Entered
     };
     let result = judge(&a.reference, &a.comparison, expected, args.tolerance_deg);
-    let mut json = to_json(&a, &result);
-    if !args.no_record {
+    let mut json = to_json(&a, &result, expected);
+    json.conventions = conventions(&a, &json);
+    if args.no_record {
+        for c in &mut json.conventions {
+            c.recorded = false;
+        }
+    } else {
         let record = record_of(&a, &json, expected, &args.meta)?;
         let mut history = args.db.open()?;
         let inserted = history.insert(&record).map_err(crate::db::history_failed)?;
         json.record_id = Some(inserted.id);
+        let found: Vec<NewConvention> = json
+            .conventions
+            .iter()
+            .filter(|c| c.recorded)
+            .map(|c| NewConvention {
+                serial: json.serial.clone(),
+                joint: c.joint,
+                factor: c.measured_factor,
+                check_id: inserted.id,
+                verified: c.verified,
+            })
+            .collect();
+        if !found.is_empty() {
+            history
+                .record_conventions(&found)
+                .map_err(crate::db::history_failed)?;
+        }
     }
     let out = if args.json {
         serde_json::to_string_pretty(&json).map_err(|e| CliError::Input(e.to_string()))?

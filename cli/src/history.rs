@@ -192,15 +192,24 @@ fn to_io<E: std::fmt::Display>(e: E) -> std::io::Error {
 /// One joint's points: (day number, offset, U(k=2), kind), in record order.
 type Point = (f64, f64, f64, RecordKind);
 
-fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io::Result<()> {
-    let (mut x0, mut x1) = points
+/// The x range (day numbers) of the points: their span with room either side for a
+/// marker and its bar, a twentieth of the span but at least a day, so that neither the
+/// first nor the last record sits on the frame.
+fn x_range(points: &[Point]) -> (f64, f64) {
+    let (x0, x1) = points
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
             (a.min(p.0), b.max(p.0))
         });
-    // One day at least either side, so a single day's records are not on the frame.
-    x0 -= 1.0;
-    x1 += 1.0;
+    let pad = ((x1 - x0) / 20.0).max(1.0);
+    (x0 - pad, x1 + pad)
+}
+
+/// Height of the legend's strip under the chart (px): the legend never covers a record.
+const LEGEND_STRIP_PX: u32 = 34;
+
+fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io::Result<()> {
+    let (x0, x1) = x_range(points);
     let (mut y0, mut y1) = points
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
@@ -211,7 +220,8 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
     y1 += pad;
     let root = SVGBackend::new(path, SIZE).into_drawing_area();
     root.fill(&WHITE).map_err(to_io)?;
-    let mut chart = ChartBuilder::on(&root)
+    let (chart_area, legend_area) = root.split_vertically(SIZE.1 - LEGEND_STRIP_PX);
+    let mut chart = ChartBuilder::on(&chart_area)
         .caption(
             format!("{serial}: joint {joint} zero offset over time, with U(k=2)"),
             ("sans-serif", 18),
@@ -234,6 +244,7 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
         .iter()
         .filter(|p| p.3 == RecordKind::Session)
         .collect();
+    let mut legend: Vec<(&str, RecordKind, bool)> = Vec::new();
     if sessions.len() > 1 {
         let band: Vec<(f64, f64)> = sessions
             .iter()
@@ -245,11 +256,8 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
                 band,
                 SESSION.mix(0.15).filled(),
             )))
-            .map_err(to_io)?
-            .label("session U(k=2) band")
-            .legend(|(x, y)| {
-                Rectangle::new([(x, y - 5), (x + 20, y + 5)], SESSION.mix(0.15).filled())
-            });
+            .map_err(to_io)?;
+        legend.push(("session U(k=2) band", RecordKind::Session, true));
     }
     for (kind, color, label) in [
         (RecordKind::Session, SESSION, "session: offset, bar U(k=2)"),
@@ -271,32 +279,54 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
                 )
             }))
             .map_err(to_io)?;
-        let series = match kind {
+        match kind {
             RecordKind::Session => chart.draw_series(
                 of_kind
                     .iter()
-                    .map(|p| Circle::new((p.0, p.1), 4, color.filled()).into_dyn()),
+                    .map(|p| Circle::new((p.0, p.1), 4, color.filled())),
             ),
             RecordKind::Check => chart.draw_series(
                 of_kind
                     .iter()
-                    .map(|p| Cross::new((p.0, p.1), 5, color.stroke_width(2)).into_dyn()),
+                    .map(|p| Cross::new((p.0, p.1), 5, color.stroke_width(2))),
             ),
-        };
-        series
-            .map_err(to_io)?
-            .label(label)
-            .legend(move |(x, y)| match kind {
-                RecordKind::Session => Circle::new((x + 10, y), 4, color.filled()).into_dyn(),
-                RecordKind::Check => Cross::new((x + 10, y), 5, color.stroke_width(2)).into_dyn(),
-            });
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
+        }
         .map_err(to_io)?;
+        legend.push((label, kind, false));
+    }
+    // The legend in its own strip under the chart, one entry after another.
+    let mut x = 90;
+    let y = (LEGEND_STRIP_PX / 2) as i32;
+    let font: TextStyle = ("sans-serif", 13).into_font().into();
+    for (label, kind, band) in legend {
+        let color = match kind {
+            RecordKind::Session => SESSION,
+            RecordKind::Check => CHECK,
+        };
+        if band {
+            legend_area
+                .draw(&Rectangle::new(
+                    [(x, y - 5), (x + 20, y + 5)],
+                    SESSION.mix(0.15).filled(),
+                ))
+                .map_err(to_io)?;
+        } else if kind == RecordKind::Session {
+            legend_area
+                .draw(&Circle::new((x + 10, y), 4, color.filled()))
+                .map_err(to_io)?;
+        } else {
+            legend_area
+                .draw(&Cross::new((x + 10, y), 5, color.stroke_width(2)))
+                .map_err(to_io)?;
+        }
+        legend_area
+            .draw(&Text::new(label, (x + 26, y - 7), font.clone()))
+            .map_err(to_io)?;
+        let width = legend_area
+            .estimate_text_size(label, &font)
+            .map_or(8 * label.len() as u32, |(w, _)| w);
+        x += 26 + width as i32 + 24;
+    }
     root.present().map_err(to_io)
 }
 
@@ -377,4 +407,61 @@ pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(day: f64, kind: RecordKind) -> Point {
+        (day, 0.1, 0.01, kind)
+    }
+
+    #[test]
+    fn the_first_and_last_records_have_room_inside_the_frame() {
+        // A year of sessions and a check on the last day.
+        let points = [
+            point(20_465.0, RecordKind::Session),
+            point(20_710.0, RecordKind::Session),
+            point(20_731.0, RecordKind::Check),
+        ];
+        let (x0, x1) = x_range(&points);
+        let span = 20_731.0 - 20_465.0;
+        assert!(20_465.0 - x0 >= span / 20.0 - 1e-9 && x1 - 20_731.0 >= span / 20.0 - 1e-9);
+        // One day's records: a day either side.
+        let (x0, x1) = x_range(&[point(100.0, RecordKind::Session)]);
+        assert_eq!((x0, x1), (99.0, 101.0));
+    }
+
+    #[test]
+    fn the_legend_is_drawn_under_the_chart_not_over_it() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("j3.svg");
+        let points = [
+            point(20_465.0, RecordKind::Session),
+            point(20_600.0, RecordKind::Session),
+            point(20_731.0, RecordKind::Check),
+        ];
+        joint_plot(&path, "R", 3, &points).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        // Every legend label's text sits in the strip under the chart's area.
+        for label in [
+            "session: offset",
+            "check: the offset now",
+            "session U(k=2) band",
+        ] {
+            let at = svg.find(label).unwrap_or_else(|| panic!("no '{label}'"));
+            let tag = &svg[svg[..at].rfind("<text").unwrap()..at];
+            let y: f64 = tag
+                .split("y=\"")
+                .nth(1)
+                .and_then(|r| r.split('"').next())
+                .and_then(|v| v.parse().ok())
+                .unwrap();
+            assert!(
+                y >= f64::from(SIZE.1 - LEGEND_STRIP_PX),
+                "'{label}' at y {y}, over the chart"
+            );
+        }
+    }
 }

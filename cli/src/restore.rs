@@ -7,7 +7,7 @@
 //! Also the shared part of `zerocal check`: the reference record solved again and the
 //! export read.
 
-use crate::compare::{compare, CompareOptions, Comparison, DifferenceBudget};
+use crate::compare::{compare, CompareError, CompareOptions, Comparison, DifferenceBudget};
 use crate::db::DbArg;
 use crate::error::CliError;
 use crate::session::{read_export, Analysis, ExportContents};
@@ -91,8 +91,14 @@ pub fn against(
             )))
         }
     }
-    let comparison = compare(&reference, &contents, options)
-        .map_err(|e| CliError::Refused(name(&e.to_string())))?;
+    let comparison = compare(&reference, &contents, options).map_err(|e| match e {
+        CompareError::OtherRobot(_) => CliError::Refused(name(&format!(
+            "record {id} is robot {}'s ({}), and this export is {e}; give the ID of this \
+             robot's own session (zerocal history SERIAL lists them)",
+            record.new.serial, reference.profile.name
+        ))),
+        e => CliError::Refused(name(&e.to_string())),
+    })?;
     Ok(Against {
         record,
         reference,
@@ -107,7 +113,7 @@ pub fn against(
 pub struct RestoreJoint {
     /// The controller's name.
     pub name: String,
-    /// Measured (joint 2 is not, without stage 1; a held twin is not).
+    /// Measured (joint 2 only from the upper arm's readings; a held twin never).
     pub measured: bool,
     /// How far its zero moved since the reference (deg, model terms).
     pub moved_deg: f64,
@@ -157,13 +163,24 @@ pub fn to_json(a: &Against) -> RestoreJson {
         delta[k + 1] = c.moved_rad[k];
         cov[k + 1][k + 1] = c.budget.combined_deg[k].to_radians().powi(2);
     }
+    // Joint 3's own move: the flange's less joint 2's share, where joint 2 was compared.
+    let (j3_moved_deg, j3_u_deg) = c.joint3_own();
+    delta[2] = j3_moved_deg.to_radians();
+    cov[2][2] = j3_u_deg.to_radians().powi(2);
     let controller = profile.controller.offsets(&delta, &cov);
+    let expanded = |k: usize| {
+        if k == 1 {
+            j3_u_deg * zerocal_core::session::COVERAGE_FACTOR
+        } else {
+            c.budget.expanded_deg[k]
+        }
+    };
     let joints = (0..SESSION_JOINTS)
         .map(|k| RestoreJoint {
             name: profile.joints[k + 1].name.clone(),
-            measured: k > 0 && c.identifiable[k],
-            moved_deg: c.moved_rad[k].to_degrees(),
-            expanded_k2_deg: c.budget.expanded_deg[k],
+            measured: c.identifiable[k],
+            moved_deg: delta[k + 1].to_degrees(),
+            expanded_k2_deg: expanded(k),
             controller_dq_deg: controller[k + 1].shown_deg,
             controller_in_unit: controller[k + 1].in_unit,
             controller_unit: profile.controller.unit.name().to_owned(),
@@ -189,14 +206,20 @@ pub fn render_budget(out: &mut String, b: &DifferenceBudget) {
         out,
         "\nuncertainty of the difference (standard uncertainties, deg; GUM, k = 2):"
     );
+    // Joint 2's column where the upper arm was compared.
+    let from = if b.expanded_deg[0] > 0.0 { 0 } else { 1 };
     let row = |out: &mut String, name: &str, v: &[f64; SESSION_JOINTS]| {
         let _ = write!(out, "{name:<70}");
-        for u in &v[1..] {
+        for u in &v[from..] {
             let _ = write!(out, "  {u:.5}");
         }
         let _ = writeln!(out);
     };
-    let _ = writeln!(out, "{:<70}  j3       j4       j5       j6", "term");
+    let _ = write!(out, "{:<70}", "term");
+    for k in from..SESSION_JOINTS {
+        let _ = write!(out, "  j{:<6}", k + 2);
+    }
+    let _ = writeln!(out);
     for t in &b.terms {
         row(out, &t.term, &t.standard_uncertainty_deg);
     }

@@ -166,7 +166,9 @@ pub struct WorldArgs {
     #[arg(long = "zero-moved", value_name = "J=DEG", value_parser = parse_zero_moved, requires = "again")]
     pub zero_moved: Vec<(usize, f64)>,
     /// With `--again`: the offsets entered into the controller since the first session,
-    /// Δθ2..Δθ6 in deg as `zerocal session` printed them (their readings moved by them).
+    /// in the model's terms: Δθ2..Δθ6 in deg, the `offset_deg` (j2-j6) `zerocal session`
+    /// printed, not the controller's dq (a correct entry of dq moves each model zero by
+    /// Δθ, FANUC's J2/J3 coupling included).
     #[arg(long, value_name = "DEG,DEG,DEG,DEG,DEG", value_parser = parse_entered, allow_hyphen_values = true, requires = "again")]
     pub entered: Option<[f64; 5]>,
 }

@@ -11,7 +11,8 @@
 
 use std::path::PathBuf;
 use zerocal_cli::certificate::{
-    certificate_issued_on, escape_html, write, Certificate, CertificateError, CertificateSubject,
+    certificate_issued_on, escape_html, issuer, without_paths, write, AsLeft, AsLeftJoint,
+    Certificate, CertificateError, CertificateSubject, Issuer,
 };
 use zerocal_cli::session::{analyse, Analysis, SessionArgs};
 use zerocal_core::session::COVERAGE_FACTOR;
@@ -41,8 +42,28 @@ fn kr6() -> Analysis {
     analysis("kuka-kr6-r900-sixx", &WorldConfig::real(), 7)
 }
 
+/// The issuer of the tests and the demo (cli/tests/golden/issuer.toml).
+fn the_issuer() -> Issuer {
+    issuer::parse(include_str!("golden/issuer.toml")).unwrap()
+}
+
+/// What the session of `kr6()` used, from the golden register.
+fn equipment_of(a: &Analysis) -> Vec<zerocal_cli::certificate::Used> {
+    issuer::equipment_used(
+        &the_issuer(),
+        Some("pendant P-007"),
+        &a.export.brackets,
+        "2026-11-20",
+    )
+    .unwrap()
+}
+
 fn subject() -> CertificateSubject {
     CertificateSubject {
+        number: "P3-0d4f6a57-8d53-4a3e-9f1b-2b8c9e0a7d11".into(),
+        issuer: the_issuer(),
+        equipment: equipment_of(&kr6()),
+        as_left: None,
         record_id: 4711,
         serial: "KR6-SN-0042".into(),
         measured_on: "2026-11-20".into(),
@@ -77,7 +98,12 @@ fn the_certificate_holds_every_required_item() {
     let e = &a.export;
     // Identity.
     holds(&c, "the title", "<h1>Calibration certificate</h1>");
-    holds(&c, "the certificate number", "Certificate no.</th><td>4711");
+    holds(
+        &c,
+        "the certificate number",
+        "Certificate no.</th><td class=\"mono\">P3-0d4f6a57-8d53-4a3e-9f1b-2b8c9e0a7d11",
+    );
+    holds(&c, "the history record", "History record</th><td>4711");
     holds(&c, "the issue date", "Issued</th><td>2026-11-27");
     holds(&c, "the measuring date", "Measured</th><td>2026-11-20");
     holds(&c, "the robot model", &escape_html(&a.profile.title));
@@ -85,7 +111,7 @@ fn the_certificate_holds_every_required_item() {
     holds(
         &c,
         "the controller family",
-        &format!("<td>{} (entering", j.family),
+        &format!("<td>{} (how its controller takes", j.family),
     );
     holds(
         &c,
@@ -154,8 +180,7 @@ fn the_certificate_holds_every_required_item() {
     for joint in &j.joints {
         holds(&c, "each joint's name", &format!("<td>{}</td>", joint.name));
     }
-    for (t, term) in j.joints[0].budget_deg.iter().enumerate() {
-        holds(&c, "each budget term", &escape_html(&term.term));
+    for (t, _) in j.joints[0].budget_deg.iter().enumerate() {
         for joint in &j.joints {
             let u = format!(
                 "<td class=\"num\">{:.5}</td>",
@@ -180,6 +205,11 @@ fn the_certificate_holds_every_required_item() {
     );
     // Traceability.
     holds(&c, "the pendant", "pendant P-007");
+    holds(
+        &c,
+        "the pendant's flag: not in the register",
+        "not in the equipment register",
+    );
     holds(&c, "the measuring element", "SCL3300");
     for cal in [&e.brackets.upper_arm, &e.brackets.flange] {
         let cal = cal.as_ref().unwrap();
@@ -221,7 +251,7 @@ fn the_certificate_holds_every_required_item() {
         holds(&c, "each warning", &escape_html(w));
     }
     for n in &j.notes {
-        holds(&c, "each note", &escape_html(n));
+        holds(&c, "each note", &escape_html(&without_paths(n)));
     }
     // The residual figure, its σ, and the page.
     holds(&c, "the residual figure", "<svg");
@@ -292,6 +322,13 @@ fn text_from_the_record_comes_out_inert() {
         operator: Some("O'Brien & <b>Sons</b>".into()),
         pendant_unit: Some("\"><img onerror=x>".into()),
         recorded_at: "<i>now</i>".into(),
+        equipment: issuer::equipment_used(
+            &the_issuer(),
+            Some("\"><img onerror=x>"),
+            &a.export.brackets,
+            "2026-11-20",
+        )
+        .unwrap(),
         ..subject()
     };
     let c = issue(&s, &a);
@@ -393,7 +430,7 @@ fn a_joint_gravity_cannot_see_is_marked_not_identifiable() {
     let c = issue(&subject(), &a);
     assert!(
         c.html.contains(&format!(
-            "<tr><td>{}</td><td colspan=\"5\">not identifiable by gravity",
+            "<tr><td>{}</td><td colspan=\"7\">not identifiable by gravity",
             held.name
         )),
         "{} not marked",
@@ -408,7 +445,21 @@ fn a_joint_gravity_cannot_see_is_marked_not_identifiable() {
 #[test]
 fn a_record_a_certificate_cannot_state_is_refused_by_field() {
     let a = kr6();
-    let cases: [(CertificateSubject, &str); 6] = [
+    let cases: [(CertificateSubject, &str); 8] = [
+        (
+            CertificateSubject {
+                measured_on: "2026-02-31".into(),
+                ..subject()
+            },
+            "measured_on",
+        ),
+        (
+            CertificateSubject {
+                number: " ".into(),
+                ..subject()
+            },
+            "number",
+        ),
         (
             CertificateSubject {
                 serial: " ".into(),
@@ -521,4 +572,125 @@ fn write_puts_the_numbers_beside_the_certificate() {
     }
     // A certificate named .numbers would be overwritten by its own numbers.
     assert!(write(&subject(), &a, &dir().join("c.numbers")).is_err());
+}
+
+/// Item 5 of issue 31: the issuer, customer and site from the configuration; a number
+/// of its own; the equipment with IDs, calibration and due dates; as found and as left
+/// side by side; the budget as a GUM table; the decision rule as applied; no path of
+/// zerocal's repository.
+#[test]
+fn the_certificate_carries_what_a_quality_department_files() {
+    let a = kr6();
+    let left = AsLeft {
+        record_id: 4712,
+        measured_on: "2026-11-21".into(),
+        pass: false,
+        rule: "a joint passes when what is left is within 3 u".into(),
+        joints: a
+            .json
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(k, j)| AsLeftJoint {
+                name: j.name.clone(),
+                left_deg: Some(if k == 3 { 0.39876 } else { 0.00012 }),
+                expanded_k2_deg: 0.00345,
+                pass: Some(k != 3),
+                with_joint2: k == 1,
+                mistake: (k == 3).then(|| "the sign reversed: it was taken as its negative".into()),
+            })
+            .collect(),
+    };
+    let s = CertificateSubject {
+        as_left: Some(left),
+        ..subject()
+    };
+    let c = issue(&s, &a);
+    holds(
+        &c,
+        "the laboratory",
+        "<b>Plant 3 metrology</b><br>Werkstrasse 5",
+    );
+    holds(
+        &c,
+        "the customer",
+        "Customer</th><td>Body shop, line 4, Werkstrasse 5",
+    );
+    holds(&c, "the site", "Site</th><td>Hall 2, cell 7");
+    for id in ["EXACT", "RB-7", "SP-2"] {
+        holds(&c, "each piece of equipment's ID", &format!(">{id}</td>"));
+    }
+    holds(
+        &c,
+        "a block's calibration, due date and certificate",
+        "<td class=\"date\">2025-12-01</td><td class=\"date\">2026-12-01</td><td>EXT-2025-4411",
+    );
+    holds(
+        &c,
+        "a bracket's due date",
+        "<td class=\"date\">2027-01-05</td>",
+    );
+    holds(
+        &c,
+        "as found beside as left",
+        "As found (this session)</th>",
+    );
+    holds(&c, "the as-left column", "As left (check)</th>");
+    holds(&c, "a joint as left", "+0.00012 ± 0.00345");
+    holds(
+        &c,
+        "joint 3 as the flange sees it",
+        "+0.00012 ± 0.00345 (c)",
+    );
+    holds(
+        &c,
+        "an as-left failure named",
+        "FAIL: the sign reversed: it was taken as its negative",
+    );
+    holds(&c, "the as-left check's record", "record 4712");
+    holds(&c, "the overall result", "<b>FAIL</b>");
+    holds(&c, "why", "the check after the entry failed");
+    for head in [
+        "Input quantity X<sub>i</sub>",
+        "Type, distrib.",
+        "u(x<sub>i</sub>) (deg)",
+        "sensitivity c<sub>i</sub>",
+        "contribution u<sub>i</sub>(y)",
+        "A, normal",
+        "B, rectang.",
+        "B, arcsine",
+    ] {
+        holds(&c, "the GUM table's columns and distributions", head);
+    }
+    // The residual rule as the verdict applied it, with its figures.
+    let ceiling = a.config.max_residual_rms_rad.to_degrees();
+    holds(
+        &c,
+        "the residual rule applied",
+        &format!(
+            "the residual RMS at most 0.8 of the refusal ceiling of {ceiling:.5} deg, i.e. {:.5} deg",
+            0.8 * ceiling
+        ),
+    );
+    assert!(!c.html.contains("times the sensor's noise"));
+    for path in ["docs/", ".md", "cli/", "src/", "xtask"] {
+        assert!(!c.html.contains(path), "a repository path: {path}");
+    }
+    // The same certificate without a check after the entry says so.
+    let c = issue(&subject(), &a);
+    holds(
+        &c,
+        "no as-left",
+        "not checked: no check after the entry is recorded",
+    );
+}
+
+/// docs/certificate.md's example of the issuer's file is the format the CLI reads.
+#[test]
+fn the_documented_issuer_file_reads() {
+    let doc = include_str!("../../docs/certificate.md");
+    let start = doc.find("```toml\n[laboratory]").expect("the example") + "```toml\n".len();
+    let end = start + doc[start..].find("```").unwrap();
+    let i = issuer::parse(&doc[start..end]).unwrap();
+    assert!(!i.equipment.is_empty());
 }

@@ -155,16 +155,68 @@ fn record_restore_check_and_certify_one_robot() {
     assert_eq!(kinds, ["session", "check", "check"], "{listed}");
 
     let html = d.join("certificate.html");
-    ok(&[
-        "certificate",
-        &id,
-        "--out",
-        html.to_str().unwrap(),
-        "--db",
-        db,
-    ]);
+    let issuer = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/issuer.toml");
+    let certify = |html: &Path, config: &str| {
+        zerocal(&[
+            "certificate",
+            &id,
+            "--out",
+            html.to_str().unwrap(),
+            "--config",
+            config,
+            "--db",
+            db,
+        ])
+    };
+    let first = certify(&html, issuer);
+    assert!(
+        first.status.success(),
+        "{}",
+        String::from_utf8_lossy(&first.stderr)
+    );
     let text = std::fs::read_to_string(&html).unwrap();
     assert!(text.contains("KR6-0001") && text.contains("A. Tech"));
+    // Its number is kept: the same certificate again has the same number; as left, the
+    // latest check after the entry (the one with A3 short).
+    let number = String::from_utf8_lossy(&first.stdout)
+        .lines()
+        .find_map(|l| l.strip_prefix("certificate no. ").map(str::to_owned))
+        .unwrap();
+    assert!(
+        number.starts_with("P3-") && number.len() == 3 + 36,
+        "{number}"
+    );
+    assert!(text.contains(&number) && text.contains("As left (check)"));
+    assert!(
+        text.contains("record 3") && text.contains("FAIL"),
+        "as left: the last check"
+    );
+    let again = certify(&d.join("again.html"), issuer);
+    assert!(String::from_utf8_lossy(&again.stdout).contains(&number));
+    // Equipment past its due date when used refuses the certificate, naming it.
+    let late = d.join("late.toml");
+    std::fs::write(
+        &late,
+        std::fs::read_to_string(issuer).unwrap().replace(
+            "calibrated = \"2025-12-01\"\ndue = \"2026-12-01\"",
+            "calibrated = \"2025-01-01\"\ndue = \"2025-06-01\"",
+        ),
+    )
+    .unwrap();
+    let refused = certify(&d.join("late.html"), late.to_str().unwrap());
+    let e = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(3), "{e}");
+    assert!(
+        e.contains("RB-7") && e.contains("was due for calibration"),
+        "{e}"
+    );
+    // Without an issuer's file: refused, naming what it is for.
+    let none = certify(
+        &d.join("none.html"),
+        d.join("absent.toml").to_str().unwrap(),
+    );
+    assert_eq!(none.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&none.stderr).contains("laboratory, customer and site"));
 }
 
 /// The pendant's kept results, imported under a serial: each once, however often the

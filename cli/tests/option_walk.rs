@@ -322,6 +322,8 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
                     log.with_file_name("walk-certificate.html")
                         .display()
                         .to_string(),
+                    "--config".into(),
+                    concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/issuer.toml").into(),
                     "--db".into(),
                     db,
                 ],

@@ -12,6 +12,52 @@ use core::fmt::{self, Write};
 /// model: the robot moved, a pose was entered wrong, or the convention is wrong.
 pub const RESIDUAL_WARN_FACTOR: f64 = 3.0;
 
+/// With a residual ceiling (a real sensor on a real robot, whose repeatability leaves
+/// part of itself in the residuals) the verdict warns when the residuals come within
+/// this fraction of the refusal.
+pub const RESIDUAL_WARN_OF_CEILING: f64 = 0.8;
+
+/// The residual rule a verdict applies under a fit configuration: one place, so that a
+/// certificate states the rule that was applied.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ResidualRule {
+    /// Warn above [`RESIDUAL_WARN_OF_CEILING`] of the refusal ceiling (rad): the
+    /// session is refused above the ceiling itself.
+    OfCeiling {
+        /// The refusal ceiling (rad).
+        ceiling_rad: f64,
+    },
+    /// Warn above [`RESIDUAL_WARN_FACTOR`] times the sensor's noise (rad).
+    OfNoise {
+        /// The sensor's noise, 1σ (rad).
+        noise_rad: f64,
+    },
+}
+
+impl ResidualRule {
+    /// The rule `config` sets.
+    pub fn of<T: Real>(config: &FitConfig<T>) -> Self {
+        let ceiling = config.max_residual_rms_rad.to_f64();
+        if ceiling > 0.0 {
+            ResidualRule::OfCeiling {
+                ceiling_rad: ceiling,
+            }
+        } else {
+            ResidualRule::OfNoise {
+                noise_rad: config.sensor_noise_rad.to_f64(),
+            }
+        }
+    }
+
+    /// The residual RMS above which the verdict warns (rad).
+    pub fn warn_above_rad(&self) -> f64 {
+        match *self {
+            ResidualRule::OfCeiling { ceiling_rad } => RESIDUAL_WARN_OF_CEILING * ceiling_rad,
+            ResidualRule::OfNoise { noise_rad } => RESIDUAL_WARN_FACTOR * noise_rad,
+        }
+    }
+}
+
 /// Something the operator should know before trusting the numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -78,15 +124,7 @@ impl Verdict {
         let mut v = Verdict::default();
         let rms = fit.residual_rms_rad.to_f64();
         let noise = config.sensor_noise_rad.to_f64();
-        // With a residual ceiling (a real sensor on a real robot, whose repeatability
-        // leaves part of itself in the residuals), warn when the residuals come within
-        // 80 % of the refusal; else at three times the sensor's noise.
-        let ceiling = config.max_residual_rms_rad.to_f64();
-        let warn_above = if ceiling > 0.0 {
-            0.8 * ceiling
-        } else {
-            RESIDUAL_WARN_FACTOR * noise
-        };
+        let warn_above = ResidualRule::of(config).warn_above_rad();
         // Capacity is MAX_WARNINGS and each variant is pushed at most once.
         if rms > warn_above {
             let _ = v.warnings.push(Warning::ResidualHigh {

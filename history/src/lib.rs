@@ -6,11 +6,15 @@
 //! SQLite file (the default, see [`DbLocation::from_arg`]) and a plant-wide PostgreSQL
 //! server. See `docs/history.md` for the guarantees and how they are tested.
 
+mod certificates;
+mod conventions;
 mod db;
 mod error;
 pub mod schema;
 mod time;
 
+pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
+pub use conventions::{Convention, NewConvention};
 pub use error::HistoryError;
 pub use time::{date_of_day, day_number};
 

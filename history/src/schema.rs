@@ -86,6 +86,36 @@ CREATE TABLE joints (
         what: "index of records by serial and ID (`zerocal history SERIAL` lists in ID order)",
         sql: "CREATE INDEX records_by_serial ON records (serial, id);",
     },
+    Migration {
+        version: 3,
+        what: "conventions: how each robot's controller takes a typed offset, per joint, with \
+               the check that measured it; certificates: each issued certificate's number, \
+               its session (as found), its check after the entry (as left), its issue date, \
+               its issuer and equipment",
+        sql: "
+CREATE TABLE conventions (
+    id {id},
+    recorded_at TEXT NOT NULL,
+    serial TEXT NOT NULL,
+    joint BIGINT NOT NULL CHECK (joint BETWEEN 2 AND 6),
+    factor DOUBLE PRECISION NOT NULL,
+    check_id BIGINT NOT NULL REFERENCES records (id),
+    verified BIGINT NOT NULL CHECK (verified IN (0, 1)),
+    UNIQUE (check_id, joint)
+);
+CREATE INDEX conventions_by_serial ON conventions (serial, id);
+CREATE TABLE certificates (
+    number TEXT PRIMARY KEY,
+    session_id BIGINT NOT NULL REFERENCES records (id),
+    as_left_id BIGINT REFERENCES records (id),
+    issued_on TEXT NOT NULL,
+    issuer_json TEXT NOT NULL,
+    issuer_sha256 TEXT NOT NULL,
+    recorded_at TEXT NOT NULL
+);
+CREATE INDEX certificates_by_session ON certificates (session_id);
+",
+    },
 ];
 
 /// The newest schema version this build reads and writes.

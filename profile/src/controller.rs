@@ -112,6 +112,18 @@ impl Controller {
         self.display(Default::default()).offsets_deg(delta_rad)
     }
 
+    /// The model offsets Δθ1..Δθ6 (deg) a controller offset Δq1..Δq6 (deg, its terms)
+    /// is: the inverse of [`Self::offsets_deg`]. What an entry does to the model when
+    /// the controller takes `shown_deg`: with FANUC's coupling, a J2 entry moves the
+    /// model's θ3 too.
+    pub fn model_offsets_deg(&self, shown_deg: &[f64; JOINTS]) -> [f64; JOINTS] {
+        let mut d: [f64; JOINTS] = core::array::from_fn(|k| shown_deg[k] * f64::from(self.sign[k]));
+        if self.coupling == Coupling::J3MinusJ2 {
+            d[2] += d[1];
+        }
+        d
+    }
+
     /// Each joint's offset in the controller's terms, with its 1σ, from model offsets
     /// and their covariance.
     pub fn offsets(
@@ -171,6 +183,26 @@ mod tests {
         // A pure Δθ2 moves the forearm too: the pendant's J3 offset is −Δθ2.
         let d = c.offsets_deg(&[0.0, 0.01f64.to_radians(), 0.0, 0.0, 0.0, 0.0]);
         assert!((d[1] - 0.01).abs() < 1e-15 && (d[2] + 0.01).abs() < 1e-15);
+        // And back: the model offsets an entry of those Δq is.
+        let m = c.model_offsets_deg(&d);
+        assert!((m[1] - 0.01).abs() < 1e-15 && m[2].abs() < 1e-15, "{m:?}");
+    }
+
+    #[test]
+    fn model_offsets_invert_the_controller_terms_of_every_builtin() {
+        for name in crate::builtin_names() {
+            let c = crate::builtin(name).unwrap().controller;
+            let model_deg = [0.0, 0.081, -0.492, 0.104, -0.2, 0.422];
+            let shown = c.offsets_deg(&model_deg.map(f64::to_radians));
+            let back = c.model_offsets_deg(&shown);
+            for k in 0..JOINTS {
+                assert!(
+                    (back[k] - model_deg[k]).abs() < 1e-12,
+                    "{name} joint {}",
+                    k + 1
+                );
+            }
+        }
     }
 
     #[test]

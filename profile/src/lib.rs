@@ -12,10 +12,12 @@
 
 pub mod bounds;
 mod controller;
+mod entry;
 pub mod flange;
 mod raw;
 
 pub use controller::{Controller, Coupling, OffsetUnit, OffsetValue};
+pub use entry::{EntryKnowledge, Known};
 pub use flange::{FlangeInterface, Iso9409};
 
 use nalgebra::{Rotation3, Unit, Vector3};

@@ -15,12 +15,19 @@
 //! checked to hold every one; every text is escaped for HTML. docs/certificate.md says
 //! what each section is for.
 
+pub mod as_left;
+mod gum;
+pub mod issuer;
 mod page;
 mod printed;
 mod residual_plot;
 mod sections;
+mod trace;
 
+pub use as_left::{AsLeft, AsLeftJoint};
+pub use issuer::{Equipment, EquipmentKind, Issuer, Used};
 pub use printed::esc as escape_html;
+pub use sections::without_paths;
 
 use crate::args::RealIn;
 use crate::error::CliError;
@@ -31,10 +38,13 @@ use std::path::{Path, PathBuf};
 use zerocal_core::stage2::MEMS_RANGE_DEG;
 
 /// What the history record adds to the session: the robot's identity, when and by
-/// whom it was measured, and what the numbers were computed from.
+/// whom it was measured, what the numbers were computed from, who issues the
+/// certificate with which equipment, and the robot as left.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CertificateSubject {
-    /// The record's number: the certificate's number.
+    /// The certificate's number (unique across machines: [`issuer::new_number`]).
+    pub number: String,
+    /// The session's history record.
     pub record_id: i64,
     /// The robot's serial number.
     pub serial: String,
@@ -55,6 +65,12 @@ pub struct CertificateSubject {
     /// The decision's tolerance per joint (deg), if one is stated: a joint conforms when
     /// its U (k = 2) is at most this.
     pub tolerance_deg: Option<f64>,
+    /// The issuing laboratory, the customer, the site and the equipment register.
+    pub issuer: Issuer,
+    /// The equipment the session used, found in the register.
+    pub equipment: Vec<Used>,
+    /// The check after the entry, if one was recorded.
+    pub as_left: Option<AsLeft>,
 }
 
 /// A certificate: its HTML and every number it prints.
@@ -87,6 +103,9 @@ pub enum CertificateError {
     },
     /// The residual figure could not be drawn.
     Figure(String),
+    /// Equipment the session rests on was past its due date, or the number could not be
+    /// drawn.
+    Equipment(String),
 }
 
 impl fmt::Display for CertificateError {
@@ -102,6 +121,7 @@ impl fmt::Display for CertificateError {
             CertificateError::Figure(e) => {
                 write!(f, "certificate: the residual figure cannot be drawn: {e}")
             }
+            CertificateError::Equipment(e) => write!(f, "certificate: {e}"),
         }
     }
 }
@@ -112,9 +132,9 @@ impl From<CertificateError> for CliError {
     fn from(e: CertificateError) -> Self {
         match e {
             CertificateError::Subject { .. } => CliError::Input(e.to_string()),
-            CertificateError::NotFinite { .. } | CertificateError::Figure(_) => {
-                CliError::Refused(e.to_string())
-            }
+            CertificateError::NotFinite { .. }
+            | CertificateError::Figure(_)
+            | CertificateError::Equipment(_) => CliError::Refused(e.to_string()),
         }
     }
 }
@@ -137,20 +157,96 @@ pub struct CertificateArgs {
     /// acceptance only. Range: (0, 10] deg.
     #[arg(long, value_name = "DEG", value_parser = TOLERANCE)]
     pub tolerance_deg: Option<f64>,
+    /// The issuer's configuration: the laboratory, the customer, the site and the
+    /// equipment register (TOML, docs/certificate.md). Default:
+    /// $XDG_CONFIG_HOME/zerocal/certificate.toml, else ~/.config/zerocal/certificate.toml.
+    #[arg(long, value_name = "FILE")]
+    pub config: Option<PathBuf>,
+    /// The check after the entry to state as the robot as left (default: the latest
+    /// check recorded against this session after an entry). Range: [1,
+    /// 9223372036854775807].
+    #[arg(long, value_name = "ID", value_parser = crate::args::RECORD_ID)]
+    pub as_left: Option<i64>,
     #[command(flatten)]
     pub db: crate::db::DbArg,
 }
 
+/// The issuer's configuration file `--config` names, or the default one.
+fn config_path(args: &CertificateArgs) -> Result<PathBuf, CliError> {
+    if let Some(p) = &args.config {
+        return Ok(p.clone());
+    }
+    let base = std::env::var_os("XDG_CONFIG_HOME")
+        .map(PathBuf::from)
+        .filter(|p| p.is_absolute())
+        .or_else(|| {
+            std::env::var_os("HOME")
+                .filter(|h| !h.is_empty())
+                .map(|h| PathBuf::from(h).join(".config"))
+        })
+        .ok_or_else(|| {
+            CliError::Input(
+                "certificate: no --config and no XDG_CONFIG_HOME or HOME: give the issuer's \
+                 configuration file (docs/certificate.md)"
+                    .into(),
+            )
+        })?;
+    Ok(base.join("zerocal").join("certificate.toml"))
+}
+
 /// Runs `zerocal certificate ID --out FILE.html`: the record's session solved again
-/// from its stored export and profile, certified.
+/// from its stored export and profile, certified by the issuer of `--config`, with the
+/// robot as left by the check after the entry; the certificate's number and issue date
+/// kept in the history, so the same certificate comes out again.
 ///
 /// # Errors
-/// No such record, a check's record, a record the certificate cannot state.
+/// No such record, a check's record, a record the certificate cannot state, an issuer
+/// file that does not read, equipment past its due date.
 pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
     let mut history = args.db.open()?;
     let record = history.get(args.id).map_err(crate::db::history_failed)?;
     let analysis = crate::record::solve_record(&record)?;
+    let path = config_path(args)?;
+    let text = crate::input::read_capped(&path, issuer::MAX_ISSUER_BYTES, "issuer configuration")
+        .map_err(|e| match e {
+        CliError::Input(m) => CliError::Input(format!(
+            "{m}: a certificate names its laboratory, customer and site from this file \
+                 (docs/certificate.md gives its format)"
+        )),
+        e => e,
+    })?;
+    let issuer =
+        issuer::parse(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let left = match args.as_left {
+        Some(id) => Some(history.get(id).map_err(crate::db::history_failed)?),
+        None => history
+            .checks_against(record.id)
+            .map_err(crate::db::history_failed)?
+            .into_iter()
+            .rfind(|c| as_left::is_after_entry(c, record.id)),
+    };
+    let as_left = left
+        .map(|c| as_left::as_left(&c, record.id))
+        .transpose()
+        .map_err(CliError::Input)?;
+    let equipment = issuer::equipment_used(
+        &issuer,
+        record.new.pendant_unit.as_deref(),
+        &analysis.export.brackets,
+        &record.new.measured_on,
+    )?;
+    let issuer_json = serde_json::json!({ "issuer": &issuer, "equipment": &equipment }).to_string();
+    let (issued, _) = history
+        .issue_certificate(&zerocal_history::NewCertificate {
+            number: issuer::new_number(&issuer)?,
+            session_id: record.id,
+            as_left_id: as_left.as_ref().map(|a| a.record_id),
+            issued_on: crate::brackets::today_utc(),
+            issuer_json,
+        })
+        .map_err(crate::db::history_failed)?;
     let subject = CertificateSubject {
+        number: issued.new.number.clone(),
         record_id: record.id,
         serial: record.new.serial.clone(),
         measured_on: record.new.measured_on.clone(),
@@ -161,13 +257,17 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
         export_sha256: record.export_sha256.clone(),
         zerocal_version: record.new.zerocal_version.clone(),
         tolerance_deg: args.tolerance_deg,
+        issuer,
+        equipment,
+        as_left,
     };
-    let written = write(&subject, &analysis, &args.out)?;
-    Ok(written
-        .iter()
-        .map(|p| format!("wrote {}", p.display()))
-        .collect::<Vec<_>>()
-        .join("\n"))
+    let written = write_issued_on(&subject, &analysis, &args.out, &issued.new.issued_on)?;
+    Ok(
+        std::iter::once(format!("certificate no. {}", subject.number))
+            .chain(written.iter().map(|p| format!("wrote {}", p.display())))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    )
 }
 
 /// The certificate of `analysis` (the session solved from the record's export) for the
@@ -206,8 +306,8 @@ pub fn certificate_issued_on(
     })
 }
 
-/// Writes the certificate to `out` (its HTML) and `out` with the extension `numbers`
-/// (every number it prints, one a line). Returns the two paths.
+/// Writes the certificate, issued today, to `out` (its HTML) and `out` with the
+/// extension `numbers` (every number it prints, one a line). Returns the two paths.
 ///
 /// # Errors
 /// As [`certificate`]; `out` named `.numbers`; a file that cannot be written.
@@ -215,6 +315,19 @@ pub fn write(
     subject: &CertificateSubject,
     analysis: &Analysis,
     out: &Path,
+) -> Result<Vec<PathBuf>, CliError> {
+    write_issued_on(subject, analysis, out, &crate::brackets::today_utc())
+}
+
+/// [`write`] with its issue date given (`YYYY-MM-DD`).
+///
+/// # Errors
+/// As [`write`].
+pub fn write_issued_on(
+    subject: &CertificateSubject,
+    analysis: &Analysis,
+    out: &Path,
+    issued_on: &str,
 ) -> Result<Vec<PathBuf>, CliError> {
     let numbers = out.with_extension("numbers");
     if numbers == out {
@@ -224,7 +337,7 @@ pub fn write(
             out.display()
         )));
     }
-    let c = certificate(subject, analysis)?;
+    let c = certificate_issued_on(subject, analysis, issued_on)?;
     let mut list = c.printed_numbers.join("\n");
     list.push('\n');
     for (path, bytes) in [(out, c.html.as_bytes()), (&numbers, list.as_bytes())] {
@@ -236,6 +349,12 @@ pub fn write(
 
 /// Refuses a record a certificate cannot state as it is.
 fn check_subject(s: &CertificateSubject) -> Result<(), CertificateError> {
+    if s.number.trim().is_empty() {
+        return Err(CertificateError::Subject {
+            field: "number",
+            why: "empty: every certificate has its own number".into(),
+        });
+    }
     if s.serial.trim().is_empty() {
         return Err(CertificateError::Subject {
             field: "serial",
@@ -265,28 +384,16 @@ fn check_subject(s: &CertificateSubject) -> Result<(), CertificateError> {
     Ok(())
 }
 
-/// Refuses anything but a calendar date `YYYY-MM-DD`.
+/// Refuses anything but a calendar date `YYYY-MM-DD` (the history's calendar: 2026-02-31
+/// is no date).
 fn check_date(field: &'static str, date: &str) -> Result<(), CertificateError> {
-    let bad = || CertificateError::Subject {
-        field,
-        why: format!("'{date}' is not a date YYYY-MM-DD"),
-    };
-    let parts: Vec<&str> = date.split('-').collect();
-    let [y, m, d] = parts.as_slice() else {
-        return Err(bad());
-    };
-    if y.len() != 4 || m.len() != 2 || d.len() != 2 {
-        return Err(bad());
-    }
-    let number = |s: &str| {
-        s.chars()
-            .all(|c| c.is_ascii_digit())
-            .then(|| s.parse::<u32>().ok())
-            .flatten()
-    };
-    match (number(y), number(m), number(d)) {
-        (Some(_), Some(1..=12), Some(1..=31)) => Ok(()),
-        _ => Err(bad()),
+    if issuer::is_date(date) {
+        Ok(())
+    } else {
+        Err(CertificateError::Subject {
+            field,
+            why: format!("'{date}' is not a calendar date YYYY-MM-DD"),
+        })
     }
 }
 
@@ -296,11 +403,14 @@ mod tests {
 
     #[test]
     fn only_a_calendar_date_passes() {
-        for good in ["2026-11-27", "1999-01-31"] {
+        for good in ["2026-11-27", "1999-01-31", "2024-02-29"] {
             assert!(check_date("d", good).is_ok(), "{good}");
         }
         for bad in [
             "2026-13-01",
+            "2026-02-31",
+            "2026-04-31",
+            "2023-02-29",
             "2026-1-01",
             "26-11-27",
             "2026-11-27x",

@@ -19,7 +19,7 @@ const STYLE: &str = r#"
 html { background: #fff; color: #000; }
 body { margin: 0; font: 8.5pt/1.25 "DejaVu Sans", "Liberation Sans", Arial, sans-serif; }
 h1 { font-size: 15pt; margin: 0; }
-h2 { font-size: 9.5pt; margin: 2.4mm 0 1mm; padding-bottom: 0.4mm; border-bottom: 0.8pt solid #000; break-after: avoid; }
+h2 { font-size: 9.5pt; margin: 2mm 0 0.8mm; padding-bottom: 0.4mm; border-bottom: 0.8pt solid #000; break-after: avoid; }
 p { margin: 1mm 0; }
 .title { display: flex; justify-content: space-between; align-items: flex-start; border-bottom: 1.6pt solid #000; padding-bottom: 2mm; }
 .subtitle { margin-top: 1mm; }
@@ -32,20 +32,25 @@ th, td { text-align: left; vertical-align: top; padding: 0.5mm 1.2mm; }
 .grid th, .grid td { border: 0.5pt solid #000; }
 .grid thead th { font-weight: bold; }
 .num { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }
-.budget { font-size: 7pt; line-height: 1.1; }
-.budget td, .budget th { padding: 0.15mm 1.2mm; }
+.budget { font-size: 6.3pt; line-height: 1.1; }
+.budget td, .budget th { padding: 0 0.8mm; }
+.budget td:first-child { white-space: nowrap; }
+.date { white-space: nowrap; }
 .total td { font-weight: bold; }
 .mono { font-family: "DejaVu Sans Mono", monospace; font-size: 7.5pt; white-space: nowrap; }
-.small { font-size: 7.5pt; line-height: 1.2; }
+.small { font-size: 7.2pt; line-height: 1.15; }
 .verdict { font-size: 10pt; border: 1pt solid #000; padding: 1.5mm 2mm; margin-top: 2mm; }
-ul.notes { margin: 1mm 0; padding-left: 4mm; font-size: 7pt; line-height: 1.2; }
-ul.notes li { margin-bottom: 0.4mm; }
+ul.notes { margin: 0.5mm 0; padding-left: 4mm; font-size: 6pt; line-height: 1.12; }
+ul.notes li { margin-bottom: 0.2mm; }
 section { break-inside: avoid; }
 section.notes-section { break-inside: auto; }
 .svg svg { width: 100%; height: auto; display: block; }
+.lab { margin: 0 0 1.5mm; font-size: 8pt; }
+.equipment { margin-top: 1.5mm; font-size: 6.5pt; }
+.equipment td, .equipment th { padding: 0.2mm 1mm; }
 .brackets { margin-top: 1.5mm; }
 .signatures td { border: 0.5pt solid #000; width: 33%; }
-.signatures tr.blank td { height: 13mm; vertical-align: bottom; font-size: 7pt; }
+.signatures tr.blank td { height: 9mm; vertical-align: bottom; font-size: 7pt; }
 "#;
 
 /// The whole document and the numbers it prints.
@@ -61,12 +66,18 @@ pub(super) fn page(c: &Context<'_>) -> Result<(String, Printed), CertificateErro
     let results = sections::results(c, &mut p)?;
     let decision = sections::decision(c, &mut p)?;
     let authorization = sections::authorization(c, &mut p);
-    let budget = sections::budget(c, &mut p)?;
+    let budget = super::gum::section(c, &mut p)?;
     let residuals = sections::residuals(c, &mut p)?;
-    let traceability = sections::traceability(c, &mut p)?;
+    let traceability = super::trace::section(c, &mut p)?;
     let notes = sections::notes(c, &mut p);
-    // The number is an integer: nothing in it can end the CSS string.
-    let id = c.subject.record_id;
+    // The number's characters are letters, digits and '-' (issuer::new_number): nothing
+    // in it can end the CSS string; anything else is left out of the page's foot.
+    let id: String = c
+        .subject
+        .number
+        .chars()
+        .filter(|ch| ch.is_ascii_alphanumeric() || *ch == '-')
+        .collect();
     let html = format!(
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
          <title>Calibration certificate no. {id}</title>\

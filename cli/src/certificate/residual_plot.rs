@@ -15,8 +15,8 @@ use plotters::prelude::*;
 use zerocal_core::stage2::moved_reading;
 use zerocal_core::Tilt;
 
-/// The figure's size (px): the page's text width at 96 dpi, a seventh of its height.
-const SIZE: (u32, u32) = (680, 155);
+/// The figure's size (px): the page's text width at 96 dpi, a tenth of its height.
+const SIZE: (u32, u32) = (680, 110);
 
 /// The residuals (deg), one per capture of the export, x and y.
 pub(super) struct Residuals {

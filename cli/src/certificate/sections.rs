@@ -8,8 +8,7 @@ use super::residual_plot;
 use super::{CertificateError, CertificateSubject};
 use crate::session::{Analysis, JointJson};
 use std::fmt::Write as _;
-use zerocal_core::bracket::{BracketMount, UNCALIBRATED_BRACKET_DEG};
-use zerocal_core::report::RESIDUAL_WARN_FACTOR;
+use zerocal_core::report::{ResidualRule, RESIDUAL_WARN_FACTOR, RESIDUAL_WARN_OF_CEILING};
 use zerocal_core::session::COVERAGE_FACTOR;
 use zerocal_core::stage2::SigmaSource;
 use zerocal_profile::Coupling;
@@ -26,7 +25,7 @@ pub(super) struct Context<'a> {
 
 /// Decimals of an offset, its uncertainty and the budget's terms (deg): the 0.00001°
 /// `zerocal session`'s report prints, so the two agree digit for digit.
-const DEG_DECIMALS: usize = 5;
+pub(super) const DEG_DECIMALS: usize = 5;
 
 /// The coverage factor as printed.
 fn k(p: &mut Printed) -> Result<String, CertificateError> {
@@ -38,19 +37,37 @@ fn row(out: &mut String, heading: &str, value: &str) {
     let _ = write!(out, "<tr><th>{}</th><td>{value}</td></tr>", esc(heading));
 }
 
-/// The title block: what the document is, its number and dates.
+/// The title block: who issues it, what the document is, its number and dates.
 pub(super) fn title(c: &Context<'_>, p: &mut Printed) -> String {
-    let id = p.count(c.subject.record_id);
+    let lab = &c.subject.issuer.laboratory;
+    let number = p.text(&c.subject.number);
+    let record = p.count(c.subject.record_id);
     let issued = p.text(c.issued_on);
     let measured = p.text(&c.subject.measured_on);
+    let accreditation = lab
+        .accreditation
+        .as_deref()
+        .map_or_else(String::new, |a| format!("<br>{}", p.text(a)));
     format!(
-        "<header class=\"title\"><div><h1>Calibration certificate</h1>\
+        "<header class=\"title\"><div><p class=\"lab\"><b>{}</b><br>{}{accreditation}</p>\
+         <h1>Calibration certificate</h1>\
          <p class=\"subtitle\">Joint zero offsets of an industrial robot, identified against \
          gravity with a dual-axis inclinometer</p></div>\
-         <table class=\"ids\"><tr><th>Certificate no.</th><td>{id}</td></tr>\
+         <table class=\"ids\"><tr><th>Certificate no.</th><td class=\"mono\">{number}</td></tr>\
          <tr><th>Issued</th><td>{issued}</td></tr>\
-         <tr><th>Measured</th><td>{measured}</td></tr></table></header>"
+         <tr><th>Measured</th><td>{measured}</td></tr>\
+         <tr><th>History record</th><td>{record}</td></tr></table></header>",
+        p.text(&lab.name),
+        p.text(&lab.address)
     )
+}
+
+/// A party: its name and, where given, its address.
+fn party(p: &mut Printed, party: &super::issuer::Party) -> String {
+    match &party.address {
+        Some(a) => format!("{}, {}", p.text(&party.name), p.text(a)),
+        None => p.text(&party.name),
+    }
 }
 
 /// Section 1: the item: the robot, and where its controller takes the offsets.
@@ -58,14 +75,15 @@ pub(super) fn item(c: &Context<'_>, p: &mut Printed) -> String {
     let j = &c.analysis.json;
     let profile = &c.analysis.profile;
     let mut t = String::new();
+    row(&mut t, "Customer", &party(p, &c.subject.issuer.customer));
+    row(&mut t, "Site", &party(p, &c.subject.issuer.site));
     row(&mut t, "Robot model", &p.text(&profile.title));
     row(&mut t, "Serial number", &p.text(&c.subject.serial));
     row(
         &mut t,
         "Controller family",
         &format!(
-            "{} (entering the offsets: docs/controllers/{}.md)",
-            p.text(&j.family),
+            "{} (how its controller takes the offsets: zerocal's page for the family)",
             p.text(&j.family)
         ),
     );
@@ -265,17 +283,21 @@ impl JointResult {
     }
 }
 
-/// Section 4: the offsets in the controller's terms with their expanded uncertainty,
-/// and each joint's result where a tolerance is stated.
+/// Section 4: the robot as found (the session: each offset in the model's and the
+/// controller's terms with its U) and as left (the check after the entry: what is left
+/// of each, its U, the check's verdict), side by side; each joint's conformity where a
+/// tolerance is stated.
 pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let j = &c.analysis.json;
     let profile = &c.analysis.profile;
     let tolerance = c.subject.tolerance_deg;
+    let left = c.subject.as_left.as_ref();
     let unit = p.text(profile.controller.unit.name());
     let kk = k(p)?;
     let mut rows = String::new();
     let mut reasons: Vec<&str> = Vec::new();
-    for joint in &j.joints {
+    let columns = 5 + usize::from(tolerance.is_some()) + 2;
+    for (i, joint) in j.joints.iter().enumerate() {
         let name = p.text(&joint.name);
         if !joint.identifiable {
             let _ = write!(
@@ -283,7 +305,7 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
                 "<tr><td>{name}</td><td colspan=\"{}\">not identifiable by gravity (parallel \
                  to the joint before it, whose line carries their sum): its zero needs another \
                  method; see the notes</td></tr>",
-                if tolerance.is_some() { 5 } else { 4 }
+                columns - 1
             );
             continue;
         }
@@ -307,10 +329,11 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
         let result = tolerance.map_or_else(String::new, |t| {
             format!("<td>{}</td>", JointResult::of(joint, t).words())
         });
+        let as_left = as_left_cells(p, left.and_then(|l| l.joints.get(i)))?;
         let _ = write!(
             rows,
             "<tr><td>{name}</td><td class=\"num\">{model}</td><td class=\"num\">{shown}</td>\
-             <td class=\"num\">{in_unit}</td><td class=\"num\">{u}</td>{result}</tr>"
+             <td class=\"num\">{in_unit}</td><td class=\"num\">{u}</td>{result}{as_left}</tr>"
         );
     }
     let first = profile
@@ -318,11 +341,11 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
         .first()
         .map_or_else(|| "joint 1".to_owned(), |j| p.text(&j.name));
     let mut after = format!(
-        "<p class=\"small\">Δq = true − commanded as the controller shows the joint: each \
-         joint's reading moves by +Δq (where, and with which sign: docs/controllers/{}.md). \
-         Δθ is the offset in the model's terms, which the budget is for; U is its expanded \
-         uncertainty, k = {kk}, about 95&nbsp;% coverage for a near-normal distribution. Joint 1 \
-         ({first}) is not determined by this method.",
+        "<p class=\"small\">As found: Δq = true − commanded as the controller shows the \
+         joint: each joint's reading moves by +Δq (where, and with which sign: zerocal's page \
+         for the {} controller). Δθ is the offset in the model's terms, which the budget is \
+         for; U is its expanded uncertainty, k = {kk}, about 95&nbsp;% coverage for a \
+         near-normal distribution. Joint 1 ({first}) is not determined by this method.",
         p.text(&j.family)
     );
     if profile.controller.coupling == Coupling::J3MinusJ2 {
@@ -334,16 +357,37 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
             esc(j3)
         );
     }
+    match left {
+        Some(l) => {
+            let _ = write!(
+                after,
+                " As left: what the check after the entry (history record {}, measured {}) \
+                 found left of each offset, as the controller shows the joint, with the \
+                 check's own U (k = {kk}); a joint 3 marked (c) is what the flange sees of \
+                 joints 2 and 3 together.",
+                p.count(l.record_id),
+                p.text(&l.measured_on)
+            );
+        }
+        None => after.push_str(
+            " As left: no check after the entry is recorded: whether the controller took the \
+             offsets is not stated here.",
+        ),
+    }
     after.push_str("</p>");
     for why in reasons {
         let _ = write!(after, "<p class=\"small\">(a) {}</p>", p.text(why));
     }
     Ok(format!(
-        "<section><h2>4. Results: zero offsets</h2><table class=\"grid\"><thead><tr>\
-         <th>Joint</th><th class=\"num\">Δθ, model (deg)</th>\
+        "<section><h2>4. Results: zero offsets as found and as left</h2><table class=\"grid\">\
+         <thead><tr><th rowspan=\"2\">Joint</th><th colspan=\"{}\">As found (this session)</th>\
+         <th colspan=\"2\">As left (check)</th></tr><tr>\
+         <th class=\"num\">Δθ, model (deg)</th>\
          <th class=\"num\">Δq, controller (deg)</th><th class=\"num\">Δq in its unit</th>\
-         <th class=\"num\">U, k = {kk} (deg)</th>{}</tr></thead>\
+         <th class=\"num\">U, k = {kk} (deg)</th>{}<th class=\"num\">left ± U (deg)</th>\
+         <th>check</th></tr></thead>\
          <tbody>{rows}</tbody></table>{after}</section>",
+        4 + usize::from(tolerance.is_some()),
         if tolerance.is_some() {
             "<th>Result</th>"
         } else {
@@ -352,19 +396,68 @@ pub(super) fn results(c: &Context<'_>, p: &mut Printed) -> Result<String, Certif
     ))
 }
 
+/// A joint's as-left cells: what is left ± U, and the check's verdict on it.
+fn as_left_cells(
+    p: &mut Printed,
+    joint: Option<&super::as_left::AsLeftJoint>,
+) -> Result<String, CertificateError> {
+    let Some(j) = joint else {
+        return Ok("<td class=\"num\">not checked</td><td></td>".to_owned());
+    };
+    let (Some(left), Some(pass)) = (j.left_deg, j.pass) else {
+        return Ok("<td class=\"num\">not seen by the check</td><td></td>".to_owned());
+    };
+    let what = |q: &str| format!("{}'s as-left {q}", j.name);
+    let verdict = match (&j.mistake, pass) {
+        (_, true) => "pass".to_owned(),
+        (Some(m), false) => format!("FAIL: {}", p.text(m)),
+        (None, false) => "FAIL".to_owned(),
+    };
+    Ok(format!(
+        "<td class=\"num\">{} ± {}{}</td><td>{verdict}</td>",
+        p.signed(&what("left"), left, DEG_DECIMALS)?,
+        p.fixed(&what("U"), j.expanded_k2_deg, DEG_DECIMALS)?,
+        if j.with_joint2 { " (c)" } else { "" }
+    ))
+}
+
 /// Section 5: the decision rule in words, the result per joint and overall, and the warnings.
 pub(super) fn decision(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
     let j = &c.analysis.json;
     let kk = k(p)?;
     let mut out = String::from("<section><h2>5. Decision rule and result</h2>");
+    // The residual rule the verdict applied (core's `ResidualRule`, from the session's
+    // fit configuration), stated with its figures.
+    let rule = ResidualRule::of(&c.analysis.config);
+    let limit = p.fixed(
+        "the residual limit",
+        rule.warn_above_rad().to_degrees(),
+        DEG_DECIMALS,
+    )?;
+    let residual_rule =
+        match rule {
+            ResidualRule::OfCeiling { ceiling_rad } => {
+                format!(
+            "the residual RMS at most {} of the refusal ceiling of {} deg, i.e. {limit} deg \
+             (above the ceiling the session is refused outright)",
+            p.fixed("the warning's fraction of the ceiling", RESIDUAL_WARN_OF_CEILING, 1)?,
+            p.fixed("the residual ceiling", ceiling_rad.to_degrees(), DEG_DECIMALS)?
+        )
+            }
+            ResidualRule::OfNoise { noise_rad } => format!(
+                "the residual RMS at most {} times the sensor's noise of {} deg, i.e. {limit} deg",
+                p.count(RESIDUAL_WARN_FACTOR),
+                p.fixed("the sensor's noise", noise_rad.to_degrees(), DEG_DECIMALS)?
+            ),
+        };
     let _ = write!(
         out,
-        "<p><b>Acceptance of the session:</b> accepted when the solver raised no warning: \
-         the residual RMS within {} times the sensor's noise, the sensor's bias measured by \
-         stage 0's reversal, enough poses to estimate σ from the residuals. Any warning \
+        "<p><b>Acceptance of the session (as found):</b> accepted when the solver raised no \
+         warning: {residual_rule}; this session's {} deg. The sensor's bias measured by \
+         stage 0's reversal; enough poses to estimate σ from the residuals. Any warning \
          withholds acceptance. (A session the solver refuses has no numbers and no \
          certificate.)</p>",
-        p.count(RESIDUAL_WARN_FACTOR)
+        p.fixed("the residual RMS", j.residual_rms_deg, DEG_DECIMALS)?
     );
     let mut overall_pass = j.pass;
     let mut failures: Vec<String> = Vec::new();
@@ -373,6 +466,50 @@ pub(super) fn decision(c: &Context<'_>, p: &mut Printed) -> Result<String, Certi
             "the solver raised {} warning(s)",
             p.count(j.warnings.len())
         ));
+    }
+    match &c.subject.as_left {
+        Some(l) => {
+            let _ = write!(
+                out,
+                "<p><b>Acceptance of the entry (as left):</b> the check after the entry \
+                 (record {}) rule: {}. Its result: <b>{}</b>.</p>",
+                p.count(l.record_id),
+                p.text(&l.rule),
+                if l.pass { "PASS" } else { "FAIL" }
+            );
+            if !l.pass {
+                overall_pass = false;
+                let failed: Vec<String> = l
+                    .joints
+                    .iter()
+                    .filter(|x| x.pass == Some(false))
+                    .map(|x| esc(&x.name))
+                    .collect();
+                failures.push(format!(
+                    "the check after the entry failed {}",
+                    failed.join(", ")
+                ));
+            }
+        }
+        None => out.push_str(
+            "<p><b>Acceptance of the entry (as left):</b> not checked: no check after the \
+             entry is recorded for this session, so the result is for the robot as found \
+             only.</p>",
+        ),
+    }
+    let flagged = c
+        .subject
+        .equipment
+        .iter()
+        .filter(|e| e.flag.is_some())
+        .count();
+    if flagged > 0 {
+        let _ = write!(
+            out,
+            "<p><b>Equipment:</b> {} item(s) flagged in section 9 (none was past its due \
+             date on the day it was used: that refuses the certificate).</p>",
+            p.count(flagged)
+        );
     }
     match c.subject.tolerance_deg {
         Some(t) => {
@@ -448,88 +585,17 @@ fn tolerance_decimals(t: f64) -> usize {
 /// Section 6: the statements and the signatures.
 pub(super) fn authorization(c: &Context<'_>, p: &mut Printed) -> String {
     let id = p.count(c.subject.record_id);
+    let number = p.text(&c.subject.number);
     format!(
         "<section class=\"sign\"><h2>6. Authorization</h2><p class=\"small\">The results \
-         relate only to the robot identified above, as it was when measured (record {id}); \
-         the export and the profile of the SHA-256 above, solved again \
-         (<code>zerocal session</code>), give these numbers. This certificate shall not be \
-         reproduced except in full.</p>\
+         relate only to the robot above as measured (history record {id}); the export and \
+         profile of the SHA-256 above, solved again (<code>zerocal session</code>), give \
+         them. Certificate {number} shall not be reproduced except in full.</p>\
          <table class=\"signatures\"><tr><td>Measured by</td><td>Checked by</td>\
          <td>Authorized by</td></tr><tr class=\"blank\"><td>name, signature, date</td>\
          <td>name, signature, date</td><td>name, function, signature, date</td></tr></table>\
          </section>"
     )
-}
-
-/// Section 7: the uncertainty budget: every term for every joint, combined and expanded.
-pub(super) fn budget(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
-    let j = &c.analysis.json;
-    let combined = &c.analysis.budget.combined_rad;
-    let kk = k(p)?;
-    let mut head = String::from("<th>Term (standard uncertainty u, deg)</th>");
-    for joint in &j.joints {
-        let _ = write!(
-            head,
-            "<th class=\"num\">{}{}</th>",
-            p.text(&joint.name),
-            if joint.identifiable { "" } else { " (b)" }
-        );
-    }
-    let mut rows = String::new();
-    let terms = j.joints.first().map_or(0, |x| x.budget_deg.len());
-    for t in 0..terms {
-        let name = j.joints.first().and_then(|x| x.budget_deg.get(t));
-        let Some(name) = name else { continue };
-        let _ = write!(rows, "<tr><td>{}</td>", p.text(&name.term));
-        for joint in &j.joints {
-            let u = joint
-                .budget_deg
-                .get(t)
-                .map_or(f64::NAN, |b| b.standard_uncertainty_deg);
-            let what = format!("{}'s budget term '{}'", joint.name, name.term);
-            let _ = write!(
-                rows,
-                "<td class=\"num\">{}</td>",
-                p.fixed(&what, u, DEG_DECIMALS)?
-            );
-        }
-        rows.push_str("</tr>");
-    }
-    rows.push_str("<tr class=\"total\"><td>combined standard uncertainty u<sub>c</sub></td>");
-    for (i, joint) in j.joints.iter().enumerate() {
-        let u = combined.get(i).map_or(f64::NAN, |u| u.to_degrees());
-        let what = format!("{}'s combined uncertainty", joint.name);
-        let _ = write!(
-            rows,
-            "<td class=\"num\">{}</td>",
-            p.fixed(&what, u, DEG_DECIMALS)?
-        );
-    }
-    let _ = write!(
-        rows,
-        "</tr><tr class=\"total\"><td>expanded uncertainty U = k·u<sub>c</sub>, k = {kk}</td>"
-    );
-    for joint in &j.joints {
-        let what = format!("{}'s U", joint.name);
-        let _ = write!(
-            rows,
-            "<td class=\"num\">{}</td>",
-            p.fixed(&what, joint.expanded_k2_deg, DEG_DECIMALS)?
-        );
-    }
-    rows.push_str("</tr>");
-    let held = j.joints.iter().any(|x| !x.identifiable);
-    Ok(format!(
-        "<section><h2>7. Uncertainty budget</h2><table class=\"grid budget\"><thead><tr>{head}\
-         </tr></thead><tbody>{rows}</tbody></table><p class=\"small\">GUM (JCGM 100:2008): \
-         standard uncertainties of Δθ, Type A from this session, Type B from stated \
-         tolerances, combined in quadrature.{}</p></section>",
-        if held {
-            " (b) not identifiable by gravity: its column is not a zero's uncertainty."
-        } else {
-            ""
-        }
-    ))
 }
 
 /// Section 8: the residual figure, with the σ it is judged against.
@@ -540,87 +606,12 @@ pub(super) fn residuals(c: &Context<'_>, p: &mut Printed) -> Result<String, Cert
     let svg = residual_plot::svg(&r, sigma_deg)?;
     Ok(format!(
         "<section class=\"figure\"><h2>8. Residuals of the fit</h2><div class=\"svg\">{svg}</div>\
-         <p class=\"small\">The reading less the fitted model's reading at each stage-2 \
-         capture, x (●) and y (▲), in export row order; dashed: ±σ = {sigma} deg, the fit's σ \
-         per reading ({}). The fit averages each pose's two captures, cancelling the gears' \
-         play that a single capture holds: captures scatter wider than σ. A trend, not \
-         scatter, is a model that does not fit the arm.</p></section>",
+         <p class=\"small\">Reading less the fitted model's at each stage-2 capture, x (●) \
+         and y (▲), in export row order; dashed: ±σ = {sigma} deg, the fit's σ per reading \
+         ({}). The fit averages each pose's two captures (the gears' play): single captures \
+         scatter wider than σ. A trend, not scatter, is a model that does not fit the \
+         arm.</p></section>",
         sigma_source(c.analysis.solution.fit.sigma_source)
-    ))
-}
-
-/// Section 9: traceability: the pendant, its measuring element, and each bracket's calibration.
-pub(super) fn traceability(c: &Context<'_>, p: &mut Printed) -> Result<String, CertificateError> {
-    let brackets = &c.analysis.export.brackets;
-    let mut t = String::new();
-    row(
-        &mut t,
-        "Pendant",
-        &c.subject
-            .pendant_unit
-            .as_deref()
-            .map_or_else(|| "not recorded".to_owned(), |u| p.text(u)),
-    );
-    let e = &c.analysis.export;
-    let offset = if e.stage0.is_some() || e.bias.flatten().is_some() {
-        "stage 0's reversal measured its offset"
-    } else {
-        "no stage-0 reversal measured its offset, which the budget carries at its \
-         specification"
-    };
-    row(
-        &mut t,
-        "Measuring element",
-        &format!(
-            "Murata SCL3300 MEMS inclinometer in the pendant (x and y), against the local \
-             direction of gravity: {offset}; the fit's estimates of it are in the budget."
-        ),
-    );
-    let mut rows = String::new();
-    for mount in BracketMount::ALL {
-        let name = esc(mount.name());
-        match brackets.get(mount) {
-            Some(cal) => {
-                let yaw = match cal.yaw {
-                    Some(y) => format!(
-                        "calibrated, u {} deg",
-                        p.fixed(
-                            &format!("the {} bracket's yaw uncertainty", mount.name()),
-                            y.uncertainty_rad.to_degrees(),
-                            4
-                        )?
-                    ),
-                    None => "not calibrated: the stated tolerance is in the budget".to_owned(),
-                };
-                let _ = write!(
-                    rows,
-                    "<tr><td>{name}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td>\
-                     <td>{yaw}</td></tr>",
-                    p.text(cal.id.as_str()),
-                    p.text(&crate::report_notes::calibration_date(cal.date)),
-                    p.fixed(
-                        &format!("the {} bracket's uncertainty", mount.name()),
-                        cal.uncertainty_rad.to_degrees(),
-                        4
-                    )?
-                );
-            }
-            None => {
-                let _ =
-                    write!(
-                    rows,
-                    "<tr><td>{name}</td><td colspan=\"4\"><b>UNCALIBRATED</b>: its turn is in the \
-                     offsets unmeasured; the budget carries up to ±{} deg (uniform)</td></tr>",
-                    p.fixed("an uncalibrated bracket's half width", UNCALIBRATED_BRACKET_DEG, 1)?
-                );
-            }
-        }
-    }
-    Ok(format!(
-        "<section><h2>9. Traceability</h2><table class=\"kv\">{t}</table>\
-         <table class=\"grid brackets\"><thead><tr><th>Bracket</th><th>ID</th>\
-         <th>Calibrated</th><th class=\"num\">u (deg)</th><th>Yaw</th></tr></thead>\
-         <tbody>{rows}</tbody></table></section>"
     ))
 }
 
@@ -629,15 +620,47 @@ pub(super) fn notes(c: &Context<'_>, p: &mut Printed) -> String {
     let mut out =
         String::from("<section class=\"notes-section\"><h2>10. Notes</h2><ul class=\"notes\">");
     for n in &c.analysis.json.notes {
-        let _ = write!(out, "<li>{}</li>", p.text(n));
+        let _ = write!(out, "<li>{}</li>", p.text(&without_paths(n)));
     }
     out.push_str("</ul></section>");
+    out
+}
+
+/// `text` with each reference to a file of zerocal's documentation (`docs/NAME.md`)
+/// given by its title instead: a certificate points its reader to no repository path.
+pub fn without_paths(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(at) = rest.find("docs/") {
+        out.push_str(&rest[..at]);
+        let tail = &rest[at + "docs/".len()..];
+        let end = tail
+            .find(|c: char| !(c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '/' | '.')))
+            .unwrap_or(tail.len());
+        let name = tail[..end].trim_end_matches('.');
+        let page = name
+            .strip_suffix(".md")
+            .unwrap_or(name)
+            .replace(['-', '_', '/'], " ");
+        out.push_str(&format!("zerocal's manual, “{page}”"));
+        rest = &tail[name.len()..];
+    }
+    out.push_str(rest);
     out
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_documentation_path_is_given_by_its_title() {
+        assert_eq!(
+            without_paths("budgeted at its worst case (docs/real-arm.md); see docs/controllers/kuka.md."),
+            "budgeted at its worst case (zerocal's manual, “real arm”); see zerocal's manual, “controllers kuka”."
+        );
+        assert_eq!(without_paths("no path here"), "no path here");
+    }
 
     #[test]
     fn a_tolerance_prints_as_stated() {

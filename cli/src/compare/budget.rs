@@ -60,10 +60,15 @@ pub(super) struct Inputs<'a> {
 /// One stage-0 reversal's bias, one standard uncertainty (rad): the half-sum of two
 /// captures (σ/√2) and the half turn's tolerance on a bench tilted by `bench_tilt_rad`
 /// (moves the bias by tolerance × tilt / 2, uniform).
-fn reversal_u_rad(bench_tilt_rad: f64, half_turn_tolerance_deg: f64) -> f64 {
+pub(super) fn reversal_u_rad(bench_tilt_rad: f64, half_turn_tolerance_deg: f64) -> f64 {
     let noise = MEMS_CAPTURE_NOISE_DEG.to_radians() / 2f64.sqrt();
     let half_turn = half_turn_tolerance_deg.to_radians() * bench_tilt_rad / 2.0;
     (noise * noise + half_turn * half_turn / 3.0).sqrt()
+}
+
+/// An export's stage-0 bench tilt (rad): half its reversal's difference (0 without one).
+pub(super) fn bench_tilt_rad(export: &ExportContents) -> f64 {
+    export.stage0.map_or(0.0, |s| s.turns.half_turn_tilt_rad())
 }
 
 fn deg(v: [f64; SESSION_JOINTS]) -> [f64; SESSION_JOINTS] {
@@ -77,11 +82,7 @@ pub(super) fn difference_budget(i: &Inputs<'_>) -> DifferenceBudget {
         standard_uncertainty_deg: deg(*i.type_a_rad),
     }];
     // Both stage-0 biases, through the offsets' response to the bias stage 0 fixes.
-    let reference_tilt = i
-        .reference
-        .export
-        .stage0
-        .map_or(0.0, |s| s.turns.half_turn_tilt_rad());
+    let reference_tilt = bench_tilt_rad(&i.reference.export);
     let tolerance = i.options.half_turn_tolerance_deg;
     let u_bias = reversal_u_rad(reference_tilt, tolerance)
         .hypot(reversal_u_rad(i.bench_tilt_now_rad, tolerance));
@@ -171,9 +172,40 @@ pub(super) fn difference_budget(i: &Inputs<'_>) -> DifferenceBudget {
     }
 }
 
+impl DifferenceBudget {
+    /// Adds joint 2's terms (its column); combined and expanded are recomputed.
+    pub(super) fn add_joint2(&mut self, terms: Vec<DifferenceTerm>) {
+        self.terms.extend(terms);
+        self.combined_deg = core::array::from_fn(|k| {
+            self.terms
+                .iter()
+                .map(|t| t.standard_uncertainty_deg[k].powi(2))
+                .sum::<f64>()
+                .sqrt()
+        });
+        self.expanded_deg = self.combined_deg.map(|u| u * COVERAGE_FACTOR);
+    }
+}
+
 impl Comparison {
     /// The moves in degrees.
     pub fn moved_deg(&self) -> [f64; SESSION_JOINTS] {
         self.moved_rad.map(f64::to_degrees)
+    }
+
+    /// Joint 3's own move (deg) and its combined standard uncertainty (deg): the
+    /// flange's less joint 2's share where joint 2 was compared (their uncertainties
+    /// combined), else the flange's with joint 2 held.
+    pub fn joint3_own(&self) -> (f64, f64) {
+        let moved = self.moved_deg();
+        let u = self.budget.combined_deg;
+        if self.identifiable[0] {
+            (
+                moved[1] - self.joint3_per_joint2 * moved[0],
+                u[1].hypot(self.joint3_per_joint2 * u[0]),
+            )
+        } else {
+            (moved[1], u[1])
+        }
     }
 }

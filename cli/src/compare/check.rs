@@ -14,6 +14,7 @@ pub const CHECK_TOLERANCE_U: f64 = 3.0;
 
 /// What the check expects to find.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Expected {
     /// The reference session's offsets were entered: every joint should now be at its
     /// kinematic zero, nothing left.
@@ -28,14 +29,20 @@ pub enum Expected {
 pub struct JointCheck {
     /// The controller's name for the joint.
     pub name: String,
-    /// What is left (deg, model terms: true − commanded); joint 3's is joints 2 and
-    /// 3's sum (gravity at the flange sees only it).
+    /// What is left (deg, model terms: true − commanded). Joint 3's is what the flange
+    /// sees of joints 2 and 3 together, Δθ3 + r·Δθ2 with `r`
+    /// [`super::joint3_per_joint2`] (`with_joint2`), unless joint 2 was compared on the
+    /// upper arm and did not take its entry: then joint 3's own.
     pub remaining_deg: f64,
+    /// Joint 3's line holds joint 2's too (their combination at the flange).
+    #[serde(default)]
+    pub with_joint2: bool,
     /// The check's own expanded uncertainty, k = 2 (deg).
     pub expanded_k2_deg: f64,
     /// The tolerance it is judged against (deg).
     pub tolerance_deg: f64,
-    /// Within it; `None` for a joint the check does not see (joint 2; a held twin).
+    /// Within it; `None` for a joint the check does not see (joint 2 without the upper
+    /// arm's readings; a held twin).
     pub pass: Option<bool>,
 }
 
@@ -75,24 +82,45 @@ pub fn judge(
     tolerance_deg: Option<f64>,
 ) -> CheckResult {
     let moved = comparison.moved_deg();
+    let r = comparison.joint3_per_joint2;
+    let budget = &comparison.budget;
+    let tolerance = |k: usize| tolerance_deg.unwrap_or(CHECK_TOLERANCE_U * budget.combined_deg[k]);
+    let entered = |i: usize| match expected {
+        Expected::Entered => reference.json.joints[i].offset_deg,
+        Expected::Restored => 0.0,
+    };
+    // Joint 2 on its own, where the upper arm was compared.
+    let joint2_seen = comparison.identifiable[0];
+    let left2 = entered(0) + moved[0];
+    let joint2_fails = joint2_seen && left2.abs() > tolerance(0);
     let joints: Vec<JointCheck> = (0..SESSION_JOINTS)
         .map(|k| {
-            let entered = |i: usize| reference.json.joints[i].offset_deg;
-            let remaining_deg = match expected {
-                // Joint 2's offset was entered too, and the flange sees it only in its
-                // sum with joint 3's: joint 3's line is the sum's.
-                Expected::Entered if k == 1 => entered(0) + entered(1) + moved[k],
-                Expected::Entered => entered(k) + moved[k],
-                Expected::Restored => moved[k],
+            let mut with_joint2 = false;
+            let (remaining_deg, expanded, tolerance) = match k {
+                0 => (left2, budget.expanded_deg[0], tolerance(0)),
+                1 => {
+                    // What the flange sees: joints 2 and 3 together, joint 2's entry r
+                    // times in joint 3's line; far better known than either alone.
+                    let together = entered(1) + r * entered(0) + moved[1];
+                    if joint2_fails {
+                        // Joint 2 did not take its entry: joint 3's own is the rest.
+                        (
+                            together - r * left2,
+                            budget.expanded_deg[1].hypot(budget.expanded_deg[0]),
+                            tolerance(1).hypot(tolerance(0)),
+                        )
+                    } else {
+                        with_joint2 = true;
+                        (together, budget.expanded_deg[1], tolerance(1))
+                    }
+                }
+                _ => (entered(k) + moved[k], budget.expanded_deg[k], tolerance(k)),
             };
-            let expanded = comparison.budget.expanded_deg[k];
-            let tolerance =
-                tolerance_deg.unwrap_or(CHECK_TOLERANCE_U * comparison.budget.combined_deg[k]);
-            // Joint 2 is not seen without stage 1 (its sum with joint 3 is joint 3's).
-            let seen = k > 0 && comparison.identifiable[k];
+            let seen = comparison.identifiable[k];
             JointCheck {
                 name: reference.json.joints[k].name.clone(),
                 remaining_deg: if seen { remaining_deg } else { 0.0 },
+                with_joint2,
                 expanded_k2_deg: expanded,
                 tolerance_deg: tolerance,
                 pass: seen.then(|| remaining_deg.abs() <= tolerance),

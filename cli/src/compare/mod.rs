@@ -12,14 +12,27 @@
 //! that the poses cannot tell from Δθ6 comes from the two sessions' stage-0
 //! reversals; the other is estimated with the offsets, as the session estimates it.
 //!
-//! Gravity sees joints 2 and 3 only through their sum at the flange (they are
-//! parallel): without a stage 1, joint 2's zero is taken as unchanged and the sum's
-//! move is joint 3's. [`Comparison::notes`] says so.
+//! Gravity sees joints 2 and 3 only together at the flange (their axes are parallel):
+//! where the measurement has the upper arm's readings at the reference's stage-1 pose,
+//! joint 2's move comes from them ([`joint2`]) and joint 3's is the flange's less joint
+//! 2's share; without them joint 2's zero is taken as unchanged and the combination's
+//! move is joint 3's. [`Comparison::notes`] says which.
+//!
+//! Before any number is given, the two measurements must be of one robot
+//! ([`consistency`]): what the comparison leaves at the common poses is held against
+//! what two measurements of one robot leave (the sensor's noise, the robot's
+//! repeatability and backlash, the transmission error over the zeros' moves), not
+//! against its own residuals.
 
 mod budget;
 pub mod check;
+pub mod consistency;
+mod joint2;
+pub mod mistake;
 
 pub use budget::{DifferenceBudget, DifferenceTerm};
+pub use consistency::Consistency;
+pub use joint2::joint3_per_joint2;
 
 use crate::session::{Analysis, ExportContents};
 use nalgebra::{DMatrix, DVector};
@@ -31,7 +44,7 @@ use zerocal_core::stage2::{
 
 /// Two commanded poses are the same when every joint agrees within this (rad): the
 /// export writes joints to 1e-12°, so anything larger is another pose.
-const SAME_POSE_RAD: f64 = 1e-9;
+pub(crate) const SAME_POSE_RAD: f64 = 1e-9;
 
 /// Fewest poses the comparison solves on: four offsets and a bias component from two
 /// readings a pose need three poses; four leave room for σ.
@@ -62,6 +75,9 @@ pub enum CompareError {
     Convention,
     /// The solve did not converge or gave a non-finite number.
     NoSolution(String),
+    /// What the comparison leaves is far more than two measurements of one robot
+    /// leave: the measurement is of another robot (or this one was moved).
+    OtherRobot(Consistency),
 }
 
 impl core::fmt::Display for CompareError {
@@ -85,6 +101,18 @@ impl core::fmt::Display for CompareError {
                  SCL3300's axis convention"
             ),
             CompareError::NoSolution(e) => write!(f, "the comparison did not solve: {e}"),
+            CompareError::OtherRobot(c) => write!(
+                f,
+                "not the reference's robot: at the poses both measured, the comparison leaves \
+                 {:.5} deg RMS where two measurements of one robot leave {:.5} deg (the \
+                 sensor's noise, the robot's repeatability and backlash, the transmission \
+                 error over the zeros' moves): {:.1} times, above the limit of {}. The export \
+                 is of another robot, or this robot's base was moved since the reference",
+                c.residual_rms_deg,
+                c.expected_rms_deg,
+                c.ratio,
+                consistency::CONSISTENCY_LIMIT
+            ),
         }
     }
 }
@@ -101,8 +129,17 @@ pub struct Comparison {
     pub poses: usize,
     /// The comparison's residual RMS (rad).
     pub residual_rms_rad: f64,
-    /// Joints whose move is not a zero's (held twins: their sum is the earlier one's).
+    /// Joints whose move was measured: joint 2 only from the upper arm's readings; a
+    /// held twin never (their sum is the earlier joint's). Joint 3's move
+    /// (`moved_rad[1]`) is always the flange's: joints 2 and 3 together, as joint 3's
+    /// (joint 2 held); [`Comparison::joint3_own`] takes joint 2's share out.
     pub identifiable: [bool; SESSION_JOINTS],
+    /// How a move of joint 2 alone shows in joint 3's line at the flange
+    /// ([`joint3_per_joint2`]): without joint 2 measured, joint 3's move is joint 3's
+    /// plus this times joint 2's.
+    pub joint3_per_joint2: f64,
+    /// The test that both measurements are of one robot, passed.
+    pub consistency: Consistency,
     /// What was assumed.
     pub notes: Vec<String>,
 }
@@ -311,21 +348,54 @@ pub fn compare(
             "no convergence in {MAX_STEPS} steps"
         )));
     }
-    // Residuals at the solution (the last pass computed them before its step).
-    let ssr: f64 = {
+    // Residuals at the solution (the last pass computed them before its step), each
+    // with what it is sensitive to, for the test that both are one robot's.
+    let fixed: Vec<usize> = (0..2).filter(|&c| !free_bias[c]).collect();
+    let rows: Vec<consistency::Row> = {
         let bias = Tilt::new(shift.x_rad + bias_free[0], shift.y_rad + bias_free[1]);
         pairs
             .iter()
             .zip(&carried)
-            .map(|(p, r)| {
+            .flat_map(|(p, r)| {
                 let at = pose_at(p, p.now, p.now_temperature_c);
                 let m = moved_reading(model, fit, &at, &offsets, &bias);
-                let ex = p.now.x_rad - r.x_rad - m.reading.x_rad;
-                let ey = (p.now.y_rad - r.y_rad - m.reading.y_rad) * w_y;
-                ex * ex + ey * ey
+                let noise_factor =
+                    (1.0 / p.now_captures as f64) + (1.0 / p.reference_captures as f64);
+                let e = [
+                    p.now.x_rad - r.x_rad - m.reading.x_rad,
+                    p.now.y_rad - r.y_rad - m.reading.y_rad,
+                ];
+                let fixed = &fixed;
+                (0..2).map(move |axis| {
+                    let w = if axis == 0 { 1.0 } else { w_y };
+                    consistency::Row {
+                        residual_rad: e[axis] * w,
+                        d_offsets: m.d_offsets[axis].map(|d| d * w),
+                        d_fixed_bias: fixed.iter().map(|&b| m.d_bias[axis][b]).sum::<f64>() * w,
+                        noise_factor,
+                        weight: w,
+                    }
+                })
             })
-            .sum()
+            .collect()
     };
+    let ssr: f64 = rows.iter().map(|r| r.residual_rad * r.residual_rad).sum();
+    let reference_tilt = budget::bench_tilt_rad(&reference.export);
+    let consistency = consistency::consistency(
+        &rows,
+        &consistency::Figures {
+            moved_rad: offsets,
+            gearbox_replaced: core::array::from_fn(|k| options.gearbox_replaced[k + 1]),
+            bias_u_rad: budget::reversal_u_rad(reference_tilt, options.half_turn_tolerance_deg)
+                .hypot(budget::reversal_u_rad(
+                    bench_tilt_now_rad,
+                    options.half_turn_tolerance_deg,
+                )),
+        },
+    );
+    if !consistency.one_robot() {
+        return Err(CompareError::OtherRobot(consistency));
+    }
     let readings = 2 * pairs.len();
     let residual_rms_rad = (ssr / readings as f64).sqrt();
     let dof = readings.saturating_sub(n_params);
@@ -350,7 +420,6 @@ pub fn compare(
         type_a[k + 1] = (inverse[(c, c)].max(0.0)).sqrt() * sigma_rad;
     }
     // How the offsets follow the bias component stage 0 fixes: one unit of it, solved.
-    let fixed: Vec<usize> = (0..2).filter(|&c| !free_bias[c]).collect();
     let mut bias_sensitivity = [0.0; SESSION_JOINTS];
     if !fixed.is_empty() {
         let mut column = DVector::<f64>::zeros(readings);
@@ -370,11 +439,11 @@ pub fn compare(
     }
     let mut moved_rad = [0.0; SESSION_JOINTS];
     moved_rad[1..].copy_from_slice(&offsets);
-    let mut identifiable = [true; SESSION_JOINTS];
+    let mut identifiable = [false; SESSION_JOINTS];
     for k in 0..WRIST_JOINTS {
         identifiable[k + 1] = !held[k];
     }
-    let budget = budget::difference_budget(&budget::Inputs {
+    let mut budget = budget::difference_budget(&budget::Inputs {
         reference,
         now,
         moved_rad: &moved_rad,
@@ -383,11 +452,39 @@ pub fn compare(
         bench_tilt_now_rad,
         options,
     });
-    let mut notes = vec![format!(
-        "joint 2's zero is taken as unchanged: gravity sees joints 2 and 3 only through their \
-         sum at the flange, and the sum's move is given as joint 3's. After a motor or gearbox \
-         change on joint 2, master it absolutely (zerocal session)"
-    )];
+    let j3_per_j2 = joint3_per_joint2(&reference.profile.arm);
+    let mut notes = Vec::new();
+    match joint2::joint2_move(reference, now, options.half_turn_tolerance_deg) {
+        Ok(j2) => {
+            moved_rad[0] = j2.moved_rad;
+            identifiable[0] = true;
+            budget.add_joint2(j2.terms);
+            notes.push(format!(
+                "joint 2 compared on the upper arm (stage 1's readings at the reference's \
+                 stage-1 pose, each solved with its own stage 0). Joint 3's line holds what \
+                 the flange sees, joints 2 and 3 together (θ2 {} θ3 about joint 2's axis), \
+                 far better known than either alone; joint 3's own move is that less joint \
+                 2's share",
+                if j3_per_j2 < 0.0 { "−" } else { "+" }
+            ));
+        }
+        Err(why) => {
+            let because = match why {
+                joint2::NoJoint2::NotMeasured => {
+                    "the export has no upper-arm readings (stage 1)".to_owned()
+                }
+                joint2::NoJoint2::Skipped(e) => e,
+            };
+            notes.push(format!(
+                "joint 2 not compared ({because}): its zero is taken as unchanged. Gravity at \
+                 the flange sees joints 2 and 3 only together (θ2 {} θ3 about joint 2's axis), \
+                 so joint 3's line holds their combination's move. Capture the upper arm in \
+                 the check to compare joint 2 (docs/check.md); after a motor or gearbox \
+                 change on joint 2, master it absolutely (zerocal session)",
+                if j3_per_j2 < 0.0 { "−" } else { "+" }
+            ));
+        }
+    }
     if held.iter().any(|h| *h) {
         notes.push(
             "a joint parallel to the one before it in every pose is not compared (its zero \
@@ -407,6 +504,8 @@ pub fn compare(
         poses: pairs.len(),
         residual_rms_rad,
         identifiable,
+        joint3_per_joint2: j3_per_j2,
+        consistency,
         notes,
     })
 }

@@ -14,9 +14,12 @@
 //! line (and key, column or byte). A session without a stage-0 reversal is solved, with
 //! the sensor's unknown x offset in its budget and a note saying so.
 
+pub mod entry;
+mod json;
 mod record;
 pub mod reducers;
 mod render;
+pub use json::{to_json, BudgetJson, JointJson, SessionJson};
 pub use record::{brackets_json, session_record, verdict_of};
 pub use render::render;
 
@@ -24,13 +27,12 @@ use crate::args::RealIn;
 use crate::error::CliError;
 use crate::log_file::parse_number;
 use clap::Args;
-use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 use zerocal_core::bracket::{
     BracketMount, Brackets, BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
 };
 use zerocal_core::capture::CaptureIndex;
-use zerocal_core::model::{Convention, JOINTS};
+use zerocal_core::model::Convention;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
     budget, half_turn_half_width, one_sided_pose, sensor_offset_x_spec_deg, solve,
@@ -285,81 +287,6 @@ fn check_rows(export: &ExportContents, stage1: &AxisOneTurn<f64>) -> Result<(), 
     Ok(())
 }
 
-/// One joint in the `--json` output.
-#[derive(Serialize, Deserialize, Debug, Clone)]
-pub struct JointJson {
-    /// The controller's name for the joint.
-    pub name: String,
-    /// Δθ in the model's terms (deg).
-    pub offset_deg: f64,
-    /// Its 1σ (deg).
-    pub sigma_deg: f64,
-    /// Δq in the controller's joint terms (deg): true − commanded as it shows the joint.
-    pub controller_offset_deg: f64,
-    /// Its 1σ (deg).
-    pub controller_sigma_deg: f64,
-    /// Δq in the controller's offset unit, where the profile has the scale.
-    pub controller_offset_in_unit: Option<f64>,
-    /// The unit.
-    pub controller_unit: String,
-    /// False for a joint parallel to the one before it in every pose (joint 4 of a
-    /// UR): gravity sees only their sum, which the earlier joint's offset carries; this
-    /// one's zero needs another method and its numbers are not zeros.
-    pub identifiable: bool,
-    /// Why `controller_offset_in_unit` is absent.
-    pub controller_unit_missing: Option<String>,
-    /// Shares of the variance from stage 0, 1 and 2 (fractions).
-    pub variance_shares: [f64; 3],
-    /// The URDF form: `<calibration rising="…"/>` in radians (model terms; see
-    /// docs/controllers/urdf.md for what tools read it).
-    pub urdf_calibration_rising_rad: f64,
-    /// Expanded uncertainty, k = 2 (deg).
-    pub expanded_k2_deg: f64,
-    /// The budget: each term's standard uncertainty (deg).
-    pub budget_deg: Vec<BudgetJson>,
-}
-
-/// One term of a joint's budget.
-#[derive(Serialize, Deserialize, Debug, Clone)]
-pub struct BudgetJson {
-    /// What it is.
-    pub term: String,
-    /// Its standard uncertainty (deg).
-    pub standard_uncertainty_deg: f64,
-}
-
-/// The `--json` output.
-#[derive(Serialize, Deserialize, Debug, Clone)]
-pub struct SessionJson {
-    /// Robot profile.
-    pub robot: String,
-    /// Its controller family.
-    pub family: String,
-    /// Where the controller keeps its zeros (the profile's `offset_where`).
-    pub controller_offset_where: String,
-    /// Δθ2..Δθ6.
-    pub joints: Vec<JointJson>,
-    /// Correlations of Δθ2..Δθ6 (row-major, 5×5).
-    pub correlations: Vec<[f64; SESSION_JOINTS]>,
-    /// Base tilt α, β (deg).
-    pub base_tilt_deg: [f64; 2],
-    /// Stage-2 residual RMS (deg).
-    pub residual_rms_deg: f64,
-    /// Poses fitted.
-    pub poses: usize,
-    /// Condition number.
-    pub condition_number: f64,
-    /// Pass: no warnings.
-    pub pass: bool,
-    /// Every warning.
-    pub warnings: Vec<String>,
-    /// Every note (what was assumed, what the profile lacks).
-    pub notes: Vec<String>,
-    /// Each joint's transmission error, harmonic by harmonic.
-    #[serde(default)]
-    pub reducers: Vec<reducers::ReducerJson>,
-}
-
 /// How far this `f64` re-solve of a pendant's export may lie from the pendant's own
 /// `f32` result for the two to be the same session (deg): the `f32` solve agrees with the
 /// `f64` one within 2.8e-6° (docs/figures.md; 1.23e-6° on the target) and the export's readings are
@@ -446,7 +373,18 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
         crate::input::MAX_EXPORT_BYTES,
         "pendant export",
     )?;
-    let analysis = analyse(args, &bytes)?;
+    let mut analysis = analyse(args, &bytes)?;
+    if let Some(serial) = &args.serial {
+        // The numbers to type on this robot, through what its checks measured.
+        let recorded = args.db.open()?.conventions(serial);
+        let recorded = recorded.map_err(crate::db::history_failed)?;
+        entry::apply(
+            &mut analysis.json,
+            serial,
+            &recorded,
+            analysis.profile.family,
+        );
+    }
     let recorded = match (&args.serial, args.record) {
         (Some(serial), true) => {
             let record = session_record(&analysis, &bytes, serial, &args.meta)?;
@@ -816,85 +754,5 @@ pub fn fit_config(convention: Convention, profile: &Profile) -> FitConfig<f64> {
                 ..c
             }
         }
-    }
-}
-
-/// The whole result, in degrees and in the controller's terms.
-pub fn to_json(
-    profile: &Profile,
-    s: &SessionSolution<f64>,
-    verdict: &Verdict,
-    budget: &Budget<f64>,
-    held: [bool; 4],
-    notes: Vec<String>,
-) -> SessionJson {
-    let mut delta = [0.0; JOINTS];
-    delta[1..].copy_from_slice(&s.offsets_rad);
-    let mut cov = [[0.0; JOINTS]; JOINTS];
-    for i in 0..SESSION_JOINTS {
-        for j in 0..SESSION_JOINTS {
-            cov[i + 1][j + 1] = s.covariance_rad2[i][j];
-        }
-    }
-    let controller = profile.controller.offsets(&delta, &cov);
-    let sigma = s.sigma_rad();
-    let joints = (0..SESSION_JOINTS)
-        .map(|k| {
-            let c = &controller[k + 1];
-            let shares = s.variance_shares_rad2[k];
-            let total: f64 = shares.iter().sum();
-            JointJson {
-                name: profile.joints[k + 1].name.clone(),
-                offset_deg: s.offsets_rad[k].to_degrees(),
-                sigma_deg: sigma[k].to_degrees(),
-                controller_offset_deg: c.shown_deg,
-                controller_sigma_deg: c.sigma_deg,
-                controller_offset_in_unit: c.in_unit,
-                controller_unit: profile.controller.unit.name().to_owned(),
-                identifiable: k == 0 || !held[k - 1],
-                controller_unit_missing: c.no_unit_because.map(str::to_owned),
-                variance_shares: shares.map(|v| if total > 0.0 { v / total } else { 0.0 }),
-                urdf_calibration_rising_rad: s.offsets_rad[k],
-                expanded_k2_deg: budget.expanded_rad[k].to_degrees(),
-                budget_deg: BudgetTerm::ALL
-                    .iter()
-                    .zip(&budget.terms_rad)
-                    .map(|(t, u)| BudgetJson {
-                        term: t.name().to_owned(),
-                        standard_uncertainty_deg: u[k].to_degrees(),
-                    })
-                    .collect(),
-            }
-        })
-        .collect();
-    let correlations = (0..SESSION_JOINTS)
-        .map(|i| {
-            core::array::from_fn(|j| {
-                let d = (s.covariance_rad2[i][i] * s.covariance_rad2[j][j]).sqrt();
-                if d > 0.0 {
-                    s.covariance_rad2[i][j] / d
-                } else {
-                    0.0
-                }
-            })
-        })
-        .collect();
-    SessionJson {
-        robot: profile.name.clone(),
-        family: profile.family.name().to_owned(),
-        controller_offset_where: profile.controller.offset_where.clone(),
-        joints,
-        correlations,
-        base_tilt_deg: [
-            s.model.base_tilt.alpha_rad.to_degrees(),
-            s.model.base_tilt.beta_rad.to_degrees(),
-        ],
-        residual_rms_deg: s.fit.residual_rms_rad.to_degrees(),
-        poses: s.fit.poses,
-        condition_number: s.fit.condition_number,
-        pass: verdict.is_pass(),
-        warnings: verdict.warnings.iter().map(ToString::to_string).collect(),
-        notes,
-        reducers: reducers::reducers(&s.fit),
     }
 }

@@ -90,7 +90,21 @@ pub fn render(j: &SessionJson) -> String {
         out,
         "joint   dq_deg (true - commanded, as the controller shows it)   in its unit"
     );
+    let conventions = j.joints.iter().any(|x| x.entry_convention.is_some());
     for joint in j.joints.iter().filter(|joint| joint.identifiable) {
+        if conventions {
+            // This robot's checks measured how its controller takes a typed value.
+            let how = joint
+                .entry_convention
+                .as_ref()
+                .map_or_else(|| "the controller page's".to_owned(), |c| c.words());
+            let _ = writeln!(
+                out,
+                "{:<6} type {:+.5} deg on this robot ({how}; the note says which check)",
+                joint.name,
+                joint.to_enter()
+            );
+        }
         let unit = match (
             joint.controller_offset_in_unit,
             joint.controller_unit_missing.as_deref(),
