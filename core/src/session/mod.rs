@@ -11,11 +11,16 @@
 
 mod budget;
 pub mod judge;
+mod stage1_joints;
 
 pub use budget::{
     budget, predict_budget, sensor_offset_x_spec_deg, Budget, BudgetInputs, BudgetTerm,
     PlannedRobot, BUDGET_TERMS, COVERAGE_FACTOR, DEFAULT_LOST_MOTION_DEG,
     DEFAULT_REPEATABILITY_DEG, SENSOR_OFFSET_X_SPEC_G,
+};
+pub use stage1_joints::{
+    stage1_joint1_mismatch, stage1_joint2_mismatch, STAGE1_JOINT1_TOLERANCE_DEG,
+    STAGE1_JOINT2_TOLERANCE_DEG,
 };
 
 use crate::bracket::Brackets;
@@ -708,60 +713,6 @@ pub fn one_sided_pose<T: Real>(
     })
 }
 
-/// How far a stage-2 capture's joint 2 may lie from stage 1's (deg): the tolerance the
-/// pendant also holds a plan's joints 1-2 to against stage 1's (the link's 3 decimals,
-/// and an `f32` of a few hundred degrees); 5× below the 0.005° aimed at, so a
-/// difference within it moves no offset by anything that matters.
-pub const STAGE1_JOINT2_TOLERANCE_DEG: f64 = 1e-3;
-
-/// How far a stage-2 capture's joint 1 may lie from stage 1's (deg): the same
-/// tolerance as joint 2's, [`STAGE1_JOINT2_TOLERANCE_DEG`], which the pendant holds a
-/// plan's joints 1 and 2 to alike.
-pub const STAGE1_JOINT1_TOLERANCE_DEG: f64 = STAGE1_JOINT2_TOLERANCE_DEG;
-
-/// The first stage-2 capture whose joint `joint` (0-based: 0 or 1) differs from stage
-/// 1's record of it by more than `tolerance_deg`; a non-finite joint differs too.
-fn stage1_joint_mismatch<T: Real>(
-    recorded_rad: T,
-    joint: usize,
-    tolerance_deg: f64,
-    poses: &[PoseReading<T>],
-) -> Option<usize> {
-    let tolerance = crate::real::deg_to_rad(T::lit(tolerance_deg));
-    poses.iter().position(|p| {
-        p.joints_rad.get(joint).is_none_or(|q| {
-            let off = (*q - recorded_rad).abs();
-            !off.is_finite() || off > tolerance
-        })
-    })
-}
-
-/// The first stage-2 capture whose joint 2 differs from stage 1's by more than
-/// [`STAGE1_JOINT2_TOLERANCE_DEG`]. Stage 2 runs with joint 2 where stage 1 had it, and
-/// stage 1's Δθ2 is the measured arm angle minus the recorded joint 2: a wrong record
-/// moves Δθ2 by its error, and Δθ3 takes it back (joints 2 and 3 are parallel), so the
-/// fit cannot see it.
-pub fn stage1_joint2_mismatch<T: Real>(
-    stage1: &AxisOneTurn<T>,
-    poses: &[PoseReading<T>],
-) -> Option<usize> {
-    stage1_joint_mismatch(stage1.j2_rad, 1, STAGE1_JOINT2_TOLERANCE_DEG, poses)
-}
-
-/// The first stage-2 capture whose joint 1 differs from stage 1's by more than
-/// [`STAGE1_JOINT1_TOLERANCE_DEG`]. Stage 2 runs with joint 1 back at stage 1's
-/// angle (the programs and the pendant's plan keep it there). Stage 1's base tilt
-/// and the sensor terms stage 2 hands back to it are read in the frame of stage 1's
-/// recorded joint 1: an export whose stage-1 line and rows disagree on joint 1 (one
-/// of them wrong, and nothing in the readings says which) gives a wrong Δθ3 with
-/// nothing in the fit to show it, so it is refused rather than solved.
-pub fn stage1_joint1_mismatch<T: Real>(
-    stage1: &AxisOneTurn<T>,
-    poses: &[PoseReading<T>],
-) -> Option<usize> {
-    stage1_joint_mismatch(stage1.j1_rad, 0, STAGE1_JOINT1_TOLERANCE_DEG, poses)
-}
-
 /// The gain and cross-axis terms a fit estimated (zero where not estimated).
 fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
     let v = |p: Param| r.get(p).map_or(T::zero(), |(v, _)| v);
@@ -892,60 +843,5 @@ mod tests {
             Some(0)
         );
         assert_eq!(first_captures(&poses, Some(&by_index)).unwrap(), [0, 2]);
-    }
-
-    #[test]
-    fn joint_2_must_stay_where_stage_1_had_it() {
-        let turn = AxisOneTurn {
-            before: Tilt::new(0.0, 0.0),
-            after: Tilt::new(0.0, 0.0),
-            j1_rad: 0.0,
-            j2_rad: (-90.0f64).to_radians(),
-        };
-        // Within the tolerance (joint 1 is the other check's).
-        let near = -90.0 + 0.5 * STAGE1_JOINT2_TOLERANCE_DEG;
-        let poses = [
-            at([5.0, near, 10.0, 0.0, 0.0, 0.0]),
-            at([0.0, -89.5, 10.0, 0.0, 0.0, 0.0]),
-        ];
-        assert_eq!(stage1_joint2_mismatch(&turn, &poses[..1]), None);
-        assert_eq!(stage1_joint2_mismatch(&turn, &poses), Some(1));
-    }
-
-    #[test]
-    fn joint_1_must_stay_where_stage_1_had_it() {
-        let turn = AxisOneTurn {
-            before: Tilt::new(0.0, 0.0),
-            after: Tilt::new(0.0, 0.0),
-            j1_rad: 0.0,
-            j2_rad: (-90.0f64).to_radians(),
-        };
-        let near = 0.5 * STAGE1_JOINT1_TOLERANCE_DEG;
-        let beyond = 2.0 * STAGE1_JOINT1_TOLERANCE_DEG;
-        let poses = [
-            at([near, -90.0, 10.0, 0.0, 0.0, 0.0]),
-            at([-near, -90.0, 20.0, 0.0, 0.0, 0.0]),
-            // The export: stage 1 at joint 1 = 0, its rows at -90.
-            at([-90.0, -90.0, 10.0, 0.0, 0.0, 0.0]),
-        ];
-        assert_eq!(stage1_joint1_mismatch(&turn, &poses[..2]), None);
-        assert_eq!(stage1_joint1_mismatch(&turn, &poses), Some(2));
-        // Just past the tolerance either way, and a joint that is no number.
-        assert_eq!(
-            stage1_joint1_mismatch(&turn, &[at([beyond, -90.0, 0.0, 0.0, 0.0, 0.0])]),
-            Some(0)
-        );
-        assert_eq!(
-            stage1_joint1_mismatch(&turn, &[at([-beyond, -90.0, 0.0, 0.0, 0.0, 0.0])]),
-            Some(0)
-        );
-        assert_eq!(
-            stage1_joint1_mismatch(&turn, &[at([f64::NAN, -90.0, 0.0, 0.0, 0.0, 0.0])]),
-            Some(0)
-        );
-        // Joint 2 is not joint 1's business, nor joint 1 joint 2's.
-        let j2_off = [at([0.0, -80.0, 0.0, 0.0, 0.0, 0.0])];
-        assert_eq!(stage1_joint1_mismatch(&turn, &j2_off), None);
-        assert_eq!(stage1_joint2_mismatch(&turn, &poses), None);
     }
 }
