@@ -59,9 +59,7 @@ use zerocal_profile::Profile;
 pub use bracket::step_instruction;
 pub use link::{exchange, exchange_lines, Lines, Link, SerialLink};
 pub use live::{LiveView, Reading};
-pub use reply::{
-    check_reply, read_reply, render_status, Expect, Reply, ReplyError, Timeouts,
-};
+pub use reply::{check_reply, read_reply, render_status, Expect, Reply, ReplyError, Timeouts};
 
 use crate::args::RealIn;
 use crate::error::CliError;
@@ -356,7 +354,9 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
             let date = date_or_today(date.as_ref())?;
             vec![request(Command::Brackets, Expect::Brackets(date))]
         }
-        PendantAction::BracketCalibrate { mount, id, date, .. } => {
+        PendantAction::BracketCalibrate {
+            mount, id, date, ..
+        } => {
             date_or_today(date.as_ref())?;
             vec![bracket::start_request(mount, id)?]
         }
@@ -512,7 +512,9 @@ pub fn act(
         ),
         PendantAction::Export { out, results } => {
             let text = perform(port, action, timeouts)?;
-            let results = results.clone().or_else(|| out.as_ref().map(|p| results_path(p)));
+            let results = results
+                .clone()
+                .or_else(|| out.as_ref().map(|p| results_path(p)));
             let mut said = String::new();
             if let Some(path) = out {
                 write_file(path, &text)?;
@@ -564,7 +566,10 @@ pub fn act(
         }
         PendantAction::Profile { out: Some(path) } => {
             write_file(path, &perform(port, action, timeouts)?)?;
-            Ok(format!("wrote {} (the pendant's profile)\n", path.display()))
+            Ok(format!(
+                "wrote {} (the pendant's profile)\n",
+                path.display()
+            ))
         }
         _ => perform(port, action, timeouts),
     }
