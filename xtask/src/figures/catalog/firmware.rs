@@ -138,16 +138,16 @@ pub const ON_TARGET: Figure = Figure {
         let all = saved(s);
         let both = |f: &dyn Fn(&Saved) -> String| {
             all.iter()
-                .map(|m| format!("{} {}", f(m), kind_name(m.kind)))
+                .map(|m| format!("{}: {}", kind_name(m.kind), f(m)))
                 .collect::<Vec<_>>()
-                .join(", ")
+                .join("; ")
         };
         let budget = |f: &dyn Fn(ToolchainKind) -> u64, unit: &str| {
             let (r, d) = (f(ToolchainKind::Rustup), f(ToolchainKind::Debian));
             if r == d {
                 format!("{}{unit}", thousands(d))
             } else {
-                format!("{}{unit} rustup, {}{unit} debian", thousands(r), thousands(d))
+                format!("rustup: {}{unit}; debian: {}{unit}", thousands(r), thousands(d))
             }
         };
         let mut t = String::from("| figure | measured | budget |\n| --- | --- | --- |\n");
