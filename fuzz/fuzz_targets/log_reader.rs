@@ -81,7 +81,11 @@ fn stage1_joints_checked(stage1: &AxisOneTurn<f64>, poses: &[PoseReading<f64>]) 
         match found {
             Some(i) => {
                 assert!(!within(&poses[i]), "joint {}: row {i}", joint + 1);
-                assert!(poses[..i].iter().all(within), "joint {}: row {i}", joint + 1);
+                assert!(
+                    poses[..i].iter().all(within),
+                    "joint {}: row {i}",
+                    joint + 1
+                );
             }
             None => assert!(poses.iter().all(within), "joint {}", joint + 1),
         }
