@@ -62,8 +62,9 @@ enum Command {
     /// Write a robot program (KRL, RAPID, TP, INFORM, VAL3, URScript) that drives the
     /// whole session: stage 1, the remount stop, every planned pose.
     Program(ProgramArgs),
-    /// Talk to a pendant over its USB serial port: status, load a robot profile and its
-    /// plan, export the session, erase the store.
+    /// Talk to a pendant over its USB serial port, a verb for each of its commands:
+    /// status, load a robot profile and its plan, export, calibrate a bracket and start
+    /// a check (each followed to its end), the live reading, erase the store.
     Pendant(zerocal_cli::pendant::PendantArgs),
     /// After the offsets were entered: what a check's export says is left of each
     /// joint's offset against the session's record (recorded in the history).
