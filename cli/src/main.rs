@@ -6,7 +6,9 @@
 //! - `zerocal session EXPORT`: stages 0-2 on a pendant export, in the controller's terms.
 //! - `zerocal program --robot R --format F --out FILE`: a robot program that drives the
 //!   whole session.
-//! - `zerocal pendant --port P status|load-profile R|export|erase`: the pendant's link.
+//! - `zerocal pendant --port P ACTION`: the pendant's link, a verb for each of its
+//!   commands (status, load-profile, export, results, brackets, bracket-calibrate,
+//!   check, live, plan, profile, clear, erase).
 //! - `zerocal bracket --robot R [--out FILE]`: the flange bracket's OpenSCAD parameters
 //!   from the profile's flange interface.
 //! - `zerocal certificate ID --out FILE.html`: a session's calibration certificate.
@@ -26,9 +28,16 @@ use zerocal_cli::session::{self, SessionArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
 use zerocal_cli::simulated_world;
 
-/// Joint-zero identification of industrial robots from a dual-axis inclinometer.
+/// Find the joint zeros of a six-axis robot with the zerocal pendant: `plan` the poses,
+/// `program` the robot, load and read the `pendant`, solve its export into the
+/// offsets to enter in the controller's terms (`session`), then `check` the entry.
+///
+/// Around it: `simulate` rehearses the whole job on a simulated robot, `restore` brings
+/// a joint back to a reference's zero after a motor swap, `history` and `certificate`
+/// keep the record; `bracket`, `robots`, `identify` and `error-table` are the tools
+/// behind them. docs/cli.md has every command.
 #[derive(Parser, Debug)]
-#[command(name = "zerocal", version, about)]
+#[command(name = "zerocal", version)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -53,8 +62,9 @@ enum Command {
     /// Write a robot program (KRL, RAPID, TP, INFORM, VAL3, URScript) that drives the
     /// whole session: stage 1, the remount stop, every planned pose.
     Program(ProgramArgs),
-    /// Talk to a pendant over its USB serial port: status, load a robot profile and its
-    /// plan, export the session, erase the store.
+    /// Talk to a pendant over its USB serial port, a verb for each of its commands:
+    /// status, load a robot profile and its plan, export, calibrate a bracket and start
+    /// a check (each followed to its end), the live reading, erase the store.
     Pendant(zerocal_cli::pendant::PendantArgs),
     /// After the offsets were entered: what a check's export says is left of each
     /// joint's offset against the session's record (recorded in the history).

@@ -43,6 +43,8 @@ struct Scripted {
     written: Vec<u8>,
     /// Bytes it gave.
     given: usize,
+    /// When it was made: its clock.
+    opened: Instant,
 }
 
 impl Scripted {
@@ -53,11 +55,23 @@ impl Scripted {
             at: 0,
             written: Vec::new(),
             given: 0,
+            opened: Instant::now(),
         }
     }
 
     fn bytes(replies: impl IntoIterator<Item = Vec<u8>>) -> Self {
         Self::new(replies.into_iter().map(Script::Bytes))
+    }
+}
+
+/// A scripted port answers in real time.
+impl pendant::Link for Scripted {
+    fn now(&self) -> Duration {
+        self.opened.elapsed()
+    }
+    fn pause(&mut self, d: Duration) -> std::io::Result<()> {
+        std::thread::sleep(d);
+        Ok(())
     }
 }
 

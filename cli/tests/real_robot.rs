@@ -234,11 +234,13 @@ fn identify_refuses_a_tilt_it_cannot_compose() {
     );
 }
 
-/// Joint 1 standing 5° off its stage-1 angle during stage 2: the export records it and
-/// the model uses it, so the zeros come out right (docs/mounting.md). Taken as still at
-/// its stage-1 angle, the 0.5° base tilt would turn by 5° against the arm: 0.04° in Δθ3.
+/// Joint 1 standing 5° off its stage-1 angle during stage 2, the export recording it:
+/// refused by name and line. The rows and the stage-1 line disagree, and nothing in
+/// the readings says which record is wrong: a stage-1 line off by as much turns the
+/// base tilt into another frame and moves Δθ3 unseen (docs/mounting.md). The pendant
+/// and the programs keep joint 1 at stage 1's angle, so their exports never do this.
 #[test]
-fn a_joint_1_off_its_mark_in_stage_2_is_followed() {
+fn a_joint_1_off_its_mark_in_stage_2_is_refused_by_name() {
     let kr6 = zerocal_profile::builtin("kuka-kr6-r900-sixx").unwrap();
     let (mut plan, _) = setup(&kr6, Method::Compensated, DEFAULT_POSES).unwrap();
     for q in &mut plan {
@@ -249,25 +251,15 @@ fn a_joint_1_off_its_mark_in_stage_2_is_followed() {
         ..WorldConfig::real()
     };
     let s = RealSession::simulate(&kr6, &plan, &world, 21);
+    let text = s.export_text(&kr6.name);
+    let first_row = text.lines().position(|l| l.starts_with("j1_deg,")).unwrap() + 2;
     let path = dir().join("kr6-j1.csv");
-    std::fs::write(&path, s.export_text(&kr6.name)).unwrap();
+    std::fs::write(&path, text).unwrap();
     let out = session(&path, &[]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+        err.contains(&format!("line {first_row}: joint 1 at")) && err.contains("stage 1's j1_deg"),
+        "{err}"
     );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let truth = s.truth_rad().map(f64::to_degrees);
-    for k in 0..5 {
-        let f = v["joints"][k]["offset_deg"].as_f64().unwrap();
-        let u = v["joints"][k]["expanded_k2_deg"].as_f64().unwrap();
-        // Within the session's own k = 2 budget.
-        assert!(
-            (f - truth[k]).abs() <= u,
-            "j{}: {f} vs {} (U {u})",
-            k + 2,
-            truth[k]
-        );
-    }
 }

@@ -44,10 +44,24 @@ fn session(path: &Path, extra: &[&str]) -> Output {
         .unwrap()
 }
 
-/// The export `text` edited, refused with exit status 2 and every one of `words` in
-/// the message.
+/// `text` with its end trailer made anew over its lines (any old one dropped): the
+/// edited export as a writer that made it so would have sealed it, so that the
+/// reader's own checks, not the trailer, must catch what the edit did.
+fn resealed(text: &str) -> String {
+    let mut out: String = text
+        .lines()
+        .filter(|l| !zerocal_procedure::export_trailer::is_trailer(l))
+        .flat_map(|l| [l, "\n"])
+        .collect();
+    let trailer = zerocal_procedure::export_trailer::trailer_of(&out);
+    out.push_str(&format!("{trailer}\n"));
+    out
+}
+
+/// The export `text` edited (and [`resealed`]), refused with exit status 2 and every
+/// one of `words` in the message.
 fn refused(name: &str, text: &str, words: &[&str]) {
-    let out = session(&write(name, text.as_bytes()), &[]);
+    let out = session(&write(name, resealed(text).as_bytes()), &[]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{name}: {err}");
     for w in words {
@@ -80,7 +94,7 @@ fn a_session_without_stage_0_carries_the_sensor_offset_in_its_budget() {
         ("none.csv", text.replace(&stage0, "# stage0_bias_deg none")),
         ("removed.csv", text.replace(&format!("{stage0}\n"), "")),
     ] {
-        let out = session(&write(name, edited.as_bytes()), &[]);
+        let out = session(&write(name, resealed(&edited).as_bytes()), &[]);
         assert!(
             out.status.success(),
             "{name}: {}",
@@ -143,7 +157,10 @@ fn an_unknown_metadata_key_is_refused_by_name_and_line() {
         "# measured on cell 4 by the night shift\n# robot",
         1,
     );
-    let out = session(&write("commented.csv", commented.as_bytes()), &[]);
+    let out = session(
+        &write("commented.csv", resealed(&commented).as_bytes()),
+        &[],
+    );
     assert!(
         out.status.success(),
         "{}",
@@ -195,6 +212,141 @@ fn stage_1_joint_2_disagreeing_with_the_rows_is_refused() {
             &[&format!("line {}", first_row + 1), "stage 1's j2_deg"],
         );
     }
+}
+
+/// Stage 1's j1_deg against the rows' joint 1: the export (its stage-1 line at
+/// joint 1 = 0, its rows at -90, or the other way round) gave a wrong Δθ3 with exit 0;
+/// a single row's joint 1 just past the tolerance is refused the same way, by its line.
+#[test]
+fn stage_1_joint_1_disagreeing_with_the_rows_is_refused() {
+    let s = simulated(&WorldConfig::real(), 39);
+    let text = s.export_text("kuka-kr6-r900-sixx");
+    let (_, stage1) = line_of(&text, "# stage1_readings_deg");
+    let j1 = s.stage1.j1_rad.to_degrees();
+    let (header, _) = line_of(&text, "j1_deg,");
+    let written = format!(" j1_deg {j1:.12} ");
+    assert!(stage1.contains(&written), "{stage1}");
+    for off in [-90.0, 0.5] {
+        let edited = text.replace(
+            &stage1,
+            &stage1.replace(&written, &format!(" j1_deg {:.12} ", j1 + off)),
+        );
+        refused(
+            "j1.csv",
+            &edited,
+            &[
+                &format!("line {}", header + 1),
+                "stage 1's j1_deg",
+                "joint 1 at",
+            ],
+        );
+    }
+    // The fifth row's joint 1, twice the tolerance off.
+    let rows: Vec<&str> = text.lines().skip(header).take(5).collect();
+    let (first, rest) = rows[4].split_once(',').unwrap();
+    let moved: f64 =
+        first.parse::<f64>().unwrap() + 2.0 * zerocal_core::session::STAGE1_JOINT1_TOLERANCE_DEG;
+    refused(
+        "row-j1.csv",
+        &text.replace(rows[4], &format!("{moved:.12},{rest}")),
+        &[&format!("line {}", header + 5), "stage 1's j1_deg"],
+    );
+    // Every row's joint 1 within the tolerance (both captures of a pose alike, as
+    // they pair by equal joints): solved.
+    let near = 0.5 * zerocal_core::session::STAGE1_JOINT1_TOLERANCE_DEG;
+    let edited: String = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| match l.split_once(',') {
+            Some((q1, rest)) if i >= header && !l.starts_with('#') => {
+                format!("{:.12},{rest}\n", q1.parse::<f64>().unwrap() + near)
+            }
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let edited = resealed(&edited);
+    let out = session(&write("near-j1.csv", edited.as_bytes()), &[]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// `zerocal simulate --export` seals its export with the pendant's end trailer: read
+/// whole without the "no end trailer" note; cut short, a line altered, or the trailer
+/// itself altered, it is refused naming the trailer; without the trailer it is read
+/// with the note.
+#[test]
+fn a_simulated_export_is_sealed_and_a_cut_or_altered_one_is_refused() {
+    let path = dir().join("simulated.export");
+    let out = Command::new(env!("CARGO_BIN_EXE_zerocal"))
+        .args(["simulate", "--seed", "41", "--export"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    let last = text.lines().last().unwrap();
+    assert!(
+        zerocal_procedure::export_trailer::is_trailer(last),
+        "{last}"
+    );
+    let whole = session(&path, &[]);
+    assert!(
+        whole.status.success(),
+        "{}",
+        String::from_utf8_lossy(&whole.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&whole.stdout).unwrap();
+    assert!(!v["notes"].to_string().contains("no end trailer"), "{v}");
+    let lines: Vec<&str> = text.lines().collect();
+    let n = lines.len();
+    let joined = |ls: &[&str]| ls.iter().flat_map(|l| [*l, "\n"]).collect::<String>();
+    // The last row lost, the trailer kept.
+    let mut cut = lines.clone();
+    cut.remove(n - 2);
+    // A digit of a row changed.
+    let row = lines[n - 2];
+    let digit = row.rfind(|c: char| c.is_ascii_digit() && c != '9').unwrap();
+    let mut altered_row = row.to_owned();
+    altered_row.replace_range(digit..=digit, "9");
+    let mut altered = lines.clone();
+    altered[n - 2] = &altered_row;
+    // The trailer's CRC changed.
+    let crc_at = last.rfind(' ').unwrap() + 1;
+    let flipped = if &last[crc_at..crc_at + 1] == "0" {
+        "1"
+    } else {
+        "0"
+    };
+    let bad_trailer = format!("{}{flipped}{}", &last[..crc_at], &last[crc_at + 1..]);
+    let mut retrailed = lines.clone();
+    retrailed[n - 1] = &bad_trailer;
+    for (name, edited, words) in [
+        ("cut.export", joined(&cut), "lines lost or added"),
+        ("altered.export", joined(&altered), "a line changed"),
+        ("trailer.export", joined(&retrailed), "a line changed"),
+    ] {
+        let out = session(&write(name, edited.as_bytes()), &[]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {err}");
+        assert!(
+            err.contains("end trailer") && err.contains(words),
+            "{name}: {err}"
+        );
+    }
+    let unsealed = session(
+        &write("unsealed.export", joined(&lines[..n - 1]).as_bytes()),
+        &[],
+    );
+    assert!(unsealed.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&unsealed.stdout).unwrap();
+    assert!(v["notes"].to_string().contains("no end trailer"), "{v}");
 }
 
 /// Every pose captured from one side only (the simulator's consistent approach): an

@@ -45,9 +45,22 @@ fn profile_round_trip(p: &PendantProfile<f32>) {
     assert_eq!(ids(&q.brackets), ids(&p.brackets));
 }
 
-/// A port that answers once with the fuzzer's bytes, then stays quiet.
+/// A port that answers once with the fuzzer's bytes, then stays quiet; its clock moves
+/// a millisecond a read (the link's time, not the machine's: the same run every time).
 struct Port<'a> {
     bytes: &'a [u8],
+    reads: u32,
+}
+
+impl zerocal_cli::pendant::Link for Port<'_> {
+    fn now(&self) -> std::time::Duration {
+        std::time::Duration::from_millis(u64::from(self.reads))
+    }
+    fn pause(&mut self, d: std::time::Duration) -> std::io::Result<()> {
+        let ms = u32::try_from(d.as_millis()).unwrap_or(u32::MAX);
+        self.reads = self.reads.saturating_add(ms);
+        Ok(())
+    }
 }
 
 impl std::io::Write for Port<'_> {
@@ -61,6 +74,7 @@ impl std::io::Write for Port<'_> {
 
 impl std::io::Read for Port<'_> {
     fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        self.reads = self.reads.saturating_add(1);
         if self.bytes.is_empty() {
             return Err(std::io::ErrorKind::TimedOut.into());
         }
@@ -86,8 +100,19 @@ fn desktop_reader(data: &[u8]) {
         Expect::Erased,
         Expect::ProfileStored("abb-irb140".into()),
         Expect::PlanStored(24),
+        Expect::Plan(24),
+        Expect::Profile,
+        Expect::BracketProgress,
+        Expect::Line {
+            name: "clear",
+            line: "ok: session cleared (bias and plan kept)".into(),
+        },
     ] {
-        let Ok(reply) = read_reply(&mut Port { bytes: data }, &expect, timeouts) else {
+        let mut port = Port {
+            bytes: data,
+            reads: 0,
+        };
+        let Ok(reply) = read_reply(&mut port, &expect, timeouts) else {
             continue;
         };
         assert!(reply.lines.len() <= expect.max_lines());

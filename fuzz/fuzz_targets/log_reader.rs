@@ -8,6 +8,10 @@ use std::cell::Cell;
 
 use libfuzzer_sys::fuzz_target;
 use zerocal_cli::log_file::parse_number;
+use zerocal_core::session::{
+    stage1_joint1_mismatch, STAGE1_JOINT1_TOLERANCE_DEG,
+};
+use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::PoseReading;
 use zerocal_fuzz::{close, same_number};
 use zerocal_procedure::log::{
@@ -36,6 +40,9 @@ fuzz_target!(|data: &[u8]| {
     match (&core_export, &host_export) {
         (Ok((poses, metas)), Ok(export)) => {
             same_poses(poses, &export.poses);
+            if let Some(Some(stage1)) = &export.stage1 {
+                stage1_joints_checked(stage1, &export.poses);
+            }
             assert_eq!(
                 metas,
                 &(
@@ -55,6 +62,32 @@ fuzz_target!(|data: &[u8]| {
         (a, b) => panic!("core {a:?}, host {:?}", b.as_ref().map(|l| l.poses.len())),
     }
 });
+
+/// `zerocal session`'s refusal of rows at another joint 1 than stage 1's, on
+/// whatever the reader took (non-finite joints and stage-1 angles among them): it names
+/// the first row past the tolerance, and none when every row is within it.
+fn stage1_joints_checked(stage1: &AxisOneTurn<f64>, poses: &[PoseReading<f64>]) {
+    let tolerance = zerocal_core::real::deg_to_rad(STAGE1_JOINT1_TOLERANCE_DEG);
+    let recorded = [stage1.j1_rad];
+    let found = [stage1_joint1_mismatch(stage1, poses)];
+    for (joint, found) in found.into_iter().enumerate() {
+        let within = |p: &PoseReading<f64>| {
+            let off = (p.joints_rad[joint] - recorded[joint]).abs();
+            off.is_finite() && off <= tolerance
+        };
+        match found {
+            Some(i) => {
+                assert!(!within(&poses[i]), "joint {}: row {i}", joint + 1);
+                assert!(
+                    poses[..i].iter().all(within),
+                    "joint {}: row {i}",
+                    joint + 1
+                );
+            }
+            None => assert!(poses.iter().all(within), "joint {}", joint + 1),
+        }
+    }
+}
 
 type Read = (Vec<PoseReading<f64>>, (bool, bool, bool, bool));
 

@@ -66,6 +66,87 @@ async fn pendant_alone(rig: &Rig) -> Result<(), ScriptError> {
     .await
 }
 
+/// The world of a calibration: a plate levelled within the calibration's limit, the
+/// bracket turning the pendant by [`BRACKET_TURN_DEG`].
+pub fn calibration_world(rig: &Rig) {
+    let mut world = rig.world.borrow_mut();
+    world.bench = rot_x(LEVEL_PLATE_DEG.0.to_radians()) * rot_y(LEVEL_PLATE_DEG.1.to_radians());
+    world.bracket_turn =
+        rot_x(BRACKET_TURN_DEG.0.to_radians()) * rot_y(BRACKET_TURN_DEG.1.to_radians());
+}
+
+/// The operator through a calibration once it has been started (on the link): the
+/// eight steps as their screens ask, then OK on the result to keep it, back to the
+/// session's screen.
+///
+/// # Errors
+/// A screen that did not come.
+pub async fn operate_calibration(rig: &Rig) -> Result<(), ScriptError> {
+    pendant_alone(rig).await?;
+    place_and_ok(
+        rig,
+        ScreenKind::BracketSeated,
+        Place::Bracket { heading_rad: 0.0 },
+    )
+    .await?;
+    place_and_ok(
+        rig,
+        ScreenKind::BracketSeatedTurned,
+        Place::Bracket { heading_rad: PI },
+    )
+    .await?;
+    for (kind, place) in [
+        (
+            ScreenKind::BracketSine,
+            Place::SinePlate { heading_rad: 0.0 },
+        ),
+        (
+            ScreenKind::BracketSineTurned,
+            Place::SinePlate { heading_rad: PI },
+        ),
+        (
+            ScreenKind::BracketSineSeated,
+            Place::BracketOnSinePlate { heading_rad: 0.0 },
+        ),
+        (
+            ScreenKind::BracketSineSeatedTurned,
+            Place::BracketOnSinePlate { heading_rad: PI },
+        ),
+    ] {
+        place_and_ok(rig, kind, place).await?;
+    }
+    wait_for(rig, "the result", Duration::from_secs(20), |s| {
+        s.kind() == ScreenKind::BracketResult
+    })
+    .await?;
+    // Looked at for a moment, then kept.
+    Timer::after(Duration::from_secs(2)).await;
+    press(rig, Button::Ok, PRESS_MS).await;
+    wait_for(rig, "the session again", Duration::from_secs(10), |s| {
+        matches!(s, Screen::Capture(_))
+    })
+    .await?;
+    Ok(())
+}
+
+/// The operator leaving a calibration once it has been started (on the link): BACK on
+/// its first step, a few seconds after it showed.
+///
+/// # Errors
+/// The first step's screen did not come.
+pub async fn leave_calibration(rig: &Rig) -> Result<(), ScriptError> {
+    wait_for(
+        rig,
+        "the bracket's first step",
+        Duration::from_secs(20),
+        |s| s.kind() == ScreenKind::BracketPlate,
+    )
+    .await?;
+    Timer::after(Duration::from_secs(3)).await;
+    press(rig, Button::Back, PRESS_MS).await;
+    Ok(())
+}
+
 /// The bracket scenarios, for the pendant-sim report and its gallery: a calibration
 /// kept, and a plate not level.
 ///
@@ -83,62 +164,14 @@ pub fn scenarios() -> Result<Vec<ScenarioReport>, String> {
 /// A screen that did not come, or a link answer that is not the calibration.
 pub fn calibrated() -> Result<ScenarioReport, String> {
     let rig = scenario_rig(21)?;
-    {
-        let mut world = rig.world.borrow_mut();
-        world.bench = rot_x(LEVEL_PLATE_DEG.0.to_radians()) * rot_y(LEVEL_PLATE_DEG.1.to_radians());
-        world.bracket_turn =
-            rot_x(BRACKET_TURN_DEG.0.to_radians()) * rot_y(BRACKET_TURN_DEG.1.to_radians());
-    }
+    calibration_world(&rig);
     let run = rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| async {
         wait_for(&rig, "stage 0", Duration::from_secs(10), |s| {
             matches!(s, Screen::Capture(_))
         })
         .await?;
         let started = command(&rig, START, SILENCE).await;
-        pendant_alone(&rig).await?;
-        place_and_ok(
-            &rig,
-            ScreenKind::BracketSeated,
-            Place::Bracket { heading_rad: 0.0 },
-        )
-        .await?;
-        place_and_ok(
-            &rig,
-            ScreenKind::BracketSeatedTurned,
-            Place::Bracket { heading_rad: PI },
-        )
-        .await?;
-        for (kind, place) in [
-            (
-                ScreenKind::BracketSine,
-                Place::SinePlate { heading_rad: 0.0 },
-            ),
-            (
-                ScreenKind::BracketSineTurned,
-                Place::SinePlate { heading_rad: PI },
-            ),
-            (
-                ScreenKind::BracketSineSeated,
-                Place::BracketOnSinePlate { heading_rad: 0.0 },
-            ),
-            (
-                ScreenKind::BracketSineSeatedTurned,
-                Place::BracketOnSinePlate { heading_rad: PI },
-            ),
-        ] {
-            place_and_ok(&rig, kind, place).await?;
-        }
-        wait_for(&rig, "the result", Duration::from_secs(20), |s| {
-            s.kind() == ScreenKind::BracketResult
-        })
-        .await?;
-        // Looked at for a moment, then kept.
-        Timer::after(Duration::from_secs(2)).await;
-        press(&rig, Button::Ok, PRESS_MS).await;
-        wait_for(&rig, "the session again", Duration::from_secs(10), |s| {
-            matches!(s, Screen::Capture(_))
-        })
-        .await?;
+        operate_calibration(&rig).await?;
         let read_out = command(&rig, b"brackets\r\n", SILENCE).await;
         let mut text = String::from_utf8_lossy(&started).into_owned();
         text.push_str(&String::from_utf8_lossy(&read_out));

@@ -139,6 +139,27 @@ pub fn run<F: Future>(future: F, deadline: Instant) -> Result<F::Output, Stop> {
     }
 }
 
+/// Runs `future` on the simulated clock until it finishes (`Some`), or until nothing
+/// is due before `until`, when the clock is moved to `until` and the future is left
+/// as it is, to be run on later (`None`): a simulation that another program (a
+/// desktop command on a port) advances step by step.
+///
+/// # Errors
+/// [`Stop::PowerCut`], [`Stop::Stalled`] or [`Stop::Livelock`], as [`run`].
+pub fn run_until<F: Future + ?Sized>(
+    mut future: std::pin::Pin<&mut F>,
+    until: Instant,
+) -> Result<Option<F::Output>, Stop> {
+    match run(future.as_mut(), until) {
+        Ok(output) => Ok(Some(output)),
+        Err(Stop::Deadline) => {
+            NOW_TICKS.with(|n| n.set(n.get().max(until.as_ticks())));
+            Ok(None)
+        }
+        Err(stop) => Err(stop),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -161,5 +182,20 @@ mod tests {
         reset_clock();
         let result = run(core::future::pending::<()>(), Instant::from_secs(5));
         assert_eq!(result, Err(Stop::Stalled));
+    }
+
+    #[test]
+    fn a_run_resumes_where_it_stopped() {
+        reset_clock();
+        let mut timer = pin!(async {
+            Timer::after(Duration::from_secs(10)).await;
+            Instant::now()
+        });
+        assert_eq!(run_until(timer.as_mut(), Instant::from_secs(4)), Ok(None));
+        assert_eq!(now(), Instant::from_secs(4));
+        assert_eq!(
+            run_until(timer.as_mut(), Instant::from_secs(20)),
+            Ok(Some(Instant::from_secs(10)))
+        );
     }
 }

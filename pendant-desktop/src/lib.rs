@@ -9,7 +9,9 @@
 //! [`session`], the [`power_cuts`] campaign, the [`faults`] scenarios, a [`bracket`]'s
 //! calibration, a link
 //! [`conversation`] and the screen [`gallery`]. [`script`] drives a session step by
-//! step for tests that look at the pendant between stages.
+//! step for tests that look at the pendant between stages; [`port`] makes the pendant
+//! a serial port that a desktop program (`zerocal pendant`) drives in step with its
+//! clock.
 
 pub mod agreement;
 pub mod bracket;
@@ -20,6 +22,7 @@ pub mod gallery;
 pub mod io;
 pub mod operator;
 pub mod panel;
+pub mod port;
 pub mod power_cuts;
 pub mod script;
 pub mod session;

@@ -318,11 +318,7 @@ pub struct CheckReport {
 pub fn check(world: WorldConfig) -> Result<(CheckReport, Rc<RefCell<PanelLog>>), String> {
     exec::reset_clock();
     let rig = Rig::new(world, world.seed)?;
-    let config = procedure_config();
-    let model = check_model(config.arm, config.convention, config.masses);
-    let (chosen, _) = check_poses(&model, &rig.plan).map_err(|e| e.to_string())?;
-    let chosen: Vec<usize> = chosen.iter().map(|&i| usize::from(i)).collect();
-    *rig.check.borrow_mut() = Some(chosen.clone());
+    let chosen = drive_check_program(&rig)?;
     let run = rig.run(Instant::from_secs(0) + RUN_LIMIT, |shared| async {
         // The boot screen's time, then the link's `check`.
         Timer::after(Duration::from_secs(2)).await;
@@ -352,6 +348,39 @@ pub fn check(world: WorldConfig) -> Result<(CheckReport, Rc<RefCell<PanelLog>>),
         },
         rig.panel.clone(),
     ))
+}
+
+/// Loads the check program into `rig`'s robot: core's `check_poses` on its plan and
+/// the pendant's profile, as `zerocal program --check` chooses them. Returns them
+/// (indices into the plan).
+///
+/// # Errors
+/// The check poses' refusal, as text.
+pub fn drive_check_program(rig: &Rig) -> Result<Vec<usize>, String> {
+    let config = procedure_config();
+    let model = check_model(config.arm, config.convention, config.masses);
+    let (chosen, _) = check_poses(&model, &rig.plan).map_err(|e| e.to_string())?;
+    let chosen: Vec<usize> = chosen.iter().map(|&i| usize::from(i)).collect();
+    *rig.check.borrow_mut() = Some(chosen.clone());
+    Ok(chosen)
+}
+
+/// The operator through a check once the pendant is in one (started on the link): the
+/// check program's poses ([`drive_check_program`]) as the screens ask, until the
+/// check-captured screen.
+///
+/// # Errors
+/// No check within 60 s, a fault screen, or no progress.
+pub async fn operate_check(rig: &Rig, shared: &Shared) -> Result<(), ScriptError> {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while !shared.procedure.lock().await.session.is_check() {
+        if Instant::now() > deadline {
+            return Err(ScriptError::Timeout("no check started".into()));
+        }
+        Timer::after(Duration::from_millis(crate::operator::LOOK_MS)).await;
+    }
+    operate_until(rig, PATIENCE, |s| matches!(s, Screen::CheckDone(_))).await?;
+    Ok(())
 }
 
 /// The report of a run that ended with `ended`.

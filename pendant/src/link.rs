@@ -28,7 +28,7 @@ use embedded_io_async::{Read, Write};
 use heapless::Vec;
 use zerocal_core::bracket::BracketMount;
 use zerocal_core::decimal::Fixed;
-use zerocal_procedure::bracket_cal::bracket_line;
+use zerocal_procedure::bracket_cal::{bracket_line, progress_line};
 use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
 use zerocal_procedure::link::{
     bracket_started, parse_bracket_calibrate, parse_command, pendant_status, plan_line,
@@ -141,9 +141,20 @@ pub async fn serve<R: Read, W: Write>(shared: &Shared, rx: &mut R, tx: &mut W) -
             match server.line(edited).await {
                 Ok(Next::Line) => {}
                 Ok(Next::Live) => {
-                    // The rest of this packet is typed during `live`: it stops it.
-                    let rest = bytes.get(i + 1..).unwrap_or(&[]);
-                    match server.live(rx, rest).await {
+                    // The rest of this packet is typed during `live`: it stops it. The
+                    // LF of the command's own CR LF is its line end, not a stop key
+                    // (in this packet or the next).
+                    let mut rest = bytes.get(i + 1..).unwrap_or(&[]);
+                    let mut lf_due = byte == b'\r';
+                    if lf_due {
+                        if let Some(after) = rest.strip_prefix(b"\n") {
+                            rest = after;
+                            lf_due = false;
+                        } else if !rest.is_empty() {
+                            lf_due = false;
+                        }
+                    }
+                    match server.live(rx, rest, lf_due).await {
                         Ok(left) => {
                             // What follows the stop key is the next command's start.
                             let _ = pending.extend_from_slice(&left);
@@ -381,6 +392,11 @@ impl<W: Write> Server<'_, W> {
                 }
             }
             Command::Results => self.results().await?,
+            Command::BracketStatus => {
+                let procedure = self.shared.procedure.lock().await;
+                let text = progress_line(procedure.bracket_cal.as_ref());
+                self.write_text(text).await?;
+            }
             Command::Live => return Ok(Next::Live),
             Command::Check => match self.request(LinkRequest::Check).await {
                 LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::CheckStarted).await?,
@@ -480,11 +496,13 @@ impl<W: Write> Server<'_, W> {
     }
 
     /// Streams `x_deg,y_deg` until a key (in `typed`, or read); returns the bytes after
-    /// the stop key, which begin the next line.
+    /// the stop key, which begin the next line. `lf_due`: the command ended with a CR
+    /// whose LF has not come yet; an LF first thing is that line end, not a key.
     async fn live<R: Read>(
         &mut self,
         rx: &mut R,
         typed: &[u8],
+        mut lf_due: bool,
     ) -> Result<Vec<u8, 64>, Disconnected> {
         if let Some(left) = stop_key(typed) {
             return Ok(left);
@@ -492,16 +510,45 @@ impl<W: Write> Server<'_, W> {
         let mut ticker = Ticker::every(LIVE_PERIOD);
         let mut packet = [0_u8; 64];
         let mut had_reading = true;
-        let received = {
+        loop {
+            let received = self
+                .stream(rx, &mut packet, &mut ticker, &mut had_reading)
+                .await?;
+            let mut got = packet.get(..received).unwrap_or(&[]);
+            if core::mem::take(&mut lf_due) {
+                got = got.strip_prefix(b"\n").unwrap_or(got);
+            }
+            if let Some(left) = stop_key(got) {
+                return Ok(left);
+            }
+        }
+    }
+
+    /// Writes a reading every tick until bytes come; returns how many.
+    async fn stream<R: Read>(
+        &mut self,
+        rx: &mut R,
+        packet: &mut [u8; 64],
+        ticker: &mut Ticker,
+        had_reading: &mut bool,
+    ) -> Result<usize, Disconnected> {
+        {
             // One read for the whole stream, never dropped half-way: a key typed
             // between two ticks is not lost.
-            let mut read = pin!(rx.read(&mut packet));
+            let mut read = pin!(rx.read(packet));
             loop {
                 match select(read.as_mut(), ticker.next()).await {
-                    Either::First(Ok(n)) if n > 0 => break n,
+                    Either::First(Ok(n)) if n > 0 => return Ok(n),
                     Either::First(_) => return Err(Disconnected),
                     Either::Second(()) => {
-                        let reading = self.shared.procedure.lock().await.session.view().live;
+                        // A bracket calibration takes the samples while it runs.
+                        let reading = {
+                            let procedure = self.shared.procedure.lock().await;
+                            match procedure.bracket_cal.as_ref() {
+                                Some(bracket) => bracket.live(),
+                                None => procedure.session.view().live,
+                            }
+                        };
                         match reading {
                             Some(tilt) => {
                                 let (x_deg, y_deg) = tilt.to_deg();
@@ -510,19 +557,18 @@ impl<W: Write> Server<'_, W> {
                                 let x = Fixed::signed(x_deg.into(), 4);
                                 let y = Fixed::signed(y_deg.into(), 4);
                                 self.write_fmt(format_args!("{x},{y}")).await?;
-                                had_reading = true;
+                                *had_reading = true;
                             }
-                            None if had_reading => {
+                            None if *had_reading => {
                                 self.write_line(b"# no reading").await?;
-                                had_reading = false;
+                                *had_reading = false;
                             }
                             None => {}
                         }
                     }
                 }
             }
-        };
-        stop_key(packet.get(..received).unwrap_or(&[])).ok_or(Disconnected)
+        }
     }
 }
 

@@ -425,7 +425,9 @@ impl ScreenKind {
             ScreenKind::ClosingTurned => {
                 "turns the pendant 180° on the same spot, lets go, then presses OK"
             }
-            ScreenKind::NoPlan => "uploads a plan over USB (`plan set`) or presses BACK",
+            ScreenKind::NoPlan => {
+                "uploads a plan over USB (`zerocal pendant load-profile ROBOT`) or presses BACK"
+            }
             ScreenKind::SensorAbsent => {
                 "checks the sensor cable and its 3.3 V; the pendant retries every second"
             }
@@ -480,7 +482,7 @@ impl ScreenKind {
                 "reads the bracket's turn about x and y, its uncertainty and the temperature; OK keeps it in flash (the last per mount, read out by `zerocal pendant brackets`), BACK retakes the last capture"
             }
             ScreenKind::CheckDone => {
-                "exports the check (`zerocal pendant export`) and runs `zerocal check` against the reference session: the pendant solves nothing of a check; hold OK for a new session"
+                "has the check's export (saved by `zerocal pendant check`, which followed it, or by `zerocal pendant export`) and runs `zerocal check` against the reference session: the pendant solves nothing of a check; hold OK for a new session"
             }
             ScreenKind::BracketRefused => {
                 "reads why (a plate tilted more than 0.1°, a turn no bracket has, a reading out of range), fixes it, then OK starts again or BACK retakes the last capture"

@@ -150,6 +150,18 @@ impl TrailerSum {
     }
 }
 
+/// The trailer of the lines of `text` (split as [`str::lines`] splits them: LF or
+/// CR LF ends, a last line without one): what a writer of a whole export in memory
+/// (the desktop's simulator) puts after them, as the pendant's [`crate::log::Export`]
+/// does line by line.
+pub fn trailer_of(text: &str) -> Trailer {
+    let mut sum = TrailerSum::new();
+    for line in text.lines() {
+        sum.add_line(line);
+    }
+    sum.trailer()
+}
+
 /// Whether `line` is meant as a trailer: it starts with [`TRAILER_PREFIX`] (spaces
 /// around it ignored).
 pub fn is_trailer(line: &str) -> bool {
@@ -244,6 +256,16 @@ mod tests {
             changed.check(back),
             Err(TrailerError::CrcDiffers { .. })
         ));
+    }
+
+    #[test]
+    fn a_text_sums_as_its_lines_whatever_their_ends() {
+        let mut s = TrailerSum::new();
+        s.add_line("a");
+        s.add_line("bc");
+        assert_eq!(trailer_of("a\nbc\n"), s.trailer());
+        assert_eq!(trailer_of("a\r\nbc"), s.trailer());
+        assert_eq!(trailer_of(""), TrailerSum::new().trailer());
     }
 
     #[test]

@@ -849,15 +849,17 @@ impl RealSession {
 
 impl RealSession {
     /// The session as the pendant exports it (`zerocal session` reads it): the `#`
-    /// metadata with every stage's readings and temperatures, then one row per
-    /// capture. `robot` is the profile's name.
+    /// metadata with every stage's readings and temperatures, one row per capture,
+    /// then the pendant's end trailer (`zerocal_procedure::export_trailer`), so a copy
+    /// cut or edited on the way is refused as the pendant's would be. `robot` is the
+    /// profile's name.
     pub fn export_text(&self, robot: &str) -> String {
         self.export_with(robot, true)
     }
 
     /// The session as the pendant's check exports it: stage 0's reversal, no stage 1,
     /// the closing reversal and the stage-2 captures at the poses `keep` accepts (by
-    /// their commanded joints, rad).
+    /// their commanded joints, rad), and the end trailer.
     pub fn check_export_text(&self, robot: &str, keep: impl Fn(&[f64; JOINTS]) -> bool) -> String {
         let mut kept = self.clone();
         kept.poses.retain(|p| keep(&p.joints_rad));
@@ -929,6 +931,8 @@ impl RealSession {
                 p.temperature_c.map_or(String::new(), |t| format!("{t:.2}"))
             );
         }
+        let trailer = zerocal_procedure::export_trailer::trailer_of(&out);
+        let _ = writeln!(out, "{trailer}");
         out
     }
 }

@@ -498,6 +498,17 @@ pub fn run(root: &Path, choice: ToolchainChoice) -> Result<DfuImage> {
     verify(&parsed, &segments, &layout)
         .map_err(|e| anyhow::anyhow!("{} differs from the ELF: {e}", dfu.display()))?;
     println!("firmware toolchain: {}", built.toolchain.describe());
+    crate::measured::save(
+        root,
+        "dfu",
+        built.toolchain.kind,
+        &built.toolchain.describe(),
+        &[
+            ("image_bytes", reread.len().to_string()),
+            ("elements", parsed.elements.len().to_string()),
+            ("firmware_flash_bytes", built.usage.flash_bytes.to_string()),
+        ],
+    )?;
     println!(
         "{}: {} bytes, {} elements (USB {STM32_DFU_VENDOR_ID:04x}:{STM32_DFU_PRODUCT_ID:04x}, alt {INTERNAL_FLASH_ALT}), checked against {}:",
         dfu.display(),

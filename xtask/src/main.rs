@@ -10,8 +10,10 @@ mod cad;
 mod certificate;
 mod dfu;
 mod dist;
+mod figures;
 mod fuzz;
 mod history_demo;
+mod measured;
 mod pendant_sim;
 mod postgres;
 mod size;
@@ -48,7 +50,8 @@ enum Command {
     /// are used.
     Setup,
     /// Build the release firmware (firmware/, thumbv7em-none-eabihf) and print its
-    /// flash and static RAM use.
+    /// flash and static RAM use; saved in docs/measured/firmware-TOOLCHAIN.txt (every
+    /// command that builds the firmware saves it), which `figures` writes the docs from.
     Firmware,
     /// Build the release firmware and write target/dfu/zerocal.dfu, a DfuSe image for
     /// the STM32's ROM bootloader (`dfu-util -a 0 -D zerocal.dfu`): the vector table and
@@ -138,6 +141,23 @@ enum Command {
         #[arg(value_enum)]
         action: PostgresAction,
     },
+    /// Write every figure the README and docs/ quote from a simulation, a budget, an
+    /// example's output or the firmware's size into its marked block
+    /// (`<!-- figures:NAME -->` … `<!-- /figures:NAME -->`), each made by the command
+    /// `--list` names: `zerocal` runs (release build), the tests that print figures, and
+    /// the firmware's saved measurements (docs/measured/). `--check` writes nothing and
+    /// fails naming each block whose text is not what its command makes now.
+    Figures {
+        /// Fail on a stale block instead of writing it.
+        #[arg(long)]
+        check: bool,
+        /// Only these figures (default: every one the documents use).
+        #[arg(long, value_name = "NAME")]
+        only: Vec<String>,
+        /// List every figure, its command and where it is used; run nothing.
+        #[arg(long)]
+        list: bool,
+    },
     /// Fuzz the parsers of outside bytes (fuzz/, cargo-fuzz and libFuzzer on the stable
     /// toolchain with RUSTC_BOOTSTRAP=1; installs cargo-fuzz if missing). `--smoke`
     /// runs every target for 20 s from the committed corpus and fails on any crash,
@@ -212,6 +232,9 @@ fn main() -> Result<()> {
                 write_gallery,
             },
         ),
+        Command::Figures { check, only, list } => {
+            figures::run(&repo_root(), &figures::Options { check, only, list })
+        }
         Command::Fuzz {
             targets,
             smoke,
@@ -280,6 +303,18 @@ fn build_firmware(root: &Path, choice: ToolchainChoice) -> Result<FirmwareBuild>
         .join("zerocal-firmware");
     let capacity = size::MemoryCapacity::from_memory_x(&root.join("memory.x"))?;
     let usage = size::MemoryUsage::of_elf(&elf)?;
+    measured::save(
+        root,
+        "firmware",
+        toolchain.kind,
+        &toolchain.describe(),
+        &[
+            ("flash_bytes", usage.flash_bytes.to_string()),
+            ("static_ram_bytes", usage.ram_bytes.to_string()),
+            ("flash_capacity_bytes", capacity.flash_bytes.to_string()),
+            ("ram_capacity_bytes", capacity.ram_bytes.to_string()),
+        ],
+    )?;
     Ok(FirmwareBuild {
         toolchain: toolchain.clone(),
         elf,

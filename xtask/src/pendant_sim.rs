@@ -269,29 +269,43 @@ pub fn run(root: &Path, options: &Options) -> Result<()> {
 }
 
 fn print_session(report: &SessionReport) {
-    println!(
+    print!("{}", session_text(report));
+}
+
+/// What `pendant-sim` prints of its session: the models, then the result beside the
+/// truth (docs/pendant-sim.md quotes it, `cargo xtask figures` writes it there).
+pub fn session_text(report: &SessionReport) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
         "robot: joints move synchronously on a smoothstep profile, slowest joint at {JOINT_SPEED_DEG_S} deg/s peak; \
          on arrival the flange rings {RINGING_DEG} deg at {RINGING_HZ} Hz, decaying with tau {RINGING_TAU_MS} ms; \
          clipping the pendant on or turning it takes {} s",
         HANDLING_MS / 1000
     );
-    println!(
+    let _ = writeln!(
+        out,
         "sensor: SCL3300 mode 4 (first-order filter, tau {FILTER_TAU_MS:.1} ms; RMS noise x {:.2} mg, y {:.2} mg; 0.0055 deg registers) read at 20 Hz over SPI frames; \
          capture = mean of a 2 s still window (41 samples)",
         NOISE_G[0] * 1e3,
         NOISE_G[1] * 1e3
     );
-    println!(
+    let _ = writeln!(
+        out,
         "session: {} poses, {:.1} s on the robot from power-up to the result; flash: {} operations, {} erases",
         report.poses, report.robot_time_s, report.flash_operations, report.erases
     );
-    println!("joint  identified_deg  1sigma_deg  truth_deg   error_deg   error/1sigma");
+    let _ = writeln!(
+        out,
+        "joint  identified_deg  1sigma_deg  truth_deg   error_deg   error/1sigma"
+    );
     let names = ["j2", "j3", "j4", "j5", "j6"];
     match &report.identified {
         Some(id) => {
             for (k, name) in names.iter().enumerate() {
                 let error = id.offsets_deg[k] - report.truth.offsets_deg[k];
-                println!(
+                let _ = writeln!(
+                    out,
                     "{name:<6} {:+.5}        {:.5}     {:+.5}    {:+.6}   {:+.2}",
                     id.offsets_deg[k],
                     id.sigma_deg[k],
@@ -301,13 +315,17 @@ fn print_session(report: &SessionReport) {
                 );
             }
         }
-        None => println!("(no result)"),
+        None => {
+            let _ = writeln!(out, "(no result)");
+        }
     }
-    println!(
+    let _ = writeln!(
+        out,
         "export: {} bytes; second export identical: {}",
         report.export.len(),
         report.second_export_equal
     );
+    out
 }
 
 /// Within 3σ: for a Gaussian estimate, 99.7 % of sessions.

@@ -18,6 +18,20 @@ use zerocal_core::stage2::{FitConfig, Stage2Model};
 use zerocal_procedure::robot_time::CAPTURES_PER_POSE;
 use zerocal_profile::Profile;
 
+/// `--margin-deg`'s help, its default written from the constant the pendant plans
+/// with (`zerocal_procedure::PENDANT_PLAN_MARGIN_DEG`), so the two cannot disagree.
+pub fn margin_help() -> String {
+    let margin = zerocal_procedure::PENDANT_PLAN_MARGIN_DEG;
+    format!(
+        "Planned readings stay within ±(W − margin) at zero offsets (±{:.1}° by default), \
+         leaving room for the offsets not yet known, the sensor's offset (up to 1.45° on an \
+         SCL3300), the base tilt, a bracket's seat and the chip's turn in its box: {margin}° \
+         by default, the pendant's own margin, chosen by Monte-Carlo (docs/error-budget.md) \
+         (deg); it must also be smaller than W. Range: [0, 90] deg.",
+        zerocal_core::stage2::MEMS_RANGE_DEG - margin
+    )
+}
+
 /// Arguments of `zerocal plan`.
 #[derive(Args, Debug, Clone)]
 pub struct PlanArgs {
@@ -35,14 +49,11 @@ pub struct PlanArgs {
     /// flange shows. Range: [0, 3].
     #[arg(long, default_value_t = zerocal_core::plan::SESSION_REVISITS, value_parser = CountIn::<usize>::new(0, 3))]
     pub revisits: usize,
-    /// Sensor window: readings must stay within ±W degrees. Range: (0, 90] deg.
-    #[arg(long, default_value_t = 10.0, value_name = "W", value_parser = RealIn::above(0.0, 90.0, "deg"))]
+    /// Sensor window: readings must stay within ±W degrees (the SCL3300's mode 4 by
+    /// default). Range: (0, 90] deg.
+    #[arg(long, default_value_t = zerocal_core::stage2::MEMS_RANGE_DEG, value_name = "W", value_parser = RealIn::above(0.0, 90.0, "deg"))]
     pub window_deg: f64,
-    /// Planned readings stay within ±(W − margin) at zero offsets, leaving room for
-    /// the offsets not yet known and the sensor's offset (up to 1.45° on an SCL3300):
-    /// 3° by default, chosen by Monte-Carlo (docs/error-budget.md) (deg); it must also
-    /// be smaller than W. Range: [0, 90] deg.
-    #[arg(long, default_value_t = 10.0 - zerocal_sim::montecarlo::PLAN_WINDOW_DEG, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
+    #[arg(long, help = margin_help(), default_value_t = zerocal_procedure::PENDANT_PLAN_MARGIN_DEG, value_parser = RealIn::closed(0.0, 90.0, "deg"))]
     pub margin_deg: f64,
     /// Narrower joint limits than the profile's: CSV lines `joint,min_deg,max_deg`,
     /// the joint by number (1-6) or name (`A5`), model degrees; joints not listed keep

@@ -39,7 +39,7 @@ use zerocal_core::session::{
     stage1_joint1_mismatch, unknown_offset_half_width, BiasSource, Budget, BudgetInputs,
     BudgetTerm, SessionError, SessionReadings, SessionSolution, StageTemperatures,
     DEFAULT_HALF_TURN_TOLERANCE_DEG, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
-    SESSION_JOINTS, STAGE1_JOINT2_TOLERANCE_DEG,
+    SESSION_JOINTS, STAGE1_JOINT1_TOLERANCE_DEG,
 };
 use zerocal_core::stage0::BenchTurnsAt;
 use zerocal_core::stage1::AxisOneTurn;
@@ -248,14 +248,15 @@ pub fn read_export(text: &str) -> Result<ExportContents, String> {
 }
 
 /// Refuses an export whose rows contradict its metadata or that the solver would get
-/// silently wrong: rows at another joint 2 than stage 1's, a pose captured from one
+/// silently wrong: rows at another joint 1 than stage 1's, a pose captured from one
 /// side only.
 fn check_rows(export: &ExportContents, stage1: &AxisOneTurn<f64>) -> Result<(), String> {
     if let Some(i) = stage1_joint1_mismatch(stage1, &export.poses) {
         return Err(format!(
             "line {}: joint 1 at {} deg, but stage 1's j1_deg (line {}) says {} deg: stage 2 runs \
-             with joint 1 where stage 1 had it (tolerance {STAGE1_JOINT2_TOLERANCE_DEG} deg), and \
-             the base's tilt seen from another joint 1 would be read as an offset; correct the export",
+             with joint 1 back where stage 1 had it (tolerance {STAGE1_JOINT1_TOLERANCE_DEG} deg), \
+             and stage 1's base tilt is read at its recorded joint 1, so a wrong record would \
+             move Δθ3 unseen; correct the export",
             export.lines.get(i).copied().unwrap_or(0),
             export.poses[i].joints_rad[0].to_degrees(),
             export.stage1_line,
@@ -562,7 +563,7 @@ pub fn analyse_with(
                 .filter(|s| {
                     let q = profile.stage1_joints_rad;
                     (s.j1_rad - q[0]).abs().max((s.j2_rad - q[1]).abs())
-                        < zerocal_core::session::STAGE1_JOINT2_TOLERANCE_DEG.to_radians()
+                        < zerocal_core::session::STAGE1_JOINT1_TOLERANCE_DEG.to_radians()
                 })
                 .map(|_| profile.stage1_joints_rad),
         },

@@ -11,12 +11,14 @@
 
 mod budget;
 pub mod judge;
+mod stage1_joints;
 
 pub use budget::{
     budget, predict_budget, sensor_offset_x_spec_deg, Budget, BudgetInputs, BudgetTerm,
     PlannedRobot, BUDGET_TERMS, COVERAGE_FACTOR, DEFAULT_LOST_MOTION_DEG,
     DEFAULT_REPEATABILITY_DEG, SENSOR_OFFSET_X_SPEC_G,
 };
+pub use stage1_joints::{stage1_joint1_mismatch, STAGE1_JOINT1_TOLERANCE_DEG};
 
 use crate::bracket::Brackets;
 use crate::capture::{Approach, CaptureIndex};
@@ -795,30 +797,6 @@ pub fn one_sided_pose<T: Real>(
     })
 }
 
-/// How far a stage-2 capture's joint 1 may lie from stage 1's (deg): the tolerance the
-/// pendant also holds a plan's joint 1 to against stage 1's (the link's 3 decimals, and
-/// an `f32` of a few hundred degrees); 5× below the 0.005° aimed at, so a difference
-/// within it moves no offset by anything that matters.
-pub const STAGE1_JOINT2_TOLERANCE_DEG: f64 = 1e-3;
-
-/// The first stage-2 capture whose joint 1 differs from stage 1's first reading by more
-/// than [`STAGE1_JOINT2_TOLERANCE_DEG`]. Stage 1's half turn measures the base's tilt
-/// with joint 1 at its mark, and stage 2 inherits joint 2's angle about that mark's
-/// direction (α + Δθ2): a stage 2 at another joint 1 reads that tilt turned, which the
-/// fit would take for Δθ3. Joint 2 may differ: stage 2 swings it, and its transmission
-/// error is modelled from stage 1's angle on ([`crate::stage2::Param::Harmonic`]).
-pub fn stage1_joint1_mismatch<T: Real>(
-    stage1: &AxisOneTurn<T>,
-    poses: &[PoseReading<T>],
-) -> Option<usize> {
-    let tolerance = crate::real::deg_to_rad(T::lit(STAGE1_JOINT2_TOLERANCE_DEG));
-    poses.iter().position(|p| {
-        let off = (p.joints_rad[0] - stage1.j1_rad).abs();
-        // A non-finite joint disagrees too.
-        !off.is_finite() || off > tolerance
-    })
-}
-
 /// The gain and cross-axis terms a fit estimated (zero where not estimated).
 fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
     let v = |p: Param| r.get(p).map_or(T::zero(), |(v, _)| v);
@@ -961,23 +939,5 @@ mod tests {
             Some(0)
         );
         assert_eq!(first_captures(&poses, Some(&by_index)).unwrap(), [0, 2]);
-    }
-
-    #[test]
-    fn joint_1_must_stay_where_stage_1_had_it() {
-        let turn = AxisOneTurn {
-            before: Tilt::new(0.0, 0.0),
-            after: Tilt::new(0.0, 0.0),
-            j1_rad: 0.0,
-            j2_rad: (-90.0f64).to_radians(),
-        };
-        // Within the tolerance, and joint 2 elsewhere (stage 2 swings it).
-        let near = 0.5 * STAGE1_JOINT2_TOLERANCE_DEG;
-        let poses = [
-            at([near, -60.0, 10.0, 0.0, 0.0, 0.0]),
-            at([-90.0, -90.0, 10.0, 0.0, 0.0, 0.0]),
-        ];
-        assert_eq!(stage1_joint1_mismatch(&turn, &poses[..1]), None);
-        assert_eq!(stage1_joint1_mismatch(&turn, &poses), Some(1));
     }
 }

@@ -30,7 +30,9 @@
 //!
 //! The link's `brackets` prints the kept calibrations, one [`bracket_line`] a mount;
 //! `zerocal pendant brackets` reads them back ([`parse_bracket_line`]) and writes the
-//! profile's `[[bracket]]` TOML, stamping the date (the pendant has no calendar).
+//! profile's `[[bracket]]` TOML, stamping the date (the pendant has no calendar). The
+//! link's `bracket status` says where a calibration in progress stands, one
+//! [`progress_line`]: `zerocal pendant bracket-calibrate` follows it step by step.
 
 use crate::capture::Capture;
 use crate::machine::record::{id_bytes, id_of};
@@ -45,10 +47,15 @@ use zerocal_core::real::{rad_to_deg, Real};
 use zerocal_core::stage0::BenchTurns;
 
 mod line;
+mod progress;
 #[cfg(test)]
 mod tests;
 
 pub use line::{bracket_line, parse_bracket_line, BracketLineError, BRACKET_LINE_DECIMALS};
+pub use progress::{
+    parse_progress_line, progress_line, BracketProgress, BracketRefusal, CalibrationStage,
+    ProgressLineError,
+};
 
 /// The readings of a bracket calibration (each the mean of [`CAPTURES_PER_READING`]
 /// still windows).

@@ -19,6 +19,7 @@ pub const HELP: &[&str] = &[
     "  profile set  upload a robot profile (zerocal pendant load-profile), then 'end'",
     "  erase all  erase session, bias, last result, profile, plan and brackets",
     "  bracket calibrate upper-arm|flange ID  calibrate a bracket, guided on the pendant",
+    "  bracket status  where a bracket calibration stands (zerocal pendant bracket-calibrate)",
     "  brackets   the brackets' calibrations kept (zerocal pendant brackets)",
     "  results    the last results kept, oldest first (zerocal pendant export)",
 ];
@@ -54,6 +55,8 @@ pub enum Command {
     Results,
     /// `check`
     Check,
+    /// `bracket status`
+    BracketStatus,
 }
 
 /// What is wrong with a line.
@@ -128,7 +131,7 @@ impl fmt::Display for LinkError {
             }
             LinkError::BracketCalibrateUsage => write!(
                 f,
-                "usage: bracket calibrate upper-arm|flange ID (ID: 1-{BRACKET_ID_LEN} letters, digits, '-' or '_')"
+                "usage: bracket calibrate upper-arm|flange ID (ID: 1-{BRACKET_ID_LEN} letters, digits, '-' or '_'), or bracket status"
             ),
             LinkError::PlanTooShort { rows } => write!(
                 f,
@@ -141,7 +144,7 @@ impl fmt::Display for LinkError {
 
 impl Command {
     /// Every command, in the order `help` lists them.
-    pub const ALL: [Command; 13] = [
+    pub const ALL: [Command; 14] = [
         Command::Help,
         Command::Status,
         Command::Live,
@@ -155,6 +158,7 @@ impl Command {
         Command::Brackets,
         Command::Results,
         Command::Check,
+        Command::BracketStatus,
     ];
 
     /// The words a person (or `zerocal pendant`) types for it: defined here once, for
@@ -174,6 +178,7 @@ impl Command {
             Command::Brackets => "brackets",
             Command::Results => "results",
             Command::Check => "check",
+            Command::BracketStatus => "bracket status",
         }
     }
 }
@@ -214,8 +219,8 @@ pub fn parse_command(line: &str) -> Result<Command, LinkError> {
 pub const BRACKET_CALIBRATE: &str = "bracket calibrate";
 
 /// Parses `bracket calibrate upper-arm|flange ID`, which starts a bracket's
-/// calibration on the pendant; `None` for a line that does not begin with `bracket`
-/// (a [`parse_command`] line).
+/// calibration on the pendant; `None` for a line that does not begin with `bracket`,
+/// or is [`Command::BracketStatus`] (a [`parse_command`] line).
 ///
 /// # Errors
 /// [`LinkError::BracketCalibrateUsage`]: another word, a mount that is not one, an
@@ -223,7 +228,7 @@ pub const BRACKET_CALIBRATE: &str = "bracket calibrate";
 pub fn parse_bracket_calibrate(line: &str) -> Option<Result<(BracketMount, BracketId), LinkError>> {
     let mut words = line.split_whitespace();
     let mut expected = BRACKET_CALIBRATE.split(' ');
-    if words.next() != expected.next() {
+    if words.next() != expected.next() || parse_command(line) == Ok(Command::BracketStatus) {
         return None;
     }
     let parsed = match (words.next(), words.next(), words.next(), words.next()) {
@@ -279,6 +284,15 @@ mod tests {
             .unwrap();
         assert_eq!((mount, id.as_str()), (BracketMount::Flange, "F-017"));
         assert_eq!(parse_bracket_calibrate("brackets"), None);
+        assert_eq!(parse_bracket_calibrate(" bracket  status "), None);
+        assert_eq!(
+            parse_command(" bracket  status "),
+            Ok(Command::BracketStatus)
+        );
+        assert_eq!(
+            parse_bracket_calibrate("bracket status now"),
+            Some(Err(LinkError::BracketCalibrateUsage))
+        );
         assert_eq!(parse_bracket_calibrate("status"), None);
         for bad in [
             "bracket",

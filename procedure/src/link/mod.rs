@@ -13,6 +13,7 @@
 //! | `profile set` | uploads a robot profile (`zerocal pendant load-profile` writes it), then `end` |
 //! | `erase all` | erases the store: session, bias, last result, profile, plan and brackets |
 //! | `bracket calibrate upper-arm\|flange ID` | starts a bracket's calibration on the pendant ([`parse_bracket_calibrate`]) |
+//! | `bracket status` | where a bracket calibration stands (`crate::bracket_cal::progress_line`) |
 //! | `brackets` | the brackets' calibrations kept, one line a mount (`crate::bracket_cal::bracket_line`) |
 //! | `results` | the results kept ([`crate::kept`]): [`KEPT_RESULTS_HEAD`], each result's lines (`crate::log::write_kept_result`), oldest first, then [`KEPT_RESULTS_END`] |
 //!

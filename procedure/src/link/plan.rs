@@ -12,7 +12,7 @@ use zerocal_core::real::{deg_to_rad, Real};
 
 /// How far a six-joint `plan set` row's joints 1 and 2 may lie from stage 1's (deg): the
 /// session's own tolerance for its captures' joint 2.
-pub const STAGE1_JOINT_TOLERANCE_DEG: f64 = zerocal_core::session::STAGE1_JOINT2_TOLERANCE_DEG;
+pub const STAGE1_JOINT_TOLERANCE_DEG: f64 = zerocal_core::session::STAGE1_JOINT1_TOLERANCE_DEG;
 
 /// A `plan set` in progress: rows accumulate here and replace the plan only on `end`.
 /// A row is `j3,j4,j5,j6` (joints 1 and 2 where stage 1 has them) or `j1,…,j6`, in the

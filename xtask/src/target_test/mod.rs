@@ -262,6 +262,23 @@ pub fn run(root: &Path, choice: ToolchainChoice) -> Result<()> {
     );
 
     let firmware = crate::build_firmware(root, choice)?;
+    crate::measured::save(
+        root,
+        "target-test",
+        toolchain.kind,
+        &toolchain.describe(),
+        &[
+            ("cases", cases.len().to_string()),
+            ("results", expected.len().to_string()),
+            (
+                "worst_difference_deg",
+                format!("{:.2e}", worst_difference(&expected, &report.results)),
+            ),
+            ("tolerance_deg", format!("{TOLERANCE_DEG:e}")),
+            ("solve_instructions", solve_instructions.to_string()),
+            ("solve_stack_bytes", solve_stack_bytes.to_string()),
+        ],
+    )?;
     let figures = Figures {
         solve_instructions,
         solve_stack_bytes,

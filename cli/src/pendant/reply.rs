@@ -1,221 +1,30 @@
-//! `zerocal pendant --port PORT ACTION`: the desktop end of the pendant's USB serial
-//! link (README, "The USB link").
-//!
-//! - `status`: the pendant's `status` lines.
-//! - `load-profile ROBOT [--plan FILE] [--brackets FILE]`: the robot profile (`profile
-//!   set`, the lines of `zerocal_procedure::profile`: its kinematics, display, masses
-//!   and the brackets' calibrations from the `--brackets` file, [`crate::brackets`]),
-//!   then the plan `zerocal program --robot ROBOT` drives (or FILE, `zerocal plan
-//!   --csv` output), so the pendant's screens, the robot program and the export all
-//!   name the same robot and poses, and the pendant's fit is `zerocal session`'s.
-//! - `export [--out FILE] [--results FILE]`: the session as `zerocal session` reads it;
-//!   with a file, the results the pendant keeps (`results`, the lines
-//!   `zerocal_procedure::log::read_kept_results` reads) into their own file beside it.
-//! - `results [--out FILE]`: the results the pendant keeps (its last eight, each with
-//!   its ID and the pendant unit's).
-//! - `erase`: `erase all` (session, bias, last result, profile, plan, brackets).
-//! - `brackets [--out FILE] [--date YYYY-MM-DD]`: the brackets' calibrations made on the
-//!   pendant (`brackets`), as the `[[bracket]]` TOML `load-profile --brackets` reads,
-//!   dated today (the pendant has no calendar) or `--date`.
-//!
-//! Each action is a list of requests (bytes), each with the grammar its reply must
-//! have ([`Expect`]). Nothing the port sends is believed unchecked: a reply is
+//! A request's reply, read and checked: what each must be ([`Expect`]), read as
 //! printable ASCII lines within the link's bounds ([`read_reply`]: line length, lines
-//! and bytes of the reply, time), then exactly the lines its request has
-//! ([`check_reply`]): `status` parsed field by field and printed from the fields, the
-//! export whole by its end trailer, the changes by their confirmation lines. The I/O is
-//! any `Read + Write` (a serial port opened raw; a scripted port in the tests). The
-//! requests and checks are tested against the pendant's own link task on the desktop
-//! (`zerocal_pendant_desktop::conversation::converse`). docs/pendant-link.md has the grammar.
+//! and bytes of the reply, time on the link's clock), then checked line by line
+//! against its grammar ([`check_reply`]), and `status` printed from its parsed fields
+//! ([`render_status`]).
 
-use std::io::{Read, Write};
-use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-use clap::{Args, Subcommand};
-use zerocal_core::bracket::Brackets;
-use zerocal_core::model::JOINTS;
+use zerocal_core::bracket::BracketMount;
+use zerocal_procedure::bracket_cal::parse_progress_line;
 use zerocal_procedure::export_trailer;
 use zerocal_procedure::kept::KEPT_RESULTS;
 use zerocal_procedure::link::{
-    parse_plan_stored, parse_profile_stored, parse_status, phase_name, Command, Stage2Status,
-    Status, ERASED, ERROR_PREFIX, MAX_COMMAND_BYTES, PLAN_PROMPT, PROFILE_PROMPT, REPLY_LINE_BYTES,
-    STATUS_LINES, UPLOAD_END,
+    parse_plan_stored, parse_profile_stored, phase_name, Command, Stage2Status, Status, ERASED,
+    ERROR_PREFIX, PLAN_CSV_HEADER, PLAN_PROMPT, PROFILE_PROMPT, REPLY_LINE_BYTES, STATUS_LINES,
+    UPLOAD_END,
 };
-use zerocal_procedure::link::{KEPT_RESULTS_END, KEPT_RESULTS_HEAD};
+use zerocal_procedure::link::{parse_status, KEPT_RESULTS_END, KEPT_RESULTS_HEAD};
 use zerocal_procedure::log::{
     parse_meta, read_kept_results, LogError, LogLine, LogReader, EXPORT_MAX_LINES,
     KEPT_RESULT_LINES, LOG_HEADER,
 };
-use zerocal_procedure::profile::{JointName, PendantProfile};
-use zerocal_procedure::{RobotName, MAX_PLAN_POSES};
-use zerocal_profile::Profile;
+use zerocal_procedure::profile::{ProfileStep, ProfileUpload, PROFILE_LINES};
 
+use super::link::Link;
 use crate::error::CliError;
 use crate::log_file::parse_number;
-
-/// The exit statuses, for `--help`.
-fn exit_statuses() -> String {
-    format!(
-        "Exit status: 0 the pendant answered as it must; 2 usage, a port that does not \
-         open, or no answer within {} s; 3 the pendant refused, or answered something \
-         else than the request's reply (not printable text, too long, not over within \
-         {} s, cut short, a field that does not parse, an export whose end trailer is \
-         missing or does not match, no confirmation). docs/pendant-link.md has the replies.",
-        Timeouts::LINK.quiet.as_secs_f64(),
-        Timeouts::LINK.reply.as_secs_f64()
-    )
-}
-
-/// `zerocal pendant`.
-#[derive(Args, Debug)]
-#[command(after_help = exit_statuses())]
-pub struct PendantArgs {
-    /// The pendant's serial port (`/dev/ttyACM0`, `COM5`).
-    #[arg(long, value_name = "PORT")]
-    pub port: String,
-    /// What to do.
-    #[command(subcommand)]
-    pub action: PendantAction,
-}
-
-/// What `zerocal pendant` does.
-#[derive(Subcommand, Debug, Clone)]
-pub enum PendantAction {
-    /// Print the pendant's status.
-    Status,
-    /// Store a robot profile on the pendant and its plan (clears the session).
-    LoadProfile {
-        /// Built-in profile name (`zerocal robots`) or a TOML file.
-        robot: String,
-        /// The plan (`zerocal plan --csv`); default: the one `zerocal program` drives.
-        #[arg(long, value_name = "FILE")]
-        plan: Option<PathBuf>,
-        /// The brackets' calibrations (TOML, `[[bracket]]` tables: mount, id,
-        /// rotation_deg, uncertainty_deg, date, temperature_c); default: both
-        /// uncalibrated.
-        #[arg(long, value_name = "FILE")]
-        brackets: Option<PathBuf>,
-    },
-    /// Save the session (`zerocal session` reads it), and with --out the results the
-    /// pendant keeps beside it.
-    Export {
-        /// Write it here instead of standard output.
-        #[arg(long, short, value_name = "FILE")]
-        out: Option<PathBuf>,
-        /// Write the kept results here; default with --out: FILE.results (a file of
-        /// their own: `zerocal session` reads the export alone).
-        #[arg(long, value_name = "FILE")]
-        results: Option<PathBuf>,
-    },
-    /// Read the results the pendant keeps (its last eight, oldest first).
-    Results {
-        /// Write them here instead of standard output.
-        #[arg(long, short, value_name = "FILE")]
-        out: Option<PathBuf>,
-    },
-    /// Erase the pendant's store: session, bias, last result, profile, plan and brackets.
-    Erase,
-    /// Read the brackets' calibrations made on the pendant (`bracket calibrate`), as
-    /// the `[[bracket]]` TOML `load-profile --brackets` takes.
-    Brackets {
-        /// Write it here instead of standard output.
-        #[arg(long, short, value_name = "FILE")]
-        out: Option<PathBuf>,
-        /// The calibrations' date (the pendant has no calendar); default: today (UTC).
-        #[arg(long, value_name = "YYYY-MM-DD")]
-        date: Option<String>,
-    },
-}
-
-/// The profile as the pendant keeps it, with the brackets' calibrations: the masses
-/// are the profile's (`Profile::mass_model`), as `zerocal session` takes them.
-///
-/// # Errors
-/// A name or a joint name too long for the pendant, a mass beyond what its line takes.
-pub fn pendant_profile(
-    profile: &Profile,
-    brackets: Brackets<f64>,
-) -> Result<PendantProfile<f64>, CliError> {
-    let mut robot = RobotName::new();
-    robot.push_str(&profile.name).map_err(|()| {
-        CliError::Input(format!(
-            "robot profile name '{}' is longer than the pendant's 32 bytes",
-            profile.name
-        ))
-    })?;
-    let mut names: [JointName; JOINTS] = Default::default();
-    for (n, j) in names.iter_mut().zip(&profile.joints) {
-        n.push_str(&j.name).map_err(|()| {
-            CliError::Input(format!(
-                "joint name '{}' is longer than the pendant's 3 bytes",
-                j.name
-            ))
-        })?;
-    }
-    Ok(PendantProfile {
-        robot,
-        // The pendant's SCL3300 reads in the `axis` convention.
-        convention: zerocal_core::model::Convention::Axis,
-        arm: profile.arm,
-        stage1_rad: [profile.stage1_joints_rad[0], profile.stage1_joints_rad[1]],
-        display: profile.controller.display(names),
-        masses: profile.mass_model(),
-        brackets,
-    })
-}
-
-/// A command's line, as the pendant's parser takes it.
-fn command_line(command: Command) -> Vec<u8> {
-    format!("{}\r\n", command.word()).into_bytes()
-}
-
-/// The bytes of `profile set` … `end`.
-///
-/// # Errors
-/// A line the pendant's buffer cannot hold (never, for the built-in profiles).
-pub fn profile_request(p: &PendantProfile<f64>) -> Result<Vec<u8>, CliError> {
-    let mut out = command_line(Command::ProfileSet);
-    for i in 0.. {
-        match p.line(i) {
-            None => break,
-            // The pendant's line editor holds MAX_COMMAND_BYTES, the line end included.
-            Some(Ok(line)) if line.len() + 2 <= MAX_COMMAND_BYTES => {
-                out.extend_from_slice(line.as_bytes());
-                out.extend_from_slice(b"\r\n");
-            }
-            Some(_) => {
-                return Err(CliError::Input(format!(
-                    "profile line {} does not fit the pendant's line",
-                    i + 1
-                )))
-            }
-        }
-    }
-    Ok(out)
-}
-
-/// The bytes of `plan set` … `end`: every joint in model degrees.
-///
-/// # Errors
-/// More poses than the pendant holds.
-pub fn plan_request(poses_rad: &[[f64; JOINTS]]) -> Result<Vec<u8>, CliError> {
-    if poses_rad.len() > MAX_PLAN_POSES {
-        return Err(CliError::Input(format!(
-            "{} poses: the pendant holds at most {MAX_PLAN_POSES} (each is captured twice)",
-            poses_rad.len()
-        )));
-    }
-    let mut out = command_line(Command::PlanSet);
-    for q in poses_rad {
-        let row: Vec<String> = q.iter().map(|v| format!("{:.6}", v.to_degrees())).collect();
-        out.extend_from_slice(row.join(",").as_bytes());
-        out.extend_from_slice(b"\r\n");
-    }
-    out.extend_from_slice(UPLOAD_END.as_bytes());
-    out.extend_from_slice(b"\r\n");
-    Ok(out)
-}
 
 /// How long the desktop waits for the pendant.
 #[derive(Clone, Copy, Debug)]
@@ -256,6 +65,22 @@ pub enum Expect {
     Brackets(String),
     /// The kept results: [`KEPT_RESULTS_HEAD`], their lines, [`KEPT_RESULTS_END`].
     KeptResults,
+    /// One line, exactly this one: the pendant's confirmation of a change (`clear`,
+    /// `check`, `bracket calibrate`), its words from `zerocal_procedure`. `name` is the
+    /// request's, for messages.
+    Line {
+        /// The request's name.
+        name: &'static str,
+        /// The confirmation.
+        line: String,
+    },
+    /// The pose list `plan` shows: [`PLAN_CSV_HEADER`], then this many rows of six
+    /// joints (deg).
+    Plan(usize),
+    /// The profile `profile` shows, to its [`UPLOAD_END`]: lines `profile set` takes.
+    Profile,
+    /// The `bracket status` line.
+    BracketProgress,
 }
 
 impl Expect {
@@ -266,8 +91,11 @@ impl Expect {
             Expect::Export => EXPORT_MAX_LINES,
             Expect::Erased => 1,
             Expect::ProfileStored(_) | Expect::PlanStored(_) => 2,
-            Expect::Brackets(_) => zerocal_core::bracket::BracketMount::ALL.len(),
+            Expect::Brackets(_) => BracketMount::ALL.len(),
             Expect::KeptResults => 2 + KEPT_RESULTS * KEPT_RESULT_LINES,
+            Expect::Line { .. } | Expect::BracketProgress => 1,
+            Expect::Plan(poses) => 1 + poses,
+            Expect::Profile => PROFILE_LINES,
         }
     }
 
@@ -292,11 +120,14 @@ impl Expect {
                 Expect::PlanStored(_) => last != PLAN_PROMPT,
                 Expect::Brackets(_) => lines.len() >= self.max_lines(),
                 Expect::KeptResults => last == KEPT_RESULTS_END,
+                Expect::Line { .. } | Expect::BracketProgress => true,
+                Expect::Plan(_) => lines.len() >= self.max_lines(),
+                Expect::Profile => last == UPLOAD_END,
             }
     }
 
     /// What the reply is called in messages.
-    fn name(&self) -> &'static str {
+    pub fn name(&self) -> &'static str {
         match self {
             Expect::Status => Command::Status.word(),
             Expect::Export => Command::Export.word(),
@@ -306,80 +137,12 @@ impl Expect {
             Expect::PlanStored(_) => Command::PlanSet.word(),
             Expect::Brackets(_) => Command::Brackets.word(),
             Expect::KeptResults => Command::Results.word(),
+            Expect::Line { name, .. } => name,
+            Expect::Plan(_) => Command::Plan.word(),
+            Expect::Profile => Command::Profile.word(),
+            Expect::BracketProgress => Command::BracketStatus.word(),
         }
     }
-}
-
-/// One request: its bytes, and what its reply must be.
-#[derive(Clone, Debug)]
-pub struct Request {
-    /// What is sent.
-    pub bytes: Vec<u8>,
-    /// What must come back.
-    pub expect: Expect,
-}
-
-/// The requests of an action, in order. A request is sent only once the one before it
-/// was answered as it must be (a plan must not follow a refused profile).
-///
-/// # Errors
-/// An unknown robot, a plan that does not read or does not fit.
-pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
-    let request = |command: Command, expect| Request {
-        bytes: command_line(command),
-        expect,
-    };
-    Ok(match action {
-        PendantAction::Status => vec![request(Command::Status, Expect::Status)],
-        PendantAction::Export { .. } => vec![request(Command::Export, Expect::Export)],
-        PendantAction::Results { .. } => vec![request(Command::Results, Expect::KeptResults)],
-        PendantAction::Erase => vec![request(Command::Erase, Expect::Erased)],
-        PendantAction::Brackets { date, .. } => {
-            let date = match date {
-                Some(d) => crate::brackets::calibration_date(d)?,
-                None => crate::brackets::today_utc(),
-            };
-            vec![request(Command::Brackets, Expect::Brackets(date))]
-        }
-        PendantAction::LoadProfile {
-            robot,
-            plan,
-            brackets,
-        } => {
-            let profile = crate::robot::load(robot)?;
-            let brackets = match brackets {
-                Some(path) => crate::brackets::read(path)?,
-                None => Brackets::default(),
-            };
-            let poses = match plan {
-                Some(path) => crate::program::read_plan(path, &profile)?,
-                None => crate::program::default_plan(robot, &default_timing()?)?,
-            };
-            let pendant = pendant_profile(&profile, brackets)?;
-            vec![
-                Request {
-                    bytes: profile_request(&pendant)?,
-                    expect: Expect::ProfileStored(pendant.robot.as_str().to_owned()),
-                },
-                Request {
-                    bytes: plan_request(&poses)?,
-                    expect: Expect::PlanStored(poses.len()),
-                },
-            ]
-        }
-    })
-}
-
-fn default_timing() -> Result<crate::timing::TimingArgs, CliError> {
-    use clap::Parser;
-    #[derive(Parser)]
-    struct Defaults {
-        #[command(flatten)]
-        timing: crate::timing::TimingArgs,
-    }
-    Defaults::try_parse_from(["timing"])
-        .map(|d| d.timing)
-        .map_err(|e| CliError::Input(e.to_string()))
 }
 
 /// A reply as read: its lines (without their CR LF), and whether it ended as its
@@ -466,11 +229,11 @@ impl std::fmt::Display for ReplyError {
 /// # Errors
 /// [`ReplyError`].
 pub fn read_reply(
-    port: &mut impl Read,
+    port: &mut impl Link,
     expect: &Expect,
     timeouts: Timeouts,
 ) -> Result<Reply, ReplyError> {
-    let start = Instant::now();
+    let start = port.now();
     let mut last = start;
     let mut lines = Vec::new();
     let mut line: Vec<u8> = Vec::new();
@@ -480,7 +243,7 @@ pub fn read_reply(
     let max_bytes = expect.max_bytes();
     let mut buf = [0_u8; 512];
     loop {
-        if start.elapsed() >= timeouts.reply {
+        if port.now().saturating_sub(start) >= timeouts.reply {
             return Err(ReplyError::Deadline {
                 limit: timeouts.reply,
                 bytes: offset,
@@ -501,7 +264,7 @@ pub fn read_reply(
             Err(e) => return Err(ReplyError::Port(e)),
         };
         if n > 0 {
-            last = Instant::now();
+            last = port.now();
         }
         for &byte in buf.get(..n).unwrap_or(&[]) {
             let at = offset;
@@ -546,7 +309,7 @@ pub fn read_reply(
                 (_, None) => return Err(ReplyError::NonPrintable { byte, at }),
             }
         }
-        if n == 0 && last.elapsed() >= timeouts.quiet {
+        if n == 0 && port.now().saturating_sub(last) >= timeouts.quiet {
             if offset == 0 {
                 return Err(ReplyError::NoAnswer(timeouts.quiet));
             }
@@ -657,6 +420,68 @@ pub fn check_reply(expect: &Expect, reply: &Reply) -> Result<String, CliError> {
             read_kept_results(&text).map_err(|e| wrong(e.to_string()))?;
             Ok(text)
         }
+        Expect::Line { line, .. } => match lines.as_slice() {
+            [got] if got == line => Ok(format!("{got}\n")),
+            [] => Err(wrong(format!("no confirmation line{}", cut()))),
+            [other, ..] => Err(wrong(format!(
+                "the pendant did not confirm: '{other}' instead of '{line}'"
+            ))),
+        },
+        Expect::BracketProgress => match lines.as_slice() {
+            [got] => parse_progress_line(got)
+                .map(|_| format!("{got}\n"))
+                .map_err(|e| wrong(format!("'{got}': {e}"))),
+            [] => Err(wrong(format!("no line{}", cut()))),
+            [other, ..] => Err(wrong(format!("not the pendant's answer: '{other}'"))),
+        },
+        Expect::Plan(poses) => {
+            if lines.first() != Some(&PLAN_CSV_HEADER) {
+                return Err(wrong(format!(
+                    "not the pendant's answer: '{}'",
+                    lines.first().copied().unwrap_or("")
+                )));
+            }
+            if lines.len() != poses + 1 {
+                return Err(wrong(format!(
+                    "{} rows, but status said {poses} poses{}",
+                    lines.len() - 1,
+                    cut()
+                )));
+            }
+            for (k, row) in lines.iter().enumerate().skip(1) {
+                let joints: Vec<Option<f64>> = row.split(',').map(parse_number).collect();
+                if joints.len() != 6 || joints.iter().any(Option::is_none) {
+                    return Err(wrong(format!(
+                        "row {k} is not six joints in degrees: '{row}'"
+                    )));
+                }
+            }
+            let mut text = lines.join("\n");
+            text.push('\n');
+            Ok(text)
+        }
+        Expect::Profile => {
+            if !reply.over {
+                return Err(wrong(format!(
+                    "cut after {} lines (no '{UPLOAD_END}'){}",
+                    lines.len(),
+                    cut()
+                )));
+            }
+            let mut upload = ProfileUpload::<f64>::default();
+            for line in &lines {
+                match upload.feed(line) {
+                    Ok(ProfileStep::More) => {}
+                    Ok(ProfileStep::Done(_)) => {
+                        let mut text = lines.join("\n");
+                        text.push('\n');
+                        return Ok(text);
+                    }
+                    Err(e) => return Err(wrong(e.to_string())),
+                }
+            }
+            Err(wrong(format!("no '{UPLOAD_END}'")))
+        }
         Expect::PlanStored(poses) => match lines.as_slice() {
             [PLAN_PROMPT, stored] if parse_plan_stored(stored) == Some(*poses) => {
                 Ok(format!("{stored}\n"))
@@ -761,115 +586,4 @@ pub fn render_status(s: &Status<'_>) -> String {
         s.dropped_frames, s.display_faults
     ));
     out
-}
-
-/// Sends an action's requests in turn, each only after the one before it was answered
-/// as it must be, and returns what to print.
-///
-/// # Errors
-/// No answer, or a port error (exit 2); a reply that is not its request's (exit 3).
-pub fn perform(
-    port: &mut (impl Read + Write),
-    action: &PendantAction,
-    timeouts: Timeouts,
-) -> Result<String, CliError> {
-    let mut out = String::new();
-    for request in requests(action)? {
-        port.write_all(&request.bytes)
-            .and_then(|()| port.flush())
-            .map_err(|e| CliError::Input(format!("the port: {e}")))?;
-        let reply = match read_reply(port, &request.expect, timeouts) {
-            Ok(reply) => reply,
-            Err(e @ (ReplyError::NoAnswer(_) | ReplyError::Port(_))) => {
-                return Err(CliError::Input(e.to_string()))
-            }
-            Err(e) => return Err(CliError::Refused(format!("{}: {e}", request.expect.name()))),
-        };
-        out.push_str(&check_reply(&request.expect, &reply)?);
-    }
-    Ok(out)
-}
-
-/// Runs `zerocal pendant`.
-///
-/// # Errors
-/// A port that does not open, no answer (exit 2); a reply that is not what the
-/// request's must be (exit 3).
-pub fn run(args: &PendantArgs) -> Result<String, CliError> {
-    // Before the port: a bad robot or plan is named without a pendant.
-    requests(&args.action)?;
-    // A USB CDC port ignores the baud rate; opened raw (no echo, no line editing).
-    let mut port = serialport::new(&args.port, 115_200)
-        .timeout(Duration::from_millis(50))
-        .open()
-        .map_err(|e| CliError::Input(format!("{}: {e}", args.port)))?;
-    let out_text = perform(&mut port, &args.action, Timeouts::LINK).map_err(|e| match e {
-        CliError::Input(m) => CliError::Input(format!("{}: {m}", args.port)),
-        refused => refused,
-    })?;
-    let write = |path: &PathBuf, text: &str| {
-        std::fs::write(path, text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
-    };
-    if let PendantAction::Export { out, results } = &args.action {
-        let results = results
-            .clone()
-            .or_else(|| out.as_ref().map(|p| results_path(p)));
-        let mut said = String::new();
-        if let Some(path) = out {
-            write(path, &out_text)?;
-            said = format!(
-                "wrote {} (read it with `zerocal session {}`)\n",
-                path.display(),
-                path.display()
-            );
-        }
-        let Some(path) = results else {
-            return Ok(out_text);
-        };
-        let kept = perform(
-            &mut port,
-            &PendantAction::Results { out: None },
-            Timeouts::LINK,
-        )
-        .map_err(|e| match e {
-            CliError::Input(m) => CliError::Input(format!("{}: {m}", args.port)),
-            refused => refused,
-        })?;
-        write(&path, &kept)?;
-        if out.is_none() {
-            // The export still goes to standard output, alone.
-            return Ok(out_text);
-        }
-        said.push_str(&format!(
-            "wrote {} (the results the pendant keeps)\n",
-            path.display()
-        ));
-        return Ok(said);
-    }
-    if let PendantAction::Results { out: Some(path) } = &args.action {
-        write(path, &out_text)?;
-        return Ok(format!(
-            "wrote {} (the results the pendant keeps)\n",
-            path.display()
-        ));
-    }
-    if let PendantAction::Brackets {
-        out: Some(path), ..
-    } = &args.action
-    {
-        write(path, &out_text)?;
-        return Ok(format!(
-            "wrote {} (give it to `zerocal pendant load-profile ROBOT --brackets {}`)\n",
-            path.display(),
-            path.display()
-        ));
-    }
-    Ok(out_text)
-}
-
-/// Where `export --out FILE` puts the kept results: `FILE.results`.
-pub fn results_path(export: &std::path::Path) -> PathBuf {
-    let mut name = export.as_os_str().to_owned();
-    name.push(".results");
-    PathBuf::from(name)
 }
