@@ -8,12 +8,14 @@
 //! gives a value, the profile leaves it out and says so in `missing`: zerocal refuses
 //! what needs it rather than guess.
 //!
-//! Built-in profiles are the files of `data/robots/`, compiled in ([`builtin`]).
+//! Built-in profiles are the files of `data/robots/`, compiled in ([`builtin`]). A
+//! profile of any other six-axis arm is imported from its URDF ([`urdf`]).
 
 pub mod bounds;
 mod controller;
 pub mod flange;
 mod raw;
+pub mod urdf;
 
 pub use controller::{Controller, Coupling, OffsetUnit, OffsetValue};
 pub use flange::{FlangeInterface, Iso9409};

@@ -468,10 +468,9 @@ impl Profile {
             (Some(unit), Some(offset_where), Some(_)) => {
                 let unit = match unit.as_str() {
                     "deg" => OffsetUnit::Degrees,
-                    "motor_rad" => OffsetUnit::MotorRadians(positive(
-                        &c.gear_ratio,
-                        "controller.gear_ratio",
-                    )?),
+                    "motor_rad" => {
+                        OffsetUnit::MotorRadians(positive(&c.gear_ratio, "controller.gear_ratio")?)
+                    }
                     "counts" => OffsetUnit::Counts(positive(
                         &c.counts_per_deg,
                         "controller.counts_per_deg",
@@ -502,12 +501,10 @@ impl Profile {
                     String::from(crate::controller::OFFSET_ENTRY_NOT_STATED),
                 )
             }
-            _ => {
-                return Err(ProfileError::new(
-                    "controller.offset_unit",
-                    "offset_unit, offset_where and offset_source go together: give all three or none",
-                ))
-            }
+            _ => return Err(ProfileError::new(
+                "controller.offset_unit",
+                "offset_unit, offset_where and offset_source go together: give all three or none",
+            )),
         };
         Ok(Controller {
             sign: c.sign,
