@@ -155,18 +155,23 @@ pub fn read(bytes: &[u8]) -> Result<Description, UrdfError> {
     let text = std::str::from_utf8(bytes).map_err(|e| UrdfError::NotUtf8 {
         at_byte: e.valid_up_to(),
     })?;
-    if let Some((line, what)) = xacro_left(text) {
-        return Err(UrdfError::Xacro { line, what });
-    }
     let options = roxmltree::ParsingOptions {
         allow_dtd: false,
         nodes_limit: MAX_NODES,
         ..roxmltree::ParsingOptions::default()
     };
-    let doc = roxmltree::Document::parse_with_options(text, options)
-        .map_err(|e| UrdfError::Xml(e.to_string()))?;
+    let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
+        // A xacro whose namespace is not declared is not XML: say what it is.
+        match xacro_element_in_text(text) {
+            Some(line) => UrdfError::Xacro {
+                line,
+                what: "a <xacro:...> element",
+            },
+            None => UrdfError::Xml(e.to_string()),
+        }
+    })?;
     let root = doc.root_element();
-    if let Some((line, what)) = expression_left(&doc) {
+    if let Some((line, what)) = xacro_left(&doc) {
         return Err(UrdfError::Xacro { line, what });
     }
     if root.tag_name().name() != "robot" {
@@ -195,26 +200,27 @@ pub fn read(bytes: &[u8]) -> Result<Description, UrdfError> {
     })
 }
 
-/// The first trace of xacro in the text, with its line: its namespace or one of its
-/// elements (read before the XML, whose parser would stop at an undeclared `xacro:`).
-fn xacro_left(text: &str) -> Option<(u32, &'static str)> {
-    for (i, l) in text.lines().enumerate() {
-        let what = if l.contains("xmlns:xacro") {
-            "the xacro namespace (xmlns:xacro)"
-        } else if l.contains("<xacro:") {
-            "a <xacro:...> element"
-        } else {
-            continue;
-        };
-        return Some((u32::try_from(i + 1).unwrap_or(u32::MAX), what));
-    }
-    None
+/// The line of the first `<xacro:` in the text, for a file that is not XML.
+fn xacro_element_in_text(text: &str) -> Option<u32> {
+    text.lines()
+        .position(|l| l.contains("<xacro:"))
+        .map(|i| u32::try_from(i + 1).unwrap_or(u32::MAX))
 }
 
-/// A `${...}` expression or `$(...)` substitution left in an attribute (comments may
-/// hold either: they are not read).
-fn expression_left(doc: &roxmltree::Document<'_>) -> Option<(u32, &'static str)> {
+/// What is left of xacro in a parsed file, with its line: an element of its namespace
+/// (`<xacro:include>`, `<xacro:macro>`, ...), or a `${...}` expression or `$(...)`
+/// substitution in an attribute. The namespace declaration alone is not: ROS 1's xacro
+/// leaves it on the `<robot>` it expanded. Comments may hold anything: not read.
+fn xacro_left(doc: &roxmltree::Document<'_>) -> Option<(u32, &'static str)> {
     doc.descendants().find_map(|n| {
+        let at = |pos: usize| doc.text_pos_at(pos).row;
+        if n.is_element()
+            && n.tag_name()
+                .namespace()
+                .is_some_and(|ns| ns.contains("wiki/xacro"))
+        {
+            return Some((at(n.range().start), "a <xacro:...> element"));
+        }
         n.attributes().find_map(|a| {
             let what = if a.value().contains("${") {
                 "an unexpanded ${...} expression"
@@ -223,7 +229,7 @@ fn expression_left(doc: &roxmltree::Document<'_>) -> Option<(u32, &'static str)>
             } else {
                 return None;
             };
-            Some((doc.text_pos_at(a.range().start).row, what))
+            Some((at(a.range().start), what))
         })
     })
 }

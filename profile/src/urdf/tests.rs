@@ -333,9 +333,16 @@ fn xacros_other_bytes_and_huge_files_are_refused_before_parsing() {
         .unwrap_err()
         .to_string();
     assert!(
-        m.contains("line 2: the xacro namespace") && m.contains("xacro FILE.xacro > FILE.urdf"),
+        m.contains("line 3: a <xacro:...> element") && m.contains("xacro FILE.xacro > FILE.urdf"),
         "{m}"
     );
+    let undeclared = String::from_utf8(xacro)
+        .unwrap()
+        .replace(" xmlns:xacro=\"http://www.ros.org/wiki/xacro\"", "");
+    let m = import(undeclared.as_bytes(), &options("x", Family::Kuka))
+        .unwrap_err()
+        .to_string();
+    assert!(m.contains("line 3: a <xacro:...> element"), "{m}");
     let mut bytes = fixture_bytes("kuka-kr6-r900-sixx");
     bytes.insert(50, 0xff);
     assert!(matches!(
@@ -481,4 +488,42 @@ fn the_profile_cites_the_file_and_says_what_it_misses() {
     // The pendant's joint names by family.
     let names: Vec<&str> = p.joints.iter().map(|j| j.name.as_str()).collect();
     assert_eq!(names, ["J1", "J2", "J3", "J4", "J5", "J6"]);
+}
+
+/// The URDFs ROS 1's xacro wrote into the repositories themselves (`data/urdf/upstream/`,
+/// README.md): they keep `xmlns:xacro` on `<robot>`, which is no sign of a xacro left,
+/// and import to the built-in profile's arm (limits to the six decimals they are
+/// written with: 1e-4 deg).
+#[test]
+fn urdfs_expanded_by_ros_1_import_to_the_built_in_arm() {
+    let mut draw = Draw(3);
+    for name in ["kuka-kr16", "fanuc-m20ia"] {
+        let path = format!(
+            "{}/../data/urdf/upstream/{name}.urdf",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        let bytes = std::fs::read(&path).unwrap();
+        assert!(
+            String::from_utf8_lossy(&bytes).contains("xmlns:xacro"),
+            "{name}"
+        );
+        let fam = crate::builtin(name).unwrap().family;
+        let ours = import(&bytes, &options(name, fam))
+            .unwrap_or_else(|e| panic!("{name}: {e}"))
+            .profile;
+        let builtin = crate::builtin(name).unwrap();
+        for _ in 0..1000 {
+            let q = draw.pose(&builtin);
+            let (_, b) = builtin.arm.frames(&q);
+            let (_, o) = ours.arm.frames(&q);
+            assert!((b.translation_m - o.translation_m).norm() <= 1e-9, "{name}");
+            assert!(angle_between(&b.rotation, &o.rotation) <= 1e-9, "{name}");
+        }
+        for (b, o) in builtin.joints.iter().zip(&ours.joints) {
+            assert!(
+                (b.min_deg - o.min_deg).abs() < 1e-4 && (b.max_deg - o.max_deg).abs() < 1e-4,
+                "{name}"
+            );
+        }
+    }
 }
