@@ -413,7 +413,8 @@ fn profile_check_exits_by_severity() {
 }
 
 /// `profile import` refuses by name: a xacro (with how to expand it), an `--out` that
-/// exists (never overwritten), a `--family` it does not know (exit 2); an arm with no
+/// exists (never overwritten), a `--family` it does not know, a `--name` a profile
+/// cannot have (exit 2); an arm with no
 /// stage-1 pose (joint 1 turning less than a half turn: exit 3).
 #[test]
 fn import_refusals_through_the_binary() {
@@ -458,6 +459,21 @@ fn import_refusals_through_the_binary() {
         "kawasaki",
     ]);
     assert_eq!(out.status.code(), Some(2));
+    let out = zerocal(&[
+        "profile",
+        "import",
+        urdf.to_str().unwrap(),
+        "--out",
+        d.join("named.toml").to_str().unwrap(),
+        "--name",
+        "GP25 cell 4",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("--name"),
+        "{}",
+        text(&out.stderr)
+    );
 
     let gp25 = std::fs::read_to_string(&urdf).unwrap();
     let j1 = gp25.find("<joint name=\"joint_1_s\"").unwrap();

@@ -32,8 +32,25 @@ pub struct ImportArgs {
     pub family: Family,
     /// The profile's name (what `--robot` and the pendant show): lowercase letters,
     /// digits and '-', at most 32 bytes. Default: from the URDF's robot name.
-    #[arg(long, value_name = "NAME")]
+    #[arg(long, value_name = "NAME", value_parser = profile_name)]
     pub name: Option<String>,
+}
+
+/// `--name`: what a profile's `name` may be (`zerocal_profile::bounds`).
+fn profile_name(text: &str) -> Result<String, String> {
+    let ok = !text.is_empty()
+        && text.len() <= zerocal_profile::bounds::MAX_NAME_BYTES
+        && text
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-');
+    if ok {
+        Ok(text.to_owned())
+    } else {
+        Err(format!(
+            "'{text}': lowercase letters, digits and '-', 1 to {} bytes",
+            zerocal_profile::bounds::MAX_NAME_BYTES
+        ))
+    }
 }
 
 /// `--family`: the profile families, listed in the help.
