@@ -480,7 +480,7 @@ pub(super) fn profile_toml(
     }
     let _ = writeln!(
         w,
-        "\n[stage1]\n# Derived from U1 (zerocal's choice, not a source's): joint 1 where its half turn\n# fits, the upper arm (joint 2 to 3) and the forearm (joint 3 to the wrist centre)\n# upright, the wrist at zero; in the controller's values. The reader turns joints 2\n# and 3 to the nearest pose free of gravity torque.\npose_deg = {}",
+        "\n[stage1]\n# Derived from U1 (zerocal's choice, not a source's): joint 1 where its half turn\n# fits, the upper arm (joint 2 to 3) and the forearm (joint 3 to the wrist centre)\n# upright, the wrist at zero; in the controller's values. The reader turns joints 2\n# and 3 to the nearest pose free of gravity torque, and mounts the upper-arm bracket\n# there: the pendant's x along joint 2's axis, its z up.\npose_deg = {}",
         nums(&shown)
     );
     let _ = writeln!(
