@@ -18,6 +18,7 @@ pub mod log_file;
 pub mod pendant;
 pub mod plan;
 pub mod plots;
+pub mod profile_cmd;
 pub mod program;
 pub mod record;
 pub mod report_notes;

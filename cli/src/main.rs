@@ -16,6 +16,8 @@
 //! - `zerocal restore EXPORT --reference ID`: after a motor swap, back to a reference's zero.
 //! - `zerocal history [SERIAL] [--db PATH|URL] [--json] [--plot DIR]`: the calibration
 //!   history per robot serial.
+//! - `zerocal profile import FILE.urdf --out P.toml` / `profile check P.toml`: a profile
+//!   from a robot's URDF, and what a profile lets zerocal do.
 
 use clap::{Parser, Subcommand};
 use std::io::Write;
@@ -80,6 +82,9 @@ enum Command {
     /// List the calibration history (every session and check, per robot serial) as a
     /// table or JSON, or plot each joint's zero over time with its U(k=2) band.
     History(zerocal_cli::history::HistoryArgs),
+    /// A robot profile from the robot's URDF (`import`), and what a profile lets zerocal
+    /// do and is missing (`check`, its exit status by severity).
+    Profile(zerocal_cli::profile_cmd::ProfileArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
@@ -155,11 +160,16 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Certificate(args) => zerocal_cli::certificate::run(args),
         Command::Restore(args) => zerocal_cli::restore::run(args),
         Command::History(args) => zerocal_cli::history::run(args),
+        // Prints and exits by itself (`main`): its check's status is by severity.
+        Command::Profile(_) => Err(CliError::Input(String::from("profile: not run here"))),
     }
 }
 
 fn main() -> ExitCode {
     let cli: Cli = zerocal_cli::args::parse();
+    if let Command::Profile(args) = &cli.command {
+        return zerocal_cli::profile_cmd::main(args);
+    }
     match run(&cli) {
         Ok(out) => {
             let mut stdout = std::io::stdout().lock();

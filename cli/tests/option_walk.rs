@@ -287,6 +287,8 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
             "status".into(),
         ],
         "bracket" => vec!["bracket".into(), "--robot".into(), "ur5e".into()],
+        // No numeric option of its own: only its help is walked.
+        "profile" => vec!["profile".into(), "check".into(), "kuka-kr16".into()],
         // A history of its own next to the walk's log, never the user's default one.
         "history" => vec![
             "history".into(),

@@ -68,7 +68,23 @@ pub struct Controller {
     pub offset_where: String,
 }
 
+/// What `offset_where` says when a `[controller]` table leaves the offset's unit and
+/// place out (a profile imported from a URDF: no URDF gives them).
+pub const OFFSET_ENTRY_NOT_STATED: &str = "not stated in the profile (no offset_unit, offset_where, offset_source): the offset is given in the controller's joint degrees; where and in what unit the controller takes it, see docs/controllers/";
+
+/// What `offset_where` says for a profile without a `[controller]` table.
+pub const MODEL_TERMS: &str = "model terms only: the profile has no [controller] table, so the offset is the model's (the URDF's) joint angle change in degrees, not yet in the controller's sign, zero, coupling or unit";
+
 impl Controller {
+    /// The controller of a profile without a `[controller]` table: it is taken to show
+    /// the model's angles, and offsets are in model terms ([`MODEL_TERMS`]).
+    pub fn model_terms() -> Self {
+        Controller {
+            offset_where: String::from(MODEL_TERMS),
+            ..Controller::degrees()
+        }
+    }
+
     /// Plain degrees, no signs, no coupling (the generic controller).
     pub fn degrees() -> Self {
         Controller {

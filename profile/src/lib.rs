@@ -8,13 +8,15 @@
 //! gives a value, the profile leaves it out and says so in `missing`: zerocal refuses
 //! what needs it rather than guess.
 //!
-//! Built-in profiles are the files of `data/robots/`, compiled in ([`builtin`]).
+//! Built-in profiles are the files of `data/robots/`, compiled in ([`builtin`]). A
+//! profile of any other six-axis arm is imported from its URDF ([`urdf`]).
 
 pub mod bounds;
 mod controller;
 mod entry;
 pub mod flange;
 mod raw;
+pub mod urdf;
 
 pub use controller::{Controller, Coupling, OffsetUnit, OffsetValue};
 pub use entry::{EntryKnowledge, Known};
@@ -120,6 +122,12 @@ pub struct Profile {
     pub masses: Option<MassModel<f64>>,
     /// What the controller shows and takes.
     pub controller: Controller,
+    /// Whether the profile has a `[controller]` table; without one, [`Self::controller`]
+    /// is [`Controller::model_terms`]: offsets in model terms only.
+    pub controller_stated: bool,
+    /// Whether its `[controller]` says in what unit and where an offset is entered
+    /// (`offset_unit`, `offset_where`, `offset_source`).
+    pub offset_entry_stated: bool,
     /// The stage-1 pose in the model's angles (rad): the profile's `stage1.pose_deg`
     /// turned to no gravity torque on joints 2 and 3 (`zerocal_core::plan::stage1`),
     /// as the pendant, the program and every shown pose use it.

@@ -26,7 +26,8 @@ pub(crate) struct Profile {
     pub(crate) kinematics: Kinematics,
     pub(crate) joint: Vec<RawJoint>,
     pub(crate) flange: Option<Flange>,
-    controller: RawController,
+    /// Absent: the controller shows the model's angles (offsets in model terms only).
+    controller: Option<RawController>,
     stage1: Stage1,
     stage2: Stage2,
 }
@@ -81,9 +82,11 @@ struct RawController {
     zero_deg: [f64; JOINTS],
     coupling: String,
     source: String,
-    offset_unit: String,
-    offset_where: String,
-    offset_source: String,
+    /// `offset_unit`, `offset_where` and `offset_source` go together; absent, the
+    /// offset is given in the controller's joint degrees, where to enter it unsaid.
+    offset_unit: Option<String>,
+    offset_where: Option<String>,
+    offset_source: Option<String>,
     gear_ratio: Option<[f64; JOINTS]>,
     counts_per_deg: Option<[f64; JOINTS]>,
 }
@@ -153,8 +156,12 @@ impl Profile {
             }
         };
         cited(&self.kinematics.source, "kinematics.source")?;
-        cited(&self.controller.source, "controller.source")?;
-        cited(&self.controller.offset_source, "controller.offset_source")?;
+        if let Some(c) = &self.controller {
+            cited(&c.source, "controller.source")?;
+            if let Some(id) = &c.offset_source {
+                cited(id, "controller.offset_source")?;
+            }
+        }
         let mut infos = Vec::with_capacity(JOINTS);
         for (k, j) in self.joint.iter().enumerate() {
             let key = |what: &str| format!("joint {}: {what}", k + 1);
@@ -218,6 +225,11 @@ impl Profile {
             joints: infos,
             arm,
             masses,
+            controller_stated: self.controller.is_some(),
+            offset_entry_stated: self
+                .controller
+                .as_ref()
+                .is_some_and(|c| c.offset_unit.is_some()),
             controller,
             stage1_joints_rad,
             stage1_stated_rad: stated_rad,
@@ -374,33 +386,40 @@ impl Profile {
                 text(key, t, bounds::MAX_TEXT_CHARS)?;
             }
         }
-        let c = &self.controller;
-        symmetric(
-            "controller.zero_deg",
-            &c.zero_deg,
-            bounds::MAX_JOINT_DEG,
-            deg,
-        )?;
-        if let Some(r) = &c.gear_ratio {
-            let (lo, hi) = bounds::GEAR_RATIO;
-            bounds::numbers(
-                "controller.gear_ratio",
-                r,
-                lo,
-                hi,
-                "motor turns per joint turn",
+        if let Some(c) = &self.controller {
+            symmetric(
+                "controller.zero_deg",
+                &c.zero_deg,
+                bounds::MAX_JOINT_DEG,
+                deg,
             )?;
-        }
-        if let Some(r) = &c.counts_per_deg {
-            let (lo, hi) = bounds::COUNTS_PER_DEG;
-            bounds::numbers("controller.counts_per_deg", r, lo, hi, "counts/deg")?;
+            if let Some(r) = &c.gear_ratio {
+                let (lo, hi) = bounds::GEAR_RATIO;
+                bounds::numbers(
+                    "controller.gear_ratio",
+                    r,
+                    lo,
+                    hi,
+                    "motor turns per joint turn",
+                )?;
+            }
+            if let Some(r) = &c.counts_per_deg {
+                let (lo, hi) = bounds::COUNTS_PER_DEG;
+                bounds::numbers("controller.counts_per_deg", r, lo, hi, "counts/deg")?;
+            }
+            for (key, t) in [
+                ("controller.coupling", Some(&c.coupling)),
+                ("controller.source", Some(&c.source)),
+                ("controller.offset_unit", c.offset_unit.as_ref()),
+                ("controller.offset_where", c.offset_where.as_ref()),
+                ("controller.offset_source", c.offset_source.as_ref()),
+            ] {
+                if let Some(t) = t {
+                    text(key, t, bounds::MAX_TEXT_CHARS)?;
+                }
+            }
         }
         for (key, t) in [
-            ("controller.coupling", &c.coupling),
-            ("controller.source", &c.source),
-            ("controller.offset_unit", &c.offset_unit),
-            ("controller.offset_where", &c.offset_where),
-            ("controller.offset_source", &c.offset_source),
             ("stage2.mount_z", &self.stage2.mount_z),
             ("stage2.mount_x", &self.stage2.mount_x),
         ] {
@@ -414,8 +433,12 @@ impl Profile {
         )
     }
 
+    /// The `[controller]` table read and checked; without one, the model's own angles
+    /// ([`Controller::model_terms`]).
     fn controller(&self) -> Result<Controller, ProfileError> {
-        let c = &self.controller;
+        let Some(c) = &self.controller else {
+            return Ok(Controller::model_terms());
+        };
         if let Some(k) = c.sign.iter().position(|s| *s != 1 && *s != -1) {
             return Err(ProfileError::new(
                 format!("controller.sign[{k}]"),
@@ -441,27 +464,54 @@ impl Profile {
             }
             _ => Ok(*v),
         };
-        let unit = match c.offset_unit.as_str() {
-            "deg" => OffsetUnit::Degrees,
-            "motor_rad" => {
-                OffsetUnit::MotorRadians(positive(&c.gear_ratio, "controller.gear_ratio")?)
+        let (unit, offset_where) = match (&c.offset_unit, &c.offset_where, &c.offset_source) {
+            (Some(unit), Some(offset_where), Some(_)) => {
+                let unit = match unit.as_str() {
+                    "deg" => OffsetUnit::Degrees,
+                    "motor_rad" => {
+                        OffsetUnit::MotorRadians(positive(&c.gear_ratio, "controller.gear_ratio")?)
+                    }
+                    "counts" => OffsetUnit::Counts(positive(
+                        &c.counts_per_deg,
+                        "controller.counts_per_deg",
+                    )?),
+                    other => {
+                        return Err(ProfileError::new(
+                            "controller.offset_unit",
+                            format!("'{other}' is not deg, motor_rad or counts"),
+                        ))
+                    }
+                };
+                (unit, offset_where.clone())
             }
-            "counts" => {
-                OffsetUnit::Counts(positive(&c.counts_per_deg, "controller.counts_per_deg")?)
+            (None, None, None) => {
+                for (key, given) in [
+                    ("controller.gear_ratio", c.gear_ratio.is_some()),
+                    ("controller.counts_per_deg", c.counts_per_deg.is_some()),
+                ] {
+                    if given {
+                        return Err(ProfileError::new(
+                            key,
+                            "given without controller.offset_unit: nothing to scale",
+                        ));
+                    }
+                }
+                (
+                    OffsetUnit::Degrees,
+                    String::from(crate::controller::OFFSET_ENTRY_NOT_STATED),
+                )
             }
-            other => {
-                return Err(ProfileError::new(
-                    "controller.offset_unit",
-                    format!("'{other}' is not deg, motor_rad or counts"),
-                ))
-            }
+            _ => return Err(ProfileError::new(
+                "controller.offset_unit",
+                "offset_unit, offset_where and offset_source go together: give all three or none",
+            )),
         };
         Ok(Controller {
             sign: c.sign,
             zero_deg: c.zero_deg,
             coupling,
             unit,
-            offset_where: c.offset_where.clone(),
+            offset_where,
         })
     }
 

@@ -477,3 +477,52 @@ fn every_builtin_says_where_its_brackets_register() {
         }
     }
 }
+
+/// Without a `[controller]` table a profile reads in model terms (a URDF import without
+/// `--family`); the offset's unit and place go together, all three or none, and a scale
+/// without a unit is refused by name.
+#[test]
+fn a_controller_table_may_be_left_out_or_leave_the_offset_entry_out() {
+    let base = include_str!("../../data/robots/kuka-kr6-r900-sixx.toml");
+    let start = base.find("\n[controller]\n").unwrap_or(0);
+    let end = base.find("\n[stage1]\n").unwrap_or(0);
+    let without = format!("{}{}", &base[..start], &base[end..]);
+    let p = parse(&without).unwrap_or_else(|e| panic!("{e}"));
+    assert!(!p.controller_stated && !p.offset_entry_stated);
+    assert_eq!(p.controller, Controller::model_terms());
+    assert!(p.controller.offset_where.starts_with("model terms only"));
+    let full = parse(base).unwrap_or_else(|e| panic!("{e}"));
+    assert!(full.controller_stated && full.offset_entry_stated);
+    // The stage-1 pose is the same: KUKA's controller shows the model's angles.
+    assert_eq!(p.stage1_joints_rad, full.stage1_joints_rad);
+
+    let no_entry = base
+        .replace("offset_unit = \"deg\"\n", "")
+        .replace("offset_source = \"S5\"\n", "");
+    let cut = no_entry.find("offset_where").unwrap_or(0);
+    let line_end = cut + no_entry[cut..].find('\n').unwrap_or(0) + 1;
+    let no_entry = format!("{}{}", &no_entry[..cut], &no_entry[line_end..]);
+    let p = parse(&no_entry).unwrap_or_else(|e| panic!("{e}"));
+    assert!(p.controller_stated && !p.offset_entry_stated);
+    assert_eq!(p.controller.unit, OffsetUnit::Degrees);
+    for (what, text, key) in [
+        (
+            "unit alone",
+            no_entry.replace("source = \"S4\"", "source = \"S4\"\noffset_unit = \"deg\""),
+            "go together",
+        ),
+        (
+            "a ratio without a unit",
+            no_entry.replace(
+                "source = \"S4\"",
+                "source = \"S4\"\ngear_ratio = [1.0, 1.0, 1.0, 1.0, 1.0, 1.0]",
+            ),
+            "controller.gear_ratio",
+        ),
+    ] {
+        let e = parse(&text)
+            .err()
+            .unwrap_or_else(|| panic!("{what}: accepted"));
+        assert!(e.to_string().contains(key), "{what}: {e}");
+    }
+}

@@ -23,7 +23,7 @@ use anyhow::{bail, Context, Result};
 use crate::toolchain;
 
 /// Every target, in `fuzz/fuzz_targets/`.
-pub const TARGETS: [&str; 12] = [
+pub const TARGETS: [&str; 13] = [
     "decimal",
     "link_lines",
     "link_serve",
@@ -31,6 +31,7 @@ pub const TARGETS: [&str; 12] = [
     "export_lines",
     "record",
     "profile",
+    "urdf",
     "limits",
     "scl3300",
     "store_restore",
@@ -38,7 +39,7 @@ pub const TARGETS: [&str; 12] = [
     "kept_results",
 ];
 
-/// Seconds each target runs in `--smoke`: twelve targets in about four minutes after
+/// Seconds each target runs in `--smoke`: thirteen targets in about four minutes after
 /// the build, on one core.
 pub const SMOKE_SECONDS: u32 = 20;
 
@@ -180,6 +181,7 @@ fn inputs(fuzz_dir: &Path, target: &str) -> Vec<PathBuf> {
         "link_lines" | "link_serve" => Some("link"),
         "log_reader" => Some("log"),
         "profile" => Some("profile"),
+        "urdf" => Some("urdf"),
         "limits" => Some("limits"),
         _ => None,
     };
