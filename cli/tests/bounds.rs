@@ -100,7 +100,8 @@ fn endless_files_are_refused_at_their_cap() {
 #[test]
 fn the_largest_export_fits_a_quarter_of_its_cap() {
     let profile = zerocal_profile::builtin("kuka-kr6-r900-sixx").expect("built in");
-    // Twice each of DEFAULT_POSES (24) poses: MAX_POSES (48) rows, the pendant's most.
+    // Twice each of the default plan's poses and revisits: 86 rows, within the
+    // pendant's most (MAX_CAPTURES).
     let world = zerocal_sim::world::WorldConfig::real();
     let session =
         zerocal_sim::world::RealSession::simulate_default_plan(&profile, &world, 5).expect("plan");
@@ -110,7 +111,11 @@ fn the_largest_export_fits_a_quarter_of_its_cap() {
         .filter(|l| !l.starts_with('#') && !l.starts_with("j1_deg"))
         .count();
     println!("export of {rows} rows: {} bytes", text.len());
-    assert_eq!(rows, zerocal_core::plan::MAX_POSES);
+    assert_eq!(
+        rows,
+        2 * (zerocal_core::plan::SESSION_POSES + zerocal_core::plan::SESSION_REVISITS)
+    );
+    assert!(rows <= zerocal_core::capture::MAX_CAPTURES);
     assert!(text.len() * 4 <= MAX_EXPORT_BYTES, "{}", text.len());
 }
 

@@ -88,7 +88,7 @@ fn line_of(text: &str, prefix: &str) -> (usize, String) {
 fn a_session_without_stage_0_carries_the_sensor_offset_in_its_budget() {
     let s = simulated(&WorldConfig::real(), 31);
     let text = s.export_text("kuka-kr6-r900-sixx");
-    let (_, stage0) = line_of(&text, "# stage0_reversal_deg");
+    let (_, stage0) = line_of(&text, "# stage0_bench_deg");
     let truth = s.truth_rad().map(f64::to_degrees);
     for (name, edited) in [
         ("none.csv", text.replace(&stage0, "# stage0_bias_deg none")),
@@ -142,10 +142,10 @@ fn a_session_without_stage_0_carries_the_sensor_offset_in_its_budget() {
 #[test]
 fn an_unknown_metadata_key_is_refused_by_name_and_line() {
     let text = simulated(&WorldConfig::real(), 32).export_text("kuka-kr6-r900-sixx");
-    let (n, _) = line_of(&text, "# stage0_reversal_deg");
+    let (n, _) = line_of(&text, "# stage0_bench_deg");
     refused(
         "misspelt.csv",
-        &text.replacen("# stage0_reversal_deg", "# stage0_reversal_dge", 1),
+        &text.replacen("# stage0_bench_deg", "# stage0_reversal_dge", 1),
         &[
             &format!("line {n}"),
             "unknown metadata key 'stage0_reversal_dge'",
@@ -190,10 +190,10 @@ fn a_metadata_key_given_twice_is_refused_with_both_lines() {
     );
 }
 
-/// Stage 1's j2_deg against the rows' joint 2 (−90°): a record 10° or 0.5° off would move
-/// Δθ2 and Δθ3 by as much, unseen by the fit.
+/// Stage 1's j2_deg against the profile's stage-1 pose (−90°): a record 10° or 0.5° off
+/// would move Δθ2 and Δθ3 by as much, unseen by the fit (stage 2's rows swing joint 2).
 #[test]
-fn stage_1_joint_2_disagreeing_with_the_rows_is_refused() {
+fn stage_1_joint_2_disagreeing_with_the_profile_is_refused() {
     let s = simulated(&WorldConfig::real(), 34);
     let text = s.export_text("kuka-kr6-r900-sixx");
     let (_, stage1) = line_of(&text, "# stage1_readings_deg");
@@ -206,10 +206,12 @@ fn stage_1_joint_2_disagreeing_with_the_rows_is_refused() {
             &stage1,
             &stage1.replace(&written, &format!(" j2_deg {:.12}", j2 + off)),
         );
+        let (stage1_line, _) = line_of(&text, "# stage1_readings_deg");
+        let _ = first_row;
         refused(
             "j2.csv",
             &edited,
-            &[&format!("line {}", first_row + 1), "stage 1's j2_deg"],
+            &[&format!("line {stage1_line}"), "stage 1's j2_deg"],
         );
     }
 }

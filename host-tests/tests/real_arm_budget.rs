@@ -1,14 +1,19 @@
-//! A real arm gets numbers, and honest ones: with every error source of the simulated
-//! world on (the sensor's, today's robot's, and the real arm's misaligned axes,
-//! transmission error and wrist compliance at their stated ranges), over 200 sessions
-//! on each of seven profiles, no session is refused, the k = 2 budget covers each joint's
-//! error in at least 95 % of sessions, and entering the offsets positions a 0.1 m tool
-//! within 10 % of the best zero-only correction (mean distance over 200 reachable
-//! poses). The share of sessions with every joint within 0.005° is printed
-//! (`--nocapture`): on a real arm it is limited by the transmission error, which no
-//! zero removes (docs/error-budget.md).
+//! A real arm gets numbers, and honest ones (issue 30's acceptance): with every error
+//! source of the simulated world on (the sensor's, the robot's, the real arm's misaligned
+//! axes, transmission error 0.005-0.03° peak to peak with more harmonics than the fit
+//! estimates, wrist compliance, brackets calibrated by their own procedure, stage 0 read
+//! at four headings turned by hand), over 200 sessions on each of the six family
+//! profiles (the UR5e reported, its parallel wrist excepted):
 //!
-//! About 1 min on two cores in the test profile (optimised).
+//! - no session is refused;
+//! - every joint is within 0.005° of its constant zero in at least 80 % of sessions
+//!   (98 % without transmission error);
+//! - the k = 2 budget covers each joint's error in 95-99.5 % of sessions, neither short
+//!   nor a stack of worst cases, and its median is at most 0.010° on every joint;
+//! - entering the offsets leaves the TCP within 1.03 of the best zero-only correction
+//!   (mean over 200 reachable poses, a 0.1 m tool).
+//!
+//! About 3 min on two cores in the test profile (optimised).
 
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -22,25 +27,51 @@ use zerocal_sim::world::WorldConfig;
 /// Sessions per profile.
 const SESSIONS: usize = 200;
 
-/// The budget's coverage aimed at: k = 2 is about 95 % (GUM 6.3.3).
-const COVERAGE: f64 = 0.95;
+/// The shares of sessions a k = 2 budget covers (GUM 6.3.3: about 95 %); above the
+/// upper one it is a stack of worst cases, no longer an uncertainty.
+const COVERAGE: (f64, f64) = (0.95, 0.995);
+
+/// The median expanded uncertainty every joint must reach (deg).
+const MEDIAN_U_DEG: f64 = 0.010;
+
+/// Sessions with every joint within 0.005° of its constant zero, at least.
+const WITHIN_SHARE: f64 = 0.80;
+
+/// The same without transmission error.
+const WITHIN_SHARE_WITHOUT_TE: f64 = 0.98;
 
 /// Entering the offsets leaves the TCP within this factor of the best zero-only
 /// correction's mean error.
-const TCP_FACTOR: f64 = 1.10;
+const TCP_FACTOR: f64 = 1.03;
 
-/// `tcp_factor`: the TCP bound asserted (`None`: printed only). An arm with parallel
-/// twins (the UR5e's joints 3 and 4 after joint 2) is not held to it: gravity cannot
-/// split their zeros, the session reports the sum on the first and the second "not
-/// identifiable", and the TCP needs the split (docs/error-budget.md).
-fn acceptance(world: &WorldConfig, what: &str, seed: u64, tcp_factor: Option<f64>) {
-    println!("{what}: robot, refused/{SESSIONS}, coverage j2..j6, mean U(k=2) j2..j6 (deg), within 0.005 deg, TCP after/best (mean, worst)");
-    // One profile per controller family, and the PUMA 560.
-    for robot in common::FAMILY_PROFILES.iter().chain(&["puma560"]) {
+/// What a world's acceptance holds it to.
+struct Bounds {
+    within: f64,
+    coverage: Option<(f64, f64)>,
+    median_u_deg: Option<f64>,
+    tcp_factor: Option<f64>,
+}
+
+/// Runs the six family profiles in `world`; holds each but the UR5e (reported: gravity
+/// cannot split its parallel J3/J4, docs/real-arm.md) to `bounds`.
+fn acceptance(world: &WorldConfig, what: &str, seed: u64, bounds: &Bounds) {
+    println!(
+        "{what}: robot, refused/{SESSIONS}, coverage j2..j6, median U(k=2) j2..j6 (deg), within 0.005 deg, TCP after/best (mean, worst)"
+    );
+    let mut failures = Vec::new();
+    for robot in common::FAMILY_PROFILES {
         let profile = zerocal_profile::builtin(robot).unwrap();
         let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
         let out = run_with_tcp(&profile, &plan, world, &fit, SESSIONS, seed, true);
         let s = summarise(&out, 0.005);
+        let median: [f64; 5] = core::array::from_fn(|k| {
+            let mut u: Vec<f64> = out
+                .iter()
+                .filter_map(|o| o.budget.as_ref().map(|b| b.expanded_rad[k].to_degrees()))
+                .collect();
+            u.sort_by(f64::total_cmp);
+            u.get(u.len() / 2).copied().unwrap_or(f64::INFINITY)
+        });
         let ratios: Vec<f64> = out
             .iter()
             .filter_map(|o| o.tcp.map(|t| t.mean_after_mm / t.mean_best_mm))
@@ -51,7 +82,7 @@ fn acceptance(world: &WorldConfig, what: &str, seed: u64, tcp_factor: Option<f64
             "  {robot:<19} {:>3}  {}  {}  {:>5.1} %  {mean_ratio:.3} {worst_ratio:.3}",
             s.refused,
             s.covered.map(|c| format!("{:.3}", c)).join(" "),
-            s.mean_k2_deg.map(|u| format!("{u:.4}")).join(" "),
+            median.map(|u| format!("{u:.4}")).join(" "),
             100.0 * s.all_within
         );
         let reasons: Vec<String> = out
@@ -63,41 +94,94 @@ fn acceptance(world: &WorldConfig, what: &str, seed: u64, tcp_factor: Option<f64
                     .map(|e| format!("seed {}: {e}", o.seed))
             })
             .collect();
-        assert!(reasons.is_empty(), "{what}, {robot}: refused {reasons:?}");
-        for (k, c) in s.covered.iter().enumerate() {
-            assert!(*c >= COVERAGE, "{what}, {robot} j{}: k=2 covers {c}", k + 2);
+        if !reasons.is_empty() {
+            failures.push(format!("{robot}: refused {reasons:?}"));
         }
-        assert_eq!(ratios.len(), SESSIONS, "{what}, {robot}: TCP test missing");
-        let twins = profile.arm.parallel_twins().iter().any(|t| *t);
-        if let (Some(factor), false) = (tcp_factor, twins) {
-            assert!(
-                mean_ratio <= factor,
-                "{what}, {robot}: TCP after/best {mean_ratio}"
-            );
+        if profile.arm.parallel_twins().iter().any(|t| *t) {
+            continue;
+        }
+        if s.all_within < bounds.within {
+            failures.push(format!("{robot}: within 0.005 deg {}", s.all_within));
+        }
+        for k in 0..5 {
+            if let Some((lo, hi)) = bounds.coverage {
+                let c = s.covered[k];
+                if !(lo..=hi).contains(&c) {
+                    failures.push(format!("{robot} j{}: k=2 covers {c}", k + 2));
+                }
+            }
+            if let Some(limit) = bounds.median_u_deg {
+                if median[k] > limit {
+                    failures.push(format!("{robot} j{}: median U {}", k + 2, median[k]));
+                }
+            }
+        }
+        if let Some(factor) = bounds.tcp_factor {
+            if mean_ratio > factor {
+                failures.push(format!("{robot}: TCP after/best {mean_ratio}"));
+            }
         }
     }
+    assert!(failures.is_empty(), "{what}: {failures:#?}");
 }
 
-/// Every source on at its stated range.
+/// Every source on at its stated range, transmission error 0.005-0.03° peak to peak.
 #[test]
 fn a_real_arm_at_the_stated_ranges_gets_covered_numbers() {
     let world = WorldConfig {
         robot: RobotSources::REAL_ARM,
         ..WorldConfig::real()
     };
-    acceptance(&world, "every source on", 71, Some(TCP_FACTOR));
+    acceptance(
+        &world,
+        "every source on",
+        71,
+        &Bounds {
+            within: WITHIN_SHARE,
+            coverage: Some(COVERAGE),
+            median_u_deg: Some(MEDIAN_U_DEG),
+            tcp_factor: Some(TCP_FACTOR),
+        },
+    );
+}
+
+/// The same arm without transmission error: every other source on.
+#[test]
+fn without_transmission_error_every_joint_is_within_0_005_deg() {
+    let world = WorldConfig {
+        robot: RobotSources {
+            transmission: false,
+            ..RobotSources::REAL_ARM
+        },
+        ..WorldConfig::real()
+    };
+    acceptance(
+        &world,
+        "without transmission error",
+        73,
+        &Bounds {
+            within: WITHIN_SHARE_WITHOUT_TE,
+            coverage: Some((COVERAGE.0, 1.0)),
+            median_u_deg: Some(MEDIAN_U_DEG),
+            tcp_factor: Some(TCP_FACTOR),
+        },
+    );
 }
 
 /// The FANUC R-2000iC/165F as a laser tracker measured it (transmission error to 0.06°
-/// peak to peak, beyond the stated range): numbers still, with a larger budget; its
-/// TCP after/best (1.08-1.12 on the six) is printed, not held to 10 %: that much
-/// transmission error is beyond what the stated ranges promise.
+/// peak to peak, beyond the stated range): numbers still, reported, held to nothing but
+/// no refusal.
 #[test]
-fn the_fanuc_as_measured_gets_covered_numbers() {
+fn the_fanuc_as_measured_gets_numbers() {
     acceptance(
         &WorldConfig::fanuc_as_measured(),
         "FANUC as measured",
         72,
-        None,
+        &Bounds {
+            within: 0.0,
+            coverage: None,
+            median_u_deg: None,
+            tcp_factor: None,
+        },
     );
 }

@@ -10,6 +10,7 @@ mod common;
 
 use zerocal_core::error::FitError;
 use zerocal_core::session::{solve, SessionError};
+use zerocal_core::stage2::FitConfig;
 use zerocal_sim::montecarlo::{setup, Method, DEFAULT_POSES};
 use zerocal_sim::robot::RobotSources;
 use zerocal_sim::world::{RealSession, SessionFault, WorldConfig};
@@ -112,4 +113,66 @@ fn the_wrong_profile_is_named() {
         },
         |e| e.to_string().contains("profile"),
     );
+}
+
+/// A flange bracket that creeps (a clamp not quite tight: the pendant turning a little
+/// further at each capture, 0.0005-0.01° a capture, issue 30): in at least 95 % of the
+/// sessions whose result it would carry outside its U(k = 2) on some joint, the session
+/// is refused naming the bracket's move (a revisited pose that reads otherwise, or the
+/// readings' drift over stage 2); no creeping session is refused under another name.
+#[test]
+fn a_creeping_bracket_is_named_where_it_matters() {
+    use zerocal_core::session::{budget, solve};
+    use zerocal_core::stage2::refusal::RefusalRule;
+    let creeping = |e: &FitError| {
+        matches!(
+            e,
+            FitError::RevisitDisagrees { .. }
+                | FitError::PendantCreeping { .. }
+                | FitError::PendantMoved { .. }
+        )
+    };
+    for deg_per_capture in [0.0005, 0.002, 0.01] {
+        let world = WorldConfig {
+            fault: SessionFault::Creeping { deg_per_capture },
+            ..real_arm()
+        };
+        let (mut beyond_u, mut named) = (0, 0);
+        for robot in PROFILES {
+            let profile = zerocal_profile::builtin(robot).unwrap();
+            let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+            for seed in 0..SESSIONS {
+                let session = RealSession::simulate(&profile, &plan, &world, 900 + seed);
+                let readings = session.readings(&profile, &world);
+                let refused = match solve(&readings, &fit).result {
+                    Ok(_) => None,
+                    Err(SessionError::Stage2(e)) if creeping(&e) => Some(true),
+                    Err(e) => panic!("{robot} {deg_per_capture} seed {seed}: refused as {e}"),
+                };
+                // What the session would have given without the rule: outside its U?
+                let off = FitConfig {
+                    refusal: RefusalRule::OFF,
+                    ..fit
+                };
+                let outside = solve(&readings, &off).result.ok().is_none_or(|s| {
+                    let b = budget(
+                        &s,
+                        &session.poses,
+                        &world.budget_inputs(&profile, fit.extras, &session.brackets),
+                    );
+                    let truth = session.truth_rad();
+                    (0..5).any(|k| (s.offsets_rad[k] - truth[k]).abs() > b.expanded_rad[k])
+                });
+                if outside {
+                    beyond_u += 1;
+                    named += usize::from(refused.is_some());
+                }
+            }
+        }
+        println!("creeping {deg_per_capture} deg a capture: {named} of {beyond_u} sessions outside U named");
+        assert!(
+            named as f64 >= 0.95 * beyond_u as f64,
+            "{deg_per_capture}: {named} of {beyond_u}"
+        );
+    }
 }

@@ -483,6 +483,23 @@ pub fn analyse_with(
         CliError::Refused(name("stage 1 was not completed (no stage-1 readings)"))
     })?;
     check_rows(&export, &stage1).map_err(|e| CliError::Input(name(&e)))?;
+    // Stage 1's joint 2 is where the pendant's profile stands it: a record that says
+    // otherwise would move Δθ2 by its error and Δθ3 back (joints 2 and 3 parallel),
+    // unseen by the fit, now that stage 2's own joint 2 swings.
+    let stated = profile.stage1_joints_rad[1];
+    if (stage1.j2_rad - stated).abs().to_degrees() > STAGE1_JOINT1_TOLERANCE_DEG
+        || !stage1.j2_rad.is_finite()
+    {
+        return Err(CliError::Input(name(&format!(
+            "line {}: stage 1's j2_deg says {} deg, but the profile's stage-1 pose stands \
+             joint 2 at {} deg (tolerance {STAGE1_JOINT1_TOLERANCE_DEG} deg): a wrong record \
+             would move Δθ2 and Δθ3 by its error unseen; correct the export or give the \
+             profile it was made with (--robot)",
+            export.stage1_line,
+            stage1.j2_rad.to_degrees(),
+            stated.to_degrees()
+        ))));
+    }
     // The reversal's own readings where the export has them (the drift model needs
     // their temperature), else the bias it computed.
     let bias = match (export.stage0, export.bias.flatten()) {

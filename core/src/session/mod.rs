@@ -541,24 +541,6 @@ pub fn solve<T: Real>(
             }
         }
     }
-    // A pose visited twice that reads differently: the pendant moved on the flange
-    // between the visits. Judged before any fit's evidence, since it needs no model:
-    // a bracket that creeps can drag a fit anywhere (into no convergence), and the
-    // refusal must name it, not the fit.
-    if let Some((pose, revisit, d)) = judge::revisit_difference(
-        merged,
-        &bias_t.as_ref().map_or(Tilt::default(), |b| b.drift_per_k),
-    ) {
-        let limit = config.refusal.max_revisit_difference_deg;
-        if limit.is_finite() && d > crate::real::deg_to_rad(T::lit(limit)) {
-            result = Err(SessionError::Stage2(FitError::RevisitDisagrees {
-                pose,
-                revisit,
-                difference_deg: crate::real::rad_to_deg(d).to_f64() as f32,
-                limit_deg: limit as f32,
-            }));
-        }
-    }
     // The refusal rule on the last pass: a fault is named, a robot is solved.
     if let Ok((h, r)) = &result {
         let e = judge::evidence(
@@ -569,6 +551,33 @@ pub fn solve<T: Real>(
         );
         if let Err(fault) = judge::judge(&e, &config.refusal, config.max_residual_rms_rad) {
             result = Err(SessionError::Stage2(fault));
+        }
+    }
+    // A pose visited twice that reads differently: the pendant moved on the flange
+    // between the visits. It needs no model, so it is judged where the evidence named
+    // nothing, and where the fit failed (a bracket that creeps can drag a fit into no
+    // convergence, and the refusal must name the bracket, not the fit); a step the
+    // evidence found is named where it happened.
+    let named_move = matches!(
+        result,
+        Err(SessionError::Stage2(
+            FitError::PendantMoved { .. } | FitError::CapturesDisagree { .. }
+        ))
+    );
+    if !named_move {
+        if let Some((pose, revisit, d)) = judge::revisit_difference(
+            merged,
+            &bias_t.as_ref().map_or(Tilt::default(), |b| b.drift_per_k),
+        ) {
+            let limit = config.refusal.max_revisit_difference_deg;
+            if limit.is_finite() && d > crate::real::deg_to_rad(T::lit(limit)) {
+                result = Err(SessionError::Stage2(FitError::RevisitDisagrees {
+                    pose,
+                    revisit,
+                    difference_deg: crate::real::rad_to_deg(d).to_f64() as f32,
+                    limit_deg: limit as f32,
+                }));
+            }
         }
     }
     SessionOutcome {
