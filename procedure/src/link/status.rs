@@ -59,7 +59,11 @@ pub fn status<T: Real>(
         },
         3 => match session.outcome().map(|o| &o.result) {
             Some(Ok(r)) => result_line(&mut w, r),
-            Some(Err(e)) => write!(w, "refused: {e}"),
+            // Cut to the line, as the export's refusal line.
+            Some(Err(e)) => {
+                crate::text::write_cut(&mut w, format_args!("refused: {e}"));
+                Ok(())
+            }
             None => w.write_str("stage 2: not done"),
         },
         4 => match session.last_result() {

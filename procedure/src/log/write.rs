@@ -225,7 +225,12 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     fn tail(&self, w: &mut Line) -> Option<fmt::Result> {
         Some(match self.session.result? {
             Ok(r) => result_line(w, r),
-            Err(e) => write!(w, "# refused: {e}"),
+            // Words of any length (a fit's refusal names every parameter it could not
+            // separate): cut to the line rather than lost with the export.
+            Err(e) => {
+                crate::text::write_cut(w, format_args!("# refused: {e}"));
+                Ok(())
+            }
         })
     }
 }

@@ -47,6 +47,8 @@
 
 #[cfg(test)]
 mod bench_tests;
+#[cfg(test)]
+mod capacity_tests;
 mod captures;
 #[cfg(test)]
 mod check_tests;
