@@ -45,6 +45,16 @@ pub fn write_cut(line: &mut Line, args: core::fmt::Arguments<'_>) {
     }
 }
 
+/// Largest joint command a log, a plan row or a profile line may hold (deg): two turns
+/// either way; beyond is a unit or column mistake.
+pub const MAX_JOINT_DEG: f64 = 720.0;
+
+/// A robot profile's name as the pendant keeps it (`zerocal robots` lists them).
+pub type RobotName = heapless::String<32>;
+
+/// The line that ends a `plan set` or `profile set` upload (and a profile's lines).
+pub const UPLOAD_END: &str = "end";
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -70,13 +80,3 @@ mod tests {
         assert!(line.starts_with("# éé"));
     }
 }
-
-/// Largest joint command a log, a plan row or a profile line may hold (deg): two turns
-/// either way; beyond is a unit or column mistake.
-pub const MAX_JOINT_DEG: f64 = 720.0;
-
-/// A robot profile's name as the pendant keeps it (`zerocal robots` lists them).
-pub type RobotName = heapless::String<32>;
-
-/// The line that ends a `plan set` or `profile set` upload (and a profile's lines).
-pub const UPLOAD_END: &str = "end";
