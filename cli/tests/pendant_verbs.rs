@@ -82,7 +82,7 @@ fn act(
     (String::from_utf8(progress).unwrap(), out)
 }
 
-/// The flange bracket calibrated from the desktop: each of the eight steps said once,
+/// The flange bracket calibrated from the desktop: each of the twelve steps said once,
 /// in order, as the pendant reached it; the result's screen; the calibration kept
 /// (the `brackets` TOML, written to --out) with the bracket's turn measured within
 /// 0.01° of the world's.
@@ -164,7 +164,7 @@ fn a_bracket_calibration_left_with_back_is_refused_by_name() {
         "{e}"
     );
     assert!(
-        progress.contains("step 1 of 8: the pendant alone on the levelled plate"),
+        progress.contains("step 1 of 12: the pendant alone on the levelled plate"),
         "{progress}"
     );
 }

@@ -1,8 +1,8 @@
 //! The export's writers read back by its readers: `write_row` and `write_export_row`
-//! (with its capture index) by `LogReader::feed`,
-//! `write_reversal`, `write_fit_extras` and `write_bracket` by `parse_meta`, with both
-//! number parsers
-//! (core's and the desktop's): parse(write(x)) == x to the export's 1e-12 deg.
+//! (with its capture index) by `LogReader::feed`, `write_bench` (stage 0's or the
+//! closing bench readings, two to four headings), `write_fit_extras` and
+//! `write_bracket` by `parse_meta`, with both number parsers (core's and the
+//! desktop's): parse(write(x)) == x to the export's 1e-12 deg.
 #![no_main]
 use arbitrary::{Arbitrary, Unstructured};
 use libfuzzer_sys::fuzz_target;
@@ -11,11 +11,11 @@ use zerocal_core::bracket::{
 };
 use zerocal_core::capture::{Approach, CaptureIndex, MAX_PLAN_POSES};
 use zerocal_core::model::Tilt;
-use zerocal_core::stage0::{ClosingReversal, Reversal};
+use zerocal_core::stage0::{BenchTurns, BenchTurnsAt, MAX_HEADINGS};
 use zerocal_core::stage2::{Extras, PoseReading};
 use zerocal_procedure::log::{
-    parse_meta, write_bracket, write_export_row, write_fit_extras, write_reversal, write_row, Line,
-    LogLine, LogReader, MetaItem, EXPORT_HEADER, LOG_HEADER,
+    parse_meta, write_bench, write_bracket, write_export_row, write_fit_extras, write_row, Line,
+    LogLine, LogReader, MetaItem, CLOSING_BENCH_KEY, EXPORT_HEADER, LOG_HEADER, STAGE0_BENCH_KEY,
 };
 
 /// A value in `[-limit, limit]` from a fuzzed fraction (an f32, as the pendant holds).
@@ -115,36 +115,44 @@ fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
         );
         assert_eq!(reader.capture_index(), Some(index), "{row}");
     }
-    // A reversal.
-    let reversal = ClosingReversal {
-        reversal: Reversal {
-            first: tilt(u)?,
-            second: tilt(u)?,
-        },
+    // Bench readings: two to four headings, stage 0's or the closing ones.
+    let count = 2 + usize::from(u8::arbitrary(u)?) % (MAX_HEADINGS - 1);
+    let mut taken = [Tilt::default(); MAX_HEADINGS];
+    for t in taken.iter_mut().take(count) {
+        *t = tilt(u)?;
+    }
+    let bench = BenchTurnsAt {
+        turns: BenchTurns::from_readings(&taken[..count]).expect("2..=4 readings"),
         temperature_c: temperature(u)?,
     };
     let closing = bool::arbitrary(u)?;
     let key = if closing {
-        "closing_reversal_deg"
+        CLOSING_BENCH_KEY
     } else {
-        "stage0_reversal_deg"
+        STAGE0_BENCH_KEY
     };
     let mut line = Line::new();
-    write_reversal(&mut line, key, &reversal).expect("a reversal fits a line");
+    write_bench(&mut line, key, &bench).expect("bench readings fit a line");
     let comment = line.trim_start_matches('#').trim();
     for parse in PARSERS {
         match parse_meta::<f64>(comment, 1, parse) {
-            Ok(Some(MetaItem::Closing(back) | MetaItem::Stage0Reversal(back))) => {
+            Ok(Some(MetaItem::Closing(back))) if closing => {
+                assert_eq!(back.turns.count, bench.turns.count, "{line}");
+                for (a, b) in bench.turns.taken().iter().zip(back.turns.taken()) {
+                    assert!(close_tilt(*a, *b), "{line}");
+                }
                 assert!(
-                    close_tilt(reversal.reversal.first, back.reversal.first),
+                    close_temperature(bench.temperature_c, back.temperature_c),
                     "{line}"
                 );
+            }
+            Ok(Some(MetaItem::Stage0Bench(back))) if !closing => {
+                assert_eq!(back.turns.count, bench.turns.count, "{line}");
+                for (a, b) in bench.turns.taken().iter().zip(back.turns.taken()) {
+                    assert!(close_tilt(*a, *b), "{line}");
+                }
                 assert!(
-                    close_tilt(reversal.reversal.second, back.reversal.second),
-                    "{line}"
-                );
-                assert!(
-                    close_temperature(reversal.temperature_c, back.temperature_c),
+                    close_temperature(bench.temperature_c, back.temperature_c),
                     "{line}"
                 );
             }
@@ -159,10 +167,14 @@ fn check(u: &mut Unstructured<'_>) -> arbitrary::Result<()> {
         bias_x: bool::arbitrary(u)?,
         bias_y: bool::arbitrary(u)?,
         drift: bool::arbitrary(u)?,
-        // Held offsets and the geometric candidates follow from the arm, not the line.
+        // Held offsets, the geometric candidates and the reducers' terms follow from
+        // the arm and its masses, not the line.
         held: [false; 4],
         tilt: 0,
         wrist_sag: 0,
+        sag2: false,
+        lash: 0,
+        transmission: 0,
     };
     let mut line = Line::new();
     write_fit_extras(&mut line, extras).expect("extras fit a line");

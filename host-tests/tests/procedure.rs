@@ -13,7 +13,7 @@ use embassy_time::{with_timeout, Duration};
 use std::sync::atomic::Ordering;
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::{FitError, FitResult, SessionError};
-use zerocal_procedure::{Approach, Phase, ProcedureState};
+use zerocal_procedure::{Approach, Phase, ProcedureState, BENCH_HEADINGS};
 
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::screen::{Prompt, Screen};
@@ -89,9 +89,13 @@ fn back_undoes_the_last_capture_at_every_stage() {
         .power_up(|p| async move {
             p.stage0().await?;
             assert_eq!(state(&p).await.phase(), Phase::Stage1Before);
-            // BACK: redo the second reversal reading.
+            // BACK: redo stage 0's last heading.
             p.press(Button::Back).await;
-            assert_eq!(state(&p).await.phase(), Phase::Stage0Second);
+            let s = state(&p).await;
+            assert_eq!(
+                (s.phase(), s.view().heading),
+                (Phase::Stage0, Some(BENCH_HEADINGS - 1))
+            );
             p.operate_until("stage 1 again", |screen| {
                 prompt(screen).is_some_and(|q| matches!(q, Prompt::Stage1Before(_)))
             })
@@ -135,30 +139,35 @@ fn back_undoes_the_last_capture_at_every_stage() {
             p.wait_ms(3000).await;
             assert_eq!(state(&p).await.captures().len(), 3);
             p.stage2().await?;
-            assert_eq!(state(&p).await.phase(), Phase::ClosingFirst);
+            assert_eq!(state(&p).await.phase(), Phase::Closing);
             p.finish().await?;
             let done = state(&p).await;
-            // BACK on the result undoes the closing reversal's readings, then the last
-            // pose's capture.
-            p.press(Button::Back).await;
-            assert_eq!(state(&p).await.phase(), Phase::ClosingSecond);
-            p.press(Button::Back).await;
-            assert_eq!(state(&p).await.phase(), Phase::ClosingFirst);
+            // BACK on the result undoes the closing headings' readings one by one,
+            // then the last pose's capture.
+            for heading in (0..BENCH_HEADINGS).rev() {
+                p.press(Button::Back).await;
+                let s = state(&p).await;
+                assert_eq!(
+                    (s.phase(), s.view().heading),
+                    (Phase::Closing, Some(heading))
+                );
+            }
             p.press(Button::Back).await;
             let s = state(&p).await;
             assert_eq!(s.phase(), Phase::Stage2);
             assert_eq!(s.captures().len(), 2 * poses - 1);
-            // NEXT skips the closing reversal: the result without it.
+            // NEXT skips the closing readings: the result without them.
             p.stage2().await?;
             p.press(Button::Next).await;
             let s = state(&p).await;
             assert_eq!(s.phase(), Phase::Done);
-            assert!(s.closing_reversal().is_none());
+            assert!(s.closing_bench().is_none());
             p.press(Button::Back).await;
+            let s = state(&p).await;
             assert_eq!(
-                state(&p).await.phase(),
-                Phase::ClosingFirst,
-                "BACK un-skips it"
+                (s.phase(), s.view().heading),
+                (Phase::Closing, Some(0)),
+                "BACK un-skips them"
             );
             Ok(done)
         })
@@ -227,7 +236,7 @@ fn power_cut_at_any_moment_loses_nothing() {
     }
     println!("{cuts} power cuts during stage 2");
     assert!((5..=400).contains(&cuts), "{cuts} cuts");
-    assert_eq!(reboot(&bench).phase(), Phase::ClosingFirst);
+    assert_eq!(reboot(&bench).phase(), Phase::Closing);
     let done = bench
         .power_up(|p| async move {
             p.finish().await?;
@@ -250,7 +259,7 @@ fn power_cut_at_any_moment_loses_nothing() {
             Ok(state(&p).await.phase())
         })
         .unwrap();
-    assert_eq!(started, Phase::Stage0First);
+    assert_eq!(started, Phase::Stage0);
     let (restored, status) = bench
         .power_up(|p| async move {
             p.booted().await?;
@@ -273,10 +282,11 @@ fn sensor_dropouts_and_faults_never_reach_a_result() {
             let dropped = || p.shared.dropped_frames.load(Ordering::Relaxed);
             // The pendant put down on the bench, then at rest for 1.5 s of stage 0's
             // first 2 s still window.
+            let heading = |s: &ProcedureState<f32>| (s.phase(), s.view().heading);
             let t = t_ms();
             let placed = p.world().carry(t, Place::Bench { heading_rad: 0.0 });
             p.wait_ms((placed - t) as u64 + 1500).await;
-            assert_eq!(state(&p).await.phase(), Phase::Stage0First);
+            assert_eq!(heading(&state(&p).await), (Phase::Stage0, Some(0)));
             // A dropout of fewer refused frames than the sensor task reports is a gap
             // the window bridges: counted, never read, and the capture comes on time.
             let short_ms = (MAX_CONSECUTIVE_DROPS as u64 / 2) * SAMPLE_PERIOD.as_millis();
@@ -287,23 +297,19 @@ fn sensor_dropouts_and_faults_never_reach_a_result() {
             assert!(dropped() > before, "the gap's frames are counted");
             p.wait_ms(1000).await;
             assert_eq!(
-                state(&p).await.phase(),
-                Phase::Stage0Second,
+                heading(&state(&p).await),
+                (Phase::Stage0, Some(1)),
                 "a gap is bridged"
             );
             // A dropout the sensor task reports restarts the window: from the moment
-            // readings may come again, a full 2 s of them before the capture.
+            // readings may come again, a full 2 s of them before the capture. The
+            // second heading turned by hand, about a quarter turn.
             let t = t_ms();
-            let placed = p.world().carry(
-                t,
-                Place::Bench {
-                    heading_rad: core::f64::consts::PI,
-                },
-            );
+            let placed = p.world().carry(t, Place::Bench { heading_rad: 1.5 });
             p.wait_ms((placed - t) as u64 + 200).await;
             p.press(Button::Ok).await;
             p.wait_ms(1300).await;
-            assert_eq!(state(&p).await.phase(), Phase::Stage0Second);
+            assert_eq!(heading(&state(&p).await), (Phase::Stage0, Some(1)));
             p.world().set_fault(Some(Fault::BadCrc));
             p.wait_ms((MAX_CONSECUTIVE_DROPS as u64 + 4) * SAMPLE_PERIOD.as_millis())
                 .await;
@@ -314,7 +320,7 @@ fn sensor_dropouts_and_faults_never_reach_a_result() {
             );
             p.world().set_fault(None);
             let mended = t_ms();
-            while state(&p).await.phase() == Phase::Stage0Second {
+            while heading(&state(&p).await) == (Phase::Stage0, Some(1)) {
                 p.wait_ms(50).await;
             }
             let waited_ms = t_ms() - mended;
@@ -506,10 +512,11 @@ fn next_on_the_above_screen_drops_the_lone_below_capture() {
     // The poses left, each from below and from above.
     let captures = s.captures();
     assert_eq!(captures.len(), 2 * (poses - 1));
-    for pair in captures.chunks(2) {
-        assert_eq!(pair[0].1.joints_rad, pair[1].1.joints_rad);
+    let pairs = captures.poses().chunks(2).zip(captures.indices().chunks(2));
+    for (pose, index) in pairs {
+        assert_eq!(pose[0].joints_rad, pose[1].joints_rad);
         assert_eq!(
-            (pair[0].0.approach, pair[1].0.approach),
+            (index[0].approach, index[1].approach),
             (Approach::FromBelow, Approach::FromAbove)
         );
     }

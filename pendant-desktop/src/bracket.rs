@@ -1,10 +1,10 @@
 //! A bracket's calibration on the simulated pendant, end to end: `bracket calibrate`
-//! on the link, the operator following the eight screens on a surface plate (the
-//! pendant alone, turned, in the bracket on its reference, the reference turned) and on
-//! a sine plate against its fence (the same four), OK
-//! on the result, `brackets` on the link, and the calibration still there after a
-//! power cycle. A plate not levelled is refused by name. The gallery's bracket
-//! screens come from here.
+//! on the link, the operator following the screens on a surface plate (the pendant
+//! alone at four headings turned by hand, then in the bracket on its reference at four
+//! headings of the reference) and on a sine plate against its fence (the pendant and
+//! the reference, each end for end), OK on the result, `brackets` on the link, and the
+//! calibration still there after a power cycle. A plate not levelled is refused by
+//! name. The gallery's bracket screens come from here.
 
 use core::f64::consts::PI;
 
@@ -13,10 +13,11 @@ use zerocal_core::bracket::{BracketError, BracketMount};
 use zerocal_core::model::{rot_x, rot_y};
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::screen::{BracketScreen, Screen, ScreenKind};
-use zerocal_procedure::bracket_cal::{parse_bracket_line, StoredBracket};
+use zerocal_procedure::bracket_cal::{parse_bracket_line, BracketStep, StoredBracket};
+use zerocal_procedure::BENCH_HEADINGS;
 
 use crate::faults::{display_faults, finish, scenario_rig, ScenarioReport};
-use crate::operator::{command, press, t_ms, wait_for, ScriptError, PRESS_MS};
+use crate::operator::{command, press, t_ms, wait_for, ScriptError, BENCH_TURNS_DEG, PRESS_MS};
 use crate::session::{RUN_LIMIT, SILENCE};
 use crate::world::Place;
 use crate::Rig;
@@ -31,11 +32,20 @@ pub const LEVEL_PLATE_DEG: (f64, f64) = (0.04, -0.03);
 /// The command that starts the scenario's calibration.
 const START: &[u8] = b"bracket calibrate flange F-017\r\n";
 
-/// Puts the pendant at `place` and presses OK once it has been put down; returns
-/// when the screen has left `kind`.
-async fn place_and_ok(rig: &Rig, kind: ScreenKind, place: Place) -> Result<(), ScriptError> {
-    wait_for(rig, kind.name(), Duration::from_secs(20), |s| {
-        s.kind() == kind
+/// The step a bracket screen is at (`None` for any other screen).
+fn step_of(screen: &Screen) -> Option<BracketStep> {
+    match screen {
+        Screen::Bracket(b) if b.outcome.is_none() => Some(b.step),
+        _ => None,
+    }
+}
+
+/// Puts the pendant at `place` once the screen asks for `step` and presses OK once it
+/// has been put down; returns when the screen has left that step.
+async fn place_and_ok(rig: &Rig, step: BracketStep, place: Place) -> Result<(), ScriptError> {
+    let what = format!("{step:?}");
+    wait_for(rig, &what, Duration::from_secs(20), |s| {
+        step_of(s) == Some(step)
     })
     .await?;
     let t = t_ms();
@@ -44,24 +54,31 @@ async fn place_and_ok(rig: &Rig, kind: ScreenKind, place: Place) -> Result<(), S
     press(rig, Button::Ok, PRESS_MS).await;
     // Four still windows a reading.
     wait_for(rig, "the next step", Duration::from_secs(60), |s| {
-        s.kind() != kind
+        step_of(s) != Some(step)
     })
     .await?;
     Ok(())
 }
 
-/// The first two steps: the pendant alone on the plate, then turned.
+/// The plate's headings, turned by hand as the operator turns the pendant on a bench
+/// (`step(heading)` the screen's step, `place(heading_rad)` where it goes).
+async fn on_the_plate(
+    rig: &Rig,
+    step: impl Fn(u8) -> BracketStep,
+    place: impl Fn(f64) -> Place,
+) -> Result<(), ScriptError> {
+    for (h, deg) in BENCH_TURNS_DEG.iter().enumerate().take(BENCH_HEADINGS) {
+        place_and_ok(rig, step(h as u8), place(deg.to_radians())).await?;
+    }
+    Ok(())
+}
+
+/// The pendant alone on the plate at each heading.
 async fn pendant_alone(rig: &Rig) -> Result<(), ScriptError> {
-    place_and_ok(
+    on_the_plate(
         rig,
-        ScreenKind::BracketPlate,
-        Place::Bench { heading_rad: 0.0 },
-    )
-    .await?;
-    place_and_ok(
-        rig,
-        ScreenKind::BracketPlateTurned,
-        Place::Bench { heading_rad: PI },
+        |heading| BracketStep::Alone { heading },
+        |heading_rad| Place::Bench { heading_rad },
     )
     .await
 }
@@ -76,44 +93,40 @@ pub fn calibration_world(rig: &Rig) {
 }
 
 /// The operator through a calibration once it has been started (on the link): the
-/// eight steps as their screens ask, then OK on the result to keep it, back to the
+/// twelve steps as their screens ask, then OK on the result to keep it, back to the
 /// session's screen.
 ///
 /// # Errors
 /// A screen that did not come.
 pub async fn operate_calibration(rig: &Rig) -> Result<(), ScriptError> {
     pendant_alone(rig).await?;
-    place_and_ok(
+    on_the_plate(
         rig,
-        ScreenKind::BracketSeated,
-        Place::Bracket { heading_rad: 0.0 },
+        |heading| BracketStep::Seated { heading },
+        |heading_rad| Place::Bracket { heading_rad },
     )
     .await?;
-    place_and_ok(
-        rig,
-        ScreenKind::BracketSeatedTurned,
-        Place::Bracket { heading_rad: PI },
-    )
-    .await?;
-    for (kind, place) in [
+    // The sine plate's steps: end for end against the fence, a half turn the fence
+    // sets.
+    for (step, place) in [
         (
-            ScreenKind::BracketSine,
+            BracketStep::AloneTilted,
             Place::SinePlate { heading_rad: 0.0 },
         ),
         (
-            ScreenKind::BracketSineTurned,
+            BracketStep::AloneTiltedTurned,
             Place::SinePlate { heading_rad: PI },
         ),
         (
-            ScreenKind::BracketSineSeated,
+            BracketStep::SeatedTilted,
             Place::BracketOnSinePlate { heading_rad: 0.0 },
         ),
         (
-            ScreenKind::BracketSineSeatedTurned,
+            BracketStep::SeatedTiltedTurned,
             Place::BracketOnSinePlate { heading_rad: PI },
         ),
     ] {
-        place_and_ok(rig, kind, place).await?;
+        place_and_ok(rig, step, place).await?;
     }
     wait_for(rig, "the result", Duration::from_secs(20), |s| {
         s.kind() == ScreenKind::BracketResult
@@ -199,8 +212,7 @@ pub fn calibrated() -> Result<ScenarioReport, String> {
 }
 
 /// A plate tilted 0.3° (three times what the calibration allows): refused by name,
-/// with the tilt read, after the pendant's own half turn, before the bracket is
-/// fitted.
+/// with the tilt read, after the pendant's own headings, before the bracket is fitted.
 ///
 /// # Errors
 /// No refusal screen.
@@ -218,7 +230,7 @@ pub fn plate_not_level() -> Result<ScenarioReport, String> {
             s.kind() == ScreenKind::BracketRefused
         })
         .await?;
-        // By name, with the tilt the pendant's reversal read (0.3° within a
+        // By name, with the tilt the pendant's headings read (0.3° within a
         // hundredth: the readings' noise and quantisation).
         match shown {
             Screen::Bracket(BracketScreen {

@@ -15,7 +15,7 @@ use crate::world::Place;
 use crate::Rig;
 use zerocal_pendant::buttons::Button;
 use zerocal_pendant::screen::{Prompt, Screen};
-use zerocal_procedure::Approach;
+use zerocal_procedure::{Approach, BENCH_HEADINGS};
 
 /// How often the operator looks at the screen (ms).
 pub const LOOK_MS: u64 = 100;
@@ -94,26 +94,29 @@ fn stage1_pose(rig: &Rig, turned: bool) -> [f64; JOINTS] {
     q
 }
 
+/// The headings the operator turns the pendant to on the bench (deg from where it was
+/// put down), stage 0's and the closing readings' alike: about a quarter turn each, by
+/// hand, none of them exact (up to 7° off), as the screen asks. Fixed, so a frozen
+/// world reads the same at a heading retaken after a power cut.
+pub const BENCH_TURNS_DEG: [f64; BENCH_HEADINGS] = [0.0, 84.0, 187.0, 275.0];
+
+/// The bench place of heading `heading` (0-based).
+fn bench_heading(heading: usize) -> Result<Place, ScriptError> {
+    let deg = BENCH_TURNS_DEG
+        .get(heading)
+        .ok_or_else(|| ScriptError::Unexpected(format!("bench heading {heading}")))?;
+    Ok(Place::Bench {
+        heading_rad: deg.to_radians(),
+    })
+}
+
 /// What the screen asks of the world: where the pendant goes, where the robot goes,
 /// and whether OK is needed once both are there.
 fn wanted(rig: &Rig, prompt: &Prompt) -> Result<(Place, Option<[f64; JOINTS]>), ScriptError> {
     Ok(match *prompt {
-        Prompt::Stage0First => (Place::Bench { heading_rad: 0.0 }, None),
-        Prompt::Stage0Second => (
-            Place::Bench {
-                heading_rad: core::f64::consts::PI,
-            },
-            None,
-        ),
+        Prompt::Stage0 { heading } | Prompt::Closing { heading } => (bench_heading(heading)?, None),
         Prompt::Stage1Before(_) => (Place::UpperArm, Some(stage1_pose(rig, false))),
         Prompt::Stage1After(_) => (Place::UpperArm, Some(stage1_pose(rig, true))),
-        Prompt::ClosingFirst => (Place::Bench { heading_rad: 0.0 }, None),
-        Prompt::ClosingSecond => (
-            Place::Bench {
-                heading_rad: core::f64::consts::PI,
-            },
-            None,
-        ),
         Prompt::Pose { number, .. } => {
             // A check's screen counts the check's poses; its program drives the plan's.
             let index = match rig.check.borrow().as_ref() {

@@ -17,12 +17,12 @@ use zerocal_pendant::channels::Shared;
 use zerocal_pendant::screen::{Prompt, Screen, ScreenKind};
 use zerocal_pendant::store::{Restored, Store};
 use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
-use zerocal_procedure::{Approach, Phase, ProcedureState};
+use zerocal_procedure::{Approach, Phase, ProcedureState, BENCH_HEADINGS, CAPTURES_PER_POSE};
 use zerocal_sim::flash::{CutPoint, SimFlash, STORE_RANGE};
 
 use crate::exec::{self, Stop};
 use crate::operator::{calibrate, command, press, wait_for, ScriptError, LONG_PRESS_MS};
-use crate::session::{session_progress, PATIENCE, REBOOT, RUN_LIMIT, SILENCE};
+use crate::session::{session_progress, BEFORE_STAGE2, PATIENCE, REBOOT, RUN_LIMIT, SILENCE};
 use crate::world::WorldConfig;
 use crate::Rig;
 
@@ -49,20 +49,20 @@ pub struct CutReport {
     pub failures: Vec<String>,
 }
 
-/// Where a screen stands in the session: 0-1 stage 0, 2-5 stage 1's four captures,
-/// then 6 + stage-2 captures, the closing reversal's two, the result.
+/// Where a screen stands in the session, as [`session_progress`] counts: stage 0's
+/// headings, stage 1's four captures, then [`BEFORE_STAGE2`] + stage-2 captures, the
+/// closing headings, the result.
 fn screen_progress(screen: Option<&Screen>, poses: usize) -> usize {
     let side = |a: Approach| usize::from(a == Approach::FromAbove);
     match screen {
         Some(Screen::Capture(c)) => match c.prompt {
-            Prompt::Stage0First => 0,
-            Prompt::Stage0Second => 1,
-            Prompt::Stage1Before(a) => 2 + side(a),
-            Prompt::Stage1After(a) => 4 + side(a),
-            Prompt::Pose { .. } | Prompt::NoPose | Prompt::ClosingFirst => 6 + c.captured,
-            Prompt::ClosingSecond => 7 + c.captured,
+            Prompt::Stage0 { heading } => heading,
+            Prompt::Stage1Before(a) => BENCH_HEADINGS + side(a),
+            Prompt::Stage1After(a) => BENCH_HEADINGS + 2 + side(a),
+            Prompt::Pose { .. } | Prompt::NoPose => BEFORE_STAGE2 + c.captured,
+            Prompt::Closing { heading } => BEFORE_STAGE2 + c.captured + heading,
         },
-        Some(Screen::Result(_)) => 8 + 2 * poses,
+        Some(Screen::Result(_)) => BEFORE_STAGE2 + CAPTURES_PER_POSE * poses + BENCH_HEADINGS,
         _ => 0,
     }
 }

@@ -231,18 +231,18 @@ impl Pendant<'_> {
     /// As [`Pendant::operate_until`].
     pub async fn stage1(&self) -> Result<Screen, ScriptError> {
         self.operate_until("stage 2", |s| {
-            prompt(s).is_some_and(|p| matches!(p, Prompt::Pose { .. } | Prompt::ClosingFirst))
+            prompt(s).is_some_and(|p| matches!(p, Prompt::Pose { .. } | Prompt::Closing { .. }))
         })
         .await
     }
 
-    /// Stage 2 done: the operator stops at the closing reversal's first screen.
+    /// Stage 2 done: the operator stops at the closing bench readings' first screen.
     ///
     /// # Errors
     /// As [`Pendant::operate_until`].
     pub async fn stage2(&self) -> Result<Screen, ScriptError> {
-        self.operate_until("the closing reversal", |s| {
-            prompt(s).is_some_and(|p| matches!(p, Prompt::ClosingFirst))
+        self.operate_until("the closing bench readings", |s| {
+            prompt(s).is_some_and(|p| matches!(p, Prompt::Closing { heading: 0 }))
         })
         .await
     }

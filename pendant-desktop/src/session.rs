@@ -18,7 +18,9 @@ use zerocal_pendant::config::procedure_config;
 use zerocal_pendant::draw::lines;
 use zerocal_pendant::screen::{ResultScreen, Screen};
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
-use zerocal_procedure::{pendant_default, Approach, PendantProfile, Phase, ProcedureState};
+use zerocal_procedure::{
+    pendant_default, Approach, PendantProfile, Phase, ProcedureState, BENCH_HEADINGS,
+};
 
 use crate::exec;
 use crate::operator::{calibrate, command, operate_until, press, t_ms, ScriptError, PRESS_MS};
@@ -310,7 +312,7 @@ pub struct CheckReport {
 
 /// A check on a fresh pendant in the world `world`: `check` over the link, stage 0,
 /// the check program's poses on the flange (core's `check_poses` on the plan and the
-/// pendant's profile, as `zerocal program --check` chooses them), the closing reversal,
+/// pendant's profile, as `zerocal program --check` chooses them), the closing readings,
 /// until the check-captured screen; then `export`. The panel's log holds its screens.
 ///
 /// # Errors
@@ -404,18 +406,22 @@ fn report_of(rig: &Rig, ended: Ended) -> SessionReport {
     }
 }
 
-/// Where the session stands: 0-1 stage 0, 2-5 stage 1's four captures, then 6 +
-/// stage-2 captures, the closing reversal's two, the result.
+/// Captures before stage 2: stage 0's headings and stage 1's four.
+pub const BEFORE_STAGE2: usize = BENCH_HEADINGS + 4;
+
+/// Where the session stands, in captures taken: stage 0's headings, stage 1's four
+/// captures, then [`BEFORE_STAGE2`] + stage-2 captures, the closing headings, the
+/// result.
 pub fn session_progress(session: &ProcedureState<f32>) -> usize {
     let view = session.view();
     let side = usize::from(view.approach == Some(Approach::FromAbove));
+    let heading = view.heading.unwrap_or(0);
     match session.phase() {
-        Phase::Stage0First => 0,
-        Phase::Stage0Second => 1,
-        Phase::Stage1Before => 2 + side,
-        Phase::Stage1After => 4 + side,
-        Phase::Stage2 | Phase::ClosingFirst => 6 + view.captured,
-        Phase::ClosingSecond => 7 + view.captured,
-        Phase::Done => 8 + view.captured,
+        Phase::Stage0 => heading,
+        Phase::Stage1Before => BENCH_HEADINGS + side,
+        Phase::Stage1After => BENCH_HEADINGS + 2 + side,
+        Phase::Stage2 => BEFORE_STAGE2 + view.captured,
+        Phase::Closing => BEFORE_STAGE2 + view.captured + heading,
+        Phase::Done => BEFORE_STAGE2 + view.captured + BENCH_HEADINGS,
     }
 }

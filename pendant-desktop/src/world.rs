@@ -300,7 +300,7 @@ impl World {
             | Place::SinePlate { heading_rad }
             | Place::BracketOnSinePlate { heading_rad } = place
             {
-                // Put down at that heading (the closing reversal's bench after the
+                // Put down at that heading (the closing readings' bench after the
                 // flange).
                 self.heading = Motion::at_rest(heading_rad);
             }

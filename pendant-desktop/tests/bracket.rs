@@ -9,8 +9,9 @@ use zerocal_pendant_desktop::bracket::{
 
 /// The calibration read out after a power cycle (the last `brackets` answer) is the
 /// world's 0.31°, −0.22° within three of its own standard uncertainties (the
-/// readings' noise, one capture's 0.0008° 1σ, and the plate's 0.05° times a half
-/// turn's error; here the half turns are exact) and within 0.005°, the method's aim;
+/// readings' noise, one capture's 0.0008° 1σ; the headings, turned by hand up to 7°
+/// off a quarter turn, come from the readings and add nothing) and within 0.005°, the
+/// method's aim;
 /// the temperature is the simulated chip's, 23 °C warming by 1.5 °C at most.
 #[test]
 fn the_pendant_calibrates_a_bracket_and_keeps_it() {

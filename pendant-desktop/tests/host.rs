@@ -35,7 +35,7 @@ fn a_whole_session_identifies_the_offsets_within_three_sigma() {
     }
     assert!(report.second_export_equal);
     // The export reads back as a log: two rows a pose (from below, from above), every
-    // row valid, with stage 0's reversal, stage 1's temperature and the closing reversal.
+    // row valid, with stage 0's headings, stage 1's temperature and the closing headings.
     let text = String::from_utf8(report.export.clone()).unwrap();
     let mut reader = LogReader::new();
     let mut poses = 0;
@@ -47,10 +47,10 @@ fn a_whole_session_identifies_the_offsets_within_three_sigma() {
     assert_eq!(poses, 2 * report.poses);
     assert!(text.contains("# stage2 offsets_deg"), "{text}");
     for key in [
-        "# stage0_reversal_deg first",
+        "# stage0_bench_deg ",
         "# stage1_temp_c ",
         "# stage1_captures_deg before below",
-        "# closing_reversal_deg first",
+        "# closing_bench_deg ",
         "# fit_extras gain,cross_z",
     ] {
         assert!(text.contains(key), "{key}: {text}");

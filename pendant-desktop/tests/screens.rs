@@ -195,10 +195,10 @@ fn pose_screen(captured: usize, notice: Option<Notice>) -> [String; 6] {
             approach: Approach::FromBelow,
             names: core::array::from_fn(|k| {
                 let mut n = JointName::new();
-                n.push_str(["J3", "J4", "J5", "J6"][k]).unwrap();
+                n.push_str(["J1", "J2", "J3", "J4", "J5", "J6"][k]).unwrap();
                 n
             }),
-            joints_deg: [-3.214_9, 46.626, 4.2, -44.93],
+            joints_deg: [0.0, -25.004, -3.214_9, 46.626, 4.2, -44.93],
         },
         live_deg: Some((0.033, -0.0659)),
         settle: Settle::Settling(0),
@@ -221,7 +221,10 @@ fn the_first_pose_screen_says_the_program_drives_the_poses() {
     let first = pose_screen(0, None);
     // The targets to 0.01°: a pose only needs to be recognised, the program carries
     // the exact joints (a jogged pose would be off by up to half of that, 0.005°).
-    assert_eq!(first[1], "J3   -3.21 J4  +46.63", "{first:?}");
+    // Every joint: joint 1 at its mark, joint 2 where the plan swings it.
+    assert_eq!(first[1], "J1   +0.00 J2  -25.00", "{first:?}");
+    assert_eq!(first[2], "J3   -3.21 J4  +46.63", "{first:?}");
+    assert_eq!(first[3], "J5   +4.20 J6  -44.93", "{first:?}");
     assert_eq!(first[0], "POSE 1/24 below (0)");
     assert_eq!(pose_screen(3, None)[5], "NEXT skip BACK undo");
     // A notice that asks for something still shows on the first pose.

@@ -323,9 +323,9 @@ pub fn set_profile(
         ..
     } = procedure;
     let idle = session.phase() == Phase::Done
-        || (session.phase() == Phase::Stage0First
+        || (session.phase() == Phase::Stage0
             && session.captures().is_empty()
-            && session.reading(ReadingSlot::Stage0First).is_none());
+            && session.reading(ReadingSlot::STAGE0_FIRST).is_none());
     if !idle {
         return None;
     }
@@ -491,7 +491,15 @@ fn on_bracket_input(
     } = procedure;
     let state = bracket_cal.as_mut()?;
     let window = session.stillness_window();
-    match bracket_step(config, state, window, event) {
+    let output = bracket_step(config, state, window, event);
+    if output != BracketOutput::Stay {
+        // The session gets its window back empty: its wait for stillness starts
+        // afresh, not from before the calibration (which showed "robot not still" for
+        // a moment after every calibration longer than the limit).
+        p.unsettled_since_ms = None;
+        p.extras.still_moving = false;
+    }
+    match output {
         BracketOutput::Stay => None,
         BracketOutput::Leave => {
             // The window goes back to the session empty.

@@ -9,7 +9,7 @@
 //! picture per kind, and the README's gallery is those pictures.
 
 use zerocal_core::bracket::{BracketError, BracketId, BracketMount};
-use zerocal_core::model::WRIST_JOINTS;
+use zerocal_core::model::JOINTS;
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::report::{Warning, MAX_WARNINGS};
 use zerocal_core::session::{SessionError, SESSION_JOINTS};
@@ -17,6 +17,9 @@ use zerocal_procedure::bracket_cal::{BracketCalState, BracketNotice, BracketResu
 use zerocal_procedure::profile::JointName;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{Approach, ControllerDisplay, Notice, Outcome, Phase, RobotName, View};
+
+/// The headings of a bench step (stage 0, the closing readings, a bracket's plate).
+pub use zerocal_procedure::BENCH_HEADINGS;
 
 use crate::messages::SensorFault;
 use crate::store::ResetReason;
@@ -133,10 +136,13 @@ pub enum Refusal {
 /// The step a capture screen prompts for.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Prompt {
-    /// Stage 0, pendant on a bench: first reading.
-    Stage0First,
-    /// Stage 0: pendant turned 180° on the same spot.
-    Stage0Second,
+    /// Stage 0, the pendant on a bench, read at this heading (0-based, of
+    /// [`BENCH_HEADINGS`]): the first where it was put down, each later one turned by
+    /// hand about a quarter turn on the same spot.
+    Stage0 {
+        /// Which heading.
+        heading: usize,
+    },
     /// Stage 1, pendant on the upper arm, axis 1 at its mark.
     Stage1Before(Approach),
     /// Stage 1: axis 1 turned by 180°.
@@ -149,17 +155,20 @@ pub enum Prompt {
         of: usize,
         /// The side every joint arrives from.
         approach: Approach,
-        /// Joints 3-6 as the controller names them.
-        names: [JointName; WRIST_JOINTS],
-        /// θ3..θ6 targets as the controller shows them (deg).
-        joints_deg: [f32; WRIST_JOINTS],
+        /// The joints as the controller names them.
+        names: [JointName; JOINTS],
+        /// θ1..θ6 targets as the controller shows them (deg): joint 1 at stage 1's
+        /// mark, joint 2 where the plan takes it (a plan may swing it).
+        joints_deg: [f32; JOINTS],
     },
     /// Stage 2 without a pose to take (no plan).
     NoPose,
-    /// The closing reversal: pendant back on stage 0's bench.
-    ClosingFirst,
-    /// The closing reversal: turned 180° on the same spot.
-    ClosingSecond,
+    /// The closing bench readings: the pendant back on stage 0's bench, at this
+    /// heading, as stage 0.
+    Closing {
+        /// Which heading.
+        heading: usize,
+    },
 }
 
 /// How still the pendant is, as the stillness filter says.
@@ -273,9 +282,9 @@ pub enum ScreenKind {
     StorageReset,
     /// [`Screen::Restarted`].
     Restarted,
-    /// Stage 0, first reading.
+    /// Stage 0, the first heading.
     Stage0Bench,
-    /// Stage 0, after the half turn.
+    /// Stage 0, a heading after a turn by hand.
     Stage0Turned,
     /// Stage 1, axis 1 at its mark, from below.
     Stage1Arm,
@@ -287,9 +296,9 @@ pub enum ScreenKind {
     Pose,
     /// A stage-2 pose, from above.
     PoseAbove,
-    /// The closing reversal, first reading.
+    /// The closing bench readings, the first heading.
     ClosingBench,
-    /// The closing reversal, after the half turn.
+    /// The closing bench readings, a heading after a turn by hand.
     ClosingTurned,
     /// Stage 2 without a plan.
     NoPlan,
@@ -317,21 +326,22 @@ pub enum ScreenKind {
     ResultWarning,
     /// No result, and why.
     NoResult,
-    /// Bracket calibration, step 1: the pendant alone on the plate.
+    /// Bracket calibration: the pendant alone on the plate, its first heading.
     BracketPlate,
-    /// Bracket calibration, step 2: the pendant turned half a turn.
+    /// Bracket calibration: the pendant alone, a heading after a turn by hand.
     BracketPlateTurned,
-    /// Bracket calibration, step 3: the pendant in the bracket on its reference.
+    /// Bracket calibration: the pendant in the bracket on its reference, the first
+    /// heading.
     BracketSeated,
-    /// Bracket calibration, step 4: the reference turned half a turn.
+    /// Bracket calibration: the reference, a heading after a turn by hand.
     BracketSeatedTurned,
-    /// Bracket calibration, step 5: the pendant alone on the sine plate.
+    /// Bracket calibration: the pendant alone on the sine plate.
     BracketSine,
-    /// Bracket calibration, step 6: the pendant turned end for end at the fence.
+    /// Bracket calibration: the pendant turned end for end at the fence.
     BracketSineTurned,
-    /// Bracket calibration, step 7: the reference against the sine plate's fence.
+    /// Bracket calibration: the reference against the sine plate's fence.
     BracketSineSeated,
-    /// Bracket calibration, step 8: the reference turned end for end at the fence.
+    /// Bracket calibration: the reference turned end for end at the fence.
     BracketSineSeatedTurned,
     /// A bracket's calibration, to keep.
     BracketResult,
@@ -399,10 +409,10 @@ impl ScreenKind {
                 "notes the fault (report it with the message), then presses OK to resume the session"
             }
             ScreenKind::Stage0Bench => {
-                "puts the pendant on a stable bench and lets go (NEXT skips stage 0)"
+                "puts the pendant on a stable bench and lets go: the first of four headings, captured on stillness (NEXT skips stage 0)"
             }
             ScreenKind::Stage0Turned => {
-                "turns the pendant 180° on the same spot, lets go, then presses OK"
+                "turns the pendant about a quarter turn by hand on the same spot (no need to be exact: the headings come from the readings), lets go, then presses OK; four headings in all"
             }
             ScreenKind::Stage1Arm => {
                 "clips the pendant to the upper arm, x along joint 2; brings axis 1 to its mark and joint 2 to the stage-1 pose, every joint arriving moving positive; capture follows on stillness"
@@ -414,16 +424,16 @@ impl ScreenKind {
                 "turns axis 1 by 180°, all else locked, arriving moving positive, then presses OK; then past and back from above"
             }
             ScreenKind::Pose => {
-                "clips the pendant to the flange and lets the robot program (`zerocal program`) drive each pose, every joint arriving moving positive: the targets (0.01°) only tell which pose; jogged to them a pose is off by up to 0.005° per joint; capture is automatic"
+                "clips the pendant to the flange and lets the robot program (`zerocal program`) drive each pose, every joint arriving moving positive: the six targets (0.01°; joint 1 at its mark, joint 2 where the plan swings it) only tell which pose; jogged to them a pose is off by up to 0.005° per joint; capture is automatic"
             }
             ScreenKind::PoseAbove => {
                 "lets the program take every joint past the same targets and back, arriving moving negative; capture is automatic"
             }
             ScreenKind::ClosingBench => {
-                "puts the pendant back on stage 0's bench, same spot, and lets go; capture follows on stillness (NEXT skips: the bias' drift is then not measured)"
+                "puts the pendant back on stage 0's bench, same spot, and lets go: the first of four headings again, captured on stillness (NEXT skips: the bias' drift is then not measured)"
             }
             ScreenKind::ClosingTurned => {
-                "turns the pendant 180° on the same spot, lets go, then presses OK"
+                "turns the pendant about a quarter turn by hand on the same spot, lets go, then presses OK"
             }
             ScreenKind::NoPlan => {
                 "uploads a plan over USB (`zerocal pendant load-profile ROBOT`) or presses BACK"
@@ -447,7 +457,9 @@ impl ScreenKind {
             ScreenKind::StillMoving => {
                 "checks that the robot has stopped (brakes, program finished); the capture waits"
             }
-            ScreenKind::StageRefused => "redoes the step: the two readings did not agree",
+            ScreenKind::StageRefused => {
+                "retakes the last reading: stage 0's headings or stage 1's readings did not solve (the line says why)"
+            }
             ScreenKind::ResultOffsets => {
                 "reads each offset as the controller takes it (its joint names, signs and J2-J3 coupling, in its joint degrees), a check on the spot; the numbers to enter are `zerocal session`'s on the export, the same fit (the profile's masses for the sag, the brackets' calibrations) in f64, converted to motor radians or counts where the controller takes them; NEXT for details, hold OK for a new session"
             }
@@ -455,16 +467,16 @@ impl ScreenKind {
             ScreenKind::ResultWarning => "reads what to distrust before entering the offsets",
             ScreenKind::NoResult => "reads why, then BACK to retake poses",
             ScreenKind::BracketPlate => {
-                "puts the pendant alone on the levelled surface plate, lets go and presses OK (BACK leaves the calibration)"
+                "puts the pendant alone on the levelled surface plate, lets go and presses OK: the first of four headings (BACK leaves the calibration)"
             }
             ScreenKind::BracketPlateTurned => {
-                "turns the pendant half a turn on the same spot, lets go and presses OK"
+                "turns the pendant about a quarter turn by hand on the same spot (no need to be exact), lets go and presses OK"
             }
             ScreenKind::BracketSeated => {
-                "seats the pendant in the bracket, the bracket on its reference on the plate, lets go and presses OK"
+                "seats the pendant in the bracket, the bracket on its reference on the plate, lets go and presses OK: the first of four headings"
             }
             ScreenKind::BracketSeatedTurned => {
-                "turns the reference half a turn on the same spot, lets go and presses OK"
+                "turns the reference about a quarter turn by hand on the same spot, lets go and presses OK"
             }
             ScreenKind::BracketSine => {
                 "puts the pendant alone on the sine plate (about 5°), its long side against the fence, lets go and presses OK"
@@ -528,10 +540,10 @@ impl Screen {
                 match (&bracket.outcome, bracket.step) {
                     (Some(Ok(_)), _) => ScreenKind::BracketResult,
                     (Some(Err(_)), _) => ScreenKind::BracketRefused,
-                    (None, BracketStep::Alone) => ScreenKind::BracketPlate,
-                    (None, BracketStep::AloneTurned) => ScreenKind::BracketPlateTurned,
-                    (None, BracketStep::Seated) => ScreenKind::BracketSeated,
-                    (None, BracketStep::SeatedTurned) => ScreenKind::BracketSeatedTurned,
+                    (None, BracketStep::Alone { heading: 0 }) => ScreenKind::BracketPlate,
+                    (None, BracketStep::Alone { .. }) => ScreenKind::BracketPlateTurned,
+                    (None, BracketStep::Seated { heading: 0 }) => ScreenKind::BracketSeated,
+                    (None, BracketStep::Seated { .. }) => ScreenKind::BracketSeatedTurned,
                     (None, BracketStep::AloneTilted) => ScreenKind::BracketSine,
                     (None, BracketStep::AloneTiltedTurned) => ScreenKind::BracketSineTurned,
                     (None, BracketStep::SeatedTilted) => ScreenKind::BracketSineSeated,
@@ -553,8 +565,8 @@ impl Screen {
                     return ScreenKind::StillMoving;
                 }
                 match capture.prompt {
-                    Prompt::Stage0First => ScreenKind::Stage0Bench,
-                    Prompt::Stage0Second => ScreenKind::Stage0Turned,
+                    Prompt::Stage0 { heading: 0 } => ScreenKind::Stage0Bench,
+                    Prompt::Stage0 { .. } => ScreenKind::Stage0Turned,
                     Prompt::Stage1Before(Approach::FromBelow) => ScreenKind::Stage1Arm,
                     Prompt::Stage1Before(Approach::FromAbove) => ScreenKind::Stage1ArmAbove,
                     Prompt::Stage1After(_) => ScreenKind::Stage1Turned,
@@ -567,8 +579,8 @@ impl Screen {
                         ..
                     } => ScreenKind::PoseAbove,
                     Prompt::NoPose => ScreenKind::NoPlan,
-                    Prompt::ClosingFirst => ScreenKind::ClosingBench,
-                    Prompt::ClosingSecond => ScreenKind::ClosingTurned,
+                    Prompt::Closing { heading: 0 } => ScreenKind::ClosingBench,
+                    Prompt::Closing { .. } => ScreenKind::ClosingTurned,
                 }
             }
         }
@@ -601,25 +613,22 @@ impl Screen {
             });
         }
         let approach = view.approach.unwrap_or(Approach::FromBelow);
+        let heading = view.heading.unwrap_or(0);
         let prompt = match view.phase {
-            Phase::Stage0First => Prompt::Stage0First,
-            Phase::Stage0Second => Prompt::Stage0Second,
+            Phase::Stage0 => Prompt::Stage0 { heading },
             Phase::Stage1Before => Prompt::Stage1Before(approach),
             Phase::Stage1After => Prompt::Stage1After(approach),
-            Phase::ClosingFirst => Prompt::ClosingFirst,
-            Phase::ClosingSecond => Prompt::ClosingSecond,
+            Phase::Closing => Prompt::Closing { heading },
             Phase::Stage2 | Phase::Done => match view.pose {
-                Some((index, of, joints_rad)) => {
-                    // The wrist's targets: joints 1 and 2 stay where stage 1 had them.
-                    let shown = display.shown_deg(&joints_rad);
-                    Prompt::Pose {
-                        number: index + 1,
-                        of,
-                        approach,
-                        names: core::array::from_fn(|k| display.names[k + 2].clone()),
-                        joints_deg: [shown[2], shown[3], shown[4], shown[5]],
-                    }
-                }
+                Some((index, of, joints_rad)) => Prompt::Pose {
+                    number: index + 1,
+                    of,
+                    approach,
+                    names: display.names.clone(),
+                    // Every joint: joint 1 at stage 1's mark, joint 2 where the plan
+                    // takes it.
+                    joints_deg: display.shown_deg(&joints_rad),
+                },
                 None => Prompt::NoPose,
             },
         };
@@ -708,6 +717,7 @@ mod tests {
             stillness: Stillness::Moving,
             armed: false,
             approach: Some(Approach::FromAbove),
+            heading: None,
             pose: Some((2, 24, joints)),
             check: false,
             captured: 5,
@@ -731,9 +741,10 @@ mod tests {
         assert_eq!((number, approach), (3, Approach::FromAbove));
         assert_eq!(
             names.each_ref().map(|n| n.as_str()),
-            ["A3", "A4", "A5", "A6"]
+            ["A1", "A2", "A3", "A4", "A5", "A6"]
         );
-        for (got, want) in joints_deg.iter().zip([100.0, -20.0, 0.0, 5.0]) {
+        // Joint 2 too: stage 2 may swing it.
+        for (got, want) in joints_deg.iter().zip([0.0, -180.0, 100.0, -20.0, 0.0, 5.0]) {
             assert!((got - want).abs() < 1e-4, "{joints_deg:?}");
         }
     }

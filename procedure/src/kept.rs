@@ -111,8 +111,8 @@ pub struct KeptResult {
     pub residual_rms_deg: f32,
     /// The verdict's warnings, a bit each ([`VERDICT_WORDS`]); 0 is a pass.
     pub warnings: u8,
-    /// The sensor's temperature (°C) during stage 0's reversal, stage 1's half turn and
-    /// the closing reversal ([`TEMPERATURE_STAGES`]), where recorded.
+    /// The sensor's temperature (°C) during stage 0's bench readings, stage 1's half
+    /// turn and the closing bench readings ([`TEMPERATURE_STAGES`]), where recorded.
     pub temperatures_c: [Option<f32>; 3],
     /// The brackets' IDs, the upper arm's then the flange's, where the session applied a
     /// calibration ([`zerocal_core::bracket::BracketMount::ALL`]).

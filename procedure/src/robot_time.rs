@@ -13,9 +13,10 @@
 //!    flange, and every pose of the plan is captured twice the same way. The session
 //!    solver averages the two captures of a pose (`zerocal_core::session::merge_repeats`): the
 //!    reading at the middle of every gear's play.
-//! 3. **The closing reversal.** The robot parks, the pendant is taken off and reversed on
-//!    the bench as in stage 0 (two captures, turned 180° on the same spot between them,
-//!    an OK arming the second): a third mounting. The robot does not move for it.
+//! 3. **The closing bench readings.** The robot parks, the pendant is taken off and read
+//!    on the bench as in stage 0 ([`BENCH_HEADINGS`] captures, turned by hand about a
+//!    quarter turn on the same spot between them, an OK arming each after the first): a
+//!    third mounting. The robot does not move for it.
 //!
 //! Its robot time is modelled as:
 //!
@@ -35,8 +36,9 @@
 //!   [`crate::stillness::StillnessConfig`]), plus two sensor periods (the window
 //!   completes on the first sample past its length; one more as margin).
 //! - **Operator.** The three mountings of the pendant (upper arm, flange, bench), and an
-//!   OK on the pendant where its capture rule needs one (after the half turns, and after
-//!   any move that does not move the reading enough to arm the next capture).
+//!   OK on the pendant where its capture rule needs one (after joint 1's half turn and
+//!   each turn on the bench, and after any move that does not move the reading enough
+//!   to arm the next capture).
 //!
 //! Poses here are in the joint coordinates the controller interpolates in and its
 //! speed limits apply to (its own joint degrees): the caller converts. The functions
@@ -46,6 +48,7 @@ use core::fmt;
 use zerocal_core::model::JOINTS;
 use zerocal_core::plan::MAX_POSES;
 use zerocal_core::real::Real;
+use zerocal_core::stage0::BENCH_HEADINGS;
 
 /// Captures of every pose (stage 1's two and stage 2's): one from each side of the
 /// backlash.
@@ -143,7 +146,7 @@ pub struct SessionTime<T> {
     /// The robot moving.
     pub motion_s: T,
     /// Standing for settling and the still window at every capture (the closing
-    /// reversal's two on the bench included).
+    /// readings' on the bench included).
     pub dwell_s: T,
     /// The pendant's three mountings (upper arm, flange, bench).
     pub remount_s: T,
@@ -153,7 +156,7 @@ pub struct SessionTime<T> {
     pub total_s: T,
     /// Moves.
     pub moves: u16,
-    /// Captures (stage 1's four, two per stage-2 pose, the closing reversal's two).
+    /// Captures (stage 1's four, two per stage-2 pose, the closing readings' headings).
     pub captures: u16,
     /// Mountings of the pendant.
     pub mountings: u16,
@@ -174,7 +177,7 @@ pub struct SessionPath<'a, T> {
     pub mount2: [T; JOINTS],
     /// The stage-2 poses, in order.
     pub poses: &'a [[T; JOINTS]],
-    /// Where the robot parks while the pendant is taken off for the closing reversal.
+    /// Where the robot parks while the pendant is taken off for the closing readings.
     pub park: [T; JOINTS],
 }
 
@@ -185,7 +188,7 @@ pub struct CheckPath<'a, T> {
     pub mount: [T; JOINTS],
     /// The check's poses (the session plan's, a subset), in order.
     pub poses: &'a [[T; JOINTS]],
-    /// Where the robot parks while the pendant is taken off for the closing reversal.
+    /// Where the robot parks while the pendant is taken off for the closing readings.
     pub park: [T; JOINTS],
 }
 
@@ -298,8 +301,8 @@ impl<T: Real> TimeModel<T> {
     /// pendant clipped to the upper arm at `mount1` (the move to it starts from a pose
     /// unknown here and is not counted), stage 1's four captures, the pendant moved to
     /// the flange at `mount2`, two captures of every stage-2 pose in order, then the
-    /// robot parked at `park` for the closing reversal on the bench (a mounting, two
-    /// captures and an OK).
+    /// robot parked at `park` for the closing readings on the bench (a mounting and
+    /// [`BENCH_HEADINGS`] captures, an OK before each after the first).
     ///
     /// `needs_ok(mounting, path)` says whether driving `path` from the last capture
     /// (its first point) leaves the pendant's next capture unarmed, so that an
@@ -355,7 +358,7 @@ impl<T: Real> TimeModel<T> {
     /// The robot time of a check along `path`: the pendant clipped to the flange at
     /// `mount` (the move to it starts from a pose unknown here and is not counted), two
     /// captures of every check pose in order, then the robot parked at `park` for the
-    /// closing reversal on the bench, counted as a session's is. No stage 1. `needs_ok`
+    /// closing readings on the bench, counted as a session's are. No stage 1. `needs_ok`
     /// as for [`session_time`](Self::session_time).
     pub fn check_time(
         &self,
@@ -369,7 +372,7 @@ impl<T: Real> TimeModel<T> {
 
     /// The part a session and a check share, added to `s`: the pendant clipped to the
     /// flange at `mount`, two captures of every pose, the park and the closing
-    /// reversal; then the total.
+    /// readings; then the total.
     fn on_the_flange(
         &self,
         s: &mut SessionTime<T>,
@@ -412,13 +415,15 @@ impl<T: Real> TimeModel<T> {
             capture(s);
             here = *q;
         }
-        // The closing reversal: park, the pendant to the bench, two captures (an OK
-        // arms the one after the half turn).
+        // The closing readings: park, the pendant to the bench, a capture at every
+        // heading (an OK arms each after a turn by hand).
         run(s, &[here, park]);
         mount(s);
         capture(s);
-        ok(s);
-        capture(s);
+        for _ in 1..BENCH_HEADINGS {
+            ok(s);
+            capture(s);
+        }
         s.total_s = s.motion_s + s.dwell_s + s.remount_s + s.operator_s;
     }
 }
@@ -664,21 +669,23 @@ mod tests {
             + j(4, 45.0); // park at the flange's mount
         assert!(isclose(t.motion_s, expect_motion, 0.0, 1e-9), "{t:?}");
         assert_eq!(t.moves, 2 + 2 + 3 + 2 + 1 + 2 * 4 + 1);
-        // Stage 1's four captures, two per pose, the closing reversal's two.
-        assert_eq!(t.captures, 4 + 2 * 2 + 2);
-        assert!(isclose(t.dwell_s, 10.0 * 3.1, 0.0, 1e-12));
+        // Stage 1's four captures, two per pose, the closing readings' headings.
+        let bench = BENCH_HEADINGS as u16;
+        assert_eq!(t.captures, 4 + 2 * 2 + bench);
+        assert!(isclose(t.dwell_s, f64::from(8 + bench) * 3.1, 0.0, 1e-12));
         assert_eq!(t.mountings, 3);
-        // The half turn's and the closing reversal's OKs, and one after every move that
-        // may need one: stage 1's two seconds, pose 1's second, pose 2's both.
-        assert_eq!(t.ok_stops, 2 + 5);
+        // The half turn's OK and one for each heading turned by hand on the bench, and
+        // one after every move that may need one: stage 1's two seconds, pose 1's
+        // second, pose 2's both.
+        assert_eq!(t.ok_stops, 1 + (bench - 1) + 5);
         assert!(isclose(
             t.total_s,
-            t.motion_s + t.dwell_s + 3.0 * 60.0 + 7.0 * 10.0,
+            t.motion_s + t.dwell_s + 3.0 * 60.0 + f64::from(bench + 5) * 10.0,
             0.0,
             1e-9
         ));
-        // Nothing needs an OK but the two half turns.
-        assert_eq!(m.session_time(&path, |_, _| false).ok_stops, 2);
+        // Nothing needs an OK but the half turn and the turns on the bench.
+        assert_eq!(m.session_time(&path, |_, _| false).ok_stops, bench);
         assert!(m.validate().is_ok());
         let mut bad = m;
         bad.overshoot_deg = 0.0;
@@ -716,12 +723,17 @@ mod tests {
             isclose(check.motion_s, expect_motion, 0.0, 1e-9),
             "{check:?}"
         );
-        // Two captures a pose and the closing reversal's two; the flange and the bench
-        // mountings; pose 1's second, pose 2's both and the reversal's OK.
-        assert_eq!((check.captures, check.mountings, check.ok_stops), (6, 2, 4));
+        // Two captures a pose and the closing headings; the flange and the bench
+        // mountings; pose 1's second, pose 2's both and an OK for each heading turned
+        // by hand.
+        let bench = BENCH_HEADINGS as u16;
+        assert_eq!(
+            (check.captures, check.mountings, check.ok_stops),
+            (4 + bench, 2, 3 + bench - 1)
+        );
         assert!(isclose(
             check.total_s,
-            check.motion_s + 6.0 * 3.1 + 2.0 * 60.0 + 4.0 * 10.0,
+            check.motion_s + f64::from(4 + bench) * 3.1 + 2.0 * 60.0 + f64::from(2 + bench) * 10.0,
             0.0,
             1e-9
         ));

@@ -29,12 +29,16 @@ pub const POLL: Duration = Duration::from_millis(500);
 /// screen says it in its own).
 pub fn step_instruction(step: BracketStep) -> &'static str {
     match step {
-        BracketStep::Alone => "the pendant alone on the levelled plate",
-        BracketStep::AloneTurned => "the pendant turned half a turn on the same spot",
-        BracketStep::Seated => {
+        BracketStep::Alone { heading: 0 } => "the pendant alone on the levelled plate",
+        BracketStep::Alone { .. } => {
+            "the pendant turned by hand about a quarter turn on the same spot (need not be exact)"
+        }
+        BracketStep::Seated { heading: 0 } => {
             "the pendant in the bracket, the bracket on its reference block, on the plate"
         }
-        BracketStep::SeatedTurned => "the reference block turned half a turn on the same spot",
+        BracketStep::Seated { .. } => {
+            "the reference block turned by hand about a quarter turn on the same spot"
+        }
         BracketStep::AloneTilted => {
             "the pendant alone on the sine plate, its long side against the fence"
         }

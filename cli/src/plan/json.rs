@@ -28,7 +28,7 @@ pub struct RobotTimeJson {
     /// Moves.
     pub moves: u16,
     /// Captures: two per pose (stage 1's two and every stage-2 pose), the closing
-    /// reversal's two.
+    /// readings' headings.
     pub captures: u16,
     /// Mountings of the pendant (upper arm, flange, the bench for the closing
     /// reversal).

@@ -120,10 +120,13 @@ mod tests {
         let total = t["total_s"].as_f64().unwrap_or(f64::NAN);
         assert!((parts - total).abs() < 1e-9, "{parts} vs {total}");
         // Two captures of stage 1's two poses and of every planned pose, the closing
-        // reversal's two; three mountings; each capture's dwell 3.1 s.
+        // readings' headings; three mountings; each capture's dwell 3.1 s.
         let poses = v["poses_deg"].as_array().map_or(0, Vec::len) as u64;
         let captures = t["captures"].as_u64().unwrap_or(0);
-        assert_eq!(captures, CAPTURES_PER_POSE as u64 * (poses + 2) + 2);
+        assert_eq!(
+            captures,
+            CAPTURES_PER_POSE as u64 * (poses + 2) + zerocal_procedure::BENCH_HEADINGS as u64
+        );
         assert_eq!(t["mountings"].as_u64(), Some(3));
         let dwell = t["dwell_per_capture_s"].as_f64().unwrap_or(f64::NAN);
         assert!((dwell - 3.1).abs() < 1e-12, "{dwell}");

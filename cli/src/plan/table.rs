@@ -138,10 +138,12 @@ fn write_robot_time(out: &mut String, sp: &SessionPlan) {
     );
     let _ = writeln!(
         out,
-        "  every pose captured twice (stage 1's two and the {} of the plan): every joint arriving from {} deg below, then from {} deg above; then the closing reversal on the bench (a mounting, 2 captures, 1 OK)",
+        "  every pose captured twice (stage 1's two and the {} of the plan): every joint arriving from {} deg below, then from {} deg above; then the closing readings on the bench (a mounting, {} captures turned by hand, {} OKs)",
         p.poses_rad.len(),
         tm.model.approach_deg,
         tm.model.overshoot_deg,
+        zerocal_procedure::BENCH_HEADINGS,
+        zerocal_procedure::BENCH_HEADINGS - 1,
     );
     let _ = writeln!(
         out,

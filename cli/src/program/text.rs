@@ -172,7 +172,10 @@ pub fn header_lines(
         format!(
             "Stop: clip the pendant to the upper arm (the robot stands with the pendant tilted past its range, so it cannot capture early). Stage 1: the stage-1 pose twice, then {j1} turned by 180 deg twice (an OK on the pendant arms the first). Stop: move the pendant to the flange (tilted again). Stage 2: the plan's poses in its order, twice each; load the same plan into the pendant (plan set)."
         ),
-        "Closing reversal: the robot parks where the pendant went on the flange and stops; take the pendant off and reverse it on the bench as in stage 0 (two readings, turned 180 deg on the same spot between them). The program ends there.".to_owned(),
+        format!(
+            "Closing bench readings: the robot parks where the pendant went on the flange and stops; take the pendant off and read it on the bench as in stage 0 ({} headings, turned by hand about a quarter turn on the same spot between them). The program ends there.",
+            zerocal_procedure::BENCH_HEADINGS
+        ),
         format!(
             "Speed: joint moves at {} % of each joint's maximum speed, exact stops.",
             t.speed_percent

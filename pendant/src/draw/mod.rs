@@ -5,6 +5,9 @@
 //! Drawing is generic over any `DrawTarget<Color = BinaryColor>`: the SSD1306's frame
 //! buffer on the board, a plain frame buffer on the desktop, so the gallery shows the
 //! pixels the pendant shows.
+//!
+//! Here the session's capture screens, the faults and the glyphs; `bracket.rs` a
+//! bracket calibration's screens, `result.rs` the result's pages.
 
 use core::fmt::Write;
 
@@ -14,21 +17,12 @@ use embedded_graphics::pixelcolor::BinaryColor;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use heapless::String;
-use zerocal_core::bracket::{
-    BracketError, MAX_BRACKET_TURN_DEG, PLATE_LEVEL_MAX_DEG, SINE_PLATE_MAX_DEG, SINE_PLATE_MIN_DEG,
-};
 use zerocal_core::decimal::Fixed;
-use zerocal_core::error::{FitError, StageError};
-use zerocal_core::report::Warning;
-use zerocal_core::session::SessionError;
-use zerocal_procedure::bracket_cal::{BracketNotice, BracketStep};
-use zerocal_procedure::{Approach, Notice, MAX_PLAN_POSES};
+use zerocal_core::error::StageError;
+use zerocal_procedure::{Approach, Notice, BENCH_HEADINGS, MAX_PLAN_POSES};
 
 use crate::messages::SensorFault;
-use crate::screen::{
-    BracketScreen, CaptureScreen, FitSummary, Offset, Prompt, Refusal, RestartCause, ResultScreen,
-    Screen, Settle,
-};
+use crate::screen::{CaptureScreen, Prompt, RestartCause, Screen, Settle};
 use crate::store::ResetReason;
 
 /// Decimals of an offset and its 1σ on the result screen: `zerocal session`'s (its
@@ -112,8 +106,8 @@ pub fn lines(screen: &Screen) -> [Text; 6] {
             ]
         }
         Screen::Capture(capture) => capture_lines(capture),
-        Screen::Result(result) => result_lines(result),
-        Screen::Bracket(bracket) => bracket_lines(bracket),
+        Screen::Result(result) => result::result_lines(result),
+        Screen::Bracket(bracket) => bracket::bracket_lines(bracket),
         Screen::CheckDone(done) => [
             fixed("CHECK CAPTURED"),
             line(format_args!("{} poses, both sides", done.poses)),
@@ -126,131 +120,6 @@ pub fn lines(screen: &Screen) -> [Text; 6] {
                 fixed("hold OK: new session")
             },
         ],
-    }
-}
-
-/// Decimals of a bracket's turn and its uncertainty (deg): 0.00001° is 1.7e-7 rad,
-/// below what a calibration resolves, as `zerocal pendant brackets` writes them.
-pub const BRACKET_DECIMALS: u8 = 5;
-
-/// A bracket calibration: each step's instruction, the result, or the refusal.
-fn bracket_lines(screen: &BracketScreen) -> [Text; 6] {
-    if let Some(fault) = screen.fault {
-        return fault_lines(fault);
-    }
-    let title = line(format_args!("BRACKET {}", screen.id));
-    let footer = if screen.store_failed {
-        fixed("! FLASH WRITE FAILED")
-    } else {
-        fixed("OK: keep  BACK: undo")
-    };
-    match &screen.outcome {
-        Some(Ok(r)) => {
-            let (x_deg, y_deg) = r.rotation_rad.to_deg();
-            let u_deg = r.uncertainty_rad.to_degrees();
-            let temperature = match r.temperature_c {
-                Some(t) => line(format_args!("  {}\u{b0}C", sgn(t, 1))),
-                None => fixed("  --\u{b0}C"),
-            };
-            return [
-                title,
-                // The yaw to a thousandth: the sine plate resolves it to some 0.04°.
-                line(format_args!(
-                    "{} z {}\u{b0}",
-                    screen.mount.name(),
-                    sgn(r.yaw.yaw_rad.to_degrees(), 3)
-                )),
-                line(format_args!("x {}\u{b0}", sgn(x_deg, BRACKET_DECIMALS))),
-                line(format_args!("y {}\u{b0}", sgn(y_deg, BRACKET_DECIMALS))),
-                line(format_args!(
-                    "u {}\u{b0}{temperature}",
-                    fx(u_deg, BRACKET_DECIMALS)
-                )),
-                footer,
-            ];
-        }
-        Some(Err(e)) => {
-            let [a, b, c] = bracket_refusal_lines(e);
-            return [
-                fixed("BRACKET REFUSED"),
-                a,
-                b,
-                c,
-                line(format_args!("id {}", screen.id)),
-                fixed("OK: again BACK: undo"),
-            ];
-        }
-        None => {}
-    }
-    let (first, second) = match screen.step {
-        BracketStep::Alone => ("1/8 pendant alone on", "levelled plate; OK"),
-        BracketStep::AloneTurned => ("2/8 turn it 180\u{b0} on", "same spot; OK"),
-        BracketStep::Seated => ("3/8 pendant in brkt,", "brkt on its ref.; OK"),
-        BracketStep::SeatedTurned => ("4/8 turn the ref.", "180\u{b0} same spot; OK"),
-        BracketStep::AloneTilted => ("5/8 pendant alone on", "sine plate, fence; OK"),
-        BracketStep::AloneTiltedTurned => ("6/8 end for end at", "the fence; OK"),
-        BracketStep::SeatedTilted => ("7/8 ref. on sine pl.", "at the fence; OK"),
-        BracketStep::SeatedTiltedTurned | BracketStep::Done => {
-            ("8/8 ref. end for end", "at the fence; OK")
-        }
-    };
-    let hint = match screen.notice {
-        _ if screen.store_failed => fixed("! FLASH WRITE FAILED"),
-        Some(BracketNotice::ReadingOutOfRange { axis, value_deg }) => {
-            line(format_args!("! {axis}={}\u{b0} > range", sgn(value_deg, 2)))
-        }
-        Some(BracketNotice::SensorFault) => fixed("! sensor fault"),
-        Some(BracketNotice::Captured) => fixed("captured  BACK: undo"),
-        None if screen.step == BracketStep::Alone => {
-            line(format_args!("{} BACK: leave", screen.mount.name()))
-        }
-        None => fixed("BACK: undo"),
-    };
-    [
-        title,
-        fixed(first),
-        fixed(second),
-        live_text(screen.live_deg),
-        settle_text(screen.settle, screen.armed),
-        hint,
-    ]
-}
-
-/// Why a bracket calibration was refused, in three lines.
-fn bracket_refusal_lines(e: &BracketError) -> [Text; 3] {
-    match *e {
-        BracketError::PlateNotLevel { tilt_deg } => [
-            line(format_args!("plate tilted {}\u{b0}", fx(tilt_deg, 3))),
-            line(format_args!(
-                "more than {}\u{b0}:",
-                fx(PLATE_LEVEL_MAX_DEG, 1)
-            )),
-            fixed("level it and repeat"),
-        ],
-        BracketError::Implausible => [
-            line(format_args!(
-                "turn > {}\u{b0}: not a",
-                fx(MAX_BRACKET_TURN_DEG, 1)
-            )),
-            fixed("bracket's; check its"),
-            fixed("seats and reference"),
-        ],
-        BracketError::NotOnSinePlate { tilt_deg } => [
-            line(format_args!("sine plate {}\u{b0}:", fx(tilt_deg, 2))),
-            line(format_args!(
-                "set {}-{}\u{b0} and",
-                fx(SINE_PLATE_MIN_DEG, 0),
-                fx(SINE_PLATE_MAX_DEG, 0)
-            )),
-            fixed("repeat"),
-        ],
-        BracketError::Reading(_) => [
-            fixed("a reading is out of"),
-            fixed("range or not a"),
-            fixed("number: retake it"),
-        ],
-        // Not made by a calibration on the pendant.
-        BracketError::BadId | BracketError::BadDate => [fixed("bad ID"), Text::new(), Text::new()],
     }
 }
 
@@ -366,17 +235,17 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
         ];
     }
     let (title, first, second, hint): (Text, &str, &str, &str) = match screen.prompt {
-        Prompt::Stage0First => (
-            fixed("STAGE 0: sensor bias"),
+        Prompt::Stage0 { heading: 0 } => (
+            bench_title("STAGE 0", 0),
             "pendant on a bench,",
             "hold still",
             "NEXT: skip stage 0",
         ),
-        Prompt::Stage0Second => (
-            fixed("STAGE 0: 2nd reading"),
-            "turn pendant 180\u{b0} on",
-            "same spot, then OK",
-            "BACK: redo 1st",
+        Prompt::Stage0 { heading } => (
+            bench_title("STAGE 0", heading),
+            TURN_BY_HAND[0],
+            TURN_BY_HAND[1],
+            "BACK: undo",
         ),
         Prompt::Stage1Before(Approach::FromBelow) => (
             fixed("STAGE 1: at mark"),
@@ -402,24 +271,24 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
             "back: arrive moving -",
             "BACK: undo",
         ),
-        Prompt::ClosingFirst => (
-            fixed("CLOSING: bench again"),
+        Prompt::Closing { heading: 0 } => (
+            bench_title("CLOSING", 0),
             "pendant on stage 0's",
             "spot, let go",
             "NEXT: skip closing",
         ),
-        Prompt::ClosingSecond => (
-            fixed("CLOSING: 2nd reading"),
-            "turn pendant 180\u{b0} on",
-            "same spot, then OK",
-            "BACK: redo 1st",
+        Prompt::Closing { heading } => (
+            bench_title("CLOSING", heading),
+            TURN_BY_HAND[0],
+            TURN_BY_HAND[1],
+            "BACK: undo",
         ),
         Prompt::Pose {
             number,
             of,
             approach,
             ref names,
-            joints_deg: [j3, j4, j5, j6],
+            ref joints_deg,
         } => {
             let side = match approach {
                 Approach::FromBelow => "below",
@@ -429,31 +298,31 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
                 "POSE {number}/{of} {side} ({})",
                 screen.captured
             ));
+            // Two joints a line, all six: joint 1 at its mark, joint 2 where the plan
+            // swings it, the wrist's four. The live reading gives way to them (the
+            // out-of-range and still-moving screens show it).
+            let pair = |k: usize| {
+                line(format_args!(
+                    "{:<3}{:>7} {:<3}{:>7}",
+                    names[k],
+                    sgn(joints_deg[k], TARGET_DECIMALS),
+                    names[k + 1],
+                    sgn(joints_deg[k + 1], TARGET_DECIMALS)
+                ))
+            };
             return [
                 title,
-                line(format_args!(
-                    "{:<3}{:>7} {:<3}{:>7}",
-                    names[0],
-                    sgn(j3, TARGET_DECIMALS),
-                    names[1],
-                    sgn(j4, TARGET_DECIMALS)
-                )),
-                line(format_args!(
-                    "{:<3}{:>7} {:<3}{:>7}",
-                    names[2],
-                    sgn(j5, TARGET_DECIMALS),
-                    names[3],
-                    sgn(j6, TARGET_DECIMALS)
-                )),
-                live_line(screen),
+                pair(0),
+                pair(2),
+                pair(4),
                 settle_line(screen),
                 // The session takes each capture at the plan's commanded joints, so
                 // the robot program (`zerocal program`) must drive the poses: a pose
                 // jogged to the 0.01° shown here is off by up to 0.005° per joint, the
                 // whole accuracy goal. The targets only tell which pose this is. The
-                // program also keeps axis 1 at its mark and joint 2 where stage 1 left
-                // it (core's Stage1Result::handover). Said before the first pose, over
-                // the `captured` of stage 1's last reading, which is not this pose's.
+                // program also keeps axis 1 at its mark. Said before the first pose,
+                // over the `captured` of stage 1's last reading, which is not this
+                // pose's.
                 if screen.captured == 0
                     && matches!(screen.notice, None | Some(Notice::Captured))
                     && !screen.store_failed
@@ -479,6 +348,19 @@ fn capture_lines(screen: &CaptureScreen) -> [Text; 6] {
         settle_line(screen),
         notice_line(screen, hint),
     ]
+}
+
+/// The two prompt lines of a heading after the first on the bench: turned by hand,
+/// about a quarter turn, on the same spot; the turn need not be exact (core solves the
+/// headings from the readings).
+const TURN_BY_HAND: [&str; 2] = ["turn it by hand about", "90\u{b0}, same spot; OK"];
+
+/// A bench step's title: `STAGE 0: bench 2/4`.
+fn bench_title(step: &str, heading: usize) -> Text {
+    line(format_args!(
+        "{step}: bench {}/{BENCH_HEADINGS}",
+        heading + 1
+    ))
 }
 
 /// The whole screen for a sensor without readings: what is wrong and what to do.
@@ -590,304 +472,6 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
     }
 }
 
-/// The result: offsets, details, then one page per warning; or why there is none.
-fn result_lines(screen: &ResultScreen) -> [Text; 6] {
-    let footer = if screen.store_failed {
-        fixed("! FLASH WRITE FAILED")
-    } else {
-        // A brush of OK keeps the result: a new session needs OK held.
-        fixed("NEXT:page hold OK:new")
-    };
-    let summary = match &screen.fit {
-        Ok(summary) => summary,
-        Err(error) => {
-            let [a, b, c, d] = refusal_lines(error);
-            return [fixed("NO RESULT"), a, b, c, d, footer];
-        }
-    };
-    let pages = ResultScreen::pages(&screen.fit);
-    let verdict = if summary.warnings.is_empty() {
-        "PASS"
-    } else {
-        "WARN"
-    };
-    match screen.page {
-        0 => offset_lines(summary, verdict, pages),
-        1 => [
-            line(format_args!("DETAILS {verdict}     2/{pages}")),
-            line(format_args!(
-                "poses {}  iter {}",
-                summary.poses, summary.iterations
-            )),
-            line(format_args!(
-                "rms {}\u{b0}",
-                fx(summary.residual_rms_deg, 5)
-            )),
-            line(format_args!("cond {}", fx(summary.condition_number, 1))),
-            match summary.base_tilt_deg {
-                Some((a, b)) => line(format_args!("tilt a{} b{}", sgn(a, 3), sgn(b, 3))),
-                None => fixed("tilt: no stage 1"),
-            },
-            footer,
-        ],
-        page => {
-            let index = page - 2;
-            let [a, b, c, d] = match summary.warnings.get(index) {
-                Some(warning) => warning_lines(warning),
-                None => Default::default(),
-            };
-            [
-                line(format_args!(
-                    "WARNING {}      {}/{pages}",
-                    index + 1,
-                    page + 1
-                )),
-                a,
-                b,
-                c,
-                d,
-                footer,
-            ]
-        }
-    }
-}
-
-/// Page 1: joints 2-6's offsets as the controller takes them, in its joint degrees,
-/// with 1σ: e.g. `J3  -0.32144 ±0.00077`, the digits `zerocal session` prints in its
-/// controller-terms table (NEXT: page 2).
-fn offset_lines(summary: &FitSummary, verdict: &str, pages: usize) -> [Text; 6] {
-    let joint = |offset: &Offset| {
-        line(format_args!(
-            "{:<3}{:>9} \u{b1}{}",
-            offset.name,
-            sgn(offset.value_deg, OFFSET_DECIMALS),
-            fx(offset.sigma_deg, OFFSET_DECIMALS)
-        ))
-    };
-    let [j2, j3, j4, j5, j6] = &summary.joints;
-    [
-        line(format_args!("dq deg \u{b1}1sig {verdict} 1/{pages}")),
-        joint(j2),
-        joint(j3),
-        joint(j4),
-        joint(j5),
-        joint(j6),
-    ]
-}
-
-/// A warning in four lines.
-fn warning_lines(warning: &Warning) -> [Text; 4] {
-    match *warning {
-        Warning::ResidualHigh {
-            residual_rms_deg,
-            sensor_noise_deg,
-        } => [
-            fixed("residual too high:"),
-            line(format_args!(
-                "{}x sensor noise",
-                fx(residual_rms_deg / sensor_noise_deg, 1)
-            )),
-            fixed("robot moved, wrong"),
-            fixed("pose or convention?"),
-        ],
-        Warning::BiasXUnknown => [
-            fixed("no stage 0 reversal:"),
-            fixed("j2 offset includes"),
-            fixed("the sensor x bias;"),
-            fixed("j3-j6 biased too"),
-        ],
-        Warning::SigmaFromSensorFigure => [
-            fixed("few poses: 1 sigma"),
-            fixed("from the sensor's"),
-            fixed("noise figure"),
-            Text::new(),
-        ],
-    }
-}
-
-/// Why stage 2 gave no numbers, in four lines.
-fn refusal_lines(refusal: &Refusal) -> [Text; 4] {
-    let error = match refusal {
-        Refusal::Session(SessionError::Stage2(e)) => e,
-        Refusal::Session(SessionError::Stage0(_)) => {
-            return [
-                fixed("stage 0 refused"),
-                fixed("BACK, redo it"),
-                Text::new(),
-                Text::new(),
-            ]
-        }
-        Refusal::Session(SessionError::Closing(_)) => {
-            return [
-                fixed("closing bench refused"),
-                fixed("BACK, redo it"),
-                Text::new(),
-                Text::new(),
-            ]
-        }
-        Refusal::Session(SessionError::Stage1(_)) => {
-            return [
-                fixed("stage 1 refused"),
-                fixed("BACK, redo it"),
-                Text::new(),
-                Text::new(),
-            ]
-        }
-        Refusal::Session(SessionError::Warmed { kelvin, .. }) => {
-            return [
-                fixed("warm box:"),
-                line(format_args!("moved {} K", fx(*kelvin, 1))),
-                fixed("redo stage 0 at the"),
-                fixed("end, or let it settle"),
-            ]
-        }
-        Refusal::NoOutcome => {
-            return [
-                fixed("no outcome"),
-                fixed("hold OK: new session"),
-                Text::new(),
-                Text::new(),
-            ]
-        }
-    };
-    match *error {
-        FitError::TooFewPoses { got, min } => [
-            fixed("too few poses:"),
-            line(format_args!("{got} taken, {min} needed")),
-            fixed("BACK, retake poses"),
-            Text::new(),
-        ],
-        FitError::NonFiniteJoint { pose } => [
-            line(format_args!("pose {}: joint", pose + 1)),
-            fixed("angle not finite"),
-            Text::new(),
-            Text::new(),
-        ],
-        FitError::NonFiniteReading { pose } => [
-            line(format_args!("pose {}: reading", pose + 1)),
-            fixed("not finite"),
-            Text::new(),
-            Text::new(),
-        ],
-        FitError::ReadingOutOfRange {
-            pose,
-            axis,
-            value_deg,
-            range_deg,
-        } => [
-            line(format_args!(
-                "pose {}: {axis}={}\u{b0}",
-                pose + 1,
-                sgn(value_deg, 2)
-            )),
-            line(format_args!(
-                "outside \u{b1}{}\u{b0} range",
-                fx(range_deg, 0)
-            )),
-            Text::new(),
-            Text::new(),
-        ],
-        FitError::RankDeficient { params } => [
-            fixed("rank-deficient poses:"),
-            line(format_args!("{params}")),
-            fixed("cannot be separated;"),
-            fixed("vary those joints"),
-        ],
-        FitError::IllConditioned {
-            condition_number,
-            params,
-            ..
-        } => [
-            fixed("ill-conditioned:"),
-            line(format_args!("{params} barely")),
-            line(format_args!("separable: cond {}", fx(condition_number, 0))),
-            fixed("vary those joints"),
-        ],
-        FitError::NoConvergence { iterations } => [
-            fixed("no convergence after"),
-            line(format_args!("{iterations} iterations:")),
-            fixed("wrong robot profile?"),
-            fixed("check it, convention"),
-        ],
-        FitError::ResidualTooLarge {
-            rms_deg,
-            worst_pose,
-            ..
-        } => [
-            line(format_args!("residuals {}\u{b0} RMS", fx(rms_deg, 4))),
-            line(format_args!("worst: pose {}", worst_pose + 1)),
-            fixed("bracket loose? robot"),
-            fixed("moving? wrong robot?"),
-        ],
-        FitError::PoseNotReached {
-            pose, residual_deg, ..
-        } => [
-            line(format_args!(
-                "pose {}: {}\u{b0} off",
-                pose + 1,
-                fx(residual_deg, 3)
-            )),
-            fixed("pose not reached?"),
-            fixed("check the program,"),
-            fixed("repeat stage 2"),
-        ],
-        FitError::PendantMoved {
-            from_pose,
-            step_deg,
-        } => [
-            fixed("pendant moved on"),
-            line(format_args!("flange before pose {}", from_pose + 1)),
-            line(format_args!("jump {}\u{b0}", fx(step_deg, 3))),
-            fixed("tighten, redo stage 2"),
-        ],
-        FitError::RevisitDisagrees {
-            pose,
-            revisit,
-            difference_deg,
-            ..
-        } => [
-            fixed("pendant moved on"),
-            line(format_args!("flange: pose {} read", pose + 1)),
-            line(format_args!(
-                "{}\u{b0} off at {}",
-                fx(difference_deg, 3),
-                revisit + 1
-            )),
-            fixed("tighten, redo stage 2"),
-        ],
-        FitError::PendantCreeping { drift_deg } => [
-            fixed("pendant crept on"),
-            line(format_args!("flange: {}\u{b0} drift", fx(drift_deg, 3))),
-            fixed("tighten the clamp,"),
-            fixed("repeat stage 2"),
-        ],
-        FitError::CapturesDisagree {
-            rms_deg,
-            worst_pose,
-            ..
-        } => [
-            fixed("loose flange bracket:"),
-            line(format_args!("captures differ {}\u{b0}", fx(rms_deg, 3))),
-            line(format_args!("worst: pose {}", worst_pose + 1)),
-            fixed("tighten, redo stage 2"),
-        ],
-        FitError::ImplausibleGeometry {
-            params, value_deg, ..
-        } => [
-            fixed("wrong robot profile?"),
-            line(format_args!("{params} = {}\u{b0}", fx(value_deg, 2))),
-            fixed("check the profile"),
-            fixed("and joint directions"),
-        ],
-        FitError::NonFiniteResult => [
-            fixed("the fit diverged"),
-            fixed("(non-finite result)"),
-            Text::new(),
-            Text::new(),
-        ],
-    }
-}
-
 /// A number with a fixed count of decimals, formatted by integer arithmetic: core's
 /// float formatting would add ~8 KiB of flash (see `zerocal_core::decimal`).
 fn fx(value: impl Into<f64>, decimals: u8) -> Fixed {
@@ -899,5 +483,9 @@ fn sgn(value: impl Into<f64>, decimals: u8) -> Fixed {
     Fixed::signed(value.into(), decimals)
 }
 
+mod bracket;
+mod result;
 #[cfg(test)]
 mod tests;
+
+pub use bracket::BRACKET_DECIMALS;

@@ -2,7 +2,9 @@
 //! numbers and the longest names.
 
 use super::*;
-use crate::screen::Screen;
+use crate::screen::{BracketScreen, Screen};
+use zerocal_core::bracket::BracketError;
+use zerocal_procedure::bracket_cal::{BracketNotice, BracketStep};
 
 /// Every line of every fixed screen fits the 21 glyphs of the 128 px line.
 #[test]
@@ -63,6 +65,62 @@ fn lines_fit_the_display() {
                 for text in lines(&screen) {
                     assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
                 }
+            }
+        }
+    }
+    // Every capture prompt: each heading of the bench steps, a pose with the widest
+    // targets (±720°, the link's bound) and three-letter names, with every notice.
+    let mut names: [zerocal_procedure::profile::JointName; 6] = Default::default();
+    for (k, n) in names.iter_mut().enumerate() {
+        let _ = core::fmt::Write::write_fmt(n, format_args!("AX{}", k + 1));
+    }
+    let mut prompts = std::vec::Vec::new();
+    for heading in 0..BENCH_HEADINGS {
+        prompts.push(Prompt::Stage0 { heading });
+        prompts.push(Prompt::Closing { heading });
+    }
+    for approach in Approach::ORDER {
+        prompts.push(Prompt::Stage1Before(approach));
+        prompts.push(Prompt::Stage1After(approach));
+        prompts.push(Prompt::Pose {
+            number: MAX_PLAN_POSES,
+            of: MAX_PLAN_POSES,
+            approach,
+            names: names.clone(),
+            joints_deg: [-720.0, 720.0, -359.99, 99.99, -0.01, 0.0],
+        });
+    }
+    prompts.push(Prompt::NoPose);
+    let notices = [
+        None,
+        Some(Notice::Captured),
+        Some(Notice::NoPlan),
+        Some(Notice::PlanTooLong),
+        Some(Notice::StageRefused(StageError::NotTurnedOnTheSpot {
+            rms_deg: 0.5,
+            limit_deg: 0.01,
+        })),
+        Some(Notice::StageRefused(StageError::ReadingOutOfRange {
+            axis: zerocal_core::model::TiltAxis::X,
+            value_deg: -12.34,
+            range_deg: 10.0,
+        })),
+    ];
+    for prompt in &prompts {
+        for notice in notices {
+            let screen = Screen::Capture(CaptureScreen {
+                prompt: prompt.clone(),
+                live_deg: Some((-9.9999, -9.9999)),
+                settle: Settle::Settling(99),
+                armed: false,
+                captured: zerocal_procedure::MAX_CAPTURES,
+                notice,
+                fault: None,
+                still_moving: false,
+                store_failed: false,
+            });
+            for text in lines(&screen) {
+                assert!(text.chars().count() <= 21, "{text:?} of {screen:?}");
             }
         }
     }

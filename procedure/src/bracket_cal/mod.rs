@@ -1,29 +1,32 @@
-//! A bracket's calibration, guided on the pendant: the eight readings of
+//! A bracket's calibration, guided on the pendant: the [`BRACKET_CAPTURES`] readings of
 //! docs/bracket-calibration.md as a small state machine, driven like the session's
 //! ([`crate::machine::step`]) by [`Event`]s, with the same automatic capture.
 //!
-//! 1. the pendant alone on the levelled plate;
-//! 2. the pendant turned half a turn on the same spot;
-//! 3. the pendant in the bracket, the bracket on its reference, on the plate;
-//! 4. the reference turned half a turn on the same spot;
-//! 5. the pendant alone on the sine plate, its long side against the fence;
-//! 6. the pendant turned end for end against the fence;
-//! 7. the reference (pendant in the bracket) against the fence;
-//! 8. the reference turned end for end against the fence;
+//! 1. the pendant alone on the levelled plate, read at [`BENCH_HEADINGS`] headings,
+//!    turned by hand about a quarter turn on the same spot between them (no need to be
+//!    exact: core solves the headings from the readings);
+//! 2. the pendant in the bracket, the bracket on its reference, on the plate, read at
+//!    as many headings of the reference, turned the same way;
+//! 3. the pendant alone on the sine plate, its long side against the fence;
+//! 4. the pendant turned end for end against the fence;
+//! 5. the reference (pendant in the bracket) against the fence;
+//! 6. the reference turned end for end against the fence;
 //!
 //! then [`zerocal_core::bracket::calibrate`] and [`zerocal_core::bracket::calibrate_yaw`]:
 //! the pendant's turn in the bracket, its yaw and their uncertainties, or the refusal by
-//! name. The plate is checked as soon as the first reversal is in (a tilted plate is
-//! refused before the bracket is fitted), the bracket's turn after the second, the sine
-//! plate's tilt after the third. Each reading is the mean of
-//! [`CAPTURES_PER_READING`] still windows, taken one after the other after a single OK:
-//! the bracket's turn goes into the zero whole, so its noise is averaged down.
+//! name. The plate is checked as soon as the pendant's own headings are in (a tilted
+//! plate is refused before the bracket is fitted), the bracket's turn after the
+//! reference's, the sine plate's tilt after the pendant's end-for-end pair. The sine
+//! plate's steps stay two readings, end for end against the fence: the fence, not the
+//! readings, sets that turn. Each reading is the mean of [`CAPTURES_PER_READING`] still
+//! windows, taken one after the other after a single OK: the bracket's turn goes into
+//! the zero whole, so its noise is averaged down.
 //!
 //! Every step is a placement by hand, so only OK arms a capture (as after the
-//! session's half turns); an armed capture fires when the stillness filter reports the
-//! window still. BACK undoes the last capture, or leaves with none taken. On the
-//! result OK keeps it ([`BracketOutput::Keep`]: the record to store, the last per
-//! mount); on a refusal OK starts again from the first step.
+//! session's turns on the bench); an armed capture fires when the stillness filter
+//! reports the window still. BACK undoes the last capture, or leaves with none taken.
+//! On the result OK keeps it ([`BracketOutput::Keep`]: the record to store, the last
+//! per mount); on a refusal OK starts again from the first step.
 //!
 //! The captures in progress are not stored: a power cut costs the few minutes of the
 //! calibration under way, never a kept one. Nothing here waits or allocates.
@@ -44,7 +47,7 @@ use zerocal_core::bracket::{
 };
 use zerocal_core::model::{Tilt, TiltAxis};
 use zerocal_core::real::{rad_to_deg, Real};
-use zerocal_core::stage0::BenchTurns;
+use zerocal_core::stage0::{BenchTurns, BENCH_HEADINGS};
 
 mod line;
 mod progress;
@@ -58,21 +61,32 @@ pub use progress::{
 };
 
 /// The readings of a bracket calibration (each the mean of [`CAPTURES_PER_READING`]
-/// still windows).
-pub const BRACKET_CAPTURES: usize = 8;
+/// still windows): the pendant's headings and the reference's on the plate, then two
+/// of each end for end on the sine plate.
+pub const BRACKET_CAPTURES: usize = 2 * BENCH_HEADINGS + 4;
+
+/// The first capture of the reference's headings on the plate.
+const SEATED_START: usize = BENCH_HEADINGS;
+
+/// The first capture on the sine plate.
+const TILTED_START: usize = 2 * BENCH_HEADINGS;
 
 /// Where a bracket calibration stands.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum BracketStep {
-    /// The pendant alone on the plate.
-    Alone,
-    /// The pendant alone, turned half a turn on the same spot.
-    AloneTurned,
-    /// The pendant in the bracket, the bracket on its reference.
-    Seated,
-    /// The reference turned half a turn on the same spot.
-    SeatedTurned,
+    /// The pendant alone on the plate, at this heading (0-based, of
+    /// [`BENCH_HEADINGS`]), turned by hand about a quarter turn from the one before.
+    Alone {
+        /// Which heading.
+        heading: u8,
+    },
+    /// The pendant in the bracket, the bracket on its reference on the plate, at this
+    /// heading of the reference.
+    Seated {
+        /// Which heading.
+        heading: u8,
+    },
     /// The pendant alone on the sine plate, against the fence.
     AloneTilted,
     /// The pendant turned end for end against the fence.
@@ -87,16 +101,25 @@ pub enum BracketStep {
 
 impl BracketStep {
     /// The capture steps, in order.
-    pub const CAPTURES: [BracketStep; BRACKET_CAPTURES] = [
-        BracketStep::Alone,
-        BracketStep::AloneTurned,
-        BracketStep::Seated,
-        BracketStep::SeatedTurned,
-        BracketStep::AloneTilted,
-        BracketStep::AloneTiltedTurned,
-        BracketStep::SeatedTilted,
-        BracketStep::SeatedTiltedTurned,
-    ];
+    pub const CAPTURES: [BracketStep; BRACKET_CAPTURES] = {
+        let mut steps = [BracketStep::Done; BRACKET_CAPTURES];
+        let mut h = 0;
+        while h < BENCH_HEADINGS {
+            steps[h] = BracketStep::Alone { heading: h as u8 };
+            steps[SEATED_START + h] = BracketStep::Seated { heading: h as u8 };
+            h += 1;
+        }
+        steps[TILTED_START] = BracketStep::AloneTilted;
+        steps[TILTED_START + 1] = BracketStep::AloneTiltedTurned;
+        steps[TILTED_START + 2] = BracketStep::SeatedTilted;
+        steps[TILTED_START + 3] = BracketStep::SeatedTiltedTurned;
+        steps
+    };
+
+    /// The step's place in [`Self::CAPTURES`] (`None` for `Done`).
+    pub fn index(self) -> Option<usize> {
+        Self::CAPTURES.iter().position(|s| *s == self)
+    }
 }
 
 /// A calibration's numbers.
@@ -327,8 +350,19 @@ impl<T: Real> BracketCalState<T> {
         self.notice
     }
 
-    /// The reversal of captures `first` and `first + 1`, if both are in.
-    fn reversal(&self, first: usize) -> Option<BenchTurns<T>> {
+    /// The readings of the [`BENCH_HEADINGS`] captures from `first` on the plate, if
+    /// all are in.
+    fn headings(&self, first: usize) -> Option<BenchTurns<T>> {
+        let mut readings = [Tilt::default(); BENCH_HEADINGS];
+        for (h, r) in readings.iter_mut().enumerate() {
+            *r = self.captures.get(first + h).copied().flatten()?.reading;
+        }
+        BenchTurns::from_readings(&readings)
+    }
+
+    /// The end-for-end pair of captures `first` and `first + 1` on the sine plate, if
+    /// both are in.
+    fn end_for_end(&self, first: usize) -> Option<BenchTurns<T>> {
         let a = self.captures.get(first).copied().flatten()?;
         let b = self.captures.get(first + 1).copied().flatten()?;
         Some(BenchTurns::half_turn(a.reading, b.reading))
@@ -368,9 +402,9 @@ impl<T: Real> BracketCalState<T> {
         self.windows = Windows::default();
     }
 
-    /// The stage-0 offset of the chip, from the pendant's own level reversal.
+    /// The stage-0 offset of the chip, from the pendant's own headings on the plate.
     fn bias(&self, config: &ProcedureConfig<T>) -> Option<Tilt<T>> {
-        self.reversal(0)?
+        self.headings(0)?
             .bias(config.convention, config.fit.sensor_range_rad)
             .ok()
     }
@@ -497,8 +531,9 @@ fn on_sample<T: Real>(
 }
 
 /// What can be checked once `taken` readings are in: the plate's level after the
-/// pendant's own reversal (a reversal against itself is the plate's check alone), the
-/// bracket's turn after the second, the sine plate's tilt after the third.
+/// pendant's own headings (its headings against themselves are the plate's check
+/// alone), the bracket's turn after the reference's, the sine plate's tilt after the
+/// pendant's end-for-end pair.
 fn check_after<T: Real>(
     config: &ProcedureConfig<T>,
     s: &BracketCalState<T>,
@@ -506,15 +541,15 @@ fn check_after<T: Real>(
 ) -> Result<(), BracketError> {
     let (range, noise) = (config.fit.sensor_range_rad, config.fit.sensor_noise_rad);
     let level = |i: usize, j: usize| -> Result<(), BracketError> {
-        match (s.reversal(i), s.reversal(j)) {
+        match (s.headings(i), s.headings(j)) {
             (Some(a), Some(b)) => calibrate(&a, &b, config.convention, range, noise).map(|_| ()),
             _ => Ok(()),
         }
     };
     match taken {
-        2 => level(0, 0),
-        4 => level(0, 2),
-        6 => match (s.reversal(4), s.bias(config)) {
+        SEATED_START => level(0, 0),
+        TILTED_START => level(0, SEATED_START),
+        t if t == TILTED_START + 2 => match (s.end_for_end(TILTED_START), s.bias(config)) {
             (Some(tilted), Some(bias)) => calibrate_yaw(
                 &tilted,
                 &tilted,
@@ -530,14 +565,17 @@ fn check_after<T: Real>(
     }
 }
 
-/// The calibration from all eight readings.
+/// The calibration from all [`BRACKET_CAPTURES`] readings.
 fn result<T: Real>(
     config: &ProcedureConfig<T>,
     s: &BracketCalState<T>,
 ) -> Option<Result<BracketResult<T>, BracketError>> {
     let (range, noise) = (config.fit.sensor_range_rad, config.fit.sensor_noise_rad);
-    let (alone, seated) = (s.reversal(0)?, s.reversal(2)?);
-    let (alone_tilted, seated_tilted) = (s.reversal(4)?, s.reversal(6)?);
+    let (alone, seated) = (s.headings(0)?, s.headings(SEATED_START)?);
+    let (alone_tilted, seated_tilted) = (
+        s.end_for_end(TILTED_START)?,
+        s.end_for_end(TILTED_START + 2)?,
+    );
     let bias = s.bias(config)?;
     Some(
         calibrate(&alone, &seated, config.convention, range, noise).and_then(

@@ -4,7 +4,7 @@
 //!
 //! - `calibrating none`: no calibration in progress (none started, or it was kept, or
 //!   left with BACK; `brackets` tells which);
-//! - `calibrating MOUNT ID step K of 8 waiting|armed`: at capture step K (1-based,
+//! - `calibrating MOUNT ID step K of 12 waiting|armed`: at capture step K (1-based,
 //!   [`BracketStep::CAPTURES`]), waiting for OK, or armed and capturing once still;
 //! - `calibrating MOUNT ID result`: the result is shown, OK on the pendant keeps it;
 //! - `calibrating MOUNT ID refused WORD`: refused ([`BracketRefusal`]), OK starts
@@ -240,7 +240,7 @@ mod tests {
         let line = progress_line(Some(&s)).unwrap();
         assert_eq!(
             line.as_str(),
-            "calibrating flange F-017 step 1 of 8 waiting"
+            "calibrating flange F-017 step 1 of 12 waiting"
         );
         let mut window = StillnessFilter::new();
         let _ = super::super::bracket_step(&config, &mut s, &mut window, Event::Ok);
@@ -289,11 +289,11 @@ mod tests {
                 ProgressLineError::BadField("stage"),
             ),
             (
-                "calibrating flange F-1 step 0 of 8 armed",
+                "calibrating flange F-1 step 0 of 12 armed",
                 ProgressLineError::BadField("step"),
             ),
             (
-                "calibrating flange F-1 step 9 of 8 armed",
+                "calibrating flange F-1 step 13 of 12 armed",
                 ProgressLineError::BadField("step"),
             ),
             (
@@ -301,7 +301,7 @@ mod tests {
                 ProgressLineError::BadField("of"),
             ),
             (
-                "calibrating flange F-1 step 2 of 8 ready",
+                "calibrating flange F-1 step 2 of 12 ready",
                 ProgressLineError::BadField("armed"),
             ),
             (

@@ -82,8 +82,8 @@ pub enum LinkError {
     PlanTooLong,
     /// `erase` without `all`.
     EraseNeedsAll,
-    /// A six-joint `plan set` row whose joints 1 or 2 are not stage 1's.
-    JointsOneTwoMoved {
+    /// A six-joint `plan set` row whose joint 1 is not stage 1's.
+    JointOneMoved {
         /// Row number (1-based).
         row: usize,
     },
@@ -116,9 +116,9 @@ impl fmt::Display for LinkError {
                     zerocal_core::decimal::Fixed::new(crate::text::MAX_JOINT_DEG, 0)
                 )
             }
-            LinkError::JointsOneTwoMoved { row } => write!(
+            LinkError::JointOneMoved { row } => write!(
                 f,
-                "plan row {row}: joints 1 and 2 must stay at stage 1's (the profile's stage-1 pose); plan unchanged"
+                "plan row {row}: joint 1 must stay at stage 1's mark (the profile's stage-1 pose); plan unchanged"
             ),
             LinkError::EraseNeedsAll => f.write_str(
                 "'erase all' erases the session, bias, last result, profile, plan and brackets; nothing erased",

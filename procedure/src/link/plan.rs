@@ -10,13 +10,15 @@ use zerocal_core::model::{JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::PoseList;
 use zerocal_core::real::{deg_to_rad, Real};
 
-/// How far a six-joint `plan set` row's joints 1 and 2 may lie from stage 1's (deg): the
-/// session's own tolerance for its captures' joint 2.
+/// How far a six-joint `plan set` row's joint 1 may lie from stage 1's (deg): the
+/// session's own tolerance for a commanded joint it takes from stage 1.
 pub const STAGE1_JOINT_TOLERANCE_DEG: f64 = zerocal_core::session::STAGE1_JOINT1_TOLERANCE_DEG;
 
 /// A `plan set` in progress: rows accumulate here and replace the plan only on `end`.
 /// A row is `j3,j4,j5,j6` (joints 1 and 2 where stage 1 has them) or `j1,…,j6`, in the
-/// model's degrees.
+/// model's degrees. Joint 1 stays at stage 1's mark in stage 2 (the fit's base tilt
+/// is stage 1's, about that heading); joint 2 may move: a plan that swings it separates
+/// its reducer's error from its zero (core's `PlanConfig::joint2_range_rad`).
 #[derive(Clone, Debug, Default)]
 pub struct PlanUpload<T> {
     rows: PoseList<T>,
@@ -44,7 +46,7 @@ impl<T: Real> PlanUpload<T> {
     /// Feeds one line. Blank lines and `#` comments are skipped.
     ///
     /// # Errors
-    /// A malformed row, an angle beyond ±[`crate::text::MAX_JOINT_DEG`], joints 1-2 away
+    /// A malformed row, an angle beyond ±[`crate::text::MAX_JOINT_DEG`], joint 1 away
     /// from stage 1's, too many or too few rows. The upload is then over and the plan
     /// unchanged.
     pub fn feed(&mut self, line: &str) -> Result<UploadStep<T>, LinkError> {
@@ -78,14 +80,13 @@ impl<T: Real> PlanUpload<T> {
             count += 1;
         }
         let q = match count {
-            // Stage 2's model and screens keep joints 1 and 2 where stage 1 had them: a row
-            // that moves them would be recorded at angles the robot never took.
+            // Stage 2 keeps joint 1 at stage 1's mark: the base tilt stage 1 measured is
+            // about that heading, and a row that turns joint 1 would be solved as if it
+            // had not. Joint 2 is the row's own.
             JOINTS => {
                 let tolerance = deg_to_rad(T::lit(STAGE1_JOINT_TOLERANCE_DEG));
-                if (values[0] - self.stage1_joints_rad[0]).abs() > tolerance
-                    || (values[1] - self.stage1_joints_rad[1]).abs() > tolerance
-                {
-                    return Err(LinkError::JointsOneTwoMoved { row });
+                if (values[0] - self.stage1_joints_rad[0]).abs() > tolerance {
+                    return Err(LinkError::JointOneMoved { row });
                 }
                 values
             }
@@ -163,16 +164,38 @@ mod tests {
             Err(LinkError::AngleOutOfRange { row: 1 })
         );
         assert_eq!(up.feed("end"), Err(LinkError::PlanTooShort { rows: 0 }));
-        let mut up = PlanUpload::<f32>::new([0.0, 0.5]);
+        // Joint 2 anywhere (a plan that swings it), joint 1 at stage 1's mark only.
+        let mut up = PlanUpload::<f32>::new([0.25, 0.5]);
+        for row in [
+            "14.3239,28.6479,1,2,3,4",
+            "14.3239,-45,1,2,3,4",
+            "14.3239,75,1,2,3,4",
+        ] {
+            assert_eq!(up.feed(row), Ok(UploadStep::More), "{row}");
+        }
         assert_eq!(
-            up.feed("0,28.6479,1,2,3,4"),
-            Ok(UploadStep::More),
-            "joint 2 at 0.5 rad"
+            up.feed("15,28.6479,1,2,3,4"),
+            Err(LinkError::JointOneMoved { row: 4 })
         );
-        assert_eq!(
-            up.feed("0,30,1,2,3,4"),
-            Err(LinkError::JointsOneTwoMoved { row: 2 })
-        );
+        let mut up = PlanUpload::<f32>::new([0.25, 0.5]);
+        for row in [
+            "14.3239,-45,1,2,3,4",
+            "1,2,3,4",
+            "14.3239,75,1,2,3,4",
+            "14.3239,0,5,6,7,8",
+        ] {
+            assert_eq!(up.feed(row), Ok(UploadStep::More), "{row}");
+        }
+        match up.feed("end") {
+            Ok(UploadStep::Done(p)) => {
+                let j2_deg: std::vec::Vec<f32> = p.iter().map(|q| q[1].to_degrees()).collect();
+                assert!((j2_deg[0] + 45.0).abs() < 1e-4, "{j2_deg:?}");
+                // A four-number row keeps joint 2 at stage 1's angle.
+                assert_eq!(p[1][..2], [0.25, 0.5]);
+                assert!((j2_deg[2] - 75.0).abs() < 1e-4, "{j2_deg:?}");
+            }
+            other => panic!("{other:?}"),
+        }
         let mut up = PlanUpload::<f32>::new([0.0; 2]);
         assert_eq!(up.feed("1,2,3,4"), Ok(UploadStep::More));
         assert_eq!(
@@ -199,6 +222,8 @@ mod tests {
             let q = [0.25, -0.5, 10.0 + d, 20.0 - d, -30.0 + d, 40.0 * d];
             plan.push(q.map(|v| v.to_radians())).unwrap();
             plan[k][..2].copy_from_slice(&stage1);
+            // Joint 2 swung in stage 2 on the later poses.
+            plan[k][1] += (20.0 * d).to_radians();
         }
         assert_eq!(
             plan_line(&plan, 1).unwrap().unwrap().as_str(),

@@ -59,7 +59,11 @@ pub fn status<T: Real>(
         },
         3 => match session.outcome().map(|o| &o.result) {
             Some(Ok(r)) => result_line(&mut w, r),
-            Some(Err(e)) => write!(w, "refused: {e}"),
+            // Cut to the line, as the export's refusal line.
+            Some(Err(e)) => {
+                crate::text::write_cut(&mut w, format_args!("refused: {e}"));
+                Ok(())
+            }
             None => w.write_str("stage 2: not done"),
         },
         4 => match session.last_result() {
@@ -86,13 +90,11 @@ pub fn status<T: Real>(
 /// The phase as the operator reads it.
 pub fn phase_name(p: Phase) -> &'static str {
     match p {
-        Phase::Stage0First => "stage 0 (first reading)",
-        Phase::Stage0Second => "stage 0 (after 180 deg turn)",
+        Phase::Stage0 => "stage 0 (bench, turned by hand)",
         Phase::Stage1Before => "stage 1 (axis 1 at mark)",
         Phase::Stage1After => "stage 1 (axis 1 turned 180 deg)",
         Phase::Stage2 => "stage 2 (flange poses)",
-        Phase::ClosingFirst => "closing reversal (first reading)",
-        Phase::ClosingSecond => "closing reversal (after 180 deg turn)",
+        Phase::Closing => "closing bench readings",
         Phase::Done => "done",
     }
 }

@@ -216,7 +216,8 @@ pub fn parse_status<'a>(lines: &[&'a str]) -> Result<Status<'a>, StatusError<'a>
     ))?;
     // A plan restored from the store may hold what a pose list holds.
     let plan_poses = a_count(0, "plan", plan, zerocal_core::plan::MAX_POSES)?;
-    let captured = a_count(0, "captured", captured, zerocal_core::plan::MAX_POSES)?;
+    // Two captures a pose: a full plan's captures are more than its poses.
+    let captured = a_count(0, "captured", captured, zerocal_core::capture::MAX_CAPTURES)?;
 
     // 1: bias
     let l = at(1)?;
@@ -427,6 +428,25 @@ mod tests {
                 text: "99"
             }
         );
+        // A full plan's captures (two a pose) read back; one more does not.
+        use zerocal_core::capture::{MAX_CAPTURES, MAX_PLAN_POSES};
+        let line = |captured: usize| -> &'static str {
+            std::boxed::Box::leak(
+                std::format!("phase done; plan {MAX_PLAN_POSES} poses; {captured} captured")
+                    .into_boxed_str(),
+            )
+        };
+        assert_eq!(
+            parse_status(&with(0, line(MAX_CAPTURES))).map(|s| s.captured),
+            Ok(MAX_CAPTURES)
+        );
+        assert!(matches!(
+            problem(&with(0, line(MAX_CAPTURES + 1))).problem,
+            StatusProblem::NotANumber {
+                field: "captured",
+                ..
+            }
+        ));
         assert_eq!(
             problem(&with(2, "error: line too long")).problem,
             StatusProblem::Pendant("line too long")

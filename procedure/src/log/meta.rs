@@ -27,7 +27,7 @@ pub enum MetaItem<T> {
     /// `# stage1_readings_deg before x,y after x,y j1_deg a j2_deg c` (`None` for
     /// `none`): the readings and the commanded joints 1 (before the half turn) and 2.
     Stage1(Option<AxisOneTurn<T>>),
-    /// `# stage0_bench_deg x,y x,y x,y x,y temp_c t|none` (two to six headings), or
+    /// `# stage0_bench_deg x,y x,y x,y x,y temp_c t|none` (two to four headings), or
     /// the older `# stage0_reversal_deg first x,y second x,y temp_c t|none` (a half
     /// turn): stage 0's own readings and temperature (the bias follows from them).
     Stage0Bench(BenchTurnsAt<T>),
@@ -58,7 +58,7 @@ pub fn write_pendant(w: &mut Line, p: &PendantUnit) -> fmt::Result {
 }
 
 /// What a pendant export holds: a calibration session, or a check of the offsets
-/// entered after one (stage 0, the flange's check poses and the closing reversal; no
+/// entered after one (stage 0, the flange's check poses and the closing readings; no
 /// stage 1, no result: `zerocal check` compares it with the reference session).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -520,7 +520,7 @@ pub fn metadata_key(comment: &str) -> Option<&str> {
 
 /// The metadata items an export has given so far, to refuse one given twice: with two
 /// values for one key, which one the solver used would be a guess. Stage 0's bias and
-/// its reversal are one item (the pendant writes one or the other).
+/// its bench readings are one item (the pendant writes one or the other).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MetaKeys {
     /// The line each item was first given on (0: not yet).
@@ -773,6 +773,8 @@ mod tests {
         for free in [
             "zerocal pendant export: read it with 'zerocal session'",
             "stage 1 temperature not recorded",
+            crate::log::CLOSING_NOT_MADE.trim_start_matches('#').trim(),
+            // An older pendant's.
             "closing reversal not made",
             "refused: stage 2: too few poses",
             "Messung am Montag",
@@ -805,16 +807,18 @@ mod tests {
         let bias = MetaItem::<f64>::Bias(None);
         assert_eq!(keys.note(&bias, 3), Ok(()));
         assert_eq!(keys.note(&MetaItem::Stage1Temperature(20.0), 4), Ok(()));
-        let reversal = MetaItem::Stage0Bench(BenchTurnsAt {
+        let bench = MetaItem::Stage0Bench(BenchTurnsAt {
             turns: BenchTurns::half_turn(Tilt::new(0.0, 0.0), Tilt::new(0.0, 0.0)),
             temperature_c: None,
         });
-        // Stage 0 twice, whichever key the second uses.
+        // Stage 0 twice, whichever key the second uses: named by the second's item
+        // (the bench readings, whether written as `stage0_bench_deg` or read from an
+        // older `stage0_reversal_deg`).
         assert_eq!(
-            keys.note(&reversal, 7),
+            keys.note(&bench, 7),
             Err(LogError::DuplicateKey {
                 line: 7,
-                key: "stage0_reversal_deg",
+                key: STAGE0_BENCH_KEY,
                 first_line: 3
             })
         );

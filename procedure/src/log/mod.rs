@@ -13,11 +13,13 @@
 //!
 //! **The pendant's export** is such a log with the session in `#` metadata lines,
 //! `# key value…`, before the header: `robot NAME convention rpy|axis`,
-//! `stage0_bias_deg x,y`, `stage0_reversal_deg first x,y second x,y temp_c t`,
-//! `stage1_readings_deg before x,y after x,y j1_deg a j2_deg c`, `stage1_temp_c t`,
-//! stage 1's results, `closing_reversal_deg first x,y second x,y temp_c t` (the reversal
-//! after stage 2 that measures the bias' drift), `pendant unit HEX firmware VERSION` (the
-//! pendant unit that wrote it), and after the rows the result line.
+//! `stage0_bias_deg x,y` or `stage0_bench_deg x,y x,y x,y x,y temp_c t` (stage 0's
+//! readings at each heading, [`write_bench`]), `stage1_readings_deg before x,y after x,y
+//! j1_deg a j2_deg c`, `stage1_temp_c t`, stage 1's results, `closing_bench_deg x,y …
+//! temp_c t` (the bench readings after stage 2 that measure the bias' drift), `pendant
+//! unit HEX firmware VERSION` (the pendant unit that wrote it), and after the rows the
+//! result line. The older two-reading lines (`stage0_reversal_deg first x,y second x,y
+//! temp_c t`, `closing_reversal_deg …`) are still read.
 //! A check's export (`mode check`) has a `mode check` line instead of stage 1's lines
 //! and no result line, its rows' `pose` the plan's pose index. `zerocal session` reads all of it. [`Export`] writes it a line at a time; [`LogReader`] reads both, and
 //! [`MetaItem`] the metadata the session solver needs.
@@ -29,7 +31,7 @@
 //! other column may appear; a comment whose first word has the form of a key (lowercase
 //! letters, digits and `_`, with at least one digit or `_`, see [`metadata_key`]) is a
 //! metadata line, and must be a key of [`METADATA_KEYS`], given once; any other comment
-//! (the export's first line, `# closing reversal not made`, a user's note) is free text.
+//! (the export's first line, [`CLOSING_NOT_MADE`], a user's note) is free text.
 //!
 //! Numbers are written with [`EXPORT_DECIMALS`] decimals of a degree: below the
 //! resolution of any `f32` the pendant holds, so the desktop reads back its numbers.
@@ -58,7 +60,8 @@ pub use meta::{
 pub use read::{strip_bom, text_of, LogLine, LogReader};
 pub(crate) use write::result_line;
 pub use write::{
-    export, write_export_row, write_row, CaptureRows, Export, ExportSession, EXPORT_MAX_LINES,
+    export, write_export_row, write_row, CaptureRows, Export, ExportSession, CLOSING_NOT_MADE,
+    EXPORT_MAX_LINES,
 };
 
 use core::fmt::{self, Write};
@@ -117,7 +120,7 @@ pub const MAX_COLUMNS: usize = 32;
 /// sensor's 0.053 K register step (its 40-sample mean is finer). The pendant keeps each
 /// capture's temperature at this resolution ([`quantise_temperature`]), so the desktop
 /// solves from the very temperatures the pendant used: the bias' drift is interpolated
-/// between the two reversals' temperatures, and with the pendant's own unrounded a
+/// between the two bench steps' temperatures, and with the pendant's own unrounded a
 /// session's result moved by up to 6e-6° and its 1σ by 0.2 % between the two, a digit
 /// apart on the screen.
 pub const TEMPERATURE_DECIMALS: u8 = 2;

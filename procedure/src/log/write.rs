@@ -33,13 +33,13 @@ pub struct ExportSession<'a, T: Real, R> {
     pub robot: &'a str,
     /// The sensor's reading convention.
     pub convention: Convention,
-    /// Stage 0: this session's reversal, a bias kept from an earlier one, or none.
+    /// Stage 0: this session's bench readings, a bias kept from an earlier one, or none.
     pub bias: BiasSource<T>,
     /// Stage 1's half turn with the commanded joints 1 and 2, once taken.
     pub stage1: Option<AxisOneTurn<T>>,
     /// The sensor's temperature at stages 0 and 1, where recorded.
     pub temperatures: StageTemperatures<T>,
-    /// The reversal after stage 2, if made.
+    /// The bench readings after stage 2, if made.
     pub closing: Option<BenchTurnsAt<T>>,
     /// Stage 2: every capture, in the order taken, with its index in the plan.
     pub captures: R,
@@ -99,12 +99,16 @@ pub fn export<T: Real, R: CaptureRows<T>>(session: ExportSession<'_, T, R>) -> E
 
 const EXPORT_HEAD: usize = 14;
 
+/// The export's line where the closing bench readings were not made (skipped, or no
+/// stage 0 to close): a free comment, not a key.
+pub const CLOSING_NOT_MADE: &str = "# closing bench readings not made";
+
 /// The head's lines a check leaves out: stage 1's temperature, captures and result.
 const CHECK_LEFT_OUT: core::ops::Range<usize> = 4..8;
 
-/// Most lines an export has: the head, a row per capture, the result line and the
-/// trailer.
-pub const EXPORT_MAX_LINES: usize = EXPORT_HEAD + zerocal_core::plan::MAX_POSES + 2;
+/// Most lines an export has: the head, a row per capture (two a plan pose), the result
+/// line and the trailer.
+pub const EXPORT_MAX_LINES: usize = EXPORT_HEAD + zerocal_core::capture::MAX_CAPTURES + 2;
 
 impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     fn head(&self, i: usize, w: &mut Line) -> fmt::Result {
@@ -115,8 +119,8 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
             }
             0 => w.write_str("# zerocal pendant export: read it with 'zerocal session'"),
             1 => write!(w, "# robot {} convention {}", s.robot, s.convention.name()),
-            // This session's reversal when it ran (the bias and its temperature follow
-            // from it); else the bias an earlier session stored, if any.
+            // This session's bench readings when stage 0 ran (the bias and its
+            // temperature follow from them); else the bias an earlier session stored.
             2 => match s.bias {
                 BiasSource::Bench(turns) => write_bench(
                     w,
@@ -205,7 +209,7 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
             },
             8 => match s.closing {
                 Some(r) => write_bench(w, CLOSING_BENCH_KEY, &r),
-                None => w.write_str("# closing reversal not made"),
+                None => w.write_str(CLOSING_NOT_MADE),
             },
             9 => write_fit_extras(w, s.fit_extras),
             10 => write_bracket(w, BracketMount::UpperArm, s.brackets.upper_arm.as_ref()),
@@ -221,7 +225,12 @@ impl<T: Real, R: CaptureRows<T>> Export<'_, T, R> {
     fn tail(&self, w: &mut Line) -> Option<fmt::Result> {
         Some(match self.session.result? {
             Ok(r) => result_line(w, r),
-            Err(e) => write!(w, "# refused: {e}"),
+            // Words of any length (a fit's refusal names every parameter it could not
+            // separate): cut to the line rather than lost with the export.
+            Err(e) => {
+                crate::text::write_cut(w, format_args!("# refused: {e}"));
+                Ok(())
+            }
         })
     }
 }

@@ -1,91 +1,15 @@
 //! The check mode through the state machine: its phase walk (stage 0, the flange's
-//! check poses, the closing reversal; no stage 1), its captures at the plan's own
-//! angles and indices, its export, and a power cut at every step.
+//! check poses, the closing bench readings; no stage 1), its captures at the plan's
+//! own angles and indices, its export, and a power cut at every step.
 
+use super::testing::{bench_readings, flange_reading, Bench};
 use super::*;
-use std::collections::BTreeMap;
 use std::string::String;
 use std::vec::Vec;
-use zerocal_core::plan::{check_model, check_poses, DEFAULT_POOL};
-
-/// A pendant under test: the state, the flash (latest record per key) and a clock.
-struct Bench {
-    config: ProcedureConfig<f64>,
-    s: ProcedureState<f64>,
-    flash: BTreeMap<u16, Record<f64>>,
-    t_ms: u32,
-    phases: Vec<Phase>,
-}
-
-impl Bench {
-    fn new() -> Self {
-        let config = ProcedureConfig::<f64>::for_mems();
-        let mut pool = std::vec![Candidate::default(); DEFAULT_POOL];
-        let plan = pendant_default(&config, &mut pool).unwrap_or_else(|e| panic!("{e}"));
-        let mut b = Bench {
-            s: ProcedureState::new(PoseList::new(), None),
-            config,
-            flash: BTreeMap::new(),
-            t_ms: 0,
-            phases: Vec::new(),
-        };
-        // Through the link's `plan set`, so the plan is in the flash too.
-        b.step(Event::SetPlan(plan));
-        b
-    }
-
-    fn step(&mut self, e: Event<f64>) {
-        let out = step(&self.config, &mut self.s, e);
-        for r in out.persist {
-            self.flash.insert(r.key(), r);
-        }
-        if self.phases.last() != Some(&self.s.phase()) {
-            self.phases.push(self.s.phase());
-        }
-    }
-
-    /// OK, then the pendant still at `reading` until the procedure moves on.
-    fn capture_at(&mut self, reading: Tilt<f64>) {
-        let before = (self.s.phase(), self.s.cursor);
-        self.step(Event::Ok);
-        for _ in 0..400 {
-            self.t_ms += crate::stillness::SAMPLE_PERIOD_MS;
-            self.step(Event::Sample {
-                t_ms: self.t_ms,
-                reading,
-                temperature_c: Some(24.0),
-            });
-            if (self.s.phase(), self.s.cursor) != before {
-                return;
-            }
-        }
-        panic!("no capture at {before:?}: {:?}", self.s.view().notice);
-    }
-
-    /// The state a reboot rebuilds from the flash now.
-    fn rebooted(&self) -> ProcedureState<f64> {
-        ProcedureState::restore(&self.config, self.flash.values().copied())
-    }
-}
-
-/// Stage 0's two readings: a 180° turn of a pendant with a 0.05° bias on a bench
-/// tilted by 0.2°, 0.1°.
-fn bench_readings() -> [Tilt<f64>; 2] {
-    let (b, t) = (Tilt::from_deg(0.05, -0.03), Tilt::from_deg(0.2, 0.1));
-    [
-        Tilt::new(b.x_rad + t.x_rad, b.y_rad + t.y_rad),
-        Tilt::new(b.x_rad - t.x_rad, b.y_rad - t.y_rad),
-    ]
-}
-
-/// A flange reading that differs from capture to capture (by more than the re-arming
-/// motion), inside the sensor's range.
-fn flange_reading(k: usize) -> Tilt<f64> {
-    Tilt::from_deg(1.0 + k as f64, -2.0 + 0.5 * k as f64)
-}
+use zerocal_core::plan::{check_model, check_poses};
 
 #[test]
-fn a_check_walks_stage_0_the_check_poses_and_the_closing_reversal_without_stage_1() {
+fn a_check_walks_stage_0_the_check_poses_and_the_closing_readings_without_stage_1() {
     let mut b = Bench::new();
     b.step(Event::Check);
     assert!(b.s.is_check());
@@ -93,10 +17,12 @@ fn a_check_walks_stage_0_the_check_poses_and_the_closing_reversal_without_stage_
     let model = check_model(b.config.arm, b.config.convention, b.config.masses);
     let (want, _) = check_poses(&model, b.s.plan()).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(b.s.check_poses(), want.as_slice());
-    let [first, second] = bench_readings();
-    b.capture_at(first);
-    b.capture_at(second);
+    for (h, r) in bench_readings().into_iter().enumerate() {
+        assert_eq!((b.s.phase(), b.s.view().heading), (Phase::Stage0, Some(h)));
+        b.capture_at(r);
+    }
     assert_eq!((b.s.phase(), b.s.cursor), (Phase::Stage2, 0));
+    assert!(b.s.bias().is_some(), "stage 0's bias from its headings");
     for (k, &i) in want.iter().enumerate() {
         for side in 0..CAPTURES_PER_POSE {
             let v = b.s.view();
@@ -114,20 +40,15 @@ fn a_check_walks_stage_0_the_check_poses_and_the_closing_reversal_without_stage_
         assert_eq!(index.approach, Approach::of(n % CAPTURES_PER_POSE));
         assert_eq!(pose.joints_rad, b.s.plan()[usize::from(i)]);
     }
-    assert_eq!(b.s.phase(), Phase::ClosingFirst);
-    b.capture_at(first);
-    b.capture_at(second);
+    assert_eq!(b.s.phase(), Phase::Closing);
+    for (h, r) in bench_readings().into_iter().enumerate() {
+        assert_eq!((b.s.phase(), b.s.view().heading), (Phase::Closing, Some(h)));
+        b.capture_at(r);
+    }
     assert_eq!(b.s.phase(), Phase::Done);
     assert_eq!(
         b.phases,
-        [
-            Phase::Stage0First,
-            Phase::Stage0Second,
-            Phase::Stage2,
-            Phase::ClosingFirst,
-            Phase::ClosingSecond,
-            Phase::Done
-        ]
+        [Phase::Stage0, Phase::Stage2, Phase::Closing, Phase::Done]
     );
     // Nothing solved, nothing kept as the last result.
     assert!(b.s.outcome().is_none() && b.s.last_result().is_none());
@@ -142,9 +63,18 @@ fn a_check_walks_stage_0_the_check_poses_and_the_closing_reversal_without_stage_
         !lines.iter().any(|l| l.starts_with("# stage1")),
         "{lines:?}"
     );
-    assert!(lines
-        .iter()
-        .any(|l| l.starts_with("# closing_reversal_deg")));
+    for key in [crate::log::STAGE0_BENCH_KEY, crate::log::CLOSING_BENCH_KEY] {
+        // Every heading's reading on the line, then the temperature.
+        let line = lines
+            .iter()
+            .find(|l| l.starts_with(&std::format!("# {key} ")))
+            .unwrap_or_else(|| panic!("no {key}: {lines:?}"));
+        assert_eq!(
+            line.split_whitespace().count(),
+            2 + BENCH_HEADINGS + 2,
+            "{line}"
+        );
+    }
     let poses: Vec<u8> = lines
         .iter()
         .filter(|l| l.ends_with(|c: char| c.is_ascii_digit()) && !l.starts_with('#'))
@@ -156,18 +86,17 @@ fn a_check_walks_stage_0_the_check_poses_and_the_closing_reversal_without_stage_
     // OK on the check's screen: a new session, no longer a check.
     b.step(Event::Ok);
     assert!(!b.s.is_check());
-    assert_eq!(b.s.phase(), Phase::Stage0First);
+    assert_eq!((b.s.phase(), b.s.cursor), (Phase::Stage0, 0));
 }
 
 #[test]
 fn a_power_cut_at_any_step_of_a_check_resumes_it_where_it_was() {
     let mut b = Bench::new();
     b.step(Event::Check);
-    let [first, second] = bench_readings();
-    let mut readings = std::vec![first, second];
+    let mut readings = bench_readings().to_vec();
     let n = b.s.check_poses().len() * CAPTURES_PER_POSE;
     readings.extend((0..n).map(flange_reading));
-    readings.extend([first, second]);
+    readings.extend(bench_readings());
     let mut cuts = 0;
     for r in readings {
         b.capture_at(r);
@@ -179,7 +108,7 @@ fn a_power_cut_at_any_step_of_a_check_resumes_it_where_it_was() {
         assert!(back.stage1().is_none() && back.outcome().is_none());
         cuts += 1;
     }
-    assert_eq!(cuts, 2 + n + 2);
+    assert_eq!(cuts, BENCH_HEADINGS + n + BENCH_HEADINGS);
     assert_eq!(b.s.phase(), Phase::Done);
 }
 
@@ -187,16 +116,28 @@ fn a_power_cut_at_any_step_of_a_check_resumes_it_where_it_was() {
 fn back_from_the_first_check_pose_returns_to_stage_0_and_next_skips_it() {
     let mut b = Bench::new();
     b.step(Event::Check);
-    let [first, second] = bench_readings();
-    b.capture_at(first);
-    b.capture_at(second);
+    for r in bench_readings() {
+        b.capture_at(r);
+    }
     assert_eq!(b.s.phase(), Phase::Stage2);
     b.step(Event::Back);
-    assert_eq!(b.s.phase(), Phase::Stage0Second);
-    assert!(b.s.reading(ReadingSlot::Stage0Second).is_none());
-    // NEXT on stage 0 (a bias stored): straight to the flange, still a check.
+    assert_eq!(
+        (b.s.phase(), b.s.cursor),
+        (Phase::Stage0, BENCH_HEADINGS - 1)
+    );
+    assert!(b.s.reading(ReadingSlot::STAGE0_LAST).is_none());
+    // Back through every heading to the first; NEXT there (a bias stored): straight
+    // to the flange, still a check.
+    for h in (0..BENCH_HEADINGS - 1).rev() {
+        b.step(Event::Back);
+        assert_eq!((b.s.phase(), b.s.cursor), (Phase::Stage0, h));
+    }
     b.step(Event::Back);
-    assert_eq!(b.s.phase(), Phase::Stage0First);
+    assert_eq!(
+        (b.s.phase(), b.s.cursor),
+        (Phase::Stage0, 0),
+        "nothing before"
+    );
     b.step(Event::Next);
     assert_eq!((b.s.phase(), b.s.is_check()), (Phase::Stage2, true));
 }

@@ -1,18 +1,16 @@
 //! The procedure's state as the export's writer takes it ([`crate::log::ExportSession`]):
 //! built here, so the writer reads no procedure internals.
 
-use super::{ProcedureConfig, ProcedureState, ReadingSlot};
+use super::{Captures, ProcedureConfig, ProcedureState, ReadingSlot};
 use crate::log::{export, Export, ExportMode, ExportSession};
-use zerocal_core::capture::CaptureIndex;
 use zerocal_core::real::Real;
-use zerocal_core::stage2::PoseReading;
 
 impl<T: Real> ProcedureState<T> {
     /// What the export holds of this session under `config`.
     pub fn export_session<'a>(
         &'a self,
         config: &'a ProcedureConfig<T>,
-    ) -> ExportSession<'a, T, &'a [(CaptureIndex, PoseReading<T>)]> {
+    ) -> ExportSession<'a, T, &'a Captures<T>> {
         let slot = |s: ReadingSlot| self.reading(s);
         ExportSession {
             mode: if self.is_check() {
@@ -25,16 +23,16 @@ impl<T: Real> ProcedureState<T> {
             bias: self.bias_source(),
             stage1: self.axis_one_turn(config),
             temperatures: self.stage_temperatures(),
-            closing: self.closing_reversal(),
+            closing: self.closing_bench(),
             captures: self.captures(),
             stage1_captures: [
                 [
-                    slot(ReadingSlot::Stage1BeforeBelow),
-                    slot(ReadingSlot::Stage1BeforeAbove),
+                    slot(ReadingSlot::STAGE1_BEFORE_BELOW),
+                    slot(ReadingSlot::STAGE1_BEFORE_ABOVE),
                 ],
                 [
-                    slot(ReadingSlot::Stage1AfterBelow),
-                    slot(ReadingSlot::Stage1AfterAbove),
+                    slot(ReadingSlot::STAGE1_AFTER_BELOW),
+                    slot(ReadingSlot::STAGE1_AFTER_ABOVE),
                 ],
             ],
             // The session solver's stage 1 once the session is solved, as the screens
@@ -51,10 +49,7 @@ impl<T: Real> ProcedureState<T> {
     }
 
     /// The export of this session under `config`, a line at a time.
-    pub fn export<'a>(
-        &'a self,
-        config: &'a ProcedureConfig<T>,
-    ) -> Export<'a, T, &'a [(CaptureIndex, PoseReading<T>)]> {
+    pub fn export<'a>(&'a self, config: &'a ProcedureConfig<T>) -> Export<'a, T, &'a Captures<T>> {
         export(self.export_session(config))
     }
 }

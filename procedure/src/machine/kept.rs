@@ -20,7 +20,7 @@ impl<T: Real> ProcedureState<T> {
         let r = outcome.result.as_ref().ok()?;
         let sigma = r.sigma_rad();
         let temperatures = self.stage_temperatures();
-        let closing = self.closing_reversal().and_then(|c| c.temperature_c);
+        let closing = self.closing_bench().and_then(|c| c.temperature_c);
         let bracket = |m: BracketMount| config.brackets.get(m).map(|c| c.id.clone());
         Some(KeptResult {
             id,

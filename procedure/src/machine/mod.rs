@@ -3,62 +3,85 @@
 //!
 //! `step(&config, &mut state, event)` is the whole logic: the firmware feeds it events
 //! and does what the returned [`Output`] says (persist records), and draws
-//! [`ProcedureState::view`]. The numbers come from [`zerocal_core::session`]. Nothing here waits, allocates or touches hardware, so whole
-//! sessions run in host tests.
+//! [`ProcedureState::view`]. The numbers come from [`zerocal_core::session`]. Nothing
+//! here waits, allocates or touches hardware, so whole sessions run in host tests.
 //!
 //! The captures, in order (docs/error-budget.md says why each is there):
 //!
-//! 1. stage 0: the pendant on a bench, then turned 180° on the same spot (its bias);
+//! 1. stage 0: the pendant on a bench, read at [`BENCH_HEADINGS`] headings, turned by
+//!    hand about a quarter turn on the same spot between them, no need to be exact
+//!    (its bias: the centre of the circle the readings draw, core's
+//!    [`zerocal_core::stage0::BenchTurns`]);
 //! 2. stage 1: on the upper arm with axis 1 at its mark, captured twice, every joint
 //!    arriving first from below (moving positive), then from above; then axis 1 turned
 //!    by 180°, again from below and from above. Each pair is averaged: the middle of
 //!    every gear's backlash;
 //! 3. stage 2: on the flange, every pose of the plan from below, then from above (two
-//!    captures a pose; the solver merges them);
-//! 4. the closing reversal: the pendant back on the bench, the two readings of stage 0
-//!    again, so the bias' drift with temperature over the session is measured (NEXT
-//!    skips it; without stage 0 there is nothing to close).
+//!    captures a pose; the solver merges them). Joint 1 stays at stage 1's mark; joint
+//!    2 may move (a plan that swings it separates its reducer's error from its zero);
+//! 4. the closing bench readings: the pendant back on the bench, the headings of stage
+//!    0 again, so the bias' drift with temperature over the session is measured (NEXT
+//!    skips them; without stage 0 there is nothing to close).
 //!
 //! A **check** (after the offsets were typed into the controller; [`Event::Check`]) is
 //! stage 0, then the flange with a handful of the plan's poses (core's `check_poses`:
 //! the same indices the desktop picks, at the plan's commanded angles, each from below
-//! then from above), then the closing reversal if stage 0 ran, then `Done`: no stage 1,
-//! nothing solved (the desktop's `zerocal check` compares the export with the
+//! then from above), then the closing bench readings if stage 0 ran, then `Done`: no
+//! stage 1, nothing solved (the desktop's `zerocal check` compares the export with the
 //! reference session). It is stored like a session, so a power cut resumes it.
 //!
 //! Capture rule: a capture is *armed* by OK, or by the reading having moved by more than
 //! `rearm_motion_rad` since the last capture (the robot went to the next pose or to
 //! the other side of the backlash, or the pendant was carried to the bench; not after
-//! the half turns of stage 0, stage 1 and the closing reversal, which only OK arms); an
-//! armed capture fires when the stillness filter reports the window still, and stores
-//! the window's mean reading and temperature. So a robot still moving is never
-//! captured, and one that has not moved yet is not captured twice. BACK undoes the last
-//! capture, whatever the stage.
+//! a turn on the bench or stage 1's half turn of axis 1, which only OK arms); an armed
+//! capture fires when the stillness filter reports the window still, and stores the
+//! window's mean reading and temperature. So a robot still moving is never captured,
+//! and one that has not moved yet is not captured twice. BACK undoes the last capture,
+//! whatever the stage.
+//!
+//! The parts: `phase.rs` where the operator is and which capture is which; `state.rs`
+//! what the procedure remembers and how a power cut's records rebuild it;
+//! `default_plan.rs` the plan the pendant uses when none was uploaded; `export.rs` the
+//! export of a session; `record/` the flash records; `profile/` the robot profile the
+//! pendant holds; `kept.rs` the kept results.
 
 #[cfg(test)]
+mod bench_tests;
+#[cfg(test)]
+mod capacity_tests;
+mod captures;
+#[cfg(test)]
 mod check_tests;
+mod default_plan;
 mod export;
 pub mod kept;
+mod phase;
 pub mod profile;
 pub mod record;
+#[cfg(test)]
+mod restore_tests;
 mod state;
+#[cfg(test)]
+mod testing;
 
 use crate::stillness::{Stillness, StillnessConfig};
+pub use captures::Captures;
+pub use default_plan::{pendant_default, PENDANT_PLAN_MARGIN_DEG, PENDANT_PLAN_POSES};
 pub use kept::{KeptResult, PendantUnit, UnitId, KEPT_RESULTS};
+pub use phase::{Phase, ReadingSlot, READING_SLOTS};
 pub use profile::{ControllerDisplay, ControllerOffset, PendantProfile};
 pub use record::{Record, RecordError};
 pub use state::{ProcedureState, View};
 use zerocal_core::bracket::Brackets;
 use zerocal_core::error::StageError;
-use zerocal_core::model::{
-    Arm, BaseTilt, Convention, SensorModel, Tilt, TiltAxis, JOINTS, WRIST_JOINTS,
-};
-use zerocal_core::plan::{plan, Candidate, PlanConfig, PlanError, PoseList};
+use zerocal_core::model::{Arm, Convention, Tilt, TiltAxis, JOINTS, WRIST_JOINTS};
+use zerocal_core::plan::PoseList;
 use zerocal_core::real::{deg_to_rad, Real};
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{SessionError, SessionSolution};
+pub use zerocal_core::stage0::BENCH_HEADINGS;
 use zerocal_core::stage1::Stage1Result;
-use zerocal_core::stage2::{FitConfig, MassModel, PoseReading, Stage2Model};
+use zerocal_core::stage2::{FitConfig, MassModel, PoseReading};
 
 pub use crate::text::RobotName;
 
@@ -80,8 +103,9 @@ pub struct ProcedureConfig<T: Real> {
     pub stillness: StillnessConfig<T>,
     /// Moving this far from the last capture arms the next one (rad).
     pub rearm_motion_rad: T,
-    /// The stage-1 pose (rad): joint 1 at its mark (the second reading is this + π),
-    /// joint 2 where stage 2 keeps it too.
+    /// The stage-1 pose (rad): joint 1 at its mark (the second reading is this + π,
+    /// and stage 2 keeps it at the mark), joint 2 where stage 2 starts from (a plan
+    /// may swing it).
     pub stage1_joints_rad: [T; JOINTS],
     /// Stage-2 fit settings, including the sensor's range and noise.
     pub fit: FitConfig<T>,
@@ -160,160 +184,9 @@ impl<T: Real> ProcedureConfig<T> {
     }
 }
 
-/// Where the operator is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum Phase {
-    /// Stage 0: pendant on a stable surface, first reading.
-    Stage0First,
-    /// Stage 0: pendant turned 180° on the same spot.
-    Stage0Second,
-    /// Stage 1: on the upper arm, axis 1 at its mark (from below, then from above).
-    Stage1Before,
-    /// Stage 1: axis 1 turned by 180° (from below, then from above).
-    Stage1After,
-    /// Stage 2: on the flange, the plan's poses, each from below, then from above.
-    Stage2,
-    /// The closing reversal: the pendant back on stage 0's bench, first reading.
-    ClosingFirst,
-    /// The closing reversal: turned 180° on the same spot.
-    ClosingSecond,
-    /// The result (or why there is none).
-    Done,
-}
-
-impl Phase {
-    /// Stable code for storage.
-    pub fn code(self) -> u8 {
-        match self {
-            Phase::Stage0First => 0,
-            Phase::Stage0Second => 1,
-            Phase::Stage1Before => 2,
-            Phase::Stage1After => 3,
-            Phase::Stage2 => 4,
-            Phase::Done => 5,
-            Phase::ClosingFirst => 6,
-            Phase::ClosingSecond => 7,
-        }
-    }
-
-    /// Inverse of [`code`](Self::code).
-    pub fn from_code(c: u8) -> Option<Self> {
-        Some(match c {
-            0 => Phase::Stage0First,
-            1 => Phase::Stage0Second,
-            2 => Phase::Stage1Before,
-            3 => Phase::Stage1After,
-            4 => Phase::Stage2,
-            5 => Phase::Done,
-            6 => Phase::ClosingFirst,
-            7 => Phase::ClosingSecond,
-            _ => return None,
-        })
-    }
-
-    /// Whether this phase captures readings.
-    pub fn captures(self) -> bool {
-        self != Phase::Done
-    }
-
-    /// Whether the pendant sits on the bench (stage 0 and the closing reversal).
-    pub fn on_bench(self) -> bool {
-        matches!(
-            self,
-            Phase::Stage0First | Phase::Stage0Second | Phase::ClosingFirst | Phase::ClosingSecond
-        )
-    }
-}
-
 pub use zerocal_core::capture::Approach;
 
 pub use crate::capture::Capture;
-
-/// Which capture of stages 0 and 1 or of the closing reversal, in the order they are
-/// taken.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum ReadingSlot {
-    /// Stage 0, first.
-    Stage0First,
-    /// Stage 0, turned.
-    Stage0Second,
-    /// Stage 1 at the mark, from below.
-    Stage1BeforeBelow,
-    /// Stage 1 at the mark, from above.
-    Stage1BeforeAbove,
-    /// Stage 1 turned, from below.
-    Stage1AfterBelow,
-    /// Stage 1 turned, from above.
-    Stage1AfterAbove,
-    /// Closing reversal, first.
-    ClosingFirst,
-    /// Closing reversal, turned.
-    ClosingSecond,
-}
-
-/// How many [`ReadingSlot`]s there are.
-pub const READING_SLOTS: usize = 8;
-
-impl ReadingSlot {
-    /// Every slot, in capture order.
-    pub const ALL: [ReadingSlot; READING_SLOTS] = [
-        ReadingSlot::Stage0First,
-        ReadingSlot::Stage0Second,
-        ReadingSlot::Stage1BeforeBelow,
-        ReadingSlot::Stage1BeforeAbove,
-        ReadingSlot::Stage1AfterBelow,
-        ReadingSlot::Stage1AfterAbove,
-        ReadingSlot::ClosingFirst,
-        ReadingSlot::ClosingSecond,
-    ];
-
-    /// Its place in [`ALL`](Self::ALL) (also its storage code).
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// Whether the slot is one of stage 1's (a check has none).
-    pub fn is_stage1(self) -> bool {
-        (ReadingSlot::Stage1BeforeBelow..=ReadingSlot::Stage1AfterAbove).contains(&self)
-    }
-
-    /// Inverse of [`index`](Self::index).
-    pub fn from_index(i: usize) -> Option<Self> {
-        Self::ALL.get(i).copied()
-    }
-
-    /// The slot captured in `phase` at `cursor` (stage 1: 0 from below, 1 from above).
-    pub fn at(phase: Phase, cursor: usize) -> Option<Self> {
-        let side = cursor.min(1);
-        Some(match phase {
-            Phase::Stage0First => ReadingSlot::Stage0First,
-            Phase::Stage0Second => ReadingSlot::Stage0Second,
-            Phase::Stage1Before => Self::ALL[2 + side],
-            Phase::Stage1After => Self::ALL[4 + side],
-            Phase::ClosingFirst => ReadingSlot::ClosingFirst,
-            Phase::ClosingSecond => ReadingSlot::ClosingSecond,
-            Phase::Stage2 | Phase::Done => return None,
-        })
-    }
-
-    /// Where the procedure stands when this slot is the next to take.
-    pub fn phase_cursor(self) -> (Phase, usize) {
-        match self {
-            ReadingSlot::Stage0First => (Phase::Stage0First, 0),
-            ReadingSlot::Stage0Second => (Phase::Stage0Second, 0),
-            ReadingSlot::Stage1BeforeBelow => (Phase::Stage1Before, 0),
-            ReadingSlot::Stage1BeforeAbove => (Phase::Stage1Before, 1),
-            ReadingSlot::Stage1AfterBelow => (Phase::Stage1After, 0),
-            ReadingSlot::Stage1AfterAbove => (Phase::Stage1After, 1),
-            ReadingSlot::ClosingFirst => (Phase::ClosingFirst, 0),
-            ReadingSlot::ClosingSecond => (Phase::ClosingSecond, 0),
-        }
-    }
-}
 
 /// What happens to the procedure.
 #[derive(Clone, Debug, PartialEq)]
@@ -378,13 +251,13 @@ pub enum Notice {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Output<T> {
     /// Records to write to flash, in order, before showing the new view.
-    pub persist: heapless::Vec<Record<T>, { MAX_CAPTURES + 4 }>,
+    pub persist: heapless::Vec<Record<T>, { MAX_PLAN_POSES + 4 }>,
 }
 
 impl<T> Output<T> {
     fn push(&mut self, r: Record<T>) {
-        // Capacity covers a whole plan plus its length and progress; steps write
-        // at most that.
+        // Capacity covers a whole plan plus its length (twice) and progress; steps
+        // write at most that.
         let _ = self.persist.push(r);
     }
 }
@@ -416,51 +289,6 @@ pub struct LastResult<T> {
 }
 
 pub use zerocal_core::capture::{CaptureIndex, CAPTURES_PER_POSE, MAX_CAPTURES, MAX_PLAN_POSES};
-
-/// Poses in the pendant's default plan: 24, each captured twice, chosen by Monte-Carlo
-/// on a real sensor and robot (docs/error-budget.md; `zerocal plan --poses 24` prints
-/// the 1σ it predicts).
-pub const PENDANT_PLAN_POSES: usize = MAX_PLAN_POSES;
-
-/// The planning window (deg) inside the sensor's ±10° mode-4 range: 4° are left for the
-/// sensor's offset (up to 1.45°), the base tilt, the offsets not yet known, a bracket's
-/// seat (±0.5°) and the chip's turn in its box (±1°). At 3° about one session in 200
-/// with every one of those at the top of its range had a capture past ±10°; at 4° none
-/// of 6,000 (host-tests `margins_hold`, docs/error-budget.md).
-pub const PENDANT_PLAN_MARGIN_DEG: f64 = 4.0;
-
-/// The plan the pendant uses when none was uploaded: this planner on the pendant's arm
-/// and convention with the fit's own terms, a level base and no bias (the real ones are
-/// not known before stages 0-1; [`PENDANT_PLAN_MARGIN_DEG`] inside the sensor's range
-/// absorbs them), and the fit's own conditioning limit.
-///
-/// Seeded, so the same every time: the firmware computes it when it is built.
-///
-/// # Errors
-/// As [`plan`].
-pub fn pendant_default<T: Real>(
-    config: &ProcedureConfig<T>,
-    pool: &mut [Candidate<T>],
-) -> Result<PoseList<T>, PlanError> {
-    let model = Stage2Model {
-        arm: config.arm,
-        base_tilt: BaseTilt::level(),
-        sensor: SensorModel::new(config.convention, Tilt::default()),
-        masses: config.masses,
-        ..Stage2Model::default()
-    };
-    let plan_config = PlanConfig {
-        poses: PENDANT_PLAN_POSES,
-        max_condition_number: config.fit.max_condition_number,
-        fixed_joints_rad: [config.stage1_joints_rad[0], config.stage1_joints_rad[1]],
-        extras: config.fit.extras,
-        noise_sigma_rad: config.fit.sensor_noise_rad,
-        window_rad: config.fit.sensor_range_rad,
-        margin_rad: deg_to_rad(T::lit(PENDANT_PLAN_MARGIN_DEG)),
-        ..PlanConfig::default()
-    };
-    Ok(plan(&model, &plan_config, pool)?.poses_rad)
-}
 
 /// Advances the procedure by one event.
 pub fn step<T: Real>(
@@ -495,8 +323,8 @@ pub fn step<T: Real>(
             }
         },
         Event::Next => match s.phase {
-            Phase::Stage0First | Phase::Stage0Second => {
-                s.clear_slots(ReadingSlot::Stage0First..=ReadingSlot::Stage0Second);
+            Phase::Stage0 => {
+                s.clear_slots(ReadingSlot::STAGE0_FIRST..=ReadingSlot::STAGE0_LAST);
                 s.stage0_skipped = true;
                 after_stage0(s);
                 out.push(s.progress());
@@ -520,8 +348,8 @@ pub fn step<T: Real>(
                 after_capture_in_stage2(config, s, &mut out);
                 out.push(s.progress());
             }
-            Phase::ClosingFirst | Phase::ClosingSecond => {
-                s.clear_slots(ReadingSlot::ClosingFirst..=ReadingSlot::ClosingSecond);
+            Phase::Closing => {
+                s.clear_slots(ReadingSlot::CLOSING_FIRST..=ReadingSlot::CLOSING_LAST);
                 s.closing_skipped = true;
                 finish(config, s, &mut out);
                 out.push(s.progress());
@@ -678,7 +506,7 @@ fn capture<T: Real>(
                 reading: c.reading,
                 temperature_c: c.temperature_c,
             };
-            if s.captures.push((at, pose)).is_err() {
+            if s.captures.push(at, pose).is_err() {
                 return;
             }
             s.notice = Some(Notice::Captured);
@@ -698,10 +526,10 @@ fn capture<T: Real>(
             s.readings[slot.index()] = Some(c);
             // The two checks stages 0 and 1 allow before going on: a refused reading is
             // taken again, never stored.
-            match slot {
-                ReadingSlot::Stage0Second => match s
-                    .reversal()
-                    .map(|r| r.bias(config.convention, config.fit.sensor_range_rad))
+            if slot == ReadingSlot::STAGE0_LAST {
+                match s
+                    .stage0_bench()
+                    .map(|r| r.turns.bias(config.convention, config.fit.sensor_range_rad))
                 {
                     Some(Ok(b)) => {
                         s.bias = Some(b);
@@ -716,8 +544,9 @@ fn capture<T: Real>(
                         }));
                         return;
                     }
-                },
-                ReadingSlot::Stage1AfterAbove => match s.solve_stage1(config) {
+                }
+            } else if slot == ReadingSlot::STAGE1_AFTER_ABOVE {
+                match s.solve_stage1(config) {
                     Some(Ok(r)) => s.stage1 = Some(r),
                     refused => {
                         s.readings[slot.index()] = None;
@@ -731,34 +560,36 @@ fn capture<T: Real>(
                         });
                         return;
                     }
-                },
-                _ => {}
+                }
             }
             s.notice = Some(Notice::Captured);
             s.last_capture = Some(c.reading);
             out.push(Record::Reading { slot, capture: c });
             match slot {
-                ReadingSlot::Stage0First => s.enter(Phase::Stage0Second, 0),
-                ReadingSlot::Stage0Second => after_stage0(s),
-                ReadingSlot::Stage1BeforeBelow => s.enter(Phase::Stage1Before, 1),
-                ReadingSlot::Stage1BeforeAbove => s.enter(Phase::Stage1After, 0),
-                ReadingSlot::Stage1AfterBelow => s.enter(Phase::Stage1After, 1),
-                ReadingSlot::Stage1AfterAbove => {
+                ReadingSlot::STAGE0_LAST => after_stage0(s),
+                ReadingSlot::STAGE1_AFTER_ABOVE => {
                     s.enter(Phase::Stage2, 0);
                     if s.plan.is_empty() {
                         s.notice = Some(Notice::NoPlan);
                     }
                 }
-                ReadingSlot::ClosingFirst => s.enter(Phase::ClosingSecond, 0),
-                ReadingSlot::ClosingSecond => finish(config, s, out),
+                ReadingSlot::CLOSING_LAST => finish(config, s, out),
+                _ => match slot.next() {
+                    Some(next) => {
+                        let (phase, cursor) = next.phase_cursor();
+                        s.enter(phase, cursor);
+                    }
+                    // The last slot is the closing readings' last, handled above.
+                    None => finish(config, s, out),
+                },
             }
         }
     }
     out.push(s.progress());
 }
 
-/// After a stage-2 capture or skip: the closing reversal once every pose is done (the
-/// result at once if stage 0 was skipped: there is no reversal to close).
+/// After a stage-2 capture or skip: the closing bench readings once every pose is done
+/// (the result at once if stage 0 was skipped: there is no bench reading to close).
 fn after_capture_in_stage2<T: Real>(
     config: &ProcedureConfig<T>,
     s: &mut ProcedureState<T>,
@@ -770,7 +601,7 @@ fn after_capture_in_stage2<T: Real>(
     if s.stage0_skipped {
         finish(config, s, out);
     } else {
-        s.enter(Phase::ClosingFirst, 0);
+        s.enter(Phase::Closing, 0);
     }
 }
 
@@ -815,17 +646,18 @@ fn back<T: Real>(s: &mut ProcedureState<T>) {
     // The undone reading becomes the motion reference: the pendant is most likely
     // still where it was taken, so it re-arms only on a move away from there or OK.
     let undone = match s.phase {
-        Phase::Stage0First => None,
+        Phase::Stage0 if s.cursor == 0 => None,
         Phase::Stage1Before if s.cursor == 0 && s.stage0_skipped => {
             s.stage0_skipped = false;
-            s.enter(Phase::Stage0First, 0);
+            s.enter(Phase::Stage0, 0);
             None
         }
-        Phase::Stage2 | Phase::ClosingFirst => undo_stage2(s),
+        Phase::Stage2 => undo_stage2(s),
+        Phase::Closing if s.cursor == 0 => undo_stage2(s),
         Phase::Done if s.stage0_skipped => undo_stage2(s),
         Phase::Done if s.closing_skipped => {
             s.closing_skipped = false;
-            s.enter(Phase::ClosingFirst, 0);
+            s.enter(Phase::Closing, 0);
             None
         }
         phase => {
@@ -836,7 +668,7 @@ fn back<T: Real>(s: &mut ProcedureState<T>) {
             };
             match next.checked_sub(1).and_then(ReadingSlot::from_index) {
                 Some(slot) => {
-                    if slot == ReadingSlot::Stage1AfterAbove {
+                    if slot == ReadingSlot::STAGE1_AFTER_ABOVE {
                         s.stage1 = None;
                     }
                     let (phase, cursor) = slot.phase_cursor();
@@ -865,19 +697,20 @@ fn undo_stage2<T: Real>(s: &mut ProcedureState<T>) -> Option<Tilt<T>> {
         // A check's flange comes after stage 0: back to its last capture.
         None if s.is_check() && s.stage0_skipped => {
             s.stage0_skipped = false;
-            s.enter(Phase::Stage0First, 0);
+            s.enter(Phase::Stage0, 0);
             None
         }
         None if s.is_check() => {
-            s.enter(Phase::Stage0Second, 0);
-            s.readings[ReadingSlot::Stage0Second.index()]
+            let (phase, cursor) = ReadingSlot::STAGE0_LAST.phase_cursor();
+            s.enter(phase, cursor);
+            s.readings[ReadingSlot::STAGE0_LAST.index()]
                 .take()
                 .map(|c| c.reading)
         }
         None => {
             s.stage1 = None;
             s.enter(Phase::Stage1After, 1);
-            s.readings[ReadingSlot::Stage1AfterAbove.index()]
+            s.readings[ReadingSlot::STAGE1_AFTER_ABOVE.index()]
                 .take()
                 .map(|c| c.reading)
         }

@@ -5,7 +5,7 @@ use core::ops::RangeInclusive;
 
 use super::record::Record;
 use super::{
-    Approach, Capture, CaptureIndex, LastResult, Notice, Outcome, Phase, ProcedureConfig,
+    Approach, Capture, CaptureIndex, Captures, LastResult, Notice, Outcome, Phase, ProcedureConfig,
     ReadingSlot, MAX_CAPTURES, READING_SLOTS,
 };
 use crate::stillness::{Stillness, StillnessFilter};
@@ -16,6 +16,7 @@ use zerocal_core::plan::{check_model, check_poses, CheckPoses, PoseList, CHECK_P
 use zerocal_core::real::Real;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{self, BiasSource, SessionError, SessionReadings, StageTemperatures};
+use zerocal_core::stage0::BENCH_HEADINGS;
 use zerocal_core::stage0::{BenchTurns, BenchTurnsAt};
 use zerocal_core::stage1::{AxisOneTurn, Stage1Result};
 use zerocal_core::stage2::{PoseReading, Stage2Model};
@@ -30,18 +31,19 @@ pub struct ProcedureState<T: Real> {
     pub(super) bias: Option<Tilt<T>>,
     pub(super) stage0_skipped: bool,
     pub(super) closing_skipped: bool,
-    /// A check, not a session: stage 0, the plan's check poses, the closing reversal;
+    /// A check, not a session: stage 0, the plan's check poses, the closing readings;
     /// the check poses as indices into the plan (core's `check_poses`; none: the plan
     /// gives no check).
     pub(super) check: Option<CheckList>,
-    /// The captures of stages 0 and 1 and of the closing reversal.
+    /// The captures of stages 0 and 1 and of the closing bench readings.
     pub(super) readings: [Option<Capture<T>>; READING_SLOTS],
     pub(super) stage1: Option<Stage1Result<T>>,
-    /// Stage 1: the approach of the next capture (0 from below, 1 from above); stage 2:
-    /// the index of the next capture in the plan's list (`2 × pose + approach`).
+    /// On the bench: the heading of the next capture (0-based); stage 1: its approach
+    /// (0 from below, 1 from above); stage 2: the index of the next capture in the
+    /// plan's list (`2 × pose + approach`).
     pub(super) cursor: usize,
     /// Stage-2 captures: which capture, and the pose reading.
-    pub(super) captures: heapless::Vec<(CaptureIndex, PoseReading<T>), MAX_CAPTURES>,
+    pub(super) captures: Captures<T>,
     pub(super) outcome: Option<Outcome<T>>,
     pub(super) last_result: Option<LastResult<T>>,
     // Not persisted: rebuilt from the sensor within one stillness window.
@@ -96,6 +98,9 @@ pub struct View<'a, T: Real> {
     pub armed: bool,
     /// In stages 1 and 2: the side every joint must arrive from.
     pub approach: Option<Approach>,
+    /// On the bench (stage 0, the closing readings): the heading to read, 0-based, of
+    /// [`zerocal_core::stage0::BENCH_HEADINGS`].
+    pub heading: Option<usize>,
     /// In stage 2: (index, plan length, joint targets in rad) of the pose to take.
     pub pose: Option<(usize, usize, [T; JOINTS])>,
     /// A check, not a session.
@@ -127,11 +132,22 @@ fn mean<T: Real>(a: Option<Capture<T>>, b: Option<Capture<T>>) -> Option<Capture
     })
 }
 
+/// The mean temperature of captures (`None` unless every one has one), at the
+/// export's resolution.
+fn mean_temperature<T: Real>(captures: &[Capture<T>]) -> Option<T> {
+    let mut sum = T::zero();
+    for c in captures {
+        sum += c.temperature_c?;
+    }
+    (!captures.is_empty())
+        .then(|| crate::log::quantise_temperature(sum / T::lit(captures.len() as f64)))
+}
+
 impl<T: Real> ProcedureState<T> {
     /// A new session at stage 0 with `plan` for stage 2 and the stored `bias`, if any.
     pub fn new(plan: PoseList<T>, bias: Option<Tilt<T>>) -> Self {
         ProcedureState {
-            phase: Phase::Stage0First,
+            phase: Phase::Stage0,
             plan,
             bias,
             stage0_skipped: false,
@@ -140,7 +156,7 @@ impl<T: Real> ProcedureState<T> {
             readings: [None; READING_SLOTS],
             stage1: None,
             cursor: 0,
-            captures: heapless::Vec::new(),
+            captures: Captures::default(),
             outcome: None,
             last_result: None,
             filter: StillnessFilter::new(),
@@ -241,7 +257,7 @@ impl<T: Real> ProcedureState<T> {
                 break;
             }
             last = Some(*index);
-            let _ = s.captures.push((*index, *pose));
+            let _ = s.captures.push(*index, *pose);
         }
         if checking {
             // The check's poses follow from the plan, as when the check started.
@@ -250,7 +266,7 @@ impl<T: Real> ProcedureState<T> {
         s.settle_restored(config);
         // After a reset the pendant may have been moved: re-arm only on motion (from
         // the first reading after power-up) or OK.
-        s.armed = s.phase == Phase::Stage0First;
+        s.armed = s.phase == Phase::Stage0 && s.cursor == 0;
         s.last_capture = None;
         s
     }
@@ -259,40 +275,42 @@ impl<T: Real> ProcedureState<T> {
     /// (a power cut between a capture and its progress record, a stale reading from
     /// before a BACK).
     fn settle_restored(&mut self, config: &ProcedureConfig<T>) {
-        if self.phase.on_bench() || matches!(self.phase, Phase::Stage1Before | Phase::Stage1After) {
+        if self.phase.on_bench() {
+            self.cursor = self.cursor.min(BENCH_HEADINGS - 1);
+        }
+        if matches!(self.phase, Phase::Stage1Before | Phase::Stage1After) {
             self.cursor = self.cursor.min(1);
         }
         let closing_taken = !self.stage0_skipped && !self.closing_skipped;
         // How many slots the phase has taken.
         let taken = match self.phase {
             Phase::Done if closing_taken => READING_SLOTS,
-            Phase::Stage2 | Phase::Done => ReadingSlot::ClosingFirst.index(),
+            Phase::Stage2 | Phase::Done => ReadingSlot::CLOSING_FIRST.index(),
             phase => ReadingSlot::at(phase, self.cursor).map_or(0, ReadingSlot::index),
         };
         let checking = self.check.is_some();
         let needed = |slot: ReadingSlot| {
             slot.index() < taken
                 && !(checking && slot.is_stage1())
-                && !(self.stage0_skipped && slot <= ReadingSlot::Stage0Second)
-                && !(self.closing_skipped && slot >= ReadingSlot::ClosingFirst)
+                && !(self.stage0_skipped && slot.is_stage0())
+                && !(self.closing_skipped && slot.is_closing())
         };
-        for slot in ReadingSlot::ALL {
+        for slot in ReadingSlot::all() {
             if !needed(slot) {
                 self.readings[slot.index()] = None;
             }
         }
-        let missing = ReadingSlot::ALL
-            .into_iter()
-            .find(|slot| needed(*slot) && self.readings[slot.index()].is_none());
+        let missing =
+            ReadingSlot::all().find(|slot| needed(*slot) && self.readings[slot.index()].is_none());
         if let Some(slot) = missing {
             let (phase, cursor) = self.phase_cursor_of(slot);
             self.phase = phase;
             self.cursor = cursor;
-            self.clear_slots(slot..=ReadingSlot::ClosingSecond);
-            if slot < ReadingSlot::ClosingFirst {
+            self.clear_slots(slot..=ReadingSlot::CLOSING_LAST);
+            if !slot.is_closing() {
                 self.captures.clear();
             }
-            if slot <= ReadingSlot::Stage0Second {
+            if slot.is_stage0() {
                 self.stage0_skipped = false;
             }
         }
@@ -301,12 +319,12 @@ impl<T: Real> ProcedureState<T> {
         if self.phase == Phase::Stage2 && !self.plan.is_empty() {
             self.cursor = self.cursor.min(self.plan_captures());
         }
-        if !checking && self.readings[ReadingSlot::Stage1AfterAbove.index()].is_some() {
+        if !checking && self.readings[ReadingSlot::STAGE1_AFTER_ABOVE.index()].is_some() {
             self.stage1 = self.solve_stage1(config).and_then(Result::ok);
             if self.stage1.is_none() {
                 self.phase = Phase::Stage1Before;
                 self.cursor = 0;
-                self.clear_slots(ReadingSlot::Stage1BeforeBelow..=ReadingSlot::ClosingSecond);
+                self.clear_slots(ReadingSlot::STAGE1_BEFORE_BELOW..=ReadingSlot::CLOSING_LAST);
                 self.captures.clear();
             }
         }
@@ -405,7 +423,7 @@ impl<T: Real> ProcedureState<T> {
 
     /// Stage-2 captures: which capture (its pose in the plan and its approach), and the
     /// pose reading.
-    pub fn captures(&self) -> &[(CaptureIndex, PoseReading<T>)] {
+    pub fn captures(&self) -> &Captures<T> {
         &self.captures
     }
 
@@ -422,7 +440,7 @@ impl<T: Real> ProcedureState<T> {
         self.bias
     }
 
-    /// A capture of stages 0 and 1 or of the closing reversal, once taken.
+    /// A capture of stages 0 and 1 or of the closing bench readings, once taken.
     pub fn reading(&self, slot: ReadingSlot) -> Option<Capture<T>> {
         self.readings[slot.index()]
     }
@@ -432,26 +450,29 @@ impl<T: Real> ProcedureState<T> {
         self.stage0_skipped
     }
 
-    /// Stage 0's reversal, once both readings are in (with its mean temperature).
-    pub fn stage0_reversal(&self) -> Option<BenchTurnsAt<T>> {
-        self.reversal_of(ReadingSlot::Stage0First, ReadingSlot::Stage0Second)
+    /// Stage 0's bench readings, once every heading is in (with their mean
+    /// temperature).
+    pub fn stage0_bench(&self) -> Option<BenchTurnsAt<T>> {
+        self.bench_of(ReadingSlot::stage0)
     }
 
-    /// The closing reversal, once both readings are in (with its mean temperature).
-    pub fn closing_reversal(&self) -> Option<BenchTurnsAt<T>> {
-        self.reversal_of(ReadingSlot::ClosingFirst, ReadingSlot::ClosingSecond)
+    /// The closing bench readings, once every heading is in (with their mean
+    /// temperature).
+    pub fn closing_bench(&self) -> Option<BenchTurnsAt<T>> {
+        self.bench_of(ReadingSlot::closing)
     }
 
-    fn reversal_of(&self, a: ReadingSlot, b: ReadingSlot) -> Option<BenchTurnsAt<T>> {
-        let (first, second) = (self.reading(a)?, self.reading(b)?);
+    /// The readings of one bench step's [`BENCH_HEADINGS`] headings (`slot` of each).
+    fn bench_of(&self, slot: fn(usize) -> Option<ReadingSlot>) -> Option<BenchTurnsAt<T>> {
+        let mut taken = [Capture::default(); BENCH_HEADINGS];
+        for (h, c) in taken.iter_mut().enumerate() {
+            *c = self.reading(slot(h)?)?;
+        }
+        let readings: [Tilt<T>; BENCH_HEADINGS] = core::array::from_fn(|h| taken[h].reading);
         Some(BenchTurnsAt {
-            turns: BenchTurns::half_turn(first.reading, second.reading),
-            temperature_c: mean(Some(first), Some(second)).and_then(|m| m.temperature_c),
+            turns: BenchTurns::from_readings(&readings)?,
+            temperature_c: mean_temperature(&taken),
         })
-    }
-
-    pub(super) fn reversal(&self) -> Option<BenchTurns<T>> {
-        self.stage0_reversal().map(|r| r.turns)
     }
 
     /// Stage 1's readings (before, after), once both pairs are in: each the mean of
@@ -460,12 +481,12 @@ impl<T: Real> ProcedureState<T> {
         let r = |s: ReadingSlot| self.reading(s);
         Some((
             mean(
-                r(ReadingSlot::Stage1BeforeBelow),
-                r(ReadingSlot::Stage1BeforeAbove),
+                r(ReadingSlot::STAGE1_BEFORE_BELOW),
+                r(ReadingSlot::STAGE1_BEFORE_ABOVE),
             )?,
             mean(
-                r(ReadingSlot::Stage1AfterBelow),
-                r(ReadingSlot::Stage1AfterAbove),
+                r(ReadingSlot::STAGE1_AFTER_BELOW),
+                r(ReadingSlot::STAGE1_AFTER_ABOVE),
             )?,
         ))
     }
@@ -473,7 +494,7 @@ impl<T: Real> ProcedureState<T> {
     /// The sensor's temperature during stages 0 and 1, where recorded.
     pub fn stage_temperatures(&self) -> StageTemperatures<T> {
         StageTemperatures {
-            stage0_c: self.stage0_reversal().and_then(|r| r.temperature_c),
+            stage0_c: self.stage0_bench().and_then(|r| r.temperature_c),
             stage1_c: self
                 .stage1_readings()
                 .and_then(|(a, b)| mean(Some(a), Some(b)))
@@ -509,19 +530,19 @@ impl<T: Real> ProcedureState<T> {
         CaptureIndex::captures_of(self.flange_poses())
     }
 
-    /// Whether only OK arms the next capture: after the half turns (stage 0's and the
-    /// closing reversal's on the bench, stage 1's of axis 1) the reading moves little,
+    /// Whether only OK arms the next capture: after a turn on the bench (every heading
+    /// after the first) and stage 1's half turn of axis 1 the reading moves little,
     /// and a slow turn can look still near its end.
     pub(super) fn needs_ok(&self) -> bool {
         match self.phase {
-            Phase::Stage0Second | Phase::ClosingSecond => true,
+            Phase::Stage0 | Phase::Closing => self.cursor > 0,
             Phase::Stage1After => self.cursor == 0,
             _ => false,
         }
     }
 
     pub(super) fn clear_slots(&mut self, range: RangeInclusive<ReadingSlot>) {
-        for slot in ReadingSlot::ALL {
+        for slot in ReadingSlot::all() {
             if range.contains(&slot) {
                 self.readings[slot.index()] = None;
             }
@@ -545,7 +566,8 @@ impl<T: Real> ProcedureState<T> {
 
     /// The session's readings of stages 0-1, the captured poses (with which capture
     /// each is, so the solver pairs a pose's two captures by index) and the closing
-    /// reversal, as the session solver takes them (`None` before stage 1 is complete).
+    /// bench readings, as the session solver takes them (`None` before stage 1 is
+    /// complete).
     pub(super) fn readings<'a>(
         &self,
         config: &'a ProcedureConfig<T>,
@@ -562,12 +584,16 @@ impl<T: Real> ProcedureState<T> {
             poses,
             capture_index: Some(capture_index),
             temperatures: self.stage_temperatures(),
-            closing: self.closing_reversal(),
+            closing: self.closing_bench(),
         })
     }
 
     pub(super) fn bias_source(&self) -> BiasSource<T> {
-        match (self.stage0_skipped, self.reversal(), self.bias) {
+        match (
+            self.stage0_skipped,
+            self.stage0_bench().map(|r| r.turns),
+            self.bias,
+        ) {
             (false, Some(r), _) => BiasSource::Bench(r),
             (_, _, Some(b)) => BiasSource::Stored(b),
             _ => BiasSource::Unknown,
@@ -602,6 +628,7 @@ impl<T: Real> ProcedureState<T> {
                 }
                 _ => None,
             },
+            heading: self.phase.on_bench().then_some(self.cursor),
             pose,
             check: self.check.is_some(),
             captured: self.captures.len(),
@@ -642,18 +669,12 @@ impl<T: Real> ProcedureState<T> {
 
     /// The session's result, from core's session solver.
     pub(super) fn compute(&self, config: &ProcedureConfig<T>) -> Outcome<T> {
-        let mut poses: heapless::Vec<PoseReading<T>, MAX_CAPTURES> = heapless::Vec::new();
-        let mut index: heapless::Vec<CaptureIndex, MAX_CAPTURES> = heapless::Vec::new();
-        for (i, p) in &self.captures {
-            // All three hold MAX_CAPTURES.
-            let _ = poses.push(*p);
-            let _ = index.push(*i);
-        }
+        let (poses, index) = (self.captures.poses(), self.captures.indices());
         // Every number the pendant shows of a finished session (the result screen, the
         // base tilt, `status`, the stored last result) is the session solver's: its
         // stage 1 is re-solved with the bias at stage 1's temperature, so it may differ
         // from the first solve the procedure made to check stage 1's readings.
-        let (stage1, result) = match self.readings(config, &poses, &index) {
+        let (stage1, result) = match self.readings(config, poses, index) {
             Some(readings) => {
                 let outcome = session::solve(&readings, &config.fit);
                 (outcome.stage1.or(self.stage1), outcome.result)
@@ -691,130 +712,5 @@ impl<T: Real> ProcedureState<T> {
         self.armed = false;
         self.filter.reset();
         self.stillness = Stillness::Moving;
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn reading(slot: ReadingSlot) -> Record<f64> {
-        Record::Reading {
-            slot,
-            capture: Capture {
-                reading: Tilt::new(0.001 * slot.index() as f64, -0.002),
-                temperature_c: Some(23.0),
-            },
-        }
-    }
-
-    fn progress(phase: Phase, cursor: u8, closing_skipped: bool) -> Record<f64> {
-        Record::Progress {
-            phase,
-            cursor,
-            captures: 0,
-            stage0_skipped: false,
-            closing_skipped,
-            check: false,
-        }
-    }
-
-    fn restored(records: &[Record<f64>]) -> ProcedureState<f64> {
-        ProcedureState::restore(&ProcedureConfig::default(), records.iter().copied())
-    }
-
-    #[test]
-    fn a_missing_capture_sends_the_restore_back_to_it() {
-        // A cut between stage 1's last reading and its progress record: the progress
-        // already says stage 2, the reading is not there.
-        let mut records: Vec<_> = ReadingSlot::ALL[..5].iter().map(|s| reading(*s)).collect();
-        records.push(progress(Phase::Stage2, 0, false));
-        let s = restored(&records);
-        assert_eq!((s.phase(), s.cursor), (Phase::Stage1After, 1));
-        assert!(s.reading(ReadingSlot::Stage1AfterBelow).is_some());
-        // The closing reversal's second reading missing under a `Done`.
-        let mut records: Vec<_> = ReadingSlot::ALL[..7].iter().map(|s| reading(*s)).collect();
-        records.push(progress(Phase::Done, 0, false));
-        let s = restored(&records);
-        assert_eq!(s.phase(), Phase::ClosingSecond);
-        assert!(s.outcome().is_none());
-    }
-
-    #[test]
-    fn a_stale_reading_beyond_the_progress_is_dropped() {
-        // Slots 4 and 5 from before a BACK: the progress says stage 1 turned, below.
-        let mut records: Vec<_> = ReadingSlot::ALL[..6].iter().map(|s| reading(*s)).collect();
-        records.push(progress(Phase::Stage1After, 0, false));
-        let s = restored(&records);
-        assert_eq!((s.phase(), s.cursor), (Phase::Stage1After, 0));
-        assert!(s.reading(ReadingSlot::Stage1AfterBelow).is_none());
-        assert!(s.reading(ReadingSlot::Stage1AfterAbove).is_none());
-        assert!(s.stage1_readings().is_none());
-        // A skipped closing reversal keeps none of its readings.
-        let mut records: Vec<_> = ReadingSlot::ALL.iter().map(|s| reading(*s)).collect();
-        records.push(progress(Phase::Done, 0, true));
-        let s = restored(&records);
-        assert!(s.closing_reversal().is_none());
-        assert!(s.stage0_reversal().is_some());
-    }
-
-    #[test]
-    fn a_plan_lost_from_the_store_loses_no_capture_and_can_be_sent_again() {
-        let mut records: Vec<_> = ReadingSlot::ALL[..6].iter().map(|s| reading(*s)).collect();
-        records.push(Record::Progress {
-            phase: Phase::Stage2,
-            cursor: 3,
-            captures: 3,
-            stage0_skipped: false,
-            closing_skipped: false,
-            check: false,
-        });
-        for i in 0..3_u8 {
-            records.push(Record::Capture {
-                slot: i,
-                index: CaptureIndex::from_sequence(usize::from(i)).unwrap(),
-                pose: PoseReading {
-                    joints_rad: [0.0, 0.0, 0.1 * f64::from(i), 0.2, 0.3, 0.4],
-                    reading: Tilt::new(0.01, 0.02),
-                    temperature_c: Some(23.0),
-                },
-            });
-        }
-        let config = ProcedureConfig::default();
-        let mut s = ProcedureState::restore(&config, records.iter().copied());
-        // No `PlanLen`: the captures stand on their own joints, the cursor stays.
-        assert_eq!(s.phase(), Phase::Stage2);
-        assert_eq!((s.captures().len(), s.cursor), (3, 3));
-        let mut plan = PoseList::new();
-        for i in 0..4 {
-            let _ = plan.push([0.0, 0.0, 0.1 * f64::from(i), 0.2, 0.3, 0.4]);
-        }
-        let out = super::super::step(&config, &mut s, super::super::Event::SetPlan(plan));
-        assert_eq!(s.plan().len(), 4, "{:?}", s.view().notice);
-        assert_eq!((s.captures().len(), s.cursor), (3, 3));
-        assert!(out.persist.contains(&Record::PlanLen(4)));
-    }
-
-    #[test]
-    fn stage_1_pairs_are_averaged_with_their_temperatures() {
-        let mut s = ProcedureState::<f64>::new(PoseList::new(), None);
-        for (slot, x, t) in [
-            (ReadingSlot::Stage1BeforeBelow, 0.010, 22.0),
-            (ReadingSlot::Stage1BeforeAbove, 0.012, 23.0),
-            (ReadingSlot::Stage1AfterBelow, -0.004, 24.0),
-            (ReadingSlot::Stage1AfterAbove, -0.002, 25.0),
-        ] {
-            s.readings[slot.index()] = Some(Capture {
-                reading: Tilt::new(x, 0.0),
-                temperature_c: Some(t),
-            });
-        }
-        let (before, after) = s.stage1_readings().unwrap();
-        assert!((before.reading.x_rad - 0.011).abs() < 1e-15);
-        assert!((after.reading.x_rad + 0.003).abs() < 1e-15);
-        assert_eq!(s.stage_temperatures().stage1_c, Some(23.5));
-        // One pair incomplete: no stage-1 reading yet.
-        s.readings[ReadingSlot::Stage1AfterAbove.index()] = None;
-        assert!(s.stage1_readings().is_none());
     }
 }

@@ -5,11 +5,14 @@
 //!
 //! Encoding: a format byte, then little-endian fields; every angle as an `f64` of
 //! radians (exact for the pendant's `f32`). Format 3 (the two-sided procedure) keeps every
-//! capture of stages 0 and 1 and of the closing reversal with its temperature, and two
+//! capture of stages 0 and 1 and of the closing readings with its temperature, and two
 //! stage-2 captures per plan pose (each under the index of its approach); format 4 adds
 //! the profile's link masses and bracket calibrations (and the head's flag saying
-//! whether masses are stored). Formats 1-3 are refused as `WrongFormat` and the pendant
-//! starts afresh.
+//! whether masses are stored); format 5 reads the bench at four headings (stage 0's and
+//! the closing readings' slots, [`ReadingSlot`], and the phases' codes changed with
+//! them) and holds 96 stage-2 captures. Formats 1-4 are refused as `WrongFormat` and
+//! the pendant starts afresh: a format-4 store's slot 1 was a half turn's second
+//! reading, which format 5 would take for a heading.
 
 use super::profile::{MAX_MASS_KG, MAX_POSITION_M};
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
@@ -35,30 +38,31 @@ pub const MAX_RECORD_LEN: usize = 1 + 8 * 10;
 
 /// The record format this build writes and reads (the first byte of every value). A
 /// store holding another format is reset by the pendant, never misread.
-pub const FORMAT: u8 = 4;
+pub const FORMAT: u8 = 5;
 
 /// One stored fact.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Record<T> {
-    /// The sensor bias from the last stage-0 reversal (kept across sessions).
+    /// The sensor bias from the last stage 0 (kept across sessions).
     Bias(Tilt<T>),
     /// Where the session stands.
     Progress {
         /// Phase.
         phase: Phase,
-        /// Stage 1: the approach of the next capture (0 from below, 1 from above);
-        /// stage 2: the index of the next capture in the plan's list (two a pose).
+        /// On the bench: the heading of the next capture; stage 1: its approach (0
+        /// from below, 1 from above); stage 2: the index of the next capture in the
+        /// plan's list (two a pose).
         cursor: u8,
         /// Valid stage-2 captures (slots 0..captures).
         captures: u8,
         /// Whether stage 0 was skipped this session.
         stage0_skipped: bool,
-        /// Whether the closing reversal was skipped this session.
+        /// Whether the closing bench readings were skipped this session.
         closing_skipped: bool,
         /// Whether this is a check, not a session.
         check: bool,
     },
-    /// A capture of stage 0, stage 1 or the closing reversal.
+    /// A capture of stage 0, stage 1 or the closing bench readings.
     Reading {
         /// Which one.
         slot: ReadingSlot,
@@ -210,7 +214,7 @@ pub enum RecordError {
 }
 
 /// Keys: fixed ones, then a range for the readings of stages 0-1 and the closing
-/// reversal, one for capture slots and one for plan poses.
+/// bench readings, one for capture slots and one for plan poses.
 pub mod key {
     /// [`super::Record::Bias`].
     pub const BIAS: u16 = 1;
@@ -243,6 +247,10 @@ pub mod key {
     pub const BRACKET_CALIBRATION: u16 = 0x40;
     /// The next kept result's ID ([`super::kept`]; not a [`super::Record`]).
     pub const KEPT_NEXT_ID: u16 = 0x70;
+
+    // Each range ends before the next begins.
+    const _: () = assert!(READING + super::READING_SLOTS as u16 <= PROFILE_HEAD);
+    const _: () = assert!(CAPTURE + super::MAX_CAPTURES as u16 <= PLAN_POSE);
     /// The kept results' slots ([`super::kept::kept_key`]; not [`super::Record`]s):
     /// `KEPT_RESULT + id % KEPT_RESULTS`.
     pub const KEPT_RESULT: u16 = 0x71;

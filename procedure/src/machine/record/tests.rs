@@ -20,7 +20,7 @@ fn round_trip(r: Record<f32>) {
 fn every_kind_round_trips_bit_exactly() {
     let t = Tilt::new(0.123_456_79_f32, -1.0e-7);
     round_trip(Record::Bias(t));
-    for slot in ReadingSlot::ALL {
+    for slot in ReadingSlot::all() {
         round_trip(Record::Reading {
             slot,
             capture: Capture {
@@ -30,7 +30,7 @@ fn every_kind_round_trips_bit_exactly() {
         });
     }
     round_trip(Record::Reading {
-        slot: ReadingSlot::ClosingSecond,
+        slot: ReadingSlot::CLOSING_LAST,
         capture: Capture {
             reading: t,
             temperature_c: None,
@@ -42,8 +42,8 @@ fn every_kind_round_trips_bit_exactly() {
         (true, true, false),
     ] {
         round_trip(Record::Progress {
-            phase: Phase::ClosingSecond,
-            cursor: 7,
+            phase: Phase::Closing,
+            cursor: 3,
             captures: 6,
             stage0_skipped,
             closing_skipped,
@@ -67,6 +67,24 @@ fn every_kind_round_trips_bit_exactly() {
             reading: t,
             temperature_c: None,
         },
+    });
+    // The last of the 96 capture slots, its index the plan's last pose from above.
+    round_trip(Record::Capture {
+        slot: MAX_CAPTURES as u8 - 1,
+        index: CaptureIndex::from_sequence(MAX_CAPTURES - 1).unwrap(),
+        pose: PoseReading {
+            joints_rad: [0.0, 0.7, -0.2, 1.0, -1.0, 2.5],
+            reading: t,
+            temperature_c: Some(30.0),
+        },
+    });
+    round_trip(Record::Progress {
+        phase: Phase::Stage2,
+        cursor: MAX_CAPTURES as u8,
+        captures: MAX_CAPTURES as u8,
+        stage0_skipped: false,
+        closing_skipped: false,
+        check: false,
     });
     round_trip(Record::PlanLen(12));
     round_trip(Record::PlanPose {
@@ -122,7 +140,7 @@ fn corrupt_values_are_named() {
     );
     // A reading stored under another slot's key.
     let r = Record::Reading {
-        slot: ReadingSlot::Stage1AfterBelow,
+        slot: ReadingSlot::STAGE1_AFTER_BELOW,
         capture: Capture::<f32>::default(),
     };
     let n = r.encode(&mut buf).unwrap();
