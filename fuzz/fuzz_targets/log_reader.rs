@@ -8,9 +8,7 @@ use std::cell::Cell;
 
 use libfuzzer_sys::fuzz_target;
 use zerocal_cli::log_file::parse_number;
-use zerocal_core::session::{
-    stage1_joint1_mismatch, STAGE1_JOINT1_TOLERANCE_DEG,
-};
+use zerocal_core::session::{stage1_joint1_mismatch, STAGE1_JOINT1_TOLERANCE_DEG};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::PoseReading;
 use zerocal_fuzz::{close, same_number};

@@ -34,14 +34,17 @@ pub fn start_request() -> Request {
 /// What the operator does in `phase` (the pendant's screen says it too).
 fn phase_hint(phase: Phase) -> &'static str {
     match phase {
-        Phase::Stage0First => "the pendant on the bench, still: it captures by itself",
-        Phase::Stage0Second => "turned end for end at the fence: OK on the pendant, then still",
+        Phase::Stage0 => {
+            "the pendant on the bench, still: it captures the first heading by itself; then \
+             turn it by hand about a quarter turn on the same spot, OK, three times"
+        }
         Phase::Stage2 => {
             "on the flange bracket: run the check program (`zerocal program --check`); the \
              pendant captures each pose from below, then from above"
         }
-        Phase::ClosingFirst => "back on the bench, as in stage 0 (NEXT on the pendant skips)",
-        Phase::ClosingSecond => "turned end for end at the fence: OK on the pendant, then still",
+        Phase::Closing => {
+            "back on stage 0's bench, four headings as in stage 0 (NEXT on the pendant skips)"
+        }
         Phase::Stage1Before | Phase::Stage1After => {
             "stage 1: not part of a check (the pendant is in a session: was `check` cleared?)"
         }
@@ -67,7 +70,7 @@ pub fn follow(
     };
     say(
         "check started on the pendant: stage 0 on the bench, the flange's check poses, the \
-         closing reversal; following it here (Ctrl-C stops following, the pendant carries on)",
+         closing bench readings; following it here (Ctrl-C stops following, the pendant carries on)",
     );
     let ask = command_line(Command::Status);
     let mut last = None;

@@ -251,7 +251,7 @@ mod tests {
                 mount: BracketMount::Flange,
                 id,
                 stage: CalibrationStage::Step {
-                    step: BracketStep::Alone,
+                    step: BracketStep::Alone { heading: 0 },
                     armed: true
                 }
             })
