@@ -72,9 +72,8 @@ pub fn identifiable<T: Real>(
     // any unmodelled error would be read as tens of degrees of it.
     {
         let info = information_at(model, e, joints_rad.clone(), offsets_rad, noise_rad);
-        let gram = info.gram();
         let layout = e.layout();
-        let norm = |slot: usize| gram.m[slot][slot].max(T::zero()).sqrt();
+        let norm = |slot: usize| info.column_norm(slot);
         let offsets = (0..WRIST_JOINTS).fold(T::zero(), |m, k| m.max(norm(k)));
         for (slot, p) in layout.params().iter().enumerate() {
             // A turn, a reducer's error or joint 2's own sag that the poses barely show
