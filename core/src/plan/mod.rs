@@ -462,6 +462,7 @@ pub fn plan<T: Real>(
 
     // The candidates this design separates: the fit will keep the same.
     let (extras, _) = crate::stage2::geometry::identifiable(
+        &mut crate::stage2::Information::new(0),
         model,
         extras,
         poses_rad.iter().copied(),

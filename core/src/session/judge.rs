@@ -189,7 +189,7 @@ pub fn evidence<T: Real>(
     let mut outlier = (0, T::zero(), T::zero(), T::zero());
     let mut step = (0, T::zero(), T::zero());
     let mut ramp = (T::zero(), T::zero());
-    let Some(inv) = info.inverse_gram() else {
+    let Some(inv) = info.invert_in_place() else {
         return Evidence {
             capture_difference,
             outlier,

@@ -51,11 +51,11 @@ pub fn covariance_bound<T: Real>(
         });
     }
     let layout = extras.layout();
-    let info = information(model, extras, joints_rad, offsets_rad, noise_sigma_rad);
+    let mut info = information(model, extras, joints_rad, offsets_rad, noise_sigma_rad);
     let condition_number = check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
     let unit = info.unit_sigma().ok_or(FitError::NonFiniteResult)?;
     let all_sigma = unit.map(|u| u * noise_sigma_rad);
-    let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
+    let inv = info.invert_in_place().ok_or(FitError::NonFiniteResult)?;
     let l = super::zeros_map(model, &layout);
     let n = layout.len();
     let zeros_sigma_rad = l.map(|row| {
@@ -163,7 +163,7 @@ pub fn joint_error_covariance<T: Real>(
     }
     super::add_held(&mut info, &extras, noise_rad);
     check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
-    let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
+    let inv = info.invert_in_place().ok_or(FitError::NonFiniteResult)?;
     // The zeros' rows of (JᵀJ)⁻¹ first: L·(JᵀJ)⁻¹ (ZEROS × n), then L·inv·O·invᵀ·Lᵀ.
     let l = super::zeros_map(model, &layout);
     let mut li = [[T::zero(); MAX_PARAMS]; ZEROS];

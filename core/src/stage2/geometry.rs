@@ -13,7 +13,7 @@
 //! in the budget at its stated worst case ([`unfitted_effect`]).
 
 use super::params::{tilt_directions, Extras, Layout, Param, MAX_PARAMS, WRIST_SAG_JOINTS};
-use super::{information_at, PoseReading, Stage2Model};
+use super::{information_at, Information, PoseReading, Stage2Model};
 use crate::error::ParamSet;
 use crate::model::WRIST_JOINTS;
 use crate::real::{deg_to_rad, Real};
@@ -55,8 +55,12 @@ pub const TILT_IMPLAUSIBLE_FACTOR: f64 = 4.0;
 /// those, the fit refuses as before.
 // A frame of its own: its square matrices leave the stack when it returns
 // (the pendant's fit is stack-measured on target).
+///
+/// `info` is scratch: the analysis's information is built there, so that the caller's
+/// buffer serves (the pendant's stack holds two n×n matrices, not three).
 #[inline(never)]
 pub fn identifiable<T: Real>(
+    info: &mut Information<T>,
     model: &Stage2Model<T>,
     extras: Extras,
     joints_rad: impl Iterator<Item = [T; crate::model::JOINTS]> + Clone,
@@ -71,7 +75,7 @@ pub fn identifiable<T: Real>(
     // the readings only through the base's tilt, a few thousandths of a joint's turn;
     // any unmodelled error would be read as tens of degrees of it.
     {
-        let info = information_at(model, e, joints_rad.clone(), offsets_rad, noise_rad);
+        information_at(info, model, e, joints_rad.clone(), offsets_rad, noise_rad);
         let layout = e.layout();
         let norm = |slot: usize| info.column_norm(slot);
         let offsets = (0..WRIST_JOINTS).fold(T::zero(), |m, k| m.max(norm(k)));
@@ -89,7 +93,7 @@ pub fn identifiable<T: Real>(
         }
     }
     while e.tilt != 0 || e.wrist_sag != 0 || e.sag2 {
-        let info = information_at(model, e, joints_rad.clone(), offsets_rad, noise_rad);
+        information_at(info, model, e, joints_rad.clone(), offsets_rad, noise_rad);
         let c = info.conditioning();
         let layout = e.layout();
         let geometric = |p: &Param| matches!(p, Param::Tilt(_) | Param::WristSag(_));

@@ -146,14 +146,42 @@ impl<T: Real> Information<T> {
         self.r.gram()
     }
 
-    /// (JᵀJ)⁻¹ = R⁻¹R⁻ᵀ, or `None` if a pivot is zero.
-    // A frame of its own: its square matrices leave the stack when it returns
-    // (the pendant's fit is stack-measured on target).
+    /// Empties the factor for `n` parameters, in place (no n×n temporary).
+    pub(crate) fn reset(&mut self, n: usize) {
+        for row in self.r.m.iter_mut() {
+            row.fill(T::zero());
+        }
+        self.r.n = n.min(MAX_PARAMS);
+        self.qtb.fill(T::zero());
+    }
+
+    /// Turns the factor into (JᵀJ)⁻¹ = R⁻¹R⁻ᵀ where it stands and returns it, or `None`
+    /// if a pivot is zero (the factor is then left part-inverted). The factor is gone
+    /// afterwards: at 61 parameters each n×n matrix is 15 KiB in f32, and the
+    /// pendant's stack holds the fit's factor and one more, not a third.
+    // A frame of its own: the pendant's fit is stack-measured on target.
     #[inline(never)]
-    pub(crate) fn inverse_gram(&self) -> Option<Square<T, MAX_PARAMS>> {
-        let mut inverse = self.r.upper_inverse()?;
-        inverse.upper_times_own_transpose();
-        Some(inverse)
+    pub(crate) fn invert_in_place(&mut self) -> Option<&Square<T, MAX_PARAMS>> {
+        let n = self.r.n;
+        if (0..n).any(|i| self.r.m[i][i] == T::zero()) {
+            return None;
+        }
+        // R⁻¹ row by row from the bottom, each row from the right: an entry reads its
+        // own row of R left of where it is written (not yet overwritten) and the rows
+        // below, already R⁻¹; the diagonal goes last.
+        let m = &mut self.r.m;
+        for i in (0..n).rev() {
+            for j in ((i + 1)..n).rev() {
+                let mut acc = T::zero();
+                for k in (i + 1)..=j {
+                    acc += m[i][k] * m[k][j];
+                }
+                m[i][j] = -acc / m[i][i];
+            }
+            m[i][i] = T::one() / m[i][i];
+        }
+        self.r.upper_times_own_transpose();
+        Some(&self.r)
     }
 
     /// sqrt(diag((JᵀJ)⁻¹)): the 1σ per parameter for unit reading noise, or `None` if
@@ -185,31 +213,35 @@ impl<T: Real> Information<T> {
         Some(squares)
     }
 
-    /// The least-squares step, optionally damped by λ (Levenberg-Marquardt).
-    // A frame of its own: its square matrices leave the stack when it returns
-    // (the pendant's fit is stack-measured on target).
-    #[inline(never)]
-    pub(crate) fn step(&self, lambda: T) -> Option<[T; MAX_PARAMS]> {
-        let n = self.r.n;
-        let sys = if lambda > T::zero() {
-            let mut damped = *self;
+    /// The least-squares step, optionally damped by λ (Levenberg-Marquardt): with
+    /// λ > 0 the damped factor is built in `scratch` (overwritten), so that no n×n
+    /// copy lives on this frame.
+    pub(crate) fn step(&self, lambda: T, scratch: &mut Self) -> Option<[T; MAX_PARAMS]> {
+        if lambda > T::zero() {
+            *scratch = *self;
             let sl = lambda.sqrt();
-            for k in 0..n {
-                let mut row = [T::zero(); MAX_PARAMS];
+            let mut row = [T::zero(); MAX_PARAMS];
+            for k in 0..self.r.n {
                 row[k] = sl;
-                damped.add_row(&row, T::zero());
+                scratch.add_row(&row, T::zero());
+                row[k] = T::zero();
             }
-            damped
+            scratch.back_substitute()
         } else {
-            *self
-        };
+            self.back_substitute()
+        }
+    }
+
+    /// R·x = Qᵀb, or `None` if a pivot is zero.
+    pub(crate) fn back_substitute(&self) -> Option<[T; MAX_PARAMS]> {
+        let n = self.r.n;
         let mut x = [T::zero(); MAX_PARAMS];
         for i in (0..n).rev() {
-            let mut acc = sys.qtb[i];
+            let mut acc = self.qtb[i];
             for j in (i + 1)..n {
-                acc -= sys.r.m[i][j] * x[j];
+                acc -= self.r.m[i][j] * x[j];
             }
-            let d = sys.r.m[i][i];
+            let d = self.r.m[i][i];
             if d == T::zero() {
                 return None;
             }
@@ -459,9 +491,10 @@ mod tests {
         let info = sample(MAX_PARAMS, 0.3);
         let ri = info.r.upper_inverse().unwrap_or_else(|| Square::zeros(0));
         let reference = ri.mul(&ri.transpose());
-        let inverse = info.inverse_gram().unwrap_or_else(|| Square::zeros(0));
-        assert_eq!(inverse.n, MAX_PARAMS);
         let sigma = info.unit_sigma().unwrap_or([0.0; MAX_PARAMS]);
+        let mut info = info;
+        let inverse = *info.invert_in_place().unwrap_or(&Square::zeros(0));
+        assert_eq!(inverse.n, MAX_PARAMS);
         for (i, s) in sigma.iter().enumerate() {
             assert!(isclose(s * s, reference.m[i][i], 1e-9, 0.0), "{i}");
         }

@@ -337,16 +337,17 @@ fn check_layout<T: Real>(
 // (the pendant's fit is stack-measured on target).
 #[inline(never)]
 fn linearise<T: Real>(
+    info: &mut Information<T>,
     model: &Stage2Model<T>,
     layout: &Layout,
     poses: &[PoseReading<T>],
     x: &[T; MAX_PARAMS],
     with_residuals: bool,
     held: &Held<T>,
-) -> (Information<T>, T, (T, usize)) {
+) -> (T, (T, usize)) {
     let estimate = Estimate::from_slots(layout, x);
     let pass = model.pass(&estimate, layout);
-    let mut info = Information::new(layout.len());
+    info.reset(layout.len());
     let mut ssr = T::zero();
     let mut worst = (T::zero(), 0);
     for (i, pose) in poses.iter().enumerate() {
@@ -388,7 +389,7 @@ fn linearise<T: Real>(
             ssr += *w * *w * x[slot] * x[slot];
         }
     }
-    (info, ssr, worst)
+    (ssr, worst)
 }
 
 /// The priors are weighted again against the residuals' scatter where it exceeds the
@@ -497,7 +498,12 @@ pub fn fit<T: Real>(
 ) -> Result<FitResult<T>, FitError> {
     check_poses(poses, config.sensor_range_rad)?;
     // The geometric candidates this pose set separates; the others go to the budget.
+    // The fit's one n×n buffer: the rank analysis works in it, then each
+    // Levenberg-Marquardt run leaves its information here, and the covariance is
+    // formed in it at the end.
+    let mut info = Information::new(0);
     let (extras, dropped) = geometry::identifiable(
+        &mut info,
         model,
         config.extras,
         poses.iter().map(|p| p.joints_rad),
@@ -526,7 +532,9 @@ pub fn fit<T: Real>(
             prior_weight: prior_weights(model, &base, poses, config.sensor_noise_rad),
             ..held
         };
-        if let Ok(start) = levenberg_marquardt(model, &base, poses, xb, &held_base, config) {
+        if let Ok(start) =
+            levenberg_marquardt(&mut info, model, &base, poses, xb, &held_base, config)
+        {
             for (slot, p) in base.params().iter().enumerate() {
                 if let Some(to) = layout.slot(*p) {
                     x[to] = start.x[slot];
@@ -534,7 +542,7 @@ pub fn fit<T: Real>(
             }
         }
     }
-    let mut solved = levenberg_marquardt(model, &layout, poses, x, &held, config)?;
+    let mut solved = levenberg_marquardt(&mut info, model, &layout, poses, x, &held, config)?;
     // The priors are pseudo-readings weighted against one reading's noise: where the
     // residuals show more scatter than the sensor's (the robot's repeatability, its
     // unmodelled errors), they are weighed against that instead, and the fit is run
@@ -557,26 +565,34 @@ pub fn fit<T: Real>(
                 prior_weight: prior_weights(model, &layout, poses, shown),
                 ..held
             };
-            if let Ok(again) =
-                levenberg_marquardt(model, &layout, poses, solved.x, &reweighted, config)
-            {
+            if let Ok(again) = levenberg_marquardt(
+                &mut info,
+                model,
+                &layout,
+                poses,
+                solved.x,
+                &reweighted,
+                config,
+            ) {
                 solved = Solved {
                     iterations: solved.iterations + again.iterations,
                     ..again
                 };
+            } else {
+                // The information at the solution it started from, as it was.
+                linearise(&mut info, model, &layout, poses, &solved.x, true, &held);
             }
         }
     }
     let Solved {
         x,
-        info,
         cost,
         worst,
         iterations,
     } = solved;
 
     let condition_number = check_conditioning(&info, &layout, config.max_condition_number)?;
-    let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
+    let inv = info.invert_in_place().ok_or(FitError::NonFiniteResult)?;
 
     // Errors δm in the hand-over parameters (variance σ²·D) move the solution by S·δm,
     // S = −(JᵀJ)⁻¹·JᵀJ_m, and leave J_mᵀ(I−P)J_m of themselves in the residuals, so
@@ -608,21 +624,6 @@ pub fn fit<T: Real>(
             }
         }
     }
-    // Cov = σ²·(JᵀJ)⁻¹ + σₕ²·S·D·Sᵀ over the slots (σₕ: the hand-over's noise).
-    let mut unit_cov = Square::<T, MAX_PARAMS>::zeros(n);
-    if any_d {
-        for i in 0..n {
-            for j in 0..n {
-                let mut acc = T::zero();
-                for a in 0..HANDOVER_PARAMS {
-                    for b in 0..HANDOVER_PARAMS {
-                        acc += sensitivity[i][a] * d[a][b] * sensitivity[j][b];
-                    }
-                }
-                unit_cov.m[i][j] += acc;
-            }
-        }
-    }
     if let Some((p, v)) = geometry::implausible_tilt(
         model,
         &{
@@ -646,13 +647,12 @@ pub fn fit<T: Real>(
                 * geometry::TILT_IMPLAUSIBLE_FACTOR) as f32,
         });
     }
-    let unfitted_rad = geometry::unfitted_effect(model, &layout, dropped, poses, &x, &inv);
+    let unfitted_rad = geometry::unfitted_effect(model, &layout, dropped, poses, &x, inv);
     finish(
         model,
         &layout,
         &x,
-        &inv,
-        &unit_cov,
+        inv,
         &sensitivity,
         Summary {
             cost,
@@ -670,20 +670,21 @@ pub fn fit<T: Real>(
     )
 }
 
-/// Where Levenberg-Marquardt left a fit.
+/// Where Levenberg-Marquardt left a fit (its information in the caller's buffer).
 struct Solved<T: Real> {
     x: [T; MAX_PARAMS],
-    info: Information<T>,
     cost: T,
     worst: (T, usize),
     iterations: u32,
 }
 
-/// Levenberg-Marquardt on `layout` from `x`.
-// A frame of its own: its square matrices leave the stack when it returns
-// (the pendant's fit is stack-measured on target).
+/// Levenberg-Marquardt on `layout` from `x`; the information at the solution is left
+/// in `info`.
+// A frame of its own: its one square matrix (the trial's) leaves the stack when it
+// returns (the pendant's fit is stack-measured on target).
 #[inline(never)]
 fn levenberg_marquardt<T: Real>(
+    info: &mut Information<T>,
     model: &Stage2Model<T>,
     layout: &Layout,
     poses: &[PoseReading<T>],
@@ -692,8 +693,10 @@ fn levenberg_marquardt<T: Real>(
     config: &FitConfig<T>,
 ) -> Result<Solved<T>, FitError> {
     let n = layout.len();
-    let (mut info, mut cost, mut worst) = linearise(model, layout, poses, &x, true, held);
-    check_conditioning(&info, layout, config.max_condition_number)?;
+    let (mut cost, mut worst) = linearise(info, model, layout, poses, &x, true, held);
+    check_conditioning(info, layout, config.max_condition_number)?;
+    // The damped factor and then the candidate's information: one buffer for both.
+    let mut trial = Information::new(0);
 
     let mut lambda = T::zero();
     let mut iterations = 0;
@@ -703,7 +706,9 @@ fn levenberg_marquardt<T: Real>(
     let slack = T::one() + T::lit(8.0) * T::EPSILON;
     while iterations < config.max_iterations {
         iterations += 1;
-        let mut step = info.step(lambda).ok_or(FitError::NonFiniteResult)?;
+        let mut step = info
+            .step(lambda, &mut trial)
+            .ok_or(FitError::NonFiniteResult)?;
         if !step.iter().take(n).all(|s| s.is_finite()) {
             return Err(FitError::NonFiniteResult);
         }
@@ -735,8 +740,8 @@ fn levenberg_marquardt<T: Real>(
         for (c, s) in candidate.iter_mut().zip(&step).take(n) {
             *c += *s;
         }
-        let (cand_info, cand_cost, cand_worst) =
-            linearise(model, layout, poses, &candidate, true, held);
+        let (cand_cost, cand_worst) =
+            linearise(&mut trial, model, layout, poses, &candidate, true, held);
         // Below LOCAL_STEP_RAD the linearisation error (∝ δ²) is far under the noise, so
         // the Gauss-Newton step is trusted as it is: there the cost's own rounding noise
         // (~1e-3 relative in f32) would otherwise reject genuine steps and stall the
@@ -744,7 +749,7 @@ fn levenberg_marquardt<T: Real>(
         let local = size < T::lit(LOCAL_STEP_RAD);
         if cand_cost.is_finite() && (local || cand_cost <= cost * slack) {
             x = candidate;
-            info = cand_info;
+            core::mem::swap(info, &mut trial);
             cost = cand_cost;
             worst = cand_worst;
             lambda /= T::lit(10.0);
@@ -770,7 +775,6 @@ fn levenberg_marquardt<T: Real>(
     }
     Ok(Solved {
         x,
-        info,
         cost,
         worst,
         iterations,
@@ -800,7 +804,6 @@ fn finish<T: Real>(
     layout: &Layout,
     x: &[T; MAX_PARAMS],
     inv: &Square<T, MAX_PARAMS>,
-    handover_part: &Square<T, MAX_PARAMS>,
     sensitivity: &[[T; HANDOVER_PARAMS]; MAX_PARAMS],
     s: Summary<T>,
     config: &FitConfig<T>,
@@ -825,8 +828,17 @@ fn finish<T: Real>(
     // robot's scatter at each pose, what the model leaves), and scaling the hand-over
     // by them would count that twice.
     let handover_variance = config.handover_noise_rad * config.handover_noise_rad;
-    let cov_of =
-        |r: usize, c: usize| inv.m[r][c] * variance + handover_part.m[r][c] * handover_variance;
+    // Cov = σ²·(JᵀJ)⁻¹ + σₕ²·S·D·Sᵀ over the slots (σₕ: the hand-over's noise), the
+    // second term formed where it is needed: it is rank five, not an n×n matrix.
+    let d = &config.model_covariance;
+    let sds = |a: &[T; HANDOVER_PARAMS], b: &[T; HANDOVER_PARAMS]| {
+        (0..HANDOVER_PARAMS).fold(T::zero(), |acc, i| {
+            (0..HANDOVER_PARAMS).fold(acc, |acc, j| acc + a[i] * d[i][j] * b[j])
+        })
+    };
+    let cov_of = |r: usize, c: usize| {
+        inv.m[r][c] * variance + sds(&sensitivity[r], &sensitivity[c]) * handover_variance
+    };
     let mut values = [T::zero(); MAX_PARAMS];
     let mut sigmas = [T::zero(); MAX_PARAMS];
     let mut estimated = ParamSet::default();
@@ -860,8 +872,14 @@ fn finish<T: Real>(
     let quad = |a: &[T; MAX_PARAMS], b: &[T; MAX_PARAMS], m: &dyn Fn(usize, usize) -> T| {
         dot(a, &|i| dot(b, &|j| m(i, j)))
     };
-    let zeros_covariance_rad2: [[T; ZEROS]; ZEROS] =
-        core::array::from_fn(|r| core::array::from_fn(|c| quad(&l[r], &l[c], &cov_of)));
+    let zeros_sensitivity: [[T; HANDOVER_PARAMS]; ZEROS] =
+        core::array::from_fn(|r| core::array::from_fn(|m| dot(&l[r], &|i| sensitivity[i][m])));
+    let zeros_covariance_rad2: [[T; ZEROS]; ZEROS] = core::array::from_fn(|r| {
+        core::array::from_fn(|c| {
+            quad(&l[r], &l[c], &|i, j| inv.m[i][j]) * variance
+                + sds(&zeros_sensitivity[r], &zeros_sensitivity[c]) * handover_variance
+        })
+    });
     let zeros_sigma_stage2_rad: [T; ZEROS] = core::array::from_fn(|r| {
         (quad(&l[r], &l[r], &|i, j| inv.m[i][j]).max(T::zero()) * variance).sqrt()
     });
@@ -872,8 +890,6 @@ fn finish<T: Real>(
             _ => T::zero(),
         }
     });
-    let zeros_sensitivity: [[T; HANDOVER_PARAMS]; ZEROS] =
-        core::array::from_fn(|r| core::array::from_fn(|m| dot(&l[r], &|i| sensitivity[i][m])));
     if config.max_residual_rms_rad > T::zero() && residual_rms_rad > config.max_residual_rms_rad {
         return Err(FitError::ResidualTooLarge {
             rms_deg: rad_to_deg(residual_rms_rad).to_f64() as f32,
@@ -935,9 +951,18 @@ pub fn single_linearised_step<T: Real>(
         at_rad: config.initial_offsets_rad,
         prior_weight: [T::zero(); MAX_PARAMS],
     };
-    let (info, _, _) = linearise(model, &layout, poses, &[T::zero(); MAX_PARAMS], true, &held);
+    let mut info = Information::new(0);
+    linearise(
+        &mut info,
+        model,
+        &layout,
+        poses,
+        &[T::zero(); MAX_PARAMS],
+        true,
+        &held,
+    );
     check_conditioning(&info, &layout, config.max_condition_number)?;
-    let step = info.step(T::zero()).ok_or(FitError::NonFiniteResult)?;
+    let step = info.back_substitute().ok_or(FitError::NonFiniteResult)?;
     Ok(core::array::from_fn(|k| step[k]))
 }
 
@@ -951,13 +976,16 @@ pub fn information<T: Real>(
     offsets_rad: &[T; WRIST_JOINTS],
     noise_rad: T,
 ) -> Information<T> {
+    let mut info = Information::new(0);
     information_at(
+        &mut info,
         model,
         extras,
         joints_rad.iter().copied(),
         offsets_rad,
         noise_rad,
-    )
+    );
+    info
 }
 
 /// J of commanded poses as [`information`], without the held offsets or any prior: one
@@ -1009,12 +1037,13 @@ pub fn rows_at<T: Real>(
 
 /// [`information`] over any sequence of commanded poses.
 pub(crate) fn information_at<T: Real>(
+    info: &mut Information<T>,
     model: &Stage2Model<T>,
     extras: Extras,
     joints_rad: impl Iterator<Item = [T; JOINTS]>,
     offsets_rad: &[T; WRIST_JOINTS],
     noise_rad: T,
-) -> Information<T> {
+) {
     let layout = extras.layout();
     let poses = joints_rad.map(|q| PoseReading {
         joints_rad: q,
@@ -1026,14 +1055,13 @@ pub(crate) fn information_at<T: Real>(
         ..Estimate::default()
     };
     let pass = model.pass(&estimate, &layout);
-    let mut info = Information::new(layout.len());
+    info.reset(layout.len());
     for pose in poses {
         let p = model.predict_rows(&pass, &layout, &estimate, &pose, false);
         info.add_row(&p.rows[0], T::zero());
         info.add_row(&p.rows[1], T::zero());
     }
-    add_held(&mut info, &extras, noise_rad);
-    info
+    add_held(info, &extras, noise_rad);
 }
 
 #[cfg(test)]

@@ -165,7 +165,7 @@ pub fn transmission_variance<T: Real>(
     }
     add_held(&mut info, &extras, noise_rad);
     check_conditioning(&info, &layout, T::lit(RANK_DEFICIENT_CONDITION))?;
-    let inv = info.inverse_gram().ok_or(FitError::NonFiniteResult)?;
+    let inv = info.invert_in_place().ok_or(FitError::NonFiniteResult)?;
     let l = super::zeros_map(model, &layout);
     let mut variance = [T::zero(); ZEROS];
     for (a, v) in variance.iter_mut().enumerate() {
