@@ -98,7 +98,7 @@ impl<T: Real> Inverse<T> {
             s[a][a] += T::one();
         }
         let det = s[0][0] * s[1][1] - s[0][1] * s[1][0];
-        if !(det > T::zero()) || !det.is_finite() {
+        if !det.is_finite() || det <= T::zero() {
             return None;
         }
         match criterion {

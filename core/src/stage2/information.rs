@@ -63,7 +63,7 @@ fn start_vector<T: Real>(n: usize, alternate: bool) -> [T; MAX_PARAMS] {
 /// `x` scaled to unit length over its first `n` entries; `None` if it has none.
 fn unit<T: Real>(mut x: [T; MAX_PARAMS], n: usize) -> Option<[T; MAX_PARAMS]> {
     let length = x.iter().take(n).fold(T::zero(), |s, v| s + *v * *v).sqrt();
-    if !(length > T::zero()) || !length.is_finite() {
+    if !length.is_finite() || length <= T::zero() {
         return None;
     }
     for v in x.iter_mut().take(n) {
@@ -361,7 +361,7 @@ impl<T: Real> Information<T> {
                 break;
             }
         }
-        if !(smallest > T::zero()) || !smallest.is_finite() || !largest.is_finite() {
+        if !smallest.is_finite() || smallest <= T::zero() || !largest.is_finite() {
             return singular(weakest);
         }
         Conditioning {

@@ -47,7 +47,7 @@ pub const LOADED_SHARE: f64 = 0.3;
 /// (unloaded, the approaches averaged); a ramp between [`UNLOADED_SHARE`] and
 /// [`LOADED_SHARE`] of its most (`stretched_nm`), where the side is not known.
 pub fn loaded_side<T: Real>(torque_nm: T, stretched_nm: T) -> T {
-    if !(stretched_nm > T::zero()) || !torque_nm.is_finite() {
+    if !stretched_nm.is_finite() || stretched_nm <= T::zero() || !torque_nm.is_finite() {
         return T::zero();
     }
     let share = torque_nm.abs() / stretched_nm;
