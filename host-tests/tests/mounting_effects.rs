@@ -1,8 +1,9 @@
 //! The pendant's own mounting and bench effects, as switchable sources of the simulated
 //! world: the brackets' seats (tilt and yaw), the chip turned inside its box, stage 0 on
-//! a tilted bench with a half turn made by hand. Each is off in `WorldConfig::real()` (its
-//! figures stay what they were); a measurement table (printed with `--nocapture`, not
-//! asserted) shows what each does to whole sessions today.
+//! a tilted bench with the pendant turned by hand between its four headings. Each is off
+//! in `WorldConfig::real()` (its figures stay what they were); a measurement table
+//! (printed with `--nocapture`, not asserted) shows what each does to whole sessions
+//! today (`half_turn_error_deg` acts only on a world read at two headings).
 
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -41,37 +42,129 @@ fn mounting_sources_are_off_by_default() {
     assert_eq!(a.stage0, b.stage0);
 }
 
-/// A half turn off 180° on a tilted bench moves stage 0's bias: the reversal's half-sum
-/// cancels the bench's tilt only for an exact half turn.
+/// Stage 0 with the pendant turned by hand: four headings about a quarter turn apart,
+/// each turn off by up to ±`zerocal_sim::world::HAND_TURN_SPREAD_DEG`, on a bench tilted up to 2° about
+/// each axis. The bias is the centre of the circle the readings draw and the headings
+/// come from the readings, so the turns cost nothing: each session's bias lies within
+/// 4.5σ of the truth, σ the sensor's capture noise ([`MEMS_CAPTURE_NOISE_DEG`], one
+/// capture per heading) times the solve's own variance factor, and the errors scaled by
+/// σ scatter as the noise does (RMS 0.5-1.5 over 100 sessions: σ is neither loose nor
+/// too tight).
 #[test]
-fn an_inexact_half_turn_on_a_tilted_bench_moves_the_bias() {
+fn headings_turned_by_hand_on_a_tilted_bench_find_the_bias_to_the_noise() {
+    use zerocal_core::model::{Convention, Gain};
+    use zerocal_core::stage0::BENCH_HEADINGS;
+    use zerocal_core::stage2::{MEMS_CAPTURE_NOISE_DEG, MEMS_RANGE_DEG};
+    use zerocal_sim::sensor::SensorSources;
     let profile = zerocal_profile::builtin("kuka-kr6-r900-sixx").unwrap();
     let (plan, _) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
-    let exact = WorldConfig {
-        bench_tilt_deg: 0.5,
+    let world = WorldConfig {
+        sensor: SensorSources {
+            noise: true,
+            ..SensorSources::NONE
+        },
+        bench_tilt_deg: 2.0,
         ..WorldConfig::ideal()
     };
-    let sloppy = WorldConfig {
-        half_turn_error_deg: 1.0,
-        ..exact
-    };
-    let bias = |w: &WorldConfig, seed: u64| {
-        let s = RealSession::simulate(&profile, &plan, w, seed);
-        s.stage0
-            .bias(zerocal_core::model::Convention::Axis, 0.5)
-            .unwrap()
-    };
-    let mut moved = 0.0f64;
-    for seed in 0..10 {
-        let (a, b) = (bias(&exact, seed), bias(&sloppy, seed));
-        moved = moved.max((a.x_rad - b.x_rad).abs().max((a.y_rad - b.y_rad).abs()));
+    assert_eq!(world.bench_headings, BENCH_HEADINGS);
+    let noise_rad = MEMS_CAPTURE_NOISE_DEG.to_radians();
+    let (mut worst, mut sum_sq, mut n) = (0.0f64, 0.0f64, 0usize);
+    for seed in 0..100 {
+        let s = RealSession::simulate(&profile, &plan, &world, seed);
+        assert_eq!(usize::from(s.stage0.count), BENCH_HEADINGS);
+        let solved = s
+            .stage0
+            .solve(
+                Convention::Axis,
+                Gain::default(),
+                MEMS_RANGE_DEG.to_radians(),
+                noise_rad,
+            )
+            .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        assert!(solved.headings_solved, "seed {seed}: a half turn assumed");
+        let truth = s.level_bias();
+        let sigma = noise_rad * solved.variance_factor.sqrt();
+        for e in [
+            solved.bias.x_rad - truth.x_rad,
+            solved.bias.y_rad - truth.y_rad,
+        ] {
+            worst = worst.max(e.abs() / sigma);
+            sum_sq += (e / sigma).powi(2);
+            n += 1;
+        }
     }
-    // Up to half the turn's error times the tilt: (1° × 0.5°·√2)/2 in radians.
-    let bound = 0.5 * 1f64.to_radians() * (0.5f64.to_radians() * 2f64.sqrt());
-    assert!(
-        moved > 0.0 && moved <= bound * 1.05,
-        "{moved} rad (bound {bound})"
+    let rms = (sum_sq / n as f64).sqrt();
+    println!("bias error / sigma: worst {worst:.2}, RMS {rms:.2}");
+    assert!(worst <= 4.5, "worst bias error {worst:.2} sigma");
+    assert!((0.5..=1.5).contains(&rms), "RMS bias error {rms:.2} sigma");
+}
+
+/// No half-turn term: the headings come from the readings, so a session whose stage 0
+/// and closing readings were turned by hand has no half-turn swing to budget
+/// (`half_turn_half_width` gives none), and in an ideal world (an exact sensor on a rigid
+/// robot) its offsets are the truth to rounding whatever the bench's tilt and the
+/// turns (1e-9 rad, where a reversal's half turn off by 1° on a bench tilted 0.5° about
+/// each axis moved the bias by up to ε·|t|/2 = 1.1e-4 rad).
+#[test]
+fn a_turn_by_hand_costs_nothing_on_a_tilted_bench() {
+    use zerocal_core::session::{half_turn_half_width, solve};
+    for robot in common::FAMILY_PROFILES {
+        let profile = zerocal_profile::builtin(robot).unwrap();
+        let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+        let world = WorldConfig {
+            bench_tilt_deg: 2.0,
+            ..WorldConfig::ideal()
+        };
+        for seed in 0..5 {
+            let s = RealSession::simulate(&profile, &plan, &world, seed);
+            let readings = s.readings(&profile, &world);
+            assert_eq!(
+                half_turn_half_width(&readings, &fit, 1f64.to_radians()).unwrap(),
+                None,
+                "{robot} seed {seed}"
+            );
+            let found = solve(&readings, &fit)
+                .result
+                .unwrap_or_else(|e| panic!("{robot} seed {seed}: {e}"))
+                .offsets_rad;
+            let truth = s.truth_rad();
+            let off: Vec<f64> = (0..5).map(|k| found[k] - truth[k]).collect();
+            // A held offset (a joint parallel to the one before it: the UR5e's wrist)
+            // is reported with its twin as their sum, which is what is checked there.
+            let held = |k: usize| k >= 1 && fit.extras.held[k - 1];
+            for k in 0..5 {
+                let (e, what) = if held(k) || (k < 4 && held(k + 1)) {
+                    let first = if held(k) { k - 1 } else { k };
+                    (off[first] + off[first + 1], "with its twin")
+                } else {
+                    (off[k], "")
+                };
+                assert!(
+                    e.abs() < 1e-9,
+                    "{robot} seed {seed} j{} {what}: {e} rad off",
+                    k + 2
+                );
+            }
+        }
+    }
+}
+
+/// Fewer than two bench readings are refused by name, not solved: a circle needs the
+/// pendant read at more than one heading.
+#[test]
+fn too_few_headings_are_refused_by_name() {
+    use zerocal_core::error::StageError;
+    use zerocal_core::model::{Convention, Gain, Tilt};
+    use zerocal_core::stage0::{BenchTurns, MAX_HEADINGS};
+    let one = BenchTurns {
+        readings: [Tilt::from_deg(0.3, -0.2); MAX_HEADINGS],
+        count: 1,
+    };
+    assert_eq!(
+        one.solve(Convention::Axis, Gain::default(), 0.17, 1e-5),
+        Err(StageError::TooFewHeadings { got: 1 })
     );
+    assert!(BenchTurns::<f64>::from_readings(&[Tilt::from_deg(0.3, -0.2)]).is_none());
 }
 
 /// The pendant's own effects at the top of their ranges, every source of today's error
@@ -187,65 +280,6 @@ fn design_ranges() -> WorldConfig {
         half_turn_error_deg: zerocal_core::session::JIG_HALF_TURN_TOLERANCE_DEG,
         ..every_mounting_effect()
     }
-}
-
-/// The budget's half-turn term: zero for an exact turn, in proportion to the turn's
-/// tolerance (the error is ε·|t|/2, linear in ε), and its half width bounds what a turn
-/// within that tolerance does to the offsets (an ideal world, so that the turn is the
-/// only difference between the two sessions of a seed).
-#[test]
-fn the_half_turn_term_scales_with_the_turn_and_bounds_it() {
-    use zerocal_core::session::{half_turn_half_width, solve};
-    let profile = zerocal_profile::builtin("abb-irb140").unwrap();
-    let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
-    let exact = WorldConfig {
-        bench_tilt_deg: 0.5,
-        ..WorldConfig::ideal()
-    };
-    let sloppy = WorldConfig {
-        half_turn_error_deg: 1.0,
-        ..exact
-    };
-    let mut largest = 0.0f64;
-    for seed in 0..20 {
-        let s = RealSession::simulate(&profile, &plan, &sloppy, seed);
-        let e = RealSession::simulate(&profile, &plan, &exact, seed);
-        let readings = s.readings(&profile, &sloppy);
-        let w = |deg: f64| {
-            half_turn_half_width(&readings, &fit, deg.to_radians())
-                .unwrap()
-                .unwrap()
-        };
-        assert!(w(0.0).iter().all(|v| *v == 0.0));
-        let (one, two) = (w(1.0), w(2.0));
-        let found = solve(&readings, &fit).result.unwrap().offsets_rad;
-        let reference = solve(&e.readings(&profile, &exact), &fit)
-            .result
-            .unwrap()
-            .offsets_rad;
-        for k in 0..5 {
-            // Linear within the solver's own nonlinearity (1 %).
-            assert!(
-                (two[k] - 2.0 * one[k]).abs() <= 0.01 * two[k].abs() + 1e-12,
-                "seed {seed} j{}: {} {}",
-                k + 2,
-                one[k],
-                two[k]
-            );
-            // The turn's effect, within the half width (5 %: the bench tilt the
-            // reversal measures is the sloppy turn's, and the shift's direction follows
-            // it).
-            let moved = (found[k] - reference[k]).abs();
-            assert!(
-                moved <= 1.05 * one[k] + 1e-9,
-                "seed {seed} j{}: moved {moved} rad, half width {}",
-                k + 2,
-                one[k]
-            );
-            largest = largest.max(moved);
-        }
-    }
-    assert!(largest > 0.0, "the turn never moved an offset");
 }
 
 /// Margins that hold: with every effect at the top of its range (the real arm's, the

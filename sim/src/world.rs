@@ -3,28 +3,33 @@
 //! up in its box, brackets that seat within a tolerance, and a session clock. Every
 //! source is switchable ([`WorldConfig`]) and on by default at its sourced figure.
 //!
-//! It produces what the pendant records (stage 0's reversal, stage 1's half turn,
-//! every stage-2 capture with its six commanded joints and its temperature) and keeps
-//! the truth beside it. The pendant's side (core's session solver) sees only the
-//! records.
+//! It produces what the pendant records (stage 0's bench readings, stage 1's half
+//! turn, every stage-2 capture with its six commanded joints and its temperature) and
+//! keeps the truth beside it. The pendant's side (core's session solver) sees only the
+//! records. The bench turned by hand and the brackets' calibration are in [`bench`];
+//! the session written as the pendant exports it in [`export`].
+
+mod bench;
+mod export;
+
+pub use bench::HAND_TURN_SPREAD_DEG;
 
 use crate::robot::{RobotErrors, RobotSources, RobotSpec};
 use crate::sensor::{Scl3300Unit, SensorSources, UnitCapture};
 use crate::SimRobot;
+use bench::{bench_headings, calibrate_bracket, exact_calibration, BracketBench};
 use nalgebra::{Rotation3, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use zerocal_core::bracket::{
-    bracket_id, calibrate, calibrate_yaw, BracketCalibration, BracketMount, BracketYaw, Brackets,
-    BRACKET_YAW_TOLERANCE_DEG, CAPTURES_PER_READING, FENCE_CONTACT_TOLERANCE_DEG,
-    REFERENCE_TURN_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
+    BracketMount, Brackets, BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG,
 };
 use zerocal_core::model::{rot_x, rot_y, rot_z, up_in_sensor, BaseTilt, Convention, Tilt, JOINTS};
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::session::{BiasSource, BudgetInputs, SessionReadings, StageTemperatures};
 use zerocal_core::stage0::{BenchTurns, BenchTurnsAt, BENCH_HEADINGS};
 use zerocal_core::stage1::AxisOneTurn;
-use zerocal_core::stage2::{PoseReading, MEMS_CAPTURE_NOISE_DEG, MEMS_RANGE_DEG};
+use zerocal_core::stage2::PoseReading;
 use zerocal_profile::Profile;
 
 /// How each stage-2 pose is approached.
@@ -307,159 +312,6 @@ fn uniform(rng: &mut ChaCha8Rng, half: f64) -> f64 {
 fn small_rotation(rng: &mut ChaCha8Rng, half_deg: f64) -> ([f64; 3], Rotation3<f64>) {
     let a = [0; 3].map(|_| deg_to_rad(uniform(rng, half_deg)));
     (a, rot_x(a[0]) * rot_y(a[1]) * rot_z(a[2]))
-}
-
-/// The calibration of a bracket whose turn is known exactly (`made`: about x, y, z).
-/// It holds the turn as a calibration reads it (the level reversals see
-/// `R_z(−c)·(−sin b·cos a, sin a)`), and the yaw.
-fn exact_calibration(made: &[f64; 3]) -> BracketCalibration<f64> {
-    let [a, b, c] = *made;
-    let (x, y) = (-(b.sin() * a.cos()), a.sin());
-    let (read_x, read_y) = (x * c.cos() + y * c.sin(), -x * c.sin() + y * c.cos());
-    let read_a = read_y.asin();
-    BracketCalibration {
-        // "EXACT" is a valid ID: five ASCII letters.
-        id: bracket_id("EXACT").unwrap_or_default(),
-        rotation_rad: Tilt::new(read_a, (-read_x / read_a.cos()).asin()),
-        uncertainty_rad: 0.0,
-        date: SIM_CALIBRATION_DATE,
-        temperature_c: 23.0,
-        yaw: Some(BracketYaw {
-            yaw_rad: c,
-            uncertainty_rad: 0.0,
-        }),
-    }
-}
-
-/// The date the simulated calibrations carry.
-const SIM_CALIBRATION_DATE: u32 = 20_261_127;
-
-/// Where a bracket is calibrated: the plate (tilted within ± `tilt_deg` about each
-/// horizontal axis), the box, and the temperature.
-struct BracketBench<'a> {
-    chip_in_box: &'a Rotation3<f64>,
-    headings: usize,
-    tilt_deg: f64,
-    seat_deg: f64,
-    temperature_c: f64,
-}
-
-/// How far each turn between two of the bench's headings, made by hand about a quarter
-/// turn (or a third, for three), may be off that (± deg): a stated figure for a turn
-/// judged by eye; the solve finds the turns, so any figure would do.
-pub const HAND_TURN_SPREAD_DEG: f64 = 30.0;
-
-/// The headings (rad, the first at 0) of `count` bench readings turned by hand: two a
-/// half turn off by up to ±`half_turn_error_deg`; more, spread over a turn, each off
-/// its share by up to ±[`HAND_TURN_SPREAD_DEG`].
-fn bench_headings(count: usize, half_turn_error_deg: f64) -> impl Fn(&mut ChaCha8Rng) -> Vec<f64> {
-    move |rng: &mut ChaCha8Rng| {
-        let pi = core::f64::consts::PI;
-        if count <= 2 {
-            return vec![0.0, pi + deg_to_rad(uniform(rng, half_turn_error_deg))];
-        }
-        (0..count)
-            .map(|k| {
-                if k == 0 {
-                    0.0
-                } else {
-                    2.0 * pi * k as f64 / count as f64
-                        + deg_to_rad(uniform(rng, HAND_TURN_SPREAD_DEG))
-                }
-            })
-            .collect()
-    }
-}
-
-/// A bracket's calibration as docs/bracket-calibration.md describes it, with this
-/// world's sensor: the pendant's reversal on the levelled plate, then in the bracket
-/// (turned by `made`, seated on its reference within the seat's repeatability) with the
-/// reference reversed on the plate, each half turn by hand within
-/// ±[`zerocal_core::bracket::REFERENCE_TURN_TOLERANCE_DEG`]; then the same two reversals
-/// on a 5° sine plate, each face against the fence within
-/// ±[`FENCE_CONTACT_TOLERANCE_DEG`] (the yaw). Each reading averages the calibration's
-/// captures. `None` if the core refuses the readings (then the session has no
-/// calibration for it).
-fn calibrate_bracket(
-    sensor: &mut Scl3300Unit,
-    bench: &BracketBench<'_>,
-    made: &[f64; 3],
-    id: &str,
-    rng: &mut ChaCha8Rng,
-) -> Option<BracketCalibration<f64>> {
-    let plate = rot_y(deg_to_rad(uniform(rng, bench.tilt_deg)))
-        * rot_x(deg_to_rad(uniform(rng, bench.tilt_deg)))
-        * rot_z(uniform(rng, core::f64::consts::PI));
-    let headings = bench_headings(bench.headings, REFERENCE_TURN_TOLERANCE_DEG);
-    let bracket = rot_x(made[0]) * rot_y(made[1]) * rot_z(made[2]);
-    // Each reading the mean of the calibration's captures.
-    let mut read = |r: &Rotation3<f64>, rng: &mut ChaCha8Rng| {
-        let u = up_in_sensor(&(r * bench.chip_in_box));
-        let (mut x, mut y) = (0.0, 0.0);
-        for _ in 0..CAPTURES_PER_READING {
-            let c = sensor.capture(&u, bench.temperature_c, rng).reading;
-            x += c.x_rad;
-            y += c.y_rad;
-        }
-        let n = CAPTURES_PER_READING as f64;
-        Tilt::new(x / n, y / n)
-    };
-    let mut turned = |on: &Rotation3<f64>, rng: &mut ChaCha8Rng| {
-        let taken: Vec<Tilt<f64>> = headings(rng)
-            .iter()
-            .map(|h| read(&(plate * rot_z(*h) * on), rng))
-            .collect();
-        BenchTurns::from_readings(&taken)
-    };
-    let pendant = turned(&Rotation3::identity(), rng)?;
-    let seat_on_reference = small_rotation(rng, bench.seat_deg).1;
-    let seated = bracket * seat_on_reference;
-    let in_bracket = turned(&seated, rng)?;
-    let noise = deg_to_rad(MEMS_CAPTURE_NOISE_DEG);
-    let (rotation, u) = calibrate(
-        &pendant,
-        &in_bracket,
-        Convention::Axis,
-        deg_to_rad(MEMS_RANGE_DEG),
-        noise,
-    )
-    .ok()?;
-    // The yaw: the same two reversals on a sine plate at 5°, each face laid against
-    // its fence within the fence's tolerance, turned end for end against it.
-    let sine = rot_z(uniform(rng, core::f64::consts::PI)) * rot_x(deg_to_rad(5.0));
-    let at_fence = |rng: &mut ChaCha8Rng, half: f64| {
-        rot_z(half + deg_to_rad(uniform(rng, FENCE_CONTACT_TOLERANCE_DEG)))
-    };
-    let pi = core::f64::consts::PI;
-    let pendant_tilted = BenchTurns::half_turn(
-        read(&(sine * at_fence(rng, 0.0)), rng),
-        read(&(sine * at_fence(rng, pi)), rng),
-    );
-    let bracket_tilted = BenchTurns::half_turn(
-        read(&(sine * at_fence(rng, 0.0) * seated), rng),
-        read(&(sine * at_fence(rng, pi) * seated), rng),
-    );
-    let bias = pendant
-        .bias(Convention::Axis, deg_to_rad(MEMS_RANGE_DEG))
-        .ok()?;
-    let yaw = calibrate_yaw(
-        &pendant_tilted,
-        &bracket_tilted,
-        &rotation,
-        &bias,
-        Convention::Axis,
-        noise,
-    )
-    .ok()?;
-    BracketCalibration::new(
-        bracket_id(id).ok()?,
-        rotation,
-        u,
-        SIM_CALIBRATION_DATE,
-        bench.temperature_c,
-    )
-    .and_then(|c| c.with_yaw(yaw))
-    .ok()
 }
 
 /// What stays from one session of a robot to the next: the robot, the pendant unit and
@@ -793,11 +645,10 @@ impl RealSession {
                     }
                     SessionFault::Creeping { deg_per_capture } => {
                         let turned = deg_to_rad(deg_per_capture) * poses.len() as f64;
-                        seat = seat
-                            * nalgebra::Rotation3::from_axis_angle(
-                                &nalgebra::Unit::new_normalize(creep_axis),
-                                turned,
-                            );
+                        seat *= nalgebra::Rotation3::from_axis_angle(
+                            &nalgebra::Unit::new_normalize(creep_axis),
+                            turned,
+                        );
                     }
                     _ => {}
                 }
@@ -844,95 +695,5 @@ impl RealSession {
     /// should find), in the pendant's `axis` convention (rad).
     pub fn level_bias(&self) -> Tilt<f64> {
         self.sensor.exact(&Vector3::z(), self.stage0_temperature_c)
-    }
-}
-
-impl RealSession {
-    /// The session as the pendant exports it (`zerocal session` reads it): the `#`
-    /// metadata with every stage's readings and temperatures, one row per capture,
-    /// then the pendant's end trailer (`zerocal_procedure::export_trailer`), so a copy
-    /// cut or edited on the way is refused as the pendant's would be. `robot` is the
-    /// profile's name.
-    pub fn export_text(&self, robot: &str) -> String {
-        self.export_with(robot, true)
-    }
-
-    /// The session as the pendant's check exports it: stage 0's reversal, no stage 1,
-    /// the closing reversal and the stage-2 captures at the poses `keep` accepts (by
-    /// their commanded joints, rad), and the end trailer.
-    pub fn check_export_text(&self, robot: &str, keep: impl Fn(&[f64; JOINTS]) -> bool) -> String {
-        let mut kept = self.clone();
-        kept.poses.retain(|p| keep(&p.joints_rad));
-        kept.export_with(robot, false)
-    }
-
-    fn export_with(&self, robot: &str, with_stage1: bool) -> String {
-        use std::fmt::Write as _;
-        let d = |r: f64| format!("{:.12}", r.to_degrees());
-        let pair = |t: &Tilt<f64>| format!("{},{}", d(t.x_rad), d(t.y_rad));
-        let mut out = String::new();
-        let _ = writeln!(
-            out,
-            "# zerocal pendant export: read it with 'zerocal session'"
-        );
-        let _ = writeln!(out, "# robot {robot} convention axis");
-        let bench = |key: &str, r: &BenchTurnsAt<f64>| {
-            let mut line = zerocal_procedure::log::Line::new();
-            // A bench line of four headings fits a line: cannot fail.
-            let _ = zerocal_procedure::log::write_bench(&mut line, key, r);
-            line.to_string()
-        };
-        let _ = writeln!(
-            out,
-            "{}",
-            bench(
-                zerocal_procedure::log::STAGE0_BENCH_KEY,
-                &BenchTurnsAt {
-                    turns: self.stage0,
-                    temperature_c: Some(self.stage0_temperature_c),
-                }
-            )
-        );
-        if !with_stage1 {
-            let _ = writeln!(out, "# mode check");
-        }
-        if with_stage1 {
-            let _ = writeln!(
-                out,
-                "# stage1_readings_deg before {} after {} j1_deg {} j2_deg {}",
-                pair(&self.stage1.before),
-                pair(&self.stage1.after),
-                d(self.stage1.j1_rad),
-                d(self.stage1.j2_rad)
-            );
-            let _ = writeln!(out, "# stage1_temp_c {:.2}", self.stage1_temperature_c);
-        }
-        let _ = writeln!(
-            out,
-            "{}",
-            bench(zerocal_procedure::log::CLOSING_BENCH_KEY, &self.closing)
-        );
-        // The brackets' lines in the pendant's own format.
-        for m in BracketMount::ALL {
-            let mut line = zerocal_procedure::log::Line::new();
-            if zerocal_procedure::log::write_bracket(&mut line, m, self.brackets.get(m)).is_ok() {
-                let _ = writeln!(out, "{line}");
-            }
-        }
-        let _ = writeln!(out, "{}", zerocal_procedure::log::LOG_HEADER);
-        for p in &self.poses {
-            let joints: Vec<String> = p.joints_rad.iter().map(|q| d(*q)).collect();
-            let _ = writeln!(
-                out,
-                "{},{},{},{}",
-                joints.join(","),
-                d(p.reading.x_rad),
-                d(p.reading.y_rad),
-                p.temperature_c.map_or(String::new(), |t| format!("{t:.2}"))
-            );
-        }
-        let trailer = zerocal_procedure::export_trailer::trailer_of(&out);
-        let _ = writeln!(out, "{trailer}");
-        out
     }
 }

@@ -187,10 +187,6 @@ pub struct BudgetInputs<T> {
     pub stage1_joints_rad: Option<[T; JOINTS]>,
 }
 
-/// The gears' lost motion when no figure is stated: 1 arc min, the Nabtesco RV-42N's
-/// (product page: lost motion < 1 arc min).
-pub const DEFAULT_LOST_MOTION_DEG: f64 = 1.0 / 60.0;
-
 /// The robot's repeatability per joint when no figure is stated: 0.0015° (1σ), the stated
 /// figure; six joints so give about 0.004° of flange orientation, inside the 87 µrad
 /// measured on an ABB IRB 1600 (Slamani, Nubiola and Bonev, Industrial Robot 39(1),
@@ -579,6 +575,7 @@ mod tests {
     use super::*;
     use crate::model::{Arm, Convention};
     use crate::plan::{plan, Candidate, PlanConfig, DEFAULT_POOL};
+    use crate::stage2::transmission::DEFAULT_LOST_MOTION_DEG;
     use crate::stage2::{FitConfig, Stage2Model};
 
     #[test]

@@ -24,7 +24,7 @@
 
 pub use crate::stage2::refusal::*;
 
-use super::{first_captures, same_pose};
+use super::captures::{first_captures, same_pose};
 use crate::capture::CaptureIndex;
 use crate::error::FitError;
 use crate::real::{deg_to_rad, rad_to_deg, Real};

@@ -1,33 +1,54 @@
 //! A whole calibration solved from its raw readings: the one place the stages are
 //! chained.
 //!
-//! Stage 0's reversal (or a bias kept from an earlier one) gives the sensor bias;
-//! stage 1's half turn of axis 1 gives the base tilt, the y bias and Δθ2; the
-//! hand-over builds the stage-2 model from both; stage 2 fits Δθ3..Δθ6 (and the sensor
-//! and sag terms the poses separate). Every reading carries the same sensor noise, so
-//! the uncertainty of what stages 0 and 1 handed over is propagated into stage 2's,
-//! and the result is Δθ2..Δθ6 with their full covariance. The pendant's procedure, the CLI, the simulators and the on-target
-//! check all call [`solve`].
+//! Stage 0's bench readings (headings turned by hand, or a bias kept from an earlier
+//! session) give the sensor bias; stage 1's half turn of axis 1 gives the base tilt,
+//! the y bias and Δθ2; the hand-over builds the stage-2 model from both (`stages01`);
+//! stage 2 fits Δθ3..Δθ6 (and the sensor, sag and reducer terms the poses separate),
+//! correcting Δθ2 for joint 2's transmission error at its stage-1 angle. Every reading
+//! carries the same sensor noise, so the uncertainty of what stages 0 and 1 handed over
+//! is propagated into stage 2's, and the result is Δθ2..Δθ6 with their full covariance.
+//! The pendant's procedure, the CLI, the simulators and the on-target check all call
+//! [`solve`]. The captures of a pose are paired and averaged in `captures`, the
+//! budget is assembled in `budget`, the faults are judged in [`judge`], and the swing
+//! of what a session cannot measure is found in `half_width`.
 
 mod budget;
+mod captures;
+mod half_width;
 pub mod judge;
 mod stage1_joints;
+mod stages01;
 
+/// The reducers' lost motion is the transmission's fact; the session's budget and its
+/// callers state it from here as well.
+pub use crate::stage2::transmission::DEFAULT_LOST_MOTION_DEG;
 pub use budget::{
     budget, predict_budget, sensor_offset_x_spec_deg, Budget, BudgetInputs, BudgetTerm,
-    PlannedRobot, BUDGET_TERMS, COVERAGE_FACTOR, DEFAULT_LOST_MOTION_DEG,
-    DEFAULT_REPEATABILITY_DEG, SENSOR_OFFSET_X_SPEC_G,
+    PlannedRobot, BUDGET_TERMS, COVERAGE_FACTOR, DEFAULT_REPEATABILITY_DEG, SENSOR_OFFSET_X_SPEC_G,
+};
+pub use captures::{first_captures, merge_captures, merge_repeats, one_sided_pose};
+pub use half_width::{
+    half_turn_half_width, unknown_offset_half_width, DEFAULT_HALF_TURN_TOLERANCE_DEG,
+    JIG_HALF_TURN_TOLERANCE_DEG,
 };
 pub use stage1_joints::{stage1_joint1_mismatch, STAGE1_JOINT1_TOLERANCE_DEG};
+pub use stages01::{
+    handover, handover_at, solve_stages01, Handover, MAX_DRIFT_EXTRAPOLATION_K, MAX_DRIFT_SPAN_K,
+    MAX_UNMEASURED_DRIFT_K,
+};
+
+use stages01::{
+    bias_over_temperature, check_temperatures, solve_stage1, BenchSettings, Stage1Setup,
+};
 
 use crate::bracket::Brackets;
-use crate::capture::{Approach, CaptureIndex};
+use crate::capture::CaptureIndex;
 use crate::decimal::Fixed;
 use crate::error::{FitError, StageError};
-use crate::model::{Arm, Convention, Gain, SensorBias, SensorModel, Tilt, WRIST_JOINTS};
-use crate::plan::MAX_POSES;
+use crate::model::{Arm, Convention, Gain, SensorBias, Tilt, WRIST_JOINTS};
 use crate::real::Real;
-use crate::stage0::{BenchStep, BenchTurns, BenchTurnsAt, BiasOverTemperature};
+use crate::stage0::{BenchTurns, BenchTurnsAt, BiasOverTemperature};
 use crate::stage1::{AxisOneTurn, Stage1Result};
 use crate::stage2::{fit, FitConfig, FitResult, MassModel, Param, PoseReading, Stage2Model};
 use core::fmt;
@@ -86,83 +107,6 @@ pub struct StageTemperatures<T> {
     pub stage0_c: Option<T>,
     /// During stage 1's half turn.
     pub stage1_c: Option<T>,
-}
-
-/// Without a closing reversal the drift is unknown: stage 2's temperatures may differ
-/// from stage 0's by at most this (K). At the SCL3300's up to ~0.009 °/K
-/// (docs/error-budget.md) 0.5 K is 0.0045°, just inside the 0.005° aimed at.
-pub const MAX_UNMEASURED_DRIFT_K: f64 = 0.5;
-
-/// With a closing reversal the drift is linear between the two reversals' temperatures:
-/// a capture may lie outside them by at most this (K).
-pub const MAX_DRIFT_EXTRAPOLATION_K: f64 = 1.0;
-
-/// The two reversals may differ by at most this (K): the offset's temperature curve is
-/// not a line over tens of kelvin (the SCA3300 data sheet's Figure 2, the SCL3300 notes'
-/// §2.9), and a box that warms this much is not settled.
-pub const MAX_DRIFT_SPAN_K: f64 = 10.0;
-
-/// What stages 0-1 hand to stage 2: the model of the arm, the tilt, Δθ2 and the sensor,
-/// and how well they are known.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Handover<T: Real> {
-    /// The stage-2 model.
-    pub model: Stage2Model<T>,
-    /// Covariance of (α, β, Δθ2, bias x, bias y) in units of one reading's noise
-    /// variance (stage 1's, with stage 0's propagated).
-    pub covariance: [[T; 5]; 5],
-}
-
-/// Stage 2's model from stages 0-1: the measured base tilt and Δθ2 (joint 2's true
-/// angle is its recorded one plus Δθ2, wherever stage 2 has it), the stage-0 x bias
-/// (or 0, and the report warns) and stage 1's y bias.
-pub fn handover<T: Real>(
-    stage1: &Stage1Result<T>,
-    arm: Arm<T>,
-    convention: Convention,
-    bias: Option<&SensorBias<T>>,
-    masses: Option<MassModel<T>>,
-) -> Handover<T> {
-    let bias = bias.map(|b| BiasOverTemperature::constant(*b, None));
-    handover_at(stage1, arm, convention, bias.as_ref(), None, masses)
-}
-
-/// As [`handover`], with the bias following the temperature: the model's bias is
-/// stage 1's (x from the reversals at stage 1's temperature, y from the half turn),
-/// and it drifts from there as the reversals measured.
-pub fn handover_at<T: Real>(
-    stage1: &Stage1Result<T>,
-    arm: Arm<T>,
-    convention: Convention,
-    bias: Option<&BiasOverTemperature<T>>,
-    stage1_c: Option<T>,
-    masses: Option<MassModel<T>>,
-) -> Handover<T> {
-    Handover {
-        model: Stage2Model {
-            arm,
-            base_tilt: stage1.base_tilt,
-            delta_theta2_rad: stage1.delta_theta2_rad,
-            stage1_j2_rad: stage1.j2_rad,
-            sensor: SensorModel::new(
-                convention,
-                Tilt::new(
-                    bias.map_or(T::zero(), |b| b.at(stage1_c).x_rad),
-                    stage1.bias_y_rad,
-                ),
-            ),
-            reference_temperature_c: stage1_c
-                .or(bias.and_then(|b| b.reference_c))
-                .unwrap_or(T::zero()),
-            drift_per_k: bias.map_or(Tilt::default(), |b| b.drift_per_k),
-            masses,
-            y_weight: match convention {
-                Convention::Axis => T::lit(crate::stage2::MEMS_Y_WEIGHT),
-                Convention::Rpy => T::one(),
-            },
-        },
-        covariance: stage1.covariance,
-    }
 }
 
 /// Why a session gave no offsets.
@@ -258,163 +202,6 @@ pub struct SessionOutcome<T: Real> {
     pub stage1: Option<Stage1Result<T>>,
     /// The offsets, or the first refusal.
     pub result: Result<SessionSolution<T>, SessionError>,
-}
-
-/// Stage 1 on the bias of stage 0: the part of the chain the pendant runs as soon as
-/// stage 1's second reading is in, to ask for it again if it is refused.
-///
-/// # Errors
-/// Stage 0's or stage 1's refusal.
-pub fn solve_stages01<T: Real>(
-    bias: &BiasSource<T>,
-    stage1: &AxisOneTurn<T>,
-    arm: &Arm<T>,
-    convention: Convention,
-    range_rad: T,
-) -> Result<(Option<SensorBias<T>>, Stage1Result<T>), SessionError> {
-    let bias = bias_over_temperature(
-        bias,
-        &StageTemperatures::default(),
-        None,
-        &BenchSettings {
-            convention,
-            gain: Gain::default(),
-            range_rad,
-            noise_rad: T::zero(),
-        },
-    )?;
-    let s1 = solve_stage1(
-        &bias,
-        None,
-        &Stage1Setup {
-            turn: stage1,
-            arm,
-            convention,
-            range_rad,
-        },
-        Gain::default(),
-        T::one(),
-    )?;
-    Ok((bias.map(|b| b.bias), s1))
-}
-
-/// What the bench readings are solved with: the convention, the sensor's gain (stage
-/// 2's, once known), the range, and one reading's noise to judge their residuals by.
-struct BenchSettings<T> {
-    convention: Convention,
-    gain: Gain<T>,
-    range_rad: T,
-    noise_rad: T,
-}
-
-fn bias_over_temperature<T: Real>(
-    bias: &BiasSource<T>,
-    temperatures: &StageTemperatures<T>,
-    closing: Option<&BenchTurnsAt<T>>,
-    settings: &BenchSettings<T>,
-) -> Result<Option<BiasOverTemperature<T>>, SessionError> {
-    Ok(match bias {
-        BiasSource::Bench(r) => Some(
-            BiasOverTemperature::measure(
-                &BenchTurnsAt {
-                    turns: *r,
-                    temperature_c: temperatures.stage0_c,
-                },
-                closing,
-                settings.convention,
-                settings.gain,
-                settings.range_rad,
-                settings.noise_rad,
-            )
-            .map_err(|(step, e)| match step {
-                BenchStep::Stage0 => SessionError::Stage0(e),
-                BenchStep::Closing => SessionError::Closing(e),
-            })?,
-        ),
-        BiasSource::Stored(b) => Some(BiasOverTemperature::constant(*b, None)),
-        BiasSource::Unknown => None,
-    })
-}
-
-/// Stage 1 with the bias at its temperature (a reversal's half-sum has half a reading's
-/// variance, a stored bias too: it was such a half-sum).
-fn solve_stage1<T: Real>(
-    bias: &Option<BiasOverTemperature<T>>,
-    stage1_c: Option<T>,
-    setup: &Stage1Setup<'_, T>,
-    gain: Gain<T>,
-    captures_per_reading: T,
-) -> Result<Stage1Result<T>, SessionError> {
-    // Variances are in units of one reading of stages 1-2; a reversal's readings are
-    // single captures, `captures_per_reading` times noisier than a reading that
-    // averages that many.
-    let at = bias.as_ref().map(|b| {
-        (
-            b.at(stage1_c),
-            b.variance_factor(stage1_c) * captures_per_reading,
-        )
-    });
-    setup
-        .turn
-        .solve_with_gain(
-            setup.arm,
-            setup.convention,
-            gain,
-            at.as_ref().map(|(b, v)| (b, *v)),
-            setup.range_rad,
-        )
-        .map_err(SessionError::Stage1)
-}
-
-/// What stage 1 is solved on, besides the bias.
-struct Stage1Setup<'a, T: Real> {
-    turn: &'a AxisOneTurn<T>,
-    arm: &'a Arm<T>,
-    convention: Convention,
-    range_rad: T,
-}
-
-/// Refuses a session whose temperatures the bias model cannot follow.
-fn check_temperatures<T: Real>(
-    bias: &Option<BiasOverTemperature<T>>,
-    poses: &[PoseReading<T>],
-) -> Result<(), SessionError> {
-    let Some(b) = bias else { return Ok(()) };
-    let Some(t0) = b.reference_c else {
-        return Ok(());
-    };
-    if let Some(t1) = b.closing_c {
-        let span = (t1 - t0).abs();
-        if span > T::lit(MAX_DRIFT_SPAN_K) {
-            return Err(SessionError::Warmed {
-                kelvin: span.to_f64() as f32,
-                limit_k: MAX_DRIFT_SPAN_K as f32,
-                drift_measured: true,
-            });
-        }
-    }
-    let (lo, hi, limit, measured) = match b.closing_c {
-        Some(t1) => (
-            t0.min(t1),
-            t0.max(t1),
-            T::lit(MAX_DRIFT_EXTRAPOLATION_K),
-            true,
-        ),
-        None => (t0, t0, T::lit(MAX_UNMEASURED_DRIFT_K), false),
-    };
-    let worst = poses
-        .iter()
-        .filter_map(|p| p.temperature_c)
-        .map(|t| (lo - t).max(t - hi).max(T::zero()))
-        .fold(T::zero(), |m, d| m.max(d));
-    if worst > limit {
-        return Err(SessionError::Warmed {
-            kelvin: worst.to_f64() as f32,
-            limit_k: limit.to_f64() as f32,
-            drift_measured: measured,
-        });
-    }
-    Ok(())
 }
 
 /// Solves a session: stages 0, 1 and 2 and the covariance of Δθ2..Δθ6.
@@ -594,218 +381,6 @@ pub fn solve<T: Real>(
     }
 }
 
-/// Captures of the same commanded pose, averaged into one: the robot approaches each
-/// pose from both sides of every joint's backlash (docs/error-budget.md), and the mean
-/// of the two captures is the reading at the middle of the play, the kinematic zero's.
-/// Averaging before the fit keeps the play's ±half width out of the residuals, so σ
-/// stays the noise's. `None` when no pose repeats (or more distinct poses than a plan
-/// holds: then each capture is fitted as it is, which gives the same offsets). Captures
-/// are paired by equal joints: [`merge_captures`] with no index.
-pub fn merge_repeats<T: Real>(
-    poses: &[PoseReading<T>],
-) -> Option<heapless::Vec<PoseReading<T>, MAX_POSES>> {
-    merge_captures(poses, None)
-}
-
-/// Whether captures `i` and `j` are of the same visit of a pose: by their
-/// [`CaptureIndex`] where `index` has both (the export's `pose` column: a pose the plan
-/// visits again has another index), else by equal commanded joints in one run of
-/// captures (a plain stage-2 log, whose rows carry no index: a pose visited again later
-/// is another visit, which is what shows a bracket creeping).
-fn same_pose<T: Real>(
-    poses: &[PoseReading<T>],
-    index: Option<&[CaptureIndex]>,
-    i: usize,
-    j: usize,
-) -> bool {
-    match index.and_then(|x| Some((x.get(i)?, x.get(j)?))) {
-        Some((a, b)) => a.pose == b.pose,
-        None => {
-            let (lo, hi) = (i.min(j), i.max(j));
-            hi < poses.len()
-                && poses[lo..=hi]
-                    .iter()
-                    .all(|p| p.joints_rad == poses[lo].joints_rad)
-        }
-    }
-}
-
-/// The first capture of each pose, in the order taken (the order of
-/// [`merge_captures`]' list), pairing captures as [`same_pose`] does; `None` past
-/// [`MAX_POSES`] poses.
-pub fn first_captures<T: Real>(
-    poses: &[PoseReading<T>],
-    index: Option<&[CaptureIndex]>,
-) -> Option<heapless::Vec<usize, MAX_POSES>> {
-    let mut firsts: heapless::Vec<usize, MAX_POSES> = heapless::Vec::new();
-    for i in 0..poses.len() {
-        if !firsts.iter().any(|&f| same_pose(poses, index, f, i)) {
-            firsts.push(i).ok()?;
-        }
-    }
-    Some(firsts)
-}
-
-/// [`merge_repeats`], pairing the captures of a pose by `index` (one per capture: the
-/// pose in the plan and the side) where given, so two captures whose joints were
-/// written a digit apart are still one pose; by equal joints where not.
-pub fn merge_captures<T: Real>(
-    poses: &[PoseReading<T>],
-    index: Option<&[CaptureIndex]>,
-) -> Option<heapless::Vec<PoseReading<T>, MAX_POSES>> {
-    let firsts = first_captures(poses, index)?;
-    if firsts.len() == poses.len() {
-        return None;
-    }
-    Some(
-        firsts
-            .iter()
-            .map(|&f| {
-                let mut m = poses[f];
-                let (mut x, mut y, mut temp) = (T::zero(), T::zero(), Some(T::zero()));
-                let mut n = 0_u16;
-                for (i, p) in poses.iter().enumerate() {
-                    if same_pose(poses, index, f, i) {
-                        x += p.reading.x_rad;
-                        y += p.reading.y_rad;
-                        temp = match (temp, p.temperature_c) {
-                            (Some(a), Some(b)) => Some(a + b),
-                            _ => None,
-                        };
-                        n += 1;
-                    }
-                }
-                let k = T::lit(f64::from(n));
-                m.reading = Tilt::new(x / k, y / k);
-                m.temperature_c = temp.map(|t| t / k);
-                m
-            })
-            .collect(),
-    )
-}
-
-/// For a session without a stage-0 reversal: how far each of Δθ2..Δθ6 moves with the
-/// sensor's unknown x offset, as half the difference between the session solved with
-/// the offset at +[`sensor_offset_x_spec_deg`] and at −it (rad). The solver then takes
-/// the offset as 0, and stage 1 cannot tell it from Δθ2 (the upper arm's tilt about
-/// joint 2 and the sensor's x offset read alike), so without this the offsets carry an
-/// error of up to a degree their noise-only σ does not show. `None` when the session
-/// has a bias (a reversal, or a stored one).
-///
-/// # Errors
-/// The solver's refusal at either end of the range.
-pub fn unknown_offset_half_width<T: Real>(
-    readings: &SessionReadings<'_, T>,
-    config: &FitConfig<T>,
-) -> Result<Option<[T; SESSION_JOINTS]>, SessionError> {
-    if readings.bias != BiasSource::Unknown {
-        return Ok(None);
-    }
-    let limit_rad = crate::real::deg_to_rad(T::lit(sensor_offset_x_spec_deg()));
-    let at = |x_rad: T| {
-        let r = SessionReadings {
-            bias: BiasSource::Stored(Tilt::new(x_rad, T::zero())),
-            ..*readings
-        };
-        solve(&r, config).result.map(|s| s.offsets_rad)
-    };
-    let (plus, minus) = (at(limit_rad)?, at(-limit_rad)?);
-    Ok(Some(core::array::from_fn(|k| {
-        ((plus[k] - minus[k]) * T::lit(0.5)).abs()
-    })))
-}
-
-/// The half turn of stage 0's reversal made by hand is off 180° by up to this (deg) when
-/// nothing else is stated: a stated figure (no jig, a turn judged by eye against the
-/// box's edges); no public source gives one.
-pub const DEFAULT_HALF_TURN_TOLERANCE_DEG: f64 = 1.0;
-
-/// Stage 0's half turn made against a straight edge (the jig: the pendant's long side
-/// against a fence on the bench, turned end for end against the same fence) is off 180°
-/// by no more than the box's two long sides are out of parallel: the box's drawing
-/// requires 0.05 mm over its 60 mm, 0.048° (docs/method.md, stage 0). A design
-/// requirement, stated with `zerocal session --half-turn-tolerance-deg 0.05`.
-pub const JIG_HALF_TURN_TOLERANCE_DEG: f64 = 0.05;
-
-/// How far each of Δθ2..Δθ6 moves with stage 0's half turn off 180° by up to
-/// `tolerance_rad` (rad, half the swing). A turn of π + ε on a bench tilted by t leaves
-/// the reversal's half-sum off by ε·|t|/2, perpendicular to the tilt (the two readings'
-/// horizontal parts no longer cancel); the reversal measures t itself (their half
-/// difference). The session is solved with the bias moved that far either way. `None`
-/// without a stage-0 reversal.
-///
-/// # Errors
-/// The solver's refusal at either end.
-pub fn half_turn_half_width<T: Real>(
-    readings: &SessionReadings<'_, T>,
-    config: &FitConfig<T>,
-    tolerance_rad: T,
-) -> Result<Option<[T; SESSION_JOINTS]>, SessionError> {
-    let BiasSource::Bench(opening) = readings.bias else {
-        return Ok(None);
-    };
-    // Three or more headings solve their own turns: no half turn is assumed.
-    if opening.count != 2 {
-        return Ok(None);
-    }
-    let half = T::lit(0.5);
-    // The reversal moved as a turn of π ± tolerance would move it: ε·|t|/2 along the
-    // tilt t (the readings' half difference) turned a quarter turn, (−t_y, t_x)·ε/2.
-    let moved = |r: &BenchTurns<T>, sign: T| {
-        if r.count != 2 {
-            return *r;
-        }
-        let t = r.tilt_seen_first();
-        r.shifted(&Tilt::new(
-            -t.y_rad * tolerance_rad * half * sign,
-            t.x_rad * tolerance_rad * half * sign,
-        ))
-    };
-    // Both reversals (the closing one too, where made) off the same way: the worst case.
-    let at = |sign: T| {
-        let moved_readings = SessionReadings {
-            bias: BiasSource::Bench(moved(&opening, sign)),
-            closing: readings.closing.map(|c| BenchTurnsAt {
-                turns: moved(&c.turns, sign),
-                ..c
-            }),
-            ..*readings
-        };
-        solve(&moved_readings, config).result.map(|s| s.offsets_rad)
-    };
-    let (plus, minus) = (at(T::one())?, at(-T::one())?);
-    Ok(Some(core::array::from_fn(|k| {
-        ((plus[k] - minus[k]) * half).abs()
-    })))
-}
-
-/// The first capture of a pose captured from one side only: its reading sits on one
-/// side of every gear's backlash, half the lost motion off the middle the two sides'
-/// mean finds ([`merge_repeats`]), and no budget term models that. With `index` (one
-/// per capture: the export's `pose` and `approach` columns) a pose is its index's and
-/// needs a capture from each side; with `approaches` only (an export written before the
-/// `pose` column) a pose is its joints' and needs a capture from each side; without
-/// either (an export written before both), a pose needs at least two captures, as the
-/// two-sided procedure took them.
-pub fn one_sided_pose<T: Real>(
-    poses: &[PoseReading<T>],
-    index: Option<&[CaptureIndex]>,
-    approaches: Option<&[Approach]>,
-) -> Option<usize> {
-    (0..poses.len()).find(|&i| {
-        let same = |j: &usize| same_pose(poses, index, i, *j);
-        let side_of = |j: usize| match index {
-            Some(x) => x.get(j).map(|c| c.approach),
-            None => approaches.and_then(|a| a.get(j).copied()),
-        };
-        if index.is_none() && approaches.is_none() {
-            return (0..poses.len()).filter(same).count() < 2;
-        }
-        let side = |s: Approach| (0..poses.len()).filter(same).any(|j| side_of(j) == Some(s));
-        !(side(Approach::FromBelow) && side(Approach::FromAbove))
-    })
-}
-
 /// The gain and cross-axis terms a fit estimated (zero where not estimated).
 fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
     let v = |p: Param| r.get(p).map_or(T::zero(), |(v, _)| v);
@@ -887,66 +462,5 @@ fn combine<T: Real>(
         offsets_rad,
         covariance_rad2: cov,
         variance_shares_rad2: shares,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn at(joints_deg: [f64; 6]) -> PoseReading<f64> {
-        PoseReading {
-            joints_rad: joints_deg.map(f64::to_radians),
-            reading: Tilt::new(0.0, 0.0),
-            temperature_c: None,
-        }
-    }
-
-    #[test]
-    fn a_pose_needs_both_sides() {
-        use Approach::{FromAbove as Up, FromBelow as Down};
-        let (a, b) = (
-            at([0.0, -90.0, 10.0, 0.0, 0.0, 0.0]),
-            at([0.0, -90.0, 20.0, 0.0, 0.0, 0.0]),
-        );
-        let poses = [a, a, b, b];
-        assert_eq!(
-            one_sided_pose(&poses, None, Some(&[Down, Up, Down, Up])),
-            None
-        );
-        // Two captures of the second pose, both from below.
-        assert_eq!(
-            one_sided_pose(&poses, None, Some(&[Down, Up, Down, Down])),
-            Some(2)
-        );
-        // Without the column: a pose captured once has no second side.
-        assert_eq!(one_sided_pose(&poses, None, None), None);
-        assert_eq!(one_sided_pose(&[a, a, b], None, None), Some(2));
-    }
-
-    #[test]
-    fn captures_pair_by_their_index_where_given_else_by_equal_joints() {
-        use Approach::{FromAbove as Up, FromBelow as Down};
-        let index = |pose: u8, approach| CaptureIndex { pose, approach };
-        let a = at([0.0, -90.0, 10.0, 0.0, 0.0, 0.0]);
-        // Pose 0's second capture written with joint 3 one ulp of 10° apart.
-        let mut a_off = a;
-        a_off.joints_rad[2] = f64::from_bits(a.joints_rad[2].to_bits() + 1);
-        a_off.reading = Tilt::new(0.002, -0.004);
-        let b = at([0.0, -90.0, 20.0, 0.0, 0.0, 0.0]);
-        let poses = [a, a_off, b, b];
-        let by_index = [index(0, Down), index(0, Up), index(1, Down), index(1, Up)];
-        let merged = merge_captures(&poses, Some(&by_index)).expect("poses repeat");
-        assert_eq!(merged.len(), 2);
-        // The mean of the two sides: exact in binary (halves of the readings).
-        assert_eq!(merged[0].reading, Tilt::new(0.001, -0.002));
-        assert_eq!(one_sided_pose(&poses, Some(&by_index), None), None);
-        // By joints, the ulp splits pose 0 in two: three poses, pose 0 one-sided.
-        assert_eq!(merge_repeats(&poses).map(|m| m.len()), Some(3));
-        assert_eq!(
-            one_sided_pose(&poses, None, Some(&[Down, Up, Down, Up])),
-            Some(0)
-        );
-        assert_eq!(first_captures(&poses, Some(&by_index)).unwrap(), [0, 2]);
     }
 }

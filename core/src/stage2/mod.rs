@@ -5,13 +5,17 @@
 //! Jacobian, each residual row folded into a triangular factor as it is computed
 //! ([`information`]). Before any number is reported the factor is checked: a
 //! rank-deficient or ill-conditioned pose set is refused and the inseparable parameters
-//! are named. [`bound`] gives the covariance bound of a pose set for planning.
+//! are named. `iteration` holds the Levenberg-Marquardt iteration, `planning` the
+//! information of commanded poses a plan is judged by, and [`bound`] the covariance
+//! bound of a pose set for planning.
 
 mod bound;
 pub mod geometry;
 mod information;
+mod iteration;
 mod model;
 pub mod params;
+mod planning;
 mod refit;
 pub mod refusal;
 pub mod transmission;
@@ -28,7 +32,11 @@ pub use params::{
     tilt_candidates, tilt_directions, Extras, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_ALL,
     WRIST_SAG_JOINTS,
 };
+pub(crate) use planning::information_at;
+pub use planning::{add_held, information, information_without_priors, rows_at};
 pub use refit::{moved_reading, MovedReading};
+
+use iteration::{levenberg_marquardt, linearise, prior_weights, Held, Solved};
 
 use crate::error::{FitError, ParamSet};
 use crate::linalg::Square;
@@ -67,10 +75,6 @@ pub const MIN_POSES: usize = 4;
 /// singular set computes to ≳ 1e6 even in `f32` (1/ε ≈ 8e6), and a real one at 1e5
 /// would leave its weakest combination ~1e4× less determined than the sensor noise.
 pub const RANK_DEFICIENT_CONDITION: f64 = 1e5;
-
-/// Steps smaller than this (rad, ≈ 0.006°) are taken without the cost test of
-/// Levenberg-Marquardt: see [`fit`].
-const LOCAL_STEP_RAD: f64 = 1e-4;
 
 /// One stage-2 capture: what the robot was commanded to and what the sensor read.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -331,121 +335,9 @@ fn check_layout<T: Real>(
     Ok(())
 }
 
-/// J over all poses, with the residuals when `with_residuals`; the sum of squared
-/// residuals and the largest one (and its pose).
-// A frame of its own: its square matrices leave the stack when it returns
-// (the pendant's fit is stack-measured on target).
-#[inline(never)]
-fn linearise<T: Real>(
-    info: &mut Information<T>,
-    model: &Stage2Model<T>,
-    layout: &Layout,
-    poses: &[PoseReading<T>],
-    x: &[T; MAX_PARAMS],
-    with_residuals: bool,
-    held: &Held<T>,
-) -> (T, (T, usize)) {
-    let estimate = Estimate::from_slots(layout, x);
-    let pass = model.pass(&estimate, layout);
-    info.reset(layout.len());
-    let mut ssr = T::zero();
-    let mut worst = (T::zero(), 0);
-    for (i, pose) in poses.iter().enumerate() {
-        let p = model.predict_rows(&pass, layout, &estimate, pose, false);
-        let r = if with_residuals {
-            let r = pose.reading.minus(&p.reading);
-            Tilt::new(r.x_rad, r.y_rad * model.y_weight)
-        } else {
-            Tilt::default()
-        };
-        let size = r.x_rad.abs().max(r.y_rad.abs());
-        if size > worst.0 {
-            worst = (size, i);
-        }
-        ssr += r.x_rad * r.x_rad + r.y_rad * r.y_rad;
-        info.add_row(&p.rows[0], r.x_rad);
-        info.add_row(&p.rows[1], r.y_rad);
-    }
-    // A held offset: a pseudo-reading that it equals its starting value, weighted ten
-    // readings' worth. The data say nothing on it (it is another joint's twin), so the
-    // solution puts it there and its twin takes the sum.
-    for (k, &h) in held.offsets.iter().enumerate() {
-        if h {
-            let mut row = [T::zero(); MAX_PARAMS];
-            row[k] = T::lit(HELD_WEIGHT);
-            info.add_row(&row, T::lit(HELD_WEIGHT) * (held.at_rad[k] - x[k]));
-        }
-    }
-    // A geometric term: a pseudo-reading that it is 0 within its stated worst case (a
-    // prior, in units of one reading's noise). Where the poses determine it, it moves
-    // it by (noise / worst case)², a few parts per million; where two terms are nearly
-    // one (a tilt of joint 2 and of joint 3 about nearly the same direction), it keeps
-    // their difference from wandering off to tens of degrees.
-    for (slot, w) in held.prior_weight.iter().enumerate().take(layout.len()) {
-        if *w > T::zero() {
-            let mut row = [T::zero(); MAX_PARAMS];
-            row[slot] = *w;
-            info.add_row(&row, -*w * x[slot]);
-            ssr += *w * *w * x[slot] * x[slot];
-        }
-    }
-    (ssr, worst)
-}
-
 /// The priors are weighted again against the residuals' scatter where it exceeds the
 /// sensor's noise by more than this factor.
 const PRIOR_REWEIGHT: f64 = 1.1;
-
-/// The weight of a held offset's pseudo-reading, in readings.
-const HELD_WEIGHT: f64 = 10.0;
-
-/// A held offset's pseudo-reading in an information matrix without residuals (planning,
-/// bounds): it pins the offset, and its twin's variance is the sum's. With it, the
-/// stated priors of `extras`' reducer terms ([`transmission::prior_sd_rad`]) for a
-/// reading noise of `noise_rad`: the fit's information has them too.
-pub fn add_held<T: Real>(info: &mut Information<T>, extras: &Extras, noise_rad: T) {
-    for (k, &h) in extras.held.iter().enumerate() {
-        if h {
-            let mut row = [T::zero(); MAX_PARAMS];
-            row[k] = T::lit(HELD_WEIGHT);
-            info.add_row(&row, T::zero());
-        }
-    }
-    for (slot, p) in extras.layout().params().iter().enumerate() {
-        if let Some(sd) = transmission::prior_sd_rad::<T>(*p) {
-            let mut row = [T::zero(); MAX_PARAMS];
-            row[slot] = noise_rad / sd;
-            info.add_row(&row, T::zero());
-        }
-    }
-}
-
-/// Offsets held at a value, and the priors on the geometric terms (by slot; 0: none).
-struct Held<T> {
-    offsets: [bool; WRIST_JOINTS],
-    at_rad: [T; WRIST_JOINTS],
-    prior_weight: [T; MAX_PARAMS],
-}
-
-/// The prior weights of `layout`'s geometric terms and reducer terms: the reading
-/// noise over each one's stated worst case (geometry) or stated standard deviation
-/// (transmission error, lost motion: [`transmission::prior_sd_rad`]).
-fn prior_weights<T: Real>(
-    model: &Stage2Model<T>,
-    layout: &Layout,
-    poses: &[PoseReading<T>],
-    noise_rad: T,
-) -> [T; MAX_PARAMS] {
-    let mut w = [T::zero(); MAX_PARAMS];
-    for (slot, p) in layout.params().iter().enumerate() {
-        let worst = transmission::prior_sd_rad(*p)
-            .unwrap_or_else(|| geometry::worst_case(model, *p, poses.iter().map(|p| p.joints_rad)));
-        if worst > T::zero() {
-            w[slot] = noise_rad / worst;
-        }
-    }
-    w
-}
 
 /// `(Jᵀ·J_m, J_mᵀ·J_m)`, with J_m the readings' derivatives with respect to the
 /// hand-over parameters: how an error in those moves the solution, and how much of it
@@ -670,117 +562,6 @@ pub fn fit<T: Real>(
     )
 }
 
-/// Where Levenberg-Marquardt left a fit (its information in the caller's buffer).
-struct Solved<T: Real> {
-    x: [T; MAX_PARAMS],
-    cost: T,
-    worst: (T, usize),
-    iterations: u32,
-}
-
-/// Levenberg-Marquardt on `layout` from `x`; the information at the solution is left
-/// in `info`.
-// A frame of its own: its one square matrix (the trial's) leaves the stack when it
-// returns (the pendant's fit is stack-measured on target).
-#[inline(never)]
-fn levenberg_marquardt<T: Real>(
-    info: &mut Information<T>,
-    model: &Stage2Model<T>,
-    layout: &Layout,
-    poses: &[PoseReading<T>],
-    mut x: [T; MAX_PARAMS],
-    held: &Held<T>,
-    config: &FitConfig<T>,
-) -> Result<Solved<T>, FitError> {
-    let n = layout.len();
-    let (mut cost, mut worst) = linearise(info, model, layout, poses, &x, true, held);
-    check_conditioning(info, layout, config.max_condition_number)?;
-    // The damped factor and then the candidate's information: one buffer for both.
-    let mut trial = Information::new(0);
-
-    let mut lambda = T::zero();
-    let mut iterations = 0;
-    let mut converged = false;
-    // Accept equal cost within rounding, so a step at the precision floor is not
-    // mistaken for a worse one.
-    let slack = T::one() + T::lit(8.0) * T::EPSILON;
-    while iterations < config.max_iterations {
-        iterations += 1;
-        let mut step = info
-            .step(lambda, &mut trial)
-            .ok_or(FitError::NonFiniteResult)?;
-        if !step.iter().take(n).all(|s| s.is_finite()) {
-            return Err(FitError::NonFiniteResult);
-        }
-        // A trust region on the geometric terms: no step moves one by more than its
-        // stated worst case. A turn of tens of degrees about a direction the poses see
-        // only to first order is a valley of the cost the Gauss-Newton step can leap
-        // into (found at 40° where the minimum was at 0.3°).
-        let mut scale = T::one();
-        for (st, w) in step.iter().zip(&held.prior_weight).take(n) {
-            if *w > T::zero() {
-                let bound = config.sensor_noise_rad / *w;
-                if st.abs() * scale > bound {
-                    scale = bound / st.abs();
-                }
-            }
-        }
-        if scale < T::one() {
-            for st in step.iter_mut().take(n) {
-                *st *= scale;
-            }
-        }
-        // Convergence is judged on the angles (the offsets); the other terms are
-        // dimensionless or per metre, and follow them.
-        let size = step[..WRIST_JOINTS]
-            .iter()
-            .fold(T::zero(), |m, s| m.max(s.abs()));
-        let small = size < T::STEP_TOLERANCE_RAD;
-        let mut candidate = x;
-        for (c, s) in candidate.iter_mut().zip(&step).take(n) {
-            *c += *s;
-        }
-        let (cand_cost, cand_worst) =
-            linearise(&mut trial, model, layout, poses, &candidate, true, held);
-        // Below LOCAL_STEP_RAD the linearisation error (∝ δ²) is far under the noise, so
-        // the Gauss-Newton step is trusted as it is: there the cost's own rounding noise
-        // (~1e-3 relative in f32) would otherwise reject genuine steps and stall the
-        // fit short of the minimum.
-        let local = size < T::lit(LOCAL_STEP_RAD);
-        if cand_cost.is_finite() && (local || cand_cost <= cost * slack) {
-            x = candidate;
-            core::mem::swap(info, &mut trial);
-            cost = cand_cost;
-            worst = cand_worst;
-            lambda /= T::lit(10.0);
-            if lambda < T::EPSILON {
-                lambda = T::zero();
-            }
-        } else {
-            // Gauss-Newton overshot: damp towards gradient descent. The scale is that of
-            // JᵀJ's diagonal (trace/n = ‖R‖²/n).
-            lambda = if lambda == T::zero() {
-                T::lit(1e-3) * info.norm_squared() / T::lit(n as f64)
-            } else {
-                lambda * T::lit(10.0)
-            };
-        }
-        if small {
-            converged = true;
-            break;
-        }
-    }
-    if !converged {
-        return Err(FitError::NoConvergence { iterations });
-    }
-    Ok(Solved {
-        x,
-        cost,
-        worst,
-        iterations,
-    })
-}
-
 /// The statistics a finished fit reports besides the covariance.
 struct Summary<T> {
     cost: T,
@@ -964,104 +745,6 @@ pub fn single_linearised_step<T: Real>(
     check_conditioning(&info, &layout, config.max_condition_number)?;
     let step = info.back_substitute().ok_or(FitError::NonFiniteResult)?;
     Ok(core::array::from_fn(|k| step[k]))
-}
-
-/// J of commanded poses at the given offsets (zero when planning: none are known yet),
-/// no readings needed, with the held offsets and the stated priors for a reading noise
-/// of `noise_rad` ([`add_held`]).
-pub fn information<T: Real>(
-    model: &Stage2Model<T>,
-    extras: Extras,
-    joints_rad: &[[T; JOINTS]],
-    offsets_rad: &[T; WRIST_JOINTS],
-    noise_rad: T,
-) -> Information<T> {
-    let mut info = Information::new(0);
-    information_at(
-        &mut info,
-        model,
-        extras,
-        joints_rad.iter().copied(),
-        offsets_rad,
-        noise_rad,
-    );
-    info
-}
-
-/// J of commanded poses as [`information`], without the held offsets or any prior: one
-/// pose's share of a design's information (the planner adds them once).
-pub fn information_without_priors<T: Real>(
-    model: &Stage2Model<T>,
-    extras: Extras,
-    joints_rad: &[[T; JOINTS]],
-    offsets_rad: &[T; WRIST_JOINTS],
-) -> Information<T> {
-    let layout = extras.layout();
-    let estimate = Estimate {
-        offsets_rad: *offsets_rad,
-        ..Estimate::default()
-    };
-    let pass = model.pass(&estimate, &layout);
-    let mut info = Information::new(layout.len());
-    for q in joints_rad {
-        let pose = PoseReading {
-            joints_rad: *q,
-            reading: Tilt::default(),
-            temperature_c: None,
-        };
-        let p = model.predict_rows(&pass, &layout, &estimate, &pose, false);
-        info.add_row(&p.rows[0], T::zero());
-        info.add_row(&p.rows[1], T::zero());
-    }
-    info
-}
-
-/// The two rows of J (x, then y weighted) of commanded pose `q` at zero offsets over
-/// `layout`: one candidate pose's share of a design's information.
-pub fn rows_at<T: Real>(
-    model: &Stage2Model<T>,
-    layout: &Layout,
-    q: &[T; JOINTS],
-) -> [[T; MAX_PARAMS]; 2] {
-    let estimate = Estimate::default();
-    let pass = model.pass(&estimate, layout);
-    let pose = PoseReading {
-        joints_rad: *q,
-        reading: Tilt::default(),
-        temperature_c: None,
-    };
-    model
-        .predict_rows(&pass, layout, &estimate, &pose, false)
-        .rows
-}
-
-/// [`information`] over any sequence of commanded poses.
-pub(crate) fn information_at<T: Real>(
-    info: &mut Information<T>,
-    model: &Stage2Model<T>,
-    extras: Extras,
-    joints_rad: impl Iterator<Item = [T; JOINTS]>,
-    offsets_rad: &[T; WRIST_JOINTS],
-    noise_rad: T,
-) {
-    let layout = extras.layout();
-    let poses = joints_rad.map(|q| PoseReading {
-        joints_rad: q,
-        reading: Tilt::default(),
-        temperature_c: None,
-    });
-    let estimate = Estimate {
-        offsets_rad: *offsets_rad,
-        ..Estimate::default()
-    };
-    let pass = model.pass(&estimate, &layout);
-    info.reset(layout.len());
-    for pose in poses {
-        let p = model.predict_rows(&pass, &layout, &estimate, &pose, false);
-        info.add_row(&p.rows[0], T::zero());
-        info.add_row(&p.rows[1], T::zero());
-    }
-    add_held(info, &extras, noise_rad);
 }
 
 #[cfg(test)]

@@ -66,11 +66,14 @@ pub fn loaded_side<T: Real>(torque_nm: T, stretched_nm: T) -> T {
 /// has cosine and sine coefficients of RMS `a/√6` each.
 pub const HARMONIC_PRIOR_SD_DEG: f64 = TRANSMISSION_PP_MAX_DEG / 2.0 / 2.449_489_742_783_178;
 
+/// The gears' lost motion when no figure is stated: 1 arc min, the Nabtesco RV-42N's
+/// (product page: lost motion < 1 arc min).
+pub const DEFAULT_LOST_MOTION_DEG: f64 = 1.0 / 60.0;
+
 /// The prior half a loaded joint's lost motion carries in the fit (deg, 1σ): uniform
-/// between none and half the stated lost motion
-/// ([`crate::session::DEFAULT_LOST_MOTION_DEG`]), its RMS `L/(2√3)` about zero.
-pub const LASH_PRIOR_SD_DEG: f64 =
-    crate::session::DEFAULT_LOST_MOTION_DEG / 2.0 / 1.732_050_807_568_877_2;
+/// between none and half the stated lost motion ([`DEFAULT_LOST_MOTION_DEG`]), its RMS
+/// `L/(2√3)` about zero.
+pub const LASH_PRIOR_SD_DEG: f64 = DEFAULT_LOST_MOTION_DEG / 2.0 / 1.732_050_807_568_877_2;
 
 /// A reducer term's prior standard deviation (rad): the transmission-error harmonics'
 /// and the lost motion's stated sizes; `None` for every other parameter.

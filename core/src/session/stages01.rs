@@ -1,0 +1,245 @@
+//! Stages 0 and 1 and what they hand to stage 2: the sensor's bias from the bench
+//! readings (at the stages' temperatures, drifting as the closing readings measured),
+//! stage 1's half turn of axis 1 solved on it, the temperatures the bias model can
+//! follow, and the stage-2 model built from both ([`Handover`]).
+
+use super::{BiasSource, SessionError, StageTemperatures};
+use crate::model::{Arm, Convention, Gain, SensorBias, SensorModel, Tilt};
+use crate::real::Real;
+use crate::stage0::{BenchStep, BenchTurnsAt, BiasOverTemperature};
+use crate::stage1::{AxisOneTurn, Stage1Result};
+use crate::stage2::{MassModel, PoseReading, Stage2Model};
+
+/// Without a closing reversal the drift is unknown: stage 2's temperatures may differ
+/// from stage 0's by at most this (K). At the SCL3300's up to ~0.009 °/K
+/// (docs/error-budget.md) 0.5 K is 0.0045°, just inside the 0.005° aimed at.
+pub const MAX_UNMEASURED_DRIFT_K: f64 = 0.5;
+
+/// With a closing reversal the drift is linear between the two reversals' temperatures:
+/// a capture may lie outside them by at most this (K).
+pub const MAX_DRIFT_EXTRAPOLATION_K: f64 = 1.0;
+
+/// The two reversals may differ by at most this (K): the offset's temperature curve is
+/// not a line over tens of kelvin (the SCA3300 data sheet's Figure 2, the SCL3300 notes'
+/// §2.9), and a box that warms this much is not settled.
+pub const MAX_DRIFT_SPAN_K: f64 = 10.0;
+
+/// What stages 0-1 hand to stage 2: the model of the arm, the tilt, Δθ2 and the sensor,
+/// and how well they are known.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Handover<T: Real> {
+    /// The stage-2 model.
+    pub model: Stage2Model<T>,
+    /// Covariance of (α, β, Δθ2, bias x, bias y) in units of one reading's noise
+    /// variance (stage 1's, with stage 0's propagated).
+    pub covariance: [[T; 5]; 5],
+}
+
+/// Stage 2's model from stages 0-1: the measured base tilt and Δθ2 (joint 2's true
+/// angle is its recorded one plus Δθ2, wherever stage 2 has it), the stage-0 x bias
+/// (or 0, and the report warns) and stage 1's y bias.
+pub fn handover<T: Real>(
+    stage1: &Stage1Result<T>,
+    arm: Arm<T>,
+    convention: Convention,
+    bias: Option<&SensorBias<T>>,
+    masses: Option<MassModel<T>>,
+) -> Handover<T> {
+    let bias = bias.map(|b| BiasOverTemperature::constant(*b, None));
+    handover_at(stage1, arm, convention, bias.as_ref(), None, masses)
+}
+
+/// As [`handover`], with the bias following the temperature: the model's bias is
+/// stage 1's (x from the reversals at stage 1's temperature, y from the half turn),
+/// and it drifts from there as the reversals measured.
+pub fn handover_at<T: Real>(
+    stage1: &Stage1Result<T>,
+    arm: Arm<T>,
+    convention: Convention,
+    bias: Option<&BiasOverTemperature<T>>,
+    stage1_c: Option<T>,
+    masses: Option<MassModel<T>>,
+) -> Handover<T> {
+    Handover {
+        model: Stage2Model {
+            arm,
+            base_tilt: stage1.base_tilt,
+            delta_theta2_rad: stage1.delta_theta2_rad,
+            stage1_j2_rad: stage1.j2_rad,
+            sensor: SensorModel::new(
+                convention,
+                Tilt::new(
+                    bias.map_or(T::zero(), |b| b.at(stage1_c).x_rad),
+                    stage1.bias_y_rad,
+                ),
+            ),
+            reference_temperature_c: stage1_c
+                .or(bias.and_then(|b| b.reference_c))
+                .unwrap_or(T::zero()),
+            drift_per_k: bias.map_or(Tilt::default(), |b| b.drift_per_k),
+            masses,
+            y_weight: match convention {
+                Convention::Axis => T::lit(crate::stage2::MEMS_Y_WEIGHT),
+                Convention::Rpy => T::one(),
+            },
+        },
+        covariance: stage1.covariance,
+    }
+}
+
+/// Stage 1 on the bias of stage 0: the part of the chain the pendant runs as soon as
+/// stage 1's second reading is in, to ask for it again if it is refused.
+///
+/// # Errors
+/// Stage 0's or stage 1's refusal.
+pub fn solve_stages01<T: Real>(
+    bias: &BiasSource<T>,
+    stage1: &AxisOneTurn<T>,
+    arm: &Arm<T>,
+    convention: Convention,
+    range_rad: T,
+) -> Result<(Option<SensorBias<T>>, Stage1Result<T>), SessionError> {
+    let bias = bias_over_temperature(
+        bias,
+        &StageTemperatures::default(),
+        None,
+        &BenchSettings {
+            convention,
+            gain: Gain::default(),
+            range_rad,
+            noise_rad: T::zero(),
+        },
+    )?;
+    let s1 = solve_stage1(
+        &bias,
+        None,
+        &Stage1Setup {
+            turn: stage1,
+            arm,
+            convention,
+            range_rad,
+        },
+        Gain::default(),
+        T::one(),
+    )?;
+    Ok((bias.map(|b| b.bias), s1))
+}
+
+/// What the bench readings are solved with: the convention, the sensor's gain (stage
+/// 2's, once known), the range, and one reading's noise to judge their residuals by.
+pub(super) struct BenchSettings<T> {
+    pub(super) convention: Convention,
+    pub(super) gain: Gain<T>,
+    pub(super) range_rad: T,
+    pub(super) noise_rad: T,
+}
+
+pub(super) fn bias_over_temperature<T: Real>(
+    bias: &BiasSource<T>,
+    temperatures: &StageTemperatures<T>,
+    closing: Option<&BenchTurnsAt<T>>,
+    settings: &BenchSettings<T>,
+) -> Result<Option<BiasOverTemperature<T>>, SessionError> {
+    Ok(match bias {
+        BiasSource::Bench(r) => Some(
+            BiasOverTemperature::measure(
+                &BenchTurnsAt {
+                    turns: *r,
+                    temperature_c: temperatures.stage0_c,
+                },
+                closing,
+                settings.convention,
+                settings.gain,
+                settings.range_rad,
+                settings.noise_rad,
+            )
+            .map_err(|(step, e)| match step {
+                BenchStep::Stage0 => SessionError::Stage0(e),
+                BenchStep::Closing => SessionError::Closing(e),
+            })?,
+        ),
+        BiasSource::Stored(b) => Some(BiasOverTemperature::constant(*b, None)),
+        BiasSource::Unknown => None,
+    })
+}
+
+/// Stage 1 with the bias at its temperature (a reversal's half-sum has half a reading's
+/// variance, a stored bias too: it was such a half-sum).
+pub(super) fn solve_stage1<T: Real>(
+    bias: &Option<BiasOverTemperature<T>>,
+    stage1_c: Option<T>,
+    setup: &Stage1Setup<'_, T>,
+    gain: Gain<T>,
+    captures_per_reading: T,
+) -> Result<Stage1Result<T>, SessionError> {
+    // Variances are in units of one reading of stages 1-2; a reversal's readings are
+    // single captures, `captures_per_reading` times noisier than a reading that
+    // averages that many.
+    let at = bias.as_ref().map(|b| {
+        (
+            b.at(stage1_c),
+            b.variance_factor(stage1_c) * captures_per_reading,
+        )
+    });
+    setup
+        .turn
+        .solve_with_gain(
+            setup.arm,
+            setup.convention,
+            gain,
+            at.as_ref().map(|(b, v)| (b, *v)),
+            setup.range_rad,
+        )
+        .map_err(SessionError::Stage1)
+}
+
+/// What stage 1 is solved on, besides the bias.
+pub(super) struct Stage1Setup<'a, T: Real> {
+    pub(super) turn: &'a AxisOneTurn<T>,
+    pub(super) arm: &'a Arm<T>,
+    pub(super) convention: Convention,
+    pub(super) range_rad: T,
+}
+
+/// Refuses a session whose temperatures the bias model cannot follow.
+pub(super) fn check_temperatures<T: Real>(
+    bias: &Option<BiasOverTemperature<T>>,
+    poses: &[PoseReading<T>],
+) -> Result<(), SessionError> {
+    let Some(b) = bias else { return Ok(()) };
+    let Some(t0) = b.reference_c else {
+        return Ok(());
+    };
+    if let Some(t1) = b.closing_c {
+        let span = (t1 - t0).abs();
+        if span > T::lit(MAX_DRIFT_SPAN_K) {
+            return Err(SessionError::Warmed {
+                kelvin: span.to_f64() as f32,
+                limit_k: MAX_DRIFT_SPAN_K as f32,
+                drift_measured: true,
+            });
+        }
+    }
+    let (lo, hi, limit, measured) = match b.closing_c {
+        Some(t1) => (
+            t0.min(t1),
+            t0.max(t1),
+            T::lit(MAX_DRIFT_EXTRAPOLATION_K),
+            true,
+        ),
+        None => (t0, t0, T::lit(MAX_UNMEASURED_DRIFT_K), false),
+    };
+    let worst = poses
+        .iter()
+        .filter_map(|p| p.temperature_c)
+        .map(|t| (lo - t).max(t - hi).max(T::zero()))
+        .fold(T::zero(), |m, d| m.max(d));
+    if worst > limit {
+        return Err(SessionError::Warmed {
+            kelvin: worst.to_f64() as f32,
+            limit_k: limit.to_f64() as f32,
+            drift_measured: measured,
+        });
+    }
+    Ok(())
+}
