@@ -36,7 +36,9 @@ pub(super) fn same_pose<T: Real>(
         Some((a, b)) => a.pose == b.pose,
         None => {
             let (lo, hi) = (i.min(j), i.max(j));
+            // The ends first: most pairs differ there, and the run is not walked.
             hi < poses.len()
+                && poses[lo].joints_rad == poses[hi].joints_rad
                 && poses[lo..=hi]
                     .iter()
                     .all(|p| p.joints_rad == poses[lo].joints_rad)

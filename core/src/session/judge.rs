@@ -159,11 +159,12 @@ pub fn evidence<T: Real>(
     let pass = model.pass(&estimate, &layout);
     let w = model.y_weight;
     // One pose: its two weighted rows and residuals.
-    let at = |pose: &PoseReading<T>| {
-        let p = model.predict_rows(&pass, &layout, &estimate, pose, false);
-        let r = pose.reading.minus(&p.reading);
-        (p.rows, [r.x_rad, r.y_rad * w])
+    let at = |pose: &PoseReading<T>, rows: &mut [crate::stage2::Row<T>; 2]| {
+        let (reading, _) = model.predict_into(&pass, &layout, &estimate, pose, false, rows);
+        let r = pose.reading.minus(&reading);
+        [r.x_rad, r.y_rad * w]
     };
+    let mut rows = [[T::zero(); MAX_PARAMS]; 2];
     let mut info = Information::new(n);
     let mut ssr = T::zero();
     // Totals of Sᵀ·J, Sᵀ·r and SᵀS for a shift of every reading (D = diag(1, w)).
@@ -171,7 +172,7 @@ pub fn evidence<T: Real>(
     let mut sr = [T::zero(); 2];
     let d = [T::one(), w];
     for pose in poses {
-        let (rows, r) = at(pose);
+        let r = at(pose, &mut rows);
         info.add_row(&rows[0], T::zero());
         info.add_row(&rows[1], T::zero());
         for a in 0..2 {
@@ -230,7 +231,7 @@ pub fn evidence<T: Real>(
     let mut rr = [T::zero(); 2];
     let mut rss = [T::zero(); 2];
     for (m, pose) in poses.iter().enumerate() {
-        let (rows, r) = at(pose);
+        let r = at(pose, &mut rows);
         let t = t_of(m);
         for a in 0..2 {
             rr[a] += t * d[a] * r[a];
@@ -259,7 +260,7 @@ pub fn evidence<T: Real>(
         T::lit(poses.len() as f64) * w * w,
     ];
     for (m, pose) in poses.iter().enumerate() {
-        let (rows, r) = at(pose);
+        let r = at(pose, &mut rows);
         // The pose left out: S = its two readings.
         let h = [
             [

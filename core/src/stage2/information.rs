@@ -60,16 +60,17 @@ fn start_vector<T: Real>(n: usize, alternate: bool) -> [T; MAX_PARAMS] {
     x
 }
 
-/// `x` scaled to unit length over its first `n` entries; `None` if it has none.
-fn unit<T: Real>(mut x: [T; MAX_PARAMS], n: usize) -> Option<[T; MAX_PARAMS]> {
+/// Scales `x` to unit length over its first `n` entries in place; `false` if it has
+/// no length (or not a finite one).
+fn normalise<T: Real>(x: &mut [T; MAX_PARAMS], n: usize) -> bool {
     let length = x.iter().take(n).fold(T::zero(), |s, v| s + *v * *v).sqrt();
     if !length.is_finite() || length <= T::zero() {
-        return None;
+        return false;
     }
     for v in x.iter_mut().take(n) {
         *v /= length;
     }
-    Some(x)
+    true
 }
 
 /// The slots whose component in a unit direction exceeds [`WEAK_DIRECTION_SHARE`].
@@ -286,77 +287,80 @@ impl<T: Real> Information<T> {
             for (wi, ni) in w.iter_mut().zip(norm.iter()).take(n) {
                 *wi *= *ni;
             }
-            let direction = unit(w, n).unwrap_or_else(|| {
-                let mut e = [T::zero(); MAX_PARAMS];
-                e[k] = T::one();
-                e
-            });
-            return singular(direction);
+            if !normalise(&mut w, n) {
+                w = [T::zero(); MAX_PARAMS];
+                w[k] = T::one();
+            }
+            return singular(w);
         }
-        // S·x and Sᵀ·y on the triangle.
-        let s_times = |x: &[T; MAX_PARAMS]| {
-            let mut y = [T::zero(); MAX_PARAMS];
-            for (i, yi) in y.iter_mut().enumerate().take(n) {
-                *yi = (i..n).fold(T::zero(), |s, j| s + r[i][j] * x[j] / norm[j]);
+        // S·x and Sᵀ·y on the triangle, and (SᵀS)⁻¹·x by two triangular solves, each
+        // into a buffer of the caller's (no array is copied a step).
+        let mut inverse_norm = [T::zero(); MAX_PARAMS];
+        for (v, nj) in inverse_norm.iter_mut().zip(norm.iter()).take(n) {
+            *v = T::one() / *nj;
+        }
+        let s_times = |x: &[T; MAX_PARAMS], y: &mut [T; MAX_PARAMS]| {
+            for i in 0..n {
+                y[i] = (i..n).fold(T::zero(), |s, j| s + r[i][j] * (x[j] * inverse_norm[j]));
             }
-            y
         };
-        let st_times = |y: &[T; MAX_PARAMS]| {
-            let mut x = [T::zero(); MAX_PARAMS];
-            for (j, xj) in x.iter_mut().enumerate().take(n) {
-                *xj = (0..=j).fold(T::zero(), |s, i| s + r[i][j] * y[i]) / norm[j];
+        let st_times = |y: &[T; MAX_PARAMS], x: &mut [T; MAX_PARAMS]| {
+            for j in 0..n {
+                x[j] = (0..=j).fold(T::zero(), |s, i| s + r[i][j] * y[i]) / norm[j];
             }
-            x
         };
-        // (SᵀS)⁻¹·x: Sᵀ·y = x forward, then S·z = y backward.
-        let solve = |x: &[T; MAX_PARAMS]| {
-            let mut y = [T::zero(); MAX_PARAMS];
+        let solve = |x: &[T; MAX_PARAMS], y: &mut [T; MAX_PARAMS], z: &mut [T; MAX_PARAMS]| {
+            // Sᵀ·y = x forward, then S·z = y backward (S = R·D⁻¹).
             for j in 0..n {
                 let acc = (0..j).fold(x[j] * norm[j], |s, i| s - r[i][j] * y[i]);
                 y[j] = acc / r[j][j];
             }
-            let mut w = [T::zero(); MAX_PARAMS];
             for i in (0..n).rev() {
-                let acc = ((i + 1)..n).fold(y[i], |s, j| s - r[i][j] * w[j]);
-                w[i] = acc / r[i][i];
+                let acc = ((i + 1)..n).fold(y[i], |s, j| s - r[i][j] * z[j]);
+                z[i] = acc / r[i][i];
             }
-            for (wi, ni) in w.iter_mut().zip(norm.iter()).take(n) {
-                *wi *= *ni;
+            for j in 0..n {
+                z[j] *= norm[j];
             }
-            w
         };
-        let rayleigh = |x: &[T; MAX_PARAMS]| {
-            let y = s_times(x);
-            y.iter().take(n).fold(T::zero(), |s, v| s + *v * *v)
+        let dot = |a: &[T; MAX_PARAMS], b: &[T; MAX_PARAMS]| {
+            (0..n).fold(T::zero(), |s, i| s + a[i] * b[i])
         };
-        let Some(mut top) = unit(start_vector(n, false), n) else {
+        let mut y = [T::zero(); MAX_PARAMS];
+        // Largest eigenvalue of SᵀS: x ← SᵀS·x, its Rayleigh quotient ‖S·x‖² (x unit).
+        let mut top = start_vector(n, false);
+        let mut next = [T::zero(); MAX_PARAMS];
+        let mut largest = T::zero();
+        if !normalise(&mut top, n) {
             return singular([T::zero(); MAX_PARAMS]);
-        };
-        let mut largest = rayleigh(&top);
+        }
         for _ in 0..CONDITIONING_STEPS {
-            let Some(next) = unit(st_times(&s_times(&top)), n) else {
-                break;
-            };
-            top = next;
-            let estimate = rayleigh(&top);
+            s_times(&top, &mut y);
+            let estimate = dot(&y, &y);
+            st_times(&y, &mut next);
+            core::mem::swap(&mut top, &mut next);
             let settled = (estimate - largest).abs() <= T::lit(CONDITIONING_SETTLED) * estimate;
             largest = estimate;
-            if settled {
+            if settled || !normalise(&mut top, n) {
                 break;
             }
         }
-        let Some(mut weakest) = unit(start_vector(n, true), n) else {
+        // Smallest: x ← (SᵀS)⁻¹·x, its Rayleigh quotient xᵀ(SᵀS)⁻¹x = 1/λ (x unit).
+        let mut weakest = start_vector(n, true);
+        let mut smallest = T::zero();
+        if !normalise(&mut weakest, n) {
             return singular([T::zero(); MAX_PARAMS]);
-        };
-        let mut smallest = rayleigh(&weakest);
+        }
         for _ in 0..CONDITIONING_STEPS {
-            let Some(next) = unit(solve(&weakest), n) else {
-                break;
-            };
-            weakest = next;
-            let estimate = rayleigh(&weakest);
-            let settled = (estimate - smallest).abs() <= T::lit(CONDITIONING_SETTLED) * smallest;
+            solve(&weakest, &mut y, &mut next);
+            let inverse = dot(&weakest, &next);
+            core::mem::swap(&mut weakest, &mut next);
+            let estimate = T::one() / inverse;
+            let settled = (estimate - smallest).abs() <= T::lit(CONDITIONING_SETTLED) * estimate;
             smallest = estimate;
+            if !normalise(&mut weakest, n) {
+                return singular(next);
+            }
             if settled {
                 break;
             }

@@ -34,10 +34,11 @@ pub(super) fn linearise<T: Real>(
     info.reset(layout.len());
     let mut ssr = T::zero();
     let mut worst = (T::zero(), 0);
+    let mut rows = [[T::zero(); MAX_PARAMS]; 2];
     for (i, pose) in poses.iter().enumerate() {
-        let p = model.predict_rows(&pass, layout, &estimate, pose, false);
+        let (reading, _) = model.predict_into(&pass, layout, &estimate, pose, false, &mut rows);
         let r = if with_residuals {
-            let r = pose.reading.minus(&p.reading);
+            let r = pose.reading.minus(&reading);
             Tilt::new(r.x_rad, r.y_rad * model.y_weight)
         } else {
             Tilt::default()
@@ -47,8 +48,8 @@ pub(super) fn linearise<T: Real>(
             worst = (size, i);
         }
         ssr += r.x_rad * r.x_rad + r.y_rad * r.y_rad;
-        info.add_row(&p.rows[0], r.x_rad);
-        info.add_row(&p.rows[1], r.y_rad);
+        info.add_row(&rows[0], r.x_rad);
+        info.add_row(&rows[1], r.y_rad);
     }
     // A held offset: a pseudo-reading that it equals its starting value, weighted ten
     // readings' worth. The data say nothing on it (it is another joint's twin), so the

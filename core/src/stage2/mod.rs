@@ -359,9 +359,11 @@ fn handover_coupling<T: Real>(
     let n = layout.len();
     let mut coupling = [[T::zero(); HANDOVER_PARAMS]; MAX_PARAMS];
     let mut model_info = [[T::zero(); HANDOVER_PARAMS]; HANDOVER_PARAMS];
+    let mut rows = [[T::zero(); MAX_PARAMS]; 2];
     for pose in poses {
-        let p = model.predict_rows(&pass, layout, &estimate, pose, true);
-        for (row, jm) in p.rows.iter().zip(&p.handover_rows) {
+        let (_, handover_rows) =
+            model.predict_into(&pass, layout, &estimate, pose, true, &mut rows);
+        for (row, jm) in rows.iter().zip(&handover_rows) {
             for (i, c) in coupling.iter_mut().enumerate().take(n) {
                 for (cj, &m) in c.iter_mut().zip(jm) {
                     *cj += row[i] * m;

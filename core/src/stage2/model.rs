@@ -395,6 +395,9 @@ pub(crate) struct Pass<T: Real> {
     needs_levers: bool,
     needs_wrist: bool,
     needs_torques: bool,
+    /// Whether a reducer's harmonic is estimated or held at a value (each pose then
+    /// needs the joints' harmonic bases).
+    any_harmonic: bool,
     /// What each joint could carry at most (N·m), for the loaded side of its play.
     stretched_nm: [T; JOINTS],
 }
@@ -457,6 +460,11 @@ impl<T: Real> Stage2Model<T> {
             .iter()
             .any(|p| matches!(p, Param::WristSag(_)));
         let needs_torques = layout.params().iter().any(|p| matches!(p, Param::Lash(_)));
+        let any_harmonic = layout
+            .params()
+            .iter()
+            .any(|p| matches!(p, Param::Harmonic(_)))
+            || estimate.harmonics_rad.iter().any(|c| *c != T::zero());
         let stretched_nm = match (&self.masses, needs_torques) {
             (Some(m), true) => m.stretched_torques_nm(&self.arm),
             _ => [T::zero(); JOINTS],
@@ -475,6 +483,7 @@ impl<T: Real> Stage2Model<T> {
             needs_levers,
             needs_wrist,
             needs_torques,
+            any_harmonic,
             stretched_nm,
         }
     }
@@ -501,6 +510,29 @@ impl<T: Real> Stage2Model<T> {
         pose: &PoseReading<T>,
         with_handover: bool,
     ) -> Prediction<T> {
+        let mut rows = [[T::zero(); MAX_PARAMS]; 2];
+        let (reading, handover_rows) =
+            self.predict_into(pass, layout, estimate, pose, with_handover, &mut rows);
+        Prediction {
+            reading,
+            rows,
+            handover_rows,
+        }
+    }
+
+    /// [`Self::predict_rows`] into the caller's rows: the layout's slots are written,
+    /// the others left as they are (zero in a buffer made for the layout). A fit
+    /// predicts every pose a few times over; a fresh pair of rows zeroed and copied
+    /// out each time was a fifth of the pendant's solve.
+    pub(crate) fn predict_into(
+        &self,
+        pass: &Pass<T>,
+        layout: &Layout,
+        estimate: &Estimate<T>,
+        pose: &PoseReading<T>,
+        with_handover: bool,
+        rows: &mut [Row<T>; 2],
+    ) -> (Tilt<T>, [[T; HANDOVER_PARAMS]; 2]) {
         let q = &pose.joints_rad;
         // The levers and torques at the commanded pose: the offsets and Δθ2 (tenths of
         // a degree) change them by far less than the model's own accuracy, and they keep
@@ -527,11 +559,13 @@ impl<T: Real> Stage2Model<T> {
         // Each joint's harmonic basis; joint 2's taken from its stage-1 angle, where
         // Δθ2 was measured with its error there.
         let mut basis = [[T::zero(); 2 * MAX_HARMONIC_ORDER]; 5];
-        for (k, b) in basis.iter_mut().enumerate() {
-            *b = harmonic_basis(q[k + 1]);
-        }
-        for (b, s1) in basis[0].iter_mut().zip(&pass.stage1_basis) {
-            *b -= *s1;
+        if pass.any_harmonic {
+            for (k, b) in basis.iter_mut().enumerate() {
+                *b = harmonic_basis(q[k + 1]);
+            }
+            for (b, s1) in basis[0].iter_mut().zip(&pass.stage1_basis) {
+                *b -= *s1;
+            }
         }
         // Each joint's angle-dependent part: harmonics, sag, lost motion.
         let mut moved = [T::zero(); WRIST_JOINTS + 1];
@@ -544,7 +578,7 @@ impl<T: Real> Stage2Model<T> {
         moved[0] += estimate.sag2_rad_per_m * levers[1] + estimate.lash_rad[0] * sides[0];
         moved[1] += estimate.sag_rad_per_m * levers[2] + estimate.lash_rad[1] * sides[1];
         for i in 0..WRIST_SAG_SLOTS {
-            if layout.slot(Param::WristSag(i as u8)).is_some() {
+            if pass.needs_wrist && layout.slot(Param::WristSag(i as u8)).is_some() {
                 let k = i % WRIST_SAG_JOINTS;
                 let lever = if i < WRIST_SAG_JOINTS {
                     link_levers[k + 3]
@@ -605,7 +639,6 @@ impl<T: Real> Stage2Model<T> {
         let d_j2 = pass
             .wrist
             .to_sensor(&pass.fixed_in_use, &base_up.cross(&axis2), &trig);
-        let mut rows = [[T::zero(); MAX_PARAMS]; 2];
         for (slot, &p) in layout.params().iter().enumerate() {
             for (axis, row) in rows.iter_mut().enumerate() {
                 row[slot] = match p {
@@ -687,17 +720,13 @@ impl<T: Real> Stage2Model<T> {
         // The y reading is weighted by how much less noisy it is than x (least squares
         // with each reading divided by its σ, in units of x's σ).
         let w = self.y_weight;
-        for v in rows[1].iter_mut() {
+        for v in rows[1].iter_mut().take(layout.len()) {
             *v *= w;
         }
         for v in handover_rows[1].iter_mut() {
             *v *= w;
         }
-        Prediction {
-            reading,
-            rows,
-            handover_rows,
-        }
+        (reading, handover_rows)
     }
 
     /// The reading predicted for commanded joints and given offsets (no sag, gain or

@@ -119,10 +119,11 @@ pub(crate) fn information_at<T: Real>(
     };
     let pass = model.pass(&estimate, &layout);
     info.reset(layout.len());
+    let mut rows = [[T::zero(); MAX_PARAMS]; 2];
     for pose in poses {
-        let p = model.predict_rows(&pass, &layout, &estimate, &pose, false);
-        info.add_row(&p.rows[0], T::zero());
-        info.add_row(&p.rows[1], T::zero());
+        model.predict_into(&pass, &layout, &estimate, &pose, false, &mut rows);
+        info.add_row(&rows[0], T::zero());
+        info.add_row(&rows[1], T::zero());
     }
     add_held(info, &extras, noise_rad);
 }
