@@ -11,25 +11,22 @@
 use crate::error::CliError;
 use std::io::Read;
 use std::path::Path;
-use zerocal_core::plan::MAX_POSES;
+use zerocal_procedure::log::EXPORT_MAX_LINES;
 
 /// The longest line the pendant writes (core's `log::Line` capacity, bytes), plus a
 /// CR LF: a unit test ties the figure to core's type.
 pub const PENDANT_LINE_BYTES: usize = 192 + 2;
 
-/// Lines of a pendant export besides its rows, at most: core's exporter writes eleven
-/// head lines (comment, metadata, header) and one result line; 16 leaves room.
-pub const EXPORT_OTHER_LINES: usize = 16;
-
-/// Largest pendant export (`zerocal session EXPORT`), bytes: the pendant keeps at most
-/// `MAX_POSES` captures, so an export is at most `MAX_POSES` rows and
-/// [`EXPORT_OTHER_LINES`] other lines of [`PENDANT_LINE_BYTES`] each (12 KiB); four
-/// times that leaves room for comments added by hand.
-pub const MAX_EXPORT_BYTES: usize = 4 * (MAX_POSES + EXPORT_OTHER_LINES) * PENDANT_LINE_BYTES;
+/// Largest pendant export (`zerocal session EXPORT`), bytes: the pendant writes at most
+/// [`EXPORT_MAX_LINES`] lines (its head, a row for each of its
+/// `zerocal_core::capture::MAX_CAPTURES` captures, the result and the trailer) of
+/// [`PENDANT_LINE_BYTES`] each (21 KiB); four times that leaves room for comments added
+/// by hand.
+pub const MAX_EXPORT_BYTES: usize = 4 * EXPORT_MAX_LINES * PENDANT_LINE_BYTES;
 
 /// Largest stage-2 log (`zerocal identify LOG`), bytes: a log from another tool or
 /// written by hand has no row limit in its format; 1 MiB holds over 5,000 rows of the
-/// pendant's widest, a hundred times the `MAX_POSES` a pendant session captures, and
+/// pendant's widest, fifty times the `MAX_CAPTURES` a pendant session captures, and
 /// parses in milliseconds.
 pub const MAX_LOG_BYTES: usize = 1 << 20;
 

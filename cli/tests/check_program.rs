@@ -1,6 +1,6 @@
 //! `zerocal program --check`: the check's robot time on every built-in profile, and its
 //! programs read back: the flange's stop, the check's poses (the session plan's, at its
-//! commanded angles) each captured twice, the closing reversal; no stage 1.
+//! commanded angles) each captured twice, the closing bench readings; no stage 1.
 
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -42,11 +42,11 @@ fn every_builtin_check_runs_within_three_minutes() {
         let run_s = time.total_s - time.remount_s;
         assert!(run_s <= CHECK_RUN_LIMIT_S, "{name}: {run_s:.0} s");
         // No stage 1: the flange's mounting and the bench's, two captures a pose and
-        // the closing reversal's two.
+        // the closing bench readings' one a heading.
         assert_eq!(time.mountings, 2, "{name}");
         assert_eq!(
             usize::from(time.captures),
-            CAPTURES_PER_POSE * index.len() + 2,
+            CAPTURES_PER_POSE * index.len() + zerocal_procedure::BENCH_HEADINGS,
             "{name}"
         );
     }
@@ -54,7 +54,7 @@ fn every_builtin_check_runs_within_three_minutes() {
 
 /// The check's program on the KR 16 holds the session plan's commanded angles at the
 /// check's poses, each captured twice (both approaches), three stops (the flange, an
-/// OK where needed excepted, the closing reversal) and no stage-1 pose.
+/// OK where needed excepted, the closing bench readings) and no stage-1 pose.
 #[test]
 fn the_check_program_drives_the_plans_own_angles_without_stage_1() {
     let profile = zerocal_profile::builtin("kuka-kr16").unwrap();
@@ -89,7 +89,7 @@ fn the_check_program_drives_the_plans_own_angles_without_stage_1() {
     let stops: Vec<&str> = moves.iter().filter_map(|m| m.stop.as_deref()).collect();
     assert!(stops.first().unwrap().contains("flange"), "{stops:?}");
     assert!(
-        stops.last().unwrap().contains("closing reversal"),
+        stops.last().unwrap().contains("closing bench readings"),
         "{stops:?}"
     );
     assert!(!stops.iter().any(|s| s.contains("upper arm")), "{stops:?}");

@@ -169,8 +169,8 @@ fn compare_with_goldens(
 
 /// The golden files themselves read back through the readers: every pose (stage 1's
 /// two and the plan's) captured twice, four operator stops (clip on, the OK after the
-/// half turn, to the flange, the closing reversal), the last one the closing
-/// reversal's, after the last move.
+/// half turn, to the flange, the closing bench readings), the last one the closing
+/// bench readings', after the last move.
 #[test]
 fn golden_files_read_back() {
     let g = golden();
@@ -188,14 +188,14 @@ fn golden_files_read_back() {
         read::val3(&text("zc_tx260/ZC_TX260.dtx"), &text("zc_tx260/start.pgx")),
         read::urscript(&text("zc_ur5e.script")),
     ];
-    // Stage 1's two captures and the plan's poses: the default plan's for five, the
-    // UR5e's 8-pose plan file for the last.
+    // Stage 1's two captures and the plan's poses: the default plan's for five (its
+    // distinct poses and its revisits), the UR5e's 8-pose plan file for the last.
     for (i, moves) in all.into_iter().enumerate() {
         let moves = moves.unwrap_or_else(|e| panic!("{e}"));
         let poses = if i == 5 {
             8
         } else {
-            zerocal_sim::montecarlo::DEFAULT_POSES
+            zerocal_core::plan::SESSION_POSES + zerocal_core::plan::SESSION_REVISITS
         };
         assert_eq!(
             moves.iter().filter(|m| m.dwell_s.is_some()).count(),
@@ -205,7 +205,7 @@ fn golden_files_read_back() {
         let last = moves.last().unwrap_or_else(|| panic!("file {i}: no moves"));
         let closing = last.stop.clone().unwrap_or_default().to_lowercase();
         assert!(
-            last.dwell_s.is_none() && closing.contains("closing reversal"),
+            last.dwell_s.is_none() && closing.contains("closing bench readings"),
             "file {i}: {closing}"
         );
     }
@@ -220,7 +220,7 @@ fn golden_files_read_back() {
 
 /// The check's golden files read back through the readers: the check's poses only
 /// (no stage 1), each captured twice; the first stop clips the pendant to the flange,
-/// the last is the closing reversal's, after the last move.
+/// the last is the closing bench readings', after the last move.
 #[test]
 fn check_golden_files_read_back() {
     let g = golden();
@@ -261,7 +261,7 @@ fn check_golden_files_read_back() {
         let last = moves.last().unwrap();
         let closing = last.stop.clone().unwrap_or_default().to_lowercase();
         assert!(
-            last.dwell_s.is_none() && closing.contains("closing reversal"),
+            last.dwell_s.is_none() && closing.contains("closing bench readings"),
             "file {i}: {closing}"
         );
     }

@@ -130,15 +130,41 @@ fn a_pose_outside_the_limits_is_refused_naming_joint_and_limit() {
 
 #[test]
 fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
-    let plan = tmp("kr16.csv");
-    write_plan(&plan, &kr16_plan_deg());
     let out = tmp("other.mod");
-    // Joints 1-2 are the KR 16's stage-1 values, not the IRB 140's.
+    // Another robot's plan as `zerocal plan --json` writes it: refused by its name.
+    let json = tmp("kr16.json");
+    let planned = Command::new(env!("CARGO_BIN_EXE_zerocal"))
+        .args(["plan", "--robot", "kuka-kr16", "--json"])
+        .output()
+        .unwrap();
+    assert!(planned.status.success());
+    std::fs::write(&json, &planned.stdout).unwrap();
     let run = program(&[
         "--robot",
         "abb-irb140",
         "--format",
         "rapid",
+        "--plan",
+        json.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(2), "{err}");
+    assert!(err.contains("'kuka-kr16', not 'abb-irb140'"), "{err}");
+    // CSV rows carry no robot: a plan for another stage-1 pose shows in joint 1, the
+    // joint stage 2 holds where stage 1 had it (joint 2 swings in stage 2).
+    let plan = tmp("kr16.csv");
+    let mut poses = kr16_plan_deg();
+    for q in &mut poses {
+        q[0] += 10.0;
+    }
+    write_plan(&plan, &poses);
+    let run = program(&[
+        "--robot",
+        "kuka-kr16",
+        "--format",
+        "krl",
         "--plan",
         plan.to_str().unwrap(),
         "--out",
@@ -146,7 +172,10 @@ fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
     ]);
     let err = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(2), "{err}");
-    assert!(err.contains("stage-1 values"), "{err}");
+    assert!(
+        err.contains("joint 1") && err.contains("stage-1 value"),
+        "{err}"
+    );
     // A KUKA profile in RAPID: exit 2, naming the right format.
     let run = program(&[
         "--robot",

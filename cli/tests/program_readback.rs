@@ -4,7 +4,7 @@
 //! session's; the captures are the plan in the controller's terms, each pose twice
 //! (stage 1's two included), the first reached from below on every joint and the
 //! second from above; every point is inside the joint limits; the waits cover the
-//! pendant's capture rule; the program ends with the closing reversal's stop at a
+//! pendant's capture rule; the program ends with the closing bench readings' stop at a
 //! pose where the pendant reads past its range.
 
 // A failed test panics with what it found: that is its report.
@@ -162,7 +162,7 @@ fn check(profile: &Profile, format: Format, poses_rad: &[[f64; JOINTS]]) -> Chec
     }
 
     // 5. The stops: the pendant clipped on at the first move's pose, moved to the
-    //    flange, and the closing reversal after the last capture: one move on (the
+    //    flange, and the closing bench readings after the last capture: one move on (the
     //    park), no capture after it, the program's last stop. At each of them the
     //    pendant reads past its range on the flange (and, at the first two, on the
     //    upper arm), so it cannot capture while it is handled.
@@ -190,13 +190,14 @@ fn check(profile: &Profile, format: Format, poses_rad: &[[f64; JOINTS]]) -> Chec
     assert_eq!(
         stops.last(),
         Some(&park),
-        "{what}: the closing reversal is the last stop"
+        "{what}: the closing bench readings are the last stop"
     );
     let closing = text(park);
+    // The bench procedure of stage 0: its headings turned by hand, not a half turn.
     assert!(
-        closing.contains("closing reversal")
-            && closing.contains("bench")
-            && closing.contains("180"),
+        closing.contains("closing bench readings")
+            && closing.contains(&format!("{} headings", zerocal_procedure::BENCH_HEADINGS))
+            && !closing.contains("180"),
         "{what}: {closing}"
     );
     assert!(
@@ -218,7 +219,7 @@ fn check(profile: &Profile, format: Format, poses_rad: &[[f64; JOINTS]]) -> Chec
     // The header says the procedure.
     let header = session.header.join(" ");
     assert!(
-        header.contains("captured twice") && header.contains("Closing reversal"),
+        header.contains("captured twice") && header.contains("Closing bench readings"),
         "{what}: {header}"
     );
     Checked {
@@ -257,7 +258,7 @@ fn every_builtin_profile_in_every_format_of_its_family_reads_back_to_the_plan() 
                 "{name:>20} {format:>8}: {} moves, {} captures, {} stops",
                 c.moves, c.captures, c.stops
             );
-            // Clip on, the OK after the half turn, to the flange, the closing reversal:
+            // Clip on, the OK after the half turn, to the flange, the closing bench readings:
             // every other capture is armed by the robot's moves (the overshoot included).
             assert_eq!(c.stops, 4, "{name} {format}: stops");
             written += 1;

@@ -1,6 +1,6 @@
 //! Building the session a program drives, once for every family: the stop to clip the
 //! pendant to the upper arm, stage 1's two poses, the stop to move it to the flange,
-//! every stage-2 pose of the plan, the park for the closing reversal. Each pose is
+//! every stage-2 pose of the plan, the park for the closing bench readings. Each pose is
 //! captured from below, then from above; each path is checked against the pendant's
 //! capture rule (it must not capture before the robot arrives; a move too small to arm
 //! the next capture gets a stop for an OK), and every point against the joint limits.
@@ -335,7 +335,7 @@ impl StepWriter<'_> {
     }
 
     /// The park (from `last`, where stage 2 or the check's poses ended) and the stop
-    /// for the closing reversal on the bench.
+    /// for the closing bench readings.
     fn closing_reversal(
         &mut self,
         poses: &SessionPoses,
@@ -348,7 +348,7 @@ impl StepWriter<'_> {
             ("stage 2", "session done; the pendant shows the result")
         };
         self.steps.push(Step::Comment(format!(
-            "zerocal: {done} done; the robot parks where the pendant went on the flange (tilted past its range) for the closing reversal"
+            "zerocal: {done} done; the robot parks where the pendant went on the flange (tilted past its range) for the closing bench readings"
         )));
         self.drive(
             &[*last, poses.park],
@@ -356,11 +356,17 @@ impl StepWriter<'_> {
             Mounting::Flange,
             "the park",
         )?;
+        // The pendant's own bench procedure, as in stage 0: its headings turned by hand.
         self.steps.push(Step::Stop(vec![
-            "zerocal: closing reversal: take the pendant off".into(),
-            "the flange to the bench of stage 0, let it".into(),
-            "capture, turn it 180 deg on the same spot,".into(),
-            "press OK, let it capture. Then continue.".into(),
+            "zerocal: closing bench readings: take the".into(),
+            "pendant off the flange to the bench of".into(),
+            format!(
+                "stage 0 and read it at {} headings, turned",
+                zerocal_procedure::BENCH_HEADINGS
+            ),
+            "by hand about a quarter turn on the same".into(),
+            "spot between them, as the pendant guides.".into(),
+            "Then continue.".into(),
         ]));
         self.steps.push(Step::Comment(format!("zerocal: {end}")));
         Ok(())

@@ -65,7 +65,7 @@ fn point_name(role: Role, next: Option<Capture>, time: &TimeModel<f64>, j1: &str
     match role {
         Role::Mount(Mounting::UpperArm) => "the mounting pose for the upper arm".to_owned(),
         Role::Mount(Mounting::Flange) => "the mounting pose for the flange".to_owned(),
-        Role::Park => "the park for the closing reversal".to_owned(),
+        Role::Park => "the park for the closing bench readings".to_owned(),
         Role::Turn => format!("{j1}'s half turn"),
         Role::Approach(Side::Below) => {
             format!("the point {} deg below {next}", time.approach_deg)

@@ -4,14 +4,14 @@
 //! 180° (an OK on the pendant arms the first reading) and that pose captured twice; a
 //! stop to move the pendant to the flange; every stage-2 pose of the plan captured
 //! twice, in the plan's order (the pendant's); then the robot parks and stops for the
-//! closing reversal on the bench. Every pose's first capture is reached with every
+//! closing bench readings. Every pose's first capture is reached with every
 //! joint moving in its positive direction, its second with every joint moving
 //! negative: the session averages the two, the middle of each gear's backlash.
 //!
 //! `--check` writes the check instead (after the offsets were entered): a stop to clip
 //! the pendant to the flange, the check's poses of the plan (core's `check_poses`, the
 //! pendant's choice on the same plan) each captured twice at the session's commanded
-//! angles, the park for the closing reversal; no stage 1.
+//! angles, the park for the closing bench readings; no stage 1.
 //!
 //! The session is built once ([`build`](fn@build)), as a list of [`Step`]s in the
 //! controller's joint degrees ([`Session`], [`steps`]), after the safety checks
@@ -81,7 +81,7 @@ pub struct ProgramArgs {
     pub out: PathBuf,
     /// Write the check instead of the session: after the offsets were entered, the
     /// pendant on the flange only, a handful of the plan's poses (the same commanded
-    /// angles as the session's, both approaches), then the closing reversal; no stage
+    /// angles as the session's, both approaches), then the closing bench readings; no stage
     /// 1. The plan must be the reference session's.
     #[arg(long)]
     pub check: bool,
@@ -111,7 +111,7 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
         let t = &check.time;
         let run_s = t.total_s - t.remount_s;
         return Ok(format!(
-            "wrote {written}: {} check program {} for {} ({} of the plan's {} poses, each captured twice; {} moves) at {} % speed.\nPredicted robot time {:.1} min: the program's run {:.1} min (moves, dwells, OKs; a check keeps it within {:.0} min) and {} mountings of the pendant {:.1} min (stated default each), the closing reversal included.\nRun it after stage 0 of the pendant's check mode. Check the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
+            "wrote {written}: {} check program {} for {} ({} of the plan's {} poses, each captured twice; {} moves) at {} % speed.\nPredicted robot time {:.1} min: the program's run {:.1} min (moves, dwells, OKs; a check keeps it within {:.0} min) and {} mountings of the pendant {:.1} min (stated default each), the closing bench readings included.\nRun it after stage 0 of the pendant's check mode. Check the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
             args.format,
             check.name,
             check.profile.name,
@@ -130,7 +130,7 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
     let written = write_files(&session, args)?;
     let t = &session.time;
     Ok(format!(
-        "wrote {written}: {} program {} for {} ({} stage-2 poses, each captured twice; {} moves), predicted robot time {:.1} min at {} % speed, the closing reversal included.\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
+        "wrote {written}: {} program {} for {} ({} stage-2 poses, each captured twice; {} moves), predicted robot time {:.1} min at {} % speed, the closing bench readings included.\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
         args.format,
         session.name,
         session.profile.name,

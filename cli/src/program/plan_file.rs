@@ -109,8 +109,11 @@ fn poses_of_csv(text: &str) -> Result<Vec<[f64; JOINTS]>, String> {
     Ok(rows)
 }
 
-/// Refuses a plan of too few or too many poses, or one whose joints 1-2 are not the
-/// profile's stage-1 pose (another robot's or another stage-1 pose's plan).
+/// Refuses a plan of too few or too many poses, or one whose joint 1 is not at the
+/// profile's stage-1 angle (another robot's or another stage-1 pose's plan). Stage 2
+/// holds joint 1 where stage 1 had it, but swings joint 2 (its transmission error is
+/// told from its zero that way, `zerocal plan --joint2-swing-deg`): joint 2 may be
+/// anywhere the program's limit checks let it.
 fn check_plan_poses(poses_deg: &[[f64; JOINTS]], profile: &Profile) -> Result<(), String> {
     if poses_deg.len() < zerocal_core::stage2::MIN_POSES
         || poses_deg.len() > zerocal_core::plan::MAX_POSES
@@ -122,17 +125,14 @@ fn check_plan_poses(poses_deg: &[[f64; JOINTS]], profile: &Profile) -> Result<()
             zerocal_core::plan::MAX_POSES
         ));
     }
-    let q1 = profile.stage1_joints_rad.map(f64::to_degrees);
+    let q1 = profile.stage1_joints_rad[0].to_degrees();
     for (i, q) in poses_deg.iter().enumerate() {
         // The plan prints 6 decimals: 1e-5 deg covers its rounding.
-        if (q[0] - q1[0]).abs() > 1e-5 || (q[1] - q1[1]).abs() > 1e-5 {
+        if (q[0] - q1).abs() > 1e-5 {
             return Err(format!(
-                "pose {}: joints 1-2 at ({}, {}) deg are not the profile's stage-1 values ({:.6}, {:.6}) (model degrees): a plan for another robot or stage-1 pose",
+                "pose {}: joint 1 at {} deg is not the profile's stage-1 value {q1:.6} deg (model degrees; stage 2 holds joint 1 there): a plan for another robot or stage-1 pose",
                 i + 1,
                 q[0],
-                q[1],
-                q1[0],
-                q1[1]
             ));
         }
     }

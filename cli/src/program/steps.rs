@@ -46,7 +46,7 @@ pub enum Side {
 pub enum Role {
     /// Where the pendant is clipped on (`crate::timing::mount_poses`).
     Mount(Mounting),
-    /// Where the robot parks for the closing reversal (the flange's mounting pose).
+    /// Where the robot parks for the closing bench readings (the flange's mounting pose).
     Park,
     /// Joint 1 turned by 180° (short of the turned pose by the approach distance).
     Turn,

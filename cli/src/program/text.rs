@@ -185,7 +185,7 @@ pub fn header_lines(
             tm.settle_s, tm.window_s, tm.sample_period_s
         ),
         format!(
-            "Predicted robot time {:.1} min, the closing reversal included: motion {:.0} s, dwell {:.0} s ({} captures), {} mountings {:.0} s, operator OKs {:.0} s.",
+            "Predicted robot time {:.1} min, the closing bench readings included: motion {:.0} s, dwell {:.0} s ({} captures), {} mountings {:.0} s, operator OKs {:.0} s.",
             time.total_s / 60.0,
             time.motion_s,
             time.dwell_s,
@@ -199,7 +199,7 @@ pub fn header_lines(
 }
 
 /// The header of a check's program: what it does (the flange, the check's poses of the
-/// plan, the closing reversal; no stage 1), the speed, the dwell, the predicted robot
+/// plan, the closing bench readings; no stage 1), the speed, the dwell, the predicted robot
 /// time and the collision warning. `plan_index` are the check's poses in the session
 /// plan of `plan_len` poses.
 pub fn check_header_lines(

@@ -7,7 +7,7 @@ CREATE		= DATE 23-11-14  TIME 22:13:20;
 MODIFIED	= DATE 23-11-14  TIME 22:13:20;
 FILE_NAME	= ;
 VERSION		= 0;
-LINE_COUNT	= 406;
+LINE_COUNT	= 601;
 MEMORY_SIZE	= 0;
 PROTECT		= READ_WRITE;
 TCD:  STACK_SIZE	= 0,
@@ -25,7 +25,7 @@ CONTROL_CODE	= 00000000 00000000;
    4:  ! calibration session. ;
    5:  ! Robot FANUC M-20iA ;
    6:  ! (profile ;
-   7:  ! fanuc-m20ia); 24 ;
+   7:  ! fanuc-m20ia); 43 ;
    8:  ! stage-2 poses. ;
    9:  ! Written by zerocal ;
   10:  ! 0.1.0; targets in ;
@@ -67,364 +67,559 @@ CONTROL_CODE	= 00000000 00000000;
   46:  ! load the same plan ;
   47:  ! into the pendant ;
   48:  ! (plan set). ;
-  49:  ! Closing reversal: ;
-  50:  ! the robot parks ;
-  51:  ! where the pendant ;
-  52:  ! went on the flange ;
-  53:  ! and stops; take the ;
-  54:  ! pendant off and ;
-  55:  ! reverse it on the ;
+  49:  ! Closing bench ;
+  50:  ! readings: the robot ;
+  51:  ! parks where the ;
+  52:  ! pendant went on the ;
+  53:  ! flange and stops; ;
+  54:  ! take the pendant off ;
+  55:  ! and read it on the ;
   56:  ! bench as in stage 0 ;
-  57:  ! (two readings, ;
-  58:  ! turned 180 deg on ;
-  59:  ! the same spot ;
-  60:  ! between them). The ;
-  61:  ! program ends there. ;
-  62:  ! Speed: joint moves ;
-  63:  ! at 10 % of each ;
-  64:  ! joint's maximum ;
-  65:  ! speed, exact stops. ;
-  66:  ! Dwell 3.1 s at each ;
-  67:  ! capture: settling 1 ;
-  68:  ! s (stated default) + ;
-  69:  ! the pendant's 2 s ;
-  70:  ! still window + 2 ;
-  71:  ! sensor periods of ;
-  72:  ! 0.05 s. ;
-  73:  ! Predicted robot time ;
-  74:  ! 8.9 min, the closing ;
-  75:  ! reversal included: ;
-  76:  ! motion 165 s, dwell ;
-  77:  ! 167 s (54 captures), ;
-  78:  ! 3 mountings 180 s, ;
-  79:  ! operator OKs 20 s. ;
-  80:  ! WARNING: the path is ;
-  81:  ! NOT checked for ;
-  82:  ! collisions with the ;
-  83:  ! cell, the pendant or ;
-  84:  ! its bracket. Check ;
-  85:  ! the cell, then step ;
-  86:  ! through the program ;
-  87:  ! once at reduced ;
-  88:  ! speed (T1) before ;
-  89:  ! running it. ;
-  90:  ! zerocal stage 1: the ;
-  91:  ! pendant goes on the ;
-  92:  ! upper arm here, ;
-  93:  ! tilted past its ;
-  94:  ! range so that it ;
-  95:  ! cannot capture yet ;
-  96:J P[1] 10% FINE ;
-  97:  MESSAGE[zerocal: clip the] ;
-  98:  MESSAGE[pendant to the upper] ;
-  99:  MESSAGE[arm (its screen at] ;
- 100:  MESSAGE[STAGE 1), then] ;
- 101:  MESSAGE[continue.] ;
- 102:  PAUSE ;
- 103:  ! zerocal stage 1: the ;
- 104:  ! stage-1 pose, ;
- 105:  ! captured from below, ;
- 106:  ! then from above ;
- 107:J P[2] 10% FINE ;
- 108:J P[3] 10% FINE ;
- 109:  WAIT   3.10(sec) ;
- 110:J P[4] 10% FINE ;
- 111:J P[5] 10% FINE ;
- 112:  WAIT   3.10(sec) ;
- 113:  ! zerocal stage 1: ;
- 114:  ! joint 1 turned by ;
- 115:  ! 180 deg, captured ;
- 116:  ! from below, then ;
- 117:  ! from above ;
- 118:J P[6] 10% FINE ;
- 119:J P[7] 10% FINE ;
- 120:J P[8] 10% FINE ;
- 121:  MESSAGE[zerocal: press OK on] ;
- 122:  MESSAGE[the pendant (after] ;
- 123:  MESSAGE[the half turn only] ;
- 124:  MESSAGE[OK arms it), then] ;
- 125:  MESSAGE[continue.] ;
- 126:  PAUSE ;
- 127:  WAIT   3.10(sec) ;
- 128:J P[9] 10% FINE ;
- 129:J P[10] 10% FINE ;
- 130:  WAIT   3.10(sec) ;
- 131:  ! zerocal: joint 1 ;
- 132:  ! back; the pendant ;
- 133:  ! goes from the upper ;
- 134:  ! arm to the flange ;
- 135:  ! here, both tilted ;
- 136:  ! past its range ;
- 137:J P[11] 10% FINE ;
- 138:  MESSAGE[zerocal: move the] ;
- 139:  MESSAGE[pendant from the] ;
- 140:  MESSAGE[upper arm to the] ;
- 141:  MESSAGE[flange (its screen] ;
- 142:  MESSAGE[at POSE 1), then] ;
- 143:  MESSAGE[continue.] ;
- 144:  PAUSE ;
- 145:  ! zerocal stage 2: ;
- 146:  ! pose 1 of 24, ;
- 147:  ! captured from below, ;
- 148:  ! then from above ;
- 149:J P[12] 10% FINE ;
- 150:J P[13] 10% FINE ;
- 151:  WAIT   3.10(sec) ;
- 152:J P[14] 10% FINE ;
- 153:J P[15] 10% FINE ;
- 154:  WAIT   3.10(sec) ;
- 155:  ! zerocal stage 2: ;
- 156:  ! pose 2 of 24, ;
- 157:  ! captured from below, ;
- 158:  ! then from above ;
- 159:J P[16] 10% FINE ;
- 160:J P[17] 10% FINE ;
- 161:  WAIT   3.10(sec) ;
- 162:J P[18] 10% FINE ;
- 163:J P[19] 10% FINE ;
- 164:  WAIT   3.10(sec) ;
- 165:  ! zerocal stage 2: ;
- 166:  ! pose 3 of 24, ;
- 167:  ! captured from below, ;
- 168:  ! then from above ;
- 169:J P[20] 10% FINE ;
- 170:J P[21] 10% FINE ;
- 171:  WAIT   3.10(sec) ;
- 172:J P[22] 10% FINE ;
- 173:J P[23] 10% FINE ;
- 174:  WAIT   3.10(sec) ;
- 175:  ! zerocal stage 2: ;
- 176:  ! pose 4 of 24, ;
- 177:  ! captured from below, ;
- 178:  ! then from above ;
- 179:J P[24] 10% FINE ;
- 180:J P[25] 10% FINE ;
- 181:  WAIT   3.10(sec) ;
- 182:J P[26] 10% FINE ;
- 183:J P[27] 10% FINE ;
- 184:  WAIT   3.10(sec) ;
- 185:  ! zerocal stage 2: ;
- 186:  ! pose 5 of 24, ;
- 187:  ! captured from below, ;
- 188:  ! then from above ;
- 189:J P[28] 10% FINE ;
- 190:J P[29] 10% FINE ;
- 191:  WAIT   3.10(sec) ;
- 192:J P[30] 10% FINE ;
- 193:J P[31] 10% FINE ;
- 194:  WAIT   3.10(sec) ;
- 195:  ! zerocal stage 2: ;
- 196:  ! pose 6 of 24, ;
- 197:  ! captured from below, ;
- 198:  ! then from above ;
- 199:J P[32] 10% FINE ;
- 200:J P[33] 10% FINE ;
- 201:  WAIT   3.10(sec) ;
- 202:J P[34] 10% FINE ;
- 203:J P[35] 10% FINE ;
- 204:  WAIT   3.10(sec) ;
- 205:  ! zerocal stage 2: ;
- 206:  ! pose 7 of 24, ;
- 207:  ! captured from below, ;
- 208:  ! then from above ;
- 209:J P[36] 10% FINE ;
- 210:J P[37] 10% FINE ;
- 211:  WAIT   3.10(sec) ;
- 212:J P[38] 10% FINE ;
- 213:J P[39] 10% FINE ;
- 214:  WAIT   3.10(sec) ;
- 215:  ! zerocal stage 2: ;
- 216:  ! pose 8 of 24, ;
- 217:  ! captured from below, ;
- 218:  ! then from above ;
- 219:J P[40] 10% FINE ;
- 220:J P[41] 10% FINE ;
- 221:  WAIT   3.10(sec) ;
- 222:J P[42] 10% FINE ;
- 223:J P[43] 10% FINE ;
- 224:  WAIT   3.10(sec) ;
- 225:  ! zerocal stage 2: ;
- 226:  ! pose 9 of 24, ;
- 227:  ! captured from below, ;
- 228:  ! then from above ;
- 229:J P[44] 10% FINE ;
- 230:J P[45] 10% FINE ;
- 231:  WAIT   3.10(sec) ;
- 232:J P[46] 10% FINE ;
- 233:J P[47] 10% FINE ;
- 234:  WAIT   3.10(sec) ;
- 235:  ! zerocal stage 2: ;
- 236:  ! pose 10 of 24, ;
- 237:  ! captured from below, ;
- 238:  ! then from above ;
- 239:J P[48] 10% FINE ;
- 240:J P[49] 10% FINE ;
- 241:  WAIT   3.10(sec) ;
- 242:J P[50] 10% FINE ;
- 243:J P[51] 10% FINE ;
- 244:  WAIT   3.10(sec) ;
- 245:  ! zerocal stage 2: ;
- 246:  ! pose 11 of 24, ;
- 247:  ! captured from below, ;
- 248:  ! then from above ;
- 249:J P[52] 10% FINE ;
- 250:J P[53] 10% FINE ;
- 251:  WAIT   3.10(sec) ;
- 252:J P[54] 10% FINE ;
- 253:J P[55] 10% FINE ;
- 254:  WAIT   3.10(sec) ;
- 255:  ! zerocal stage 2: ;
- 256:  ! pose 12 of 24, ;
- 257:  ! captured from below, ;
- 258:  ! then from above ;
- 259:J P[56] 10% FINE ;
- 260:J P[57] 10% FINE ;
- 261:  WAIT   3.10(sec) ;
- 262:J P[58] 10% FINE ;
- 263:J P[59] 10% FINE ;
- 264:  WAIT   3.10(sec) ;
- 265:  ! zerocal stage 2: ;
- 266:  ! pose 13 of 24, ;
- 267:  ! captured from below, ;
- 268:  ! then from above ;
- 269:J P[60] 10% FINE ;
- 270:J P[61] 10% FINE ;
- 271:  WAIT   3.10(sec) ;
- 272:J P[62] 10% FINE ;
- 273:J P[63] 10% FINE ;
- 274:  WAIT   3.10(sec) ;
- 275:  ! zerocal stage 2: ;
- 276:  ! pose 14 of 24, ;
- 277:  ! captured from below, ;
- 278:  ! then from above ;
- 279:J P[64] 10% FINE ;
- 280:J P[65] 10% FINE ;
- 281:  WAIT   3.10(sec) ;
- 282:J P[66] 10% FINE ;
- 283:J P[67] 10% FINE ;
- 284:  WAIT   3.10(sec) ;
- 285:  ! zerocal stage 2: ;
- 286:  ! pose 15 of 24, ;
- 287:  ! captured from below, ;
- 288:  ! then from above ;
- 289:J P[68] 10% FINE ;
- 290:J P[69] 10% FINE ;
- 291:  WAIT   3.10(sec) ;
- 292:J P[70] 10% FINE ;
- 293:J P[71] 10% FINE ;
- 294:  WAIT   3.10(sec) ;
- 295:  ! zerocal stage 2: ;
- 296:  ! pose 16 of 24, ;
- 297:  ! captured from below, ;
- 298:  ! then from above ;
- 299:J P[72] 10% FINE ;
- 300:J P[73] 10% FINE ;
- 301:  WAIT   3.10(sec) ;
- 302:J P[74] 10% FINE ;
- 303:J P[75] 10% FINE ;
- 304:  WAIT   3.10(sec) ;
- 305:  ! zerocal stage 2: ;
- 306:  ! pose 17 of 24, ;
- 307:  ! captured from below, ;
- 308:  ! then from above ;
- 309:J P[76] 10% FINE ;
- 310:J P[77] 10% FINE ;
- 311:  WAIT   3.10(sec) ;
- 312:J P[78] 10% FINE ;
- 313:J P[79] 10% FINE ;
- 314:  WAIT   3.10(sec) ;
- 315:  ! zerocal stage 2: ;
- 316:  ! pose 18 of 24, ;
- 317:  ! captured from below, ;
- 318:  ! then from above ;
- 319:J P[80] 10% FINE ;
- 320:J P[81] 10% FINE ;
- 321:  WAIT   3.10(sec) ;
- 322:J P[82] 10% FINE ;
- 323:J P[83] 10% FINE ;
- 324:  WAIT   3.10(sec) ;
- 325:  ! zerocal stage 2: ;
- 326:  ! pose 19 of 24, ;
- 327:  ! captured from below, ;
- 328:  ! then from above ;
- 329:J P[84] 10% FINE ;
- 330:J P[85] 10% FINE ;
- 331:  WAIT   3.10(sec) ;
- 332:J P[86] 10% FINE ;
- 333:J P[87] 10% FINE ;
- 334:  WAIT   3.10(sec) ;
- 335:  ! zerocal stage 2: ;
- 336:  ! pose 20 of 24, ;
- 337:  ! captured from below, ;
- 338:  ! then from above ;
- 339:J P[88] 10% FINE ;
- 340:J P[89] 10% FINE ;
- 341:  WAIT   3.10(sec) ;
- 342:J P[90] 10% FINE ;
- 343:J P[91] 10% FINE ;
- 344:  WAIT   3.10(sec) ;
- 345:  ! zerocal stage 2: ;
- 346:  ! pose 21 of 24, ;
- 347:  ! captured from below, ;
- 348:  ! then from above ;
- 349:J P[92] 10% FINE ;
- 350:J P[93] 10% FINE ;
- 351:  WAIT   3.10(sec) ;
- 352:J P[94] 10% FINE ;
- 353:J P[95] 10% FINE ;
- 354:  WAIT   3.10(sec) ;
- 355:  ! zerocal stage 2: ;
- 356:  ! pose 22 of 24, ;
- 357:  ! captured from below, ;
- 358:  ! then from above ;
- 359:J P[96] 10% FINE ;
- 360:J P[97] 10% FINE ;
- 361:  WAIT   3.10(sec) ;
- 362:J P[98] 10% FINE ;
- 363:J P[99] 10% FINE ;
- 364:  WAIT   3.10(sec) ;
- 365:  ! zerocal stage 2: ;
- 366:  ! pose 23 of 24, ;
- 367:  ! captured from below, ;
- 368:  ! then from above ;
- 369:J P[100] 10% FINE ;
- 370:J P[101] 10% FINE ;
- 371:  WAIT   3.10(sec) ;
- 372:J P[102] 10% FINE ;
- 373:J P[103] 10% FINE ;
- 374:  WAIT   3.10(sec) ;
- 375:  ! zerocal stage 2: ;
- 376:  ! pose 24 of 24, ;
- 377:  ! captured from below, ;
- 378:  ! then from above ;
- 379:J P[104] 10% FINE ;
- 380:J P[105] 10% FINE ;
- 381:  WAIT   3.10(sec) ;
- 382:J P[106] 10% FINE ;
- 383:J P[107] 10% FINE ;
- 384:  WAIT   3.10(sec) ;
- 385:  ! zerocal: stage 2 ;
- 386:  ! done; the robot ;
- 387:  ! parks where the ;
- 388:  ! pendant went on the ;
- 389:  ! flange (tilted past ;
- 390:  ! its range) for the ;
- 391:  ! closing reversal ;
- 392:J P[108] 10% FINE ;
- 393:  MESSAGE[zerocal: closing] ;
- 394:  MESSAGE[reversal: take the] ;
- 395:  MESSAGE[pendant off the] ;
- 396:  MESSAGE[flange to the bench] ;
- 397:  MESSAGE[of stage 0, let it] ;
- 398:  MESSAGE[capture, turn it 180] ;
- 399:  MESSAGE[deg on the same] ;
- 400:  MESSAGE[spot, press OK, let] ;
- 401:  MESSAGE[it capture. Then] ;
- 402:  MESSAGE[continue.] ;
- 403:  PAUSE ;
- 404:  ! zerocal: session ;
- 405:  ! done; the pendant ;
- 406:  ! shows the result ;
+  57:  ! (4 headings, turned ;
+  58:  ! by hand about a ;
+  59:  ! quarter turn on the ;
+  60:  ! same spot between ;
+  61:  ! them). The program ;
+  62:  ! ends there. ;
+  63:  ! Speed: joint moves ;
+  64:  ! at 10 % of each ;
+  65:  ! joint's maximum ;
+  66:  ! speed, exact stops. ;
+  67:  ! Dwell 3.1 s at each ;
+  68:  ! capture: settling 1 ;
+  69:  ! s (stated default) + ;
+  70:  ! the pendant's 2 s ;
+  71:  ! still window + 2 ;
+  72:  ! sensor periods of ;
+  73:  ! 0.05 s. ;
+  74:  ! Predicted robot time ;
+  75:  ! 12.7 min, the ;
+  76:  ! closing bench ;
+  77:  ! readings included: ;
+  78:  ! motion 253 s, dwell ;
+  79:  ! 291 s (94 captures), ;
+  80:  ! 3 mountings 180 s, ;
+  81:  ! operator OKs 40 s. ;
+  82:  ! WARNING: the path is ;
+  83:  ! NOT checked for ;
+  84:  ! collisions with the ;
+  85:  ! cell, the pendant or ;
+  86:  ! its bracket. Check ;
+  87:  ! the cell, then step ;
+  88:  ! through the program ;
+  89:  ! once at reduced ;
+  90:  ! speed (T1) before ;
+  91:  ! running it. ;
+  92:  ! zerocal stage 1: the ;
+  93:  ! pendant goes on the ;
+  94:  ! upper arm here, ;
+  95:  ! tilted past its ;
+  96:  ! range so that it ;
+  97:  ! cannot capture yet ;
+  98:J P[1] 10% FINE ;
+  99:  MESSAGE[zerocal: clip the] ;
+ 100:  MESSAGE[pendant to the upper] ;
+ 101:  MESSAGE[arm (its screen at] ;
+ 102:  MESSAGE[STAGE 1), then] ;
+ 103:  MESSAGE[continue.] ;
+ 104:  PAUSE ;
+ 105:  ! zerocal stage 1: the ;
+ 106:  ! stage-1 pose, ;
+ 107:  ! captured from below, ;
+ 108:  ! then from above ;
+ 109:J P[2] 10% FINE ;
+ 110:J P[3] 10% FINE ;
+ 111:  WAIT   3.10(sec) ;
+ 112:J P[4] 10% FINE ;
+ 113:J P[5] 10% FINE ;
+ 114:  WAIT   3.10(sec) ;
+ 115:  ! zerocal stage 1: ;
+ 116:  ! joint 1 turned by ;
+ 117:  ! 180 deg, captured ;
+ 118:  ! from below, then ;
+ 119:  ! from above ;
+ 120:J P[6] 10% FINE ;
+ 121:J P[7] 10% FINE ;
+ 122:J P[8] 10% FINE ;
+ 123:  MESSAGE[zerocal: press OK on] ;
+ 124:  MESSAGE[the pendant (after] ;
+ 125:  MESSAGE[the half turn only] ;
+ 126:  MESSAGE[OK arms it), then] ;
+ 127:  MESSAGE[continue.] ;
+ 128:  PAUSE ;
+ 129:  WAIT   3.10(sec) ;
+ 130:J P[9] 10% FINE ;
+ 131:J P[10] 10% FINE ;
+ 132:  WAIT   3.10(sec) ;
+ 133:  ! zerocal: joint 1 ;
+ 134:  ! back; the pendant ;
+ 135:  ! goes from the upper ;
+ 136:  ! arm to the flange ;
+ 137:  ! here, both tilted ;
+ 138:  ! past its range ;
+ 139:J P[11] 10% FINE ;
+ 140:  MESSAGE[zerocal: move the] ;
+ 141:  MESSAGE[pendant from the] ;
+ 142:  MESSAGE[upper arm to the] ;
+ 143:  MESSAGE[flange (its screen] ;
+ 144:  MESSAGE[at POSE 1), then] ;
+ 145:  MESSAGE[continue.] ;
+ 146:  PAUSE ;
+ 147:  ! zerocal stage 2: ;
+ 148:  ! pose 1 of 43, ;
+ 149:  ! captured from below, ;
+ 150:  ! then from above ;
+ 151:J P[12] 10% FINE ;
+ 152:J P[13] 10% FINE ;
+ 153:  WAIT   3.10(sec) ;
+ 154:J P[14] 10% FINE ;
+ 155:J P[15] 10% FINE ;
+ 156:  WAIT   3.10(sec) ;
+ 157:  ! zerocal stage 2: ;
+ 158:  ! pose 2 of 43, ;
+ 159:  ! captured from below, ;
+ 160:  ! then from above ;
+ 161:J P[16] 10% FINE ;
+ 162:J P[17] 10% FINE ;
+ 163:  WAIT   3.10(sec) ;
+ 164:J P[18] 10% FINE ;
+ 165:J P[19] 10% FINE ;
+ 166:  WAIT   3.10(sec) ;
+ 167:  ! zerocal stage 2: ;
+ 168:  ! pose 3 of 43, ;
+ 169:  ! captured from below, ;
+ 170:  ! then from above ;
+ 171:J P[20] 10% FINE ;
+ 172:J P[21] 10% FINE ;
+ 173:  WAIT   3.10(sec) ;
+ 174:J P[22] 10% FINE ;
+ 175:J P[23] 10% FINE ;
+ 176:  WAIT   3.10(sec) ;
+ 177:  ! zerocal stage 2: ;
+ 178:  ! pose 4 of 43, ;
+ 179:  ! captured from below, ;
+ 180:  ! then from above ;
+ 181:J P[24] 10% FINE ;
+ 182:J P[25] 10% FINE ;
+ 183:  WAIT   3.10(sec) ;
+ 184:J P[26] 10% FINE ;
+ 185:J P[27] 10% FINE ;
+ 186:  WAIT   3.10(sec) ;
+ 187:  ! zerocal stage 2: ;
+ 188:  ! pose 5 of 43, ;
+ 189:  ! captured from below, ;
+ 190:  ! then from above ;
+ 191:J P[28] 10% FINE ;
+ 192:J P[29] 10% FINE ;
+ 193:  WAIT   3.10(sec) ;
+ 194:J P[30] 10% FINE ;
+ 195:J P[31] 10% FINE ;
+ 196:  WAIT   3.10(sec) ;
+ 197:  ! zerocal stage 2: ;
+ 198:  ! pose 6 of 43, ;
+ 199:  ! captured from below, ;
+ 200:  ! then from above ;
+ 201:J P[32] 10% FINE ;
+ 202:J P[33] 10% FINE ;
+ 203:  WAIT   3.10(sec) ;
+ 204:J P[34] 10% FINE ;
+ 205:J P[35] 10% FINE ;
+ 206:  WAIT   3.10(sec) ;
+ 207:  ! zerocal stage 2: ;
+ 208:  ! pose 7 of 43, ;
+ 209:  ! captured from below, ;
+ 210:  ! then from above ;
+ 211:J P[36] 10% FINE ;
+ 212:J P[37] 10% FINE ;
+ 213:  WAIT   3.10(sec) ;
+ 214:J P[38] 10% FINE ;
+ 215:J P[39] 10% FINE ;
+ 216:  WAIT   3.10(sec) ;
+ 217:  ! zerocal stage 2: ;
+ 218:  ! pose 8 of 43, ;
+ 219:  ! captured from below, ;
+ 220:  ! then from above ;
+ 221:J P[40] 10% FINE ;
+ 222:J P[41] 10% FINE ;
+ 223:  WAIT   3.10(sec) ;
+ 224:J P[42] 10% FINE ;
+ 225:J P[43] 10% FINE ;
+ 226:  WAIT   3.10(sec) ;
+ 227:  ! zerocal stage 2: ;
+ 228:  ! pose 9 of 43, ;
+ 229:  ! captured from below, ;
+ 230:  ! then from above ;
+ 231:J P[44] 10% FINE ;
+ 232:J P[45] 10% FINE ;
+ 233:  WAIT   3.10(sec) ;
+ 234:J P[46] 10% FINE ;
+ 235:J P[47] 10% FINE ;
+ 236:  WAIT   3.10(sec) ;
+ 237:  ! zerocal stage 2: ;
+ 238:  ! pose 10 of 43, ;
+ 239:  ! captured from below, ;
+ 240:  ! then from above ;
+ 241:J P[48] 10% FINE ;
+ 242:J P[49] 10% FINE ;
+ 243:  WAIT   3.10(sec) ;
+ 244:J P[50] 10% FINE ;
+ 245:J P[51] 10% FINE ;
+ 246:  WAIT   3.10(sec) ;
+ 247:  ! zerocal stage 2: ;
+ 248:  ! pose 11 of 43, ;
+ 249:  ! captured from below, ;
+ 250:  ! then from above ;
+ 251:J P[52] 10% FINE ;
+ 252:J P[53] 10% FINE ;
+ 253:  WAIT   3.10(sec) ;
+ 254:J P[54] 10% FINE ;
+ 255:J P[55] 10% FINE ;
+ 256:  WAIT   3.10(sec) ;
+ 257:  ! zerocal stage 2: ;
+ 258:  ! pose 12 of 43, ;
+ 259:  ! captured from below, ;
+ 260:  ! then from above ;
+ 261:J P[56] 10% FINE ;
+ 262:J P[57] 10% FINE ;
+ 263:  WAIT   3.10(sec) ;
+ 264:J P[58] 10% FINE ;
+ 265:J P[59] 10% FINE ;
+ 266:  WAIT   3.10(sec) ;
+ 267:  ! zerocal stage 2: ;
+ 268:  ! pose 13 of 43, ;
+ 269:  ! captured from below, ;
+ 270:  ! then from above ;
+ 271:J P[60] 10% FINE ;
+ 272:J P[61] 10% FINE ;
+ 273:  WAIT   3.10(sec) ;
+ 274:J P[62] 10% FINE ;
+ 275:J P[63] 10% FINE ;
+ 276:  WAIT   3.10(sec) ;
+ 277:  ! zerocal stage 2: ;
+ 278:  ! pose 14 of 43, ;
+ 279:  ! captured from below, ;
+ 280:  ! then from above ;
+ 281:J P[64] 10% FINE ;
+ 282:J P[65] 10% FINE ;
+ 283:  WAIT   3.10(sec) ;
+ 284:J P[66] 10% FINE ;
+ 285:J P[67] 10% FINE ;
+ 286:  WAIT   3.10(sec) ;
+ 287:  ! zerocal stage 2: ;
+ 288:  ! pose 15 of 43, ;
+ 289:  ! captured from below, ;
+ 290:  ! then from above ;
+ 291:J P[68] 10% FINE ;
+ 292:J P[69] 10% FINE ;
+ 293:  WAIT   3.10(sec) ;
+ 294:J P[70] 10% FINE ;
+ 295:J P[71] 10% FINE ;
+ 296:  WAIT   3.10(sec) ;
+ 297:  ! zerocal stage 2: ;
+ 298:  ! pose 16 of 43, ;
+ 299:  ! captured from below, ;
+ 300:  ! then from above ;
+ 301:J P[72] 10% FINE ;
+ 302:J P[73] 10% FINE ;
+ 303:  WAIT   3.10(sec) ;
+ 304:J P[74] 10% FINE ;
+ 305:J P[75] 10% FINE ;
+ 306:  WAIT   3.10(sec) ;
+ 307:  ! zerocal stage 2: ;
+ 308:  ! pose 17 of 43, ;
+ 309:  ! captured from below, ;
+ 310:  ! then from above ;
+ 311:J P[76] 10% FINE ;
+ 312:J P[77] 10% FINE ;
+ 313:  WAIT   3.10(sec) ;
+ 314:J P[78] 10% FINE ;
+ 315:J P[79] 10% FINE ;
+ 316:  WAIT   3.10(sec) ;
+ 317:  ! zerocal stage 2: ;
+ 318:  ! pose 18 of 43, ;
+ 319:  ! captured from below, ;
+ 320:  ! then from above ;
+ 321:J P[80] 10% FINE ;
+ 322:J P[81] 10% FINE ;
+ 323:  WAIT   3.10(sec) ;
+ 324:J P[82] 10% FINE ;
+ 325:J P[83] 10% FINE ;
+ 326:  WAIT   3.10(sec) ;
+ 327:  ! zerocal stage 2: ;
+ 328:  ! pose 19 of 43, ;
+ 329:  ! captured from below, ;
+ 330:  ! then from above ;
+ 331:J P[84] 10% FINE ;
+ 332:J P[85] 10% FINE ;
+ 333:  WAIT   3.10(sec) ;
+ 334:J P[86] 10% FINE ;
+ 335:J P[87] 10% FINE ;
+ 336:  WAIT   3.10(sec) ;
+ 337:  ! zerocal stage 2: ;
+ 338:  ! pose 20 of 43, ;
+ 339:  ! captured from below, ;
+ 340:  ! then from above ;
+ 341:J P[88] 10% FINE ;
+ 342:J P[89] 10% FINE ;
+ 343:  WAIT   3.10(sec) ;
+ 344:J P[90] 10% FINE ;
+ 345:J P[91] 10% FINE ;
+ 346:  WAIT   3.10(sec) ;
+ 347:  ! zerocal stage 2: ;
+ 348:  ! pose 21 of 43, ;
+ 349:  ! captured from below, ;
+ 350:  ! then from above ;
+ 351:J P[92] 10% FINE ;
+ 352:J P[93] 10% FINE ;
+ 353:  WAIT   3.10(sec) ;
+ 354:J P[94] 10% FINE ;
+ 355:J P[95] 10% FINE ;
+ 356:  WAIT   3.10(sec) ;
+ 357:  ! zerocal stage 2: ;
+ 358:  ! pose 22 of 43, ;
+ 359:  ! captured from below, ;
+ 360:  ! then from above ;
+ 361:J P[96] 10% FINE ;
+ 362:J P[97] 10% FINE ;
+ 363:  WAIT   3.10(sec) ;
+ 364:J P[98] 10% FINE ;
+ 365:J P[99] 10% FINE ;
+ 366:  WAIT   3.10(sec) ;
+ 367:  ! zerocal stage 2: ;
+ 368:  ! pose 23 of 43, ;
+ 369:  ! captured from below, ;
+ 370:  ! then from above ;
+ 371:J P[100] 10% FINE ;
+ 372:J P[101] 10% FINE ;
+ 373:  WAIT   3.10(sec) ;
+ 374:J P[102] 10% FINE ;
+ 375:J P[103] 10% FINE ;
+ 376:  WAIT   3.10(sec) ;
+ 377:  ! zerocal stage 2: ;
+ 378:  ! pose 24 of 43, ;
+ 379:  ! captured from below, ;
+ 380:  ! then from above ;
+ 381:J P[104] 10% FINE ;
+ 382:J P[105] 10% FINE ;
+ 383:  WAIT   3.10(sec) ;
+ 384:J P[106] 10% FINE ;
+ 385:J P[107] 10% FINE ;
+ 386:  WAIT   3.10(sec) ;
+ 387:  ! zerocal stage 2: ;
+ 388:  ! pose 25 of 43, ;
+ 389:  ! captured from below, ;
+ 390:  ! then from above ;
+ 391:J P[108] 10% FINE ;
+ 392:J P[109] 10% FINE ;
+ 393:  WAIT   3.10(sec) ;
+ 394:J P[110] 10% FINE ;
+ 395:J P[111] 10% FINE ;
+ 396:  WAIT   3.10(sec) ;
+ 397:  ! zerocal stage 2: ;
+ 398:  ! pose 26 of 43, ;
+ 399:  ! captured from below, ;
+ 400:  ! then from above ;
+ 401:J P[112] 10% FINE ;
+ 402:J P[113] 10% FINE ;
+ 403:  WAIT   3.10(sec) ;
+ 404:J P[114] 10% FINE ;
+ 405:J P[115] 10% FINE ;
+ 406:  WAIT   3.10(sec) ;
+ 407:  ! zerocal stage 2: ;
+ 408:  ! pose 27 of 43, ;
+ 409:  ! captured from below, ;
+ 410:  ! then from above ;
+ 411:J P[116] 10% FINE ;
+ 412:J P[117] 10% FINE ;
+ 413:  WAIT   3.10(sec) ;
+ 414:J P[118] 10% FINE ;
+ 415:J P[119] 10% FINE ;
+ 416:  WAIT   3.10(sec) ;
+ 417:  ! zerocal stage 2: ;
+ 418:  ! pose 28 of 43, ;
+ 419:  ! captured from below, ;
+ 420:  ! then from above ;
+ 421:J P[120] 10% FINE ;
+ 422:J P[121] 10% FINE ;
+ 423:  WAIT   3.10(sec) ;
+ 424:J P[122] 10% FINE ;
+ 425:J P[123] 10% FINE ;
+ 426:  WAIT   3.10(sec) ;
+ 427:  ! zerocal stage 2: ;
+ 428:  ! pose 29 of 43, ;
+ 429:  ! captured from below, ;
+ 430:  ! then from above ;
+ 431:J P[124] 10% FINE ;
+ 432:J P[125] 10% FINE ;
+ 433:  WAIT   3.10(sec) ;
+ 434:J P[126] 10% FINE ;
+ 435:J P[127] 10% FINE ;
+ 436:  WAIT   3.10(sec) ;
+ 437:  ! zerocal stage 2: ;
+ 438:  ! pose 30 of 43, ;
+ 439:  ! captured from below, ;
+ 440:  ! then from above ;
+ 441:J P[128] 10% FINE ;
+ 442:J P[129] 10% FINE ;
+ 443:  WAIT   3.10(sec) ;
+ 444:J P[130] 10% FINE ;
+ 445:J P[131] 10% FINE ;
+ 446:  WAIT   3.10(sec) ;
+ 447:  ! zerocal stage 2: ;
+ 448:  ! pose 31 of 43, ;
+ 449:  ! captured from below, ;
+ 450:  ! then from above ;
+ 451:J P[132] 10% FINE ;
+ 452:J P[133] 10% FINE ;
+ 453:  WAIT   3.10(sec) ;
+ 454:J P[134] 10% FINE ;
+ 455:J P[135] 10% FINE ;
+ 456:  WAIT   3.10(sec) ;
+ 457:  ! zerocal stage 2: ;
+ 458:  ! pose 32 of 43, ;
+ 459:  ! captured from below, ;
+ 460:  ! then from above ;
+ 461:J P[136] 10% FINE ;
+ 462:J P[137] 10% FINE ;
+ 463:  WAIT   3.10(sec) ;
+ 464:J P[138] 10% FINE ;
+ 465:J P[139] 10% FINE ;
+ 466:  WAIT   3.10(sec) ;
+ 467:  ! zerocal stage 2: ;
+ 468:  ! pose 33 of 43, ;
+ 469:  ! captured from below, ;
+ 470:  ! then from above ;
+ 471:J P[140] 10% FINE ;
+ 472:J P[141] 10% FINE ;
+ 473:  WAIT   3.10(sec) ;
+ 474:J P[142] 10% FINE ;
+ 475:J P[143] 10% FINE ;
+ 476:  WAIT   3.10(sec) ;
+ 477:  ! zerocal stage 2: ;
+ 478:  ! pose 34 of 43, ;
+ 479:  ! captured from below, ;
+ 480:  ! then from above ;
+ 481:J P[144] 10% FINE ;
+ 482:J P[145] 10% FINE ;
+ 483:  WAIT   3.10(sec) ;
+ 484:J P[146] 10% FINE ;
+ 485:J P[147] 10% FINE ;
+ 486:  WAIT   3.10(sec) ;
+ 487:  ! zerocal stage 2: ;
+ 488:  ! pose 35 of 43, ;
+ 489:  ! captured from below, ;
+ 490:  ! then from above ;
+ 491:J P[148] 10% FINE ;
+ 492:J P[149] 10% FINE ;
+ 493:  WAIT   3.10(sec) ;
+ 494:J P[150] 10% FINE ;
+ 495:J P[151] 10% FINE ;
+ 496:  WAIT   3.10(sec) ;
+ 497:  ! zerocal stage 2: ;
+ 498:  ! pose 36 of 43, ;
+ 499:  ! captured from below, ;
+ 500:  ! then from above ;
+ 501:J P[152] 10% FINE ;
+ 502:J P[153] 10% FINE ;
+ 503:  WAIT   3.10(sec) ;
+ 504:J P[154] 10% FINE ;
+ 505:J P[155] 10% FINE ;
+ 506:  WAIT   3.10(sec) ;
+ 507:  ! zerocal stage 2: ;
+ 508:  ! pose 37 of 43, ;
+ 509:  ! captured from below, ;
+ 510:  ! then from above ;
+ 511:J P[156] 10% FINE ;
+ 512:J P[157] 10% FINE ;
+ 513:  WAIT   3.10(sec) ;
+ 514:J P[158] 10% FINE ;
+ 515:J P[159] 10% FINE ;
+ 516:  WAIT   3.10(sec) ;
+ 517:  ! zerocal stage 2: ;
+ 518:  ! pose 38 of 43, ;
+ 519:  ! captured from below, ;
+ 520:  ! then from above ;
+ 521:J P[160] 10% FINE ;
+ 522:J P[161] 10% FINE ;
+ 523:  WAIT   3.10(sec) ;
+ 524:J P[162] 10% FINE ;
+ 525:J P[163] 10% FINE ;
+ 526:  WAIT   3.10(sec) ;
+ 527:  ! zerocal stage 2: ;
+ 528:  ! pose 39 of 43, ;
+ 529:  ! captured from below, ;
+ 530:  ! then from above ;
+ 531:J P[164] 10% FINE ;
+ 532:J P[165] 10% FINE ;
+ 533:  WAIT   3.10(sec) ;
+ 534:J P[166] 10% FINE ;
+ 535:J P[167] 10% FINE ;
+ 536:  WAIT   3.10(sec) ;
+ 537:  ! zerocal stage 2: ;
+ 538:  ! pose 40 of 43, ;
+ 539:  ! captured from below, ;
+ 540:  ! then from above ;
+ 541:J P[168] 10% FINE ;
+ 542:J P[169] 10% FINE ;
+ 543:  WAIT   3.10(sec) ;
+ 544:J P[170] 10% FINE ;
+ 545:J P[171] 10% FINE ;
+ 546:  WAIT   3.10(sec) ;
+ 547:  ! zerocal stage 2: ;
+ 548:  ! pose 41 of 43, ;
+ 549:  ! captured from below, ;
+ 550:  ! then from above ;
+ 551:J P[172] 10% FINE ;
+ 552:J P[173] 10% FINE ;
+ 553:  WAIT   3.10(sec) ;
+ 554:J P[174] 10% FINE ;
+ 555:J P[175] 10% FINE ;
+ 556:  WAIT   3.10(sec) ;
+ 557:  ! zerocal stage 2: ;
+ 558:  ! pose 42 of 43, ;
+ 559:  ! captured from below, ;
+ 560:  ! then from above ;
+ 561:J P[176] 10% FINE ;
+ 562:J P[177] 10% FINE ;
+ 563:  WAIT   3.10(sec) ;
+ 564:J P[178] 10% FINE ;
+ 565:J P[179] 10% FINE ;
+ 566:  WAIT   3.10(sec) ;
+ 567:  ! zerocal stage 2: ;
+ 568:  ! pose 43 of 43, ;
+ 569:  ! captured from below, ;
+ 570:  ! then from above ;
+ 571:J P[180] 10% FINE ;
+ 572:J P[181] 10% FINE ;
+ 573:  WAIT   3.10(sec) ;
+ 574:J P[182] 10% FINE ;
+ 575:J P[183] 10% FINE ;
+ 576:  WAIT   3.10(sec) ;
+ 577:  ! zerocal: stage 2 ;
+ 578:  ! done; the robot ;
+ 579:  ! parks where the ;
+ 580:  ! pendant went on the ;
+ 581:  ! flange (tilted past ;
+ 582:  ! its range) for the ;
+ 583:  ! closing bench ;
+ 584:  ! readings ;
+ 585:J P[184] 10% FINE ;
+ 586:  MESSAGE[zerocal: closing] ;
+ 587:  MESSAGE[bench readings: take] ;
+ 588:  MESSAGE[the pendant off the] ;
+ 589:  MESSAGE[flange to the bench] ;
+ 590:  MESSAGE[of stage 0 and read] ;
+ 591:  MESSAGE[it at 4 headings,] ;
+ 592:  MESSAGE[turned by hand about] ;
+ 593:  MESSAGE[a quarter turn on] ;
+ 594:  MESSAGE[the same spot] ;
+ 595:  MESSAGE[between them, as the] ;
+ 596:  MESSAGE[pendant guides. Then] ;
+ 597:  MESSAGE[continue.] ;
+ 598:  PAUSE ;
+ 599:  ! zerocal: session ;
+ 600:  ! done; the pendant ;
+ 601:  ! shows the result ;
 /POS
 P[1]{
    GP1:
@@ -489,589 +684,1045 @@ P[10]{
 P[11]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   -43.822 deg,
-	J4=   -86.555 deg,	J5=   -90.492 deg,	J6=  -265.246 deg
+	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=    60.895 deg,	J6=   175.262 deg
 };
 P[12]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=     0.178 deg,
-	J4=   -87.555 deg,	J5=   -91.492 deg,	J6=  -266.246 deg
+	J1=   -91.000 deg,	J2=    61.151 deg,	J3=   102.154 deg,
+	J4=   147.102 deg,	J5=   104.895 deg,	J6=   174.262 deg
 };
 P[13]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     1.178 deg,
-	J4=   -86.555 deg,	J5=   -90.492 deg,	J6=  -265.246 deg
+	J1=   -90.000 deg,	J2=    62.151 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=   105.895 deg,	J6=   175.262 deg
 };
 P[14]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=     5.178 deg,
-	J4=   -82.555 deg,	J5=   -86.492 deg,	J6=  -261.246 deg
+	J1=   -86.000 deg,	J2=    66.151 deg,	J3=   107.154 deg,
+	J4=   152.102 deg,	J5=   109.895 deg,	J6=   179.262 deg
 };
 P[15]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     1.178 deg,
-	J4=   -86.555 deg,	J5=   -90.492 deg,	J6=  -265.246 deg
+	J1=   -90.000 deg,	J2=    62.151 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=   105.895 deg,	J6=   175.262 deg
 };
 P[16]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   -26.045 deg,
-	J4=    -5.199 deg,	J5=    22.623 deg,	J6=     1.437 deg
+	J1=   -91.000 deg,	J2=   -39.952 deg,	J3=   120.905 deg,
+	J4=   160.086 deg,	J5=   120.894 deg,	J6=   171.088 deg
 };
 P[17]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.045 deg,
-	J4=    -4.199 deg,	J5=    23.623 deg,	J6=     2.437 deg
+	J1=   -90.000 deg,	J2=   -38.952 deg,	J3=   121.905 deg,
+	J4=   161.086 deg,	J5=   121.894 deg,	J6=   172.088 deg
 };
 P[18]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   -21.045 deg,
-	J4=    -0.199 deg,	J5=    27.623 deg,	J6=     6.437 deg
+	J1=   -86.000 deg,	J2=   -34.952 deg,	J3=   125.905 deg,
+	J4=   165.086 deg,	J5=   125.894 deg,	J6=   176.088 deg
 };
 P[19]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -25.045 deg,
-	J4=    -4.199 deg,	J5=    23.623 deg,	J6=     2.437 deg
+	J1=   -90.000 deg,	J2=   -38.952 deg,	J3=   121.905 deg,
+	J4=   161.086 deg,	J5=   121.894 deg,	J6=   172.088 deg
 };
 P[20]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=     6.063 deg,
-	J4=   -96.484 deg,	J5=    90.919 deg,	J6=   100.661 deg
+	J1=   -91.000 deg,	J2=   -75.702 deg,	J3=   159.383 deg,
+	J4=    77.695 deg,	J5=    47.882 deg,	J6=   115.828 deg
 };
 P[21]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     7.063 deg,
-	J4=   -95.484 deg,	J5=    91.919 deg,	J6=   101.661 deg
+	J1=   -90.000 deg,	J2=   -74.702 deg,	J3=   160.383 deg,
+	J4=    78.695 deg,	J5=    48.882 deg,	J6=   116.828 deg
 };
 P[22]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    11.063 deg,
-	J4=   -91.484 deg,	J5=    95.919 deg,	J6=   105.661 deg
+	J1=   -86.000 deg,	J2=   -70.702 deg,	J3=   164.383 deg,
+	J4=    82.695 deg,	J5=    52.882 deg,	J6=   120.828 deg
 };
 P[23]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     7.063 deg,
-	J4=   -95.484 deg,	J5=    91.919 deg,	J6=   101.661 deg
+	J1=   -90.000 deg,	J2=   -74.702 deg,	J3=   160.383 deg,
+	J4=    78.695 deg,	J5=    48.882 deg,	J6=   116.828 deg
 };
 P[24]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=     6.618 deg,
-	J4=    90.322 deg,	J5=   120.054 deg,	J6=   258.800 deg
+	J1=   -91.000 deg,	J2=   -63.959 deg,	J3=   182.427 deg,
+	J4=   113.900 deg,	J5=    -3.145 deg,	J6=    60.365 deg
 };
 P[25]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     7.618 deg,
-	J4=    91.322 deg,	J5=   121.054 deg,	J6=   259.800 deg
+	J1=   -90.000 deg,	J2=   -62.959 deg,	J3=   183.427 deg,
+	J4=   114.900 deg,	J5=    -2.145 deg,	J6=    61.365 deg
 };
 P[26]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    11.618 deg,
-	J4=    95.322 deg,	J5=   125.054 deg,	J6=   263.800 deg
+	J1=   -86.000 deg,	J2=   -58.959 deg,	J3=   187.427 deg,
+	J4=   118.900 deg,	J5=     1.855 deg,	J6=    65.365 deg
 };
 P[27]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=     7.618 deg,
-	J4=    91.322 deg,	J5=   121.054 deg,	J6=   259.800 deg
+	J1=   -90.000 deg,	J2=   -62.959 deg,	J3=   183.427 deg,
+	J4=   114.900 deg,	J5=    -2.145 deg,	J6=    61.365 deg
 };
 P[28]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=    56.693 deg,
-	J4=   157.290 deg,	J5=    58.281 deg,	J6=   192.060 deg
+	J1=   -91.000 deg,	J2=   -62.544 deg,	J3=   114.966 deg,
+	J4=    10.497 deg,	J5=  -118.660 deg,	J6=     7.821 deg
 };
 P[29]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    57.693 deg,
-	J4=   158.290 deg,	J5=    59.281 deg,	J6=   193.060 deg
+	J1=   -90.000 deg,	J2=   -61.544 deg,	J3=   115.966 deg,
+	J4=    11.497 deg,	J5=  -117.660 deg,	J6=     8.821 deg
 };
 P[30]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    61.693 deg,
-	J4=   162.290 deg,	J5=    63.281 deg,	J6=   197.060 deg
+	J1=   -86.000 deg,	J2=   -57.544 deg,	J3=   119.966 deg,
+	J4=    15.497 deg,	J5=  -113.660 deg,	J6=    12.821 deg
 };
 P[31]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    57.693 deg,
-	J4=   158.290 deg,	J5=    59.281 deg,	J6=   193.060 deg
+	J1=   -90.000 deg,	J2=   -61.544 deg,	J3=   115.966 deg,
+	J4=    11.497 deg,	J5=  -117.660 deg,	J6=     8.821 deg
 };
 P[32]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=    19.922 deg,
-	J4=    21.700 deg,	J5=   -27.161 deg,	J6=   -22.825 deg
+	J1=   -91.000 deg,	J2=   -65.262 deg,	J3=   138.286 deg,
+	J4=    27.566 deg,	J5=  -136.754 deg,	J6=    18.697 deg
 };
 P[33]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    20.922 deg,
-	J4=    22.700 deg,	J5=   -26.161 deg,	J6=   -21.825 deg
+	J1=   -90.000 deg,	J2=   -64.262 deg,	J3=   139.286 deg,
+	J4=    28.566 deg,	J5=  -135.754 deg,	J6=    19.697 deg
 };
 P[34]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    24.922 deg,
-	J4=    26.700 deg,	J5=   -22.161 deg,	J6=   -17.825 deg
+	J1=   -86.000 deg,	J2=   -60.262 deg,	J3=   143.286 deg,
+	J4=    32.566 deg,	J5=  -131.754 deg,	J6=    23.697 deg
 };
 P[35]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    20.922 deg,
-	J4=    22.700 deg,	J5=   -26.161 deg,	J6=   -21.825 deg
+	J1=   -90.000 deg,	J2=   -64.262 deg,	J3=   139.286 deg,
+	J4=    28.566 deg,	J5=  -135.754 deg,	J6=    19.697 deg
 };
 P[36]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=    -6.874 deg,
-	J4=    82.791 deg,	J5=  -131.084 deg,	J6=   -99.816 deg
+	J1=   -91.000 deg,	J2=   -32.011 deg,	J3=   133.942 deg,
+	J4=    30.778 deg,	J5=  -132.782 deg,	J6=    19.788 deg
 };
 P[37]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -5.874 deg,
-	J4=    83.791 deg,	J5=  -130.084 deg,	J6=   -98.816 deg
+	J1=   -90.000 deg,	J2=   -31.011 deg,	J3=   134.942 deg,
+	J4=    31.778 deg,	J5=  -131.782 deg,	J6=    20.788 deg
 };
 P[38]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    -1.874 deg,
-	J4=    87.791 deg,	J5=  -126.084 deg,	J6=   -94.816 deg
+	J1=   -86.000 deg,	J2=   -27.011 deg,	J3=   138.942 deg,
+	J4=    35.778 deg,	J5=  -127.782 deg,	J6=    24.788 deg
 };
 P[39]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    -5.874 deg,
-	J4=    83.791 deg,	J5=  -130.084 deg,	J6=   -98.816 deg
+	J1=   -90.000 deg,	J2=   -31.011 deg,	J3=   134.942 deg,
+	J4=    31.778 deg,	J5=  -131.782 deg,	J6=    20.788 deg
 };
 P[40]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   -50.777 deg,
-	J4=   159.511 deg,	J5=   -53.698 deg,	J6=  -170.020 deg
+	J1=   -91.000 deg,	J2=    -5.875 deg,	J3=   146.414 deg,
+	J4=   -37.885 deg,	J5=  -137.011 deg,	J6=   -31.865 deg
 };
 P[41]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -49.777 deg,
-	J4=   160.511 deg,	J5=   -52.698 deg,	J6=  -169.020 deg
+	J1=   -90.000 deg,	J2=    -4.875 deg,	J3=   147.414 deg,
+	J4=   -36.885 deg,	J5=  -136.011 deg,	J6=   -30.865 deg
 };
 P[42]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   -45.777 deg,
-	J4=   164.511 deg,	J5=   -48.698 deg,	J6=  -165.020 deg
+	J1=   -86.000 deg,	J2=    -0.875 deg,	J3=   151.414 deg,
+	J4=   -32.885 deg,	J5=  -132.011 deg,	J6=   -26.865 deg
 };
 P[43]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -49.777 deg,
-	J4=   160.511 deg,	J5=   -52.698 deg,	J6=  -169.020 deg
+	J1=   -90.000 deg,	J2=    -4.875 deg,	J3=   147.414 deg,
+	J4=   -36.885 deg,	J5=  -136.011 deg,	J6=   -30.865 deg
 };
 P[44]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=  -152.392 deg,
-	J4=    92.914 deg,	J5=   -98.471 deg,	J6=   117.398 deg
+	J1=   -91.000 deg,	J2=   -33.295 deg,	J3=   201.999 deg,
+	J4=   -40.382 deg,	J5=   -22.917 deg,	J6=  -144.813 deg
 };
 P[45]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -151.392 deg,
-	J4=    93.914 deg,	J5=   -97.471 deg,	J6=   118.398 deg
+	J1=   -90.000 deg,	J2=   -32.295 deg,	J3=   202.999 deg,
+	J4=   -39.382 deg,	J5=   -21.917 deg,	J6=  -143.813 deg
 };
 P[46]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=  -147.392 deg,
-	J4=    97.914 deg,	J5=   -93.471 deg,	J6=   122.398 deg
+	J1=   -86.000 deg,	J2=   -28.295 deg,	J3=   206.999 deg,
+	J4=   -35.382 deg,	J5=   -17.917 deg,	J6=  -139.813 deg
 };
 P[47]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -151.392 deg,
-	J4=    93.914 deg,	J5=   -97.471 deg,	J6=   118.398 deg
+	J1=   -90.000 deg,	J2=   -32.295 deg,	J3=   202.999 deg,
+	J4=   -39.382 deg,	J5=   -21.917 deg,	J6=  -143.813 deg
 };
 P[48]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=  -164.894 deg,
-	J4=    -1.253 deg,	J5=   -14.578 deg,	J6=   180.522 deg
+	J1=   -91.000 deg,	J2=    -6.657 deg,	J3=   168.473 deg,
+	J4=  -139.213 deg,	J5=   -14.589 deg,	J6=   -44.018 deg
 };
 P[49]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -163.894 deg,
-	J4=    -0.253 deg,	J5=   -13.578 deg,	J6=   181.522 deg
+	J1=   -90.000 deg,	J2=    -5.657 deg,	J3=   169.473 deg,
+	J4=  -138.213 deg,	J5=   -13.589 deg,	J6=   -43.018 deg
 };
 P[50]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=  -159.894 deg,
-	J4=     3.747 deg,	J5=    -9.578 deg,	J6=   185.522 deg
+	J1=   -86.000 deg,	J2=    -1.657 deg,	J3=   173.473 deg,
+	J4=  -134.213 deg,	J5=    -9.589 deg,	J6=   -39.018 deg
 };
 P[51]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -163.894 deg,
-	J4=    -0.253 deg,	J5=   -13.578 deg,	J6=   181.522 deg
+	J1=   -90.000 deg,	J2=    -5.657 deg,	J3=   169.473 deg,
+	J4=  -138.213 deg,	J5=   -13.589 deg,	J6=   -43.018 deg
 };
 P[52]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=  -142.360 deg,
-	J4=  -115.578 deg,	J5=  -119.948 deg,	J6=   220.229 deg
+	J1=   -91.000 deg,	J2=   -35.513 deg,	J3=   186.746 deg,
+	J4=   -88.007 deg,	J5=   133.527 deg,	J6=   -83.808 deg
 };
 P[53]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -141.360 deg,
-	J4=  -114.578 deg,	J5=  -118.948 deg,	J6=   221.229 deg
+	J1=   -90.000 deg,	J2=   -34.513 deg,	J3=   187.746 deg,
+	J4=   -87.007 deg,	J5=   134.527 deg,	J6=   -82.808 deg
 };
 P[54]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=  -137.360 deg,
-	J4=  -110.578 deg,	J5=  -114.948 deg,	J6=   225.229 deg
+	J1=   -86.000 deg,	J2=   -30.513 deg,	J3=   191.746 deg,
+	J4=   -83.007 deg,	J5=   138.527 deg,	J6=   -78.808 deg
 };
 P[55]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -141.360 deg,
-	J4=  -114.578 deg,	J5=  -118.948 deg,	J6=   221.229 deg
+	J1=   -90.000 deg,	J2=   -34.513 deg,	J3=   187.746 deg,
+	J4=   -87.007 deg,	J5=   134.527 deg,	J6=   -82.808 deg
 };
 P[56]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=  -135.714 deg,
-	J4=  -195.609 deg,	J5=  -136.596 deg,	J6=   168.448 deg
+	J1=   -91.000 deg,	J2=   -62.799 deg,	J3=   111.448 deg,
+	J4=   -30.953 deg,	J5=    69.188 deg,	J6=  -175.430 deg
 };
 P[57]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.714 deg,
-	J4=  -194.609 deg,	J5=  -135.596 deg,	J6=   169.448 deg
+	J1=   -90.000 deg,	J2=   -61.799 deg,	J3=   112.448 deg,
+	J4=   -29.953 deg,	J5=    70.188 deg,	J6=  -174.430 deg
 };
 P[58]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=  -130.714 deg,
-	J4=  -190.609 deg,	J5=  -131.596 deg,	J6=   173.448 deg
+	J1=   -86.000 deg,	J2=   -57.799 deg,	J3=   116.448 deg,
+	J4=   -25.953 deg,	J5=    74.188 deg,	J6=  -170.430 deg
 };
 P[59]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -134.714 deg,
-	J4=  -194.609 deg,	J5=  -135.596 deg,	J6=   169.448 deg
+	J1=   -90.000 deg,	J2=   -61.799 deg,	J3=   112.448 deg,
+	J4=   -29.953 deg,	J5=    70.188 deg,	J6=  -174.430 deg
 };
 P[60]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=  -179.959 deg,
-	J4=   -90.259 deg,	J5=   -84.908 deg,	J6=   -92.111 deg
+	J1=   -91.000 deg,	J2=   -75.889 deg,	J3=   104.729 deg,
+	J4=  -164.574 deg,	J5=   -71.753 deg,	J6=    -6.276 deg
 };
 P[61]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -178.959 deg,
-	J4=   -89.259 deg,	J5=   -83.908 deg,	J6=   -91.111 deg
+	J1=   -90.000 deg,	J2=   -74.889 deg,	J3=   105.729 deg,
+	J4=  -163.574 deg,	J5=   -70.753 deg,	J6=    -5.276 deg
 };
 P[62]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=  -174.959 deg,
-	J4=   -85.259 deg,	J5=   -79.908 deg,	J6=   -87.111 deg
+	J1=   -86.000 deg,	J2=   -70.889 deg,	J3=   109.729 deg,
+	J4=  -159.574 deg,	J5=   -66.753 deg,	J6=    -1.276 deg
 };
 P[63]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -178.959 deg,
-	J4=   -89.259 deg,	J5=   -83.908 deg,	J6=   -91.111 deg
+	J1=   -90.000 deg,	J2=   -74.889 deg,	J3=   105.729 deg,
+	J4=  -163.574 deg,	J5=   -70.753 deg,	J6=    -5.276 deg
 };
 P[64]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=  -161.448 deg,
-	J4=  -152.774 deg,	J5=    26.043 deg,	J6=   -32.434 deg
+	J1=   -91.000 deg,	J2=   -33.996 deg,	J3=   104.916 deg,
+	J4=  -155.761 deg,	J5=   -82.176 deg,	J6=   -13.142 deg
 };
 P[65]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -160.448 deg,
-	J4=  -151.774 deg,	J5=    27.043 deg,	J6=   -31.434 deg
+	J1=   -90.000 deg,	J2=   -32.996 deg,	J3=   105.916 deg,
+	J4=  -154.761 deg,	J5=   -81.176 deg,	J6=   -12.142 deg
 };
 P[66]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=  -156.448 deg,
-	J4=  -147.774 deg,	J5=    31.043 deg,	J6=   -27.434 deg
+	J1=   -86.000 deg,	J2=   -28.996 deg,	J3=   109.916 deg,
+	J4=  -150.761 deg,	J5=   -77.176 deg,	J6=    -8.142 deg
 };
 P[67]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -160.448 deg,
-	J4=  -151.774 deg,	J5=    27.043 deg,	J6=   -31.434 deg
+	J1=   -90.000 deg,	J2=   -32.996 deg,	J3=   105.916 deg,
+	J4=  -154.761 deg,	J5=   -81.176 deg,	J6=   -12.142 deg
 };
 P[68]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=  -149.275 deg,
-	J4=  -177.273 deg,	J5=    28.944 deg,	J6=    -2.553 deg
+	J1=   -91.000 deg,	J2=    -0.477 deg,	J3=    57.949 deg,
+	J4=   -67.072 deg,	J5=   -75.878 deg,	J6=    26.398 deg
 };
 P[69]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -148.275 deg,
-	J4=  -176.273 deg,	J5=    29.944 deg,	J6=    -1.553 deg
+	J1=   -90.000 deg,	J2=     0.523 deg,	J3=    58.949 deg,
+	J4=   -66.072 deg,	J5=   -74.878 deg,	J6=    27.398 deg
 };
 P[70]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=  -144.275 deg,
-	J4=  -172.273 deg,	J5=    33.944 deg,	J6=     2.447 deg
+	J1=   -86.000 deg,	J2=     4.523 deg,	J3=    62.949 deg,
+	J4=   -62.072 deg,	J5=   -70.878 deg,	J6=    31.398 deg
 };
 P[71]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=  -148.275 deg,
-	J4=  -176.273 deg,	J5=    29.944 deg,	J6=    -1.553 deg
+	J1=   -90.000 deg,	J2=     0.523 deg,	J3=    58.949 deg,
+	J4=   -66.072 deg,	J5=   -74.878 deg,	J6=    27.398 deg
 };
 P[72]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   -41.081 deg,
-	J4=    30.047 deg,	J5=  -137.127 deg,	J6=   203.392 deg
+	J1=   -91.000 deg,	J2=    32.155 deg,	J3=    59.323 deg,
+	J4=     3.775 deg,	J5=   -57.148 deg,	J6=    -8.270 deg
 };
 P[73]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -40.081 deg,
-	J4=    31.047 deg,	J5=  -136.127 deg,	J6=   204.392 deg
+	J1=   -90.000 deg,	J2=    33.155 deg,	J3=    60.323 deg,
+	J4=     4.775 deg,	J5=   -56.148 deg,	J6=    -7.270 deg
 };
 P[74]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   -36.081 deg,
-	J4=    35.047 deg,	J5=  -132.127 deg,	J6=   208.392 deg
+	J1=   -86.000 deg,	J2=    37.155 deg,	J3=    64.323 deg,
+	J4=     8.775 deg,	J5=   -52.148 deg,	J6=    -3.270 deg
 };
 P[75]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -40.081 deg,
-	J4=    31.047 deg,	J5=  -136.127 deg,	J6=   204.392 deg
+	J1=   -90.000 deg,	J2=    33.155 deg,	J3=    60.323 deg,
+	J4=     4.775 deg,	J5=   -56.148 deg,	J6=    -7.270 deg
 };
 P[76]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   -38.614 deg,
-	J4=   -86.438 deg,	J5=   -96.246 deg,	J6=   126.094 deg
+	J1=   -91.000 deg,	J2=    73.584 deg,	J3=    97.974 deg,
+	J4=   -55.853 deg,	J5=  -100.936 deg,	J6=   -12.029 deg
 };
 P[77]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -37.614 deg,
-	J4=   -85.438 deg,	J5=   -95.246 deg,	J6=   127.094 deg
+	J1=   -90.000 deg,	J2=    74.584 deg,	J3=    98.974 deg,
+	J4=   -54.853 deg,	J5=   -99.936 deg,	J6=   -11.029 deg
 };
 P[78]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   -33.614 deg,
-	J4=   -81.438 deg,	J5=   -91.246 deg,	J6=   131.094 deg
+	J1=   -86.000 deg,	J2=    78.584 deg,	J3=   102.974 deg,
+	J4=   -50.853 deg,	J5=   -95.936 deg,	J6=    -7.029 deg
 };
 P[79]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   -37.614 deg,
-	J4=   -85.438 deg,	J5=   -95.246 deg,	J6=   127.094 deg
+	J1=   -90.000 deg,	J2=    74.584 deg,	J3=    98.974 deg,
+	J4=   -54.853 deg,	J5=   -99.936 deg,	J6=   -11.029 deg
 };
 P[80]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=    35.901 deg,
-	J4=  -132.044 deg,	J5=  -129.411 deg,	J6=    36.127 deg
+	J1=   -91.000 deg,	J2=    73.791 deg,	J3=    29.671 deg,
+	J4=    82.688 deg,	J5=   -91.617 deg,	J6=   -54.543 deg
 };
 P[81]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    36.901 deg,
-	J4=  -131.044 deg,	J5=  -128.411 deg,	J6=    37.127 deg
+	J1=   -90.000 deg,	J2=    74.791 deg,	J3=    30.671 deg,
+	J4=    83.688 deg,	J5=   -90.617 deg,	J6=   -53.543 deg
 };
 P[82]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    40.901 deg,
-	J4=  -127.044 deg,	J5=  -124.411 deg,	J6=    41.127 deg
+	J1=   -86.000 deg,	J2=    78.791 deg,	J3=    34.671 deg,
+	J4=    87.688 deg,	J5=   -86.617 deg,	J6=   -49.543 deg
 };
 P[83]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    36.901 deg,
-	J4=  -131.044 deg,	J5=  -128.411 deg,	J6=    37.127 deg
+	J1=   -90.000 deg,	J2=    74.791 deg,	J3=    30.671 deg,
+	J4=    83.688 deg,	J5=   -90.617 deg,	J6=   -53.543 deg
 };
 P[84]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=    91.785 deg,
-	J4=   -65.576 deg,	J5=   -91.734 deg,	J6=    -2.808 deg
+	J1=   -91.000 deg,	J2=    36.216 deg,	J3=   -58.829 deg,
+	J4=     6.274 deg,	J5=  -125.709 deg,	J6=  -181.524 deg
 };
 P[85]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    92.785 deg,
-	J4=   -64.576 deg,	J5=   -90.734 deg,	J6=    -1.808 deg
+	J1=   -90.000 deg,	J2=    37.216 deg,	J3=   -57.829 deg,
+	J4=     7.274 deg,	J5=  -124.709 deg,	J6=  -180.524 deg
 };
 P[86]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=    96.785 deg,
-	J4=   -60.576 deg,	J5=   -86.734 deg,	J6=     2.192 deg
+	J1=   -86.000 deg,	J2=    41.216 deg,	J3=   -53.829 deg,
+	J4=    11.274 deg,	J5=  -120.709 deg,	J6=  -176.524 deg
 };
 P[87]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=    92.785 deg,
-	J4=   -64.576 deg,	J5=   -90.734 deg,	J6=    -1.808 deg
+	J1=   -90.000 deg,	J2=    37.216 deg,	J3=   -57.829 deg,
+	J4=     7.274 deg,	J5=  -124.709 deg,	J6=  -180.524 deg
 };
 P[88]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   142.843 deg,
-	J4=    33.403 deg,	J5=  -139.288 deg,	J6=    29.024 deg
+	J1=   -91.000 deg,	J2=     4.573 deg,	J3=   -31.585 deg,
+	J4=   127.828 deg,	J5=   -44.901 deg,	J6=  -140.173 deg
 };
 P[89]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   143.843 deg,
-	J4=    34.403 deg,	J5=  -138.288 deg,	J6=    30.024 deg
+	J1=   -90.000 deg,	J2=     5.573 deg,	J3=   -30.585 deg,
+	J4=   128.828 deg,	J5=   -43.901 deg,	J6=  -139.173 deg
 };
 P[90]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   147.843 deg,
-	J4=    38.403 deg,	J5=  -134.288 deg,	J6=    34.024 deg
+	J1=   -86.000 deg,	J2=     9.573 deg,	J3=   -26.585 deg,
+	J4=   132.828 deg,	J5=   -39.901 deg,	J6=  -135.173 deg
 };
 P[91]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   143.843 deg,
-	J4=    34.403 deg,	J5=  -138.288 deg,	J6=    30.024 deg
+	J1=   -90.000 deg,	J2=     5.573 deg,	J3=   -30.585 deg,
+	J4=   128.828 deg,	J5=   -43.901 deg,	J6=  -139.173 deg
 };
 P[92]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   221.052 deg,
-	J4=    28.243 deg,	J5=   -46.756 deg,	J6=  -202.673 deg
+	J1=   -91.000 deg,	J2=    61.151 deg,	J3=   102.154 deg,
+	J4=   147.102 deg,	J5=   104.895 deg,	J6=   174.262 deg
 };
 P[93]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   222.052 deg,
-	J4=    29.243 deg,	J5=   -45.756 deg,	J6=  -201.673 deg
+	J1=   -90.000 deg,	J2=    62.151 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=   105.895 deg,	J6=   175.262 deg
 };
 P[94]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   226.052 deg,
-	J4=    33.243 deg,	J5=   -41.756 deg,	J6=  -197.673 deg
+	J1=   -86.000 deg,	J2=    66.151 deg,	J3=   107.154 deg,
+	J4=   152.102 deg,	J5=   109.895 deg,	J6=   179.262 deg
 };
 P[95]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   222.052 deg,
-	J4=    29.243 deg,	J5=   -45.756 deg,	J6=  -201.673 deg
+	J1=   -90.000 deg,	J2=    62.151 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=   105.895 deg,	J6=   175.262 deg
 };
 P[96]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   176.833 deg,
-	J4=    92.496 deg,	J5=    61.580 deg,	J6=  -265.062 deg
+	J1=   -91.000 deg,	J2=    30.383 deg,	J3=    -5.758 deg,
+	J4=    63.012 deg,	J5=    -2.710 deg,	J6=   -59.518 deg
 };
 P[97]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   177.833 deg,
-	J4=    93.496 deg,	J5=    62.580 deg,	J6=  -264.062 deg
+	J1=   -90.000 deg,	J2=    31.383 deg,	J3=    -4.758 deg,
+	J4=    64.012 deg,	J5=    -1.710 deg,	J6=   -58.518 deg
 };
 P[98]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   181.833 deg,
-	J4=    97.496 deg,	J5=    66.580 deg,	J6=  -260.062 deg
+	J1=   -86.000 deg,	J2=    35.383 deg,	J3=    -0.758 deg,
+	J4=    68.012 deg,	J5=     2.290 deg,	J6=   -54.518 deg
 };
 P[99]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   177.833 deg,
-	J4=    93.496 deg,	J5=    62.580 deg,	J6=  -264.062 deg
+	J1=   -90.000 deg,	J2=    31.383 deg,	J3=    -4.758 deg,
+	J4=    64.012 deg,	J5=    -1.710 deg,	J6=   -58.518 deg
 };
 P[100]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   210.901 deg,
-	J4=   181.689 deg,	J5=    31.828 deg,	J6=    -4.588 deg
+	J1=   -91.000 deg,	J2=    57.865 deg,	J3=    22.217 deg,
+	J4=     9.508 deg,	J5=   -24.041 deg,	J6=    -8.949 deg
 };
 P[101]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   211.901 deg,
-	J4=   182.689 deg,	J5=    32.828 deg,	J6=    -3.588 deg
+	J1=   -90.000 deg,	J2=    58.865 deg,	J3=    23.217 deg,
+	J4=    10.508 deg,	J5=   -23.041 deg,	J6=    -7.949 deg
 };
 P[102]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   215.901 deg,
-	J4=   186.689 deg,	J5=    36.828 deg,	J6=     0.412 deg
+	J1=   -86.000 deg,	J2=    62.865 deg,	J3=    27.217 deg,
+	J4=    14.508 deg,	J5=   -19.041 deg,	J6=    -3.949 deg
 };
 P[103]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   211.901 deg,
-	J4=   182.689 deg,	J5=    32.828 deg,	J6=    -3.588 deg
+	J1=   -90.000 deg,	J2=    58.865 deg,	J3=    23.217 deg,
+	J4=    10.508 deg,	J5=   -23.041 deg,	J6=    -7.949 deg
 };
 P[104]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    -1.000 deg,	J3=   221.192 deg,
-	J4=    29.200 deg,	J5=   134.404 deg,	J6=    19.433 deg
+	J1=   -91.000 deg,	J2=    60.812 deg,	J3=    33.385 deg,
+	J4=   -53.465 deg,	J5=   -50.818 deg,	J6=    34.777 deg
 };
 P[105]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   222.192 deg,
-	J4=    30.200 deg,	J5=   135.404 deg,	J6=    20.433 deg
+	J1=   -90.000 deg,	J2=    61.812 deg,	J3=    34.385 deg,
+	J4=   -52.465 deg,	J5=   -49.818 deg,	J6=    35.777 deg
 };
 P[106]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=     4.000 deg,	J3=   226.192 deg,
-	J4=    34.200 deg,	J5=   139.404 deg,	J6=    24.433 deg
+	J1=   -86.000 deg,	J2=    65.812 deg,	J3=    38.385 deg,
+	J4=   -48.465 deg,	J5=   -45.818 deg,	J6=    39.777 deg
 };
 P[107]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     0.000 deg,	J3=   222.192 deg,
-	J4=    30.200 deg,	J5=   135.404 deg,	J6=    20.433 deg
+	J1=   -90.000 deg,	J2=    61.812 deg,	J3=    34.385 deg,
+	J4=   -52.465 deg,	J5=   -49.818 deg,	J6=    35.777 deg
 };
 P[108]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   -43.822 deg,
-	J4=   -86.555 deg,	J5=   -90.492 deg,	J6=  -265.246 deg
+	J1=   -91.000 deg,	J2=    73.671 deg,	J3=    14.236 deg,
+	J4=   -42.633 deg,	J5=   -23.520 deg,	J6=    38.517 deg
+};
+P[109]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    74.671 deg,	J3=    15.236 deg,
+	J4=   -41.633 deg,	J5=   -22.520 deg,	J6=    39.517 deg
+};
+P[110]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    78.671 deg,	J3=    19.236 deg,
+	J4=   -37.633 deg,	J5=   -18.520 deg,	J6=    43.517 deg
+};
+P[111]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    74.671 deg,	J3=    15.236 deg,
+	J4=   -41.633 deg,	J5=   -22.520 deg,	J6=    39.517 deg
+};
+P[112]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    60.295 deg,	J3=    10.639 deg,
+	J4=   -39.765 deg,	J5=   -20.561 deg,	J6=    37.382 deg
+};
+P[113]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
+};
+P[114]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    65.295 deg,	J3=    15.639 deg,
+	J4=   -34.765 deg,	J5=   -15.561 deg,	J6=    42.382 deg
+};
+P[115]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
+};
+P[116]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    32.363 deg,	J3=    -5.952 deg,
+	J4=   -69.083 deg,	J5=     9.458 deg,	J6=    67.120 deg
+};
+P[117]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    33.363 deg,	J3=    -4.952 deg,
+	J4=   -68.083 deg,	J5=    10.458 deg,	J6=    68.120 deg
+};
+P[118]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    37.363 deg,	J3=    -0.952 deg,
+	J4=   -64.083 deg,	J5=    14.458 deg,	J6=    72.120 deg
+};
+P[119]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    33.363 deg,	J3=    -4.952 deg,
+	J4=   -68.083 deg,	J5=    10.458 deg,	J6=    68.120 deg
+};
+P[120]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    61.854 deg,	J3=   -27.773 deg,
+	J4=   -56.033 deg,	J5=    38.922 deg,	J6=    48.632 deg
+};
+P[121]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    62.854 deg,	J3=   -26.773 deg,
+	J4=   -55.033 deg,	J5=    39.922 deg,	J6=    49.632 deg
+};
+P[122]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    66.854 deg,	J3=   -22.773 deg,
+	J4=   -51.033 deg,	J5=    43.922 deg,	J6=    53.632 deg
+};
+P[123]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    62.854 deg,	J3=   -26.773 deg,
+	J4=   -55.033 deg,	J5=    39.922 deg,	J6=    49.632 deg
+};
+P[124]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    36.289 deg,	J3=   -61.531 deg,
+	J4=   -36.170 deg,	J5=    67.041 deg,	J6=    14.431 deg
+};
+P[125]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    37.289 deg,	J3=   -60.531 deg,
+	J4=   -35.170 deg,	J5=    68.041 deg,	J6=    15.431 deg
+};
+P[126]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    41.289 deg,	J3=   -56.531 deg,
+	J4=   -31.170 deg,	J5=    72.041 deg,	J6=    19.431 deg
+};
+P[127]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    37.289 deg,	J3=   -60.531 deg,
+	J4=   -35.170 deg,	J5=    68.041 deg,	J6=    15.431 deg
+};
+P[128]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=     4.616 deg,	J3=   -15.713 deg,
+	J4=    38.723 deg,	J5=    13.693 deg,	J6=   -44.628 deg
+};
+P[129]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     5.616 deg,	J3=   -14.713 deg,
+	J4=    39.723 deg,	J5=    14.693 deg,	J6=   -43.628 deg
+};
+P[130]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=     9.616 deg,	J3=   -10.713 deg,
+	J4=    43.723 deg,	J5=    18.693 deg,	J6=   -39.628 deg
+};
+P[131]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     5.616 deg,	J3=   -14.713 deg,
+	J4=    39.723 deg,	J5=    14.693 deg,	J6=   -43.628 deg
+};
+P[132]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=     5.414 deg,	J3=   -41.505 deg,
+	J4=   119.194 deg,	J5=   121.182 deg,	J6=   -43.990 deg
+};
+P[133]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     6.414 deg,	J3=   -40.505 deg,
+	J4=   120.194 deg,	J5=   122.182 deg,	J6=   -42.990 deg
+};
+P[134]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    10.414 deg,	J3=   -36.505 deg,
+	J4=   124.194 deg,	J5=   126.182 deg,	J6=   -38.990 deg
+};
+P[135]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     6.414 deg,	J3=   -40.505 deg,
+	J4=   120.194 deg,	J5=   122.182 deg,	J6=   -42.990 deg
+};
+P[136]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=   -64.341 deg,	J3=    10.831 deg,
+	J4=   114.517 deg,	J5=    19.584 deg,	J6=  -118.523 deg
+};
+P[137]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -63.341 deg,	J3=    11.831 deg,
+	J4=   115.517 deg,	J5=    20.584 deg,	J6=  -117.523 deg
+};
+P[138]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=   -59.341 deg,	J3=    15.831 deg,
+	J4=   119.517 deg,	J5=    24.584 deg,	J6=  -113.523 deg
+};
+P[139]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -63.341 deg,	J3=    11.831 deg,
+	J4=   115.517 deg,	J5=    20.584 deg,	J6=  -117.523 deg
+};
+P[140]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=   -75.788 deg,	J3=     7.937 deg,
+	J4=   136.710 deg,	J5=     4.882 deg,	J6=  -135.996 deg
+};
+P[141]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -74.788 deg,	J3=     8.937 deg,
+	J4=   137.710 deg,	J5=     5.882 deg,	J6=  -134.996 deg
+};
+P[142]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=   -70.788 deg,	J3=    12.937 deg,
+	J4=   141.710 deg,	J5=     9.882 deg,	J6=  -130.996 deg
+};
+P[143]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -74.788 deg,	J3=     8.937 deg,
+	J4=   137.710 deg,	J5=     5.882 deg,	J6=  -134.996 deg
+};
+P[144]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=   -60.285 deg,	J3=     0.709 deg,
+	J4=    51.947 deg,	J5=     1.714 deg,	J6=   -54.859 deg
+};
+P[145]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -59.285 deg,	J3=     1.709 deg,
+	J4=    52.947 deg,	J5=     2.714 deg,	J6=   -53.859 deg
+};
+P[146]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=   -55.285 deg,	J3=     5.709 deg,
+	J4=    56.947 deg,	J5=     6.714 deg,	J6=   -49.859 deg
+};
+P[147]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -59.285 deg,	J3=     1.709 deg,
+	J4=    52.947 deg,	J5=     2.714 deg,	J6=   -53.859 deg
+};
+P[148]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=   -75.885 deg,	J3=     1.767 deg,
+	J4=  -157.412 deg,	J5=     2.064 deg,	J6=   153.891 deg
+};
+P[149]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -74.885 deg,	J3=     2.767 deg,
+	J4=  -156.412 deg,	J5=     3.064 deg,	J6=   154.891 deg
+};
+P[150]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=   -70.885 deg,	J3=     6.767 deg,
+	J4=  -152.412 deg,	J5=     7.064 deg,	J6=   158.891 deg
+};
+P[151]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -74.885 deg,	J3=     2.767 deg,
+	J4=  -156.412 deg,	J5=     3.064 deg,	J6=   154.891 deg
+};
+P[152]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=   -65.443 deg,	J3=   -16.796 deg,
+	J4=  -179.268 deg,	J5=   -17.985 deg,	J6=   176.201 deg
+};
+P[153]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -64.443 deg,	J3=   -15.796 deg,
+	J4=  -178.268 deg,	J5=   -16.985 deg,	J6=   177.201 deg
+};
+P[154]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=   -60.443 deg,	J3=   -11.796 deg,
+	J4=  -174.268 deg,	J5=   -12.985 deg,	J6=   181.201 deg
+};
+P[155]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -64.443 deg,	J3=   -15.796 deg,
+	J4=  -178.268 deg,	J5=   -16.985 deg,	J6=   177.201 deg
+};
+P[156]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=     8.341 deg,	J3=  -148.304 deg,
+	J4=   -69.510 deg,	J5=   122.340 deg,	J6=   -49.310 deg
+};
+P[157]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     9.341 deg,	J3=  -147.304 deg,
+	J4=   -68.510 deg,	J5=   123.340 deg,	J6=   -48.310 deg
+};
+P[158]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    13.341 deg,	J3=  -143.304 deg,
+	J4=   -64.510 deg,	J5=   127.340 deg,	J6=   -44.310 deg
+};
+P[159]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=     9.341 deg,	J3=  -147.304 deg,
+	J4=   -68.510 deg,	J5=   123.340 deg,	J6=   -48.310 deg
+};
+P[160]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    72.781 deg,	J3=  -205.668 deg,
+	J4=    -6.023 deg,	J5=    28.827 deg,	J6=  -177.365 deg
+};
+P[161]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    73.781 deg,	J3=  -204.668 deg,
+	J4=    -5.023 deg,	J5=    29.827 deg,	J6=  -176.365 deg
+};
+P[162]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    77.781 deg,	J3=  -200.668 deg,
+	J4=    -1.023 deg,	J5=    33.827 deg,	J6=  -172.365 deg
+};
+P[163]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    73.781 deg,	J3=  -204.668 deg,
+	J4=    -5.023 deg,	J5=    29.827 deg,	J6=  -176.365 deg
+};
+P[164]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    62.727 deg,	J3=  -185.950 deg,
+	J4=   151.338 deg,	J5=    -3.749 deg,	J6=    26.993 deg
+};
+P[165]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    63.727 deg,	J3=  -184.950 deg,
+	J4=   152.338 deg,	J5=    -2.749 deg,	J6=    27.993 deg
+};
+P[166]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    67.727 deg,	J3=  -180.950 deg,
+	J4=   156.338 deg,	J5=     1.251 deg,	J6=    31.993 deg
+};
+P[167]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    63.727 deg,	J3=  -184.950 deg,
+	J4=   152.338 deg,	J5=    -2.749 deg,	J6=    27.993 deg
+};
+P[168]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    59.242 deg,	J3=  -183.160 deg,
+	J4=    17.248 deg,	J5=    -3.415 deg,	J6=   166.526 deg
+};
+P[169]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    60.242 deg,	J3=  -182.160 deg,
+	J4=    18.248 deg,	J5=    -2.415 deg,	J6=   167.526 deg
+};
+P[170]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    64.242 deg,	J3=  -178.160 deg,
+	J4=    22.248 deg,	J5=     1.585 deg,	J6=   171.526 deg
+};
+P[171]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    60.242 deg,	J3=  -182.160 deg,
+	J4=    18.248 deg,	J5=    -2.415 deg,	J6=   167.526 deg
+};
+P[172]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    73.274 deg,	J3=  -211.087 deg,
+	J4=   -64.041 deg,	J5=  -132.115 deg,	J6=   -51.949 deg
+};
+P[173]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    74.274 deg,	J3=  -210.087 deg,
+	J4=   -63.041 deg,	J5=  -131.115 deg,	J6=   -50.949 deg
+};
+P[174]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    78.274 deg,	J3=  -206.087 deg,
+	J4=   -59.041 deg,	J5=  -127.115 deg,	J6=   -46.949 deg
+};
+P[175]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    74.274 deg,	J3=  -210.087 deg,
+	J4=   -63.041 deg,	J5=  -131.115 deg,	J6=   -50.949 deg
+};
+P[176]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    61.151 deg,	J3=   102.154 deg,
+	J4=   147.102 deg,	J5=   104.895 deg,	J6=   174.262 deg
+};
+P[177]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    62.151 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=   105.895 deg,	J6=   175.262 deg
+};
+P[178]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    66.151 deg,	J3=   107.154 deg,
+	J4=   152.102 deg,	J5=   109.895 deg,	J6=   179.262 deg
+};
+P[179]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    62.151 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=   105.895 deg,	J6=   175.262 deg
+};
+P[180]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -91.000 deg,	J2=    30.383 deg,	J3=    -5.758 deg,
+	J4=    63.012 deg,	J5=    -2.710 deg,	J6=   -59.518 deg
+};
+P[181]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    31.383 deg,	J3=    -4.758 deg,
+	J4=    64.012 deg,	J5=    -1.710 deg,	J6=   -58.518 deg
+};
+P[182]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -86.000 deg,	J2=    35.383 deg,	J3=    -0.758 deg,
+	J4=    68.012 deg,	J5=     2.290 deg,	J6=   -54.518 deg
+};
+P[183]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=    31.383 deg,	J3=    -4.758 deg,
+	J4=    64.012 deg,	J5=    -1.710 deg,	J6=   -58.518 deg
+};
+P[184]{
+   GP1:
+	UF : 0, UT : 0,	
+	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   103.154 deg,
+	J4=   148.102 deg,	J5=    60.895 deg,	J6=   175.262 deg
 };
 /END
