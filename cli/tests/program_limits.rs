@@ -133,7 +133,8 @@ fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
     let plan = tmp("kr16.csv");
     write_plan(&plan, &kr16_plan_deg());
     let out = tmp("other.mod");
-    // Joints 1-2 are the KR 16's stage-1 values, not the IRB 140's.
+    // Joint 2 swings about the KR 16's stage-1 angle, further from the IRB 140's than
+    // any plan swings it.
     let run = program(&[
         "--robot",
         "abb-irb140",
@@ -146,7 +147,10 @@ fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
     ]);
     let err = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(2), "{err}");
-    assert!(err.contains("stage-1 values"), "{err}");
+    assert!(
+        err.contains("a plan for another robot or stage-1 pose"),
+        "{err}"
+    );
     // A KUKA profile in RAPID: exit 2, naming the right format.
     let run = program(&[
         "--robot",
