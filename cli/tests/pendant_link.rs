@@ -11,6 +11,7 @@ use std::time::{Duration, Instant};
 
 use zerocal_cli::error::CliError;
 use zerocal_cli::pendant::{self, Expect, PendantAction, Timeouts};
+use zerocal_core::plan::{SESSION_POSES, SESSION_REVISITS};
 use zerocal_pendant::screen::Screen;
 use zerocal_pendant_desktop::conversation::converse;
 use zerocal_pendant_desktop::session::{session, SessionReport};
@@ -192,7 +193,13 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
         out.contains("ok: profile kuka-kr6-r900-sixx stored"),
         "{out}"
     );
-    assert!(out.contains("ok: plan set, 24 poses"), "{out}");
+    // The desktop planner's default: its distinct poses and the revisits that show a
+    // creeping bracket.
+    let poses = SESSION_POSES + SESSION_REVISITS;
+    assert!(
+        out.contains(&format!("ok: plan set, {poses} poses")),
+        "{out}"
+    );
     // The boot screen names it.
     match &c.boot_after_reboot {
         Some(Screen::Starting(Some(name))) => assert_eq!(name.as_str(), "kuka-kr6-r900-sixx"),
@@ -229,7 +236,7 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
                 .is_some_and(|ch| ch.is_ascii_digit() || ch == '-')
         })
         .collect();
-    assert_eq!(rows.len(), 24);
+    assert_eq!(rows.len(), poses);
     let expected = String::from_utf8(requests[1].clone()).unwrap();
     for (row, sent_row) in rows.iter().zip(expected.lines().skip(1)) {
         let got: Vec<f64> = row.split(',').map(|v| v.parse().unwrap()).collect();

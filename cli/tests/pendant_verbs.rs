@@ -12,6 +12,7 @@ use std::time::Duration;
 
 use zerocal_cli::error::CliError;
 use zerocal_cli::pendant::{self, Console, Link, PendantAction, Timeouts};
+use zerocal_core::plan::{SESSION_POSES, SESSION_REVISITS};
 use zerocal_pendant_desktop::bracket::{
     calibration_world, leave_calibration, operate_calibration, BRACKET_TURN_DEG,
 };
@@ -170,9 +171,9 @@ fn a_bracket_calibration_left_with_back_is_refused_by_name() {
 }
 
 /// A check started and followed from the desktop: each phase said as the pendant
-/// reached it (stage 0, the flange's poses with their captures counting up, the
-/// closing reversal, done), and its export saved whole: a check export (`# mode
-/// check`) with two captures of each check pose.
+/// reached it (stage 0's headings on the bench, the flange's poses with their captures
+/// counting up, the closing bench readings, done), and its export saved whole: a check
+/// export (`# mode check`) with two captures of each check pose.
 #[test]
 fn a_check_is_followed_to_its_end_and_its_export_saved() {
     let port = DesktopPort::new(world(23), |rig, shared| async move {
@@ -189,12 +190,11 @@ fn a_check_is_followed_to_its_end_and_its_export_saved() {
     assert_eq!(port.0.script(), Some(Ok(())), "{progress}");
     assert!(said.contains("zerocal check"), "{said}");
     let order = [
-        "stage 0 (first reading)",
-        "stage 0 (after 180 deg turn)",
+        "stage 0 (bench, turned by hand)",
         "stage 2 (flange poses): 0 captured",
         "stage 2 (flange poses): 1 captured",
         &format!("stage 2 (flange poses): {} captured", 2 * poses.len() - 1),
-        "closing reversal (first reading)",
+        "closing bench readings",
         "done: captured",
     ];
     let mut at = 0;
@@ -299,6 +299,9 @@ fn plan_profile_and_clear_against_the_pendant() {
     // Past the boot screen.
     port.pause(Duration::from_secs(3)).unwrap();
     let robot = "kuka-kr6-r900-sixx";
+    // The desktop planner's default plan: its distinct poses and the revisits.
+    let poses = SESSION_POSES + SESSION_REVISITS;
+    let plan_set = format!("ok: plan set, {poses} poses");
     let load = |plan: Option<PathBuf>| PendantAction::LoadProfile {
         robot: robot.into(),
         plan,
@@ -314,7 +317,7 @@ fn plan_profile_and_clear_against_the_pendant() {
         "ok: session cleared (bias and plan kept)"
     );
     let (_, said) = act(&mut port, &load(None), false, &|| false);
-    assert!(said.unwrap().contains("ok: plan set, 24 poses"));
+    assert!(said.unwrap().contains(&plan_set));
     let plan_file = dir().join("plan.csv");
     let (_, said) = act(
         &mut port,
@@ -331,8 +334,8 @@ fn plan_profile_and_clear_against_the_pendant() {
         Some(zerocal_procedure::link::PLAN_CSV_HEADER)
     );
     let profile = zerocal_cli::robot::load(robot).unwrap();
-    let poses = zerocal_cli::program::read_plan(&plan_file, &profile).unwrap();
-    assert_eq!(poses.len(), 24);
+    let read = zerocal_cli::program::read_plan(&plan_file, &profile).unwrap();
+    assert_eq!(read.len(), poses);
     let (_, said) = act(
         &mut port,
         &PendantAction::Profile { out: None },
@@ -346,7 +349,7 @@ fn plan_profile_and_clear_against_the_pendant() {
         .1
         .unwrap();
     let (_, said) = act(&mut port, &load(Some(plan_file)), false, &|| false);
-    assert!(said.unwrap().contains("ok: plan set, 24 poses"));
+    assert!(said.unwrap().contains(&plan_set));
     // The same poses, to the link's thousandth of a degree.
     let (_, again) = act(
         &mut port,

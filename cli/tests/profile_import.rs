@@ -172,17 +172,28 @@ fn sessions_within_u(robot: &str, d: &Path, tag: &str) -> (usize, usize) {
 
 /// The issue's "done when": every fixture, the five arms without a built-in profile
 /// among them, goes through `profile import`, `profile check`, `plan`, `program`,
-/// `simulate` and `session` through the binary, and k = 2 covers every joint's error
-/// in every session, as it does for a built-in profile run alongside (the README's
-/// figure for the built-ins: 100 % of 200 sessions x 7 profiles). INFORM is refused
-/// for an imported Yaskawa profile exactly as for the built-in GP7: no pulses per
-/// degree in either.
+/// `simulate` and `session` through the binary, and k = 2 covers the joints' errors as
+/// a 95 % interval does, as it does for a built-in profile run alongside. INFORM is
+/// refused for an imported Yaskawa profile exactly as for the built-in GP7: no pulses
+/// per degree in either.
+///
+/// The budget's U(k = 2) means 95 % (issue 30: coverage 95-99.5 %, no longer the blunt
+/// 100 % of a budget that counted the reducers' error twice), so a few errors of 40
+/// per arm may lie beyond it. Per arm at most [`MAX_BEYOND_PER_ARM`] of 40 (a 95 %
+/// interval leaves more 0.07 % of the time: binomial, n = 40, p = 0.05), and over
+/// every arm at least [`MIN_POOLED_COVERAGE`] (over some 600 joint errors an honest
+/// 95 % falls below 93 % about 1 % of the time): an arm whose budget misses its error
+/// systematically fails one or the other.
 #[test]
 fn every_fixture_imports_plans_simulates_and_solves_through_the_binary() {
     let d = dir("whole");
     let (w, a) = sessions_within_u("kuka-kr6-r900-sixx", &d, "builtin");
     println!("built-in kuka-kr6-r900-sixx: k = 2 covers {w} of {a} joint errors");
-    assert_eq!(w, a, "the built-in reference");
+    assert!(
+        a - w <= MAX_BEYOND_PER_ARM,
+        "the built-in reference: {w} of {a}"
+    );
+    let (mut pooled_within, mut pooled_all) = (w, a);
     let gp7 = d.join("gp7.jbi");
     let builtin_inform = zerocal(&[
         "program",
@@ -206,7 +217,7 @@ fn every_fixture_imports_plans_simulates_and_solves_through_the_binary() {
             f.name
         );
         let plan = expect(&["plan", "--robot", p, "--csv"], 0);
-        assert_eq!(plan.lines().count(), 1 + 24, "{}: {plan}", f.name);
+        assert_eq!(plan.lines().count(), 1 + PLAN_POSES, "{}: {plan}", f.name);
         let (format, ext) = format_of(&f.family);
         let program = d.join(format!("{}.{ext}", f.name.replace('-', "_")));
         let out = zerocal(&[
@@ -242,9 +253,25 @@ fn every_fixture_imports_plans_simulates_and_solves_through_the_binary() {
                 "no built-in profile"
             }
         );
-        assert_eq!(w, a, "{}", f.name);
+        assert!(a - w <= MAX_BEYOND_PER_ARM, "{}: {w} of {a}", f.name);
+        pooled_within += w;
+        pooled_all += a;
     }
+    let pooled = pooled_within as f64 / pooled_all as f64;
+    println!("every arm: k = 2 covers {pooled_within} of {pooled_all} joint errors");
+    assert!(
+        pooled >= MIN_POOLED_COVERAGE,
+        "{pooled_within} of {pooled_all}"
+    );
 }
+
+/// Most joint errors of an arm's 40 beyond U(k = 2) a 95 % interval leaves, but for
+/// one time in 1400 (binomial, n = 40, p = 0.05: P(more than 7) = 0.0007).
+const MAX_BEYOND_PER_ARM: usize = 7;
+
+/// Least share of every arm's joint errors within U(k = 2): 95 % less 2.3 of its
+/// binomial standard deviations over some 600 errors (0.9 %).
+const MIN_POOLED_COVERAGE: f64 = 0.93;
 
 /// The pendant's own link task (run on the desktop) stores an imported profile and its
 /// plan as it stores a built-in one: `zerocal pendant load-profile FILE.toml`.
@@ -275,9 +302,17 @@ fn the_pendant_stores_an_imported_profile() {
             "{}: {out}",
             f.name
         );
-        assert!(out.contains("ok: plan set, 24 poses"), "{}: {out}", f.name);
+        assert!(
+            out.contains(&format!("ok: plan set, {PLAN_POSES} poses")),
+            "{}: {out}",
+            f.name
+        );
     }
 }
+
+/// The desktop planner's default plan for any profile: its distinct poses and the
+/// revisits that show a creeping bracket.
+const PLAN_POSES: usize = zerocal_core::plan::SESSION_POSES + zerocal_core::plan::SESSION_REVISITS;
 
 /// Short against a port that answers at once (as `pendant_link`'s).
 const FAST: zerocal_cli::pendant::Timeouts = zerocal_cli::pendant::Timeouts {

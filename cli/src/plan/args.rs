@@ -32,6 +32,11 @@ pub fn margin_help() -> String {
     )
 }
 
+/// The widest swing of joint 2 `--joint2-swing-deg` takes (deg): a plan file whose
+/// joint 2 lies further from the profile's stage-1 angle is no plan of this robot's
+/// stage-1 pose.
+pub const MAX_JOINT2_SWING_DEG: f64 = 120.0;
+
 /// Arguments of `zerocal plan`.
 #[derive(Args, Debug, Clone)]
 pub struct PlanArgs {
@@ -43,7 +48,7 @@ pub struct PlanArgs {
     /// How far stage 2 swings joint 2 either side of its stage-1 angle, within its
     /// limits (deg): its transmission error is then told from its zero; 0 holds joint 2
     /// where stage 1 had it (its error there is then budgeted whole). Range: [0, 120] deg.
-    #[arg(long, default_value_t = zerocal_core::plan::JOINT2_SWING_DEG, value_parser = RealIn::closed(0.0, 120.0, "deg"))]
+    #[arg(long, default_value_t = zerocal_core::plan::JOINT2_SWING_DEG, value_parser = RealIn::closed(0.0, MAX_JOINT2_SWING_DEG, "deg"))]
     pub joint2_swing_deg: f64,
     /// Poses visited again later in the session, so that a bracket creeping on the
     /// flange shows. Range: [0, 3].

@@ -3,6 +3,7 @@
 //! `zerocal plan` makes with its defaults.
 
 use crate::error::CliError;
+use crate::plan::args::MAX_JOINT2_SWING_DEG;
 use crate::plan::PlanArgs;
 use crate::timing::TimingArgs;
 use clap::Parser;
@@ -109,11 +110,12 @@ fn poses_of_csv(text: &str) -> Result<Vec<[f64; JOINTS]>, String> {
     Ok(rows)
 }
 
-/// Refuses a plan of too few or too many poses, or one whose joint 1 is not at the
-/// profile's stage-1 angle (another robot's or another stage-1 pose's plan). Stage 2
-/// holds joint 1 where stage 1 had it, but swings joint 2 (its transmission error is
-/// told from its zero that way, `zerocal plan --joint2-swing-deg`): joint 2 may be
-/// anywhere the program's limit checks let it.
+/// Refuses a plan of too few or too many poses, or one that is not of the profile's
+/// stage-1 pose (another robot's or another stage-1 pose's plan): stage 2 holds joint 1
+/// at stage 1's angle (the base tilt stage 1 measured is about that heading) and swings
+/// joint 2 at most [`MAX_JOINT2_SWING_DEG`] either side of its stage-1 angle (its
+/// reducer's error is told from its zero so; the session checks joint 1 the same way,
+/// `zerocal_core::session::STAGE1_JOINT1_TOLERANCE_DEG`).
 fn check_plan_poses(poses_deg: &[[f64; JOINTS]], profile: &Profile) -> Result<(), String> {
     if poses_deg.len() < zerocal_core::stage2::MIN_POSES
         || poses_deg.len() > zerocal_core::plan::MAX_POSES
@@ -125,14 +127,27 @@ fn check_plan_poses(poses_deg: &[[f64; JOINTS]], profile: &Profile) -> Result<()
             zerocal_core::plan::MAX_POSES
         ));
     }
-    let q1 = profile.stage1_joints_rad[0].to_degrees();
+    let q1 = profile.stage1_joints_rad.map(f64::to_degrees);
+    let another = "a plan for another robot or stage-1 pose";
     for (i, q) in poses_deg.iter().enumerate() {
         // The plan prints 6 decimals: 1e-5 deg covers its rounding.
-        if (q[0] - q1).abs() > 1e-5 {
+        if (q[0] - q1[0]).abs() > 1e-5 {
             return Err(format!(
-                "pose {}: joint 1 at {} deg is not the profile's stage-1 value {q1:.6} deg (model degrees; stage 2 holds joint 1 there): a plan for another robot or stage-1 pose",
+                "pose {}: joint 1 at {} deg is not the profile's stage-1 value {:.6} (model \
+                 degrees; stage 2 holds joint 1 where stage 1 had it): {another}",
                 i + 1,
                 q[0],
+                q1[0]
+            ));
+        }
+        if (q[1] - q1[1]).abs() > MAX_JOINT2_SWING_DEG + 1e-5 {
+            return Err(format!(
+                "pose {}: joint 2 at {} deg is more than {MAX_JOINT2_SWING_DEG} deg from the \
+                 profile's stage-1 value {:.6} (model degrees), the widest swing a plan \
+                 gives it: {another}",
+                i + 1,
+                q[1],
+                q1[1]
             ));
         }
     }
