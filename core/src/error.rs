@@ -354,6 +354,14 @@ pub enum StageError {
         /// Readings taken.
         got: u8,
     },
+    /// The headings span too little of a turn to find the circle's centre: the bias
+    /// would be known far worse than from headings a quarter turn apart.
+    HeadingsTooClose {
+        /// The bias's variance in units of one reading's noise variance.
+        variance_factor: f32,
+        /// The largest accepted ([`crate::stage0::HEADINGS_VARIANCE_LIMIT`]).
+        limit: f32,
+    },
     /// The bench readings do not lie on one circle: the pendant was moved between
     /// headings, not turned on the spot (or knocked, or the bench is not flat).
     NotTurnedOnTheSpot {
@@ -390,6 +398,15 @@ impl fmt::Display for StageError {
             StageError::TooFewHeadings { got } => write!(
                 f,
                 "{got} bench reading(s): at least two headings are needed (four by hand)"
+            ),
+            StageError::HeadingsTooClose {
+                variance_factor,
+                limit,
+            } => write!(
+                f,
+                "the bench headings span too little of a turn (bias variance {} readings' noise, limit {}): turn the pendant about a quarter turn by hand between readings, and read it again",
+                Fixed::new(f64::from(variance_factor), 1),
+                Fixed::new(f64::from(limit), 1)
             ),
             StageError::NotTurnedOnTheSpot { rms_deg, limit_deg } => write!(
                 f,
@@ -446,6 +463,7 @@ impl fmt::Display for Terse<'_, StageError> {
             StageError::Unresolvable => f.write_str("Unresolvable"),
             StageError::NonFiniteCommand => f.write_str("NonFiniteCommand"),
             StageError::TooFewHeadings { got } => write!(f, "TooFewHeadings {got}"),
+            StageError::HeadingsTooClose { .. } => f.write_str("HeadingsTooClose"),
             StageError::NotTurnedOnTheSpot { .. } => f.write_str("NotTurnedOnTheSpot"),
         }
     }

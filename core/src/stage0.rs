@@ -79,6 +79,14 @@ pub const BENCH_RESIDUAL_LIMIT: f64 = 5.0;
 /// where a pendant moved to another spot of the bench reads hundredths apart.
 pub const BENCH_RESIDUAL_FLOOR_DEG: f64 = 0.01;
 
+/// The largest variance of the bias (in units of one reading's noise variance) a bench
+/// solve of three or more headings accepts: four times that of four headings a quarter
+/// turn apart (0.5, the same as an exact half turn's two readings), so the bias is known
+/// to at most twice their σ. Headings turned by hand a rough quarter turn apart stay far
+/// inside it; a few degrees apart the factor is tens to thousands, and the circle's
+/// centre (the bias) is a guess.
+pub const HEADINGS_VARIANCE_LIMIT: f64 = 2.0;
+
 /// The pendant read on a bench at two or more headings, turned about the vertical on
 /// the same spot between them.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -432,9 +440,16 @@ fn solve_headings<T: Real>(
     }
     let (inv, _) = spd_inverse(&jtj).ok_or(StageError::Unresolvable)?;
     let bias = Tilt::new(p[0], p[1]);
+    let variance_factor = inv.m[0][0].max(inv.m[1][1]);
+    if n > 2 && variance_factor > T::lit(HEADINGS_VARIANCE_LIMIT) {
+        return Err(StageError::HeadingsTooClose {
+            variance_factor: variance_factor.to_f64() as f32,
+            limit: HEADINGS_VARIANCE_LIMIT as f32,
+        });
+    }
     Ok(BenchSolution {
         bias,
-        variance_factor: inv.m[0][0].max(inv.m[1][1]),
+        variance_factor,
         tilt_rad: (p[2] * p[2] + p[3] * p[3]).sqrt(),
         headings_solved: n > 2,
         residual_rms_rad,
@@ -768,6 +783,39 @@ mod tests {
                         );
                     }
                 }
+            }
+        }
+    }
+
+    /// Headings a few degrees apart on a tilted bench leave the circle's centre (the
+    /// bias) a guess: refused by name, where the same bench read at rough quarter turns
+    /// (each off a true quarter by up to 30°) is accepted within the limit.
+    #[test]
+    fn headings_too_close_are_refused_by_name_and_rough_quarter_turns_are_not() {
+        let noise = 0.0008_f64.to_radians();
+        for conv in [Convention::Rpy, Convention::Axis] {
+            let sensor = SensorModel::new(conv, Tilt::from_deg(0.3, 0.2));
+            let read = |turns: &[f64]| {
+                let readings: Vec<Tilt<f64>> = turns
+                    .iter()
+                    .map(|h| sensor.reading(&(bench(0.5, -0.3) * rot_z(*h))))
+                    .collect();
+                BenchTurns::from_readings(&readings)
+                    .unwrap()
+                    .solve(conv, Gain::default(), 0.5, noise)
+            };
+            let close = read(&[0.0, 0.09, 0.17, 0.26]);
+            assert!(
+                matches!(close, Err(StageError::HeadingsTooClose { .. })),
+                "{conv:?}: {close:?}"
+            );
+            for turns in [
+                &[0.0, 1.57, 3.14, 4.71][..],
+                &[0.0, 1.05, 2.6, 4.2][..],
+                &[0.3, 2.1, 3.2, 5.2][..],
+            ] {
+                let s = read(turns).unwrap_or_else(|e| panic!("{conv:?} {turns:?}: {e:?}"));
+                assert!(s.variance_factor <= HEADINGS_VARIANCE_LIMIT, "{s:?}");
             }
         }
     }

@@ -461,6 +461,7 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
             }
             StageError::TooFewHeadings { .. } => fixed("! redo: too few turns"),
             StageError::NotTurnedOnTheSpot { .. } => fixed("! redo: turn on spot"),
+            StageError::HeadingsTooClose { .. } => fixed("! redo: turn 1/4 each"),
         },
         // Shown in full on the result screen.
         Notice::Refused(_) => fixed("! refused"),
