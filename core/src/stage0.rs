@@ -800,9 +800,12 @@ mod tests {
                     .iter()
                     .map(|h| sensor.reading(&(bench(0.5, -0.3) * rot_z(*h))))
                     .collect();
-                BenchTurns::from_readings(&readings)
-                    .unwrap()
-                    .solve(conv, Gain::default(), 0.5, noise)
+                BenchTurns::from_readings(&readings).unwrap().solve(
+                    conv,
+                    Gain::default(),
+                    0.5,
+                    noise,
+                )
             };
             let close = read(&[0.0, 0.09, 0.17, 0.26]);
             assert!(

@@ -387,3 +387,39 @@ pub fn judge<T: Real>(
     }
     Ok(())
 }
+
+/// The fault a revisit that reads otherwise shows (`(pose, revisit, difference)` from
+/// [`revisit_difference`], past its limit): a pendant that moved once between the two
+/// visits is a step, and where the evidence's likeliest step lies between them
+/// (after the first visit, at or before the revisit), is past its floor and fits the
+/// readings better than a steady drift does, the move is named where it happened
+/// ([`FitError::PendantMoved`]); else the two visits are named
+/// ([`FitError::RevisitDisagrees`]). The revisit's own limit decided that the pendant
+/// moved; the step only says where.
+pub fn revisit_fault<T: Real>(
+    e: Option<&Evidence<T>>,
+    (pose, revisit, difference): (usize, usize, T),
+    rule: &RefusalRule,
+) -> FitError {
+    let deg = |v: T| rad_to_deg(v).to_f64() as f32;
+    let step = e.filter(|e| {
+        let (from_pose, size, f) = e.step;
+        pose < from_pose
+            && from_pose <= revisit
+            && rule.step_floor_deg.is_finite()
+            && size > deg_to_rad(T::lit(rule.step_floor_deg))
+            && f > e.ramp.1
+    });
+    match step {
+        Some(e) => FitError::PendantMoved {
+            from_pose: e.step.0,
+            step_deg: deg(e.step.1),
+        },
+        None => FitError::RevisitDisagrees {
+            pose,
+            revisit,
+            difference_deg: deg(difference),
+            limit_deg: rule.max_revisit_difference_deg as f32,
+        },
+    }
+}

@@ -295,6 +295,7 @@ pub fn solve<T: Real>(
     // The first pass has stages 0-1 without the sensor's gain: its residuals are not
     // yet the session's, so only the last pass is judged by them.
     let mut result = stage2(&stage1, arm, &bias_t);
+    let mut first_pass = None;
     // Stage 2 measured the sensor's gain: the bench readings and stage 1's are solved
     // again with it, and stage 2 with the better hand-over (the gain moves a bench's
     // circle centre by ~1 % of its tilt and Δθ2 by ~1 % of the upper arm's, stage 2 by
@@ -324,19 +325,33 @@ pub fn solve<T: Real>(
                     stage1 = s1;
                     result = stage2(&stage1, arm, &bias_t);
                 }
-                Err(e) => result = Err(e),
+                Err(e) => {
+                    first_pass = result.ok();
+                    result = Err(e);
+                }
             }
         }
     }
-    // The refusal rule on the last pass: a fault is named, a robot is solved.
-    if let Ok((h, r)) = &result {
-        let e = judge::evidence(
-            &h.model,
-            r,
-            merged,
-            judge::capture_difference(readings.poses, readings.capture_index),
-        );
+    // The refusal rule on the last pass: a fault is named, a robot is solved. Where
+    // the second pass's stages 0-1 refused, the gain they were solved with is the one a
+    // faulty stage 2 measured (a knocked pendant's gain draws the bench's circle as an
+    // ellipse): the first pass is judged, and a fault it shows is the one named.
+    let captures = judge::capture_difference(readings.poses, readings.capture_index);
+    let mut evidence = None;
+    if let Some((h, r)) = result.as_ref().ok().or(first_pass.as_ref()) {
+        let e = judge::evidence(&h.model, r, merged, captures);
         if let Err(fault) = judge::judge(&e, &config.refusal, config.max_residual_rms_rad) {
+            result = Err(SessionError::Stage2(fault));
+        }
+        evidence = Some(e);
+    } else if let Err(SessionError::Stage2(_)) = result {
+        // The fit failed: the captures' difference needs no model (a bracket that
+        // re-seats at every capture can drag a fit into no convergence).
+        let e = judge::Evidence {
+            capture_difference: captures,
+            ..judge::Evidence::default()
+        };
+        if let Err(fault) = judge::judge(&e, &config.refusal, T::zero()) {
             result = Err(SessionError::Stage2(fault));
         }
     }
@@ -358,12 +373,11 @@ pub fn solve<T: Real>(
         ) {
             let limit = config.refusal.max_revisit_difference_deg;
             if limit.is_finite() && d > crate::real::deg_to_rad(T::lit(limit)) {
-                result = Err(SessionError::Stage2(FitError::RevisitDisagrees {
-                    pose,
-                    revisit,
-                    difference_deg: crate::real::rad_to_deg(d).to_f64() as f32,
-                    limit_deg: limit as f32,
-                }));
+                result = Err(SessionError::Stage2(judge::revisit_fault(
+                    evidence.as_ref(),
+                    (pose, revisit, d),
+                    &config.refusal,
+                )));
             }
         }
     }

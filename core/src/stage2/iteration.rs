@@ -152,10 +152,18 @@ pub(super) fn levenberg_marquardt<T: Real>(
         // A trust region on the geometric terms: no step moves one by more than its
         // stated worst case. A turn of tens of degrees about a direction the poses see
         // only to first order is a valley of the cost the Gauss-Newton step can leap
-        // into (found at 40° where the minimum was at 0.3°).
+        // into (found at 40° where the minimum was at 0.3°). The reducer terms are
+        // errors of a joint's angle, as the offsets are: no such valley, and a bound at
+        // their prior's size crawled the fit of a pose not reached (a harmonic fifty
+        // priors out) a fiftieth of the way a step, into no convergence.
         let mut scale = T::one();
-        for (st, w) in step.iter().zip(&held.prior_weight).take(n) {
-            if *w > T::zero() {
+        for ((st, w), p) in step
+            .iter()
+            .zip(&held.prior_weight)
+            .zip(layout.params())
+            .take(n)
+        {
+            if *w > T::zero() && transmission::prior_sd_rad::<T>(*p).is_none() {
                 let bound = config.sensor_noise_rad / *w;
                 if st.abs() * scale > bound {
                     scale = bound / st.abs();
