@@ -426,7 +426,8 @@ fn combine<T: Real>(
     /// Δθ2's place among the hand-over parameters (α, β, Δθ2, bias x, bias y).
     const J2: usize = 2;
     // As stage 2 did (`FitConfig::handover_noise_rad`).
-    let variance = handover_noise_rad * handover_noise_rad;
+    let sigma = crate::stage2::handover_sigma_rad(handover_noise_rad, fit.noise_sigma_rad);
+    let variance = sigma * sigma;
     let mut offsets_rad = [T::zero(); SESSION_JOINTS];
     offsets_rad[0] = stage1.delta_theta2_rad + fit.joint2_correction_rad;
     offsets_rad[1..].copy_from_slice(&fit.offsets_rad);

@@ -120,7 +120,8 @@ pub struct FitConfig<T> {
     /// Residual RMS above which the fit refuses (rad); 0: never.
     pub max_residual_rms_rad: T,
     /// The noise of one stage 0-1 reading (rad), for the hand-over's share of the
-    /// covariance: the larger of this and the stage-2 residuals' σ (0: the residuals').
+    /// covariance; 0: none stated, the stage-2 residuals' σ is taken
+    /// ([`handover_sigma_rad`]).
     pub handover_noise_rad: T,
     /// The session's refusal rule beyond the residual ceiling
     /// ([`crate::session::judge`]).
@@ -145,6 +146,19 @@ impl<T: Real> Default for FitConfig<T> {
             handover_noise_rad: T::zero(),
             refusal: refusal::RefusalRule::STANDARD,
         }
+    }
+}
+
+/// The noise σ (rad) the hand-over's share of the covariance is scaled by: the stated
+/// noise of one stage 0-1 reading, or where none is stated (0) the stage-2 residuals'
+/// σ, since those readings come from the same sensor. Without the fallback a session
+/// with no stated figure reported no hand-over uncertainty at all: Δθ2's variance 0
+/// and Δθ3's σ (the base tilt α is coaxial with joint 3) ~7× too small.
+pub fn handover_sigma_rad<T: Real>(stated_rad: T, residual_sigma_rad: T) -> T {
+    if stated_rad > T::zero() {
+        stated_rad
+    } else {
+        residual_sigma_rad
     }
 }
 
@@ -609,8 +623,9 @@ fn finish<T: Real>(
     // Stages 0-1's readings have the sensor's noise (their own robot scatter is the
     // repeatability term's): stage 2's residuals hold what stage 2 alone has (the
     // robot's scatter at each pose, what the model leaves), and scaling the hand-over
-    // by them would count that twice.
-    let handover_variance = config.handover_noise_rad * config.handover_noise_rad;
+    // by them would count that twice. Where no figure is stated they are all there is.
+    let handover_sigma = handover_sigma_rad(config.handover_noise_rad, noise_sigma_rad);
+    let handover_variance = handover_sigma * handover_sigma;
     // Cov = σ²·(JᵀJ)⁻¹ + σₕ²·S·D·Sᵀ over the slots (σₕ: the hand-over's noise), the
     // second term formed where it is needed: it is rank five, not an n×n matrix.
     let d = &config.model_covariance;
