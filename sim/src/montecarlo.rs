@@ -155,6 +155,10 @@ pub struct Summary {
     /// Per joint, the fraction of solved sessions whose error is within the k = 2
     /// budget.
     pub covered: [f64; 5],
+    /// Per joint, how many solved sessions the k = 2 budget covers: the count behind
+    /// `covered`, for a check against a share without the rounding of a sum of
+    /// fractions (199 of 200 summed as 1/200 199 times is 0.9950000000000008).
+    pub covered_sessions: [usize; 5],
     /// Mean k = 2 budget per joint (deg).
     pub mean_k2_deg: [f64; 5],
     /// Per joint, the fraction of sessions within `limit_deg`.
@@ -196,14 +200,14 @@ pub fn summarise(outcomes: &[SessionOutcome], limit_deg: f64) -> Summary {
         .iter()
         .filter(|(_, e)| e.iter().all(|v| v.abs() <= limit_deg))
         .count();
-    let mut covered = [0.0; 5];
+    let mut covered_sessions = [0usize; 5];
     let mut mean_k2 = [0.0; 5];
     let mut within_k = [0.0; 5];
     for (o, e) in &solved {
         if let Some(b) = &o.budget {
             for k in 0..5 {
                 let u = b.expanded_rad[k].to_degrees();
-                covered[k] += f64::from(u8::from(e[k].abs() <= u)) / n;
+                covered_sessions[k] += usize::from(e[k].abs() <= u);
                 mean_k2[k] += u / n;
             }
         }
@@ -213,7 +217,8 @@ pub fn summarise(outcomes: &[SessionOutcome], limit_deg: f64) -> Summary {
         }
     }
     Summary {
-        covered,
+        covered: covered_sessions.map(|c| c as f64 / n),
+        covered_sessions,
         mean_k2_deg: mean_k2,
         within: within_k,
         sessions: outcomes.len(),

@@ -8,7 +8,8 @@ use rand_chacha::ChaCha8Rng;
 use rand_distr::{Distribution, StandardNormal};
 use zerocal_core::model::{Arm, BaseTilt, JointAxis, JOINTS, WRIST_JOINTS};
 use zerocal_core::real::deg_to_rad;
-use zerocal_core::stage2::MassModel;
+use zerocal_core::stage2::geometry::MIN_SAG_LEVER_M;
+use zerocal_core::stage2::{MassModel, GRAVITY_M_S2};
 
 /// Which of the robot's error sources are on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -242,14 +243,20 @@ impl RobotErrors {
             if sources.wrist_compliance {
                 let wrist = wrist_full_torques(arm, &m, limits_rad);
                 let (lo, hi) = spec.wrist_sag_full_lever_deg;
-                for ((full, compliance), torque) in e.full_torque_nm[3..]
-                    .iter_mut()
-                    .zip(&mut e.compliance_rad_per_nm[3..])
-                    .zip(&wrist[3..])
-                {
-                    *full = *torque;
+                for (k, torque) in wrist.iter().enumerate().skip(3) {
+                    e.full_torque_nm[k] = *torque;
                     if *torque > 0.0 {
-                        *compliance = deg_to_rad(rng.gen_range(lo..=hi)) / torque;
+                        let drawn = deg_to_rad(rng.gen_range(lo..=hi));
+                        // A joint whose load hangs on its axis (joint 6 under the
+                        // pendant; a torque of rounding, such as the GP7's flange π
+                        // written to seven decimals gives) bears none: no compliance
+                        // turns it into a deflection (the fit's own floor). Drawn all the
+                        // same, so that the other joints' draws stay as they were.
+                        let load_kg = m.link_kg[k..].iter().sum::<f64>() + m.pendant_kg;
+                        let floor_nm = load_kg * GRAVITY_M_S2 * MIN_SAG_LEVER_M;
+                        if *torque > floor_nm {
+                            e.compliance_rad_per_nm[k] = drawn / torque;
+                        }
                     }
                 }
             }

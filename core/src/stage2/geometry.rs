@@ -39,6 +39,16 @@ pub const TILT_PARALLEL_MAX_DEG: f64 = 0.5;
 /// wrist twisting under gravity) reached 0.027°; 0.03° rounds it up.
 pub const WRIST_SAG_MAX_DEG: f64 = 0.03;
 
+/// A load whose centre of mass passes within this of a wrist joint's axis at every pose
+/// (m) puts no torque on it: its sag is no candidate, neither fitted nor budgeted. The
+/// stated worst case of a sag is [`WRIST_SAG_MAX_DEG`] at the largest lever the poses
+/// give, so without a floor a lever that is only the rounding of a drawing's angles
+/// (the Yaskawa GP7's URDF writes the flange's π to seven decimals, which puts the
+/// pendant 15 nm off joint 6's axis: a lever of 1e-9 kg·m) was given a compliance that
+/// turns it into 0.03° of joint 6, and budgeted as 0.011° (1σ) no pose could separate
+/// from Δθ6. A micrometre is well below any machining or mounting tolerance.
+pub const MIN_SAG_LEVER_M: f64 = 1e-6;
+
 /// A fitted misalignment beyond this many times its stated worst case is not a robot's
 /// geometry but a model that does not describe the arm: the wrong profile.
 pub const TILT_IMPLAUSIBLE_FACTOR: f64 = 4.0;
@@ -86,7 +96,12 @@ pub fn identifiable<T: Real>(
                 p,
                 Param::Tilt(_) | Param::Harmonic(_) | Param::Sag2 | Param::Lash(_)
             );
-            if candidate && norm(slot) < T::lit(MIN_VISIBILITY) * offsets {
+            // A wrist joint whose load's centre of mass stays on its axis at every pose
+            // (joint 6 under the pendant, which hangs along the flange's normal) bears
+            // no gravity torque: there is no sag to fit or to budget.
+            let unloaded = matches!(p, Param::WristSag(_))
+                && worst_case(model, *p, joints_rad.clone()) == T::zero();
+            if unloaded || (candidate && norm(slot) < T::lit(MIN_VISIBILITY) * offsets) {
                 e = without(e, *p);
                 dropped = dropped.with(p.index());
             }
@@ -200,7 +215,14 @@ pub fn worst_case<T: Real>(
                     w.max(l.abs())
                 })
             });
-            if lever > T::zero() {
+            // The links' levers are per kilogram of their load (m), the pendant's in
+            // kg·m: the floor is the same micrometre for both.
+            let floor = T::lit(if i < WRIST_SAG_JOINTS {
+                MIN_SAG_LEVER_M
+            } else {
+                MIN_SAG_LEVER_M * super::PENDANT_KG
+            });
+            if lever > floor {
                 deg_to_rad(T::lit(WRIST_SAG_MAX_DEG)) / lever
             } else {
                 T::zero()

@@ -26,7 +26,8 @@ pub use bound::{
 };
 pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
 pub use model::{
-    Estimate, MassModel, Stage2Model, HANDOVER_PARAMS, MEMS_Y_WEIGHT, PENDANT_COM_M, PENDANT_KG,
+    Estimate, MassModel, Stage2Model, GRAVITY_M_S2, HANDOVER_PARAMS, MEMS_Y_WEIGHT, PENDANT_COM_M,
+    PENDANT_KG,
 };
 pub use params::{
     tilt_candidates, tilt_directions, Extras, Layout, Param, MAX_PARAMS, TILT_SLOTS, WRIST_SAG_ALL,

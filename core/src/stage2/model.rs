@@ -264,7 +264,7 @@ pub const PENDANT_COM_M: f64 = 0.05;
 /// The acceleration of gravity the torques use (m/s²). Only ratios of torques enter
 /// zerocal's results (a compliance fitted or drawn against the full-load torque, a
 /// torque against its full load), so its exact local value scales out.
-const GRAVITY_M_S2: f64 = 9.81;
+pub const GRAVITY_M_S2: f64 = 9.81;
 
 /// Everything about the robot and the sensor that stage 2 does not estimate.
 #[derive(Clone, Copy, Debug, PartialEq)]
