@@ -43,10 +43,9 @@ pub struct Scl3300Spec {
     pub offset_g: f64,
     /// Offset of Y, (low, high) (g): −25/+20 mg (SCL3300, second-hand).
     pub offset_y_g: (f64, f64),
-    /// Offset drift, ± (g per kelvin) on X and Y. No per-kelvin figure is published:
-    /// ±10 mg over −40…+125 °C from +23 °C (SCL3300 second-hand, SCA3300 Table 2
-    /// footnote B) averages 0.0056 °/K towards +125 °C and 0.0090 °/K towards −40 °C;
-    /// the larger, 0.009 °/K = 1.57e-4 g/K, is used (the original requirement quotes 0.005 °/K).
+    /// Offset drift, ± (g per kelvin) on X and Y: the chip crate's
+    /// `OFFSET_DRIFT_G_PER_K`, 1.57e-4 g/K = 0.009 °/K (no per-kelvin figure is
+    /// published; derived there from the ±10 mg over −40…+125 °C).
     pub drift_g_per_k: f64,
     /// Non-linearity, ± (g at 1 g, cubic): SCA3300 Table 2 footnote C, ±1 mg over ±1 g
     /// (no SCL3300 figure found). A cubic term reaches 0.005 mg within mode 4's ±10°.
@@ -80,7 +79,7 @@ impl Scl3300Spec {
         cross_axis: 0.01,
         offset_g: zerocal_scl3300::spec::OFFSET_X_SPEC_G,
         offset_y_g: (-0.025, 0.020),
-        drift_g_per_k: 1.57e-4,
+        drift_g_per_k: zerocal_scl3300::spec::OFFSET_DRIFT_G_PER_K,
         nonlinearity_g: 0.001,
         noise_g: zerocal_scl3300::spec::MODE4_NOISE_RMS_G,
         filter_hz: 10.0,

@@ -119,6 +119,8 @@ pub(super) fn rows(analysis: &Analysis) -> Vec<Row> {
                     sensor_offset_x_spec_deg() / 3f64.sqrt(),
                     false,
                 ),
+                // The SCL3300's stated offset drift over the captures' temperatures.
+                BudgetTerm::UnmeasuredDrift => (B, Rectangular, largest, true),
                 // Both brackets' yaws times the base's tilt.
                 BudgetTerm::BracketYaw => (B, Normal, largest, true),
             };

@@ -35,11 +35,12 @@ use zerocal_core::capture::CaptureIndex;
 use zerocal_core::model::Convention;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{
-    budget, half_turn_half_width, one_sided_pose, sensor_offset_x_spec_deg, solve,
-    stage1_joint1_mismatch, unknown_offset_half_width, BiasSource, Budget, BudgetInputs,
-    BudgetTerm, SessionError, SessionReadings, SessionSolution, StageTemperatures,
-    DEFAULT_HALF_TURN_TOLERANCE_DEG, DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG,
-    SESSION_JOINTS, STAGE1_JOINT1_TOLERANCE_DEG,
+    budget, half_turn_half_width, one_sided_pose, sensor_drift_spec_rad_per_k,
+    sensor_offset_x_spec_deg, solve, stage1_joint1_mismatch, unknown_offset_half_width,
+    unmeasured_drift_half_width, BiasSource, Budget, BudgetInputs, BudgetTerm, SessionError,
+    SessionReadings, SessionSolution, StageTemperatures, DEFAULT_HALF_TURN_TOLERANCE_DEG,
+    DEFAULT_LOST_MOTION_DEG, DEFAULT_REPEATABILITY_DEG, SESSION_JOINTS,
+    STAGE1_JOINT1_TOLERANCE_DEG,
 };
 use zerocal_core::stage0::BenchTurnsAt;
 use zerocal_core::stage1::AxisOneTurn;
@@ -603,6 +604,19 @@ pub fn analyse_with(
     if let Some(w) = half_turn {
         budget.add_half_turn(&w);
     }
+    let unmeasured_drift = unmeasured_drift_half_width(&readings, &config).map_err(|e| {
+        // As for the half turn: the refusal is what the session shows solved again with
+        // the sensor's bias drifting at either end of its stated rate.
+        CliError::Refused(name(&format!(
+            "{e} (found solving the session again with the sensor's bias drifting by \
+             +/-{:.4} deg/K, its stated drift, as its budget term does; the closing bench \
+             readings measure the drift)",
+            sensor_drift_spec_rad_per_k::<f64>().to_degrees()
+        )))
+    })?;
+    if let Some(w) = unmeasured_drift {
+        budget.add_unmeasured_drift(&w);
+    }
     let mut notes = vec![format!(
         "robot profile {} ({}), convention {}",
         profile.name,
@@ -651,6 +665,16 @@ pub fn analyse_with(
              refused if the pendant's temperature moved more than 0.5 K"
                 .to_owned(),
         );
+    }
+    if let Some(w) = unmeasured_drift {
+        notes.push(format!(
+            "the sensor's bias drift with temperature was not measured: at its stated \
+             +/-{:.4} deg/K over the captures' temperatures the offsets move by up to {:.4} \
+             deg, which the budget carries as the term '{}' (uniform)",
+            sensor_drift_spec_rad_per_k::<f64>().to_degrees(),
+            w.iter().fold(0.0f64, |m, v| m.max(v.to_degrees())),
+            BudgetTerm::UnmeasuredDrift.name()
+        ));
     }
     let held = config.extras.held;
     for (k, h) in held.iter().enumerate() {

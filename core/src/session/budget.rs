@@ -76,6 +76,10 @@ pub enum BudgetTerm {
     /// The sensor's x offset when no stage-0 reversal measured it (Type B: the
     /// SCL3300's offset specification, propagated; see [`Budget::add_unknown_sensor_offset`]).
     UnknownSensorOffset,
+    /// The sensor's bias drifting with temperature where no closing bench readings
+    /// measured the drift (Type B: the SCL3300's stated drift over the captures'
+    /// temperatures, propagated; see [`Budget::add_unmeasured_drift`]).
+    UnmeasuredDrift,
     /// The two brackets' yaws (the sine plate's uncertainty, or the stated tolerance
     /// where not measured): stage 2's cross-axis
     /// terms, handed back to stage 1, hold the flange bracket's yaw where stage 1 had
@@ -103,6 +107,7 @@ impl BudgetTerm {
         BudgetTerm::Mounting,
         BudgetTerm::HalfTurn,
         BudgetTerm::UnknownSensorOffset,
+        BudgetTerm::UnmeasuredDrift,
         BudgetTerm::BracketYaw,
     ];
 
@@ -125,6 +130,7 @@ impl BudgetTerm {
             BudgetTerm::Mounting => "brackets (calibration and seat)",
             BudgetTerm::HalfTurn => "stage 0 half turn on a tilted bench",
             BudgetTerm::UnknownSensorOffset => "sensor offset, no stage 0 (specification)",
+            BudgetTerm::UnmeasuredDrift => "sensor drift, not measured (specification)",
             BudgetTerm::BracketYaw => "bracket yaws x base tilt",
         }
     }
@@ -137,7 +143,7 @@ impl BudgetTerm {
 }
 
 /// Terms in a budget.
-pub const BUDGET_TERMS: usize = 17;
+pub const BUDGET_TERMS: usize = 18;
 
 /// The SCL3300's offset specification on X (g, ±), the chip crate's
 /// [`zerocal_scl3300::spec::OFFSET_X_SPEC_G`]. X is the axis stage 0 measures and stage 1
@@ -422,6 +428,14 @@ impl<T: Real> Budget<T> {
     /// 4.3.7). Combined and expanded are recomputed.
     pub fn add_unknown_sensor_offset(&mut self, half_width_rad: &[T; SESSION_JOINTS]) {
         self.add_uniform(BudgetTerm::UnknownSensorOffset, half_width_rad);
+    }
+
+    /// Adds the sensor's bias drift with temperature where it was not measured:
+    /// `half_width_rad[k]` is how far Δθ2+k moves with the drift at either end of its
+    /// specification ([`super::unmeasured_drift_half_width`]), uniform within it
+    /// (u = w/√3). Combined and expanded are recomputed.
+    pub fn add_unmeasured_drift(&mut self, half_width_rad: &[T; SESSION_JOINTS]) {
+        self.add_uniform(BudgetTerm::UnmeasuredDrift, half_width_rad);
     }
 
     /// Adds stage 0's half turn: `half_width_rad[k]` is how far Δθ2+k moves with the

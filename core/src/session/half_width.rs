@@ -104,3 +104,109 @@ pub fn half_turn_half_width<T: Real>(
         ((plus[k] - minus[k]) * half).abs()
     })))
 }
+
+/// The most stage-2 captures [`unmeasured_drift_half_width`] shifts: four times the
+/// pendant's [`crate::capture::MAX_CAPTURES`] (a plain log may hold more than a pendant
+/// session).
+const DRIFT_SHIFT_CAPTURES: usize = 4 * crate::capture::MAX_CAPTURES;
+
+/// Where no closing bench readings measured the bias' drift with temperature: how far
+/// each of Δθ2..Δθ6 moves with the sensor's bias drifting at its stated rate
+/// ([`super::sensor_drift_spec_rad_per_k`], 0.009 °/K) on x or on y, as half the
+/// difference between the session solved with every reading moved by
+/// `±drift·(t − t_ref)` (rad, the two axes' half swings in quadrature: each axis' drift
+/// is its own, uniform within ±the rate). `t_ref` is the temperature the bias was
+/// measured at (stage 0's; without stage 0, stage 1's, where stage 1 measures the y
+/// bias; else the first capture's). Without it the refusal rule lets such a drift of
+/// the readings pass as the sensor's own (it is not a creeping bracket), and the
+/// offsets carry it unseen. `None` where the drift was measured, or no capture
+/// recorded its temperature.
+///
+/// # Errors
+/// The solver's refusal at either end (the refusal rule off: the session was judged
+/// as read); [`SessionError::Warmed`] (limit 0 K) for a
+/// session of more than four times the pendant's captures whose drift was not measured.
+pub fn unmeasured_drift_half_width<T: Real>(
+    readings: &SessionReadings<'_, T>,
+    config: &FitConfig<T>,
+) -> Result<Option<[T; SESSION_JOINTS]>, SessionError> {
+    use super::stages01::{bias_over_temperature, drift_measured, BenchSettings};
+    use crate::model::Gain;
+    use crate::stage2::PoseReading;
+    let bench = BenchSettings {
+        convention: readings.convention,
+        gain: Gain::default(),
+        range_rad: config.sensor_range_rad,
+        noise_rad: T::zero(),
+    };
+    let temps = &readings.temperatures;
+    let bias = bias_over_temperature(&readings.bias, temps, readings.closing.as_ref(), &bench)?;
+    if drift_measured(&bias) {
+        return Ok(None);
+    }
+    let stage0_c = match readings.bias {
+        BiasSource::Bench(_) => temps.stage0_c,
+        _ => None,
+    };
+    let first_c = readings.poses.iter().find_map(|p| p.temperature_c);
+    let Some(reference_c) = stage0_c.or(temps.stage1_c).or(first_c) else {
+        return Ok(None);
+    };
+    let Some(last_c) = readings.poses.iter().rev().find_map(|p| p.temperature_c) else {
+        return Ok(None);
+    };
+    if readings.poses.len() > DRIFT_SHIFT_CAPTURES {
+        return Err(SessionError::Warmed {
+            kelvin: (last_c - reference_c).abs().to_f64() as f32,
+            limit_k: 0.0,
+            drift_measured: false,
+        });
+    }
+    let rate = super::sensor_drift_spec_rad_per_k::<T>();
+    // The session moved by the drift is a sensitivity, not a session: it was judged as
+    // it was read, and the drift added on top of the one it already has is no creep.
+    let sensitivity = FitConfig {
+        refusal: crate::stage2::refusal::RefusalRule::OFF,
+        ..*config
+    };
+    let moved = |t: Option<T>, axis: Tilt<T>| {
+        let dt = t.map_or(T::zero(), |t| t - reference_c);
+        Tilt::new(axis.x_rad * rate * dt, axis.y_rad * rate * dt)
+    };
+    let at = |axis: Tilt<T>| {
+        let mut poses: heapless::Vec<PoseReading<T>, DRIFT_SHIFT_CAPTURES> = heapless::Vec::new();
+        for p in readings.poses {
+            let d = moved(p.temperature_c, axis);
+            // Room was checked above.
+            let _ = poses.push(PoseReading {
+                reading: Tilt::new(p.reading.x_rad + d.x_rad, p.reading.y_rad + d.y_rad),
+                ..*p
+            });
+        }
+        let d1 = moved(temps.stage1_c, axis);
+        let shift = |r: Tilt<T>| Tilt::new(r.x_rad + d1.x_rad, r.y_rad + d1.y_rad);
+        let r = SessionReadings {
+            poses: &poses,
+            stage1: crate::stage1::AxisOneTurn {
+                before: shift(readings.stage1.before),
+                after: shift(readings.stage1.after),
+                ..readings.stage1
+            },
+            ..*readings
+        };
+        solve(&r, &sensitivity).result.map(|s| s.offsets_rad)
+    };
+    let mut squared = [T::zero(); SESSION_JOINTS];
+    for axis in [
+        Tilt::new(T::one(), T::zero()),
+        Tilt::new(T::zero(), T::one()),
+    ] {
+        let neg = Tilt::new(-axis.x_rad, -axis.y_rad);
+        let (plus, minus) = (at(axis)?, at(neg)?);
+        for (s, (p, m)) in squared.iter_mut().zip(plus.iter().zip(&minus)) {
+            let w = (*p - *m) * T::lit(0.5);
+            *s += w * w;
+        }
+    }
+    Ok(Some(squared.map(|s| s.sqrt())))
+}

@@ -51,6 +51,13 @@ pub struct Evidence<T> {
     /// A steady drift of every reading over the poses in the order taken: its size from
     /// the first pose to the last (rad) and its F.
     pub ramp: (T, T),
+    /// How large a drift the sensor's own bias could have made over stage 2 (rad): where
+    /// no closing bench readings measured its drift with temperature, the stated drift
+    /// on x and y ([`super::stages01::SENSOR_DRIFT_SPEC_G_PER_K`]) times the span of the
+    /// captures' temperatures ([`thermal_ramp_rad`]); 0 where it was measured (the model
+    /// then takes it out). A drift within it is not called a creep: the budget carries
+    /// it.
+    pub ramp_explained_rad: T,
     /// The residual RMS (rad, per reading).
     pub residual_rms_rad: T,
 }
@@ -79,14 +86,32 @@ pub fn capture_difference<T: Real>(
     (count > 0).then(|| ((sum / T::lit(f64::from(count))).sqrt(), worst.1))
 }
 
+/// The drift of every reading the sensor's bias could make over `poses` where its
+/// drift with temperature was not measured (rad, the size of the shift from the first
+/// pose to the last as [`Evidence::ramp`] measures it): `drift_per_k` on x and on y at
+/// once (√2 of it) times the span of the captures' temperatures. 0 without
+/// temperatures.
+pub fn thermal_ramp_rad<T: Real>(poses: &[PoseReading<T>], drift_per_k: T) -> T {
+    let mut temps = poses.iter().filter_map(|p| p.temperature_c);
+    let Some(first) = temps.next() else {
+        return T::zero();
+    };
+    let (lo, hi) = temps.fold((first, first), |(lo, hi), t| (lo.min(t), hi.max(t)));
+    T::lit(2.0).sqrt() * drift_per_k.abs() * (hi - lo)
+}
+
 /// The poses visited twice, compared without any model: the largest difference
 /// between two visits of one pose (first visit, later visit, the larger of x and y in
 /// rad), each reading corrected for the bias' drift with temperature
-/// (`drift_per_k`, the bench readings'). Visits are the merged poses (each the mean of
-/// its two approaches) whose commanded joints are equal. `None` without a revisit.
+/// (`drift_per_k`, the bench readings'). Where that drift was not measured,
+/// `unmeasured_drift_per_k` (rad/K, the sensor's stated drift; 0 where measured) times
+/// the two visits' temperature difference is what the bias may have moved between them:
+/// each axis' difference is taken beyond it. Visits are the merged poses (each the mean
+/// of its two approaches) whose commanded joints are equal. `None` without a revisit.
 pub fn revisit_difference<T: Real>(
     poses: &[PoseReading<T>],
     drift_per_k: &crate::model::Tilt<T>,
+    unmeasured_drift_per_k: T,
 ) -> Option<(usize, usize, T)> {
     let mut worst: Option<(usize, usize, T)> = None;
     let corrected = |p: &PoseReading<T>, t0: Option<T>| {
@@ -106,7 +131,12 @@ pub fn revisit_difference<T: Real>(
             }
             let (ax, ay) = corrected(a, a.temperature_c);
             let (bx, by) = corrected(b, a.temperature_c);
-            let d = (bx - ax).abs().max((by - ay).abs());
+            let thermal = match (a.temperature_c, b.temperature_c) {
+                (Some(ta), Some(tb)) => unmeasured_drift_per_k.abs() * (tb - ta).abs(),
+                _ => T::zero(),
+            };
+            let beyond = |v: T| (v.abs() - thermal).max(T::zero());
+            let d = beyond(bx - ax).max(beyond(by - ay));
             if worst.is_none_or(|(_, _, w)| d > w) {
                 worst = Some((i, j, d));
             }
@@ -196,6 +226,7 @@ pub fn evidence<T: Real>(
             outlier,
             step,
             ramp,
+            ramp_explained_rad: T::zero(),
             residual_rms_rad,
         };
     };
@@ -321,6 +352,7 @@ pub fn evidence<T: Real>(
         outlier,
         step,
         ramp,
+        ramp_explained_rad: T::zero(),
         residual_rms_rad,
     }
 }
@@ -357,9 +389,11 @@ pub fn judge<T: Real>(
             others_rms_deg: deg(others),
         });
     }
-    // A creep is a drift, a knock a step: the larger F names which it was.
+    // A creep is a drift, a knock a step: the larger F names which it was. A drift the
+    // sensor's unmeasured thermal drift explains is not the clamp's.
     let (drift, ramp_f) = e.ramp;
     if beyond(drift, rule.ramp_floor_deg)
+        && drift > e.ramp_explained_rad
         && rule.ramp_limit.is_finite()
         && ramp_f > T::lit(rule.ramp_limit)
         && ramp_f >= e.step.2

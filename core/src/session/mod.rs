@@ -29,13 +29,13 @@ pub use budget::{
 };
 pub use captures::{first_captures, merge_captures, merge_repeats, one_sided_pose};
 pub use half_width::{
-    half_turn_half_width, unknown_offset_half_width, DEFAULT_HALF_TURN_TOLERANCE_DEG,
-    JIG_HALF_TURN_TOLERANCE_DEG,
+    half_turn_half_width, unknown_offset_half_width, unmeasured_drift_half_width,
+    DEFAULT_HALF_TURN_TOLERANCE_DEG, JIG_HALF_TURN_TOLERANCE_DEG,
 };
 pub use stage1_joints::{stage1_joint1_mismatch, STAGE1_JOINT1_TOLERANCE_DEG};
 pub use stages01::{
-    handover, handover_at, solve_stages01, Handover, MAX_DRIFT_EXTRAPOLATION_K, MAX_DRIFT_SPAN_K,
-    MAX_UNMEASURED_DRIFT_K,
+    handover, handover_at, sensor_drift_spec_rad_per_k, solve_stages01, Handover,
+    MAX_DRIFT_EXTRAPOLATION_K, MAX_DRIFT_SPAN_K, MAX_UNMEASURED_DRIFT_K, SENSOR_DRIFT_SPEC_G_PER_K,
 };
 
 use stages01::{
@@ -337,9 +337,19 @@ pub fn solve<T: Real>(
     // faulty stage 2 measured (a knocked pendant's gain draws the bench's circle as an
     // ellipse): the first pass is judged, and a fault it shows is the one named.
     let captures = judge::capture_difference(readings.poses, readings.capture_index);
+    // The bias' drift with temperature where nothing measured it: the sensor's stated
+    // figure, which the revisits and the readings' ramp are not refused for.
+    let unmeasured_drift_per_k = if stages01::drift_measured(&bias_t) {
+        T::zero()
+    } else {
+        stages01::sensor_drift_spec_rad_per_k()
+    };
     let mut evidence = None;
     if let Some((h, r)) = result.as_ref().ok().or(first_pass.as_ref()) {
-        let e = judge::evidence(&h.model, r, merged, captures);
+        let e = judge::Evidence {
+            ramp_explained_rad: judge::thermal_ramp_rad(merged, unmeasured_drift_per_k),
+            ..judge::evidence(&h.model, r, merged, captures)
+        };
         if let Err(fault) = judge::judge(&e, &config.refusal, config.max_residual_rms_rad) {
             result = Err(SessionError::Stage2(fault));
         }
@@ -370,6 +380,7 @@ pub fn solve<T: Real>(
         if let Some((pose, revisit, d)) = judge::revisit_difference(
             merged,
             &bias_t.as_ref().map_or(Tilt::default(), |b| b.drift_per_k),
+            unmeasured_drift_per_k,
         ) {
             let limit = config.refusal.max_revisit_difference_deg;
             if limit.is_finite() && d > crate::real::deg_to_rad(T::lit(limit)) {

@@ -12,8 +12,28 @@ use crate::stage2::{MassModel, PoseReading, Stage2Model};
 
 /// Without a closing reversal the drift is unknown: stage 2's temperatures may differ
 /// from stage 0's by at most this (K). At the SCL3300's up to ~0.009 °/K
-/// (docs/error-budget.md) 0.5 K is 0.0045°, just inside the 0.005° aimed at.
+/// ([`SENSOR_DRIFT_SPEC_G_PER_K`]) 0.5 K is 0.0045°, just inside the 0.005° aimed at.
 pub const MAX_UNMEASURED_DRIFT_K: f64 = 0.5;
+
+/// The SCL3300's offset drift with temperature, ± (g/K) on x and y: the chip crate's
+/// [`zerocal_scl3300::spec::OFFSET_DRIFT_G_PER_K`] (0.009 °/K). Where no closing bench
+/// readings measured the drift, it is what the bias may have done between captures at
+/// different temperatures: the refusal rule does not call a drift of the readings that
+/// this explains a creeping bracket, and the budget carries it
+/// ([`super::unmeasured_drift_half_width`]).
+pub const SENSOR_DRIFT_SPEC_G_PER_K: f64 = zerocal_scl3300::spec::OFFSET_DRIFT_G_PER_K;
+
+/// [`SENSOR_DRIFT_SPEC_G_PER_K`] as an angle at level (rad/K).
+pub fn sensor_drift_spec_rad_per_k<T: Real>() -> T {
+    T::lit(libm::asin(SENSOR_DRIFT_SPEC_G_PER_K))
+}
+
+/// Whether the bias' drift with temperature was measured: stage 0's bench readings and
+/// the closing ones after stage 2, both with their temperatures.
+pub fn drift_measured<T: Real>(bias: &Option<BiasOverTemperature<T>>) -> bool {
+    // `closing_c` is set only where the two bench solves' temperatures gave a slope.
+    bias.as_ref().is_some_and(|b| b.closing_c.is_some())
+}
 
 /// With a closing reversal the drift is linear between the two reversals' temperatures:
 /// a capture may lie outside them by at most this (K).
