@@ -94,6 +94,7 @@ pub static CATALOG: &[Figure] = &[
     plan::PLAN_WINDOW,
     plan::PLAN_MARGIN,
     plan::PLAN_KR6_SUMMARY,
+    plan::SIMULATE_U_KR6,
     plan::PLAN_KR16,
     plan::PLAN_PER_PROFILE,
     plan::PLAN_TARGET_REFUSED,

@@ -305,3 +305,27 @@ pub const SESSION_KR6_MAMES: Figure = Figure {
         ))
     },
 };
+
+/// The README's main job on its own robot: `zerocal simulate`'s U(k = 2) per joint,
+/// `j2 0.0087°, j3 …` (the issue-30 "before" beside it is quoted, not made).
+pub const SIMULATE_U_KR6: Figure = Figure {
+    name: "simulate-u-kr6",
+    command: "zerocal simulate (the U(k=2) column)",
+    make: |s| {
+        let out = s.zerocal(&["simulate"])?;
+        let mut parts = Vec::new();
+        for joint in ["j2", "j3", "j4", "j5", "j6"] {
+            let row = super::rows(&out, &[joint]);
+            let fields = row
+                .first()
+                .ok_or_else(|| anyhow!("zerocal simulate printed no {joint} row"))?;
+            // joint found truth error 1sigma U(k=2) |error|/U
+            let u = fields
+                .get(5)
+                .ok_or_else(|| anyhow!("zerocal simulate's {joint} row has no U(k=2)"))?;
+            let u = super::number(u)?;
+            parts.push(format!("{joint} {u:.4}"));
+        }
+        Ok(format!("{}°", parts.join(", ")))
+    },
+};
