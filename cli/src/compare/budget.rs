@@ -16,9 +16,11 @@ use super::Comparison;
 use crate::session::{Analysis, ExportContents};
 use serde::{Deserialize, Serialize};
 use zerocal_core::bracket::{BracketMount, SEAT_REPEATABILITY_DEG};
+use zerocal_core::model::{Convention, Gain};
 use zerocal_core::session::{BudgetTerm, COVERAGE_FACTOR, SESSION_JOINTS};
+use zerocal_core::stage0::BenchSolution;
 use zerocal_core::stage2::transmission::TRANSMISSION_PP_MAX_DEG;
-use zerocal_core::stage2::MEMS_CAPTURE_NOISE_DEG;
+use zerocal_core::stage2::{MEMS_CAPTURE_NOISE_DEG, MEMS_RANGE_DEG};
 
 /// The highest harmonic of a joint's turn the budget's transmission error has (orders
 /// 2-4, `zerocal_core::stage2::transmission`): its steepest slope is `4·a` per radian.
@@ -53,22 +55,54 @@ pub(super) struct Inputs<'a> {
     pub moved_rad: &'a [f64; SESSION_JOINTS],
     pub type_a_rad: &'a [f64; SESSION_JOINTS],
     pub bias_sensitivity: &'a [f64; SESSION_JOINTS],
-    pub bench_tilt_now_rad: f64,
+    /// How the offsets follow a turn of the flange bracket about the pendant's x, y, z
+    /// (rad per rad).
+    pub mount_response: &'a [[f64; SESSION_JOINTS]; 3],
+    /// Both stage-0 biases, combined ([`stage0_bias_u_rad`] of each), rad.
+    pub both_biases_u_rad: f64,
     pub options: &'a super::CompareOptions,
 }
 
-/// One stage-0 reversal's bias, one standard uncertainty (rad): the half-sum of two
-/// captures (σ/√2) and the half turn's tolerance on a bench tilted by `bench_tilt_rad`
-/// (moves the bias by tolerance × tilt / 2, uniform).
-pub(super) fn reversal_u_rad(bench_tilt_rad: f64, half_turn_tolerance_deg: f64) -> f64 {
-    let noise = MEMS_CAPTURE_NOISE_DEG.to_radians() / 2f64.sqrt();
-    let half_turn = half_turn_tolerance_deg.to_radians() * bench_tilt_rad / 2.0;
-    (noise * noise + half_turn * half_turn / 3.0).sqrt()
+/// An export's stage-0 bench solved as its session solves it: with the sensor's gain
+/// and cross-axis terms the reference's fit estimated (the same pendant; a tilted
+/// bench's circle is an ellipse under them, its centre off by ~1 % of the tilt), its
+/// residuals not judged (the session judged the reference's; the comparison judges
+/// what it leaves). `None` without stage 0 or where its readings are refused.
+pub(super) fn bench_solution(
+    export: &ExportContents,
+    gain: &Gain<f64>,
+) -> Option<BenchSolution<f64>> {
+    export.stage0.and_then(|s| {
+        s.turns
+            .solve(Convention::Axis, *gain, MEMS_RANGE_DEG.to_radians(), 0.0)
+            .ok()
+    })
 }
 
-/// An export's stage-0 bench tilt (rad): half its reversal's difference (0 without one).
-pub(super) fn bench_tilt_rad(export: &ExportContents) -> f64 {
-    export.stage0.map_or(0.0, |s| s.turns.half_turn_tilt_rad())
+/// A stage-0 bias's standard uncertainty beyond its readings' noise (rad): where two
+/// headings assume a half turn, its tolerance on the bench's tilt moves the bias by
+/// tolerance × tilt / 2 (uniform); three or more headings solve their own turns.
+pub(super) fn half_turn_u_rad(bench: &BenchSolution<f64>, half_turn_tolerance_deg: f64) -> f64 {
+    if bench.headings_solved {
+        0.0
+    } else {
+        half_turn_tolerance_deg.to_radians() * bench.tilt_rad / 2.0 / 3f64.sqrt()
+    }
+}
+
+/// A stage-0 bias, one standard uncertainty (rad): its single captures' noise through
+/// the bench solve (its variance factor: ½ for a reversal's half-sum, the circle
+/// centre's for three or more headings turned by hand), and a half turn's tolerance
+/// ([`half_turn_u_rad`]). Without a bench solve (a stored bias), a reversal's.
+pub(super) fn stage0_bias_u_rad(
+    bench: Option<&BenchSolution<f64>>,
+    half_turn_tolerance_deg: f64,
+) -> f64 {
+    let capture = MEMS_CAPTURE_NOISE_DEG.to_radians();
+    bench.map_or(capture / 2f64.sqrt(), |b| {
+        (capture * b.variance_factor.max(0.0).sqrt())
+            .hypot(half_turn_u_rad(b, half_turn_tolerance_deg))
+    })
 }
 
 fn deg(v: [f64; SESSION_JOINTS]) -> [f64; SESSION_JOINTS] {
@@ -82,22 +116,27 @@ pub(super) fn difference_budget(i: &Inputs<'_>) -> DifferenceBudget {
         standard_uncertainty_deg: deg(*i.type_a_rad),
     }];
     // Both stage-0 biases, through the offsets' response to the bias stage 0 fixes.
-    let reference_tilt = bench_tilt_rad(&i.reference.export);
-    let tolerance = i.options.half_turn_tolerance_deg;
-    let u_bias = reversal_u_rad(reference_tilt, tolerance)
-        .hypot(reversal_u_rad(i.bench_tilt_now_rad, tolerance));
+    let u_bias = i.both_biases_u_rad;
     terms.push(DifferenceTerm {
-        term: "both stage-0 biases (noise, half turn on a tilted bench)".into(),
+        term: "both stage-0 biases (the bench solves' noise; a half turn on a tilted bench)".into(),
         standard_uncertainty_deg: deg(i.bias_sensitivity.map(|s| s * u_bias)),
     });
-    // The flange bracket seated twice: a turn of the pendant about its x or y reads as
-    // a bias of the other axis (at the small tilts of the plan's window), so it follows
-    // the offsets' response to the bias stage 0 fixes (the other is estimated). A
-    // different calibration does not cancel.
+    // The flange bracket seated twice: each seat turns the pendant about its x, y and
+    // z within the repeatability (uniform, independent), and the offsets follow each
+    // turn as the comparison's solve does ([`Inputs::mount_response`]). A different
+    // calibration does not cancel.
     let seat = SEAT_REPEATABILITY_DEG.to_radians() / 3f64.sqrt() * 2f64.sqrt();
+    let through_mount = |u_per_axis: &[f64; 3]| -> [f64; SESSION_JOINTS] {
+        core::array::from_fn(|k| {
+            (0..3)
+                .map(|a| (i.mount_response[a][k] * u_per_axis[a]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
+    };
     terms.push(DifferenceTerm {
         term: "flange bracket seated twice".into(),
-        standard_uncertainty_deg: deg(i.bias_sensitivity.map(|s| s * seat)),
+        standard_uncertainty_deg: deg(through_mount(&[seat; 3])),
     });
     let reference_flange = i.reference.export.brackets.get(BracketMount::Flange);
     let now_flange = i.now.brackets.get(BracketMount::Flange);
@@ -110,7 +149,8 @@ pub(super) fn difference_budget(i: &Inputs<'_>) -> DifferenceBudget {
             )
         };
         let u_other = u(reference_flange).hypot(u(now_flange));
-        let other = i.bias_sensitivity.map(|s| s * u_other);
+        // A calibration states the bracket's tilt (about the pendant's x and y).
+        let other = through_mount(&[u_other, u_other, 0.0]);
         terms.push(DifferenceTerm {
             term: "flange bracket: another bracket or calibration than the reference's".into(),
             standard_uncertainty_deg: deg(other),

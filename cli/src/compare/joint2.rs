@@ -9,7 +9,7 @@
 //! with joint 2's move known, joint 3's is the flange's less joint 2's share
 //! ([`joint3_per_joint2`]).
 
-use super::budget::{bench_tilt_rad, reversal_u_rad};
+use super::budget::{bench_solution, half_turn_u_rad};
 use super::DifferenceTerm;
 use crate::session::{Analysis, ExportContents};
 use zerocal_core::bracket::{BracketMount, SEAT_REPEATABILITY_DEG};
@@ -59,6 +59,7 @@ fn solved(
     export: &ExportContents,
     turn: &AxisOneTurn<f64>,
     arm: &Arm<f64>,
+    gain: Gain<f64>,
     captures_per_reading: f64,
 ) -> Result<Stage1Result<f64>, String> {
     let range = MEMS_RANGE_DEG.to_radians();
@@ -67,7 +68,7 @@ fn solved(
             &r,
             export.closing.as_ref(),
             Convention::Axis,
-            zerocal_core::model::Gain::default(),
+            gain,
             range,
             0.0,
         )
@@ -81,14 +82,8 @@ fn solved(
     let t1 = export.stage1_temperature_c;
     let at = bias.at(t1);
     let variance = bias.variance_factor(t1) * captures_per_reading;
-    turn.solve_with_gain(
-        arm,
-        Convention::Axis,
-        Gain::default(),
-        Some((&at, variance)),
-        range,
-    )
-    .map_err(|e| format!("stage 1: {e}"))
+    turn.solve_with_gain(arm, Convention::Axis, gain, Some((&at, variance)), range)
+        .map_err(|e| format!("stage 1: {e}"))
 }
 
 fn column(u_rad: f64) -> [f64; SESSION_JOINTS] {
@@ -127,12 +122,19 @@ pub(super) fn joint2_move(
     }
     // The same arm and bracket for both: a calibration error of the bracket is then
     // common and cancels; another bracket's or calibration's does not (a term below).
-    let arm = reference.export.brackets.apply(&reference.profile.arm);
+    // The same pendant: both solved with the sensor gain the reference's fit estimated,
+    // as the session solves its stages 0-1 again with it (a nominal gain moves each
+    // bench's circle centre by ~1 % of that bench's tilt, another error on each).
+    let gain = reference.solution.fit.gain();
+    let arm = reference
+        .export
+        .brackets
+        .apply_with_gain(&reference.profile.arm, &gain);
     // A stage-1 reading is the mean of its two captures (from below and above).
     let per_reading = 2.0;
-    let r = solved(&reference.export, &turn_ref, &arm, per_reading)
+    let r = solved(&reference.export, &turn_ref, &arm, gain, per_reading)
         .map_err(|e| NoJoint2::Skipped(format!("the reference's {e}")))?;
-    let n = solved(now, &turn_now, &arm, per_reading)
+    let n = solved(now, &turn_now, &arm, gain, per_reading)
         .map_err(|e| NoJoint2::Skipped(format!("this measurement's {e}")))?;
     let moved_rad = n.delta_theta2_rad - r.delta_theta2_rad;
     if !moved_rad.is_finite() {
@@ -145,14 +147,12 @@ pub(super) fn joint2_move(
     let reference_terms = &reference.budget.terms_rad;
     let both = |t: BudgetTerm| reference_terms[t.index()][0] * 2f64.sqrt();
     let seat = SEAT_REPEATABILITY_DEG.to_radians() / 3f64.sqrt() * 2f64.sqrt();
-    // The half turn of each stage 0 on its bench: Δθ2 takes the x bias whole.
-    let half_turn = |tilt: f64| {
-        let full = reversal_u_rad(tilt, half_turn_tolerance_deg);
-        let noise_only = reversal_u_rad(0.0, half_turn_tolerance_deg);
-        (full * full - noise_only * noise_only).max(0.0).sqrt()
+    // The half turn of each stage 0 on its bench where two headings assume one (three
+    // or more solve their turns): Δθ2 takes the x bias whole.
+    let half_turn = |export: &ExportContents| {
+        bench_solution(export, &gain).map_or(0.0, |b| half_turn_u_rad(&b, half_turn_tolerance_deg))
     };
-    let half_turns =
-        half_turn(bench_tilt_rad(&reference.export)).hypot(half_turn(bench_tilt_rad(now)));
+    let half_turns = half_turn(&reference.export).hypot(half_turn(now));
     let mut terms = vec![
         DifferenceTerm {
             term: "joint 2: upper-arm readings and stage-0 biases of both (noise)".into(),

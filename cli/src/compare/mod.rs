@@ -36,8 +36,9 @@ pub use joint2::joint3_per_joint2;
 
 use crate::session::{Analysis, ExportContents};
 use nalgebra::{DMatrix, DVector};
-use zerocal_core::model::{Convention, Tilt, JOINTS, WRIST_JOINTS};
+use zerocal_core::model::{Convention, Gain, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::session::SESSION_JOINTS;
+use zerocal_core::stage0::BenchSolution;
 use zerocal_core::stage2::{
     moved_reading, Param, PoseReading, MEMS_CAPTURE_NOISE_DEG, MEMS_RANGE_DEG,
 };
@@ -53,6 +54,11 @@ pub const MIN_COMPARED_POSES: usize = 4;
 /// Gauss-Newton steps at most; the model is smooth and a move of a degree converges in
 /// three.
 const MAX_STEPS: usize = 12;
+
+/// The turn of the flange bracket (rad) the offsets' response to a seat's turn is
+/// differentiated over: far above the readings' rounding (1e-16 of a radian), far
+/// below where the model bends.
+const MOUNT_STEP_RAD: f64 = 1e-6;
 
 /// A step below this (rad) has converged.
 const CONVERGED_RAD: f64 = 1e-12;
@@ -206,16 +212,19 @@ fn pairs(reference: &[PoseReading<f64>], now: &[PoseReading<f64>]) -> (Vec<Pair>
     (pairs, total)
 }
 
-/// The stage-0 bias of the measurement and its temperature.
-fn stage0_bias(now: &ExportContents) -> Result<(Tilt<f64>, Option<f64>, f64), CompareError> {
+/// The measurement's stage-0 bench solve (its bias) and its temperature, solved
+/// with the reference fit's sensor gain as the reference's own bias was
+/// ([`budget::bench_solution`]).
+fn stage0_bias(
+    now: &ExportContents,
+    gain: &Gain<f64>,
+) -> Result<(BenchSolution<f64>, Option<f64>), CompareError> {
     let s0 = now.stage0.ok_or(CompareError::NoStage0)?;
-    let bias = s0
+    let solution = s0
         .turns
-        .bias(Convention::Axis, MEMS_RANGE_DEG.to_radians())
+        .solve(Convention::Axis, *gain, MEMS_RANGE_DEG.to_radians(), 0.0)
         .map_err(|e| CompareError::Stage0(e.to_string()))?;
-    // The bench's tilt where a half turn was assumed, for the half-turn term.
-    let bench_tilt_rad = s0.turns.half_turn_tilt_rad();
-    Ok((bias, s0.temperature_c, bench_tilt_rad))
+    Ok((solution, s0.temperature_c))
 }
 
 /// What a comparison assumes besides the two measurements.
@@ -252,7 +261,21 @@ pub fn compare(
     }
     let model = &reference.solution.model;
     let fit = &reference.solution.fit;
-    let (b0_now, t0_now, bench_tilt_now_rad) = stage0_bias(now)?;
+    // The same pendant: its gain and cross-axis terms are the reference fit's, and the
+    // measurement's bench is solved with them as the reference's was (a nominal gain
+    // draws a tilted bench's circle as an ellipse and moves its centre by ~1 % of the
+    // tilt, a different error on each bench).
+    let gain = fit.gain();
+    let (bench_now, t0_now) = stage0_bias(now, &gain)?;
+    let b0_now = bench_now.bias;
+    let both_biases_u_rad = budget::stage0_bias_u_rad(
+        budget::bench_solution(&reference.export, &gain).as_ref(),
+        options.half_turn_tolerance_deg,
+    )
+    .hypot(budget::stage0_bias_u_rad(
+        Some(&bench_now),
+        options.half_turn_tolerance_deg,
+    ));
     let (pairs, total) = pairs(&reference.export.poses, &now.poses);
     if pairs.len() < MIN_COMPARED_POSES {
         return Err(CompareError::TooFewCommonPoses {
@@ -380,17 +403,12 @@ pub fn compare(
             .collect()
     };
     let ssr: f64 = rows.iter().map(|r| r.residual_rad * r.residual_rad).sum();
-    let reference_tilt = budget::bench_tilt_rad(&reference.export);
     let consistency = consistency::consistency(
         &rows,
         &consistency::Figures {
             moved_rad: offsets,
             gearbox_replaced: core::array::from_fn(|k| options.gearbox_replaced[k + 1]),
-            bias_u_rad: budget::reversal_u_rad(reference_tilt, options.half_turn_tolerance_deg)
-                .hypot(budget::reversal_u_rad(
-                    bench_tilt_now_rad,
-                    options.half_turn_tolerance_deg,
-                )),
+            bias_u_rad: both_biases_u_rad,
         },
     );
     if !consistency.one_robot() {
@@ -437,6 +455,38 @@ pub fn compare(
             bias_sensitivity[k + 1] = response[c].abs();
         }
     }
+    // How the offsets follow a turn of the flange bracket on its seat about each of
+    // the pendant's axes (one radian of it, solved as the comparison solves): a seat's
+    // turn is a rotation of the pendant, not a bias, and over the poses' tilts it
+    // reads partly as the wrist's offsets (joint 5's too), not only through the bias
+    // component stage 0 fixes. The model's reading differentiated numerically.
+    let mount_response: [[f64; SESSION_JOINTS]; 3] = {
+        let bias = Tilt::new(shift.x_rad + bias_free[0], shift.y_rad + bias_free[1]);
+        let turned = |axis: usize, angle: f64| {
+            let mut m = *model;
+            let mut v = nalgebra::Vector3::zeros();
+            v[axis] = angle;
+            m.arm.flange_mount *= nalgebra::Rotation3::new(v);
+            m
+        };
+        core::array::from_fn(|axis| {
+            let (plus, minus) = (turned(axis, MOUNT_STEP_RAD), turned(axis, -MOUNT_STEP_RAD));
+            let mut column = DVector::<f64>::zeros(readings);
+            for (i, p) in pairs.iter().enumerate() {
+                let at = pose_at(p, p.now, p.now_temperature_c);
+                let a = moved_reading(&plus, fit, &at, &offsets, &bias).reading;
+                let b = moved_reading(&minus, fit, &at, &offsets, &bias).reading;
+                column[2 * i] = (a.x_rad - b.x_rad) / (2.0 * MOUNT_STEP_RAD);
+                column[2 * i + 1] = (a.y_rad - b.y_rad) / (2.0 * MOUNT_STEP_RAD) * w_y;
+            }
+            let response = &inverse * (jacobian.transpose() * column);
+            let mut out = [0.0; SESSION_JOINTS];
+            for (c, &k) in wrist.iter().enumerate() {
+                out[k + 1] = response[c].abs();
+            }
+            out
+        })
+    };
     let mut moved_rad = [0.0; SESSION_JOINTS];
     moved_rad[1..].copy_from_slice(&offsets);
     let mut identifiable = [false; SESSION_JOINTS];
@@ -449,7 +499,8 @@ pub fn compare(
         moved_rad: &moved_rad,
         type_a_rad: &type_a,
         bias_sensitivity: &bias_sensitivity,
-        bench_tilt_now_rad,
+        mount_response: &mount_response,
+        both_biases_u_rad,
         options,
     });
     let j3_per_j2 = joint3_per_joint2(&reference.profile.arm);

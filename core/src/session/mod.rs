@@ -50,7 +50,7 @@ use crate::model::{Arm, Convention, Gain, SensorBias, Tilt, WRIST_JOINTS};
 use crate::real::Real;
 use crate::stage0::{BenchTurns, BenchTurnsAt, BiasOverTemperature};
 use crate::stage1::{AxisOneTurn, Stage1Result};
-use crate::stage2::{fit, FitConfig, FitResult, MassModel, Param, PoseReading, Stage2Model};
+use crate::stage2::{fit, FitConfig, FitResult, MassModel, PoseReading, Stage2Model};
 use core::fmt;
 
 /// Joints whose offsets a session finds: Δθ2..Δθ6.
@@ -302,7 +302,7 @@ pub fn solve<T: Real>(
     // far less than its noise, so once is enough). A refusal of that second pass is
     // the step's own: it is named as such.
     if let Ok((_, r)) = &result {
-        let gain = estimated_gain(r);
+        let gain = r.gain();
         if gain != Gain::default() {
             // The brackets' calibrations read back through the same gain.
             let arm = readings.brackets.apply_with_gain(&readings.arm, &gain);
@@ -403,22 +403,6 @@ pub fn solve<T: Real>(
                 config.handover_noise_rad / per_reading.sqrt(),
             )
         }),
-    }
-}
-
-/// The gain and cross-axis terms a fit estimated (zero where not estimated).
-fn estimated_gain<T: Real>(r: &FitResult<T>) -> Gain<T> {
-    let v = |p: Param| r.get(p).map_or(T::zero(), |(v, _)| v);
-    Gain {
-        xx: v(Param::GainX),
-        yy: v(Param::GainY),
-        xy: v(Param::CrossXy),
-        yx: v(Param::CrossYx),
-        xz: v(Param::CrossXz),
-        yz: v(Param::CrossYz),
-        zx: v(Param::CrossZx),
-        zy: v(Param::CrossZy),
-        zz: v(Param::GainZ),
     }
 }
 

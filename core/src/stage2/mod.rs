@@ -275,6 +275,24 @@ impl<T: Real> FitResult<T> {
             .contains(p.index())
             .then(|| (self.values[p.index()], self.sigmas[p.index()]))
     }
+
+    /// The sensor's gain and cross-axis terms the fit estimated (zero where not
+    /// estimated): what the bench readings and stage 1 are solved again with, by the
+    /// session and by anything that compares a measurement with it.
+    pub fn gain(&self) -> crate::model::Gain<T> {
+        let v = |p: Param| self.get(p).map_or(T::zero(), |(v, _)| v);
+        crate::model::Gain {
+            xx: v(Param::GainX),
+            yy: v(Param::GainY),
+            xy: v(Param::CrossXy),
+            yx: v(Param::CrossYx),
+            xz: v(Param::CrossXz),
+            yz: v(Param::CrossYz),
+            zx: v(Param::CrossZx),
+            zy: v(Param::CrossZy),
+            zz: v(Param::GainZ),
+        }
+    }
 }
 
 fn check_poses<T: Real>(poses: &[PoseReading<T>], range_rad: T) -> Result<(), FitError> {
