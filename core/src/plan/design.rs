@@ -357,15 +357,20 @@ pub(super) fn exchange<T: Real>(
     swaps
 }
 
+/// The planner's measure of travel between two poses: their largest joint move (rad).
+/// A joint move's time grows with its angle and the joints move together, so the
+/// largest move stands for the move's time without the robot's speeds.
+pub(super) fn joint_distance<T: Real>(a: &[T; JOINTS], b: &[T; JOINTS]) -> T {
+    a.iter()
+        .zip(b)
+        .fold(T::zero(), |m, (x, y)| m.max((*x - *y).abs()))
+}
+
 /// Orders the plan for short robot travel: start at the pose nearest the stage-1 pose
-/// (joints 3-6 at zero), then always go to the nearest pose not yet visited (largest
-/// joint move).
+/// (joints 3-6 at zero), then always go to the nearest pose not yet visited
+/// ([`joint_distance`]).
 pub(super) fn travel_order<T: Real>(poses: &mut [[T; JOINTS]], stage1: &[T; 2]) {
-    let dist = |a: &[T; JOINTS], b: &[T; JOINTS]| {
-        a.iter()
-            .zip(b)
-            .fold(T::zero(), |m, (x, y)| m.max((*x - *y).abs()))
-    };
+    let dist = joint_distance::<T>;
     let mut here = [T::zero(); JOINTS];
     here[..2].copy_from_slice(stage1);
     for i in 0..poses.len() {
