@@ -306,7 +306,7 @@ pub fn run_session(
     let budget = budget(
         &solution,
         &session.poses,
-        &world.budget_inputs(&profile, fit.extras, &session.brackets),
+        &world.budget_inputs(&profile, &fit, &session.brackets),
     );
     Ok(RealRun {
         profile,

@@ -158,7 +158,7 @@ fn a_creeping_bracket_is_named_where_it_matters() {
                     let b = budget(
                         &s,
                         &session.poses,
-                        &world.budget_inputs(&profile, fit.extras, &session.brackets),
+                        &world.budget_inputs(&profile, &fit, &session.brackets),
                     );
                     let truth = session.truth_rad();
                     (0..5).any(|k| (s.offsets_rad[k] - truth[k]).abs() > b.expanded_rad[k])

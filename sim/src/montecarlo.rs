@@ -98,7 +98,7 @@ pub fn run_with_tcp(
                 let mut b = budget(
                     sol,
                     &session.poses,
-                    &world.budget_inputs(profile, fit.extras, &session.brackets),
+                    &world.budget_inputs(profile, fit, &session.brackets),
                 );
                 // Stage 0's half turn, at the world's own tolerance.
                 if world.half_turn_error_deg > 0.0 {

@@ -161,14 +161,15 @@ impl WorldConfig {
     pub fn budget_inputs(
         &self,
         profile: &Profile,
-        extras: zerocal_core::stage2::Extras,
+        fit: &zerocal_core::stage2::FitConfig<f64>,
         brackets: &Brackets<f64>,
     ) -> BudgetInputs<f64> {
         let seat_rad = SEAT_REPEATABILITY_DEG
             .max(self.seat_repeatability_deg)
             .to_radians();
         BudgetInputs {
-            extras,
+            extras: fit.extras,
+            sensor_noise_rad: fit.sensor_noise_rad,
             bracket_u_rad: BracketMount::ALL
                 .map(|m| brackets.standard_uncertainty_rad(m, seat_rad)),
             bracket_yaw_u_rad: BracketMount::ALL.map(|m| {

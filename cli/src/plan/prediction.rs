@@ -81,6 +81,7 @@ pub fn predicted_k2_deg(
         fit,
         &BudgetInputs {
             extras: fit.extras,
+            sensor_noise_rad: fit.sensor_noise_rad,
             // Calibrated brackets at the design's seat repeatability (docs/mounting.md).
             bracket_u_rad: [SEAT_REPEATABILITY_DEG.to_radians() / 3f64.sqrt(); 2],
             bracket_yaw_u_rad: [BRACKET_YAW_TOLERANCE_DEG.to_radians() / 3f64.sqrt(); 2],

@@ -561,6 +561,7 @@ pub fn analyse_with(
         &export.poses,
         &BudgetInputs {
             extras: config.extras,
+            sensor_noise_rad: config.sensor_noise_rad,
             bracket_u_rad: BracketMount::ALL.map(|m| {
                 export
                     .brackets

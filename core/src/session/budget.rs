@@ -3,13 +3,17 @@
 //! model, combined in quadrature, expanded with k = 2.
 //!
 //! - **Type A**, from the session's own readings (σ from the residuals, so it holds the
-//!   sensor's noise and quantisation, the robot's repeatability and whatever else
-//!   scatters from capture to capture): the hand-over from stages 0-1 (stage 0's and
+//!   sensor's noise and quantisation and whatever else scatters from capture to
+//!   capture, less the share of the effects a Type B term below already carries: the
+//!   robot's repeatability, the reducers' unmodelled harmonics, joint 3's loaded
+//!   backlash, each at its stated size; never below the sensor's stated noise): the
+//!   hand-over from stages 0-1 (stage 0's and
 //!   the closing reversal's bias and drift, stage 1's tilt and Δθ2), stage 2's readings
 //!   with the offsets alone, and what estimating each extra group costs on top (the
 //!   sensor's gain and cross-axis, the sag, the flange bracket's tilt), added in that
 //!   order: each group's term is the growth of the variance when it joins the fit.
-//! - **Type B**, from stated tolerances: the robot's repeatability and the gears' lost
+//! - **Type B**, from stated tolerances: the robot's repeatability, the reducers'
+//!   transmission error the fit does not model, and the gears' lost
 //!   motion (joint 3 held on gravity's side in stage 2; joint 2 free within its play at
 //!   the unloaded stage-1 pose), propagated; the brackets' seats (a turn of the
 //!   upper-arm bracket about joint 2 is Δθ2's, and Δθ3 takes it back with the opposite
@@ -187,6 +191,11 @@ pub struct BudgetInputs<T> {
     /// there; taken uniform within ±half of it at every pose. Joint 2 at the stage-1
     /// pose may rest anywhere within it, unless that pose is shown unloaded.
     pub lost_motion_rad: T,
+    /// The sensor's stated noise per capture, 1σ (rad): the fit's
+    /// [`crate::stage2::FitConfig::sensor_noise_rad`]. The σ that scales the Type A
+    /// terms, the residuals' less what the Type B terms carry, is never taken below it
+    /// (per merged row).
+    pub sensor_noise_rad: T,
     /// The stage-1 pose (rad), where known with the arm's masses: where joint 2 is
     /// unloaded there ([`crate::plan::stage1::joint2_unloaded`]) the two approaches
     /// straddle its play and no backlash term is carried for it.
@@ -235,6 +244,116 @@ pub fn budget<T: Real>(
     }
     let sigma = solution.fit.noise_sigma_rad;
     let offsets = solution.fit.offsets_rad;
+    // Each Type B term of a stage-2 effect below, at its stated size, also leaves its
+    // share in the residuals σ comes from: summed here, and taken out of the σ that
+    // scales the Type A terms.
+    let mut carried_rad2 = T::zero();
+    // Repeatability: stage 1's two readings each put joint 2 off by its own error δ₁,
+    // δ₂. Δθ2 takes their mean; the tilt α their half difference, so the rotation about
+    // joint 2's axis that stage 2 inherits with joint 1 back at its first position,
+    // α + Δθ2, carries δ₁ whole, and Δθ3 (parallel to joint 2) takes it back. Stage 2's
+    // captures through the fit.
+    let rep2 = inputs.repeatability_rad * inputs.repeatability_rad;
+    let stage1_part = rep2 / (T::lit(2.0) * per_row);
+    let inherited_by_j3 = rep2 / per_row;
+    let repeatability = BudgetTerm::Repeatability.index();
+    let rep = crate::stage2::repeatability_covariance(
+        &solution.model,
+        extras,
+        poses,
+        &offsets,
+        rep2,
+        per_row,
+        sigma,
+    );
+    if let Ok(r) = &rep {
+        carried_rad2 += r.residual_rad2;
+    }
+    for k in 0..SESSION_JOINTS {
+        let v = rep.map_or(T::zero(), |c| c.zeros[k][k]).max(T::zero());
+        let inherited = match k {
+            0 => stage1_part,
+            1 => inherited_by_j3,
+            _ => T::zero(),
+        };
+        terms[repeatability][k] = (v + inherited).sqrt();
+    }
+
+    // Joint 3 under gravity where the fit does not estimate its lost motion: ±half of
+    // it at each pose, both captures alike.
+    let half = inputs.lost_motion_rad.abs() * T::lit(0.5);
+    if !solution
+        .fit
+        .estimated
+        .contains(crate::stage2::Param::Lash(1).index())
+    {
+        let mut loaded = [T::zero(); WRIST_JOINTS + 1];
+        loaded[1] = half * half / T::lit(3.0);
+        let backlash = crate::stage2::joint_error_covariance(
+            &solution.model,
+            extras,
+            poses,
+            &offsets,
+            &loaded,
+            sigma,
+        );
+        if let Ok(b) = &backlash {
+            carried_rad2 += b.residual_rad2;
+        }
+        for k in 0..SESSION_JOINTS {
+            terms[BudgetTerm::LoadedBacklash.index()][k] = backlash
+                .map_or(T::zero(), |c| c.zeros[k][k])
+                .max(T::zero())
+                .sqrt();
+        }
+    }
+
+    // The transmission error the fit does not model: every joint's third and fourth
+    // harmonics, and the first two of a joint whose harmonics it does not estimate
+    // (joint 2 where the poses hold it), at their stated sizes: amplitudes anywhere up
+    // to those (rectangular, RMS a/√3, GUM 4.3.7).
+    let half_pp =
+        crate::real::deg_to_rad(T::lit(TRANSMISSION_PP_MAX_DEG * 0.5)) / T::lit(3.0).sqrt();
+    let higher = half_pp * T::lit(HIGHER_HARMONIC_SHARE);
+    let amplitudes: [[T; BUDGET_ORDERS]; HARMONIC_JOINTS] = core::array::from_fn(|j| {
+        core::array::from_fn(|o| {
+            let modelled = [false, true].iter().all(|&s| {
+                crate::stage2::params::harmonic_slot(j + 2, o + 1, s)
+                    .is_some_and(|h| extras.transmission & (1 << h) != 0)
+            });
+            match (modelled, o < HARMONIC_ORDERS) {
+                (true, _) => T::zero(),
+                (false, true) => half_pp,
+                (false, false) => higher,
+            }
+        })
+    });
+    if let Ok(v) =
+        transmission_variance(&solution.model, extras, poses, &offsets, &amplitudes, sigma)
+    {
+        carried_rad2 += v.residual_rad2;
+        for k in 0..SESSION_JOINTS {
+            terms[BudgetTerm::HigherHarmonics.index()][k] = v.zeros[k].max(T::zero()).sqrt();
+        }
+    }
+
+    // The σ of the Type A terms: the residuals' σ less what the terms above carry
+    // (GUM 4.2, 5.1: each effect once; the repeatability's scatter at each pose and the
+    // reducers' unmodelled harmonics show in the residuals and are propagated exactly
+    // above, so scaling the readings' terms by them as well would count them twice),
+    // and never below the sensor's stated noise per merged row, which no Type B term
+    // carries. Where σ is the sensor's figure already (too few residual degrees of
+    // freedom) nothing is taken out.
+    let sigma_a = match solution.fit.sigma_source {
+        crate::stage2::SigmaSource::Residuals => {
+            let floor = inputs.sensor_noise_rad.abs() / per_row.sqrt();
+            (sigma * sigma - carried_rad2)
+                .max(floor * floor)
+                .sqrt()
+                .min(sigma)
+        }
+        crate::stage2::SigmaSource::SensorNoise => sigma,
+    };
     let offsets_only = Extras {
         held: extras.held,
         ..Extras::NONE
@@ -276,7 +395,7 @@ pub fn budget<T: Real>(
     let mut previous = [T::zero(); SESSION_JOINTS];
     for (step, group) in steps.iter().enumerate() {
         let variance: [T; SESSION_JOINTS] =
-            match covariance_bound(&solution.model, *group, &joints, &offsets, sigma) {
+            match covariance_bound(&solution.model, *group, &joints, &offsets, sigma_a) {
                 Ok(b) => b.zeros_sigma_rad.map(|s| s * s),
                 // A group the poses cannot separate on its own: the fit either refused
                 // it or estimated it with the others; its cost is then in the next step.
@@ -287,60 +406,6 @@ pub fn budget<T: Real>(
             terms[BudgetTerm::Readings.index() + step][k] = grown.sqrt();
         }
         previous = variance;
-    }
-
-    // Repeatability: stage 1's two readings each put joint 2 off by its own error δ₁,
-    // δ₂. Δθ2 takes their mean; the tilt α their half difference, so the rotation about
-    // joint 2's axis that stage 2 inherits with joint 1 back at its first position,
-    // α + Δθ2, carries δ₁ whole, and Δθ3 (parallel to joint 2) takes it back. Stage 2's
-    // captures through the fit.
-    let rep2 = inputs.repeatability_rad * inputs.repeatability_rad;
-    let stage1_part = rep2 / (T::lit(2.0) * per_row);
-    let inherited_by_j3 = rep2 / per_row;
-    let repeatability = BudgetTerm::Repeatability.index();
-    let rep = crate::stage2::repeatability_covariance(
-        &solution.model,
-        extras,
-        poses,
-        &offsets,
-        rep2,
-        per_row,
-        sigma,
-    );
-    for k in 0..SESSION_JOINTS {
-        let v = rep.map_or(T::zero(), |c| c[k][k]).max(T::zero());
-        let inherited = match k {
-            0 => stage1_part,
-            1 => inherited_by_j3,
-            _ => T::zero(),
-        };
-        terms[repeatability][k] = (v + inherited).sqrt();
-    }
-
-    // Joint 3 under gravity where the fit does not estimate its lost motion: ±half of
-    // it at each pose, both captures alike.
-    let half = inputs.lost_motion_rad.abs() * T::lit(0.5);
-    if !solution
-        .fit
-        .estimated
-        .contains(crate::stage2::Param::Lash(1).index())
-    {
-        let mut loaded = [T::zero(); WRIST_JOINTS + 1];
-        loaded[1] = half * half / T::lit(3.0);
-        let backlash = crate::stage2::joint_error_covariance(
-            &solution.model,
-            extras,
-            poses,
-            &offsets,
-            &loaded,
-            sigma,
-        );
-        for k in 0..SESSION_JOINTS {
-            terms[BudgetTerm::LoadedBacklash.index()][k] = backlash
-                .map_or(T::zero(), |c| c[k][k])
-                .max(T::zero())
-                .sqrt();
-        }
     }
 
     // Joint 2 at stage 1: the stage-1 pose has no gravity torque on joints 2 and 3
@@ -381,34 +446,6 @@ pub fn budget<T: Real>(
     // The geometry the poses could not separate, at its stated worst case.
     for k in 0..WRIST_JOINTS {
         terms[BudgetTerm::UnfittedGeometry.index()][k + 1] = solution.fit.unfitted_rad[k];
-    }
-
-    // The transmission error the fit does not model: every joint's third and fourth
-    // harmonics, and the first two of a joint whose harmonics it does not estimate
-    // (joint 2 where the poses hold it), at their stated sizes: amplitudes anywhere up
-    // to those (rectangular, RMS a/√3, GUM 4.3.7).
-    let half_pp =
-        crate::real::deg_to_rad(T::lit(TRANSMISSION_PP_MAX_DEG * 0.5)) / T::lit(3.0).sqrt();
-    let higher = half_pp * T::lit(HIGHER_HARMONIC_SHARE);
-    let amplitudes: [[T; BUDGET_ORDERS]; HARMONIC_JOINTS] = core::array::from_fn(|j| {
-        core::array::from_fn(|o| {
-            let modelled = [false, true].iter().all(|&s| {
-                crate::stage2::params::harmonic_slot(j + 2, o + 1, s)
-                    .is_some_and(|h| extras.transmission & (1 << h) != 0)
-            });
-            match (modelled, o < HARMONIC_ORDERS) {
-                (true, _) => T::zero(),
-                (false, true) => half_pp,
-                (false, false) => higher,
-            }
-        })
-    });
-    if let Ok(v) =
-        transmission_variance(&solution.model, extras, poses, &offsets, &amplitudes, sigma)
-    {
-        for k in 0..SESSION_JOINTS {
-            terms[BudgetTerm::HigherHarmonics.index()][k] = v[k].max(T::zero()).sqrt();
-        }
     }
 
     let combined: [T; SESSION_JOINTS] =
@@ -481,8 +518,8 @@ pub struct PlannedRobot<T: Real> {
 /// times), with σ the sensor's noise figure, then its budget. The offsets and tilts of
 /// the real robot change the Jacobian by a fraction of a percent.
 ///
-/// The session's own report takes σ from its residuals, which also hold part of the
-/// robot's repeatability: its budget comes out somewhat larger than this one.
+/// The session's own report takes σ from its residuals, less what its Type B terms
+/// carry: where the robot repeats and its reducers err as stated, the same σ.
 ///
 /// # Errors
 /// The solver's refusal of the plan (rank-deficient, ill-conditioned).
@@ -543,37 +580,12 @@ pub fn predict_budget<T: Real>(
         temperatures: super::StageTemperatures::default(),
         closing: None,
     };
-    // σ as the session's residuals will show it: the sensor's noise, and the part of
-    // the robot's repeatability the fit leaves in them (a joint's error at one pose is
-    // no offset, so it is not fitted away: all but the fit's share p/2N of it stays).
-    // Noiseless readings leave no residuals to take σ from.
+    // σ as the session's Type A terms take it: the sensor's noise per row. The
+    // residuals also show the robot's repeatability and the reducers' unmodelled
+    // harmonics, but the budget carries those as their own terms and takes their share
+    // out of σ ([`budget`]). Noiseless readings leave no residuals to take σ from.
     let per_row = T::lit(captures_per_pose.max(1) as f64);
-    let power = crate::stage2::joint_sensitivity_power(
-        &crate::session::handover(
-            &crate::stage1::Stage1Result {
-                base_tilt: BaseTilt::level(),
-                bias_y_rad: T::zero(),
-                delta_theta2_rad: T::zero(),
-                bias_x_known: true,
-                j2_rad: stage1_joints_rad[1],
-                covariance: [[T::zero(); 5]; 5],
-                covariance_from_stage0: [[T::zero(); 5]; 5],
-            },
-            *arm,
-            convention,
-            None,
-            robot.masses,
-        )
-        .model,
-        config.extras,
-        poses,
-        &[T::zero(); WRIST_JOINTS],
-    );
-    let n_readings = T::lit(2.0 * poses.len() as f64);
-    let kept = (T::one() - T::lit(config.extras.layout().len() as f64) / n_readings).max(T::zero());
-    let rep2 = inputs.repeatability_rad * inputs.repeatability_rad;
-    let sigma2 =
-        config.sensor_noise_rad * config.sensor_noise_rad / per_row + rep2 / per_row * power * kept;
+    let sigma2 = config.sensor_noise_rad * config.sensor_noise_rad / per_row;
     let config = crate::stage2::FitConfig {
         min_residual_dof: usize::MAX,
         max_residual_rms_rad: T::zero(),
@@ -623,6 +635,7 @@ mod tests {
             &fit,
             &BudgetInputs {
                 extras: fit.extras,
+                sensor_noise_rad: fit.sensor_noise_rad,
                 bracket_u_rad: [0.0; 2],
                 bracket_yaw_u_rad: [0.0; 2],
                 repeatability_rad: 0.0,

@@ -96,7 +96,7 @@ pub fn repeatability_covariance<T: Real>(
     joint_variance_rad2: T,
     captures_per_row: T,
     noise_rad: T,
-) -> Result<[[T; ZEROS]; ZEROS], FitError> {
+) -> Result<Propagated<[[T; ZEROS]; ZEROS], T>, FitError> {
     let v = joint_variance_rad2 / captures_per_row;
     joint_error_covariance(
         model,
@@ -121,7 +121,7 @@ pub fn joint_error_covariance<T: Real>(
     offsets_rad: &[T; WRIST_JOINTS],
     joint_variance_rad2: &[T; WRIST_JOINTS + 1],
     noise_rad: T,
-) -> Result<[[T; ZEROS]; ZEROS], FitError> {
+) -> Result<Propagated<[[T; ZEROS]; ZEROS], T>, FitError> {
     let layout = extras.layout();
     let n = layout.len();
     let estimate = super::Estimate {
@@ -132,6 +132,8 @@ pub fn joint_error_covariance<T: Real>(
     let mut info = super::information::Information::new(n);
     // Σ over poses of (Jᵀ J_q)(Jᵀ J_q)ᵀ, pose by pose: B_i = J_iᵀ·J_q,i (n × 5).
     let mut outer = crate::linalg::Square::<T, MAX_PARAMS>::zeros(n);
+    // Σ over readings of the error's variance in them: E[rᵀr] before the fit.
+    let mut reading_power = T::zero();
     for pose in poses {
         let p = model.predict_rows(&pass, &layout, &estimate, pose, true);
         info.add_row(&p.rows[0], T::zero());
@@ -144,6 +146,11 @@ pub fn joint_error_covariance<T: Real>(
                 p.rows[axis][joint - 1]
             }
         };
+        for axis in 0..2 {
+            for (j, v) in joint_variance_rad2.iter().enumerate() {
+                reading_power += jq(axis, j) * jq(axis, j) * *v;
+            }
+        }
         let mut b = [[T::zero(); WRIST_JOINTS + 1]; MAX_PARAMS];
         for (i, bi) in b.iter_mut().enumerate().take(n) {
             for (j, bij) in bi.iter_mut().enumerate() {
@@ -184,13 +191,53 @@ pub fn joint_error_covariance<T: Real>(
             *v = acc;
         }
     }
-    Ok(cov)
+    // What the fit takes of it: tr(P·M) = tr((JᵀJ)⁻¹·Σᵢ Bᵢ·V·Bᵢᵀ).
+    let taken = (0..n).fold(T::zero(), |acc, i| {
+        (0..n).fold(acc, |acc, k| acc + inv.m[i][k] * outer.m[k][i])
+    });
+    Ok(Propagated {
+        zeros: cov,
+        residual_rad2: residual_per_dof(reading_power - taken, poses.len(), n, &extras),
+    })
+}
+
+/// What an error the fit does not estimate does to a session: to its zeros (`zeros`),
+/// and to its residuals: `residual_rad2`, its expected share of σ² as the fit takes σ
+/// from the residuals (E[rᵀr] over the residual degrees of freedom, rad²). A budget
+/// that carries the error as its own term takes this out of the σ that scales the
+/// terms evaluated from the residuals, or the error would be counted twice (GUM
+/// 4.2, 5.1: each effect once).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Propagated<Z, T> {
+    /// The effect on the zeros (their covariance or variance, rad²).
+    pub zeros: Z,
+    /// Its expected share of the residuals' σ² (rad²).
+    pub residual_rad2: T,
+}
+
+/// E[rᵀr] (`left_rad2`, what a fit of `n` parameters leaves of an error's variance in
+/// `poses`' readings) per residual degree of freedom, as the fit's σ counts them (2N
+/// readings less the parameters not held); 0 where none are left.
+pub(super) fn residual_per_dof<T: Real>(
+    left_rad2: T,
+    poses: usize,
+    n: usize,
+    extras: &Extras,
+) -> T {
+    let held = extras.held.iter().filter(|h| **h).count();
+    let dof = (2 * poses).saturating_sub(n - held.min(n));
+    if dof == 0 {
+        T::zero()
+    } else {
+        left_rad2.max(T::zero()) / T::lit(dof as f64)
+    }
 }
 
 /// The mean over readings of Σₖ (∂reading/∂θₖ)² for joints 2-6: how strongly a joint
 /// error of unit variance, independent at each pose, moves a reading. With the robot's
 /// repeatability it gives the part of the residuals a session should expect beyond
-/// the sensor's noise ([`crate::session::predict_budget`]).
+/// the sensor's noise, taken as isotropic ([`super::Propagated::residual_rad2`] has it
+/// exactly).
 pub fn joint_sensitivity_power<T: Real>(
     model: &Stage2Model<T>,
     extras: Extras,

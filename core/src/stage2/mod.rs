@@ -22,7 +22,7 @@ pub mod transmission;
 
 pub use bound::{
     covariance_bound, joint_error_covariance, joint_sensitivity_power, repeatability_covariance,
-    CovarianceBound,
+    CovarianceBound, Propagated,
 };
 pub use information::{weakest_of_gram, Information, Row, WEAK_DIRECTION_SHARE};
 pub use model::{

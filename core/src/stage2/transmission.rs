@@ -117,7 +117,7 @@ pub fn transmission_variance<T: Real>(
     offsets_rad: &[T; WRIST_JOINTS],
     amplitude_rad: &[[T; BUDGET_ORDERS]; HARMONIC_JOINTS],
     noise_rad: T,
-) -> Result<[T; ZEROS], FitError> {
+) -> Result<super::Propagated<[T; ZEROS], T>, FitError> {
     let layout = extras.layout();
     let n = layout.len();
     let estimate = super::Estimate {
@@ -132,6 +132,8 @@ pub fn transmission_variance<T: Real>(
     let mut z =
         [[([T::zero(); MAX_PARAMS], [T::zero(); MAX_PARAMS]); BUDGET_ORDERS]; HARMONIC_JOINTS];
     let c2 = model.stage1_j2_rad;
+    // Σ over readings of each harmonic's mean square in them (over its phase).
+    let mut reading_power = T::zero();
     for pose in poses {
         let p = model.predict_rows(&pass, &layout, &estimate, pose, true);
         info.add_row(&p.rows[0], T::zero());
@@ -156,6 +158,11 @@ pub fn transmission_variance<T: Real>(
                     let (s1, c1) = (c2 * order).fast_sin_cos();
                     s -= s1;
                     c -= c1;
+                }
+                let amp = amplitude_rad[j][o];
+                for axis in 0..2 {
+                    reading_power +=
+                        T::lit(0.5) * amp * amp * column(axis) * column(axis) * (c * c + s * s);
                 }
                 let (re, im) = &mut z[j][o];
                 for i in 0..n {
@@ -199,7 +206,31 @@ pub fn transmission_variance<T: Real>(
             }
         }
     }
-    Ok(variance)
+    // What the fit takes of it: ½a²·(zᵣᵀ(JᵀJ)⁻¹zᵣ + zᵢᵀ(JᵀJ)⁻¹zᵢ) per harmonic.
+    let mut taken = T::zero();
+    for (j, orders) in z.iter().enumerate() {
+        for (o, (re, im)) in orders.iter().enumerate() {
+            let amp = amplitude_rad[j][o];
+            if amp == T::zero() {
+                continue;
+            }
+            let quad = |v: &[T; MAX_PARAMS]| {
+                (0..n).fold(T::zero(), |acc, i| {
+                    (0..n).fold(acc, |acc, k| acc + v[i] * inv.m[i][k] * v[k])
+                })
+            };
+            taken += T::lit(0.5) * amp * amp * (quad(re) + quad(im));
+        }
+    }
+    Ok(super::Propagated {
+        zeros: variance,
+        residual_rad2: super::bound::residual_per_dof(
+            reading_power - taken,
+            poses.len(),
+            n,
+            &extras,
+        ),
+    })
 }
 
 /// One harmonic of a joint's transmission error as a session measured it:
