@@ -45,7 +45,8 @@ pub struct SimulateArgs {
     /// The real world's sources and faults.
     #[command(flatten)]
     pub real: crate::simulated_world::WorldArgs,
-    /// Stage-2 poses (real world: each captured twice, default 24; ideal: default 30).
+    /// Stage-2 poses (real world: each captured twice, default 40 and the plan's 3
+    /// revisits; ideal: default 30).
     /// Range: [4, 10000].
     #[arg(long, value_parser = CountIn::<usize>::new(4, 10_000))]
     pub poses: Option<usize>,

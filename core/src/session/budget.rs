@@ -37,7 +37,7 @@ use crate::stage2::{covariance_bound, Extras, PoseReading};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum BudgetTerm {
-    /// Stages 0-1 (reversals, half turn) handed over (Type A).
+    /// Stages 0-1 (the bench headings, joint 1's half turn) handed over (Type A).
     Handover,
     /// Stage 2's readings, offsets alone (Type A).
     Readings,
@@ -118,7 +118,7 @@ impl BudgetTerm {
     /// Its name in reports and `--json`.
     pub fn name(self) -> &'static str {
         match self {
-            BudgetTerm::Handover => "stages 0-1 (reversals, half turn)",
+            BudgetTerm::Handover => "stages 0-1 (bench, joint 1 half turn)",
             BudgetTerm::Readings => "stage-2 readings (noise, repeatability)",
             BudgetTerm::SensorGain => "sensor gain and cross-axis (estimated)",
             BudgetTerm::Sag => "sag of joints 2-3 (estimated)",
