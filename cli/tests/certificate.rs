@@ -124,8 +124,10 @@ fn the_certificate_holds_every_required_item() {
         "the method",
         &format!(
             "zerocal: gravity-referenced joint zero identification with a dual-axis \
-             inclinometer (stage 0 reversal, stage 1 half turn of axis 1, stage 2 least \
-             squares over {} poses)",
+             inclinometer (stage 0 at bench headings turned by hand, stage 1 half turn of \
+             axis 1, stage 2 least squares over {} poses with each reducer's \
+             transmission error fitted: a zero is the constant part of its joint's \
+             error)",
             j.poses
         ),
     );

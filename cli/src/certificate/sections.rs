@@ -105,8 +105,10 @@ pub(super) fn method(c: &Context<'_>, p: &mut Printed) -> String {
         "Method",
         &format!(
             "zerocal: gravity-referenced joint zero identification with a dual-axis \
-             inclinometer (stage 0 reversal, stage 1 half turn of axis 1, stage 2 least \
-             squares over {poses} poses); version: zerocal {}",
+             inclinometer (stage 0 at bench headings turned by hand, stage 1 half turn of \
+             axis 1, stage 2 least squares over {poses} poses with each reducer's \
+             transmission error fitted: a zero is the constant part of its joint's \
+             error); version: zerocal {}",
             p.text(&s.zerocal_version)
         ),
     );
