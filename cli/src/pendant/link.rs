@@ -67,6 +67,28 @@ impl<P: Read + Write> Link for SerialLink<P> {
     }
 }
 
+/// Reads what the port has into `buf`: a read that timed out, would block or was
+/// interrupted is no bytes yet, not an error (the caller's deadline decides).
+///
+/// # Errors
+/// Any other error of the port.
+pub(super) fn read_some(port: &mut impl Link, buf: &mut [u8]) -> Result<usize, ReplyError> {
+    match port.read(buf) {
+        Ok(n) => Ok(n),
+        Err(e)
+            if matches!(
+                e.kind(),
+                std::io::ErrorKind::TimedOut
+                    | std::io::ErrorKind::WouldBlock
+                    | std::io::ErrorKind::Interrupted
+            ) =>
+        {
+            Ok(0)
+        }
+        Err(e) => Err(ReplyError::Port(e)),
+    }
+}
+
 /// Writes `bytes` whole.
 ///
 /// # Errors
@@ -150,20 +172,7 @@ impl Lines {
             if port.now().saturating_sub(start) >= wait {
                 return Ok(None);
             }
-            let n = match port.read(&mut buf) {
-                Ok(n) => n,
-                Err(e)
-                    if matches!(
-                        e.kind(),
-                        std::io::ErrorKind::TimedOut
-                            | std::io::ErrorKind::WouldBlock
-                            | std::io::ErrorKind::Interrupted
-                    ) =>
-                {
-                    0
-                }
-                Err(e) => return Err(ReplyError::Port(e)),
-            };
+            let n = read_some(port, &mut buf)?;
             for &byte in buf.get(..n).unwrap_or(&[]) {
                 self.push(byte)?;
             }

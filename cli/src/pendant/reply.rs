@@ -22,7 +22,7 @@ use zerocal_procedure::log::{
 };
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload, PROFILE_LINES};
 
-use super::link::Link;
+use super::link::{read_some, Link};
 use crate::error::CliError;
 use crate::log_file::parse_number;
 
@@ -249,20 +249,7 @@ pub fn read_reply(
                 bytes: offset,
             });
         }
-        let n = match port.read(&mut buf) {
-            Ok(n) => n,
-            Err(e)
-                if matches!(
-                    e.kind(),
-                    std::io::ErrorKind::TimedOut
-                        | std::io::ErrorKind::WouldBlock
-                        | std::io::ErrorKind::Interrupted
-                ) =>
-            {
-                0
-            }
-            Err(e) => return Err(ReplyError::Port(e)),
-        };
+        let n = read_some(port, &mut buf)?;
         if n > 0 {
             last = port.now();
         }
