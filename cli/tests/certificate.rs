@@ -576,7 +576,7 @@ fn write_puts_the_numbers_beside_the_certificate() {
     assert!(write(&subject(), &a, &dir().join("c.numbers")).is_err());
 }
 
-/// Item 5 of issue 31: the issuer, customer and site from the configuration; a number
+/// A certificate's parties and equipment: the issuer, customer and site from the configuration; a number
 /// of its own; the equipment with IDs, calibration and due dates; as found and as left
 /// side by side; the budget as a GUM table; the decision rule as applied; no path of
 /// zerocal's repository.

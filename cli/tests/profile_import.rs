@@ -177,7 +177,7 @@ fn sessions_within_u(robot: &str, d: &Path, tag: &str) -> (usize, usize) {
 /// refused for an imported Yaskawa profile exactly as for the built-in GP7: no pulses
 /// per degree in either.
 ///
-/// The budget's U(k = 2) means 95 % (issue 30: coverage 95-99.5 %, no longer the blunt
+/// The budget's U(k = 2) means 95 % (coverage 95-99.5 %, no longer the blunt
 /// 100 % of a budget that counted the reducers' error twice), so a few errors of 40
 /// per arm may lie beyond it. Per arm at most [`MAX_BEYOND_PER_ARM`] of 40 (a 95 %
 /// interval leaves more 0.07 % of the time: binomial, n = 40, p = 0.05), and over

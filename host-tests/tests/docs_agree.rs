@@ -1,5 +1,5 @@
-//! The docs against what they describe, where a test can hold it (issue 31's "the docs
-//! disagree"): the example profile stands the pendant as docs/mounting.md says it must,
+//! The docs against what they describe, where a test can hold it: the
+//! example profile stands the pendant as docs/mounting.md says it must,
 //! the technician's guide loads the profile with the brackets' calibrations, and no
 //! procedure asks the reader to type a link command into a serial terminal (every
 //! command has a `zerocal pendant` verb).

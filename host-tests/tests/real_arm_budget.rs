@@ -1,4 +1,4 @@
-//! A real arm gets numbers, and honest ones (issue 30's acceptance): with every error
+//! A real arm gets numbers, and honest ones (the design's acceptance): with every error
 //! source of the simulated world on (the sensor's, the robot's, the real arm's misaligned
 //! axes, transmission error 0.005-0.03° peak to peak with more harmonics than the fit
 //! estimates, wrist compliance, brackets calibrated by their own procedure, stage 0 read

@@ -116,7 +116,7 @@ fn the_wrong_profile_is_named() {
 }
 
 /// A flange bracket that creeps (a clamp not quite tight: the pendant turning a little
-/// further at each capture, 0.0005-0.01° a capture, issue 30): in at least 95 % of the
+/// further at each capture, 0.0005-0.01° a capture): in at least 95 % of the
 /// sessions whose result it would carry outside its U(k = 2) on some joint, the session
 /// is refused naming the bracket's move (a revisited pose that reads otherwise, or the
 /// readings' drift over stage 2); no creeping session is refused under another name.

@@ -307,7 +307,7 @@ pub const SESSION_KR6_MAMES: Figure = Figure {
 };
 
 /// The README's main job on its own robot: `zerocal simulate`'s U(k = 2) per joint,
-/// `j2 0.0087°, j3 …` (the issue-30 "before" beside it is quoted, not made).
+/// `j2 0.0087°, j3 …` (the "before" beside it, from before the reducers were fitted, is quoted, not made).
 pub const SIMULATE_U_KR6: Figure = Figure {
     name: "simulate-u-kr6",
     command: "zerocal simulate (the U(k=2) column)",
