@@ -127,7 +127,13 @@ fn parallel_joints_give_their_sum_and_say_so() {
 /// The acceptance of the robot profiles: for every built-in profile, exports of simulated sessions
 /// (an SCL3300 with its noise, quantisation and offset on a rigid robot: the world of
 /// the profiles' own trials) read by `zerocal session`: the hidden offsets within 3σ and
-/// the reported σ within 25 % of the spread over the sessions.
+/// the reported σ within 25 % of the spread over the sessions, less what the fit's priors
+/// carry. A prior is a term's stated size where the poses do not determine it (joint 2's
+/// transmission error at its stage-1 angle, above all, which stage 2 sees only over its
+/// swing): the reported variance A⁻¹σ² (A = JᵀJ + W) is exactly the readings' part
+/// A⁻¹JᵀJA⁻¹σ² plus the priors' A⁻¹WA⁻¹σ², and this rigid robot, whose reducers have no
+/// error, scatters by the first alone. The σ reported, priors and all, is what the 3σ
+/// check uses.
 #[test]
 fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread() {
     use zerocal_sim::sensor::SensorSources;
@@ -141,12 +147,14 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
         ..WorldConfig::ideal()
     };
     let sessions = 200;
+    let mut failed = Vec::new();
     for name in zerocal_profile::builtin_names() {
         let profile = zerocal_profile::builtin(name).unwrap();
         let (plan, _) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
         let held = profile.arm.parallel_twins();
         let mut sq = [0.0f64; 5];
         let mut sig = [0.0f64; 5];
+        let mut sig_readings = [0.0f64; 5];
         let (mut beyond, mut cases) = (0u32, 0u32);
         for seed in 0..sessions {
             let s = RealSession::simulate(&profile, &plan, &world, 1000 + seed);
@@ -178,30 +186,42 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
                 let e = f - truth[k];
                 sq[k] += e * e / f64::from(sessions as u32);
                 sig[k] += sd / f64::from(sessions as u32);
+                let prior = v["joints"][k]["prior_share"].as_f64().unwrap();
+                assert!((0.0..=1.0).contains(&prior), "{name}: prior share {prior}");
+                sig_readings[k] += sd * (1.0 - prior).sqrt() / f64::from(sessions as u32);
                 cases += 1;
                 beyond += u32::from(e.abs() > 3.0 * sd);
             }
         }
         let ratio: Vec<f64> = (0..5)
             .filter(|k| *k == 0 || !held[k - 1])
+            .map(|k| sig_readings[k] / sq[k].sqrt())
+            .collect();
+        let with_priors: Vec<f64> = (0..5)
+            .filter(|k| *k == 0 || !held[k - 1])
             .map(|k| sig[k] / sq[k].sqrt())
             .collect();
         let share = f64::from(beyond) / f64::from(cases);
         println!(
-            "{name:<20} beyond 3 sigma {:.2} % of {cases}; reported sigma / spread {ratio:.2?}",
+            "{name:<20} beyond 3 sigma {:.2} % of {cases}; reported sigma less the priors / spread {ratio:.2?}, with them {with_priors:.2?}",
             share * 100.0
         );
         // σ comes from ~25-30 residual degrees of freedom (48 readings, 18-24 parameters):
         // Student's t lies beyond 3 0.54 % of the time; over 1000 cases that is 5.4 ± 2.3,
         // and 1.5 % is 15.
-        assert!(share <= 0.015, "{name}: {share}");
+        if share > 0.015 {
+            failed.push(format!("{name}: {share} beyond 3 sigma"));
+        }
         // 200 sessions estimate the spread to ±5 % (1σ); 25 % is the acceptance bound
-        // below, 30 % above: the misalignments the fit estimates carry a prior (their
-        // stated worst case), which the reported σ does not credit, so it errs high.
-        for r in &ratio {
-            assert!((0.75..=1.30).contains(r), "{name}: {ratio:?}");
+        // below, 30 % above (set when the priors' share was still in the ratio; the
+        // readings' part alone should sit near 1).
+        if ratio.iter().any(|r| !(0.75..=1.30).contains(r)) {
+            failed.push(format!(
+                "{name}: sigma less the priors / spread {ratio:.2?}"
+            ));
         }
     }
+    assert!(failed.is_empty(), "{failed:#?}");
 }
 
 /// The hand-over trap: stage 1's tilt passed to `identify` with a log that

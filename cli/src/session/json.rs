@@ -33,6 +33,11 @@ pub struct JointJson {
     pub controller_unit_missing: Option<String>,
     /// Shares of the variance from stage 0, 1 and 2 (fractions).
     pub variance_shares: [f64; 3],
+    /// The share of the variance (a fraction, within stage 2's) that the fit's priors
+    /// carry: the reducer and geometric terms the poses do not determine, at their stated
+    /// sizes. The rest is what the readings' noise scatters the offset by.
+    #[serde(default)]
+    pub prior_share: f64,
     /// The URDF form: `<calibration rising="…"/>` in radians (model terms; see
     /// docs/controllers/urdf.md for what tools read it).
     pub urdf_calibration_rising_rad: f64,
@@ -125,6 +130,11 @@ pub fn to_json(
                 identifiable: k == 0 || !held[k - 1],
                 controller_unit_missing: c.no_unit_because.map(str::to_owned),
                 variance_shares: shares.map(|v| if total > 0.0 { v / total } else { 0.0 }),
+                prior_share: if s.covariance_rad2[k][k] > 0.0 {
+                    (s.prior_variance_rad2[k] / s.covariance_rad2[k][k]).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                },
                 urdf_calibration_rising_rad: s.offsets_rad[k],
                 expanded_k2_deg: budget.expanded_rad[k].to_degrees(),
                 budget_deg: BudgetTerm::ALL

@@ -356,6 +356,7 @@ fn adopt_pendant_result(solution: &mut SessionSolution<f64>, text: &str) -> Opti
         for share in &mut solution.variance_shares_rad2[i] {
             *share *= scale[i] * scale[i];
         }
+        solution.prior_variance_rad2[i] *= scale[i] * scale[i];
     }
     Some(format!(
         "offsets and 1-sigma are the pendant's own, as its screen showed them; this f64 \

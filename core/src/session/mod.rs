@@ -184,6 +184,11 @@ pub struct SessionSolution<T: Real> {
     /// Each variance split by where the noise came from: stage 0's reversal, stage 1's
     /// half turn, stage 2's poses (rad²; the three add up to the diagonal).
     pub variance_shares_rad2: [[T; 3]; SESSION_JOINTS],
+    /// The part of each variance the fit's priors carry (rad²; within stage 2's share):
+    /// the reducer and geometric terms the poses do not determine, at their stated
+    /// sizes ([`FitResult::zeros_prior_variance_rad2`]). A robot without those errors
+    /// scatters by the variance less this.
+    pub prior_variance_rad2: [T; SESSION_JOINTS],
 }
 
 impl<T: Real> SessionSolution<T> {
@@ -466,11 +471,13 @@ fn combine<T: Real>(
         let stage2 = fit.zeros_sigma_stage2_rad[a] * fit.zeros_sigma_stage2_rad[a];
         [from0 * variance, (from01 - from0) * variance, stage2]
     });
+    let prior_variance_rad2 = fit.zeros_prior_variance_rad2;
     SessionSolution {
         model: h.model,
         fit,
         offsets_rad,
         covariance_rad2: cov,
         variance_shares_rad2: shares,
+        prior_variance_rad2,
     }
 }

@@ -260,6 +260,13 @@ pub struct FitResult<T: Real> {
     pub zeros_covariance_rad2: [[T; ZEROS]; ZEROS],
     /// Their 1σ from the stage-2 readings alone (rad).
     pub zeros_sigma_stage2_rad: [T; ZEROS],
+    /// The share of each zero's variance (the correction, Δθ3..Δθ6) that the priors
+    /// carry (rad²): the stated sizes of the reducer and geometric terms, where the poses
+    /// do not determine them. With A = JᵀJ + W (W the priors' pseudo-readings) the
+    /// covariance A⁻¹σ² splits exactly into A⁻¹JᵀJA⁻¹σ², the readings' noise, and
+    /// A⁻¹WA⁻¹σ², this: what a term of its stated size would add. A robot without those
+    /// errors scatters by the rest only; the reported σ keeps both.
+    pub zeros_prior_variance_rad2: [T; ZEROS],
     /// How the zeros move with an error in the hand-over parameters (rad per rad).
     pub zeros_sensitivity: [[T; HANDOVER_PARAMS]; ZEROS],
     /// The covariance of each harmonic's cosine and sine coefficients (rad², pair `p`
@@ -476,6 +483,7 @@ pub fn fit<T: Real>(
     // again from where it stands, so that a prior is worth its stated size against
     // these readings and not against a quieter sensor's.
     let mut prior_noise_rad = config.sensor_noise_rad;
+    let mut prior_weight = held.prior_weight;
     let prior_part = |x: &[T; MAX_PARAMS], held: &Held<T>| {
         (0..n).fold(T::zero(), |acc, i| {
             let v = held.prior_weight[i] * x[i];
@@ -505,6 +513,7 @@ pub fn fit<T: Real>(
                     iterations: solved.iterations + again.iterations,
                     ..again
                 };
+                prior_weight = reweighted.prior_weight;
             } else {
                 // The information at the solution it started from, as it was.
                 linearise(&mut info, model, &layout, poses, &solved.x, true, &held);
@@ -592,6 +601,7 @@ pub fn fit<T: Real>(
             dropped,
             unfitted_rad,
             prior_noise_rad,
+            prior_weight,
         },
         config,
     )
@@ -609,6 +619,8 @@ struct Summary<T> {
     dropped: ParamSet,
     unfitted_rad: [T; WRIST_JOINTS],
     prior_noise_rad: T,
+    /// The priors' weights by slot, as the last pass used them.
+    prior_weight: [T; MAX_PARAMS],
 }
 
 /// σ from the residuals (or the sensor's figure), and the result in physical form.
@@ -697,6 +709,18 @@ fn finish<T: Real>(
                 + sds(&zeros_sensitivity[r], &zeros_sensitivity[c]) * handover_variance
         })
     });
+    // A⁻¹WA⁻¹ through the map: Σᵢ ((L·A⁻¹)ᵣᵢ·wᵢ)²·σ².
+    let zeros_prior_variance_rad2: [T; ZEROS] = core::array::from_fn(|r| {
+        (0..n).fold(T::zero(), |acc, i| {
+            let w = s.prior_weight[i];
+            if w == T::zero() {
+                acc
+            } else {
+                let g = dot(&l[r], &|j| inv.m[j][i]) * w;
+                acc + g * g
+            }
+        }) * variance
+    });
     let zeros_sigma_stage2_rad: [T; ZEROS] = core::array::from_fn(|r| {
         (quad(&l[r], &l[r], &|i, j| inv.m[i][j]).max(T::zero()) * variance).sqrt()
     });
@@ -746,6 +770,7 @@ fn finish<T: Real>(
         joint2_correction_rad,
         zeros_covariance_rad2,
         zeros_sigma_stage2_rad,
+        zeros_prior_variance_rad2,
         zeros_sensitivity,
         harmonic_pair_cov_rad2,
     })
