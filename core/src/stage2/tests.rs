@@ -324,3 +324,56 @@ fn a_held_offset_hands_its_twin_the_sum() {
     assert!(isclose(r.offsets_rad[1], truth[1], 0.0, 1e-12));
     assert!(isclose(r.offsets_rad[3], truth[3], 0.0, 1e-12));
 }
+
+/// The priors' share of the zeros' variance: none where no term carries a prior; with
+/// the reducers' harmonics fitted, a part of each variance, and nearly all of Δθ2's
+/// correction (joint 2's error at its stage-1 angle, which ±0.6 rad of swing around it
+/// leaves to its stated size), never more than the variance itself.
+#[test]
+fn the_priors_share_of_the_zeros_variance_is_part_of_it() {
+    let model = Stage2Model::<f64> {
+        sensor: SensorModel::new(Convention::Rpy, Tilt::default()),
+        ..Stage2Model::default()
+    };
+    let poses: std::vec::Vec<PoseReading<f64>> = (0..40)
+        .map(|i| {
+            let a = f64::from(i);
+            let q = [
+                0.0,
+                0.6 * (0.9 * a).sin(),
+                0.6 * (1.7 * a + 0.3).sin(),
+                1.2 * (0.5 * a + 1.0).cos(),
+                0.5 * (2.3 * a).sin(),
+                1.5 * (0.31 * a + 2.0).sin(),
+            ];
+            PoseReading {
+                joints_rad: q,
+                reading: model.predict(&q, &[0.0; 4]),
+                temperature_c: None,
+            }
+        })
+        .collect();
+    // σ is the sensor's stated noise: the readings here have none. The range check
+    // has its own tests; here any reading goes.
+    let config = FitConfig::<f64> {
+        min_residual_dof: 1000,
+        sensor_range_rad: 4.0,
+        ..FitConfig::default()
+    };
+    let plain = fit(&model, &poses, &config).unwrap();
+    assert_eq!(plain.zeros_prior_variance_rad2, [0.0; ZEROS]);
+    let reducers = FitConfig {
+        extras: Extras {
+            transmission: super::params::HARMONIC_ALL,
+            ..Extras::NONE
+        },
+        ..config
+    };
+    let r = fit(&model, &poses, &reducers).unwrap();
+    for (k, p) in r.zeros_prior_variance_rad2.iter().enumerate() {
+        let v = r.zeros_covariance_rad2[k][k];
+        assert!(*p > 0.0 && *p < v, "zero {k}: prior part {p} of {v}");
+    }
+    let share = r.zeros_prior_variance_rad2[0] / r.zeros_covariance_rad2[0][0];
+    assert!(share > 0.5, "Δθ2's correction: prior share {share}");
+}
