@@ -110,8 +110,12 @@ fn restore_after_a_motor_swap_gives_minus_one_degree_within_its_uncertainty() {
             k + 2
         );
     }
-    // The session after the swap, solved on its own: the difference's budget is below
-    // both sessions'.
+    // The session after the swap, solved on its own: joint 3's restore (the swapped
+    // motor's) is known better than either session knows it, and no joint's difference
+    // claims more than two independent sessions would (what is common to both cancels;
+    // what is not, each stage-0 bias and each seat of the flange bracket, is there
+    // twice: on the KR 6 joint 6's budget is made of little else, so its difference is
+    // no better than one session's).
     let solved_after = solved(&after, &profile);
     for k in 1..5 {
         let (u, before, after) = (
@@ -120,16 +124,23 @@ fn restore_after_a_motor_swap_gives_minus_one_degree_within_its_uncertainty() {
             solved_after.json.joints[k].expanded_k2_deg,
         );
         assert!(
-            u < before && u < after,
+            u < before.hypot(after),
             "j{}: the difference's U {u} against the sessions' {before} and {after}",
             k + 2
         );
+        if k == 1 {
+            assert!(
+                u < before && u < after,
+                "j3: the restore's U {u} against the sessions' {before} and {after}"
+            );
+        }
     }
 }
 
 /// Over many robots and sessions the restore's U(k = 2) covers its error about 95 % of
 /// the time: at least 90 % of 40 sessions per joint (a binomial 95 % would fall below it
-/// one time in 50), and every joint's U below its reference session's.
+/// one time in 50), joint 3's U (the swapped motor's) below its reference session's and
+/// no joint's above two sessions'.
 #[test]
 fn restore_uncertainty_covers_its_error_over_sessions() {
     let profile = kr6();
@@ -150,10 +161,19 @@ fn restore_uncertainty_covers_its_error_over_sessions() {
             if ratio <= 1.0 {
                 covered[k] += 1;
             }
+            // Joint 3's (the swapped motor's) below its session's; none above two
+            // sessions' (see the test above).
+            let reference_u = solved_reference.json.joints[k].expanded_k2_deg;
+            let bound = if k == 1 {
+                reference_u
+            } else {
+                reference_u * 2f64.sqrt()
+            };
             assert!(
-                r.budget.expanded_deg[k] < solved_reference.json.joints[k].expanded_k2_deg,
-                "seed {seed} j{}",
-                k + 2
+                r.budget.expanded_deg[k] < bound,
+                "seed {seed} j{}: U {} against the session's {reference_u}",
+                k + 2,
+                r.budget.expanded_deg[k]
             );
         }
     }

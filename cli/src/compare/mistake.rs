@@ -169,11 +169,20 @@ pub fn classify(joints: &[EntryJoint]) -> Vec<Option<Mistake>> {
                 .iter()
                 .any(|c| near(x, c * p, t) || near(x, -c * p, t));
             let scale = f.abs() >= SCALE_FACTOR || f.abs() <= 1.0 / SCALE_FACTOR;
+            // Two joints share a factor where their ratios agree within both ratios'
+            // tolerances (a joint's ratio is known to its tolerance over what it was to
+            // take: a small offset's ratio is coarse, and judged against a large one's
+            // alone it was taken for a typing slip).
             let shared = (0..joints.len()).any(|m| {
                 m != k
                     && failed[m]
-                    && factor_of(m).is_some()
-                    && near(taken[m], f * joints[m].to_take_deg, joints[m].tolerance_deg)
+                    && factor_of(m).is_some_and(|g| {
+                        near(
+                            f,
+                            g,
+                            t / p.abs() + joints[m].tolerance_deg / joints[m].to_take_deg.abs(),
+                        )
+                    })
             });
             Some(if unit || scale || shared {
                 Mistake::Factor { factor: f }
@@ -219,6 +228,16 @@ mod tests {
         for x in &m {
             assert!(matches!(x, Some(Mistake::Factor { factor }) if (factor - 2.0).abs() < 0.1));
         }
+        // The same factor where one joint's offset is small: its ratio is coarse (here
+        // 2.44 for 2.5: 0.005 left over 0.08) and still read as the shared factor.
+        let t = [0.08, -0.5, 0.1, -0.3, 0.4];
+        let mut x = t.map(|v| 2.5 * v);
+        x[0] -= 0.0045;
+        let k = classify(&joints(t, x));
+        assert!(
+            matches!(k[0], Some(Mistake::Factor { factor }) if (factor - 2.44).abs() < 0.01),
+            "{k:?}"
+        );
         // Degrees typed where radians were meant, on one joint.
         let mut t = P;
         t[4] = P[4] * 180.0 / core::f64::consts::PI;

@@ -464,7 +464,7 @@ fn combine<T: Real>(
         cov[0][k] += c;
         cov[k][0] += c;
     }
-    let d0 = &stage1.covariance_from_stage0;
+    let d0 = &h.covariance_from_stage0;
     let shares: [[T; 3]; SESSION_JOINTS] = core::array::from_fn(|a| {
         let from0 = form(d0, &sens[a], &sens[a]);
         let from01 = form(d, &sens[a], &sens[a]);

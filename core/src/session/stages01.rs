@@ -53,11 +53,21 @@ pub struct Handover<T: Real> {
     /// Covariance of (α, β, Δθ2, bias x, bias y) in units of one reading's noise
     /// variance (stage 1's, with stage 0's propagated).
     pub covariance: [[T; 5]; 5],
+    /// The part of `covariance` that stage 0's bias brings.
+    pub covariance_from_stage0: [[T; 5]; 5],
 }
 
 /// Stage 2's model from stages 0-1: the measured base tilt and Δθ2 (joint 2's true
-/// angle is its recorded one plus Δθ2, wherever stage 2 has it), the stage-0 x bias
-/// (or 0, and the report warns) and stage 1's y bias.
+/// angle is its recorded one plus Δθ2, wherever stage 2 has it), the stage-0 bias, or
+/// without stage 0 an x bias of 0 (the report warns) and stage 1's y bias.
+///
+/// Why stage 0's y bias where there is one: stage 1's half-sum of the y readings is the
+/// y bias plus whatever turns with joint 1, and a joint-2 axis tilted off the drawing
+/// (out of the plane normal to joint 1's axis, 0.005-0.05° on real arms) turns with
+/// joint 1 exactly as the sensor's bias does. Taken as the bias, that tilt went into the
+/// flange's readings as a bias error no stage-2 pose separates (up to the whole tilt in
+/// Δθ6 on the paper's wrist); with the bench's bias, stage 2 fits the tilt itself
+/// (`Param::Tilt(0)`).
 pub fn handover<T: Real>(
     stage1: &Stage1Result<T>,
     arm: Arm<T>,
@@ -88,10 +98,7 @@ pub fn handover_at<T: Real>(
             stage1_j2_rad: stage1.j2_rad,
             sensor: SensorModel::new(
                 convention,
-                Tilt::new(
-                    bias.map_or(T::zero(), |b| b.at(stage1_c).x_rad),
-                    stage1.bias_y_rad,
-                ),
+                bias.map_or(Tilt::new(T::zero(), stage1.bias_y_rad), |b| b.at(stage1_c)),
             ),
             reference_temperature_c: stage1_c
                 .or(bias.and_then(|b| b.reference_c))
@@ -103,8 +110,29 @@ pub fn handover_at<T: Real>(
                 Convention::Rpy => T::one(),
             },
         },
-        covariance: stage1.covariance,
+        covariance: bias.map_or(stage1.covariance, |_| bench_y(&stage1.covariance)),
+        covariance_from_stage0: bias.map_or(stage1.covariance_from_stage0, |_| {
+            bench_y(&stage1.covariance_from_stage0)
+        }),
     }
+}
+
+/// Stage 1's covariance with the y bias taken from stage 0 instead of stage 1's
+/// half-sum: the bench's y bias is known as well as its x bias (one variance factor for
+/// the circle's centre), and independently of stage 1's readings and of the bench's x
+/// (the headings' centre: its x and y from orthogonal components), so its row holds its
+/// variance alone. α, β and Δθ2 do not depend on the y bias (stage 1 solves them with
+/// it unknown).
+fn bench_y<T: Real>(c: &[[T; 5]; 5]) -> [[T; 5]; 5] {
+    const BIAS_X: usize = 3;
+    const BIAS_Y: usize = 4;
+    let mut out = *c;
+    for k in 0..5 {
+        out[BIAS_Y][k] = T::zero();
+        out[k][BIAS_Y] = T::zero();
+    }
+    out[BIAS_Y][BIAS_Y] = c[BIAS_X][BIAS_X];
+    out
 }
 
 /// Stage 1 on the bias of stage 0: the part of the chain the pendant runs as soon as
