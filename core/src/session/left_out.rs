@@ -14,6 +14,7 @@
 //! limits. It costs one more fit, so it runs only on the way to a refusal.
 
 use super::judge::RefusalRule;
+use super::Handover;
 use crate::error::FitError;
 use crate::plan::MAX_POSES;
 use crate::real::{deg_to_rad, rad_to_deg, Real};
@@ -35,24 +36,34 @@ pub struct LeftOut<T> {
     pub others_rms_rad: T,
 }
 
-/// `poses[pose]` against the fit of the others (`config` as the session's fit was
-/// run). `None` where the others cannot be fitted or too few are left to judge by.
-// A frame of its own: the poses' copy leaves the stack when it returns.
+/// `poses[pose]` against the fit of the others, run as the session's stage 2 was
+/// (`config` with the hand-over `h` and its noise per reading). `None` where the
+/// others cannot be fitted or too few are left to judge by.
+// A frame of its own: the poses' copy and the fit's settings leave the stack when it
+// returns (the session's solve is stack-measured on target, and this never runs there).
 #[inline(never)]
 pub fn left_out<T: Real>(
-    model: &Stage2Model<T>,
+    h: &Handover<T>,
     poses: &[PoseReading<T>],
     pose: usize,
     config: &FitConfig<T>,
+    handover_noise_rad: T,
 ) -> Option<LeftOut<T>> {
     let left = poses.get(pose)?;
+    let model = &h.model;
+    let config = FitConfig {
+        model_covariance: h.covariance,
+        handover_noise_rad,
+        max_residual_rms_rad: T::zero(),
+        ..*config
+    };
     let mut others: heapless::Vec<PoseReading<T>, MAX_POSES> = heapless::Vec::new();
     for (i, p) in poses.iter().enumerate() {
         if i != pose {
             others.push(*p).ok()?;
         }
     }
-    let refit = fit(model, &others, config).ok()?;
+    let refit = fit(model, &others, &config).ok()?;
     against(model, &refit, &others, left, pose)
 }
 
@@ -143,25 +154,26 @@ pub fn judge_left_out<T: Real>(
 }
 
 /// The suspects (`poses` indices; a repeat is judged once), each against the fit of
-/// the others (`config` as the session's fit was run, its rule the refusal's): the one
-/// that stands out most by [`judge_left_out`], named. At most one fit per suspect, so
-/// only on the way to a refusal.
+/// the others ([`left_out`]; `config` the session's, its rule and residual limit the
+/// refusal's): the one that stands out most by [`judge_left_out`], named. One fit per
+/// suspect, so only on the way to a refusal.
+#[inline(never)]
 pub fn suspect_named<T: Real, const K: usize>(
-    model: &Stage2Model<T>,
+    h: &Handover<T>,
     poses: &[PoseReading<T>],
     suspects: [usize; K],
     config: &FitConfig<T>,
-    max_residual_rms_rad: T,
+    handover_noise_rad: T,
 ) -> Option<FitError> {
     let mut best: Option<(T, FitError)> = None;
     for (i, &pose) in suspects.iter().enumerate() {
         if suspects[..i].contains(&pose) {
             continue;
         }
-        let Some(l) = left_out(model, poses, pose, config) else {
+        let Some(l) = left_out(h, poses, pose, config, handover_noise_rad) else {
             continue;
         };
-        if let Some(fault) = judge_left_out(&l, &config.refusal, max_residual_rms_rad) {
+        if let Some(fault) = judge_left_out(&l, &config.refusal, config.max_residual_rms_rad) {
             if best.as_ref().is_none_or(|(f, _)| l.f > *f) {
                 best = Some((l.f, fault));
             }

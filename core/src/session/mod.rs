@@ -270,14 +270,8 @@ pub fn solve<T: Real>(
             };
         }
     };
-    let fit_config = |h: &Handover<T>| FitConfig {
-        model_covariance: h.covariance,
-        // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
-        handover_noise_rad: config.handover_noise_rad / per_reading.sqrt(),
-        // The residuals are judged below, with the rest of the evidence.
-        max_residual_rms_rad: T::zero(),
-        ..*config
-    };
+    // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
+    let handover_noise_rad = config.handover_noise_rad / per_reading.sqrt();
     let stage2 =
         |stage1: &Stage1Result<T>, arm: Arm<T>, bias_t: &Option<BiasOverTemperature<T>>| {
             let h = handover_at(
@@ -288,7 +282,14 @@ pub fn solve<T: Real>(
                 temps.stage1_c,
                 readings.masses,
             );
-            fit(&h.model, merged, &fit_config(&h))
+            let fit_config = FitConfig {
+                model_covariance: h.covariance,
+                handover_noise_rad,
+                // The residuals are judged below, with the rest of the evidence.
+                max_residual_rms_rad: T::zero(),
+                ..*config
+            };
+            fit(&h.model, merged, &fit_config)
                 .map_err(SessionError::Stage2)
                 .map(|r| (h, r))
         };
@@ -371,11 +372,11 @@ pub fn solve<T: Real>(
         };
         let named = if suspect {
             left_out::suspect_named(
-                &h.model,
+                h,
                 merged,
                 [e.outlier.0, r.worst_residual.1],
-                &fit_config(h),
-                config.max_residual_rms_rad,
+                config,
+                handover_noise_rad,
             )
         } else {
             None
