@@ -219,6 +219,9 @@ pub fn evidence<T: Real>(
     let dof = readings.saturating_sub(n);
     let mut outlier = (0, T::zero(), T::zero(), T::zero());
     let mut step = (0, T::zero(), T::zero());
+    // The likeliest step is the one whose ΔSSR is largest (its F grows with it, and
+    // stays at its largest past where the step leaves nothing).
+    let mut step_delta = T::zero();
     let mut ramp = (T::zero(), T::zero());
     let Some(inv) = info.invert_in_place() else {
         return Evidence {
@@ -240,14 +243,23 @@ pub fn evidence<T: Real>(
         }
         acc
     };
-    let f_of = |delta: T| {
+    // F, or `None` where the shift leaves nothing: its ΔSSR (to first order, the
+    // priors' rows in J) at or past the whole SSR.
+    let f_or_all = |delta: T| {
         let rest = (ssr - delta).max(T::zero());
-        if dof > 2 && rest > T::zero() {
-            (delta / T::lit(2.0)) / (rest / T::lit((dof - 2) as f64))
+        if dof <= 2 || delta <= T::zero() {
+            Some(T::zero())
+        } else if rest > T::zero() {
+            Some((delta / T::lit(2.0)) / (rest / T::lit((dof - 2) as f64)))
         } else {
-            T::zero()
+            None
         }
     };
+    // A drift or a step shared by many poses that leaves nothing explains every
+    // residual: its F is as large as F goes. One pose that does is one the fit all
+    // but holds alone (its leverage near 1), whose shift the others cannot judge: 0.
+    let f_of = |delta: T| f_or_all(delta).unwrap_or(T::lit(f64::from(f32::MAX)));
+    let f_of_pose = |delta: T| f_or_all(delta).unwrap_or(T::zero());
     // The ramp: S = every reading shifted by t̃ (its place in the order taken, from
     // −½ at the first pose to +½ at the last), so the shift is the drift over stage 2.
     let count = poses.len();
@@ -304,7 +316,7 @@ pub fn evidence<T: Real>(
             ],
         ];
         if let Some((shift, delta)) = solve2(h, r) {
-            let f = f_of(delta);
+            let f = f_of_pose(delta);
             if f > outlier.2 {
                 let size = shift[0].abs().max((shift[1] / w).abs());
                 let rest = (ssr - r[0] * r[0] - r[1] * r[1]).max(T::zero());
@@ -332,8 +344,9 @@ pub fn evidence<T: Real>(
                 ],
             ];
             if let Some((shift, delta)) = solve2(g, suf_r) {
-                let f = f_of(delta);
-                if f > step.2 {
+                if delta > step_delta {
+                    step_delta = delta;
+                    let f = f_of(delta);
                     let size = (shift[0] * shift[0] + shift[1] * shift[1]).sqrt();
                     step = (m, size, f);
                 }

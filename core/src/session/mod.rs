@@ -17,6 +17,7 @@ mod budget;
 mod captures;
 mod half_width;
 pub mod judge;
+mod left_out;
 mod stage1_joints;
 mod stages01;
 
@@ -274,6 +275,8 @@ pub fn solve<T: Real>(
             };
         }
     };
+    // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
+    let handover_noise_rad = config.handover_noise_rad / per_reading.sqrt();
     let stage2 =
         |stage1: &Stage1Result<T>, arm: Arm<T>, bias_t: &Option<BiasOverTemperature<T>>| {
             let h = handover_at(
@@ -286,8 +289,7 @@ pub fn solve<T: Real>(
             );
             let fit_config = FitConfig {
                 model_covariance: h.covariance,
-                // A stage 0-1 reading averages `per_reading` captures, as a stage-2 row does.
-                handover_noise_rad: config.handover_noise_rad / per_reading.sqrt(),
+                handover_noise_rad,
                 // The residuals are judged below, with the rest of the evidence.
                 max_residual_rms_rad: T::zero(),
                 ..*config
@@ -355,7 +357,36 @@ pub fn solve<T: Real>(
             ramp_explained_rad: judge::thermal_ramp_rad(merged, unmeasured_drift_per_k),
             ..judge::evidence(&h.model, r, merged, captures)
         };
-        if let Err(fault) = judge::judge(&e, &config.refusal, config.max_residual_rms_rad) {
+        let verdict = judge::judge(&e, &config.refusal, config.max_residual_rms_rad);
+        // A pose not reached pulls the fit that holds it towards itself, so far that
+        // its F can fall under the limit: the suspects (the pose most unlike the
+        // others, the one farthest off the fit) are judged again against the fit
+        // without them (one fit each) where the session is on its way to a refusal that
+        // names no fault (the residuals past their limit, or stages 0-1 refusing the
+        // gain this fit measured), or where the rule would solve it though its outlier
+        // moved past the floor (which a real arm's pose does not: the floor's reason).
+        let suspect = match &verdict {
+            Err(FitError::ResidualTooLarge { .. }) => true,
+            Err(_) => false,
+            Ok(()) => {
+                result.is_err()
+                    || (config.refusal.outlier_floor_deg.is_finite()
+                        && e.outlier.1
+                            > crate::real::deg_to_rad(T::lit(config.refusal.outlier_floor_deg)))
+            }
+        };
+        let named = if suspect {
+            left_out::suspect_named(
+                h,
+                merged,
+                [e.outlier.0, r.worst_residual.1],
+                config,
+                handover_noise_rad,
+            )
+        } else {
+            None
+        };
+        if let Some(fault) = named.or(verdict.err()) {
             result = Err(SessionError::Stage2(fault));
         }
         evidence = Some(e);
