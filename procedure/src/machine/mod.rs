@@ -255,6 +255,8 @@ pub struct Output<T> {
 }
 
 impl<T> Output<T> {
+    // Out of line: inlined, each of its dozen and more callers had a copy (flash).
+    #[inline(never)]
     fn push(&mut self, r: Record<T>) {
         // Capacity covers a whole plan plus its length (twice) and progress; steps
         // write at most that.

@@ -11,6 +11,8 @@ pub(super) struct Writer<'a> {
 }
 
 impl Writer<'_> {
+    // Out of line: inlined, each of its forty callers had a copy (flash).
+    #[inline(never)]
     pub(super) fn put(&mut self, bytes: &[u8]) -> Result<(), RecordError> {
         let end = self.len + bytes.len();
         let dst = self
