@@ -97,16 +97,17 @@ impl Reader<'_> {
         Ok(Tilt::new(self.f()?, self.f()?))
     }
     pub(super) fn four<T: Real>(&mut self) -> Result<[T; WRIST_JOINTS], RecordError> {
-        Ok([self.f()?, self.f()?, self.f()?, self.f()?])
+        self.array()
     }
     pub(super) fn joints<T: Real>(&mut self) -> Result<[T; JOINTS], RecordError> {
-        Ok([
-            self.f()?,
-            self.f()?,
-            self.f()?,
-            self.f()?,
-            self.f()?,
-            self.f()?,
-        ])
+        self.array()
+    }
+    /// `N` numbers in order: one read in a loop, not `N` copies of it (flash).
+    fn array<T: Real, const N: usize>(&mut self) -> Result<[T; N], RecordError> {
+        let mut out = [T::zero(); N];
+        for v in &mut out {
+            *v = self.f()?;
+        }
+        Ok(out)
     }
 }
