@@ -195,6 +195,32 @@ enum Upload {
     Profile(ProfileUpload<f32>),
 }
 
+/// A one-line answer to a line, written by `Server::send`.
+enum Said {
+    /// Nothing to say (a `check` or `clear` refused during a session, an upload's row).
+    Nothing,
+    /// Fixed text.
+    Text(&'static str),
+    /// One of the link's own replies.
+    Reply(Reply),
+    /// A formatted line, or `error: line too long` if it did not fit.
+    Line(Result<Line, core::fmt::Error>),
+}
+
+/// The line of one of the link's own replies. Every reply fits a line
+/// (zerocal_procedure::replies' test), so nothing is lost.
+fn reply_line(reply: Reply) -> Line {
+    let mut line = Line::new();
+    let _ = write!(line, "{reply}");
+    line
+}
+
+/// `error: …` for a line refused.
+fn error_line(error: &dyn core::fmt::Display) -> Result<Line, core::fmt::Error> {
+    let mut line = Line::new();
+    write!(line, "error: {error}").map(|()| line)
+}
+
 impl<W: Write> Server<'_, W> {
     async fn write_line(&mut self, text: &[u8]) -> Result<(), Disconnected> {
         let tx = &mut *self.tx;
@@ -211,10 +237,7 @@ impl<W: Write> Server<'_, W> {
 
     /// One of the link's own answers.
     async fn reply(&mut self, reply: Reply) -> Result<(), Disconnected> {
-        let mut line = Line::new();
-        // Every reply fits a line (zerocal_procedure::replies' test), so nothing is lost.
-        let _ = write!(line, "{reply}");
-        self.write_line(line.as_bytes()).await
+        self.write_line(reply_line(reply).as_bytes()).await
     }
 
     async fn write_fmt(&mut self, args: core::fmt::Arguments<'_>) -> Result<(), Disconnected> {
@@ -256,103 +279,108 @@ impl<W: Write> Server<'_, W> {
 
     /// Answers one line: a plan row while an upload is open, else a command.
     async fn answer(&mut self, line: &str) -> Result<Next, Disconnected> {
-        if let Some(Upload::Profile(lines)) = self.upload.as_mut() {
-            match lines.feed(line) {
-                Ok(ProfileStep::More) => {}
+        let said = match self.upload.as_mut() {
+            Some(Upload::Profile(lines)) => match lines.feed(line) {
+                Ok(ProfileStep::More) => Said::Nothing,
                 Ok(ProfileStep::Done(profile)) => {
                     self.upload = None;
                     let confirmation = profile_stored(&profile.robot);
                     match self.request(LinkRequest::SetProfile(profile)).await {
-                        LinkReply::Done => self.write_text(confirmation).await?,
+                        LinkReply::Done => Said::Line(confirmation),
                         LinkReply::SessionInProgress => {
-                            self.reply(Reply::ProfileRefusedSessionInProgress).await?
+                            Said::Reply(Reply::ProfileRefusedSessionInProgress)
                         }
                         LinkReply::PlanLocked | LinkReply::StoreFailed => {
-                            self.reply(Reply::ProfileWriteFailed).await?
+                            Said::Reply(Reply::ProfileWriteFailed)
                         }
-                        LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                        LinkReply::NotReady => Said::Text(NOT_READY),
                         // Not an answer to a profile.
-                        LinkReply::Kept(_) => self.reply(Reply::ProfileWriteFailed).await?,
+                        LinkReply::Kept(_) => Said::Reply(Reply::ProfileWriteFailed),
                     }
                 }
                 Err(error) => {
                     self.upload = None;
-                    self.write_fmt(format_args!("error: {error}")).await?;
+                    Said::Line(error_line(&error))
                 }
-            }
-            return Ok(Next::Line);
-        }
-        if let Some(Upload::Plan(rows)) = self.upload.as_mut() {
-            match rows.feed(line) {
-                Ok(UploadStep::More) => {}
+            },
+            Some(Upload::Plan(rows)) => match rows.feed(line) {
+                Ok(UploadStep::More) => Said::Nothing,
                 Ok(UploadStep::Done(plan)) => {
                     self.upload = None;
                     let poses = plan.len();
                     match self.request(LinkRequest::SetPlan(plan)).await {
-                        LinkReply::Done => self.write_text(plan_stored(poses)).await?,
-                        LinkReply::PlanLocked => self.reply(Reply::PlanLocked).await?,
+                        LinkReply::Done => Said::Line(plan_stored(poses)),
+                        LinkReply::PlanLocked => Said::Reply(Reply::PlanLocked),
                         // Not an answer to a plan.
                         LinkReply::StoreFailed | LinkReply::Kept(_) => {
-                            self.reply(Reply::PlanWriteFailed).await?
+                            Said::Reply(Reply::PlanWriteFailed)
                         }
-                        LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                        LinkReply::NotReady => Said::Text(NOT_READY),
                         LinkReply::SessionInProgress => {
-                            self.reply(Reply::PlanRefusedSessionInProgress).await?
+                            Said::Reply(Reply::PlanRefusedSessionInProgress)
                         }
                     }
                 }
                 Err(error) => {
                     self.upload = None;
-                    self.write_fmt(format_args!("error: {error}")).await?;
+                    Said::Line(error_line(&error))
                 }
-            }
-            return Ok(Next::Line);
-        }
+            },
+            None => match self.command(line).await? {
+                Some(said) => said,
+                None => return Ok(Next::Live),
+            },
+        };
+        self.send(said).await?;
+        Ok(Next::Line)
+    }
+
+    /// Carries out a command line; its one-line answer, or `None` for `live`.
+    /// Multi-line answers are written here and answer [`Said::Nothing`].
+    async fn command(&mut self, line: &str) -> Result<Option<Said>, Disconnected> {
         if line.trim().is_empty() {
-            return Ok(Next::Line);
+            return Ok(Some(Said::Nothing));
         }
         match parse_bracket_calibrate(line) {
             Some(Ok((mount, id))) => {
                 let confirmation = bracket_started(mount, &id);
-                match self
+                let said = match self
                     .request(LinkRequest::CalibrateBracket { mount, id })
                     .await
                 {
-                    LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                    LinkReply::NotReady => Said::Text(NOT_READY),
                     // Nothing is stored at the start: the procedure only shows it.
-                    _ => self.write_text(confirmation).await?,
-                }
-                return Ok(Next::Line);
+                    _ => Said::Line(confirmation),
+                };
+                return Ok(Some(said));
             }
-            Some(Err(error)) => {
-                self.write_fmt(format_args!("error: {error}")).await?;
-                return Ok(Next::Line);
-            }
+            Some(Err(error)) => return Ok(Some(Said::Line(error_line(&error)))),
             None => {}
         }
         let command = match parse_command(line) {
             Ok(command) => command,
-            Err(error) => {
-                self.write_fmt(format_args!("error: {error}")).await?;
-                return Ok(Next::Line);
-            }
+            Err(error) => return Ok(Some(Said::Line(error_line(&error)))),
         };
-        match command {
+        let said = match command {
             Command::Help => {
                 for help in HELP {
                     self.write_line(help.as_bytes()).await?;
                 }
+                Said::Nothing
             }
-            Command::Status => self.status().await?,
+            Command::Status => {
+                self.status().await?;
+                Said::Nothing
+            }
             Command::Plan => {
                 let procedure = self.shared.procedure.lock().await;
                 for i in 0.. {
                     match plan_line(procedure.session.plan(), i) {
                         None => break,
-                        Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                        Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
+                        Some(text) => self.write_text(text).await?,
                     }
                 }
+                Said::Nothing
             }
             Command::PlanSet => {
                 let joints = {
@@ -361,7 +389,7 @@ impl<W: Write> Server<'_, W> {
                     [q[0], q[1]]
                 };
                 self.upload = Some(Upload::Plan(PlanUpload::new(joints)));
-                self.write_line(PLAN_PROMPT.as_bytes()).await?;
+                Said::Text(PLAN_PROMPT)
             }
             Command::Profile => {
                 let procedure = self.shared.procedure.lock().await;
@@ -369,53 +397,68 @@ impl<W: Write> Server<'_, W> {
                 for i in 0.. {
                     match profile.line(i) {
                         None => break,
-                        Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                        Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
+                        Some(text) => self.write_text(text).await?,
                     }
                 }
+                Said::Nothing
             }
             Command::ProfileSet => {
                 self.upload = Some(Upload::Profile(ProfileUpload::default()));
-                self.write_line(PROFILE_PROMPT.as_bytes()).await?;
+                Said::Text(PROFILE_PROMPT)
             }
             Command::Erase => match self.request(LinkRequest::Erase).await {
-                LinkReply::Done => self.write_line(ERASED.as_bytes()).await?,
-                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
-                _ => self.reply(Reply::EraseFailed).await?,
+                LinkReply::Done => Said::Text(ERASED),
+                LinkReply::NotReady => Said::Text(NOT_READY),
+                _ => Said::Reply(Reply::EraseFailed),
             },
-            Command::Export => self.export().await?,
+            Command::Export => {
+                self.export().await?;
+                Said::Nothing
+            }
             Command::Brackets => {
                 let procedure = self.shared.procedure.lock().await;
                 for mount in BracketMount::ALL {
                     let text = bracket_line(mount, procedure.brackets.get(mount));
                     self.write_text(text).await?;
                 }
+                Said::Nothing
             }
-            Command::Results => self.results().await?,
+            Command::Results => {
+                self.results().await?;
+                Said::Nothing
+            }
             Command::BracketStatus => {
                 let procedure = self.shared.procedure.lock().await;
-                let text = progress_line(procedure.bracket_cal.as_ref());
-                self.write_text(text).await?;
+                Said::Line(progress_line(procedure.bracket_cal.as_ref()))
             }
-            Command::Live => return Ok(Next::Live),
+            Command::Live => return Ok(None),
             Command::Check => match self.request(LinkRequest::Check).await {
-                LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::CheckStarted).await?,
-                LinkReply::StoreFailed | LinkReply::Kept(_) => {
-                    self.reply(Reply::ClearWriteFailed).await?
-                }
-                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
-                LinkReply::SessionInProgress => {}
+                LinkReply::Done | LinkReply::PlanLocked => Said::Reply(Reply::CheckStarted),
+                LinkReply::StoreFailed | LinkReply::Kept(_) => Said::Reply(Reply::ClearWriteFailed),
+                LinkReply::NotReady => Said::Text(NOT_READY),
+                LinkReply::SessionInProgress => Said::Nothing,
             },
             Command::Clear => match self.request(LinkRequest::Clear).await {
-                LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::Cleared).await?,
-                LinkReply::StoreFailed | LinkReply::Kept(_) => {
-                    self.reply(Reply::ClearWriteFailed).await?
-                }
-                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
-                LinkReply::SessionInProgress => {}
+                LinkReply::Done | LinkReply::PlanLocked => Said::Reply(Reply::Cleared),
+                LinkReply::StoreFailed | LinkReply::Kept(_) => Said::Reply(Reply::ClearWriteFailed),
+                LinkReply::NotReady => Said::Text(NOT_READY),
+                LinkReply::SessionInProgress => Said::Nothing,
             },
-        }
-        Ok(Next::Line)
+        };
+        Ok(Some(said))
+    }
+
+    /// Writes a one-line answer: one await for all of them (each await is a state
+    /// of this task's state machine, and each cost flash).
+    async fn send(&mut self, said: Said) -> Result<(), Disconnected> {
+        let line = match said {
+            Said::Nothing => return Ok(()),
+            Said::Text(text) => return self.write_line(text.as_bytes()).await,
+            Said::Reply(reply) => reply_line(reply),
+            Said::Line(Ok(line)) => line,
+            Said::Line(Err(_)) => reply_line(Reply::LineTooLong),
+        };
+        self.write_line(line.as_bytes()).await
     }
 
     /// Sends a change to the procedure task and waits until it is stored.
@@ -431,8 +474,7 @@ impl<W: Write> Server<'_, W> {
             for i in 0.. {
                 match status(&procedure.session, i) {
                     None => break,
-                    Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                    Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
+                    Some(text) => self.write_text(text).await?,
                 }
             }
         }
@@ -487,10 +529,7 @@ impl<W: Write> Server<'_, W> {
     async fn export(&mut self) -> Result<(), Disconnected> {
         let procedure = self.shared.procedure.lock().await;
         for item in procedure.session.export(&procedure.config) {
-            match item {
-                Ok(text) => self.write_line(text.as_bytes()).await?,
-                Err(_) => self.reply(Reply::LineTooLong).await?,
-            }
+            self.write_text(item).await?;
         }
         Ok(())
     }
