@@ -260,21 +260,17 @@ impl<W: Write> Server<'_, W> {
     }
 
     async fn line(&mut self, edited: Edited) -> Result<Next, Disconnected> {
-        let line = match edited {
-            Edited::TooLong => {
-                // An over-long row ends an upload like any bad row.
-                self.upload = None;
-                self.reply(Reply::UploadLineTooLong).await?;
-                return Ok(Next::Line);
-            }
-            Edited::Line(line) => line,
+        let refusal = match &edited {
+            // An over-long row ends an upload like any bad row.
+            Edited::TooLong => Reply::UploadLineTooLong,
+            Edited::Line(line) => match core::str::from_utf8(line) {
+                Ok(text) => return self.answer(text).await,
+                Err(_) => Reply::NotText,
+            },
         };
-        let Ok(text) = core::str::from_utf8(&line) else {
-            self.upload = None;
-            self.reply(Reply::NotText).await?;
-            return Ok(Next::Line);
-        };
-        self.answer(text).await
+        self.upload = None;
+        self.send(Said::Reply(refusal)).await?;
+        Ok(Next::Line)
     }
 
     /// Answers one line: a plan row while an upload is open, else a command.
