@@ -94,7 +94,8 @@ impl Reader<'_> {
         }
     }
     pub(super) fn tilt<T: Real>(&mut self) -> Result<Tilt<T>, RecordError> {
-        Ok(Tilt::new(self.f()?, self.f()?))
+        let [x, y] = self.array()?;
+        Ok(Tilt::new(x, y))
     }
     pub(super) fn four<T: Real>(&mut self) -> Result<[T; WRIST_JOINTS], RecordError> {
         self.array()
@@ -103,7 +104,7 @@ impl Reader<'_> {
         self.array()
     }
     /// `N` numbers in order: one read in a loop, not `N` copies of it (flash).
-    fn array<T: Real, const N: usize>(&mut self) -> Result<[T; N], RecordError> {
+    pub(super) fn array<T: Real, const N: usize>(&mut self) -> Result<[T; N], RecordError> {
         let mut out = [T::zero(); N];
         for v in &mut out {
             *v = self.f()?;
