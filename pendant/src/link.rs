@@ -368,35 +368,40 @@ impl<W: Write> Server<'_, W> {
                 self.status().await?;
                 Said::Nothing
             }
-            Command::Plan => {
-                let procedure = self.shared.procedure.lock().await;
+            // The commands that read the session or the configuration: one lock, and
+            // one write for all their lines (each await costs flash).
+            command @ (Command::Plan
+            | Command::PlanSet
+            | Command::Profile
+            | Command::Brackets
+            | Command::BracketStatus) => {
+                let shared = self.shared;
+                let procedure = shared.procedure.lock().await;
+                let profile =
+                    matches!(command, Command::Profile).then(|| procedure.config.profile());
                 for i in 0.. {
-                    match plan_line(procedure.session.plan(), i) {
-                        None => break,
-                        Some(text) => self.write_text(text).await?,
-                    }
+                    let text = match command {
+                        Command::Plan => plan_line(procedure.session.plan(), i),
+                        Command::Profile => profile.as_ref().and_then(|p| p.line(i)),
+                        Command::Brackets => BracketMount::ALL
+                            .get(i)
+                            .map(|&mount| bracket_line(mount, procedure.brackets.get(mount))),
+                        _ => None,
+                    };
+                    let Some(text) = text else { break };
+                    self.write_text(text).await?;
                 }
-                Said::Nothing
-            }
-            Command::PlanSet => {
-                let joints = {
-                    let procedure = self.shared.procedure.lock().await;
-                    let q = procedure.config.stage1_joints_rad;
-                    [q[0], q[1]]
-                };
-                self.upload = Some(Upload::Plan(PlanUpload::new(joints)));
-                Said::Text(PLAN_PROMPT)
-            }
-            Command::Profile => {
-                let procedure = self.shared.procedure.lock().await;
-                let profile = procedure.config.profile();
-                for i in 0.. {
-                    match profile.line(i) {
-                        None => break,
-                        Some(text) => self.write_text(text).await?,
+                match command {
+                    Command::PlanSet => {
+                        let q = procedure.config.stage1_joints_rad;
+                        self.upload = Some(Upload::Plan(PlanUpload::new([q[0], q[1]])));
+                        Said::Text(PLAN_PROMPT)
                     }
+                    Command::BracketStatus => {
+                        Said::Line(progress_line(procedure.bracket_cal.as_ref()))
+                    }
+                    _ => Said::Nothing,
                 }
-                Said::Nothing
             }
             Command::ProfileSet => {
                 self.upload = Some(Upload::Profile(ProfileUpload::default()));
@@ -411,21 +416,9 @@ impl<W: Write> Server<'_, W> {
                 self.export().await?;
                 Said::Nothing
             }
-            Command::Brackets => {
-                let procedure = self.shared.procedure.lock().await;
-                for mount in BracketMount::ALL {
-                    let text = bracket_line(mount, procedure.brackets.get(mount));
-                    self.write_text(text).await?;
-                }
-                Said::Nothing
-            }
             Command::Results => {
                 self.results().await?;
                 Said::Nothing
-            }
-            Command::BracketStatus => {
-                let procedure = self.shared.procedure.lock().await;
-                Said::Line(progress_line(procedure.bracket_cal.as_ref()))
             }
             Command::Live => return Ok(None),
             Command::Check => match self.request(LinkRequest::Check).await {
