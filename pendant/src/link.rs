@@ -236,27 +236,12 @@ impl<W: Write> Server<'_, W> {
     }
 
     /// One of the link's own answers.
-    async fn reply(&mut self, reply: Reply) -> Result<(), Disconnected> {
-        self.write_line(reply_line(reply).as_bytes()).await
-    }
-
-    async fn write_fmt(&mut self, args: core::fmt::Arguments<'_>) -> Result<(), Disconnected> {
-        let mut line = Line::new();
-        if line.write_fmt(args).is_err() {
-            return self.reply(Reply::LineTooLong).await;
-        }
-        self.write_line(line.as_bytes()).await
-    }
-
     /// A line formatted by core, or `error: line too long` if it did not fit.
     async fn write_text(
         &mut self,
         line: Result<Line, core::fmt::Error>,
     ) -> Result<(), Disconnected> {
-        match line {
-            Ok(text) => self.write_line(text.as_bytes()).await,
-            Err(_) => self.reply(Reply::LineTooLong).await,
-        }
+        self.send(Said::Line(line)).await
     }
 
     async fn line(&mut self, edited: Edited) -> Result<Next, Disconnected> {
@@ -440,14 +425,24 @@ impl<W: Write> Server<'_, W> {
     /// Writes a one-line answer: one await for all of them (each await is a state
     /// of this task's state machine, and each cost flash).
     async fn send(&mut self, said: Said) -> Result<(), Disconnected> {
-        let line = match said {
+        let line;
+        let bytes = match said {
             Said::Nothing => return Ok(()),
-            Said::Text(text) => return self.write_line(text.as_bytes()).await,
-            Said::Reply(reply) => reply_line(reply),
-            Said::Line(Ok(line)) => line,
-            Said::Line(Err(_)) => reply_line(Reply::LineTooLong),
+            Said::Text(text) => text.as_bytes(),
+            Said::Reply(reply) => {
+                line = reply_line(reply);
+                line.as_bytes()
+            }
+            Said::Line(Ok(text)) => {
+                line = text;
+                line.as_bytes()
+            }
+            Said::Line(Err(_)) => {
+                line = reply_line(Reply::LineTooLong);
+                line.as_bytes()
+            }
         };
-        self.write_line(line.as_bytes()).await
+        self.write_line(bytes).await
     }
 
     /// Sends a change to the procedure task and waits until it is stored.
@@ -577,22 +572,24 @@ impl<W: Write> Server<'_, W> {
                                 None => procedure.session.view().live,
                             }
                         };
-                        match reading {
+                        let said = match reading {
                             Some(tilt) => {
                                 let (x_deg, y_deg) = tilt.to_deg();
                                 // Integer formatting: core's float formatting costs
                                 // ~8 KiB of flash.
                                 let x = Fixed::signed(x_deg.into(), 4);
                                 let y = Fixed::signed(y_deg.into(), 4);
-                                self.write_fmt(format_args!("{x},{y}")).await?;
+                                let mut line = Line::new();
                                 *had_reading = true;
+                                Said::Line(write!(line, "{x},{y}").map(|()| line))
                             }
                             None if *had_reading => {
-                                self.write_line(b"# no reading").await?;
                                 *had_reading = false;
+                                Said::Text("# no reading")
                             }
-                            None => {}
-                        }
+                            None => Said::Nothing,
+                        };
+                        self.send(said).await?;
                     }
                 }
             }
