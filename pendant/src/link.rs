@@ -401,10 +401,7 @@ impl<W: Write> Server<'_, W> {
                 self.export().await?;
                 Said::Nothing
             }
-            Command::Results => {
-                self.results().await?;
-                Said::Nothing
-            }
+            Command::Results => self.results().await?,
             Command::Live => return Ok(None),
             Command::Check => match self.request(LinkRequest::Check).await {
                 LinkReply::Done | LinkReply::PlanLocked => Said::Reply(Reply::CheckStarted),
@@ -471,30 +468,40 @@ impl<W: Write> Server<'_, W> {
     }
 
     /// `results`: the kept results, oldest first, each read from the store by the
-    /// procedure task when its turn comes (one in RAM at a time).
-    async fn results(&mut self) -> Result<(), Disconnected> {
+    /// procedure task when its turn comes (one in RAM at a time). Its last line (the
+    /// end, or `not ready`) is left to [`Self::send`].
+    async fn results(&mut self) -> Result<Said, Disconnected> {
         let next = self.shared.procedure.lock().await.next_result_id;
-        let first = next
+        let mut id = next
             .saturating_sub(KEPT_RESULTS as u32)
             .max(FIRST_RESULT_ID);
         // The head goes out with the first answer: a pendant not ready (its storage
         // reset screen up) says only that, as to every request.
         let mut head = false;
-        for id in first..next {
-            let reply = self.request(LinkRequest::ReadKept { id }).await;
-            if reply == LinkReply::NotReady && !head {
-                return self.write_line(NOT_READY.as_bytes()).await;
-            }
+        loop {
+            let reply = if id < next {
+                Some(self.request(LinkRequest::ReadKept { id }).await)
+            } else {
+                None
+            };
             if !head {
+                if reply == Some(LinkReply::NotReady) {
+                    return Ok(Said::Text(NOT_READY));
+                }
                 self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
                 head = true;
             }
+            let Some(reply) = reply else {
+                return Ok(Said::Text(KEPT_RESULTS_END));
+            };
+            let key = kept_key(id);
+            id += 1;
             let value = match reply {
                 LinkReply::Kept(Some(value)) => value,
                 // An empty slot (the result's write was cut) or an unreadable one.
                 _ => continue,
             };
-            let Ok(kept) = KeptResult::decode(kept_key(id), &value) else {
+            let Ok(kept) = KeptResult::decode(key, &value) else {
                 continue;
             };
             for part in 0..KEPT_RESULT_LINES {
@@ -503,10 +510,6 @@ impl<W: Write> Server<'_, W> {
                 self.write_text(text).await?;
             }
         }
-        if !head {
-            self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
-        }
-        self.write_line(KEPT_RESULTS_END.as_bytes()).await
     }
 
     /// Streams `export`, the session held for the whole of it.
