@@ -349,13 +349,10 @@ impl<W: Write> Server<'_, W> {
                 }
                 Said::Nothing
             }
-            Command::Status => {
-                self.status().await?;
-                Said::Nothing
-            }
             // The commands that read the session or the configuration: one lock, and
             // one write for all their lines (each await costs flash).
-            command @ (Command::Plan
+            command @ (Command::Status
+            | Command::Plan
             | Command::PlanSet
             | Command::Profile
             | Command::Brackets
@@ -366,6 +363,8 @@ impl<W: Write> Server<'_, W> {
                     matches!(command, Command::Profile).then(|| procedure.config.profile());
                 for i in 0.. {
                     let text = match command {
+                        // Core's status lines, then the pendant's own (below).
+                        Command::Status => status(&procedure.session, i),
                         Command::Plan => plan_line(procedure.session.plan(), i),
                         Command::Profile => profile.as_ref().and_then(|p| p.line(i)),
                         Command::Brackets => BracketMount::ALL
@@ -385,6 +384,10 @@ impl<W: Write> Server<'_, W> {
                     Command::BracketStatus => {
                         Said::Line(progress_line(procedure.bracket_cal.as_ref()))
                     }
+                    Command::Status => Said::Line(pendant_status(
+                        shared.dropped_frames.load(Ordering::Relaxed),
+                        shared.display_faults.load(Ordering::Relaxed),
+                    )),
                     _ => Said::Nothing,
                 }
             }
@@ -446,25 +449,6 @@ impl<W: Write> Server<'_, W> {
     async fn request(&mut self, request: LinkRequest) -> LinkReply {
         self.shared.link_requests.send(request).await;
         self.shared.link_replies.receive().await
-    }
-
-    /// Core's status lines, then the pendant's own.
-    async fn status(&mut self) -> Result<(), Disconnected> {
-        {
-            let procedure = self.shared.procedure.lock().await;
-            for i in 0.. {
-                match status(&procedure.session, i) {
-                    None => break,
-                    Some(text) => self.write_text(text).await?,
-                }
-            }
-        }
-        let shared = self.shared;
-        self.write_text(pendant_status(
-            shared.dropped_frames.load(Ordering::Relaxed),
-            shared.display_faults.load(Ordering::Relaxed),
-        ))
-        .await
     }
 
     /// `results`: the kept results, oldest first, each read from the store by the
