@@ -356,17 +356,22 @@ impl<W: Write> Server<'_, W> {
             | Command::PlanSet
             | Command::Profile
             | Command::Brackets
-            | Command::BracketStatus) => {
+            | Command::BracketStatus
+            | Command::Export) => {
                 let shared = self.shared;
                 let procedure = shared.procedure.lock().await;
                 let profile =
                     matches!(command, Command::Profile).then(|| procedure.config.profile());
+                // `export` holds the session for the whole of it.
+                let mut export = matches!(command, Command::Export)
+                    .then(|| procedure.session.export(&procedure.config));
                 for i in 0.. {
                     let text = match command {
                         // Core's status lines, then the pendant's own (below).
                         Command::Status => status(&procedure.session, i),
                         Command::Plan => plan_line(procedure.session.plan(), i),
                         Command::Profile => profile.as_ref().and_then(|p| p.line(i)),
+                        Command::Export => export.as_mut().and_then(Iterator::next),
                         Command::Brackets => BracketMount::ALL
                             .get(i)
                             .map(|&mount| bracket_line(mount, procedure.brackets.get(mount))),
@@ -400,10 +405,6 @@ impl<W: Write> Server<'_, W> {
                 LinkReply::NotReady => Said::Text(NOT_READY),
                 _ => Said::Reply(Reply::EraseFailed),
             },
-            Command::Export => {
-                self.export().await?;
-                Said::Nothing
-            }
             Command::Results => self.results().await?,
             Command::Live => return Ok(None),
             Command::Check => match self.request(LinkRequest::Check).await {
@@ -494,15 +495,6 @@ impl<W: Write> Server<'_, W> {
                 self.write_text(text).await?;
             }
         }
-    }
-
-    /// Streams `export`, the session held for the whole of it.
-    async fn export(&mut self) -> Result<(), Disconnected> {
-        let procedure = self.shared.procedure.lock().await;
-        for item in procedure.session.export(&procedure.config) {
-            self.write_text(item).await?;
-        }
-        Ok(())
     }
 
     /// Streams `x_deg,y_deg` until a key (in `typed`, or read); returns the bytes after
