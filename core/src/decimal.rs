@@ -18,6 +18,9 @@ pub struct Fixed {
 
 impl Fixed {
     /// `value` with `decimals` (at most 15) decimals.
+    // Out of line, as `signed`: the pendant's screens and lines call them some fifty
+    // times, each inlined copy costing more flash than the call.
+    #[inline(never)]
     pub fn new(value: f64, decimals: u8) -> Self {
         Fixed {
             value,
@@ -27,6 +30,7 @@ impl Fixed {
     }
 
     /// As [`new`](Self::new), with a `+` before positive numbers.
+    #[inline(never)]
     pub fn signed(value: f64, decimals: u8) -> Self {
         Fixed {
             plus: true,

@@ -195,6 +195,32 @@ enum Upload {
     Profile(ProfileUpload<f32>),
 }
 
+/// A one-line answer to a line, written by `Server::send`.
+enum Said {
+    /// Nothing to say (a `check` or `clear` refused during a session, an upload's row).
+    Nothing,
+    /// Fixed text.
+    Text(&'static str),
+    /// One of the link's own replies.
+    Reply(Reply),
+    /// A formatted line, or `error: line too long` if it did not fit.
+    Line(Result<Line, core::fmt::Error>),
+}
+
+/// The line of one of the link's own replies. Every reply fits a line
+/// (zerocal_procedure::replies' test), so nothing is lost.
+fn reply_line(reply: Reply) -> Line {
+    let mut line = Line::new();
+    let _ = write!(line, "{reply}");
+    line
+}
+
+/// `error: …` for a line refused.
+fn error_line(error: &dyn core::fmt::Display) -> Result<Line, core::fmt::Error> {
+    let mut line = Line::new();
+    write!(line, "error: {error}").map(|()| line)
+}
+
 impl<W: Write> Server<'_, W> {
     async fn write_line(&mut self, text: &[u8]) -> Result<(), Disconnected> {
         let tx = &mut *self.tx;
@@ -210,212 +236,214 @@ impl<W: Write> Server<'_, W> {
     }
 
     /// One of the link's own answers.
-    async fn reply(&mut self, reply: Reply) -> Result<(), Disconnected> {
-        let mut line = Line::new();
-        // Every reply fits a line (zerocal_procedure::replies' test), so nothing is lost.
-        let _ = write!(line, "{reply}");
-        self.write_line(line.as_bytes()).await
-    }
-
-    async fn write_fmt(&mut self, args: core::fmt::Arguments<'_>) -> Result<(), Disconnected> {
-        let mut line = Line::new();
-        if line.write_fmt(args).is_err() {
-            return self.reply(Reply::LineTooLong).await;
-        }
-        self.write_line(line.as_bytes()).await
-    }
-
     /// A line formatted by core, or `error: line too long` if it did not fit.
     async fn write_text(
         &mut self,
         line: Result<Line, core::fmt::Error>,
     ) -> Result<(), Disconnected> {
-        match line {
-            Ok(text) => self.write_line(text.as_bytes()).await,
-            Err(_) => self.reply(Reply::LineTooLong).await,
-        }
+        self.send(Said::Line(line)).await
     }
 
     async fn line(&mut self, edited: Edited) -> Result<Next, Disconnected> {
-        let line = match edited {
-            Edited::TooLong => {
-                // An over-long row ends an upload like any bad row.
-                self.upload = None;
-                self.reply(Reply::UploadLineTooLong).await?;
-                return Ok(Next::Line);
-            }
-            Edited::Line(line) => line,
+        let refusal = match &edited {
+            // An over-long row ends an upload like any bad row.
+            Edited::TooLong => Reply::UploadLineTooLong,
+            Edited::Line(line) => match core::str::from_utf8(line) {
+                Ok(text) => return self.answer(text).await,
+                Err(_) => Reply::NotText,
+            },
         };
-        let Ok(text) = core::str::from_utf8(&line) else {
-            self.upload = None;
-            self.reply(Reply::NotText).await?;
-            return Ok(Next::Line);
-        };
-        self.answer(text).await
+        self.upload = None;
+        self.send(Said::Reply(refusal)).await?;
+        Ok(Next::Line)
     }
 
     /// Answers one line: a plan row while an upload is open, else a command.
     async fn answer(&mut self, line: &str) -> Result<Next, Disconnected> {
-        if let Some(Upload::Profile(lines)) = self.upload.as_mut() {
-            match lines.feed(line) {
-                Ok(ProfileStep::More) => {}
+        let said = match self.upload.as_mut() {
+            Some(Upload::Profile(lines)) => match lines.feed(line) {
+                Ok(ProfileStep::More) => Said::Nothing,
                 Ok(ProfileStep::Done(profile)) => {
                     self.upload = None;
                     let confirmation = profile_stored(&profile.robot);
                     match self.request(LinkRequest::SetProfile(profile)).await {
-                        LinkReply::Done => self.write_text(confirmation).await?,
+                        LinkReply::Done => Said::Line(confirmation),
                         LinkReply::SessionInProgress => {
-                            self.reply(Reply::ProfileRefusedSessionInProgress).await?
+                            Said::Reply(Reply::ProfileRefusedSessionInProgress)
                         }
                         LinkReply::PlanLocked | LinkReply::StoreFailed => {
-                            self.reply(Reply::ProfileWriteFailed).await?
+                            Said::Reply(Reply::ProfileWriteFailed)
                         }
-                        LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                        LinkReply::NotReady => Said::Text(NOT_READY),
                         // Not an answer to a profile.
-                        LinkReply::Kept(_) => self.reply(Reply::ProfileWriteFailed).await?,
+                        LinkReply::Kept(_) => Said::Reply(Reply::ProfileWriteFailed),
                     }
                 }
                 Err(error) => {
                     self.upload = None;
-                    self.write_fmt(format_args!("error: {error}")).await?;
+                    Said::Line(error_line(&error))
                 }
-            }
-            return Ok(Next::Line);
-        }
-        if let Some(Upload::Plan(rows)) = self.upload.as_mut() {
-            match rows.feed(line) {
-                Ok(UploadStep::More) => {}
+            },
+            Some(Upload::Plan(rows)) => match rows.feed(line) {
+                Ok(UploadStep::More) => Said::Nothing,
                 Ok(UploadStep::Done(plan)) => {
                     self.upload = None;
                     let poses = plan.len();
                     match self.request(LinkRequest::SetPlan(plan)).await {
-                        LinkReply::Done => self.write_text(plan_stored(poses)).await?,
-                        LinkReply::PlanLocked => self.reply(Reply::PlanLocked).await?,
+                        LinkReply::Done => Said::Line(plan_stored(poses)),
+                        LinkReply::PlanLocked => Said::Reply(Reply::PlanLocked),
                         // Not an answer to a plan.
                         LinkReply::StoreFailed | LinkReply::Kept(_) => {
-                            self.reply(Reply::PlanWriteFailed).await?
+                            Said::Reply(Reply::PlanWriteFailed)
                         }
-                        LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                        LinkReply::NotReady => Said::Text(NOT_READY),
                         LinkReply::SessionInProgress => {
-                            self.reply(Reply::PlanRefusedSessionInProgress).await?
+                            Said::Reply(Reply::PlanRefusedSessionInProgress)
                         }
                     }
                 }
                 Err(error) => {
                     self.upload = None;
-                    self.write_fmt(format_args!("error: {error}")).await?;
+                    Said::Line(error_line(&error))
                 }
-            }
-            return Ok(Next::Line);
-        }
+            },
+            None => match self.command(line).await? {
+                Some(said) => said,
+                None => return Ok(Next::Live),
+            },
+        };
+        self.send(said).await?;
+        Ok(Next::Line)
+    }
+
+    /// Carries out a command line; its one-line answer, or `None` for `live`.
+    /// Multi-line answers are written here and answer [`Said::Nothing`].
+    async fn command(&mut self, line: &str) -> Result<Option<Said>, Disconnected> {
         if line.trim().is_empty() {
-            return Ok(Next::Line);
+            return Ok(Some(Said::Nothing));
         }
         match parse_bracket_calibrate(line) {
             Some(Ok((mount, id))) => {
                 let confirmation = bracket_started(mount, &id);
-                match self
+                let said = match self
                     .request(LinkRequest::CalibrateBracket { mount, id })
                     .await
                 {
-                    LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
+                    LinkReply::NotReady => Said::Text(NOT_READY),
                     // Nothing is stored at the start: the procedure only shows it.
-                    _ => self.write_text(confirmation).await?,
-                }
-                return Ok(Next::Line);
+                    _ => Said::Line(confirmation),
+                };
+                return Ok(Some(said));
             }
-            Some(Err(error)) => {
-                self.write_fmt(format_args!("error: {error}")).await?;
-                return Ok(Next::Line);
-            }
+            Some(Err(error)) => return Ok(Some(Said::Line(error_line(&error)))),
             None => {}
         }
         let command = match parse_command(line) {
             Ok(command) => command,
-            Err(error) => {
-                self.write_fmt(format_args!("error: {error}")).await?;
-                return Ok(Next::Line);
-            }
+            Err(error) => return Ok(Some(Said::Line(error_line(&error)))),
         };
-        match command {
+        let said = match command {
             Command::Help => {
                 for help in HELP {
                     self.write_line(help.as_bytes()).await?;
                 }
+                Said::Nothing
             }
-            Command::Status => self.status().await?,
-            Command::Plan => {
-                let procedure = self.shared.procedure.lock().await;
+            // The commands that read the session or the configuration: one lock, and
+            // one write for all their lines (each await costs flash).
+            command @ (Command::Status
+            | Command::Plan
+            | Command::PlanSet
+            | Command::Profile
+            | Command::Brackets
+            | Command::BracketStatus
+            | Command::Export) => {
+                let shared = self.shared;
+                let procedure = shared.procedure.lock().await;
+                let profile =
+                    matches!(command, Command::Profile).then(|| procedure.config.profile());
+                // `export` holds the session for the whole of it.
+                let mut export = matches!(command, Command::Export)
+                    .then(|| procedure.session.export(&procedure.config));
                 for i in 0.. {
-                    match plan_line(procedure.session.plan(), i) {
-                        None => break,
-                        Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                        Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
-                    }
+                    let text = match command {
+                        // Core's status lines, then the pendant's own (below).
+                        Command::Status => status(&procedure.session, i),
+                        Command::Plan => plan_line(procedure.session.plan(), i),
+                        Command::Profile => profile.as_ref().and_then(|p| p.line(i)),
+                        Command::Export => export.as_mut().and_then(Iterator::next),
+                        Command::Brackets => BracketMount::ALL
+                            .get(i)
+                            .map(|&mount| bracket_line(mount, procedure.brackets.get(mount))),
+                        _ => None,
+                    };
+                    let Some(text) = text else { break };
+                    self.write_text(text).await?;
                 }
-            }
-            Command::PlanSet => {
-                let joints = {
-                    let procedure = self.shared.procedure.lock().await;
-                    let q = procedure.config.stage1_joints_rad;
-                    [q[0], q[1]]
-                };
-                self.upload = Some(Upload::Plan(PlanUpload::new(joints)));
-                self.write_line(PLAN_PROMPT.as_bytes()).await?;
-            }
-            Command::Profile => {
-                let procedure = self.shared.procedure.lock().await;
-                let profile = procedure.config.profile();
-                for i in 0.. {
-                    match profile.line(i) {
-                        None => break,
-                        Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                        Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
+                match command {
+                    Command::PlanSet => {
+                        let q = procedure.config.stage1_joints_rad;
+                        self.upload = Some(Upload::Plan(PlanUpload::new([q[0], q[1]])));
+                        Said::Text(PLAN_PROMPT)
                     }
+                    Command::BracketStatus => {
+                        Said::Line(progress_line(procedure.bracket_cal.as_ref()))
+                    }
+                    Command::Status => Said::Line(pendant_status(
+                        shared.dropped_frames.load(Ordering::Relaxed),
+                        shared.display_faults.load(Ordering::Relaxed),
+                    )),
+                    _ => Said::Nothing,
                 }
             }
             Command::ProfileSet => {
                 self.upload = Some(Upload::Profile(ProfileUpload::default()));
-                self.write_line(PROFILE_PROMPT.as_bytes()).await?;
+                Said::Text(PROFILE_PROMPT)
             }
             Command::Erase => match self.request(LinkRequest::Erase).await {
-                LinkReply::Done => self.write_line(ERASED.as_bytes()).await?,
-                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
-                _ => self.reply(Reply::EraseFailed).await?,
+                LinkReply::Done => Said::Text(ERASED),
+                LinkReply::NotReady => Said::Text(NOT_READY),
+                _ => Said::Reply(Reply::EraseFailed),
             },
-            Command::Export => self.export().await?,
-            Command::Brackets => {
-                let procedure = self.shared.procedure.lock().await;
-                for mount in BracketMount::ALL {
-                    let text = bracket_line(mount, procedure.brackets.get(mount));
-                    self.write_text(text).await?;
-                }
-            }
             Command::Results => self.results().await?,
-            Command::BracketStatus => {
-                let procedure = self.shared.procedure.lock().await;
-                let text = progress_line(procedure.bracket_cal.as_ref());
-                self.write_text(text).await?;
-            }
-            Command::Live => return Ok(Next::Live),
+            Command::Live => return Ok(None),
             Command::Check => match self.request(LinkRequest::Check).await {
-                LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::CheckStarted).await?,
-                LinkReply::StoreFailed | LinkReply::Kept(_) => {
-                    self.reply(Reply::ClearWriteFailed).await?
-                }
-                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
-                LinkReply::SessionInProgress => {}
+                LinkReply::Done | LinkReply::PlanLocked => Said::Reply(Reply::CheckStarted),
+                LinkReply::StoreFailed | LinkReply::Kept(_) => Said::Reply(Reply::ClearWriteFailed),
+                LinkReply::NotReady => Said::Text(NOT_READY),
+                LinkReply::SessionInProgress => Said::Nothing,
             },
             Command::Clear => match self.request(LinkRequest::Clear).await {
-                LinkReply::Done | LinkReply::PlanLocked => self.reply(Reply::Cleared).await?,
-                LinkReply::StoreFailed | LinkReply::Kept(_) => {
-                    self.reply(Reply::ClearWriteFailed).await?
-                }
-                LinkReply::NotReady => self.write_line(NOT_READY.as_bytes()).await?,
-                LinkReply::SessionInProgress => {}
+                LinkReply::Done | LinkReply::PlanLocked => Said::Reply(Reply::Cleared),
+                LinkReply::StoreFailed | LinkReply::Kept(_) => Said::Reply(Reply::ClearWriteFailed),
+                LinkReply::NotReady => Said::Text(NOT_READY),
+                LinkReply::SessionInProgress => Said::Nothing,
             },
-        }
-        Ok(Next::Line)
+        };
+        Ok(Some(said))
+    }
+
+    /// Writes a one-line answer: one await for all of them (each await is a state
+    /// of this task's state machine, and each cost flash).
+    async fn send(&mut self, said: Said) -> Result<(), Disconnected> {
+        let line;
+        let bytes = match said {
+            Said::Nothing => return Ok(()),
+            Said::Text(text) => text.as_bytes(),
+            Said::Reply(reply) => {
+                line = reply_line(reply);
+                line.as_bytes()
+            }
+            Said::Line(Ok(text)) => {
+                line = text;
+                line.as_bytes()
+            }
+            Said::Line(Err(_)) => {
+                line = reply_line(Reply::LineTooLong);
+                line.as_bytes()
+            }
+        };
+        self.write_line(bytes).await
     }
 
     /// Sends a change to the procedure task and waits until it is stored.
@@ -424,51 +452,41 @@ impl<W: Write> Server<'_, W> {
         self.shared.link_replies.receive().await
     }
 
-    /// Core's status lines, then the pendant's own.
-    async fn status(&mut self) -> Result<(), Disconnected> {
-        {
-            let procedure = self.shared.procedure.lock().await;
-            for i in 0.. {
-                match status(&procedure.session, i) {
-                    None => break,
-                    Some(Ok(text)) => self.write_line(text.as_bytes()).await?,
-                    Some(Err(_)) => self.reply(Reply::LineTooLong).await?,
-                }
-            }
-        }
-        let shared = self.shared;
-        self.write_text(pendant_status(
-            shared.dropped_frames.load(Ordering::Relaxed),
-            shared.display_faults.load(Ordering::Relaxed),
-        ))
-        .await
-    }
-
     /// `results`: the kept results, oldest first, each read from the store by the
-    /// procedure task when its turn comes (one in RAM at a time).
-    async fn results(&mut self) -> Result<(), Disconnected> {
+    /// procedure task when its turn comes (one in RAM at a time). Its last line (the
+    /// end, or `not ready`) is left to [`Self::send`].
+    async fn results(&mut self) -> Result<Said, Disconnected> {
         let next = self.shared.procedure.lock().await.next_result_id;
-        let first = next
+        let mut id = next
             .saturating_sub(KEPT_RESULTS as u32)
             .max(FIRST_RESULT_ID);
         // The head goes out with the first answer: a pendant not ready (its storage
         // reset screen up) says only that, as to every request.
         let mut head = false;
-        for id in first..next {
-            let reply = self.request(LinkRequest::ReadKept { id }).await;
-            if reply == LinkReply::NotReady && !head {
-                return self.write_line(NOT_READY.as_bytes()).await;
-            }
+        loop {
+            let reply = if id < next {
+                Some(self.request(LinkRequest::ReadKept { id }).await)
+            } else {
+                None
+            };
             if !head {
+                if reply == Some(LinkReply::NotReady) {
+                    return Ok(Said::Text(NOT_READY));
+                }
                 self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
                 head = true;
             }
+            let Some(reply) = reply else {
+                return Ok(Said::Text(KEPT_RESULTS_END));
+            };
+            let key = kept_key(id);
+            id += 1;
             let value = match reply {
                 LinkReply::Kept(Some(value)) => value,
                 // An empty slot (the result's write was cut) or an unreadable one.
                 _ => continue,
             };
-            let Ok(kept) = KeptResult::decode(kept_key(id), &value) else {
+            let Ok(kept) = KeptResult::decode(key, &value) else {
                 continue;
             };
             for part in 0..KEPT_RESULT_LINES {
@@ -477,22 +495,6 @@ impl<W: Write> Server<'_, W> {
                 self.write_text(text).await?;
             }
         }
-        if !head {
-            self.write_line(KEPT_RESULTS_HEAD.as_bytes()).await?;
-        }
-        self.write_line(KEPT_RESULTS_END.as_bytes()).await
-    }
-
-    /// Streams `export`, the session held for the whole of it.
-    async fn export(&mut self) -> Result<(), Disconnected> {
-        let procedure = self.shared.procedure.lock().await;
-        for item in procedure.session.export(&procedure.config) {
-            match item {
-                Ok(text) => self.write_line(text.as_bytes()).await?,
-                Err(_) => self.reply(Reply::LineTooLong).await?,
-            }
-        }
-        Ok(())
     }
 
     /// Streams `x_deg,y_deg` until a key (in `typed`, or read); returns the bytes after
@@ -549,22 +551,24 @@ impl<W: Write> Server<'_, W> {
                                 None => procedure.session.view().live,
                             }
                         };
-                        match reading {
+                        let said = match reading {
                             Some(tilt) => {
                                 let (x_deg, y_deg) = tilt.to_deg();
                                 // Integer formatting: core's float formatting costs
                                 // ~8 KiB of flash.
                                 let x = Fixed::signed(x_deg.into(), 4);
                                 let y = Fixed::signed(y_deg.into(), 4);
-                                self.write_fmt(format_args!("{x},{y}")).await?;
+                                let mut line = Line::new();
                                 *had_reading = true;
+                                Said::Line(write!(line, "{x},{y}").map(|()| line))
                             }
                             None if *had_reading => {
-                                self.write_line(b"# no reading").await?;
                                 *had_reading = false;
+                                Said::Text("# no reading")
                             }
-                            None => {}
-                        }
+                            None => Said::Nothing,
+                        };
+                        self.send(said).await?;
                     }
                 }
             }

@@ -338,7 +338,7 @@ pub fn set_profile(
         .chain(profile.to_records(generation))
     {
         // 1 + 2 + PROFILE_RECORDS (at most 23) records in a buffer of a whole plan's.
-        let _ = output.persist.push(r);
+        output.push(r);
     }
     config.apply(profile);
     *profile_generation = generation;
@@ -515,7 +515,7 @@ fn on_bracket_input(
             *bracket_cal = None;
             let mut output = Output::default();
             // One record into a buffer of a whole plan's.
-            let _ = output.persist.push(record);
+            output.push(record);
             Some(output)
         }
     }

@@ -474,12 +474,15 @@ fn notice_line(screen: &CaptureScreen, hint: &str) -> Text {
 }
 
 /// A number with a fixed count of decimals, formatted by integer arithmetic: core's
-/// float formatting would add ~8 KiB of flash (see `zerocal_core::decimal`).
+/// float formatting would add ~8 KiB of flash (see `zerocal_core::decimal`). Out of
+/// line, as [`sgn`]: the screens call them some thirty times (flash).
+#[inline(never)]
 fn fx(value: impl Into<f64>, decimals: u8) -> Fixed {
     Fixed::new(value.into(), decimals)
 }
 
 /// As [`fx`], always with a sign.
+#[inline(never)]
 fn sgn(value: impl Into<f64>, decimals: u8) -> Fixed {
     Fixed::signed(value.into(), decimals)
 }

@@ -255,7 +255,11 @@ pub struct Output<T> {
 }
 
 impl<T> Output<T> {
-    fn push(&mut self, r: Record<T>) {
+    /// Adds a record to write; one beyond the capacity (a whole plan plus its length,
+    /// twice, and progress) is left out.
+    // Out of line: inlined, each of its dozen and more callers had a copy (flash).
+    #[inline(never)]
+    pub fn push(&mut self, r: Record<T>) {
         // Capacity covers a whole plan plus its length (twice) and progress; steps
         // write at most that.
         let _ = self.persist.push(r);

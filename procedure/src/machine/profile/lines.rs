@@ -296,13 +296,24 @@ impl<T: Real> Default for ProfileUpload<T> {
 /// `n` comma-separated finite numbers, each within ±`limit`.
 fn numbers<const N: usize>(text: Option<&str>, limit: f64) -> Option<[f64; N]> {
     let mut out = [0.0; N];
+    numbers_into(text?, limit, &mut out).then_some(out)
+}
+
+/// [`numbers`] for any count, so that its parsing is in the firmware once rather
+/// than once for each count (flash).
+fn numbers_into(text: &str, limit: f64, out: &mut [f64]) -> bool {
     let mut count = 0;
-    for field in text?.split(',') {
-        let v = decimal::parse(field).filter(|v| v.is_finite() && v.abs() <= limit)?;
-        *out.get_mut(count)? = v;
+    for field in text.split(',') {
+        let Some(v) = decimal::parse(field).filter(|v| v.is_finite() && v.abs() <= limit) else {
+            return false;
+        };
+        let Some(slot) = out.get_mut(count) else {
+            return false;
+        };
+        *slot = v;
         count += 1;
     }
-    (count == N).then_some(out)
+    count == out.len()
 }
 
 fn quat<T: Real>(text: Option<&str>) -> Option<Rotation3<T>> {

@@ -11,6 +11,8 @@ pub(super) struct Writer<'a> {
 }
 
 impl Writer<'_> {
+    // Out of line: inlined, each of its forty callers had a copy (flash).
+    #[inline(never)]
     pub(super) fn put(&mut self, bytes: &[u8]) -> Result<(), RecordError> {
         let end = self.len + bytes.len();
         let dst = self
@@ -92,19 +94,21 @@ impl Reader<'_> {
         }
     }
     pub(super) fn tilt<T: Real>(&mut self) -> Result<Tilt<T>, RecordError> {
-        Ok(Tilt::new(self.f()?, self.f()?))
+        let [x, y] = self.array()?;
+        Ok(Tilt::new(x, y))
     }
     pub(super) fn four<T: Real>(&mut self) -> Result<[T; WRIST_JOINTS], RecordError> {
-        Ok([self.f()?, self.f()?, self.f()?, self.f()?])
+        self.array()
     }
     pub(super) fn joints<T: Real>(&mut self) -> Result<[T; JOINTS], RecordError> {
-        Ok([
-            self.f()?,
-            self.f()?,
-            self.f()?,
-            self.f()?,
-            self.f()?,
-            self.f()?,
-        ])
+        self.array()
+    }
+    /// `N` numbers in order: one read in a loop, not `N` copies of it (flash).
+    pub(super) fn array<T: Real, const N: usize>(&mut self) -> Result<[T; N], RecordError> {
+        let mut out = [T::zero(); N];
+        for v in &mut out {
+            *v = self.f()?;
+        }
+        Ok(out)
     }
 }

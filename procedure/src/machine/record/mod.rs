@@ -673,7 +673,7 @@ impl<T: Real> Record<T> {
                     name,
                     name_len,
                     convention,
-                    stage1_rad: [r.f()?, r.f()?],
+                    stage1_rad: r.array()?,
                     j3_minus_j2,
                     masses,
                 }
@@ -687,7 +687,7 @@ impl<T: Real> Record<T> {
                 // What a profile line takes: a mass from 0 to MAX_MASS_KG, a centre
                 // of mass within MAX_POSITION_M.
                 let kg: T = r.f()?;
-                let com_m: [T; 3] = [r.f()?, r.f()?, r.f()?];
+                let com_m: [T; 3] = r.array()?;
                 if !(T::zero()..=T::lit(MAX_MASS_KG)).contains(&kg)
                     || com_m.iter().any(|c| c.abs() > T::lit(MAX_POSITION_M))
                 {
@@ -712,15 +712,11 @@ impl<T: Real> Record<T> {
                     let stored = StoredBracket {
                         id,
                         id_len,
-                        rotation_rad: [r.f()?, r.f()?],
+                        rotation_rad: r.array()?,
                         uncertainty_rad: r.f()?,
                         date: u32::from_le_bytes(r.take::<4>()?),
                         temperature_c: r.f()?,
-                        yaw_rad: if r.flag()? {
-                            Some([r.f()?, r.f()?])
-                        } else {
-                            None
-                        },
+                        yaw_rad: if r.flag()? { Some(r.array()?) } else { None },
                     };
                     // Bytes past the ID zero, and a calibration core would accept.
                     let padded = id
@@ -752,8 +748,8 @@ impl<T: Real> Record<T> {
                     generation,
                     part,
                     axis,
-                    rotation: [r.f()?, r.f()?, r.f()?, r.f()?],
-                    translation_m: [r.f()?, r.f()?, r.f()?],
+                    rotation: r.array()?,
+                    translation_m: r.array()?,
                 }
             }
             k if k == key::PROFILE_MOUNT || k == key::PROFILE_MOUNT + 1 => {
@@ -765,7 +761,7 @@ impl<T: Real> Record<T> {
                 Record::ProfileMount {
                     generation,
                     flange: flange == 1,
-                    rotation: [r.f()?, r.f()?, r.f()?, r.f()?],
+                    rotation: r.array()?,
                 }
             }
             key::PROFILE_DISPLAY => {
