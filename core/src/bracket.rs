@@ -439,7 +439,11 @@ fn plate_tilt<T: Real>(r: &BenchTurns<T>) -> T {
 /// x part: the readings' noise (`capture_noise_rad`, one capture's 1σ; each reading
 /// averages [`CAPTURES_PER_READING`] captures, and the difference of two half-sums has
 /// one reading's variance) and each reversal's turn, within
-/// ±[`REFERENCE_TURN_TOLERANCE_DEG`] of 180°, times its plate tilt (uniform).
+/// ±[`REFERENCE_TURN_TOLERANCE_DEG`] of 180°, times its plate tilt (uniform), and the
+/// bracket's seat on its reference when it was read, within ±[`SEAT_REPEATABILITY_DEG`]
+/// (uniform): the calibration holds that seat as part of the bracket's turn, and the
+/// session's own seat on the robot comes on top
+/// ([`Brackets::standard_uncertainty_rad`]).
 ///
 /// In the `axis` convention each half-sum is the acceleration offset `o = (−b_y, b_x)`
 /// the reversal saw; the bracket's turn R adds `Rᵀ·ẑ`'s horizontal part to it, so with
@@ -493,7 +497,10 @@ pub fn calibrate<T: Real>(
     };
     let (u0, u1) = (half_turn_u(pendant), half_turn_u(in_bracket));
     let noise2 = capture_noise_rad * capture_noise_rad / T::lit(CAPTURES_PER_READING as f64);
-    let u = (noise2 + u0 * u0 + u1 * u1).sqrt();
+    // The bracket sat on its reference within its seat repeatability when it was read:
+    // the calibration keeps that seat, which no clip-on on the robot repeats.
+    let seat = deg_to_rad(T::lit(SEAT_REPEATABILITY_DEG)) / T::lit(3.0).sqrt();
+    let u = (noise2 + u0 * u0 + u1 * u1 + seat * seat).sqrt();
     let limit = deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG));
     if !(rotation.is_finite() && rotation.x_rad.abs() <= limit && rotation.y_rad.abs() <= limit) {
         return Err(BracketError::Implausible);
@@ -606,9 +613,14 @@ mod tests {
                     && (rot.y_rad - b).abs() < bound + 1.05 * (c * a).abs(),
                 "yaw {yaw_deg}: {rot:?}"
             );
-            // The plate's 0.07° of tilt and a turn within ±1°: 0.07°·1°/2/√3 in rad each,
-            // with the 1e-5 rad of a capture's noise halved by four captures a reading.
-            assert!(u > 5e-6 && u < 1.5e-5, "{u}");
+            // The bracket's seat on its reference, ±SEAT_REPEATABILITY_DEG uniform
+            // (1.51e-5 rad), and the rest: the plate's 0.07° of tilt and a turn within
+            // ±1°, 0.07°·1°/2/√3 in rad each, with the 1e-5 rad of a capture's noise
+            // halved by four captures a reading.
+            let seat = deg_to_rad(SEAT_REPEATABILITY_DEG) / 3f64.sqrt();
+            assert!((seat - 1.512e-5).abs() < 1e-8, "{seat}");
+            let rest = (u * u - seat * seat).sqrt();
+            assert!(rest > 5e-6 && rest < 1.5e-5, "{u} {rest}");
         }
     }
 

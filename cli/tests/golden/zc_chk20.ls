@@ -28,8 +28,8 @@ CONTROL_CODE	= 00000000 00000000;
    7:  ! (profile ;
    8:  ! fanuc-m20ia); 5 of ;
    9:  ! the session plan's ;
-  10:  ! 43 poses (5, 6, 7, ;
-  11:  ! 35, 36), at the ;
+  10:  ! 43 poses (28, 30, ;
+  11:  ! 31, 33, 34), at the ;
   12:  ! session's commanded ;
   13:  ! angles. Written by ;
   14:  ! zerocal 0.1.0. ;
@@ -93,7 +93,7 @@ CONTROL_CODE	= 00000000 00000000;
   72:  ! Predicted robot time ;
   73:  ! 3.7 min, the closing ;
   74:  ! bench readings ;
-  75:  ! included: motion 28 ;
+  75:  ! included: motion 26 ;
   76:  ! s, dwell 43 s (14 ;
   77:  ! captures), 2 ;
   78:  ! mountings 120 s, ;
@@ -122,7 +122,7 @@ CONTROL_CODE	= 00000000 00000000;
  101:  MESSAGE[continue.] ;
  102:  PAUSE ;
  103:  ! zerocal check: pose ;
- 104:  ! 5 of 43, captured ;
+ 104:  ! 28 of 43, captured ;
  105:  ! from below, then ;
  106:  ! from above ;
  107:J P[2] 10% FINE ;
@@ -132,7 +132,7 @@ CONTROL_CODE	= 00000000 00000000;
  111:J P[5] 10% FINE ;
  112:  WAIT   3.10(sec) ;
  113:  ! zerocal check: pose ;
- 114:  ! 6 of 43, captured ;
+ 114:  ! 30 of 43, captured ;
  115:  ! from below, then ;
  116:  ! from above ;
  117:J P[6] 10% FINE ;
@@ -142,7 +142,7 @@ CONTROL_CODE	= 00000000 00000000;
  121:J P[9] 10% FINE ;
  122:  WAIT   3.10(sec) ;
  123:  ! zerocal check: pose ;
- 124:  ! 7 of 43, captured ;
+ 124:  ! 31 of 43, captured ;
  125:  ! from below, then ;
  126:  ! from above ;
  127:J P[10] 10% FINE ;
@@ -152,7 +152,7 @@ CONTROL_CODE	= 00000000 00000000;
  131:J P[13] 10% FINE ;
  132:  WAIT   3.10(sec) ;
  133:  ! zerocal check: pose ;
- 134:  ! 35 of 43, captured ;
+ 134:  ! 33 of 43, captured ;
  135:  ! from below, then ;
  136:  ! from above ;
  137:J P[14] 10% FINE ;
@@ -162,7 +162,7 @@ CONTROL_CODE	= 00000000 00000000;
  141:J P[17] 10% FINE ;
  142:  WAIT   3.10(sec) ;
  143:  ! zerocal check: pose ;
- 144:  ! 36 of 43, captured ;
+ 144:  ! 34 of 43, captured ;
  145:  ! from below, then ;
  146:  ! from above ;
  147:J P[18] 10% FINE ;
@@ -202,133 +202,133 @@ CONTROL_CODE	= 00000000 00000000;
 P[1]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   115.966 deg,
-	J4=    11.497 deg,	J5=   -72.660 deg,	J6=     8.821 deg
+	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   -36.124 deg,
+	J4=   -47.051 deg,	J5=   -88.195 deg,	J6=   144.544 deg
 };
 P[2]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=   -62.544 deg,	J3=   114.966 deg,
-	J4=    10.497 deg,	J5=  -118.660 deg,	J6=     7.821 deg
+	J1=   -91.000 deg,	J2=     6.029 deg,	J3=   -37.124 deg,
+	J4=   -48.051 deg,	J5=  -134.195 deg,	J6=   143.544 deg
 };
 P[3]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -61.544 deg,	J3=   115.966 deg,
-	J4=    11.497 deg,	J5=  -117.660 deg,	J6=     8.821 deg
+	J1=   -90.000 deg,	J2=     7.029 deg,	J3=   -36.124 deg,
+	J4=   -47.051 deg,	J5=  -133.195 deg,	J6=   144.544 deg
 };
 P[4]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=   -57.544 deg,	J3=   119.966 deg,
-	J4=    15.497 deg,	J5=  -113.660 deg,	J6=    12.821 deg
+	J1=   -86.000 deg,	J2=    11.029 deg,	J3=   -32.124 deg,
+	J4=   -43.051 deg,	J5=  -129.195 deg,	J6=   148.544 deg
 };
 P[5]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -61.544 deg,	J3=   115.966 deg,
-	J4=    11.497 deg,	J5=  -117.660 deg,	J6=     8.821 deg
+	J1=   -90.000 deg,	J2=     7.029 deg,	J3=   -36.124 deg,
+	J4=   -47.051 deg,	J5=  -133.195 deg,	J6=   144.544 deg
 };
 P[6]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=   -65.262 deg,	J3=   138.286 deg,
-	J4=    27.566 deg,	J5=  -136.754 deg,	J6=    18.697 deg
+	J1=   -91.000 deg,	J2=    34.809 deg,	J3=   -14.886 deg,
+	J4=  -142.416 deg,	J5=   -17.126 deg,	J6=   135.967 deg
 };
 P[7]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -64.262 deg,	J3=   139.286 deg,
-	J4=    28.566 deg,	J5=  -135.754 deg,	J6=    19.697 deg
+	J1=   -90.000 deg,	J2=    35.809 deg,	J3=   -13.886 deg,
+	J4=  -141.416 deg,	J5=   -16.126 deg,	J6=   136.967 deg
 };
 P[8]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=   -60.262 deg,	J3=   143.286 deg,
-	J4=    32.566 deg,	J5=  -131.754 deg,	J6=    23.697 deg
+	J1=   -86.000 deg,	J2=    39.809 deg,	J3=    -9.886 deg,
+	J4=  -137.416 deg,	J5=   -12.126 deg,	J6=   140.967 deg
 };
 P[9]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -64.262 deg,	J3=   139.286 deg,
-	J4=    28.566 deg,	J5=  -135.754 deg,	J6=    19.697 deg
+	J1=   -90.000 deg,	J2=    35.809 deg,	J3=   -13.886 deg,
+	J4=  -141.416 deg,	J5=   -16.126 deg,	J6=   136.967 deg
 };
 P[10]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=   -32.011 deg,	J3=   133.942 deg,
-	J4=    30.778 deg,	J5=  -132.782 deg,	J6=    19.788 deg
+	J1=   -91.000 deg,	J2=    61.880 deg,	J3=    17.074 deg,
+	J4=  -172.242 deg,	J5=    21.746 deg,	J6=   175.793 deg
 };
 P[11]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -31.011 deg,	J3=   134.942 deg,
-	J4=    31.778 deg,	J5=  -131.782 deg,	J6=    20.788 deg
+	J1=   -90.000 deg,	J2=    62.880 deg,	J3=    18.074 deg,
+	J4=  -171.242 deg,	J5=    22.746 deg,	J6=   176.793 deg
 };
 P[12]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=   -27.011 deg,	J3=   138.942 deg,
-	J4=    35.778 deg,	J5=  -127.782 deg,	J6=    24.788 deg
+	J1=   -86.000 deg,	J2=    66.880 deg,	J3=    22.074 deg,
+	J4=  -167.242 deg,	J5=    26.746 deg,	J6=   180.793 deg
 };
 P[13]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -31.011 deg,	J3=   134.942 deg,
-	J4=    31.778 deg,	J5=  -131.782 deg,	J6=    20.788 deg
+	J1=   -90.000 deg,	J2=    62.880 deg,	J3=    18.074 deg,
+	J4=  -171.242 deg,	J5=    22.746 deg,	J6=   176.793 deg
 };
 P[14]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=   -75.885 deg,	J3=     1.767 deg,
-	J4=  -157.412 deg,	J5=     2.064 deg,	J6=   153.891 deg
+	J1=   -91.000 deg,	J2=    73.671 deg,	J3=    14.236 deg,
+	J4=   -42.633 deg,	J5=   -23.520 deg,	J6=    38.517 deg
 };
 P[15]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -74.885 deg,	J3=     2.767 deg,
-	J4=  -156.412 deg,	J5=     3.064 deg,	J6=   154.891 deg
+	J1=   -90.000 deg,	J2=    74.671 deg,	J3=    15.236 deg,
+	J4=   -41.633 deg,	J5=   -22.520 deg,	J6=    39.517 deg
 };
 P[16]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=   -70.885 deg,	J3=     6.767 deg,
-	J4=  -152.412 deg,	J5=     7.064 deg,	J6=   158.891 deg
+	J1=   -86.000 deg,	J2=    78.671 deg,	J3=    19.236 deg,
+	J4=   -37.633 deg,	J5=   -18.520 deg,	J6=    43.517 deg
 };
 P[17]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -74.885 deg,	J3=     2.767 deg,
-	J4=  -156.412 deg,	J5=     3.064 deg,	J6=   154.891 deg
+	J1=   -90.000 deg,	J2=    74.671 deg,	J3=    15.236 deg,
+	J4=   -41.633 deg,	J5=   -22.520 deg,	J6=    39.517 deg
 };
 P[18]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=   -65.443 deg,	J3=   -16.796 deg,
-	J4=  -179.268 deg,	J5=   -17.985 deg,	J6=   176.201 deg
+	J1=   -91.000 deg,	J2=    60.295 deg,	J3=    10.639 deg,
+	J4=   -39.765 deg,	J5=   -20.561 deg,	J6=    37.382 deg
 };
 P[19]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -64.443 deg,	J3=   -15.796 deg,
-	J4=  -178.268 deg,	J5=   -16.985 deg,	J6=   177.201 deg
+	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
 };
 P[20]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=   -60.443 deg,	J3=   -11.796 deg,
-	J4=  -174.268 deg,	J5=   -12.985 deg,	J6=   181.201 deg
+	J1=   -86.000 deg,	J2=    65.295 deg,	J3=    15.639 deg,
+	J4=   -34.765 deg,	J5=   -15.561 deg,	J6=    42.382 deg
 };
 P[21]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -64.443 deg,	J3=   -15.796 deg,
-	J4=  -178.268 deg,	J5=   -16.985 deg,	J6=   177.201 deg
+	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
 };
 P[22]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   115.966 deg,
-	J4=    11.497 deg,	J5=   -72.660 deg,	J6=     8.821 deg
+	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   -36.124 deg,
+	J4=   -47.051 deg,	J5=   -88.195 deg,	J6=   144.544 deg
 };
 /END

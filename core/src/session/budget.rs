@@ -28,7 +28,7 @@ use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::real::Real;
 use crate::stage2::params::{HARMONIC_JOINTS, HARMONIC_ORDERS};
 use crate::stage2::transmission::{
-    transmission_variance, BUDGET_ORDERS, HIGHER_HARMONIC_SHARE, TRANSMISSION_PP_MAX_DEG,
+    transmission_variance, BUDGET_ORDERS, HIGHER_HARMONIC_RMS_SHARE, TRANSMISSION_PP_MAX_DEG,
 };
 use crate::stage2::{covariance_bound, Extras, PoseReading};
 
@@ -311,10 +311,11 @@ pub fn budget<T: Real>(
     // The transmission error the fit does not model: every joint's third and fourth
     // harmonics, and the first two of a joint whose harmonics it does not estimate
     // (joint 2 where the poses hold it), at their stated sizes: amplitudes anywhere up
-    // to those (rectangular, RMS a/√3, GUM 4.3.7).
+    // to those (rectangular, RMS a/√3, GUM 4.3.7); the third and fourth anywhere up to
+    // their share of the first two's (RMS of the share s/√3, [`HIGHER_HARMONIC_RMS_SHARE`]).
     let half_pp =
         crate::real::deg_to_rad(T::lit(TRANSMISSION_PP_MAX_DEG * 0.5)) / T::lit(3.0).sqrt();
-    let higher = half_pp * T::lit(HIGHER_HARMONIC_SHARE);
+    let higher = half_pp * T::lit(HIGHER_HARMONIC_RMS_SHARE);
     let amplitudes: [[T; BUDGET_ORDERS]; HARMONIC_JOINTS] = core::array::from_fn(|j| {
         core::array::from_fn(|o| {
             let modelled = [false, true].iter().all(|&s| {
