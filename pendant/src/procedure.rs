@@ -251,6 +251,9 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
 /// awaited: reading flash is a memory copy that never waits, and this keeps the
 /// record table (~4.5 KiB) on the stack at power-up instead of in the task's state for
 /// good. Only a fresh store's first write (its marker) waits for the flash, briefly.
+// Not inlined, nor are read_kept and encode_kept: inlined into the task's poll, the
+// driven-to-completion futures cost more flash than a call (-272 B rustup).
+#[inline(never)]
 fn restore<F: NorFlash>(
     store: &mut Store<F>,
     procedure: &mut Procedure,
@@ -277,6 +280,7 @@ fn restore<F: NorFlash>(
 /// Kept result `id` as the link's reply. Driven to completion on the spot, as
 /// [`restore`]: reading flash never waits, and the read's buffers stay on the stack
 /// rather than in the task's state for good.
+#[inline(never)]
 fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
     let mut value = [0_u8; KEPT_RESULT_LEN];
     let found = store
@@ -286,6 +290,7 @@ fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
 
 /// The session's result as a kept result under the next ID, encoded; the next ID moves
 /// on whether or not the write will succeed (a failed write may have stored the ID).
+#[inline(never)]
 fn encode_kept(procedure: &mut Procedure) -> Option<(u32, [u8; KEPT_RESULT_LEN])> {
     let id = procedure.next_result_id;
     let kept = procedure.session.kept_result(&procedure.config, id)?;
