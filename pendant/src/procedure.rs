@@ -125,7 +125,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             }
             let from_link = matches!(input, Either3::Third(_));
             let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
-            let procedure: &mut Procedure = &mut **held.insert(shared.procedure.lock().await);
+            let procedure = &mut **held.insert(shared.procedure.lock().await);
             // `erase all` empties the store before anything is written anew.
             let mut erase_failed = false;
             if matches!(input, Either3::Third(LinkRequest::Erase)) {
