@@ -318,6 +318,7 @@ const BOOT_SCREEN_MS: u64 = 1500;
 /// Whether nothing of a profile was ever stored (generation 0): only then does the
 /// firmware's default plan, planned for the built-in profile, apply. After a torn
 /// profile write the built-in profile is in use but the plan is left to the operator.
+#[inline(never)]
 fn procedure_is_builtin(procedure: &Procedure) -> bool {
     procedure.profile_generation == 0
 }
@@ -329,6 +330,9 @@ fn procedure_is_builtin(procedure: &Procedure) -> bool {
 /// profile's parts and its head last. A cut before the plan's end leaves the old
 /// profile with its plan; one after it, the old or no whole profile (the built-in one
 /// then, named on the boot screen) without a plan; never a plan on the wrong robot.
+// Out of line, as on_press, watch_stillness, on_bracket_input, reset_to_builtin and
+// procedure_is_builtin: inlined into the task's poll they cost more flash than a call.
+#[inline(never)]
 pub fn set_profile(
     procedure: &mut Procedure,
     profile: &PendantProfile<f32>,
@@ -364,6 +368,7 @@ pub fn set_profile(
 
 /// `erase all` (the store already erased): the built-in profile, no bias or result,
 /// the firmware's default plan, which the records returned store again.
+#[inline(never)]
 pub fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
     // The unit stays the unit; the kept results' next ID stays too (the store's erase
     // carried it over).
@@ -402,6 +407,7 @@ async fn wait_for_ok(shared: &Shared) {
 }
 
 /// What a press means on the screen shown: core's event, or a change of presentation.
+#[inline(never)]
 fn on_press(p: &mut Presentation, phase: Phase, press: ButtonEvent) -> Option<Event<f32>> {
     let ButtonEvent { button, press } = press;
     match (button, press, phase) {
@@ -422,6 +428,7 @@ fn on_press(p: &mut Presentation, phase: Phase, press: ButtonEvent) -> Option<Ev
 
 /// Tracks how long an armed pendant has not been still; returns whether the reading
 /// has just started moving (the robot left its pose).
+#[inline(never)]
 fn watch_stillness(p: &mut Presentation, session: &ProcedureState<f32>) -> bool {
     let view = session.view();
     let now_ms = Instant::now().as_millis();
@@ -466,6 +473,7 @@ fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
 
 /// A sample, a sensor fault or a press during a bracket calibration: its step, and
 /// the record to store when the operator keeps the result.
+#[inline(never)]
 fn on_bracket_input(
     procedure: &mut Procedure,
     p: &mut Presentation,
