@@ -322,103 +322,104 @@ impl<W: Write> Server<'_, W> {
         if line.trim().is_empty() {
             return Ok(Some(Said::Nothing));
         }
-        match parse_bracket_calibrate(line) {
+        // The commands that change the procedure: one request, one await for all of
+        // them (each await costs flash); `command` is `None` for a bracket's start.
+        let (request, command, confirmation) = match parse_bracket_calibrate(line) {
             Some(Ok((mount, id))) => {
                 let confirmation = bracket_started(mount, &id);
-                let said = match self
-                    .request(LinkRequest::CalibrateBracket { mount, id })
-                    .await
-                {
-                    LinkReply::NotReady => Said::Text(NOT_READY),
-                    // Nothing is stored at the start: the procedure only shows it.
-                    _ => Said::Line(confirmation),
-                };
-                return Ok(Some(said));
+                (
+                    LinkRequest::CalibrateBracket { mount, id },
+                    None,
+                    Some(confirmation),
+                )
             }
             Some(Err(error)) => return Ok(Some(Said::Line(error_line(&error)))),
-            None => {}
-        }
-        let command = match parse_command(line) {
-            Ok(command) => command,
-            Err(error) => return Ok(Some(Said::Line(error_line(&error)))),
+            None => {
+                let command = match parse_command(line) {
+                    Ok(command) => command,
+                    Err(error) => return Ok(Some(Said::Line(error_line(&error)))),
+                };
+                let request = match command {
+                    Command::Help => {
+                        for help in HELP {
+                            self.write_line(help.as_bytes()).await?;
+                        }
+                        return Ok(Some(Said::Nothing));
+                    }
+                    // The commands that read the session or the configuration: one lock, and
+                    // one write for all their lines (each await costs flash).
+                    command @ (Command::Status
+                    | Command::Plan
+                    | Command::PlanSet
+                    | Command::Profile
+                    | Command::Brackets
+                    | Command::BracketStatus
+                    | Command::Export) => {
+                        let shared = self.shared;
+                        let procedure = shared.procedure.lock().await;
+                        let profile =
+                            matches!(command, Command::Profile).then(|| procedure.config.profile());
+                        // `export` holds the session for the whole of it.
+                        let mut export = matches!(command, Command::Export)
+                            .then(|| procedure.session.export(&procedure.config));
+                        for i in 0.. {
+                            let text = match command {
+                                // Core's status lines, then the pendant's own (below).
+                                Command::Status => status(&procedure.session, i),
+                                Command::Plan => plan_line(procedure.session.plan(), i),
+                                Command::Profile => profile.as_ref().and_then(|p| p.line(i)),
+                                Command::Export => export.as_mut().and_then(Iterator::next),
+                                Command::Brackets => BracketMount::ALL.get(i).map(|&mount| {
+                                    bracket_line(mount, procedure.brackets.get(mount))
+                                }),
+                                _ => None,
+                            };
+                            let Some(text) = text else { break };
+                            self.write_text(text).await?;
+                        }
+                        return Ok(Some(match command {
+                            Command::PlanSet => {
+                                let q = procedure.config.stage1_joints_rad;
+                                self.upload = Some(Upload::Plan(PlanUpload::new([q[0], q[1]])));
+                                Said::Text(PLAN_PROMPT)
+                            }
+                            Command::BracketStatus => {
+                                Said::Line(progress_line(procedure.bracket_cal.as_ref()))
+                            }
+                            Command::Status => Said::Line(pendant_status(
+                                shared.dropped_frames.load(Ordering::Relaxed),
+                                shared.display_faults.load(Ordering::Relaxed),
+                            )),
+                            _ => Said::Nothing,
+                        }));
+                    }
+                    Command::ProfileSet => {
+                        self.upload = Some(Upload::Profile(ProfileUpload::default()));
+                        return Ok(Some(Said::Text(PROFILE_PROMPT)));
+                    }
+                    Command::Results => return Ok(Some(self.results().await?)),
+                    Command::Live => return Ok(None),
+                    Command::Erase => LinkRequest::Erase,
+                    Command::Check => LinkRequest::Check,
+                    Command::Clear => LinkRequest::Clear,
+                };
+                (request, Some(command), None)
+            }
         };
-        let said = match command {
-            Command::Help => {
-                for help in HELP {
-                    self.write_line(help.as_bytes()).await?;
-                }
-                Said::Nothing
+        let said = match (command, self.request(request).await) {
+            (_, LinkReply::NotReady) => Said::Text(NOT_READY),
+            // Nothing is stored at a bracket's start: the procedure only shows it.
+            (None, _) => confirmation.map_or(Said::Nothing, Said::Line),
+            (Some(Command::Erase), LinkReply::Done) => Said::Text(ERASED),
+            (Some(Command::Erase), _) => Said::Reply(Reply::EraseFailed),
+            (Some(Command::Check), LinkReply::Done | LinkReply::PlanLocked) => {
+                Said::Reply(Reply::CheckStarted)
             }
-            // The commands that read the session or the configuration: one lock, and
-            // one write for all their lines (each await costs flash).
-            command @ (Command::Status
-            | Command::Plan
-            | Command::PlanSet
-            | Command::Profile
-            | Command::Brackets
-            | Command::BracketStatus
-            | Command::Export) => {
-                let shared = self.shared;
-                let procedure = shared.procedure.lock().await;
-                let profile =
-                    matches!(command, Command::Profile).then(|| procedure.config.profile());
-                // `export` holds the session for the whole of it.
-                let mut export = matches!(command, Command::Export)
-                    .then(|| procedure.session.export(&procedure.config));
-                for i in 0.. {
-                    let text = match command {
-                        // Core's status lines, then the pendant's own (below).
-                        Command::Status => status(&procedure.session, i),
-                        Command::Plan => plan_line(procedure.session.plan(), i),
-                        Command::Profile => profile.as_ref().and_then(|p| p.line(i)),
-                        Command::Export => export.as_mut().and_then(Iterator::next),
-                        Command::Brackets => BracketMount::ALL
-                            .get(i)
-                            .map(|&mount| bracket_line(mount, procedure.brackets.get(mount))),
-                        _ => None,
-                    };
-                    let Some(text) = text else { break };
-                    self.write_text(text).await?;
-                }
-                match command {
-                    Command::PlanSet => {
-                        let q = procedure.config.stage1_joints_rad;
-                        self.upload = Some(Upload::Plan(PlanUpload::new([q[0], q[1]])));
-                        Said::Text(PLAN_PROMPT)
-                    }
-                    Command::BracketStatus => {
-                        Said::Line(progress_line(procedure.bracket_cal.as_ref()))
-                    }
-                    Command::Status => Said::Line(pendant_status(
-                        shared.dropped_frames.load(Ordering::Relaxed),
-                        shared.display_faults.load(Ordering::Relaxed),
-                    )),
-                    _ => Said::Nothing,
-                }
+            (Some(_), LinkReply::Done | LinkReply::PlanLocked) => Said::Reply(Reply::Cleared),
+            (Some(_), LinkReply::StoreFailed | LinkReply::Kept(_)) => {
+                Said::Reply(Reply::ClearWriteFailed)
             }
-            Command::ProfileSet => {
-                self.upload = Some(Upload::Profile(ProfileUpload::default()));
-                Said::Text(PROFILE_PROMPT)
-            }
-            Command::Erase => match self.request(LinkRequest::Erase).await {
-                LinkReply::Done => Said::Text(ERASED),
-                LinkReply::NotReady => Said::Text(NOT_READY),
-                _ => Said::Reply(Reply::EraseFailed),
-            },
-            Command::Results => self.results().await?,
-            Command::Live => return Ok(None),
-            Command::Check => match self.request(LinkRequest::Check).await {
-                LinkReply::Done | LinkReply::PlanLocked => Said::Reply(Reply::CheckStarted),
-                LinkReply::StoreFailed | LinkReply::Kept(_) => Said::Reply(Reply::ClearWriteFailed),
-                LinkReply::NotReady => Said::Text(NOT_READY),
-                LinkReply::SessionInProgress => Said::Nothing,
-            },
-            Command::Clear => match self.request(LinkRequest::Clear).await {
-                LinkReply::Done | LinkReply::PlanLocked => Said::Reply(Reply::Cleared),
-                LinkReply::StoreFailed | LinkReply::Kept(_) => Said::Reply(Reply::ClearWriteFailed),
-                LinkReply::NotReady => Said::Text(NOT_READY),
-                LinkReply::SessionInProgress => Said::Nothing,
-            },
+            (Some(_), LinkReply::SessionInProgress) => Said::Nothing,
         };
         Ok(Some(said))
     }

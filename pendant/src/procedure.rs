@@ -114,136 +114,148 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             shared.link_requests.receive(),
         )
         .await;
-        if let Either3::Third(LinkRequest::ReadKept { id }) = input {
-            // A read: nothing changes, nothing is shown.
-            let reply = read_kept(store.as_mut(), id);
-            shared.link_replies.send(reply).await;
-            continue;
-        }
-        let from_link = matches!(input, Either3::Third(_));
-        let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
-        let mut procedure = shared.procedure.lock().await;
-        // `erase all` empties the store before anything is written anew.
-        let mut erase_failed = false;
-        if matches!(input, Either3::Third(LinkRequest::Erase)) {
-            erase_failed = match store.as_mut() {
-                Some(s) => s.erase().await.is_err(),
-                None => true,
-            };
-        }
-        let phase_before = procedure.session.phase();
-        // One set of records to write, whatever asked for it: a single buffer lives
-        // across the write (the task's state is static RAM on the board).
-        let output = match input {
-            Either3::Third(LinkRequest::SetProfile(profile)) => {
-                set_profile(&mut procedure, &profile)
+        // The link's reply is sent from one place (one await, not two, in the task's
+        // state): after the screen is published, with the lock, where taken, still
+        // held, as before; a sample (the only input that makes room) has no reply.
+        let mut held = None;
+        let reply = 'answer: {
+            if let Either3::Third(LinkRequest::ReadKept { id }) = input {
+                // A read: nothing changes, nothing is shown.
+                break 'answer Some(read_kept(store.as_mut(), id));
             }
-            Either3::Third(LinkRequest::CalibrateBracket { mount, id }) => {
-                // Nothing to store until the operator keeps a result. The still window
-                // is the waiting session's, lent empty.
-                procedure.bracket_cal = Some(BracketCalState::new(mount, id));
-                procedure.session.stillness_window().reset();
-                Some(Output::default())
-            }
-            input @ (Either3::First(_) | Either3::Second(_)) if procedure.bracket_cal.is_some() => {
-                on_bracket_input(&mut procedure, &mut presentation, input)
-            }
-            // An erase that failed changes nothing: what the store holds stays in use.
-            Either3::Third(LinkRequest::Erase) if erase_failed => None,
-            Either3::Third(LinkRequest::Erase) => {
-                Some(reset_to_builtin(&mut procedure, boot.default_plan))
-            }
-            input => {
-                let Procedure {
-                    config, session, ..
-                } = &mut *procedure;
-                let event = match input {
-                    Either3::First(SensorReport::Reading {
-                        t_ms,
-                        tilt,
-                        temperature_c,
-                    }) => {
-                        presentation.extras.fault = None;
-                        Some(Event::Sample {
-                            t_ms,
-                            reading: Tilt::new(tilt.x_rad, tilt.y_rad),
-                            temperature_c: Some(temperature_c),
-                        })
-                    }
-                    Either3::First(SensorReport::Fault(fault)) => {
-                        presentation.extras.fault = Some(fault);
-                        Some(Event::SensorFault)
-                    }
-                    Either3::Second(press) => on_press(&mut presentation, session.phase(), press),
-                    Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
-                    Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
-                    Either3::Third(LinkRequest::Check) => Some(Event::Check),
-                    Either3::Third(
-                        LinkRequest::SetProfile(_)
-                        | LinkRequest::Erase
-                        | LinkRequest::CalibrateBracket { .. }
-                        | LinkRequest::ReadKept { .. },
-                    ) => None,
+            let from_link = matches!(input, Either3::Third(_));
+            let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
+            let procedure = &mut **held.insert(shared.procedure.lock().await);
+            // `erase all` empties the store before anything is written anew.
+            let mut erase_failed = false;
+            if matches!(input, Either3::Third(LinkRequest::Erase)) {
+                erase_failed = match store.as_mut() {
+                    Some(s) => s.erase().await.is_err(),
+                    None => true,
                 };
-                event.map(|e| step(config, session, e))
             }
-        };
-        let refused = output.is_none() && from_link && !erase_failed;
-        let mut stored = !erase_failed;
-        // A session just finished with a result: kept before the step's records, so a
-        // cut between the two leaves the result kept and the session before its last
-        // capture (finished again, it is kept again under a new ID), never a result
-        // shown but not kept.
-        let finished = output.as_ref().is_some_and(|o| {
-            o.persist
-                .iter()
-                .any(|r| matches!(r, Record::LastResult { .. }))
-        });
-        if let Some((id, value)) = finished.then(|| encode_kept(&mut procedure)).flatten() {
-            stored &= match store.as_mut() {
-                Some(s) => s.keep_result(id, &value).await.is_ok(),
-                None => false,
+            let phase_before = procedure.session.phase();
+            // One set of records to write, whatever asked for it: a single buffer lives
+            // across the write (the task's state is static RAM on the board).
+            let output = match input {
+                Either3::Third(LinkRequest::SetProfile(profile)) => {
+                    set_profile(procedure, &profile)
+                }
+                Either3::Third(LinkRequest::CalibrateBracket { mount, id }) => {
+                    // Nothing to store until the operator keeps a result. The still window
+                    // is the waiting session's, lent empty.
+                    procedure.bracket_cal = Some(BracketCalState::new(mount, id));
+                    procedure.session.stillness_window().reset();
+                    Some(Output::default())
+                }
+                input @ (Either3::First(_) | Either3::Second(_))
+                    if procedure.bracket_cal.is_some() =>
+                {
+                    on_bracket_input(procedure, &mut presentation, input)
+                }
+                // An erase that failed changes nothing: what the store holds stays in use.
+                Either3::Third(LinkRequest::Erase) if erase_failed => None,
+                Either3::Third(LinkRequest::Erase) => {
+                    Some(reset_to_builtin(procedure, boot.default_plan))
+                }
+                input => {
+                    let Procedure {
+                        config, session, ..
+                    } = &mut *procedure;
+                    let event = match input {
+                        Either3::First(SensorReport::Reading {
+                            t_ms,
+                            tilt,
+                            temperature_c,
+                        }) => {
+                            presentation.extras.fault = None;
+                            Some(Event::Sample {
+                                t_ms,
+                                reading: Tilt::new(tilt.x_rad, tilt.y_rad),
+                                temperature_c: Some(temperature_c),
+                            })
+                        }
+                        Either3::First(SensorReport::Fault(fault)) => {
+                            presentation.extras.fault = Some(fault);
+                            Some(Event::SensorFault)
+                        }
+                        Either3::Second(press) => {
+                            on_press(&mut presentation, session.phase(), press)
+                        }
+                        Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
+                        Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
+                        Either3::Third(LinkRequest::Check) => Some(Event::Check),
+                        Either3::Third(
+                            LinkRequest::SetProfile(_)
+                            | LinkRequest::Erase
+                            | LinkRequest::CalibrateBracket { .. }
+                            | LinkRequest::ReadKept { .. },
+                        ) => None,
+                    };
+                    event.map(|e| step(config, session, e))
+                }
             };
-            presentation.extras.store_failed = !stored;
-        }
-        if let Some(output) = output {
-            if !output.persist.is_empty() {
-                stored &= persist(&mut store, &output.persist).await;
+            let refused = output.is_none() && from_link && !erase_failed;
+            let mut stored = !erase_failed;
+            // A session just finished with a result: kept before the step's records, so a
+            // cut between the two leaves the result kept and the session before its last
+            // capture (finished again, it is kept again under a new ID), never a result
+            // shown but not kept.
+            let finished = output.as_ref().is_some_and(|o| {
+                o.persist
+                    .iter()
+                    .any(|r| matches!(r, Record::LastResult { .. }))
+            });
+            if let Some((id, value)) = finished.then(|| encode_kept(procedure)).flatten() {
+                stored &= match store.as_mut() {
+                    Some(s) => s.keep_result(id, &value).await.is_ok(),
+                    None => false,
+                };
                 presentation.extras.store_failed = !stored;
             }
-        }
-        let Procedure {
-            config: _, session, ..
-        } = &mut *procedure;
-        let phase = session.phase();
-        if phase != Phase::Done || phase_before != Phase::Done {
-            presentation.extras.result_page = 0;
-        }
-        if from_link {
-            let reply = if refused {
-                LinkReply::SessionInProgress
-            } else if !stored {
-                LinkReply::StoreFailed
-            } else if session.view().notice == Some(Notice::PlanLocked) {
-                LinkReply::PlanLocked
-            } else {
-                LinkReply::Done
-            };
-            shared.link_replies.send(reply).await;
-        }
-        if sampled {
-            let moving = watch_stillness(&mut presentation, session);
-            // The robot is on its way to the next pose (or the session is over): the
-            // moment for a page change and its erase, if one is due.
-            if moving {
-                if let Some(s) = store.as_mut() {
-                    if s.make_room_when_idle().await.is_err() {
-                        presentation.extras.store_failed = true;
+            if let Some(output) = output {
+                if !output.persist.is_empty() {
+                    stored &= persist(&mut store, &output.persist).await;
+                    presentation.extras.store_failed = !stored;
+                }
+            }
+            let Procedure {
+                config: _, session, ..
+            } = &mut *procedure;
+            let phase = session.phase();
+            if phase != Phase::Done || phase_before != Phase::Done {
+                presentation.extras.result_page = 0;
+            }
+            let reply = from_link.then(|| {
+                if refused {
+                    LinkReply::SessionInProgress
+                } else if !stored {
+                    LinkReply::StoreFailed
+                } else if session.view().notice == Some(Notice::PlanLocked) {
+                    LinkReply::PlanLocked
+                } else {
+                    LinkReply::Done
+                }
+            });
+            if sampled {
+                let moving = watch_stillness(&mut presentation, session);
+                // The robot is on its way to the next pose (or the session is over): the
+                // moment for a page change and its erase, if one is due.
+                if moving {
+                    if let Some(s) = store.as_mut() {
+                        if s.make_room_when_idle().await.is_err() {
+                            presentation.extras.store_failed = true;
+                        }
                     }
                 }
             }
+            publish(shared, procedure, &presentation);
+            reply
+        };
+        if let Some(reply) = reply {
+            shared.link_replies.send(reply).await;
         }
-        publish(shared, &procedure, &presentation);
+        drop(held);
     }
 }
 
@@ -251,6 +263,9 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
 /// awaited: reading flash is a memory copy that never waits, and this keeps the
 /// record table (~4.5 KiB) on the stack at power-up instead of in the task's state for
 /// good. Only a fresh store's first write (its marker) waits for the flash, briefly.
+// Not inlined, nor are read_kept and encode_kept: inlined into the task's poll, the
+// driven-to-completion futures cost more flash than a call (-272 B rustup).
+#[inline(never)]
 fn restore<F: NorFlash>(
     store: &mut Store<F>,
     procedure: &mut Procedure,
@@ -277,6 +292,7 @@ fn restore<F: NorFlash>(
 /// Kept result `id` as the link's reply. Driven to completion on the spot, as
 /// [`restore`]: reading flash never waits, and the read's buffers stay on the stack
 /// rather than in the task's state for good.
+#[inline(never)]
 fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
     let mut value = [0_u8; KEPT_RESULT_LEN];
     let found = store
@@ -286,6 +302,7 @@ fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
 
 /// The session's result as a kept result under the next ID, encoded; the next ID moves
 /// on whether or not the write will succeed (a failed write may have stored the ID).
+#[inline(never)]
 fn encode_kept(procedure: &mut Procedure) -> Option<(u32, [u8; KEPT_RESULT_LEN])> {
     let id = procedure.next_result_id;
     let kept = procedure.session.kept_result(&procedure.config, id)?;
@@ -301,6 +318,7 @@ const BOOT_SCREEN_MS: u64 = 1500;
 /// Whether nothing of a profile was ever stored (generation 0): only then does the
 /// firmware's default plan, planned for the built-in profile, apply. After a torn
 /// profile write the built-in profile is in use but the plan is left to the operator.
+#[inline(never)]
 fn procedure_is_builtin(procedure: &Procedure) -> bool {
     procedure.profile_generation == 0
 }
@@ -312,6 +330,9 @@ fn procedure_is_builtin(procedure: &Procedure) -> bool {
 /// profile's parts and its head last. A cut before the plan's end leaves the old
 /// profile with its plan; one after it, the old or no whole profile (the built-in one
 /// then, named on the boot screen) without a plan; never a plan on the wrong robot.
+// Out of line, as on_press, watch_stillness, on_bracket_input, reset_to_builtin and
+// procedure_is_builtin: inlined into the task's poll they cost more flash than a call.
+#[inline(never)]
 pub fn set_profile(
     procedure: &mut Procedure,
     profile: &PendantProfile<f32>,
@@ -347,6 +368,7 @@ pub fn set_profile(
 
 /// `erase all` (the store already erased): the built-in profile, no bias or result,
 /// the firmware's default plan, which the records returned store again.
+#[inline(never)]
 pub fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
     // The unit stays the unit; the kept results' next ID stays too (the store's erase
     // carried it over).
@@ -385,6 +407,7 @@ async fn wait_for_ok(shared: &Shared) {
 }
 
 /// What a press means on the screen shown: core's event, or a change of presentation.
+#[inline(never)]
 fn on_press(p: &mut Presentation, phase: Phase, press: ButtonEvent) -> Option<Event<f32>> {
     let ButtonEvent { button, press } = press;
     match (button, press, phase) {
@@ -405,6 +428,7 @@ fn on_press(p: &mut Presentation, phase: Phase, press: ButtonEvent) -> Option<Ev
 
 /// Tracks how long an armed pendant has not been still; returns whether the reading
 /// has just started moving (the robot left its pose).
+#[inline(never)]
 fn watch_stillness(p: &mut Presentation, session: &ProcedureState<f32>) -> bool {
     let view = session.view();
     let now_ms = Instant::now().as_millis();
@@ -449,6 +473,7 @@ fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
 
 /// A sample, a sensor fault or a press during a bracket calibration: its step, and
 /// the record to store when the operator keeps the result.
+#[inline(never)]
 fn on_bracket_input(
     procedure: &mut Procedure,
     p: &mut Presentation,

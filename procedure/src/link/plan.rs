@@ -49,6 +49,9 @@ impl<T: Real> PlanUpload<T> {
     /// A malformed row, an angle beyond ±[`crate::text::MAX_JOINT_DEG`], joint 1 away
     /// from stage 1's, too many or too few rows. The upload is then over and the plan
     /// unchanged.
+    // Out of line: inlined into the link's async command handling it cost more flash
+    // than a call.
+    #[inline(never)]
     pub fn feed(&mut self, line: &str) -> Result<UploadStep<T>, LinkError> {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {

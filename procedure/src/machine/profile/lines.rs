@@ -342,6 +342,9 @@ impl<T: Real> ProfileUpload<T> {
     /// # Errors
     /// A line that is not the profile's, bad values, `end` before every line. The
     /// upload is then over and nothing changed.
+    // Out of line: inlined into the link's async command handling it cost more flash
+    // than a call.
+    #[inline(never)]
     pub fn feed(&mut self, line: &str) -> Result<ProfileStep<T>, ProfileError> {
         let line = line.trim();
         if line.is_empty() || line.starts_with('#') {
