@@ -30,6 +30,12 @@ pub struct CheckArgs {
     /// offsets: nothing should have moved since it.
     #[arg(long)]
     pub restored: bool,
+    /// With `--restored`: the export the restore was computed from (the one given to
+    /// `zerocal restore`): the restore is solved again and its own uncertainty joins the
+    /// tolerance (what is left after a restore is its error as well as the check's).
+    /// Without it the restore's is taken as the check's own.
+    #[arg(long, value_name = "FILE", requires = "restored")]
+    pub restore_export: Option<PathBuf>,
     /// The tolerance per joint (deg; default: three of the check's own standard
     /// uncertainties, from the reference's budget). Range: (0, 1] deg.
     #[arg(long, value_name = "DEG", value_parser = crate::args::RealIn::above(0.0, 1.0, "deg"))]
@@ -444,7 +450,22 @@ pub fn run(args: &CheckArgs) -> Result<String, CliError> {
     } else {
         Expected::Entered
     };
-    let result = judge(&a.reference, &a.comparison, expected, args.tolerance_deg);
+    let restore_combined_deg = match &args.restore_export {
+        Some(export) => Some(
+            against(&args.db, args.against, export, &options)?
+                .comparison
+                .budget
+                .combined_deg,
+        ),
+        None => None,
+    };
+    let result = judge(
+        &a.reference,
+        &a.comparison,
+        expected,
+        args.tolerance_deg,
+        restore_combined_deg.as_ref(),
+    );
     let mut json = to_json(&a, &result, expected);
     json.conventions = conventions(&a, &json);
     if args.no_record {

@@ -105,6 +105,53 @@ fn record_restore_check_and_certify_one_robot() {
         "the difference's U {u} below the session's {session_u}"
     );
 
+    // The restore entered (KUKA: the controller's A3 is the model's), then checked with
+    // --restored: what is left is the restore's own error as well as the check's, and
+    // passes; the restore typed 0.01 deg short fails on A3.
+    for (typed, again, passes) in [(moved, "6", true), (moved + 0.01, "7", false)] {
+        let restored = d.join(format!("restored-{again}.txt"));
+        let entry = format!("0,{typed},0,0,0");
+        simulate(
+            &restored,
+            &[
+                "--again",
+                again,
+                "--zero-moved",
+                "3=1.0",
+                "--entered",
+                &entry,
+            ],
+        );
+        let out = zerocal(&[
+            "check",
+            restored.to_str().unwrap(),
+            "--against",
+            &id,
+            "--restored",
+            "--restore-export",
+            swap.to_str().unwrap(),
+            "--no-record",
+            "--db",
+            db,
+            FENCE[0],
+            FENCE[1],
+        ]);
+        let text = format!(
+            "{}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+        if passes {
+            assert!(
+                out.status.success() && text.contains("check: PASS"),
+                "{text}"
+            );
+        } else {
+            assert_eq!(out.status.code(), Some(4), "{text}");
+            assert!(text.contains("check: FAIL A3"), "{text}");
+        }
+    }
+
     // The session's offsets entered, then checked; then with 0.01 deg left on A3.
     let entered: Vec<String> = (0..5)
         .map(|k| format!("{}", session["joints"][k]["offset_deg"].as_f64().unwrap()))

@@ -223,7 +223,7 @@ fn check_after_entering(seed: u64, left_j3_deg: f64) -> zerocal_cli::compare::ch
     let export = read_export(&text).unwrap();
     assert!(export.stage1.is_none(), "a check has no stage 1");
     let c = compare(&solved_reference, &export, &options()).unwrap();
-    judge(&solved_reference, &c, Expected::Entered, None)
+    judge(&solved_reference, &c, Expected::Entered, None, None)
 }
 
 #[test]

@@ -200,7 +200,9 @@ pub fn run(out: &Path, docs: Option<&Path>) -> Result<()> {
         "--restored",
         "--measured-on",
         "2026-10-05",
+        "--restore-export",
     ]));
+    args.push(path(&swap));
     args.extend(strings(&FENCE));
     args.extend(db_args.clone());
     print!("{}", zerocal(&args)?);

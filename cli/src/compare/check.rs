@@ -75,16 +75,32 @@ impl CheckResult {
 /// uncertainty, from the reference's budget less what cancels
 /// ([`super::DifferenceBudget`]): a remaining offset the check can tell from zero was
 /// not taken.
+///
+/// After a restore ([`Expected::Restored`]) what is left is the restore's own error as
+/// well as the check's: `restore_combined_deg` is the restore's combined standard
+/// uncertainty per joint (its comparison's, [`super::DifferenceBudget::combined_deg`]),
+/// which joins the check's in quadrature; without it the restore's is taken as the
+/// check's own (the same kind of measurement: a difference against the same reference
+/// at its poses), √2 in all, which leaves out what only the restore has (a swapped
+/// motor's reducer error over the zero's move).
 pub fn judge(
     reference: &Analysis,
     comparison: &Comparison,
     expected: Expected,
     tolerance_deg: Option<f64>,
+    restore_combined_deg: Option<&[f64; SESSION_JOINTS]>,
 ) -> CheckResult {
     let moved = comparison.moved_deg();
     let r = comparison.joint3_per_joint2;
     let budget = &comparison.budget;
-    let tolerance = |k: usize| tolerance_deg.unwrap_or(CHECK_TOLERANCE_U * budget.combined_deg[k]);
+    // After a session's offsets, the session's error is common to the reference and
+    // the check, and cancels; after a restore, the restore's does not.
+    let own = |k: usize| match (expected, restore_combined_deg) {
+        (Expected::Entered, _) => budget.combined_deg[k],
+        (Expected::Restored, Some(restore)) => budget.combined_deg[k].hypot(restore[k]),
+        (Expected::Restored, None) => budget.combined_deg[k] * core::f64::consts::SQRT_2,
+    };
+    let tolerance = |k: usize| tolerance_deg.unwrap_or(CHECK_TOLERANCE_U * own(k));
     let entered = |i: usize| match expected {
         Expected::Entered => reference.json.joints[i].offset_deg,
         Expected::Restored => 0.0,
@@ -136,8 +152,15 @@ pub fn judge(
         None => format!(
             "a joint passes when what is left of its offset is within {CHECK_TOLERANCE_U} \
              times the check's own standard uncertainty (the reference session's budget less \
-             the terms common to both measurements): more than that is an offset the \
-             controller did not take (a sign, a unit, a joint mixed up, a value not activated)"
+             the terms common to both measurements{}): more than that is an offset the \
+             controller did not take (a sign, a unit, a joint mixed up, a value not activated)",
+            match (expected, restore_combined_deg) {
+                (Expected::Entered, _) => "",
+                (Expected::Restored, Some(_)) => "; after a restore, with the restore's own",
+                (Expected::Restored, None) =>
+                    "; after a restore, with the restore's own taken as the check's: √2 times; \
+                     --restore-export gives the restore's own",
+            }
         ),
     };
     CheckResult { joints, pass, rule }
