@@ -131,7 +131,7 @@ impl RobotSpec {
         misalignment_parallel_deg: (0.01, 0.5),
         transmission_pp_deg: (0.005, 0.03),
         higher_harmonic_share: zerocal_core::stage2::transmission::HIGHER_HARMONIC_SHARE,
-        ripple_deg: 0.001,
+        ripple_deg: zerocal_core::stage2::transmission::RIPPLE_MAX_DEG,
         once_per_turn_pp_deg: (0.005, 0.025),
         wrist_sag_full_lever_deg: (0.01, 0.03),
     };

@@ -28,7 +28,8 @@ use crate::model::{JOINTS, WRIST_JOINTS};
 use crate::real::Real;
 use crate::stage2::params::{HARMONIC_JOINTS, HARMONIC_ORDERS};
 use crate::stage2::transmission::{
-    transmission_variance, BUDGET_ORDERS, HIGHER_HARMONIC_RMS_SHARE, TRANSMISSION_PP_MAX_DEG,
+    transmission_variance, BUDGET_ORDERS, HIGHER_HARMONIC_RMS_SHARE, RIPPLE_MAX_DEG,
+    TRANSMISSION_PP_MAX_DEG,
 };
 use crate::stage2::{covariance_bound, Extras, PoseReading};
 
@@ -336,6 +337,14 @@ pub fn budget<T: Real>(
         for k in 0..SESSION_JOINTS {
             terms[BudgetTerm::HigherHarmonics.index()][k] = v.zeros[k].max(T::zero()).sqrt();
         }
+    }
+    // And joint 2's ripple at its one stage-1 angle ([`RIPPLE_MAX_DEG`]: amplitude
+    // anywhere up to it, RMS a/√3, at a phase anywhere, RMS of the value a/√3/√2): Δθ2
+    // takes it whole and Δθ3, which inherits joint 2's angle, takes it back.
+    let ripple = crate::real::deg_to_rad(T::lit(RIPPLE_MAX_DEG)) / T::lit(6.0).sqrt();
+    for k in 0..2 {
+        let t = &mut terms[BudgetTerm::HigherHarmonics.index()][k];
+        *t = (*t * *t + ripple * ripple).sqrt();
     }
 
     // The σ of the Type A terms: the residuals' σ less what the terms above carry

@@ -24,6 +24,15 @@ use crate::real::{deg_to_rad, Real};
 /// A session whose residuals show more gets its own figure ([`amplitude_from_residuals`]).
 pub const TRANSMISSION_PP_MAX_DEG: f64 = 0.03;
 
+/// The largest ripple of a reducer many times a turn the budget assumes (deg, amplitude):
+/// a cycloid's pins or a strain wave's teeth seen through the output, 20-60 cycles a
+/// turn. A stated figure (no public spectrum of a robot reducer's error was found), below
+/// one capture's noise. Stage 2's poses sample it at unrelated phases, where it is scatter
+/// in the residuals; at joint 2's one stage-1 angle it goes into Δθ2 whole (and back into
+/// Δθ3), which the budget carries (`crate::session::budget`). The simulator draws each
+/// reducer's amplitude up to this.
+pub const RIPPLE_MAX_DEG: f64 = 0.001;
+
 /// The largest once-per-turn error of joints 4 and 6 the budget assumes (deg, peak to
 /// peak): a laser tracker on a FANUC R-2000iC/165F found 0.023-0.027° (public data of
 /// Boby and Klimchik), the wrist twisting under gravity.
