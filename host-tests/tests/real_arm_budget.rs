@@ -20,9 +20,10 @@
 
 mod common;
 
+use zerocal_core::bracket::SEAT_REPEATABILITY_DEG;
 use zerocal_sim::montecarlo::{run_with_tcp, setup, summarise, Method, DEFAULT_POSES};
 use zerocal_sim::robot::RobotSources;
-use zerocal_sim::world::WorldConfig;
+use zerocal_sim::world::{BracketKnowledge, WorldConfig};
 
 /// Sessions per profile.
 const SESSIONS: usize = 200;
@@ -126,11 +127,15 @@ fn acceptance(world: &WorldConfig, what: &str, seed: u64, bounds: &Bounds) {
     assert!(failures.is_empty(), "{what}: {failures:#?}");
 }
 
-/// Every source on at its stated range, transmission error 0.005-0.03° peak to peak.
+/// Every source on at its stated range, transmission error 0.005-0.03° peak to peak,
+/// the brackets calibrated and seated within their stated repeatability (the budget
+/// carries both: a world without them tests a budget term against nothing).
 #[test]
 fn a_real_arm_at_the_stated_ranges_gets_covered_numbers() {
     let world = WorldConfig {
         robot: RobotSources::REAL_ARM,
+        seat_repeatability_deg: SEAT_REPEATABILITY_DEG,
+        brackets: BracketKnowledge::Calibrated,
         ..WorldConfig::real()
     };
     acceptance(
