@@ -60,6 +60,11 @@ const MAX_STEPS: usize = 12;
 /// below where the model bends.
 const MOUNT_STEP_RAD: f64 = 1e-6;
 
+/// The readings' sandwich covariance is taken where the poses number at least this many
+/// times the unknowns: a cluster-robust estimate is only as good as its clusters are
+/// many (a restore from a whole session: 40 poses for 5 unknowns).
+const SANDWICH_POSES_PER_UNKNOWN: usize = 4;
+
 /// A step below this (rad) has converged.
 const CONVERGED_RAD: f64 = 1e-12;
 
@@ -439,8 +444,14 @@ pub fn compare(
     // readings/dof (GUM's Type A from the data, without that assumption). A pose's x and
     // y share its joints' repeatability, and the rows' weights follow the sensor's
     // noise, not the robot's: the first alone covered 34 of 40 KR 6 restores on joint 5
-    // (error/u RMS 1.43).
-    let sandwich = {
+    // (error/u RMS 1.43). The sandwich's own scatter falls only with the number of poses
+    // against the unknowns ([`SANDWICH_POSES_PER_UNKNOWN`]): a check's five poses for
+    // five unknowns leave it as uncertain as what it estimates, so there the first
+    // stands alone.
+    let sandwich_usable = pairs.len() >= SANDWICH_POSES_PER_UNKNOWN * n_params;
+    let sandwich = if !sandwich_usable {
+        DMatrix::<f64>::zeros(n_params, n_params)
+    } else {
         let mut meat = DMatrix::<f64>::zeros(n_params, n_params);
         for (i, pose_rows) in rows.chunks(2).enumerate() {
             let mut g = DVector::<f64>::zeros(n_params);
