@@ -256,6 +256,8 @@ impl RobotErrors {
                         let floor_nm = load_kg * GRAVITY_M_S2 * MIN_SAG_LEVER_M;
                         if *torque > floor_nm {
                             e.compliance_rad_per_nm[k] = drawn / torque;
+                        } else {
+                            e.full_torque_nm[k] = 0.0;
                         }
                     }
                 }
