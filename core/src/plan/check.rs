@@ -151,13 +151,34 @@ pub fn check_model<T: Real>(
 /// (Cholesky, log det, SVD) instead of carrying a second copy for a 4×4.
 type OffsetGram<T> = Square<T, MAX_PARAMS>;
 
-/// The offsets a check can tell apart: Δθ3..Δθ6 less those whose joint is parallel to
-/// the previous one in every pose (a UR's joint 4 after joint 3: to gravity the two are
-/// one offset, their sum, as the session's fit holds them).
-fn free_offsets<T: Real>(model: &Stage2Model<T>) -> heapless::Vec<usize, WRIST_JOINTS> {
+/// What the check's comparison solves on the flange, as columns of [`CHECK_EXTRAS`]'
+/// layout: the offsets it can tell apart (Δθ3..Δθ6 less those whose joint is parallel
+/// to the previous one in every pose: a UR's joint 4 after joint 3 is to gravity one
+/// offset with it, their sum, as the session's fit holds them) and the x bias, which
+/// the comparison estimates with them as the session's fit does. Poses that leave an
+/// offset leaning on the bias tell its change badly: chosen on the offsets alone, the
+/// KR 6's five poses named 0.01° left on joint 3, alone, in 17 checks of 30.
+fn free_offsets<T: Real>(model: &Stage2Model<T>) -> heapless::Vec<usize, { WRIST_JOINTS + 1 }> {
     let held = model.arm.parallel_twins();
-    (0..WRIST_JOINTS).filter(|&k| !held[k]).collect()
+    let mut free: heapless::Vec<usize, { WRIST_JOINTS + 1 }> =
+        (0..WRIST_JOINTS).filter(|&k| !held[k]).collect();
+    if let Some(bias) = CHECK_EXTRAS
+        .layout()
+        .params()
+        .iter()
+        .position(|p| *p == crate::stage2::Param::BiasX)
+    {
+        // At most WRIST_JOINTS offsets before it: cannot fail.
+        let _ = free.push(bias);
+    }
+    free
 }
+
+/// The terms besides the offsets the check's poses are chosen to separate them from.
+const CHECK_EXTRAS: Extras = Extras {
+    bias_x: true,
+    ..Extras::NONE
+};
 
 /// The free offsets' block of one pose's information (both readings) at zero offsets.
 fn pose_information<T: Real>(
@@ -167,7 +188,7 @@ fn pose_information<T: Real>(
 ) -> Option<OffsetGram<T>> {
     let full = information(
         model,
-        Extras::NONE,
+        CHECK_EXTRAS,
         &[*q],
         &[T::zero(); WRIST_JOINTS],
         T::one(),
@@ -224,7 +245,7 @@ pub fn check_poses<T: Real>(
     model: &Stage2Model<T>,
     plan: &[[T; JOINTS]],
 ) -> Result<(CheckPoses, T), CheckPlanError> {
-    let min = WRIST_JOINTS.div_ceil(2);
+    let min = (WRIST_JOINTS + 1).div_ceil(2);
     if plan.len() < min {
         return Err(CheckPlanError::TooFewPoses {
             got: plan.len(),
@@ -392,7 +413,7 @@ mod tests {
         assert_eq!(check.as_slice(), &[0, 1, 2, 3]);
         assert_eq!(
             check_poses(&model, &poses[..1]),
-            Err(CheckPlanError::TooFewPoses { got: 1, min: 2 })
+            Err(CheckPlanError::TooFewPoses { got: 1, min: 3 })
         );
         // The same pose six times over: one pose's two readings cannot separate four offsets.
         let same = [poses[0]; 6];
