@@ -6,8 +6,8 @@
 MODULE ZC_CHK140
     ! zerocal robot program: a check of the offsets entered after a calibration session.
     ! Robot ABB IRB 140T-6/0.81 (IRB 140T; ROS-I model irb140t_6_81) (profile abb-irb140); 5 of the
-    ! session plan's 43 poses (3, 4, 7, 27, 29), at the session's commanded angles. Written by zerocal
-    ! 0.1.0.
+    ! session plan's 43 poses (1, 9, 10, 19, 22), at the session's commanded angles. Written by
+    ! zerocal 0.1.0.
     ! Every pose is captured twice: first with every joint arriving moving positive (from 1 deg
     ! below), then, after every joint has gone 4 deg past it, moving negative (from above). The
     ! pendant averages the two: the middle of every gear's backlash.
@@ -21,32 +21,32 @@ MODULE ZC_CHK140
     ! Speed: joint moves at 10 % of each joint's maximum speed, exact stops.
     ! Dwell 3.1 s at each capture: settling 1 s (stated default) + the pendant's 2 s still window + 2
     ! sensor periods of 0.05 s.
-    ! Predicted robot time 3.7 min, the closing bench readings included: motion 27 s, dwell 43 s (14
+    ! Predicted robot time 3.8 min, the closing bench readings included: motion 32 s, dwell 43 s (14
     ! captures), 2 mountings 120 s, operator OKs 30 s.
     ! WARNING: the path is NOT checked for collisions with the cell, the pendant or its bracket. Check
     ! the cell, then step through the program once at reduced speed (T1) before running it.
-    CONST jointtarget zc_t1:=[[-90.00000,-45.00000,-202.83282,36.43364,-53.71690,-32.00528],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t2:=[[-91.00000,62.83020,-203.83282,35.43364,-54.71690,-33.00528],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t3:=[[-90.00000,63.83020,-202.83282,36.43364,-53.71690,-32.00528],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t4:=[[-86.00000,67.83020,-198.83282,40.43364,-49.71690,-28.00528],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t5:=[[-90.00000,63.83020,-202.83282,36.43364,-53.71690,-32.00528],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t6:=[[-91.00000,73.90099,-196.36789,47.06061,-65.90625,-19.91652],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t7:=[[-90.00000,74.90099,-195.36789,48.06061,-64.90625,-18.91652],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t8:=[[-86.00000,78.90099,-191.36789,52.06061,-60.90625,-14.91652],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t9:=[[-90.00000,74.90099,-195.36789,48.06061,-64.90625,-18.91652],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t10:=[[-91.00000,-35.30281,-95.66632,-123.42933,-112.62784,30.85351],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t11:=[[-90.00000,-34.30281,-94.66632,-122.42933,-111.62784,31.85351],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t12:=[[-86.00000,-30.30281,-90.66632,-118.42933,-107.62784,35.85351],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t13:=[[-90.00000,-34.30281,-94.66632,-122.42933,-111.62784,31.85351],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t14:=[[-91.00000,25.14421,-225.45690,19.26224,23.62779,-21.21176],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t15:=[[-90.00000,26.14421,-224.45690,20.26224,24.62779,-20.21176],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t16:=[[-86.00000,30.14421,-220.45690,24.26224,28.62779,-16.21176],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t17:=[[-90.00000,26.14421,-224.45690,20.26224,24.62779,-20.21176],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t18:=[[-91.00000,-4.65398,-176.46637,-4.30253,1.63117,-3.56084],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t19:=[[-90.00000,-3.65398,-175.46637,-3.30253,2.63117,-2.56084],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t20:=[[-86.00000,0.34602,-171.46637,0.69747,6.63117,1.43916],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t21:=[[-90.00000,-3.65398,-175.46637,-3.30253,2.63117,-2.56084],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t22:=[[-90.00000,-45.00000,-202.83282,36.43364,-53.71690,-32.00528],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t1:=[[-90.00000,-45.00000,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t2:=[[-91.00000,-8.20970,-162.68633,-176.70261,15.04062,-179.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t3:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t4:=[[-86.00000,-3.20970,-157.68633,-171.70261,20.04062,-174.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t5:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t6:=[[-91.00000,-65.94064,3.26665,-37.33598,-114.58650,-17.28775],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t7:=[[-90.00000,-64.94064,4.26665,-36.33598,-113.58650,-16.28775],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t8:=[[-86.00000,-60.94064,8.26665,-32.33598,-109.58650,-12.28775],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t9:=[[-90.00000,-64.94064,4.26665,-36.33598,-113.58650,-16.28775],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t10:=[[-91.00000,-74.61238,6.62156,-8.86412,-109.11995,-7.91099],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t11:=[[-90.00000,-73.61238,7.62156,-7.86412,-108.11995,-6.91099],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t12:=[[-86.00000,-69.61238,11.62156,-3.86412,-104.11995,-2.91099],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t13:=[[-90.00000,-73.61238,7.62156,-7.86412,-108.11995,-6.91099],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t14:=[[-91.00000,59.53654,-87.55478,163.87932,-21.89299,16.67723],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t15:=[[-90.00000,60.53654,-86.55478,164.87932,-20.89299,17.67723],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t16:=[[-86.00000,64.53654,-82.55478,168.87932,-16.89299,21.67723],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t17:=[[-90.00000,60.53654,-86.55478,164.87932,-20.89299,17.67723],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t18:=[[-91.00000,28.20450,-54.19616,80.36859,-111.11344,66.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t19:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,67.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t20:=[[-86.00000,33.20450,-49.19616,85.36859,-106.11344,71.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t21:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,67.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t22:=[[-90.00000,-45.00000,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
     PROC main()
         ! zerocal check: the pendant goes on the flange here, tilted past its range so that it cannot
         ! capture yet
@@ -55,36 +55,36 @@ MODULE ZC_CHK140
         TPWrite "zerocal: clip the pendant to the flange";
         TPWrite "(its screen at POSE 1), then continue.";
         STOP;
-        ! zerocal check: pose 3 of 43, captured from below, then from above
-        MoveAbsJ zc_t2,v100 \T:=4.677,fine,tool0;
+        ! zerocal check: pose 1 of 43, captured from below, then from above
+        MoveAbsJ zc_t2,v100 \T:=1.835,fine,tool0;
         MoveAbsJ zc_t3,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t4,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t5,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal check: pose 4 of 43, captured from below, then from above
-        MoveAbsJ zc_t6,v100 \T:=0.842,fine,tool0;
+        ! zerocal check: pose 9 of 43, captured from below, then from above
+        MoveAbsJ zc_t6,v100 \T:=6.723,fine,tool0;
         MoveAbsJ zc_t7,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t8,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t9,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal check: pose 7 of 43, captured from below, then from above
-        MoveAbsJ zc_t10,v100 \T:=5.287,fine,tool0;
+        ! zerocal check: pose 10 of 43, captured from below, then from above
+        MoveAbsJ zc_t10,v100 \T:=1.287,fine,tool0;
         MoveAbsJ zc_t11,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t12,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t13,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal check: pose 27 of 43, captured from below, then from above
-        MoveAbsJ zc_t14,v100 \T:=5.409,fine,tool0;
+        ! zerocal check: pose 19 of 43, captured from below, then from above
+        MoveAbsJ zc_t14,v100 \T:=5.690,fine,tool0;
         MoveAbsJ zc_t15,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t16,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t17,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
-        ! zerocal check: pose 29 of 43, captured from below, then from above
-        MoveAbsJ zc_t18,v100 \T:=2.224,fine,tool0;
+        ! zerocal check: pose 22 of 43, captured from below, then from above
+        MoveAbsJ zc_t18,v100 \T:=3.030,fine,tool0;
         MoveAbsJ zc_t19,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t20,v100 \T:=0.482,fine,tool0;
@@ -92,7 +92,7 @@ MODULE ZC_CHK140
         WaitTime 3.100;
         ! zerocal: the check's poses done; the robot parks where the pendant went on the flange (tilted
         ! past its range) for the closing bench readings
-        MoveAbsJ zc_t22,v100 \T:=2.089,fine,tool0;
+        MoveAbsJ zc_t22,v100 \T:=7.664,fine,tool0;
         TPWrite "zerocal: closing bench readings: take";
         TPWrite "the pendant off the flange to the bench";
         TPWrite "of stage 0 and read it at 4 headings,";
