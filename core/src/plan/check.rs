@@ -146,9 +146,10 @@ pub fn check_model<T: Real>(
     }
 }
 
-/// The information over the free offsets (active size 3 or 4). Sized as the fit's, so
-/// that the pendant's firmware shares the fit's and the planner's linear algebra
-/// (Cholesky, log det, SVD) instead of carrying a second copy for a 4×4.
+/// The information over the check's columns (the free offsets and the x bias: active
+/// size 4 or 5). Sized as the fit's, so that the pendant's firmware shares the fit's and
+/// the planner's linear algebra (Cholesky, log det, SVD) instead of carrying a second
+/// copy for a 5×5.
 type OffsetGram<T> = Square<T, MAX_PARAMS>;
 
 /// What the check's comparison solves on the flange, as columns of [`CHECK_EXTRAS`]'
@@ -158,7 +159,7 @@ type OffsetGram<T> = Square<T, MAX_PARAMS>;
 /// the comparison estimates with them as the session's fit does. Poses that leave an
 /// offset leaning on the bias tell its change badly: chosen on the offsets alone, the
 /// KR 6's five poses named 0.01° left on joint 3, alone, in 17 checks of 30.
-fn free_offsets<T: Real>(model: &Stage2Model<T>) -> heapless::Vec<usize, { WRIST_JOINTS + 1 }> {
+fn check_columns<T: Real>(model: &Stage2Model<T>) -> heapless::Vec<usize, { WRIST_JOINTS + 1 }> {
     let held = model.arm.parallel_twins();
     let mut free: heapless::Vec<usize, { WRIST_JOINTS + 1 }> =
         (0..WRIST_JOINTS).filter(|&k| !held[k]).collect();
@@ -180,7 +181,7 @@ const CHECK_EXTRAS: Extras = Extras {
     ..Extras::NONE
 };
 
-/// The free offsets' block of one pose's information (both readings) at zero offsets.
+/// The check columns' block of one pose's information (both readings) at zero offsets.
 fn pose_information<T: Real>(
     model: &Stage2Model<T>,
     free: &[usize],
@@ -255,7 +256,7 @@ pub fn check_poses<T: Real>(
     if plan.len() > usize::from(u8::MAX) + 1 {
         return Err(CheckPlanError::TooManyPoses { got: plan.len() });
     }
-    let free = free_offsets(model);
+    let free = check_columns(model);
     let mut chosen = CheckPoses::new();
     // A small ridge makes log det defined while the set has rank < 4 (each pose's
     // information is O(1): a reading moves about a radian per radian of joint), as the
@@ -394,7 +395,7 @@ mod tests {
         let (model, poses) = planned(24, 3);
         let (check, _) = check_poses(&model, &poses).unwrap_or_else(|e| panic!("{e}"));
         let log_det_of = |idx: &[usize]| {
-            let free = free_offsets(&model);
+            let free = check_columns(&model);
             let mut m = OffsetGram::zeros(free.len());
             for &i in idx {
                 m = add(&m, &pose_information(&model, &free, &poses[i]).unwrap());
