@@ -28,9 +28,7 @@ use super::captures::{first_captures, same_pose};
 use crate::capture::CaptureIndex;
 use crate::error::FitError;
 use crate::real::{deg_to_rad, rad_to_deg, Real};
-use crate::stage2::{
-    add_held, Estimate, FitResult, Information, PoseReading, Stage2Model, MAX_PARAMS,
-};
+use crate::stage2::{add_held, FitResult, Information, PoseReading, Stage2Model, MAX_PARAMS};
 
 /// Poses at either end a step is not looked for in (too few to tell a step from an
 /// outlier).
@@ -181,11 +179,7 @@ pub fn evidence<T: Real>(
 ) -> Evidence<T> {
     let layout = fit.extras.layout();
     let n = layout.len();
-    let mut x = [T::zero(); MAX_PARAMS];
-    for (slot, p) in layout.params().iter().enumerate() {
-        x[slot] = fit.values[p.index()];
-    }
-    let estimate = Estimate::from_slots(&layout, &x);
+    let estimate = fit.estimate(&layout);
     let pass = model.pass(&estimate, &layout);
     let w = model.y_weight;
     // One pose: its two weighted rows and residuals.

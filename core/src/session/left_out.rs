@@ -19,8 +19,7 @@ use crate::error::FitError;
 use crate::plan::MAX_POSES;
 use crate::real::{deg_to_rad, rad_to_deg, Real};
 use crate::stage2::{
-    add_held, fit, Estimate, FitConfig, FitResult, Information, PoseReading, Stage2Model,
-    MAX_PARAMS,
+    add_held, fit, FitConfig, FitResult, Information, PoseReading, Stage2Model, MAX_PARAMS,
 };
 
 /// A pose against the fit of the others.
@@ -79,11 +78,7 @@ fn against<T: Real>(
 ) -> Option<LeftOut<T>> {
     let layout = refit.extras.layout();
     let n = layout.len();
-    let mut x = [T::zero(); MAX_PARAMS];
-    for (slot, p) in layout.params().iter().enumerate() {
-        x[slot] = refit.values[p.index()];
-    }
-    let estimate = Estimate::from_slots(&layout, &x);
+    let estimate = refit.estimate(&layout);
     let pass = model.pass(&estimate, &layout);
     let w = model.y_weight;
     let mut rows = [[T::zero(); MAX_PARAMS]; 2];

@@ -276,6 +276,16 @@ pub struct FitResult<T: Real> {
 }
 
 impl<T: Real> FitResult<T> {
+    /// The fitted values of `layout`'s parameters in physical form (the fit's own
+    /// layout, [`Extras::layout`] of its `extras`, gives the model as fitted).
+    pub fn estimate(&self, layout: &Layout) -> Estimate<T> {
+        let mut x = [T::zero(); MAX_PARAMS];
+        for (slot, p) in layout.params().iter().enumerate() {
+            x[slot] = self.values[p.index()];
+        }
+        Estimate::from_slots(layout, &x)
+    }
+
     /// The estimate of `p` and its 1σ, if estimated.
     pub fn get(&self, p: Param) -> Option<(T, T)> {
         self.estimated
