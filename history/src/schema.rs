@@ -147,16 +147,21 @@ fn check(mark: Mark, what: &str) -> Result<i64, HistoryError> {
 }
 
 fn sqlite_mark(c: &mut Conn) -> Result<Mark, HistoryError> {
-    let one = |c: &mut Conn, sql: &str, column: &str| -> Result<i64, HistoryError> {
-        c.query(sql, &[])?
-            .first()
-            .and_then(|r| r.first().cloned())
-            .ok_or_else(|| HistoryError::Corrupt(format!("{sql} returned nothing")))?
-            .i64(column)
+    // One statement, so one snapshot: read one at a time, another process's first
+    // migration could commit between them (application_id 0 read before it, its
+    // user_version and tables after), and a zerocal database be called foreign.
+    const MARK: &str = "SELECT (SELECT application_id FROM pragma_application_id()), \
+                        (SELECT user_version FROM pragma_user_version()), \
+                        (SELECT count(*) FROM sqlite_master)";
+    let rows = c.query(MARK, &[])?;
+    let [application_id, version, tables] = match rows.first().map(Vec::as_slice) {
+        Some([a, v, t]) => [
+            a.i64("application_id")?,
+            v.i64("user_version")?,
+            t.i64("count")?,
+        ],
+        _ => return Err(HistoryError::Corrupt(format!("{MARK} returned nothing"))),
     };
-    let application_id = one(c, "PRAGMA application_id", "application_id")?;
-    let version = one(c, "PRAGMA user_version", "user_version")?;
-    let tables = one(c, "SELECT count(*) FROM sqlite_master", "count")?;
     Ok(if application_id == SQLITE_APPLICATION_ID {
         Mark::Ours(version)
     } else if application_id == 0 && version == 0 && tables == 0 {
@@ -312,7 +317,35 @@ fn inspect_sqlite(path: &Path, what: &str) -> Result<(), HistoryError> {
 
 /// Opens (making it if absent or empty) the SQLite history at `path`, migrated up to
 /// `target`: WAL journal, the busy timeout, foreign keys on.
+///
+/// SQLite answers `SQLITE_BUSY` at once, without its busy handler, where waiting inside
+/// the call could deadlock: switching a database another process is making to WAL, or
+/// reading a WAL index another opener is still building. Opening is then tried again,
+/// from the start, until [`BUSY_TIMEOUT`]: processes that open one new database at once
+/// (`history/tests/store.rs`, three writers) all get it, none fails.
 pub(crate) fn open_sqlite(path: &Path, target: i64) -> Result<Conn, HistoryError> {
+    let start = std::time::Instant::now();
+    let mut pause = Duration::from_millis(2);
+    loop {
+        match open_sqlite_once(path, target) {
+            Err(HistoryError::Sqlite(e)) if busy(&e) && start.elapsed() < BUSY_TIMEOUT => {
+                std::thread::sleep(pause);
+                pause = (pause * 2).min(Duration::from_millis(100));
+            }
+            other => return other,
+        }
+    }
+}
+
+/// Whether SQLite refused for another connection's lock (the open may be tried again).
+fn busy(e: &rusqlite::Error) -> bool {
+    matches!(
+        e.sqlite_error_code(),
+        Some(rusqlite::ErrorCode::DatabaseBusy | rusqlite::ErrorCode::DatabaseLocked)
+    )
+}
+
+fn open_sqlite_once(path: &Path, target: i64) -> Result<Conn, HistoryError> {
     let what = path.display().to_string();
     inspect_sqlite(path, &what)?;
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
