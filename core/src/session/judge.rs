@@ -32,7 +32,7 @@ use crate::stage2::{add_held, FitResult, Information, PoseReading, Stage2Model, 
 
 /// Poses at either end a step is not looked for in (too few to tell a step from an
 /// outlier).
-const STEP_EDGE: usize = 3;
+pub(super) const STEP_EDGE: usize = 3;
 
 /// What the readings show beyond the fit's numbers.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -463,4 +463,61 @@ pub fn revisit_fault<T: Real>(
             limit_deg: rule.max_revisit_difference_deg as f32,
         },
     }
+}
+
+/// The step before pose `m` alone (as [`evidence`] weighs each): the shift of every
+/// reading from `poses[m]` on that the fit `fit` leaves most of (rad, x and y) and the
+/// fall of the sum of squared residuals it brings. `None` where its 2×2 system is
+/// singular.
+// A frame of its own: its square matrix leaves the stack when it returns.
+#[inline(never)]
+pub fn step_at<T: Real>(
+    model: &Stage2Model<T>,
+    fit: &FitResult<T>,
+    poses: &[PoseReading<T>],
+    m: usize,
+) -> Option<([T; 2], T)> {
+    let layout = fit.extras.layout();
+    let n = layout.len();
+    let estimate = fit.estimate(&layout);
+    let pass = model.pass(&estimate, &layout);
+    let w = model.y_weight;
+    let d = [T::one(), w];
+    let mut rows = [[T::zero(); MAX_PARAMS]; 2];
+    let mut info = Information::new(n);
+    let mut sj = [[T::zero(); MAX_PARAMS]; 2];
+    let mut sr = [T::zero(); 2];
+    let mut ss = [T::zero(); 2];
+    for (i, pose) in poses.iter().enumerate() {
+        let (reading, _) = model.predict_into(&pass, &layout, &estimate, pose, false, &mut rows);
+        let r = pose.reading.minus(&reading);
+        let r = [r.x_rad, r.y_rad * w];
+        info.add_row(&rows[0], T::zero());
+        info.add_row(&rows[1], T::zero());
+        if i >= m {
+            for a in 0..2 {
+                sr[a] += d[a] * r[a];
+                ss[a] += d[a] * d[a];
+                for (v, j) in sj[a].iter_mut().zip(rows[a].iter()).take(n) {
+                    *v += d[a] * *j;
+                }
+            }
+        }
+    }
+    add_held(&mut info, &fit.extras, fit.prior_noise_rad);
+    let inv = info.invert_in_place()?;
+    let quad = |u: &[T; MAX_PARAMS], v: &[T; MAX_PARAMS]| {
+        let mut acc = T::zero();
+        for i in 0..n {
+            for k in 0..n {
+                acc += u[i] * inv.m[i][k] * v[k];
+            }
+        }
+        acc
+    };
+    let g = [
+        [ss[0] - quad(&sj[0], &sj[0]), -quad(&sj[0], &sj[1])],
+        [-quad(&sj[1], &sj[0]), ss[1] - quad(&sj[1], &sj[1])],
+    ];
+    solve2(g, sr)
 }

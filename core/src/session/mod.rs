@@ -20,6 +20,7 @@ pub mod judge;
 mod left_out;
 mod stage1_joints;
 mod stages01;
+mod step_placed;
 
 /// The reducers' lost motion is the transmission's fact; the session's budget and its
 /// callers state it from here as well.
@@ -352,6 +353,8 @@ pub fn solve<T: Real>(
         stages01::sensor_drift_spec_rad_per_k()
     };
     let mut evidence = None;
+    // The fit the evidence was taken against, for the second look at a step's place.
+    let judged = result.as_ref().ok().or(first_pass.as_ref()).copied();
     if let Some((h, r)) = result.as_ref().ok().or(first_pass.as_ref()) {
         let e = judge::Evidence {
             ramp_explained_rad: judge::thermal_ramp_rad(merged, unmeasured_drift_per_k),
@@ -426,6 +429,23 @@ pub fn solve<T: Real>(
                     &config.refusal,
                 )));
             }
+        }
+    }
+    // A step named from the fit that holds it is placed again by refitting without it
+    // (`step_placed`'s module doc): the fit that holds it cannot tell the place.
+    if let (
+        Err(SessionError::Stage2(FitError::PendantMoved {
+            from_pose,
+            step_deg,
+        })),
+        Some((h, r)),
+    ) = (&mut result, judged.as_ref())
+    {
+        if let Some((m, size)) =
+            step_placed::step_placed(h, merged, r, config, handover_noise_rad, judge::STEP_EDGE)
+        {
+            *from_pose = m;
+            *step_deg = crate::real::rad_to_deg(size).to_f64() as f32;
         }
     }
     SessionOutcome {
