@@ -13,7 +13,7 @@
 //! case <name> stage1 <α> <β> <by> <Δθ2>   stage 1
 //! case <name> fit <Δθ3> <Δθ4> <Δθ5> <Δθ6> stage 2
 //! case <name> <stage> error <Variant> [<params>]   a stage's named refusal
-//! measure <name> ticks <n> stack <bytes>  the measured session solve: ticks, peak stack
+//! measure <name> ticks <n> stack <bytes>  each case's solve: ticks, peak stack
 //! done <cases>
 //! ```
 //!
@@ -40,7 +40,7 @@ pub struct Case {
 }
 
 /// The generated test vectors (`cargo xtask target-test`, never committed): a static
-/// `SESSIONS: [Case; N]` and the name `MEASURED` of the session whose solve is timed.
+/// `SESSIONS: [Case; N]`.
 mod vectors {
     use crate::Case;
     use zerocal_core::model::{Convention, Tilt};
@@ -138,11 +138,8 @@ fn run(case: &Case) {
         closing: None,
     };
     let config = FitConfig::default();
-    let outcome = if name == vectors::MEASURED {
-        measured_solve(name, &readings, &config)
-    } else {
-        session::solve(&readings, &config)
-    };
+    // Every case is measured: the stack budget holds the deepest, refusals included.
+    let outcome = measured_solve(name, &readings, &config);
     if let Some(b) = &outcome.bias {
         hprintln!(
             "case {} stage0 {:?} {:?}",

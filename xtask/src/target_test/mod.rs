@@ -112,6 +112,11 @@ const MEASURED_CASE: &str = "table4";
 const DEGENERATE_CASE: &str = "degenerate";
 const DEGENERATE_ERROR: &str = "RankDeficient j3+j5";
 
+/// The session whose pendant is knocked before pose [`KNOCK_POSE`] (0-based); its
+/// refusal must name that pose (`PendantMoved 12`).
+const KNOCKED_CASE: &str = "knocked";
+const KNOCK_POSE: usize = 12;
+
 /// The QEMU run is killed (and the check fails) after this long. It takes about a
 /// second; the margin is for a loaded 2-core CI machine.
 const QEMU_TIME_LIMIT: Duration = Duration::from_secs(120);
@@ -249,10 +254,27 @@ pub fn run(root: &Path, choice: ToolchainChoice) -> Result<()> {
     let (calibration_instructions, calibration_ticks) = report
         .calibration
         .ok_or_else(|| anyhow!("no `calibrate` line in the target output"))?;
-    let &(solve_ticks, solve_stack_bytes) = report
+    let &(solve_ticks, _) = report
         .measures
         .get(MEASURED_CASE)
         .ok_or_else(|| anyhow!("no `measure {MEASURED_CASE}` line in the target output"))?;
+    // Time is the Table 4 solve's; the stack is the deepest of every case's, refusals
+    // included: a refused session must not overrun the stack a solved one fits in.
+    let missing: Vec<&str> = cases
+        .iter()
+        .map(|c| c.name)
+        .filter(|n| !report.measures.contains_key(*n))
+        .collect();
+    if !missing.is_empty() {
+        bail!("no `measure` line in the target output for {missing:?}");
+    }
+    let (deepest_case, solve_stack_bytes) = report
+        .measures
+        .iter()
+        .map(|(name, &(_, stack))| (name.as_str(), stack))
+        .max_by_key(|&(_, stack)| stack)
+        .ok_or_else(|| anyhow!("no `measure` line in the target output"))?;
+    println!("deepest stack: case {deepest_case}, {solve_stack_bytes} B");
     let solve_instructions =
         ticks_to_instructions(solve_ticks, calibration_instructions, calibration_ticks)?;
     println!(

@@ -124,7 +124,7 @@ pub(super) fn host_results(cases: &[Case]) -> Result<Results> {
             }
         };
         let name = case.name;
-        match (case.expected_error, fit) {
+        match (case.expected_error.as_deref(), fit) {
             (None, Some(Value::Numbers(_))) => {}
             (Some(want), Some(Value::Error(got))) if want == got => {}
             (want, got) => bail!(
