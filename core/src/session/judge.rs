@@ -27,6 +27,7 @@ pub use crate::stage2::refusal::*;
 use super::captures::{first_captures, same_pose};
 use crate::capture::CaptureIndex;
 use crate::error::FitError;
+use crate::plan::MAX_POSES;
 use crate::real::{deg_to_rad, rad_to_deg, Real};
 use crate::stage2::{add_held, FitResult, Information, PoseReading, Stage2Model, MAX_PARAMS};
 
@@ -168,14 +169,32 @@ fn solve2<T: Real>(m: [[T; 2]; 2], v: [T; 2]) -> Option<([T; 2], T)> {
 /// With J the fit's Jacobian and S the new columns, `ΔSSR = rᵀS·(SᵀS − SᵀJ(JᵀJ)⁻¹JᵀS)⁻¹·Sᵀr`
 /// (the residuals are already orthogonal to J at the solution). Rows are weighted as
 /// the fit weighs them.
-// A frame of its own: its square matrices leave the stack when it returns
-// (the pendant's fit is stack-measured on target).
-#[inline(never)]
 pub fn evidence<T: Real>(
     model: &Stage2Model<T>,
     fit: &FitResult<T>,
     poses: &[PoseReading<T>],
     capture_difference: Option<(T, usize)>,
+) -> Evidence<T> {
+    evidence_with_steps(model, fit, poses, capture_difference, None)
+}
+
+/// Each place's step, as [`evidence`] weighs it: the shift of every reading from that
+/// pose on (rad, x and y) and the fall of the sum of squared residuals it brings, by
+/// the first pose after it; zero where no step is looked for.
+pub type StepTable<T> = [([T; 2], T); MAX_POSES];
+
+/// [`evidence`], writing every place's step into `steps` where one is given (the
+/// refusal's second look at a knock, `step_placed`, reads them from here, so that the
+/// pendant carries the step test once).
+// A frame of its own: its square matrices leave the stack when it returns
+// (the pendant's fit is stack-measured on target).
+#[inline(never)]
+pub fn evidence_with_steps<T: Real>(
+    model: &Stage2Model<T>,
+    fit: &FitResult<T>,
+    poses: &[PoseReading<T>],
+    capture_difference: Option<(T, usize)>,
+    mut steps: Option<&mut StepTable<T>>,
 ) -> Evidence<T> {
     let layout = fit.extras.layout();
     let n = layout.len();
@@ -338,6 +357,9 @@ pub fn evidence<T: Real>(
                 ],
             ];
             if let Some((shift, delta)) = solve2(g, suf_r) {
+                if let Some(slot) = steps.as_deref_mut().and_then(|t| t.get_mut(m)) {
+                    *slot = (shift, delta);
+                }
                 if delta > step_delta {
                     step_delta = delta;
                     let f = f_of(delta);
@@ -463,61 +485,4 @@ pub fn revisit_fault<T: Real>(
             limit_deg: rule.max_revisit_difference_deg as f32,
         },
     }
-}
-
-/// The step before pose `m` alone (as [`evidence`] weighs each): the shift of every
-/// reading from `poses[m]` on that the fit `fit` leaves most of (rad, x and y) and the
-/// fall of the sum of squared residuals it brings. `None` where its 2×2 system is
-/// singular.
-// A frame of its own: its square matrix leaves the stack when it returns.
-#[inline(never)]
-pub fn step_at<T: Real>(
-    model: &Stage2Model<T>,
-    fit: &FitResult<T>,
-    poses: &[PoseReading<T>],
-    m: usize,
-) -> Option<([T; 2], T)> {
-    let layout = fit.extras.layout();
-    let n = layout.len();
-    let estimate = fit.estimate(&layout);
-    let pass = model.pass(&estimate, &layout);
-    let w = model.y_weight;
-    let d = [T::one(), w];
-    let mut rows = [[T::zero(); MAX_PARAMS]; 2];
-    let mut info = Information::new(n);
-    let mut sj = [[T::zero(); MAX_PARAMS]; 2];
-    let mut sr = [T::zero(); 2];
-    let mut ss = [T::zero(); 2];
-    for (i, pose) in poses.iter().enumerate() {
-        let (reading, _) = model.predict_into(&pass, &layout, &estimate, pose, false, &mut rows);
-        let r = pose.reading.minus(&reading);
-        let r = [r.x_rad, r.y_rad * w];
-        info.add_row(&rows[0], T::zero());
-        info.add_row(&rows[1], T::zero());
-        if i >= m {
-            for a in 0..2 {
-                sr[a] += d[a] * r[a];
-                ss[a] += d[a] * d[a];
-                for (v, j) in sj[a].iter_mut().zip(rows[a].iter()).take(n) {
-                    *v += d[a] * *j;
-                }
-            }
-        }
-    }
-    add_held(&mut info, &fit.extras, fit.prior_noise_rad);
-    let inv = info.invert_in_place()?;
-    let quad = |u: &[T; MAX_PARAMS], v: &[T; MAX_PARAMS]| {
-        let mut acc = T::zero();
-        for i in 0..n {
-            for k in 0..n {
-                acc += u[i] * inv.m[i][k] * v[k];
-            }
-        }
-        acc
-    };
-    let g = [
-        [ss[0] - quad(&sj[0], &sj[0]), -quad(&sj[0], &sj[1])],
-        [-quad(&sj[1], &sj[0]), ss[1] - quad(&sj[1], &sj[1])],
-    ];
-    solve2(g, sr)
 }

@@ -353,8 +353,9 @@ pub fn solve<T: Real>(
         stages01::sensor_drift_spec_rad_per_k()
     };
     let mut evidence = None;
-    // The fit the evidence was taken against, for the second look at a step's place.
-    let judged = result.as_ref().ok().or(first_pass.as_ref()).copied();
+    // The fault the rule names, if any; the session's result becomes it at the end,
+    // once its place (a knock's) is taken against the fit it was found in.
+    let mut fault = None;
     if let Some((h, r)) = result.as_ref().ok().or(first_pass.as_ref()) {
         let e = judge::Evidence {
             ramp_explained_rad: judge::thermal_ramp_rad(merged, unmeasured_drift_per_k),
@@ -389,9 +390,7 @@ pub fn solve<T: Real>(
         } else {
             None
         };
-        if let Some(fault) = named.or(verdict.err()) {
-            result = Err(SessionError::Stage2(fault));
-        }
+        fault = named.or(verdict.err());
         evidence = Some(e);
     } else if let Err(SessionError::Stage2(_)) = result {
         // The fit failed: the captures' difference needs no model (a bracket that
@@ -400,20 +399,17 @@ pub fn solve<T: Real>(
             capture_difference: captures,
             ..judge::Evidence::default()
         };
-        if let Err(fault) = judge::judge(&e, &config.refusal, T::zero()) {
-            result = Err(SessionError::Stage2(fault));
-        }
+        fault = judge::judge(&e, &config.refusal, T::zero()).err();
     }
     // A pose visited twice that reads differently: the pendant moved on the flange
     // between the visits. It needs no model, so it is judged where the evidence named
     // nothing, and where the fit failed (a bracket that creeps can drag a fit into no
     // convergence, and the refusal must name the bracket, not the fit); a step the
     // evidence found is named where it happened.
+    // Only the rule names these (the fit and stages 0-1 never do).
     let named_move = matches!(
-        result,
-        Err(SessionError::Stage2(
-            FitError::PendantMoved { .. } | FitError::CapturesDisagree { .. }
-        ))
+        fault,
+        Some(FitError::PendantMoved { .. } | FitError::CapturesDisagree { .. })
     );
     if !named_move {
         if let Some((pose, revisit, d)) = judge::revisit_difference(
@@ -423,30 +419,22 @@ pub fn solve<T: Real>(
         ) {
             let limit = config.refusal.max_revisit_difference_deg;
             if limit.is_finite() && d > crate::real::deg_to_rad(T::lit(limit)) {
-                result = Err(SessionError::Stage2(judge::revisit_fault(
+                fault = Some(judge::revisit_fault(
                     evidence.as_ref(),
                     (pose, revisit, d),
                     &config.refusal,
-                )));
+                ));
             }
         }
     }
-    // A step named from the fit that holds it is placed again by refitting without it
-    // (`step_placed`'s module doc): the fit that holds it cannot tell the place.
-    if let (
-        Err(SessionError::Stage2(FitError::PendantMoved {
-            from_pose,
-            step_deg,
-        })),
-        Some((h, r)),
-    ) = (&mut result, judged.as_ref())
-    {
-        if let Some((m, size)) =
-            step_placed::step_placed(h, merged, r, config, handover_noise_rad, judge::STEP_EDGE)
-        {
-            *from_pose = m;
-            *step_deg = crate::real::rad_to_deg(size).to_f64() as f32;
-        }
+    if let Some(f) = fault {
+        // A knock named from the fit that holds it is placed again by refitting
+        // without it (`step_placed`'s module doc).
+        let f = match result.as_ref().ok().or(first_pass.as_ref()) {
+            Some((h, r)) => step_placed::placed(f, h, merged, r, config, handover_noise_rad),
+            None => f,
+        };
+        result = Err(SessionError::Stage2(f));
     }
     SessionOutcome {
         bias: bias_t.map(|b| b.bias),

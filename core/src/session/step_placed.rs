@@ -14,9 +14,13 @@
 //! elsewhere). It costs a few fits per place, so it runs only on the way to
 //! that refusal, over the places whose fall is near the largest.
 
-use super::judge::step_at;
+use super::judge::{evidence_with_steps, StepTable};
 use super::Handover;
+use crate::error::FitError;
 use crate::plan::MAX_POSES;
+
+// The candidates are bits of a u64.
+const _: () = assert!(MAX_POSES <= 64);
 use crate::real::Real;
 use crate::stage2::{fit, FitConfig, FitResult, PoseReading};
 
@@ -29,20 +33,24 @@ const REFITS: usize = 3;
 
 /// The residual RMS of the session fitted with the readings from `m` on taken back by
 /// the step found there (refitted [`REFITS`] times) and that step's size (rad), `None`
-/// where a fit fails.
+/// where a fit fails. `steps` is scratch for the step test's table.
 fn stepped_rms<T: Real>(
     h: &Handover<T>,
     poses: &[PoseReading<T>],
     m: usize,
     config: &FitConfig<T>,
     first: &FitResult<T>,
+    steps: &mut StepTable<T>,
 ) -> Option<(T, T)> {
     let mut shift = [T::zero(); 2];
     let mut current = *first;
     let mut taken: heapless::Vec<PoseReading<T>, MAX_POSES> = heapless::Vec::new();
-    taken.extend_from_slice(poses).ok()?;
+    for p in poses {
+        taken.push(*p).ok()?;
+    }
     for _ in 0..REFITS {
-        let (s, _) = step_at(&h.model, &current, &taken, m)?;
+        evidence_with_steps(&h.model, &current, &taken, None, Some(steps));
+        let (s, _) = steps.get(m)?;
         shift[0] += s[0];
         shift[1] += s[1];
         for (q, p) in taken.iter_mut().zip(poses).skip(m) {
@@ -58,10 +66,10 @@ fn stepped_rms<T: Real>(
 }
 
 /// The place of the step (the first pose after it, 0-based, fitted order) whose refit
-/// leaves the smallest residuals and the step's size there (rad), among the places at
-/// least `edge` poses from either end whose fall against `first` (the fit that holds
-/// the step) is near the largest, run as the session's stage 2 was (`config` with the
-/// hand-over `h` and its noise per reading); `None` where no place could be refitted.
+/// leaves the smallest residuals and the step's size there (rad), among the places
+/// whose fall against `first` (the fit that holds the step) is near the largest, run
+/// as the session's stage 2 was (`config` with the hand-over `h` and its noise per
+/// reading); `None` where no place could be refitted.
 #[inline(never)]
 pub fn step_placed<T: Real>(
     h: &Handover<T>,
@@ -69,7 +77,6 @@ pub fn step_placed<T: Real>(
     first: &FitResult<T>,
     config: &FitConfig<T>,
     handover_noise_rad: T,
-    edge: usize,
 ) -> Option<(usize, T)> {
     let config = FitConfig {
         model_covariance: h.covariance,
@@ -77,16 +84,21 @@ pub fn step_placed<T: Real>(
         max_residual_rms_rad: T::zero(),
         ..*config
     };
-    let falls: heapless::Vec<(usize, T), MAX_POSES> = (edge..=poses.len().saturating_sub(edge))
-        .filter_map(|m| Some((m, step_at(&h.model, first, poses, m)?.1)))
-        .collect();
-    let largest = falls.iter().fold(T::zero(), |a, &(_, d)| a.max(d));
-    let mut best: Option<(T, usize, T)> = None;
-    for &(m, fall) in &falls {
-        if fall < largest * T::lit(NEAR_LARGEST) {
-            continue;
+    let mut steps: StepTable<T> = [([T::zero(); 2], T::zero()); MAX_POSES];
+    evidence_with_steps(&h.model, first, poses, None, Some(&mut steps));
+    // Places the step test does not look at keep a fall of 0.
+    let largest = steps.iter().fold(T::zero(), |a, &(_, d)| a.max(d));
+    // The candidates, one bit a place (MAX_POSES ≤ 64): the table is scratch for the
+    // refits that follow.
+    let mut candidates = 0u64;
+    for (m, &(_, fall)) in steps.iter().enumerate() {
+        if fall > T::zero() && fall >= largest * T::lit(NEAR_LARGEST) {
+            candidates |= 1 << m;
         }
-        let Some((rms, size)) = stepped_rms(h, poses, m, &config, first) else {
+    }
+    let mut best: Option<(T, usize, T)> = None;
+    for m in (0..MAX_POSES).filter(|m| candidates & (1 << m) != 0) {
+        let Some((rms, size)) = stepped_rms(h, poses, m, &config, first, &mut steps) else {
             continue;
         };
         if best.is_none_or(|(b, _, _)| rms < b) {
@@ -94,4 +106,26 @@ pub fn step_placed<T: Real>(
         }
     }
     best.map(|(_, m, size)| (m, size))
+}
+
+/// `fault`, with a knock's place and size taken again by [`step_placed`] against the fit
+/// `first` (the session's, holding the knock) where the fault is the pendant moving.
+pub fn placed<T: Real>(
+    fault: FitError,
+    h: &Handover<T>,
+    poses: &[PoseReading<T>],
+    first: &FitResult<T>,
+    config: &FitConfig<T>,
+    handover_noise_rad: T,
+) -> FitError {
+    let FitError::PendantMoved { .. } = fault else {
+        return fault;
+    };
+    match step_placed(h, poses, first, config, handover_noise_rad) {
+        Some((from_pose, size_rad)) => FitError::PendantMoved {
+            from_pose,
+            step_deg: crate::real::rad_to_deg(size_rad).to_f64() as f32,
+        },
+        None => fault,
+    }
 }

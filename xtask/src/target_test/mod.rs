@@ -129,7 +129,7 @@ const VECTORS_VAR: &str = "ZEROCAL_TARGET_TEST_VECTORS";
 pub struct Figures {
     /// Instructions of one 30-pose `f32` fit.
     pub solve_instructions: u64,
-    /// Peak stack of that fit (bytes).
+    /// Peak stack of the deepest case's session solve, refusals included (bytes).
     pub solve_stack_bytes: u64,
     /// Release firmware's flash (bytes).
     pub flash_bytes: u64,
@@ -151,7 +151,7 @@ impl Figures {
                 "instructions",
             ),
             (
-                "30-pose f32 fit peak stack",
+                "f32 session solve peak stack (deepest case)",
                 self.solve_stack_bytes,
                 budgets.solve_stack_bytes,
                 "bytes",
