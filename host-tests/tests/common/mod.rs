@@ -1,6 +1,8 @@
 //! Helpers shared by the scenario tests.
 #![allow(dead_code)] // each test binary uses its own subset
 
+pub mod rates;
+
 /// One profile per controller family: the real-arm and refusal-rule tests run on these.
 pub const FAMILY_PROFILES: [&str; 6] = [
     "kuka-kr6-r900-sixx",
