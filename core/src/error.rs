@@ -354,8 +354,9 @@ pub enum StageError {
         /// Readings taken.
         got: u8,
     },
-    /// The headings span too little of a turn to find the circle's centre: the bias
-    /// would be known far worse than from headings a quarter turn apart.
+    /// The readings do not show their headings well enough to find the circle's centre
+    /// (turned too little, or a bench so level that the circle is lost in the noise):
+    /// the bias would be known far worse than from headings a quarter turn apart.
     HeadingsTooClose {
         /// The bias's variance in units of one reading's noise variance.
         variance_factor: f32,
@@ -404,7 +405,7 @@ impl fmt::Display for StageError {
                 limit,
             } => write!(
                 f,
-                "the bench headings span too little of a turn (bias variance {} readings' noise, limit {}): turn the pendant about a quarter turn by hand between readings, and read it again",
+                "the bench readings do not show their headings (bias variance {} readings' noise, limit {}): turn a quarter turn between readings; tilt a level bench 0.1 deg",
                 Fixed::new(f64::from(variance_factor), 1),
                 Fixed::new(f64::from(limit), 1)
             ),
