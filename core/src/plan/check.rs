@@ -38,6 +38,10 @@ use core::fmt;
 /// CLI's tests hold it).
 pub const CHECK_POSES: usize = 5;
 
+/// The fewest poses a check can be designed on: two readings a pose against its five
+/// unknowns (the four offsets and the x bias the comparison estimates with them).
+pub const MIN_CHECK_POSES: usize = (WRIST_JOINTS + 1).div_ceil(2);
+
 /// Relative margin by which a pose must beat the lower-indexed best so far to be
 /// picked instead (of log det, which is O(1..10)): far above `f32` rounding of the
 /// criterion (~1e-6), far below the gaps between a plan's distinct poses.
@@ -239,18 +243,17 @@ fn jacobian_condition<T: Real>(m: &OffsetGram<T>) -> T {
 /// recomputed at each pick (one pose's Jacobian is a few dozen multiplications).
 ///
 /// # Errors
-/// A plan of fewer than two poses (two readings a pose, four offsets) or more than 256;
+/// A plan of fewer than [`MIN_CHECK_POSES`] or more than 256 poses;
 /// a pose with no finite prediction (naming it); chosen poses whose condition number
 /// exceeds [`MAX_CHECK_CONDITION`].
 pub fn check_poses<T: Real>(
     model: &Stage2Model<T>,
     plan: &[[T; JOINTS]],
 ) -> Result<(CheckPoses, T), CheckPlanError> {
-    let min = (WRIST_JOINTS + 1).div_ceil(2);
-    if plan.len() < min {
+    if plan.len() < MIN_CHECK_POSES {
         return Err(CheckPlanError::TooFewPoses {
             got: plan.len(),
-            min,
+            min: MIN_CHECK_POSES,
         });
     }
     if plan.len() > usize::from(u8::MAX) + 1 {

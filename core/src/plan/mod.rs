@@ -39,7 +39,7 @@ pub mod stage1;
 
 pub use check::{
     check_model, check_poses, CheckPlanError, CheckPoses, CHECK_POSES, MAX_CHECK_CONDITION,
-    NEAR_BEST_LOG_DET, TIE_RELATIVE,
+    MIN_CHECK_POSES, NEAR_BEST_LOG_DET, TIE_RELATIVE,
 };
 
 pub use design::Candidate;

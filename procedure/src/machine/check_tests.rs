@@ -152,7 +152,10 @@ fn a_plan_too_short_for_a_check_is_named() {
     assert_eq!(
         b.s.view().notice,
         Some(Notice::NoCheck(
-            zerocal_core::plan::CheckPlanError::TooFewPoses { got: 1, min: 2 }
+            zerocal_core::plan::CheckPlanError::TooFewPoses {
+                got: 1,
+                min: zerocal_core::plan::MIN_CHECK_POSES
+            }
         ))
     );
 }
