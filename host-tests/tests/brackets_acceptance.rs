@@ -85,11 +85,7 @@ fn run_all(world: &WorldConfig, seed: u64, accept: impl Fn(&str, &Summary)) -> V
 
 /// Every joint within 0.005° in at least 95 % of the sessions of the six arms pooled.
 fn pooled_all_within_95(summaries: &[Summary]) {
-    let within: usize = summaries
-        .iter()
-        .map(|s| rates::count_of(s.all_within, s.sessions))
-        .sum();
-    let sessions: usize = summaries.iter().map(|s| s.sessions).sum();
+    let (within, sessions) = rates::pooled_all_within(summaries);
     println!("pooled: every joint within 0.005 deg in {within}/{sessions}");
     assert!(
         rates::consistent_with_at_least(within, sessions, 0.95),

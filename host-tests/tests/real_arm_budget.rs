@@ -130,11 +130,7 @@ fn acceptance(world: &WorldConfig, what: &str, seed: u64, bounds: &Bounds) {
     // The same claims on the arms held to them, pooled: a budget a little short on
     // every arm, or a stack of worst cases, shows here though no one arm's 200
     // sessions can tell it (`common::rates`).
-    let within: usize = held
-        .iter()
-        .map(|s| rates::count_of(s.all_within, s.sessions))
-        .sum();
-    let sessions: usize = held.iter().map(|s| s.sessions).sum();
+    let (within, sessions) = rates::pooled_all_within(&held);
     println!("  pooled over the arms held: within 0.005 deg {within}/{sessions}");
     if !rates::consistent_with_at_least(within, sessions, bounds.within) {
         failures.push(format!("pooled: within 0.005 deg {within}/{sessions}"));

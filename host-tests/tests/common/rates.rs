@@ -74,6 +74,17 @@ pub fn all_within_at_least(s: &Summary, p: f64) -> bool {
     consistent_with_at_least(count_of(s.all_within, s.sessions), s.sessions, p)
 }
 
+/// The sessions with every joint within its limit, pooled over several arms'
+/// summaries: (within, sessions).
+pub fn pooled_all_within<'a>(summaries: impl IntoIterator<Item = &'a Summary>) -> (usize, usize) {
+    summaries.into_iter().fold((0, 0), |(within, sessions), s| {
+        (
+            within + count_of(s.all_within, s.sessions),
+            sessions + s.sessions,
+        )
+    })
+}
+
 /// Each joint's coverage pooled over several arms' summaries: (covered, solved).
 pub fn pooled_coverage<'a>(
     summaries: impl IntoIterator<Item = &'a Summary>,
