@@ -53,6 +53,11 @@ enum Command {
     /// flash and static RAM use; saved in docs/measured/firmware-TOOLCHAIN.txt (every
     /// command that builds the firmware saves it), which `figures` writes the docs from.
     Firmware,
+    /// Build the release firmware and print where its flash and static RAM go: one row
+    /// per crate (per module for zerocal's own), from the ELF's symbols, against the
+    /// plan's ceilings (docs/flash-plan.md); saved in docs/measured/size-TOOLCHAIN.txt
+    /// (every firmware build saves it).
+    Size,
     /// Build the release firmware and write target/dfu/zerocal.dfu, a DfuSe image for
     /// the STM32's ROM bootloader (`dfu-util -a 0 -D zerocal.dfu`): the vector table and
     /// the program as two elements, the calibration store left alone. Reads the file
@@ -196,6 +201,7 @@ fn main() -> Result<()> {
     match cli.command {
         Command::Setup => toolchain::setup(cli.toolchain).and_then(|()| postgres::setup()),
         Command::Firmware => firmware(cli.toolchain),
+        Command::Size => size_table(cli.toolchain),
         Command::Dfu => dfu::run(&repo_root(), cli.toolchain).map(|_| ()),
         Command::Dist => dist::run(&repo_root(), cli.toolchain),
         Command::CoreThumb => core_thumb(cli.toolchain),
@@ -269,6 +275,19 @@ fn firmware(choice: ToolchainChoice) -> Result<()> {
     Ok(())
 }
 
+fn size_table(choice: ToolchainChoice) -> Result<()> {
+    let built = build_firmware(&repo_root(), choice)?;
+    println!("firmware toolchain: {}", built.toolchain.describe());
+    println!("{}", built.usage.report(&built.capacity));
+    println!("{:<44} {:>9} {:>9}", "crate or module", "flash B", "RAM B");
+    for (name, flash, ram) in built.sizes.by_flash() {
+        println!("{name:<44} {flash:>9} {ram:>9}");
+    }
+    let (flash, ram) = built.sizes.totals();
+    println!("{:<44} {flash:>9} {ram:>9}", "total");
+    Ok(())
+}
+
 /// A release firmware build and what it takes.
 struct FirmwareBuild {
     /// The toolchain that built it.
@@ -277,6 +296,8 @@ struct FirmwareBuild {
     elf: PathBuf,
     /// Its flash and static RAM.
     usage: size::MemoryUsage,
+    /// The same, by crate and module.
+    sizes: size::ModuleSizes,
     /// The capacities of `memory.x`.
     capacity: size::MemoryCapacity,
 }
@@ -303,6 +324,38 @@ fn build_firmware(root: &Path, choice: ToolchainChoice) -> Result<FirmwareBuild>
         .join("zerocal-firmware");
     let capacity = size::MemoryCapacity::from_memory_x(&root.join("memory.x"))?;
     let usage = size::MemoryUsage::of_elf(&elf)?;
+    let sizes = size::ModuleSizes::of_elf(&elf)?;
+    if sizes.totals() != (usage.flash_bytes, usage.ram_bytes) {
+        anyhow::bail!(
+            "{}: the symbols' rows add up to {:?} bytes (flash, RAM), the sections to {:?}",
+            elf.display(),
+            sizes.totals(),
+            (usage.flash_bytes, usage.ram_bytes)
+        );
+    }
+    // The difference from the committed measurement: what this change costs.
+    for (key, now) in [
+        ("flash_bytes", usage.flash_bytes),
+        ("static_ram_bytes", usage.ram_bytes),
+    ] {
+        match measured::committed(root, "firmware", toolchain.kind).and_then(|m| m.count(key)) {
+            Ok(before) => println!(
+                "firmware {key}: {now} here, {before} committed ({:+} B)",
+                i128::from(now) - i128::from(before)
+            ),
+            Err(e) => println!("firmware {key}: {now} here, no committed figure ({e:#})"),
+        }
+    }
+    measured::save(
+        root,
+        "size",
+        toolchain.kind,
+        &toolchain.describe(),
+        &size::measured_rows(&sizes)
+            .iter()
+            .map(|(k, v)| (k.as_str(), v.clone()))
+            .collect::<Vec<_>>(),
+    )?;
     measured::save(
         root,
         "firmware",
@@ -319,6 +372,7 @@ fn build_firmware(root: &Path, choice: ToolchainChoice) -> Result<FirmwareBuild>
         toolchain: toolchain.clone(),
         elf,
         usage,
+        sizes,
         capacity,
     })
 }

@@ -61,6 +61,26 @@ pub fn save(
     Ok(())
 }
 
+/// The measurement of `command` with `kind` as the checked-out commit holds it
+/// (`git show HEAD:docs/measured/…`), whatever a build since wrote over the file.
+///
+/// # Errors
+/// Not a git checkout, or the file not committed.
+pub fn committed(root: &Path, command: &str, kind: ToolchainKind) -> Result<Measured> {
+    let file = path(root, command, kind);
+    let relative = format!("{DIR}/{command}-{}.txt", kind_name(kind));
+    let output = std::process::Command::new("git")
+        .arg("-C")
+        .arg(root)
+        .args(["show", &format!("HEAD:{relative}")])
+        .output()
+        .context("running git show")?;
+    if !output.status.success() {
+        anyhow::bail!("{relative} is not committed at HEAD");
+    }
+    Measured::parse(&String::from_utf8_lossy(&output.stdout), file)
+}
+
 /// A saved measurement.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Measured {
@@ -120,6 +140,14 @@ impl Measured {
             .get(key)
             .map(String::as_str)
             .ok_or_else(|| anyhow!("{}: no '{key}'", self.file.display()))
+    }
+
+    /// Every `key value` whose key starts with `prefix`, the prefix taken off, in key
+    /// order.
+    pub fn with_prefix<'a>(&'a self, prefix: &'a str) -> impl Iterator<Item = (&'a str, &'a str)> {
+        self.values
+            .iter()
+            .filter_map(move |(k, v)| Some((k.strip_prefix(prefix)?, v.as_str())))
     }
 
     /// The value of `key` as a count.

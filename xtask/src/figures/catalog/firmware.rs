@@ -7,7 +7,7 @@ use anyhow::Result;
 use super::Figure;
 use crate::figures::sources::Sources;
 use crate::measured::{kind_name, Measured};
-use crate::target_test::budgets;
+use crate::target_test::BUDGETS;
 use crate::toolchain::ToolchainKind;
 
 /// The toolchains, in the tables' order.
@@ -84,28 +84,28 @@ pub const FIRMWARE_TABLE: Figure = Figure {
             format!(
                 "{} (budget {} B)",
                 shown(&m.firmware, "flash_bytes", " B"),
-                thousands(budgets(m.kind).flash_bytes)
+                thousands(BUDGETS.flash_bytes)
             )
         }));
         t.push_str(&row("firmware static RAM", &|m| {
             format!(
                 "{} (budget {} B)",
                 shown(&m.firmware, "static_ram_bytes", " B"),
-                thousands(budgets(m.kind).static_ram_bytes)
+                thousands(BUDGETS.static_ram_bytes)
             )
         }));
         t.push_str(&row("30-pose fit, instructions", &|m| {
             format!(
                 "{} (budget {})",
                 shown(&m.target, "solve_instructions", ""),
-                thousands(budgets(m.kind).solve_instructions)
+                thousands(BUDGETS.solve_instructions)
             )
         }));
         t.push_str(&row("30-pose fit, peak stack", &|m| {
             format!(
                 "{} (budget {} B)",
                 shown(&m.target, "solve_stack_bytes", " B"),
-                thousands(budgets(m.kind).solve_stack_bytes)
+                thousands(BUDGETS.solve_stack_bytes)
             )
         }));
         t.push_str(&row("target's f32 against the host's f64", &|m| match &m.target {
@@ -142,34 +142,27 @@ pub const ON_TARGET: Figure = Figure {
                 .collect::<Vec<_>>()
                 .join("; ")
         };
-        let budget = |f: &dyn Fn(ToolchainKind) -> u64, unit: &str| {
-            let (r, d) = (f(ToolchainKind::Rustup), f(ToolchainKind::Debian));
-            if r == d {
-                format!("{}{unit}", thousands(d))
-            } else {
-                format!("rustup: {}{unit}; debian: {}{unit}", thousands(r), thousands(d))
-            }
-        };
+        let budget = |v: u64, unit: &str| format!("{}{unit}", thousands(v));
         let mut t = String::from("| figure | measured | budget |\n| --- | --- | --- |\n");
         t.push_str(&format!(
             "| one 30-pose f32 fit (Table 4), instructions (`-icount shift=0`, SysTick) | {} | {} |\n",
             both(&|m| shown(&m.target, "solve_instructions", "")),
-            budget(&|k| budgets(k).solve_instructions, "")
+            budget(BUDGETS.solve_instructions, "")
         ));
         t.push_str(&format!(
             "| its peak stack (stack painting) | {} | {} |\n",
             both(&|m| shown(&m.target, "solve_stack_bytes", " B")),
-            budget(&|k| budgets(k).solve_stack_bytes, " B")
+            budget(BUDGETS.solve_stack_bytes, " B")
         ));
         t.push_str(&format!(
             "| release firmware flash | {} | {} |\n",
             both(&|m| shown(&m.firmware, "flash_bytes", " B")),
-            budget(&|k| budgets(k).flash_bytes, " B")
+            budget(BUDGETS.flash_bytes, " B")
         ));
         t.push_str(&format!(
             "| release firmware static RAM | {} | {} |\n",
             both(&|m| shown(&m.firmware, "static_ram_bytes", " B")),
-            budget(&|k| budgets(k).static_ram_bytes, " B")
+            budget(BUDGETS.static_ram_bytes, " B")
         ));
         t.push_str(&format!(
             "| the target's f32 against the host's f64, worst | {} | {} deg |\n",
@@ -181,6 +174,90 @@ pub const ON_TARGET: Figure = Figure {
                 .find_map(|m| m.target.as_ref().ok())
                 .and_then(|t| t.get("tolerance_deg").ok())
                 .unwrap_or("?")
+        ));
+        Ok(t)
+    },
+};
+
+/// Rows of the size table shown one by one: every zerocal module, and any other crate of
+/// at least this many flash bytes on either toolchain; the rest are summed.
+const SIZE_ROW_MIN_BYTES: u64 = 1024;
+
+/// Where each toolchain's flash and static RAM go, crate by crate (flash-plan.md).
+pub const FIRMWARE_SIZE_TABLE: Figure = Figure {
+    name: "firmware-size-table",
+    command:
+        "cargo xtask --toolchain rustup|debian size (its saved measurements in docs/measured/)",
+    make: |s| {
+        let sizes: Vec<(ToolchainKind, Result<Measured>)> = KINDS
+            .iter()
+            .map(|&kind| (kind, s.measured("size", kind)))
+            .collect();
+        // Row name -> [flash, RAM] per toolchain, in KINDS order.
+        let mut rows: std::collections::BTreeMap<String, [[u64; 2]; 2]> = Default::default();
+        for (i, (_, measured)) in sizes.iter().enumerate() {
+            let Ok(m) = measured else { continue };
+            for (column, prefix) in [(0, "flash:"), (1, "ram:")] {
+                for (name, value) in m.with_prefix(prefix) {
+                    let bytes: u64 = value.parse().map_err(|_| {
+                        anyhow::anyhow!("{}: '{prefix}{name}' is not a count", m.file.display())
+                    })?;
+                    let name = if name.starts_with('(') {
+                        name.replace('_', " ")
+                    } else {
+                        format!("`{name}`")
+                    };
+                    rows.entry(name).or_default()[i][column] = bytes;
+                }
+            }
+        }
+        let mut shown: Vec<(String, [[u64; 2]; 2])> = Vec::new();
+        let mut rest = [[0u64; 2]; 2];
+        let mut rest_count = 0;
+        for (name, v) in rows {
+            if name.starts_with("`zerocal") || v[0][0].max(v[1][0]) >= SIZE_ROW_MIN_BYTES {
+                shown.push((name, v));
+            } else {
+                rest_count += 1;
+                for (r, x) in rest.iter_mut().zip(v) {
+                    r[0] += x[0];
+                    r[1] += x[1];
+                }
+            }
+        }
+        shown.sort_by(|a, b| b.1[0][0].cmp(&a.1[0][0]).then(a.0.cmp(&b.0)));
+        shown.push((format!("{rest_count} other crates and symbols"), rest));
+        let heading =
+            |kind: ToolchainKind| match &sizes[usize::from(kind == ToolchainKind::Debian)].1 {
+                Ok(m) => format!("{} ({})", kind_name(kind), m.toolchain),
+                Err(_) => format!("{} (not measured)", kind_name(kind)),
+            };
+        let mut t = format!(
+            "| crate or module | flash, {} | flash, {} | static RAM, {} |\n| --- | ---: | ---: | ---: |\n",
+            heading(KINDS[0]),
+            heading(KINDS[1]),
+            kind_name(KINDS[0])
+        );
+        let mut total = [[0u64; 2]; 2];
+        for (name, v) in &shown {
+            for (t, x) in total.iter_mut().zip(v) {
+                t[0] += x[0];
+                t[1] += x[1];
+            }
+            t.push_str(&format!(
+                "| {name} | {} | {} | {} |\n",
+                thousands(v[0][0]),
+                thousands(v[1][0]),
+                thousands(v[0][1])
+            ));
+        }
+        t.push_str(&format!(
+            "| **total** (ceilings: {} B flash, {} B static RAM) | **{}** | **{}** | **{}** |\n",
+            thousands(BUDGETS.flash_bytes),
+            thousands(BUDGETS.static_ram_bytes),
+            thousands(total[0][0]),
+            thousands(total[1][0]),
+            thousands(total[0][1])
         ));
         Ok(t)
     },

@@ -8,7 +8,7 @@ use super::firmware::{saved, thousands};
 use super::{number, range, rows, Figure};
 use crate::figures::sources::Sources;
 use crate::measured::kind_name;
-use crate::target_test::budgets;
+use crate::target_test::BUDGETS;
 
 /// The six families' profiles of the pendant's acceptance.
 const FAMILIES: [&str; 6] = [
@@ -184,10 +184,10 @@ pub const FIRMWARE_HEADLINE: Figure = Figure {
     make: |s| {
         let mut parts = Vec::new();
         for m in saved(s) {
-            let b = budgets(m.kind);
+            let b = BUDGETS;
             parts.push(match &m.firmware {
                 Ok(f) => format!(
-                    "{} ({}): {} B / {} B (budgets {} KiB flash, {} KiB static RAM)",
+                    "{} ({}): {} B / {} B (ceilings {} KiB flash, {} KiB static RAM)",
                     kind_name(m.kind),
                     f.toolchain,
                     thousands(f.count("flash_bytes")?),

@@ -125,6 +125,7 @@ pub static CATALOG: &[Figure] = &[
     sim::PENDANT_SIM_SESSION,
     firmware::FIRMWARE_TABLE,
     firmware::ON_TARGET,
+    firmware::FIRMWARE_SIZE_TABLE,
     headline::REAL_ARM_HEADLINE,
     headline::TCP_HEADLINE,
     headline::PENDANT_EFFECTS_HEADLINE,
