@@ -4,8 +4,8 @@
 //! - no import circle between the top-level modules of a crate (a module imports
 //!   another through `crate::name`; a circle means two ideas that cannot be read apart);
 //! - no Rust source file over [`MAX_SOURCE_LINES`] lines;
-//! - README's repository map names every top-level directory, and nothing the tree
-//!   lacks;
+//! - the repository map (docs/repository.md, linked from the README) names every
+//!   top-level directory, and nothing the tree lacks;
 //! - no file refers to the notes beside the repository (the parent directory's shared
 //!   folder): a user's clone has none of them.
 
@@ -242,12 +242,13 @@ fn nothing_refers_to_the_notes_beside_the_repository() {
     );
 }
 
-/// The paths README's "Repository" table names (the code spans of its first column).
-fn readme_map(readme: &str) -> BTreeSet<String> {
-    let Some(start) = readme.find("## Repository") else {
+/// The paths docs/repository.md's "Repository" table names (the code spans of its first
+/// column).
+fn repository_map(page: &str) -> BTreeSet<String> {
+    let Some(start) = page.find("# Repository") else {
         return BTreeSet::new();
     };
-    let section = &readme[start..];
+    let section = &page[start..];
     let end = section[3..].find("\n## ").map_or(section.len(), |i| i + 3);
     section[..end]
         .lines()
@@ -265,10 +266,10 @@ fn readme_map(readme: &str) -> BTreeSet<String> {
 }
 
 #[test]
-fn the_readme_map_matches_the_tree() {
+fn the_repository_map_matches_the_tree() {
     let root = repo_root();
-    let readme = fs::read_to_string(root.join("README.md")).unwrap();
-    let named = readme_map(&readme);
+    let page = fs::read_to_string(root.join("docs/repository.md")).unwrap();
+    let named = repository_map(&page);
     // Every directory of the repository (build output, git and editor folders aside) and
     // every file the table names.
     let mut dirs: BTreeSet<String> = fs::read_dir(&root)
@@ -290,10 +291,13 @@ fn the_readme_map_matches_the_tree() {
         })
         .collect();
     let missing: Vec<&String> = dirs.iter().filter(|d| !tops.contains(*d)).collect();
-    assert!(missing.is_empty(), "README's map lacks {missing:?}");
+    assert!(
+        missing.is_empty(),
+        "docs/repository.md's map lacks {missing:?}"
+    );
     let stale: Vec<&String> = named.iter().filter(|n| !root.join(n).exists()).collect();
     assert!(
         stale.is_empty(),
-        "README's map names {stale:?}, which the tree lacks"
+        "docs/repository.md's map names {stale:?}, which the tree lacks"
     );
 }

@@ -6,7 +6,8 @@
 //! first session's certificate (as found and as left, issued by
 //! `cli/tests/golden/issuer.toml`) printed by headless Chromium with every number
 //! checked in the PDF. `--write-docs` copies the A3 plot and the certificate's first
-//! page to the docs (the README shows them). Every command it runs is printed first.
+//! page to the docs (docs/history.md and docs/certificate.md show them). Every command it
+//! runs is printed first.
 
 use std::fs;
 use std::path::{Path, PathBuf};

@@ -1,5 +1,5 @@
-//! The README's headline figures: one line each, read from the same outputs as the
-//! tables in docs/ (the tests' printed tables, the firmware's saved measurements), so
+//! The headline figures (README and docs/figures.md): one line each, read from the same
+//! outputs as the tables in docs/ (the tests' printed tables, the firmware's saved measurements), so
 //! the summary and the table cannot disagree.
 
 use anyhow::{anyhow, bail, Result};
