@@ -1,6 +1,6 @@
 //! The headline figures (README and docs/figures.md): one line each, read from the same
-//! outputs as the tables in docs/ (the tests' printed tables, the firmware's saved measurements), so
-//! the summary and the table cannot disagree.
+//! outputs as the tables in docs/ (the tests' printed tables, the firmware's saved
+//! measurements), so the summary and the table cannot disagree.
 
 use anyhow::{anyhow, bail, Result};
 
