@@ -196,10 +196,11 @@ fn a_creeping_bracket_is_named_where_it_matters() {
 /// the budget's 95 % (`common::rates`), the six profiles pooled at each size (240
 /// sessions) and each profile alone (40: a gross failure only); no session is refused
 /// under another name. Measured: the standard rule names every session at 0.05 and
-/// 0.075°, and 198 of 240 at 0.02° (a revisit, or the move's step); with the rule off
-/// (`RefusalRule::OFF`) j2 is named or covered in 173 of 240 at 0.075°. The sessions with
+/// 0.075°, and 194 of 240 at 0.02° (a revisit, or the move's step); with its limits for
+/// a moving bracket raised to 1° the UR5e's j2 is covered in 29 of 40 at 0.05°, and
+/// some sessions are refused as a bench not turned on the spot. The sessions with
 /// every joint covered at once are printed, not judged: the budget's claim is per joint
-/// (a tight bracket leaves 219 of 240).
+/// (on a tight bracket 219 of 240 sessions had every joint covered).
 #[test]
 fn a_slightly_loose_bracket_is_named_or_covered() {
     use common::rates;
@@ -225,10 +226,11 @@ fn a_slightly_loose_bracket_is_named_or_covered() {
         // Per joint: the sessions named or covered, and the sessions, pooled.
         let mut pooled = [0usize; 5];
         let mut sessions = 0;
-        for robot in PROFILES {
+        // Each profile its own seeds, so that the pooled sessions are independent draws.
+        for (seed, robot) in (2700..).zip(PROFILES) {
             let profile = zerocal_profile::builtin(robot).unwrap();
             let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
-            let out = run(&profile, &plan, &world, &fit, LOOSE_SESSIONS, 2700);
+            let out = run(&profile, &plan, &world, &fit, LOOSE_SESSIONS, seed);
             let (mut named, mut every, mut covered) = (0, 0, [0usize; 5]);
             for o in &out {
                 match (&o.result, o.errors_deg(), &o.budget) {
