@@ -1,7 +1,8 @@
 //! The refusal rule names each fault far outside its range (core's `session::judge`):
 //! a pose the robot did not reach, a loose flange bracket, a pendant knocked
 //! mid-session, the wrong profile; on six profiles, every error source of a real arm
-//! on beside the fault.
+//! on beside the fault. A fault nearer its limit (a bracket loose by 0.02-0.075°, one
+//! creeping) is named where it would carry the numbers outside their U(k = 2).
 
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -181,5 +182,99 @@ fn a_creeping_bracket_is_named_where_it_matters() {
             named as f64 >= 0.95 * beyond_u as f64,
             "{deg_per_capture}: {named} of {beyond_u}"
         );
+    }
+}
+
+/// A flange bracket loose by less than the 0.1° [`a_loose_bracket_is_named`] injects
+/// (raised to it when 0.05° was no longer refused by its captures' difference): seated
+/// anew within ±0.02, ±0.05 and ±0.075° about each axis at every capture of stage 2
+/// (`loose_bracket_deg`, `sim/src/world.rs`), 40 sessions per profile and size. Each
+/// session is either refused by a name that sends the technician to the bracket (the
+/// two captures of a pose disagree, a revisited pose reads otherwise, the pendant moved
+/// or crept on the flange, residuals no tight bracket leaves) or solved with numbers
+/// its U(k = 2) covers: per joint, the sessions named or covered are consistent with
+/// the budget's 95 % (`common::rates`), the six profiles pooled at each size (240
+/// sessions) and each profile alone (40: a gross failure only); no session is refused
+/// under another name. Measured: the standard rule names every session at 0.05 and
+/// 0.075°, and 194 of 240 at 0.02° (a revisit, or the move's step); with its limits for
+/// a moving bracket raised to 1° the UR5e's j2 is covered in 29 of 40 at 0.05°, and
+/// some sessions are refused as a bench not turned on the spot. The sessions with
+/// every joint covered at once are printed, not judged: the budget's claim is per joint
+/// (on a tight bracket 219 of 240 sessions had every joint covered).
+#[test]
+fn a_slightly_loose_bracket_is_named_or_covered() {
+    use common::rates;
+    use zerocal_sim::montecarlo::run;
+    /// Sessions per profile and size.
+    const LOOSE_SESSIONS: usize = 40;
+    let names_the_bracket = |e: &FitError| {
+        matches!(
+            e,
+            FitError::CapturesDisagree { .. }
+                | FitError::RevisitDisagrees { .. }
+                | FitError::PendantMoved { .. }
+                | FitError::PendantCreeping { .. }
+                | FitError::ResidualTooLarge { .. }
+        )
+    };
+    println!("loose (deg)  robot               named  solved  covered j2..j6  every joint");
+    for loose_bracket_deg in [0.02, 0.05, 0.075] {
+        let world = WorldConfig {
+            loose_bracket_deg,
+            ..real_arm()
+        };
+        // Per joint: the sessions named or covered, and the sessions, pooled.
+        let mut pooled = [0usize; 5];
+        let mut sessions = 0;
+        // Each profile its own seeds, so that the pooled sessions are independent draws.
+        for (seed, robot) in (2700..).zip(PROFILES) {
+            let profile = zerocal_profile::builtin(robot).unwrap();
+            let (plan, fit) = setup(&profile, Method::Compensated, DEFAULT_POSES).unwrap();
+            let out = run(&profile, &plan, &world, &fit, LOOSE_SESSIONS, seed);
+            let (mut named, mut every, mut covered) = (0, 0, [0usize; 5]);
+            for o in &out {
+                match (&o.result, o.errors_deg(), &o.budget) {
+                    (Ok(_), Some(e), Some(b)) => {
+                        let c: [bool; 5] =
+                            core::array::from_fn(|k| e[k].abs() <= b.expanded_rad[k].to_degrees());
+                        for (n, c) in covered.iter_mut().zip(c) {
+                            *n += usize::from(c);
+                        }
+                        every += usize::from(c.iter().all(|&c| c));
+                    }
+                    (Err(SessionError::Stage2(e)), _, _) if names_the_bracket(e) => named += 1,
+                    (Err(e), _, _) => panic!(
+                        "{robot} loose {loose_bracket_deg} deg seed {}: refused as {e}",
+                        o.seed
+                    ),
+                    (Ok(_), _, _) => panic!("{robot} seed {}: solved without a budget", o.seed),
+                }
+            }
+            let solved = LOOSE_SESSIONS - named;
+            println!(
+                "{loose_bracket_deg:<12} {robot:<19} {named:>2}/{LOOSE_SESSIONS}  {solved:>2}      {}   {every:>2}",
+                covered.map(|c| format!("{c:>2}")).join(" ")
+            );
+            for (k, c) in covered.iter().enumerate() {
+                assert!(
+                    rates::consistent_with_at_least(named + c, LOOSE_SESSIONS, 0.95),
+                    "{robot} loose {loose_bracket_deg} deg j{}: {named} named and {c} covered of {LOOSE_SESSIONS}",
+                    k + 2
+                );
+                pooled[k] += named + c;
+            }
+            sessions += LOOSE_SESSIONS;
+        }
+        println!(
+            "{loose_bracket_deg:<12} pooled: named or covered j2..j6 {} of {sessions}",
+            pooled.map(|c| c.to_string()).join(" ")
+        );
+        for (k, c) in pooled.iter().enumerate() {
+            assert!(
+                rates::consistent_with_at_least(*c, sessions, 0.95),
+                "loose {loose_bracket_deg} deg j{}: pooled named or covered {c} of {sessions}",
+                k + 2
+            );
+        }
     }
 }
