@@ -366,7 +366,7 @@ pub enum StageError {
     /// The bench readings do not lie on one circle: the pendant was moved between
     /// headings, not turned on the spot (or knocked, or the bench is not flat).
     NotTurnedOnTheSpot {
-        /// The solve's residual RMS (deg).
+        /// The solve's residual RMS per degree of freedom (deg): the figure judged.
         rms_deg: f32,
         /// The limit ([`crate::stage0::BENCH_RESIDUAL_LIMIT`] readings' noise, deg).
         limit_deg: f32,
