@@ -25,9 +25,8 @@
 use std::path::Path;
 
 use serde::Deserialize;
-use zerocal_core::bracket::{
-    bracket_id, check_date, BracketCalibration, BracketMount, BracketYaw, Brackets,
-};
+use zerocal_civil::{Date, DateError};
+use zerocal_core::bracket::{bracket_id, BracketCalibration, BracketMount, BracketYaw, Brackets};
 use zerocal_core::model::Tilt;
 use zerocal_procedure::bracket_cal::parse_bracket_line;
 use zerocal_procedure::log::{MAX_READING_DEG, TEMPERATURE_RANGE_C};
@@ -59,20 +58,23 @@ struct RawBracket {
     temperature_c: f64,
 }
 
-/// `YYYY-MM-DD` as `YYYYMMDD`, a real day.
-fn date(text: &str) -> Option<u32> {
-    let b = text.as_bytes();
-    let shape = b.len() == 10
-        && b[4] == b'-'
-        && b[7] == b'-'
-        && b.iter()
-            .enumerate()
-            .all(|(i, c)| i == 4 || i == 7 || c.is_ascii_digit());
-    if !shape {
-        return None;
-    }
-    let digits: String = text.chars().filter(char::is_ascii_digit).collect();
-    check_date(digits.parse().ok()?).ok()
+/// The years a bracket calibration may be dated in: the pendant's
+/// (`zerocal_core::bracket::check_date`, which stores the date as `YYYYMMDD`).
+const CALIBRATION_YEARS: std::ops::RangeInclusive<i64> = 2000..=2999;
+
+/// A calibration date `YYYY-MM-DD`: a real day of [`CALIBRATION_YEARS`].
+///
+/// # Errors
+/// What is wrong with it: its shape, its month, its day, its year.
+pub fn calibration_day(text: &str) -> Result<Date, DateError> {
+    Date::parse(text)?.within_years(CALIBRATION_YEARS)
+}
+
+/// `YYYY-MM-DD` as the pendant's `YYYYMMDD`, a real day of [`CALIBRATION_YEARS`].
+fn date(text: &str) -> Result<u32, DateError> {
+    let day = calibration_day(text)?;
+    // A year of 2000-2999 always has its number; core checks it once more.
+    day.yyyymmdd().ok_or(DateError::Shape)
 }
 
 fn calibration(b: &RawBracket) -> Result<(BracketMount, BracketCalibration<f64>), String> {
@@ -98,10 +100,12 @@ fn calibration(b: &RawBracket) -> Result<(BracketMount, BracketCalibration<f64>)
             "temperature_c {t}: the sensor's temperature, {t_lo} to {t_hi} degC"
         ));
     }
-    let day = date(&b.date).ok_or_else(|| {
+    let day = date(&b.date).map_err(|e| {
         format!(
-            "date '{}': a calibration date is \"YYYY-MM-DD\", a real day",
-            b.date
+            "date '{}': {e}; a calibration date is \"YYYY-MM-DD\", a real day of {}-{}",
+            b.date,
+            CALIBRATION_YEARS.start(),
+            CALIBRATION_YEARS.end()
         )
     })?;
     let [x, y] = b.rotation_deg;
@@ -172,45 +176,27 @@ pub fn read(path: &Path) -> Result<Brackets<f64>, CliError> {
     parse(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
 }
 
-/// `YYYY-MM-DD` checked as a calendar day (core's check of a calibration date).
+/// `YYYY-MM-DD` checked as a calibration date ([`calibration_day`]).
 ///
 /// # Errors
-/// Exit 2, naming the date.
+/// Exit 2, naming the date and what is wrong with it.
 pub fn calibration_date(date: &str) -> Result<String, CliError> {
-    let bad = || CliError::Input(format!("--date '{date}': not a day YYYY-MM-DD (2000-2999)"));
-    let parts: Vec<&str> = date.split('-').collect();
-    let [y, m, d] = parts.as_slice() else {
-        return Err(bad());
-    };
-    if y.len() != 4 || m.len() != 2 || d.len() != 2 {
-        return Err(bad());
-    }
-    let number: u32 = format!("{y}{m}{d}").parse().map_err(|_| bad())?;
-    zerocal_core::bracket::check_date(number).map_err(|_| bad())?;
-    Ok(date.to_owned())
+    calibration_day(date).map(|d| d.to_string()).map_err(|e| {
+        CliError::Input(format!(
+            "--date '{date}': not a day YYYY-MM-DD (2000-2999): {e}"
+        ))
+    })
 }
 
-/// Today's date (UTC) as `YYYY-MM-DD`: days since 1970 to the civil calendar
-/// (the proleptic Gregorian algorithm of H. Hinnant's `civil_from_days`).
-pub fn today_utc() -> String {
-    let secs = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
-    civil_date(secs)
-}
-
-/// The UTC day of `secs` since 1970-01-01 as `YYYY-MM-DD`.
-fn civil_date(secs: u64) -> String {
-    let z = (secs / 86_400) as i64 + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    format!("{y:04}-{m:02}-{d:02}")
+/// Today's date (UTC) as `YYYY-MM-DD`: `SOURCE_DATE_EPOCH`'s if it is set, else the
+/// clock's.
+///
+/// # Errors
+/// `SOURCE_DATE_EPOCH` set but not seconds since 1970 (exit 2).
+pub fn today_utc() -> Result<String, CliError> {
+    Date::today()
+        .map(|d| d.to_string())
+        .map_err(|e| CliError::Input(e.to_string()))
 }
 
 /// The `brackets` reply's lines as the profile upload's `[[bracket]]` TOML, each
@@ -334,15 +320,17 @@ temperature_c = -3.25
         assert!(parse("").unwrap_err().contains("no [[bracket]] entries"));
     }
 
-    /// Days to dates across a leap day and a century: 2000-02-29 00:00 UTC is
-    /// 951782400 s, 2026-11-27 is 20784 days after 1970-01-01.
+    /// A calibration date is a real day of the pendant's years, its error saying
+    /// what is wrong.
     #[test]
     fn the_date_is_the_calendars() {
-        assert_eq!(civil_date(0), "1970-01-01");
-        assert_eq!(civil_date(951_782_400), "2000-02-29");
-        assert_eq!(civil_date(951_782_400 + 86_400), "2000-03-01");
-        assert_eq!(civil_date(20_784 * 86_400 + 86_399), "2026-11-27");
         assert_eq!(calibration_date("2026-11-27").unwrap(), "2026-11-27");
+        assert_eq!(date("2024-02-29"), Ok(20_240_229));
+        assert_eq!(
+            calibration_date("1999-12-31").unwrap_err().to_string(),
+            "error: --date '1999-12-31': not a day YYYY-MM-DD (2000-2999): year 1999 is not \
+             2000 to 2999"
+        );
         for bad in [
             "2026-02-30",
             "26-11-27",

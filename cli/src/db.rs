@@ -73,12 +73,16 @@ impl RecordMeta {
     /// The day measured.
     ///
     /// # Errors
-    /// `--measured-on` that is not a day.
+    /// `--measured-on` that is not a day of 2000-2999; without it, `SOURCE_DATE_EPOCH`
+    /// set but not seconds since 1970.
     pub fn day(&self) -> Result<String, CliError> {
         match &self.measured_on {
-            Some(d) => crate::brackets::calibration_date(d)
-                .map_err(|_| CliError::Input(format!("--measured-on '{d}': not a day YYYY-MM-DD"))),
-            None => Ok(crate::brackets::today_utc()),
+            Some(d) => crate::brackets::calibration_day(d)
+                .map(|day| day.to_string())
+                .map_err(|e| {
+                    CliError::Input(format!("--measured-on '{d}': not a day YYYY-MM-DD: {e}"))
+                }),
+            None => crate::brackets::today_utc(),
         }
     }
 }

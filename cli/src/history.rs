@@ -235,7 +235,7 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
         .configure_mesh()
         .x_desc("measured on")
         .y_desc(format!("j{joint} offset (deg)"))
-        .x_label_formatter(&|d| zerocal_history::date_of_day(d.round() as i64))
+        .x_label_formatter(&|d| zerocal_civil::Date::from_days(d.round() as i64).to_string())
         .y_label_formatter(&|v| format!("{v:.4}"))
         .draw()
         .map_err(to_io)?;
@@ -346,12 +346,14 @@ pub fn plots(dir: &Path, serial: &str, records: &[Record]) -> Result<Vec<PathBuf
     for joint in joints {
         let mut points = Vec::new();
         for r in records {
-            let day = zerocal_history::day_number(&r.new.measured_on).ok_or_else(|| {
-                CliError::Input(format!(
-                    "history: record {}: measured_on {:?} is not a date",
-                    r.id, r.new.measured_on
-                ))
-            })?;
+            let day = zerocal_civil::Date::parse(&r.new.measured_on)
+                .map_err(|e| {
+                    CliError::Input(format!(
+                        "history: record {}: measured_on {:?} is not a date: {e}",
+                        r.id, r.new.measured_on
+                    ))
+                })?
+                .days();
             if let Some(j) = r.new.joints.iter().find(|j| j.joint == joint) {
                 points.push((day as f64, j.offset_deg, j.expanded_k2_deg, r.new.kind));
             }

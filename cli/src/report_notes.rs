@@ -60,14 +60,10 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
         .collect()
 }
 
-/// A bracket calibration's date, `YYYYMMDD` as stored, as `YYYY-MM-DD`.
+/// A bracket calibration's date, `YYYYMMDD` as stored, as `YYYY-MM-DD` (core checked
+/// it as a day; a number that is none is shown as it is).
 pub fn calibration_date(date: u32) -> String {
-    format!(
-        "{}-{:02}-{:02}",
-        date / 10_000,
-        (date / 100) % 100,
-        date % 100
-    )
+    zerocal_civil::Date::from_yyyymmdd(date).map_or_else(|_| date.to_string(), |d| d.to_string())
 }
 
 /// What the offsets mean on a real arm, and which of its geometry the fit estimated.

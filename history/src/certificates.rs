@@ -96,16 +96,16 @@ impl History {
                 c.number
             )));
         }
-        if !crate::time::is_date(&c.issued_on) {
+        if let Err(e) = zerocal_civil::Date::parse(&c.issued_on) {
             return Err(invalid(format!(
-                "issued_on {:?} is not a calendar date YYYY-MM-DD",
+                "issued_on {:?} is not a calendar date YYYY-MM-DD: {e}",
                 c.issued_on
             )));
         }
         serde_json::from_str::<serde_json::Value>(&c.issuer_json)
             .map_err(|e| invalid(format!("issuer_json is not JSON: {e}")))?;
         let issuer_sha256 = sha256_hex(c.issuer_json.as_bytes());
-        let recorded_at = crate::time::now_utc();
+        let recorded_at = zerocal_civil::Timestamp::clock().to_string();
         self.conn.write(|conn| {
             let (kind, _) = kind_of(conn, c.session_id)?;
             if kind != RecordKind::Session.as_str() {

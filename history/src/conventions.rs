@@ -98,7 +98,7 @@ impl History {
                 )));
             }
         }
-        let recorded_at = crate::time::now_utc();
+        let recorded_at = zerocal_civil::Timestamp::clock().to_string();
         self.conn.write(|c| {
             let mut new = 0;
             for conv in conventions {

@@ -11,12 +11,10 @@ mod conventions;
 mod db;
 mod error;
 pub mod schema;
-mod time;
 
 pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
 pub use conventions::{Convention, NewConvention};
 pub use error::HistoryError;
-pub use time::{date_of_day, day_number};
 
 use db::{Conn, Value};
 use serde::{Deserialize, Serialize};
@@ -298,9 +296,9 @@ fn validate(r: &NewRecord) -> Result<(), HistoryError> {
     if r.export.is_empty() {
         return Err(invalid("the export is empty"));
     }
-    if !time::is_date(&r.measured_on) {
+    if let Err(e) = zerocal_civil::Date::parse(&r.measured_on) {
         return Err(invalid(format!(
-            "measured_on {:?} is not a date YYYY-MM-DD",
+            "measured_on {:?} is not a date YYYY-MM-DD: {e}",
             r.measured_on
         )));
     }
@@ -474,7 +472,7 @@ impl History {
         validate(r)?;
         let export_sha256 = sha256_hex(&r.export);
         let profile_sha256 = sha256_hex(r.profile_toml.as_bytes());
-        let recorded_at = time::now_utc();
+        let recorded_at = zerocal_civil::Timestamp::clock().to_string();
         let key = [
             Value::text(&r.serial),
             Value::text(r.kind.as_str()),

@@ -31,6 +31,7 @@
 
 use super::CertificateError;
 use serde::{Deserialize, Serialize};
+use zerocal_civil::Date;
 use zerocal_core::bracket::{BracketMount, Brackets};
 
 /// Largest configuration file (bytes): a few tables; 64 KiB leaves room for a register.
@@ -124,11 +125,6 @@ pub struct Issuer {
     pub equipment: Vec<Equipment>,
 }
 
-/// Whether a date is a calendar date `YYYY-MM-DD`.
-pub(super) fn is_date(text: &str) -> bool {
-    zerocal_history::day_number(text).is_some()
-}
-
 /// An issuer's text read and checked: every name non-empty, every date a calendar
 /// date, each calibration before its due date, each ID once per kind.
 ///
@@ -164,14 +160,13 @@ pub fn parse(text: &str) -> Result<Issuer, String> {
         if e.id.trim().is_empty() {
             return Err(format!("{at}: the id is empty"));
         }
-        for (field, date) in [("calibrated", &e.calibrated), ("due", &e.due)] {
-            if !is_date(date) {
-                return Err(format!(
-                    "{at}: {field} '{date}' is not a calendar date YYYY-MM-DD"
-                ));
-            }
-        }
-        if zerocal_history::day_number(&e.due) <= zerocal_history::day_number(&e.calibrated) {
+        let day = |field: &str, date: &str| {
+            Date::parse(date).map_err(|why| {
+                format!("{at}: {field} '{date}' is not a calendar date YYYY-MM-DD: {why}")
+            })
+        };
+        let calibrated = day("calibrated", &e.calibrated)?;
+        if day("due", &e.due)? <= calibrated {
             return Err(format!(
                 "{at}: due {} is not after calibrated {}",
                 e.due, e.calibrated
@@ -289,7 +284,7 @@ pub fn equipment_used(
             u.flag = Some("not in the equipment register: no calibration or due date".into());
         }
         if let Some(e) = &u.entry {
-            let day = zerocal_history::day_number;
+            let day = |date: &str| Date::parse(date).ok();
             if day(&e.due) < day(&u.used_on) {
                 return Err(CertificateError::Equipment(format!(
                     "{} {} ({}) was due for calibration on {}, before it was used on {}: no \

@@ -106,6 +106,9 @@ pub enum CertificateError {
     /// Equipment the session rests on was past its due date, or the number could not be
     /// drawn.
     Equipment(String),
+    /// Today's date, the issue date, cannot be taken: `SOURCE_DATE_EPOCH` is set but is
+    /// not seconds since 1970.
+    Today(String),
 }
 
 impl fmt::Display for CertificateError {
@@ -122,6 +125,7 @@ impl fmt::Display for CertificateError {
                 write!(f, "certificate: the residual figure cannot be drawn: {e}")
             }
             CertificateError::Equipment(e) => write!(f, "certificate: {e}"),
+            CertificateError::Today(e) => write!(f, "certificate: the issue date: {e}"),
         }
     }
 }
@@ -131,7 +135,9 @@ impl std::error::Error for CertificateError {}
 impl From<CertificateError> for CliError {
     fn from(e: CertificateError) -> Self {
         match e {
-            CertificateError::Subject { .. } => CliError::Input(e.to_string()),
+            CertificateError::Subject { .. } | CertificateError::Today(_) => {
+                CliError::Input(e.to_string())
+            }
             CertificateError::NotFinite { .. }
             | CertificateError::Figure(_)
             | CertificateError::Equipment(_) => CliError::Refused(e.to_string()),
@@ -241,7 +247,7 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
             number: issuer::new_number(&issuer)?,
             session_id: record.id,
             as_left_id: as_left.as_ref().map(|a| a.record_id),
-            issued_on: crate::brackets::today_utc(),
+            issued_on: crate::brackets::today_utc()?,
             issuer_json,
         })
         .map_err(crate::db::history_failed)?;
@@ -276,12 +282,14 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
 /// # Errors
 /// A record field a certificate cannot state (a malformed date or hash, an empty
 /// serial, a tolerance that is not a positive number), a non-finite number in the
-/// session, the figure failing.
+/// session, the figure failing, `SOURCE_DATE_EPOCH` set but not seconds since 1970
+/// (today is its date when it is set).
 pub fn certificate(
     subject: &CertificateSubject,
     analysis: &Analysis,
 ) -> Result<Certificate, CertificateError> {
-    certificate_issued_on(subject, analysis, &crate::brackets::today_utc())
+    let today = zerocal_civil::Date::today().map_err(|e| CertificateError::Today(e.to_string()))?;
+    certificate_issued_on(subject, analysis, &today.to_string())
 }
 
 /// [`certificate`] with its issue date given (`YYYY-MM-DD`).
@@ -316,7 +324,7 @@ pub fn write(
     analysis: &Analysis,
     out: &Path,
 ) -> Result<Vec<PathBuf>, CliError> {
-    write_issued_on(subject, analysis, out, &crate::brackets::today_utc())
+    write_issued_on(subject, analysis, out, &crate::brackets::today_utc()?)
 }
 
 /// [`write`] with its issue date given (`YYYY-MM-DD`).
@@ -384,17 +392,15 @@ fn check_subject(s: &CertificateSubject) -> Result<(), CertificateError> {
     Ok(())
 }
 
-/// Refuses anything but a calendar date `YYYY-MM-DD` (the history's calendar: 2026-02-31
-/// is no date).
+/// Refuses anything but a calendar date `YYYY-MM-DD` (zerocal_civil's calendar, the
+/// history's: 2026-02-31 is no date), saying what is wrong.
 fn check_date(field: &'static str, date: &str) -> Result<(), CertificateError> {
-    if issuer::is_date(date) {
-        Ok(())
-    } else {
-        Err(CertificateError::Subject {
+    zerocal_civil::Date::parse(date)
+        .map(|_| ())
+        .map_err(|e| CertificateError::Subject {
             field,
-            why: format!("'{date}' is not a calendar date YYYY-MM-DD"),
+            why: format!("'{date}' is not a calendar date YYYY-MM-DD: {e}"),
         })
-    }
 }
 
 #[cfg(test)]

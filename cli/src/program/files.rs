@@ -18,7 +18,7 @@ pub fn render(session: &Session, format: Format) -> Result<Files, CliError> {
             krl::write(session),
         )],
         Format::Rapid => vec![(format!("{}.mod", session.name), rapid::write(session))],
-        Format::Tp => vec![(format!("{}.ls", session.name), tp::write(session))],
+        Format::Tp => vec![(format!("{}.ls", session.name), tp::write(session)?)],
         Format::Inform => vec![(format!("{}.JBI", session.name), inform::write(session)?)],
         Format::Val3 => val3::write(session),
         Format::Urscript => vec![(

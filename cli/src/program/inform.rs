@@ -7,7 +7,7 @@
 //! comments (29-character pieces), `END`. Pulses are `round(degrees × pulses per
 //! degree)` (MotoROS: angle = pulse / PtoR, pulse 0 = angle 0).
 
-use super::{pieces, Session, Stamp, Step};
+use super::{pieces, stamp, Session, Step};
 use crate::error::CliError;
 use std::fmt::Write as _;
 
@@ -69,7 +69,7 @@ pub fn write(s: &Session) -> Result<String, CliError> {
             }
         }
     }
-    let t = Stamp::now();
+    let t = stamp()?;
     let mut out = String::new();
     let mut line = |l: &str| {
         out.push_str(l);
@@ -89,7 +89,11 @@ pub fn write(s: &Session) -> Result<String, CliError> {
     line("//INST");
     line(&format!(
         "///DATE {:04}/{:02}/{:02} {:02}:{:02}",
-        t.year, t.month, t.day, t.hour, t.minute
+        t.date().year(),
+        t.date().month(),
+        t.date().day(),
+        t.hour(),
+        t.minute()
     ));
     line("///COMM ZEROCAL CALIBRATION SESSION");
     line("///ATTR SC,RW");

@@ -53,7 +53,7 @@ pub use format::Format;
 pub use plan_file::{default_plan, parse_plan, plan_with, read_plan};
 pub use read::ReadMove;
 pub use steps::{Capture, Role, Session, Side, Step};
-pub use text::{pieces, program_name, Stamp};
+pub use text::{pieces, program_name, stamp};
 
 use crate::error::CliError;
 use crate::timing::TimingArgs;

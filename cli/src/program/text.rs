@@ -3,8 +3,10 @@
 //! cut to a controller's line length.
 
 use super::Format;
+use crate::error::CliError;
 use crate::timing::Timing;
 use std::path::Path;
+use zerocal_civil::Timestamp;
 use zerocal_procedure::robot_time::SessionTime;
 use zerocal_profile::Profile;
 
@@ -36,60 +38,14 @@ pub fn program_name(out: &Path, max: usize) -> String {
     name
 }
 
-/// A UTC date and time for the headers that carry one (TP, INFORM).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Stamp {
-    /// Year.
-    pub year: i64,
-    /// Month 1-12.
-    pub month: u32,
-    /// Day 1-31.
-    pub day: u32,
-    /// Hour 0-23.
-    pub hour: u32,
-    /// Minute.
-    pub minute: u32,
-    /// Second.
-    pub second: u32,
-}
-
-impl Stamp {
-    /// `SOURCE_DATE_EPOCH` (seconds since 1970, the reproducible-builds convention) if
-    /// set and valid, else the clock.
-    pub fn now() -> Self {
-        let secs = std::env::var("SOURCE_DATE_EPOCH")
-            .ok()
-            .and_then(|v| v.trim().parse::<i64>().ok())
-            .unwrap_or_else(|| {
-                std::time::SystemTime::now()
-                    .duration_since(std::time::UNIX_EPOCH)
-                    .map_or(0, |d| i64::try_from(d.as_secs()).unwrap_or(0))
-            });
-        Self::from_unix(secs)
-    }
-
-    /// The civil UTC date of `secs` since 1970-01-01 (H. Hinnant's days-to-civil).
-    pub fn from_unix(secs: i64) -> Self {
-        let days = secs.div_euclid(86_400);
-        let rem = secs.rem_euclid(86_400);
-        let z = days + 719_468;
-        let era = z.div_euclid(146_097);
-        let doe = z - era * 146_097;
-        let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-        let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-        let mp = (5 * doy + 2) / 153;
-        let day = (doy - (153 * mp + 2) / 5 + 1) as u32;
-        let month = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
-        let year = yoe + era * 400 + i64::from(month <= 2);
-        Stamp {
-            year,
-            month,
-            day,
-            hour: (rem / 3600) as u32,
-            minute: (rem % 3600 / 60) as u32,
-            second: (rem % 60) as u32,
-        }
-    }
+/// Now, for the headers that carry a date and time (TP, INFORM): `SOURCE_DATE_EPOCH`
+/// (seconds since 1970, the reproducible-builds convention) if set, else the clock.
+///
+/// # Errors
+/// `SOURCE_DATE_EPOCH` set to anything but seconds since 1970 (status 2): a
+/// reproducible program asked for is not written with the clock's time instead.
+pub fn stamp() -> Result<Timestamp, CliError> {
+    Timestamp::now().map_err(|e| CliError::Input(e.to_string()))
 }
 
 /// Splits `text` into pieces of at most `max` characters at spaces where it can.
@@ -235,36 +191,6 @@ pub fn check_header_lines(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn civil_dates() {
-        // 0 is 1970-01-01; 951782400 is 2000-02-29 (a leap day); 1700000000 is
-        // 2023-11-14 22:13:20 UTC.
-        assert_eq!(
-            Stamp::from_unix(0),
-            Stamp {
-                year: 1970,
-                month: 1,
-                day: 1,
-                hour: 0,
-                minute: 0,
-                second: 0
-            }
-        );
-        let leap = Stamp::from_unix(951_782_400);
-        assert_eq!((leap.year, leap.month, leap.day), (2000, 2, 29));
-        assert_eq!(
-            Stamp::from_unix(1_700_000_000),
-            Stamp {
-                year: 2023,
-                month: 11,
-                day: 14,
-                hour: 22,
-                minute: 13,
-                second: 20
-            }
-        );
-    }
 
     #[test]
     fn names_and_pieces() {

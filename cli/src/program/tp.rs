@@ -5,14 +5,18 @@
 //! and `/POS` with `J1=… deg` (3 decimals) per point, then `/END`. Targets are the
 //! pendant's joint values: J3 with the J2/J3 interaction (the profile's coupling).
 
-use super::{pieces, Session, Stamp, Step};
+use super::{pieces, stamp, Session, Step};
+use crate::error::CliError;
 use std::fmt::Write as _;
 
 /// Comment and message pieces (RoboDK's FANUC post splits at 20 characters).
 const PIECE: usize = 20;
 
 /// The LS text.
-pub fn write(s: &Session) -> String {
+///
+/// # Errors
+/// `SOURCE_DATE_EPOCH` set but not seconds since 1970 (the header's date).
+pub fn write(s: &Session) -> Result<String, CliError> {
     let mut mn: Vec<String> = Vec::new();
     let mut pos: Vec<[f64; 6]> = Vec::new();
     for line in &s.header {
@@ -44,15 +48,15 @@ pub fn write(s: &Session) -> String {
             }
         }
     }
-    let t = Stamp::now();
+    let t = stamp()?;
     let date = format!(
         "DATE {:02}-{:02}-{:02}  TIME {:02}:{:02}:{:02}",
-        t.year.rem_euclid(100),
-        t.month,
-        t.day,
-        t.hour,
-        t.minute,
-        t.second
+        t.date().year().rem_euclid(100),
+        t.date().month(),
+        t.date().day(),
+        t.hour(),
+        t.minute(),
+        t.second()
     );
     let mut out = String::new();
     let _ = writeln!(out, "/PROG  {}", s.name);
@@ -83,5 +87,5 @@ pub fn write(s: &Session) -> String {
         out.push_str("};\n");
     }
     out.push_str("/END\n");
-    out
+    Ok(out)
 }
