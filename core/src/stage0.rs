@@ -728,7 +728,10 @@ mod tests {
             panic!("not refused by name: {refused:?}");
         };
         // The figure the message shows is the one judged: above its limit.
-        assert!(rms_deg > limit_deg, "{rms_deg} deg shown against {limit_deg} deg");
+        assert!(
+            rms_deg > limit_deg,
+            "{rms_deg} deg shown against {limit_deg} deg"
+        );
     }
 
     /// A levelled bench (tilts of thousandths of a degree, where a heading barely shows
