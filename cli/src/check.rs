@@ -374,6 +374,14 @@ pub fn render(j: &CheckJson) -> String {
         );
     }
     let _ = writeln!(out, "rule: {}", j.rule);
+    // A check fits no transmission error (cli/src/compare: its poses are compared with
+    // the reference's model, nothing more is solved).
+    let _ = writeln!(
+        out,
+        "reducers: not measured by a check (its {} poses are compared with the reference's \
+         model; no transmission error is fitted); the sessions': zerocal history {} --plot DIR",
+        j.poses, j.serial
+    );
     render_budget(&mut out, &j.budget);
     for n in &j.notes {
         let _ = writeln!(out, "note: {n}");

@@ -1,9 +1,12 @@
 //! `zerocal history [SERIAL] [--db PATH|URL] [--json] [--plot DIR]`: the calibration
 //! history of every robot or of one serial, as a table, a JSON array, or one SVG per
-//! joint of its zero over time with the U(k=2) band. [`DbArg`] is the `--db` option
+//! joint of its zero over time with the U(k=2) band and one of its reducer's measured
+//! harmonics ([`crate::reducer_trend`]: the table and the JSON name an amplitude grown
+//! beyond its U). [`DbArg`] is the `--db` option
 //! every command that reads or writes the history shares.
 
 use crate::error::CliError;
+use crate::reducer_trend::{self, ReducerChange, SessionHarmonics};
 use plotters::prelude::*;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -24,8 +27,10 @@ pub struct HistoryArgs {
     #[arg(long)]
     pub json: bool,
     /// Write DIR/SERIAL-jN.svg per joint: its zero over time with the U(k=2) band,
-    /// sessions as dots and checks as crosses (needs SERIAL; characters of the serial
-    /// other than letters, digits, `.`, `_` and `-` become `_` in the file name).
+    /// sessions as dots and checks as crosses; and DIR/SERIAL-jN-reducer.svg per joint
+    /// with measured reducer harmonics: each order's amplitude over time with its U(k=2)
+    /// (needs SERIAL; characters of the serial other than letters, digits, `.`, `_` and
+    /// `-` become `_` in the file name).
     #[arg(long, value_name = "DIR", requires = "serial")]
     pub plot: Option<PathBuf>,
     /// Import the pendant's kept results from FILE (`zerocal pendant results`, or the
@@ -61,6 +66,9 @@ pub struct RecordJson<'a> {
     pub brackets: serde_json::Value,
     pub conditions: serde_json::Value,
     pub result: serde_json::Value,
+    /// The reducer harmonics whose amplitude this session measured beyond the combined
+    /// U(k=2) above the robot's previous session's ([`crate::reducer_trend`]).
+    pub reducer_changes: Vec<ReducerChange>,
 }
 
 fn json_field(record: &Record, field: &str, text: &str) -> Result<serde_json::Value, CliError> {
@@ -73,6 +81,7 @@ fn json_field(record: &Record, field: &str, text: &str) -> Result<serde_json::Va
 }
 
 fn to_json(records: &[Record]) -> Result<String, CliError> {
+    let changes = reducer_trend::changes_in(records);
     let rows = records
         .iter()
         .map(|r| {
@@ -99,6 +108,11 @@ fn to_json(records: &[Record]) -> Result<String, CliError> {
                 brackets: json_field(r, "brackets_json", &n.brackets_json)?,
                 conditions: json_field(r, "conditions_json", &n.conditions_json)?,
                 result: json_field(r, "result_json", &n.result_json)?,
+                reducer_changes: changes
+                    .iter()
+                    .filter(|c| c.record_id == r.id)
+                    .cloned()
+                    .collect(),
             })
         })
         .collect::<Result<Vec<_>, CliError>>()?;
@@ -330,7 +344,156 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
     root.present().map_err(to_io)
 }
 
-/// Writes DIR/SERIAL-jN.svg for every joint the records hold. Returns the files.
+/// One harmonic's series in a reducer plot: its order n and its measured points (day
+/// number, amplitude, U(k=2)), in the order measured.
+type Series = (u8, Vec<(f64, f64, f64)>);
+
+/// The series' colours, order 1, 2, 3, 4 (then round again).
+const ORDERS: [RGBColor; 4] = [
+    RGBColor(30, 90, 200),
+    RGBColor(200, 40, 40),
+    RGBColor(30, 150, 60),
+    RGBColor(150, 60, 170),
+];
+
+/// A joint's reducer: each harmonic's amplitude over time with its U(k=2) as a bar, one
+/// series (colour, joined by a line) an order; `held` harmonics of sessions whose poses
+/// did not see them (held at their prior) are not drawn, and the legend says how many.
+fn reducer_plot(
+    path: &Path,
+    serial: &str,
+    joint: u8,
+    series: &[Series],
+    held: usize,
+) -> std::io::Result<()> {
+    let all: Vec<Point> = series
+        .iter()
+        .flat_map(|(_, s)| s.iter().map(|p| (p.0, p.1, p.2, RecordKind::Session)))
+        .collect();
+    let (x0, x1) = x_range(&all);
+    let (y0, mut y1) = all.iter().fold((0.0_f64, f64::NEG_INFINITY), |(a, b), p| {
+        (a.min(p.1 - p.2), b.max(p.1 + p.2))
+    });
+    y1 += ((y1 - y0) * 0.1).max(1e-4);
+    let root = SVGBackend::new(path, SIZE).into_drawing_area();
+    root.fill(&WHITE).map_err(to_io)?;
+    let (chart_area, legend_area) = root.split_vertically(SIZE.1 - LEGEND_STRIP_PX);
+    let mut chart = ChartBuilder::on(&chart_area)
+        .caption(
+            format!(
+                "{serial}: joint {joint} reducer, each harmonic's amplitude over time, with U(k=2)"
+            ),
+            ("sans-serif", 18),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x0..x1, y0..y1)
+        .map_err(to_io)?;
+    chart
+        .configure_mesh()
+        .x_desc("measured on")
+        .y_desc(format!("j{joint} harmonic amplitude A (deg)"))
+        .x_label_formatter(&|d| zerocal_civil::Date::from_days(d.round() as i64).to_string())
+        .y_label_formatter(&|v| format!("{v:.4}"))
+        .draw()
+        .map_err(to_io)?;
+    let mut legend: Vec<(String, RGBColor)> = Vec::new();
+    // The orders side by side at each session, so that their bars do not overlap.
+    let dodge = (x1 - x0) / 150.0;
+    for (i, (order, points)) in series.iter().enumerate() {
+        let color = ORDERS[i % ORDERS.len()];
+        let dx = (i as f64 - (series.len() - 1) as f64 / 2.0) * dodge;
+        let points: Vec<(f64, f64, f64)> = points.iter().map(|p| (p.0 + dx, p.1, p.2)).collect();
+        if points.len() > 1 {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    points.iter().map(|p| (p.0, p.1)).collect::<Vec<_>>(),
+                    color.mix(0.5).stroke_width(1),
+                )))
+                .map_err(to_io)?;
+        }
+        chart
+            .draw_series(points.iter().map(|p| {
+                PathElement::new(
+                    vec![(p.0, p.1 - p.2), (p.0, p.1 + p.2)],
+                    color.stroke_width(1),
+                )
+            }))
+            .map_err(to_io)?;
+        chart
+            .draw_series(
+                points
+                    .iter()
+                    .map(|p| Circle::new((p.0, p.1), 4, color.filled())),
+            )
+            .map_err(to_io)?;
+        legend.push((format!("n={order}: A, bar U(k=2)"), color));
+    }
+    let mut x = 90;
+    let y = (LEGEND_STRIP_PX / 2) as i32;
+    let font: TextStyle = ("sans-serif", 13).into_font().into();
+    let note = (held > 0).then(|| {
+        format!(
+            "{held} {} held at the fit's prior (the poses did not see them): not plotted",
+            if held == 1 { "amplitude" } else { "amplitudes" }
+        )
+    });
+    for (label, color) in legend
+        .iter()
+        .map(|(l, c)| (l.as_str(), Some(*c)))
+        .chain(note.as_deref().map(|n| (n, None)))
+    {
+        let text_x = match color {
+            Some(color) => {
+                legend_area
+                    .draw(&Circle::new((x + 10, y), 4, color.filled()))
+                    .map_err(to_io)?;
+                x + 26
+            }
+            None => x,
+        };
+        legend_area
+            .draw(&Text::new(label, (text_x, y - 7), font.clone()))
+            .map_err(to_io)?;
+        let width = legend_area
+            .estimate_text_size(label, &font)
+            .map_or(8 * label.len() as u32, |(w, _)| w);
+        x = text_x + width as i32 + 24;
+    }
+    root.present().map_err(to_io)
+}
+
+/// The reducer plots' series of `joint`: each order any session measured, its measured
+/// points in the order measured; and how many of the joint's harmonics were held at
+/// their prior instead.
+fn reducer_series(days: &[(f64, Option<SessionHarmonics>)], joint: u8) -> (Vec<Series>, usize) {
+    let mut ordered: Vec<&(f64, Option<SessionHarmonics>)> = days.iter().collect();
+    ordered.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut series: std::collections::BTreeMap<u8, Vec<(f64, f64, f64)>> = Default::default();
+    let mut held = 0;
+    for (day, s) in ordered {
+        for h in s
+            .iter()
+            .flat_map(|s| &s.reducers)
+            .filter(|h| h.joint == joint)
+        {
+            if h.measured {
+                series.entry(h.order).or_default().push((
+                    *day,
+                    h.amplitude_deg,
+                    h.amplitude_k2_deg,
+                ));
+            } else {
+                held += 1;
+            }
+        }
+    }
+    (series.into_iter().collect(), held)
+}
+
+/// Writes DIR/SERIAL-jN.svg for every joint the records hold, and DIR/SERIAL-jN-reducer.svg
+/// for every joint with a harmonic a session measured. Returns the files.
 ///
 /// # Errors
 /// A record with a date that does not read; a file that cannot be written.
@@ -342,24 +505,46 @@ pub fn plots(dir: &Path, serial: &str, records: &[Record]) -> Result<Vec<PathBuf
     let written_error =
         |p: &Path, e: std::io::Error| CliError::Input(format!("{}: {e}", p.display()));
     std::fs::create_dir_all(dir).map_err(|e| written_error(dir, e))?;
-    let mut written = Vec::new();
-    for joint in joints {
-        let mut points = Vec::new();
-        for r in records {
-            let day = zerocal_civil::Date::parse(&r.new.measured_on)
+    let days = records
+        .iter()
+        .map(|r| {
+            zerocal_civil::Date::parse(&r.new.measured_on)
+                .map(|d| d.days() as f64)
                 .map_err(|e| {
                     CliError::Input(format!(
                         "history: record {}: measured_on {:?} is not a date: {e}",
                         r.id, r.new.measured_on
                     ))
-                })?
-                .days();
+                })
+        })
+        .collect::<Result<Vec<f64>, CliError>>()?;
+    let mut written = Vec::new();
+    for &joint in &joints {
+        let mut points = Vec::new();
+        for (r, &day) in records.iter().zip(&days) {
             if let Some(j) = r.new.joints.iter().find(|j| j.joint == joint) {
-                points.push((day as f64, j.offset_deg, j.expanded_k2_deg, r.new.kind));
+                points.push((day, j.offset_deg, j.expanded_k2_deg, r.new.kind));
             }
         }
         let path = dir.join(format!("{}-j{joint}.svg", file_stem(serial)));
         joint_plot(&path, serial, joint, &points).map_err(|e| written_error(&path, e))?;
+        written.push(path);
+    }
+    let harmonics: Vec<(f64, Option<SessionHarmonics>)> = days
+        .iter()
+        .zip(records)
+        .map(|(&day, r)| (day, reducer_trend::of_record(r)))
+        .collect();
+    let reducer_joints: BTreeSet<u8> = harmonics
+        .iter()
+        .flat_map(|(_, s)| s.iter().flat_map(|s| &s.reducers))
+        .filter(|h| h.measured)
+        .map(|h| h.joint)
+        .collect();
+    for joint in reducer_joints {
+        let (series, held) = reducer_series(&harmonics, joint);
+        let path = dir.join(format!("{}-j{joint}-reducer.svg", file_stem(serial)));
+        reducer_plot(&path, serial, joint, &series, held).map_err(|e| written_error(&path, e))?;
         written.push(path);
     }
     Ok(written)
@@ -401,7 +586,11 @@ pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
             None => format!("no records in {location}\n"),
         }
     } else {
-        table(&records)
+        let mut t = table(&records);
+        for c in reducer_trend::changes_in(&records) {
+            let _ = writeln!(t, "record {}: {}", c.record_id, c.line());
+        }
+        t
     });
     if let (Some(dir), Some(serial)) = (&args.plot, &args.serial) {
         for f in plots(dir, serial, &records)? {

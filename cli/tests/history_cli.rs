@@ -215,3 +215,177 @@ fn a_db_that_is_not_a_zerocal_history_is_refused_by_name_and_left_as_it_was() {
     );
     assert_eq!(std::fs::read_to_string(&notes).unwrap(), text);
 }
+
+/// A session's result holding these harmonics: (joint, order, A deg, U(k=2) deg,
+/// measured).
+fn with_reducers(mut r: NewRecord, harmonics: &[(u8, u8, f64, f64, bool)]) -> NewRecord {
+    let reducers: Vec<serde_json::Value> = harmonics
+        .iter()
+        .map(|&(joint, order, a, u, measured)| {
+            serde_json::json!({
+                "joint": joint, "order": order, "amplitude_deg": a, "phase_deg": 10.0,
+                "amplitude_k2_deg": u, "measured": measured,
+            })
+        })
+        .collect();
+    r.result_json = serde_json::json!({ "verdict": "PASS", "reducers": reducers }).to_string();
+    r
+}
+
+#[test]
+fn reducer_amplitudes_are_plotted_and_a_growth_beyond_u_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let db = dir.path().join("h.sqlite");
+    let mut h = History::open(&DbLocation::Sqlite(db.clone())).unwrap();
+    // j3 n=1 within its U, n=2 up 0.0020 deg beyond sqrt(0.001^2 + 0.001^2) = 0.0014;
+    // n=3 and joint 2 held at their prior (not measurements: not plotted, not compared).
+    let first = h
+        .insert(&with_reducers(
+            record(RecordKind::Session, SERIAL, "2026-01-10", b"one", 0.0125),
+            &[
+                (2, 1, 0.004, 0.01, false),
+                (3, 1, 0.0020, 0.0010, true),
+                (3, 2, 0.0030, 0.0010, true),
+                (3, 3, 0.0010, 0.0040, false),
+            ],
+        ))
+        .unwrap()
+        .id;
+    let second = h
+        .insert(&with_reducers(
+            record(RecordKind::Session, SERIAL, "2026-06-10", b"two", 0.0131),
+            &[
+                (2, 1, 0.009, 0.01, false),
+                (3, 1, 0.0022, 0.0010, true),
+                (3, 2, 0.0050, 0.0010, true),
+                (3, 3, 0.0090, 0.0040, false),
+            ],
+        ))
+        .unwrap()
+        .id;
+    let mut check = record(RecordKind::Check, SERIAL, "2026-09-01", b"three", 0.0128);
+    check.reference_id = Some(first);
+    h.insert(&check).unwrap();
+    drop(h);
+
+    let plots = dir.path().join("plots");
+    let db = db.to_str().unwrap();
+    let text = stdout(&zerocal(&[
+        "history",
+        SERIAL,
+        "--db",
+        db,
+        "--plot",
+        plots.to_str().unwrap(),
+    ]));
+    let wear = format!(
+        "record {second}: reducer j3 n=2: amplitude 0.0050 deg, up 0.0020 deg since record \
+         {first} (2026-01-10), beyond the combined U(k=2) 0.0014 deg: a gearbox wearing shows \
+         as this growing"
+    );
+    assert!(text.contains(&wear), "{text}");
+    assert_eq!(text.matches("reducer j").count(), 1, "{text}");
+    // Joint 3's reducer beside its zero; joint 2 measured no harmonic: no reducer plot.
+    let path = plots.join("KR6_0001_A-j3-reducer.svg");
+    assert!(
+        text.contains(&format!("wrote {}", path.display())),
+        "{text}"
+    );
+    assert!(!plots.join("KR6_0001_A-j2-reducer.svg").exists());
+    assert_eq!(std::fs::read_dir(&plots).unwrap().count(), 6);
+    let svg = std::fs::read_to_string(&path).unwrap();
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    assert!(svg.contains("joint 3 reducer, each harmonic"));
+    assert!(svg.contains("n=1: A, bar U(k=2)") && svg.contains("n=2: A, bar U(k=2)"));
+    assert!(!svg.contains("n=3: A"), "held at its prior: not a series");
+    assert!(svg.contains("2 amplitudes held at the fit"));
+    // Two sessions of two orders: four filled markers in the chart, two in the legend.
+    assert_eq!(svg.matches("<circle").count(), 6, "{svg}");
+
+    let v: serde_json::Value = serde_json::from_str(&stdout(&zerocal(&[
+        "history", SERIAL, "--db", db, "--json",
+    ])))
+    .unwrap();
+    let changes: Vec<&serde_json::Value> = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|r| r["reducer_changes"].as_array().unwrap())
+        .collect();
+    assert_eq!(changes.len(), 1);
+    let c = changes[0];
+    assert_eq!(c["record_id"].as_i64(), Some(second));
+    assert_eq!(c["previous_record_id"].as_i64(), Some(first));
+    assert_eq!(
+        (c["joint"].as_u64(), c["order"].as_u64()),
+        (Some(3), Some(2))
+    );
+    assert_eq!(c["amplitude_deg"].as_f64(), Some(0.0050));
+}
+
+#[test]
+fn a_recorded_session_names_a_harmonic_grown_since_the_last_that_measured_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let db = dir.path().join("h.sqlite");
+    // An earlier session of the robot that measured joint 5's first harmonic at nothing.
+    let mut h = History::open(&DbLocation::Sqlite(db.clone())).unwrap();
+    let first = h
+        .insert(&with_reducers(
+            record(RecordKind::Session, "SIM-1", "2026-01-05", b"one", 0.0),
+            &[(5, 1, 0.0, 0.0001, true)],
+        ))
+        .unwrap()
+        .id;
+    drop(h);
+    let export = dir.path().join("session.txt");
+    let export = export.to_str().unwrap();
+    stdout(&zerocal(&[
+        "simulate",
+        "--seed",
+        "5",
+        "--brackets",
+        "calibrated",
+        "--mount-tolerance-deg",
+        "0.3",
+        "--seat-repeatability-deg",
+        "0.0015",
+        "--export",
+        export,
+    ]));
+    let session = [
+        "session",
+        export,
+        "--record",
+        "--serial",
+        "SIM-1",
+        "--measured-on",
+        "2026-03-01",
+        "--db",
+        db.to_str().unwrap(),
+        "--half-turn-tolerance-deg",
+        "0.05",
+    ];
+    let v: serde_json::Value =
+        serde_json::from_str(&stdout(&zerocal(&[&session[..], &["--json"]].concat()))).unwrap();
+    let changes = v["reducer_changes"].as_array().unwrap();
+    assert_eq!(changes.len(), 1, "{changes:?}");
+    let c = &changes[0];
+    assert_eq!(
+        (c["joint"].as_u64(), c["order"].as_u64()),
+        (Some(5), Some(1))
+    );
+    assert_eq!(c["previous_record_id"].as_i64(), Some(first));
+    assert_eq!(c["record_id"], v["record_id"]);
+    let grew = c["increase_deg"].as_f64().unwrap();
+    assert!(grew > c["combined_k2_deg"].as_f64().unwrap(), "{c}");
+    // The report names it under the record line (the same export: already recorded).
+    let text = stdout(&zerocal(&session));
+    assert!(text.contains("already recorded"), "{text}");
+    assert!(
+        text.contains(&format!(
+            "reducer j5 n=1: amplitude {grew:.4} deg, up {grew:.4} deg since record {first} \
+             (2026-01-05)"
+        )),
+        "{text}"
+    );
+}

@@ -393,20 +393,31 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             let record = session_record(&analysis, &bytes, serial, &args.meta)?;
             let mut history = args.db.open()?;
             let inserted = history.insert(&record).map_err(crate::db::history_failed)?;
-            Some((inserted, history.location().to_owned()))
+            // The reducers' amplitudes against the robot's previous sessions.
+            let mut changes = crate::reducer_trend::changes_in(
+                &history
+                    .list(Some(serial))
+                    .map_err(crate::db::history_failed)?,
+            );
+            changes.retain(|c| c.record_id == inserted.id);
+            Some((inserted, history.location().to_owned(), changes))
         }
         _ => None,
     };
     if args.json {
         let mut value =
             serde_json::to_value(&analysis.json).map_err(|e| CliError::Input(e.to_string()))?;
-        if let (Some((inserted, _)), Some(object)) = (&recorded, value.as_object_mut()) {
+        if let (Some((inserted, _, changes)), Some(object)) = (&recorded, value.as_object_mut()) {
             object.insert("record_id".into(), inserted.id.into());
+            object.insert(
+                "reducer_changes".into(),
+                serde_json::to_value(changes).map_err(|e| CliError::Input(e.to_string()))?,
+            );
         }
         return serde_json::to_string_pretty(&value).map_err(|e| CliError::Input(e.to_string()));
     }
     let mut out = render(&analysis.json);
-    if let Some((inserted, at)) = recorded {
+    if let Some((inserted, at, changes)) = recorded {
         out.push_str(&if inserted.new {
             format!("recorded: record {} in {at}\n", inserted.id)
         } else {
@@ -415,6 +426,10 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
                 inserted.id
             )
         });
+        for c in &changes {
+            out.push_str(&c.line());
+            out.push('\n');
+        }
     }
     Ok(out)
 }
