@@ -66,8 +66,8 @@ pub struct RecordJson<'a> {
     pub brackets: serde_json::Value,
     pub conditions: serde_json::Value,
     pub result: serde_json::Value,
-    /// The reducer harmonics whose amplitude this session measured beyond the combined
-    /// U(k=2) above the robot's previous session's ([`crate::reducer_trend`]).
+    /// The reducer harmonics whose amplitude this session measured beyond
+    /// [`crate::reducer_trend::WEAR_SIGMAS`] above the robot's previous session's.
     pub reducer_changes: Vec<ReducerChange>,
 }
 

@@ -3,7 +3,7 @@
 //! prints it and the history keeps it (in the record's result). No vendor mastering
 //! tool shows it; over the sessions of one robot, an amplitude that grows is a gearbox
 //! wearing (`zerocal history --plot` draws them; [`crate::reducer_trend`] names a
-//! growth beyond the combined U(k=2) when a session is recorded).
+//! growth beyond three combined standard uncertainties when a session is recorded).
 
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
