@@ -87,7 +87,9 @@ pub struct SessionArgs {
     /// Print one JSON object instead of the report.
     #[arg(long)]
     pub json: bool,
-    /// Store the session in the history (`zerocal history`), with `--serial`.
+    /// Store the session in the history (`zerocal history`), with `--serial`; then name
+    /// each reducer harmonic grown since the robot's previous session beyond three
+    /// combined standard uncertainties (a gearbox wearing; docs/history.md).
     #[arg(long, requires = "serial")]
     pub record: bool,
     /// The robot's serial number, as on its rating plate (with `--record`).
