@@ -8,12 +8,13 @@
 //!   same way, and counted in days from 1970-01-01 ([`Date::days`], [`Date::from_days`]).
 //! - [`Timestamp`]: a date and a UTC time of day to the second, from Unix seconds,
 //!   written as RFC 3339 (`2026-11-27T06:47:25Z`).
-//! - [`Timestamp::now`] and [`Date::today`]: `SOURCE_DATE_EPOCH` if it is set (the
-//!   reproducible-builds convention: what zerocal writes can be made byte for byte
-//!   again), else the clock; a value that is set but is not seconds since 1970 is an
-//!   error ([`EpochError`]), never silently replaced by the clock.
-//!   [`Timestamp::clock`] is the clock alone, for when a thing happened (a record
-//!   stored in the history), which no environment variable may change.
+//! - [`Timestamp::now`]: `SOURCE_DATE_EPOCH` if it is set (the reproducible-builds
+//!   convention: a generated file's header can be made byte for byte again), else the
+//!   clock; a value that is set but is not seconds since 1970 is an error
+//!   ([`EpochError`]), never silently replaced by the clock.
+//!   [`Timestamp::clock`] is the clock alone, for when a thing happens (a session
+//!   measured, a bracket calibrated, a certificate issued, a record stored), which no
+//!   environment variable may change.
 //!
 //! No leap seconds (Unix time has none) and no time zones: every date is UTC.
 //!
@@ -252,14 +253,6 @@ impl Date {
     #[must_use]
     pub fn day(self) -> u32 {
         self.day
-    }
-
-    /// Today (UTC): the date of [`Timestamp::now`].
-    ///
-    /// # Errors
-    /// As [`Timestamp::now`]: `SOURCE_DATE_EPOCH` set but not seconds since 1970.
-    pub fn today() -> Result<Date, EpochError> {
-        Timestamp::now().map(Timestamp::date)
     }
 }
 

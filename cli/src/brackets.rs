@@ -188,15 +188,11 @@ pub fn calibration_date(date: &str) -> Result<String, CliError> {
     })
 }
 
-/// Today's date (UTC) as `YYYY-MM-DD`: `SOURCE_DATE_EPOCH`'s if it is set, else the
-/// clock's.
-///
-/// # Errors
-/// `SOURCE_DATE_EPOCH` set but not seconds since 1970 (exit 2).
-pub fn today_utc() -> Result<String, CliError> {
-    Date::today()
-        .map(|d| d.to_string())
-        .map_err(|e| CliError::Input(e.to_string()))
+/// Today's date (UTC) as `YYYY-MM-DD`, from the clock: the day something is measured,
+/// calibrated or issued happens now, whatever `SOURCE_DATE_EPOCH` says (a build shell
+/// that sets it for reproducible output would otherwise date a session 1980).
+pub fn today_utc() -> String {
+    zerocal_civil::Timestamp::clock().date().to_string()
 }
 
 /// The `brackets` reply's lines as the profile upload's `[[bracket]]` TOML, each

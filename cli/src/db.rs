@@ -73,8 +73,7 @@ impl RecordMeta {
     /// The day measured.
     ///
     /// # Errors
-    /// `--measured-on` that is not a day of 2000-2999; without it, `SOURCE_DATE_EPOCH`
-    /// set but not seconds since 1970.
+    /// `--measured-on` that is not a day of 2000-2999 (without it: today, by the clock).
     pub fn day(&self) -> Result<String, CliError> {
         match &self.measured_on {
             Some(d) => crate::brackets::calibration_day(d)
@@ -82,7 +81,7 @@ impl RecordMeta {
                 .map_err(|e| {
                     CliError::Input(format!("--measured-on '{d}': not a day YYYY-MM-DD: {e}"))
                 }),
-            None => crate::brackets::today_utc(),
+            None => Ok(crate::brackets::today_utc()),
         }
     }
 }

@@ -390,3 +390,45 @@ fn a_recorded_session_names_a_harmonic_grown_since_the_last_that_measured_it() {
         "{text}"
     );
 }
+
+/// The day a session is measured is the clock's, whatever `SOURCE_DATE_EPOCH` says: a
+/// build shell that sets it for reproducible output (Nix sets 1980-01-01) must not date
+/// a robot's session 1980. The program headers alone take it (program_golden).
+#[test]
+fn a_session_recorded_without_a_date_is_dated_by_the_clock_not_source_date_epoch() {
+    let dir = tempfile::tempdir().unwrap();
+    let db = dir.path().join("h.sqlite");
+    let export = dir.path().join("session.txt");
+    let export = export.to_str().unwrap();
+    stdout(&zerocal(&["simulate", "--seed", "3", "--export", export]));
+    let before = zerocal_civil::Timestamp::clock().date().to_string();
+    let out = Command::new(env!("CARGO_BIN_EXE_zerocal"))
+        .env("SOURCE_DATE_EPOCH", "315532800")
+        .args([
+            "session",
+            export,
+            "--record",
+            "--serial",
+            "CLOCK-1",
+            "--db",
+            db.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    stdout(&out);
+    let after = zerocal_civil::Timestamp::clock().date().to_string();
+    let v: serde_json::Value = serde_json::from_str(&stdout(&zerocal(&[
+        "history",
+        "CLOCK-1",
+        "--db",
+        db.to_str().unwrap(),
+        "--json",
+    ])))
+    .unwrap();
+    let day = v[0]["measured_on"].as_str().unwrap().to_owned();
+    assert!(
+        day == before || day == after,
+        "measured on {day}, today {before}"
+    );
+    assert_ne!(day, "1980-01-01");
+}

@@ -106,9 +106,6 @@ pub enum CertificateError {
     /// Equipment the session rests on was past its due date, or the number could not be
     /// drawn.
     Equipment(String),
-    /// Today's date, the issue date, cannot be taken: `SOURCE_DATE_EPOCH` is set but is
-    /// not seconds since 1970.
-    Today(String),
 }
 
 impl fmt::Display for CertificateError {
@@ -125,7 +122,6 @@ impl fmt::Display for CertificateError {
                 write!(f, "certificate: the residual figure cannot be drawn: {e}")
             }
             CertificateError::Equipment(e) => write!(f, "certificate: {e}"),
-            CertificateError::Today(e) => write!(f, "certificate: the issue date: {e}"),
         }
     }
 }
@@ -135,9 +131,7 @@ impl std::error::Error for CertificateError {}
 impl From<CertificateError> for CliError {
     fn from(e: CertificateError) -> Self {
         match e {
-            CertificateError::Subject { .. } | CertificateError::Today(_) => {
-                CliError::Input(e.to_string())
-            }
+            CertificateError::Subject { .. } => CliError::Input(e.to_string()),
             CertificateError::NotFinite { .. }
             | CertificateError::Figure(_)
             | CertificateError::Equipment(_) => CliError::Refused(e.to_string()),
@@ -247,7 +241,7 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
             number: issuer::new_number(&issuer)?,
             session_id: record.id,
             as_left_id: as_left.as_ref().map(|a| a.record_id),
-            issued_on: crate::brackets::today_utc()?,
+            issued_on: crate::brackets::today_utc(),
             issuer_json,
         })
         .map_err(crate::db::history_failed)?;
@@ -282,14 +276,12 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
 /// # Errors
 /// A record field a certificate cannot state (a malformed date or hash, an empty
 /// serial, a tolerance that is not a positive number), a non-finite number in the
-/// session, the figure failing, `SOURCE_DATE_EPOCH` set but not seconds since 1970
-/// (today is its date when it is set).
+/// session, the figure failing. Issued today, by the clock (UTC).
 pub fn certificate(
     subject: &CertificateSubject,
     analysis: &Analysis,
 ) -> Result<Certificate, CertificateError> {
-    let today = zerocal_civil::Date::today().map_err(|e| CertificateError::Today(e.to_string()))?;
-    certificate_issued_on(subject, analysis, &today.to_string())
+    certificate_issued_on(subject, analysis, &crate::brackets::today_utc())
 }
 
 /// [`certificate`] with its issue date given (`YYYY-MM-DD`).
@@ -324,7 +316,7 @@ pub fn write(
     analysis: &Analysis,
     out: &Path,
 ) -> Result<Vec<PathBuf>, CliError> {
-    write_issued_on(subject, analysis, out, &crate::brackets::today_utc()?)
+    write_issued_on(subject, analysis, out, &crate::brackets::today_utc())
 }
 
 /// [`write`] with its issue date given (`YYYY-MM-DD`).

@@ -321,7 +321,7 @@ fn request(command: Command, expect: Expect) -> Request {
 fn date_or_today(date: Option<&String>) -> Result<String, CliError> {
     match date {
         Some(d) => crate::brackets::calibration_date(d),
-        None => crate::brackets::today_utc(),
+        None => Ok(crate::brackets::today_utc()),
     }
 }
 
