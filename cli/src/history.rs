@@ -1,12 +1,12 @@
 //! `zerocal history [SERIAL] [--db PATH|URL] [--json] [--plot DIR]`: the calibration
 //! history of every robot or of one serial, as a table, a JSON array, or one SVG per
 //! joint of its zero over time with the U(k=2) band and one of its reducer's measured
-//! harmonics ([`crate::reducer_trend`]: the table and the JSON name an amplitude grown
+//! harmonics ([`crate::session::reducer_trend`]: the table and the JSON name an amplitude grown
 //! beyond its U). [`DbArg`] is the `--db` option
 //! every command that reads or writes the history shares.
 
 use crate::error::CliError;
-use crate::reducer_trend::{self, ReducerChange, SessionHarmonics};
+use crate::session::reducer_trend::{self, ReducerChange, SessionHarmonics};
 use plotters::prelude::*;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -67,7 +67,7 @@ pub struct RecordJson<'a> {
     pub conditions: serde_json::Value,
     pub result: serde_json::Value,
     /// The reducer harmonics whose amplitude this session measured beyond
-    /// [`crate::reducer_trend::WEAR_SIGMAS`] above the robot's previous session's.
+    /// [`crate::session::reducer_trend::WEAR_SIGMAS`] above the robot's previous session's.
     pub reducer_changes: Vec<ReducerChange>,
 }
 

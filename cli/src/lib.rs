@@ -21,7 +21,6 @@ pub mod plots;
 pub mod profile_cmd;
 pub mod program;
 pub mod record;
-pub mod reducer_trend;
 pub mod report_notes;
 pub mod restore;
 pub mod robot;

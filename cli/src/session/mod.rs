@@ -17,6 +17,7 @@
 pub mod entry;
 mod json;
 mod record;
+pub mod reducer_trend;
 pub mod reducers;
 mod render;
 pub use json::{to_json, BudgetJson, JointJson, SessionJson};
@@ -396,7 +397,7 @@ pub fn run(args: &SessionArgs) -> Result<String, CliError> {
             let mut history = args.db.open()?;
             let inserted = history.insert(&record).map_err(crate::db::history_failed)?;
             // The reducers' amplitudes against the robot's previous sessions.
-            let mut changes = crate::reducer_trend::changes_in(
+            let mut changes = crate::session::reducer_trend::changes_in(
                 &history
                     .list(Some(serial))
                     .map_err(crate::db::history_failed)?,

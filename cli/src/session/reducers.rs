@@ -2,7 +2,7 @@
 //! by harmonic (`zerocal_core::stage2::transmission::reducer_harmonics`), as the report
 //! prints it and the history keeps it (in the record's result). No vendor mastering
 //! tool shows it; over the sessions of one robot, an amplitude that grows is a gearbox
-//! wearing (`zerocal history --plot` draws them; [`crate::reducer_trend`] names a
+//! wearing (`zerocal history --plot` draws them; [`crate::session::reducer_trend`] names a
 //! growth beyond three combined standard uncertainties when a session is recorded).
 
 use serde::{Deserialize, Serialize};
