@@ -49,9 +49,9 @@ pub fn of_record(record: &Record) -> Option<SessionHarmonics> {
 /// How many combined standard uncertainties an amplitude must grow by to be named.
 ///
 /// A session compares about ten measured harmonics at once. At 2 (the combined U at
-/// k = 2) a healthy robot would show a line in about one comparison in five (ten
+/// k = 2) a healthy robot would show a line in about one session in five (ten
 /// one-sided chances of about 2.3 % each, for a normal estimate); at 3, each chance is
-/// about 0.13 % and a stray line comes about once in a hundred comparisons. A real wear
+/// about 0.13 % and a stray line comes in about one session in seventy-five. A real wear
 /// grows session after session and crosses it all the same.
 pub const WEAR_SIGMAS: f64 = 3.0;
 
