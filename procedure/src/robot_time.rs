@@ -16,7 +16,9 @@
 //! 3. **The closing bench readings.** The robot parks, the pendant is taken off and read
 //!    on the bench as in stage 0 ([`BENCH_HEADINGS`] captures, turned by hand about a
 //!    quarter turn on the same spot between them, an OK arming each after the first): a
-//!    third mounting. The robot does not move for it.
+//!    third mounting. The robot's part ends when the pendant is off the flange: the
+//!    program ends there, and the readings on the bench need no robot
+//!    ([`SessionTime::closing_s`], not in the robot time).
 //!
 //! Its robot time is modelled as:
 //!
@@ -145,22 +147,26 @@ pub enum Mounting {
 pub struct SessionTime<T> {
     /// The robot moving.
     pub motion_s: T,
-    /// Standing for settling and the still window at every capture (the closing
-    /// readings' on the bench included).
+    /// Standing for settling and the still window at every capture on the robot.
     pub dwell_s: T,
-    /// The pendant's three mountings (upper arm, flange, bench).
+    /// The pendant's three mountings (clipped to the upper arm, moved to the flange,
+    /// taken off the flange to the bench).
     pub remount_s: T,
-    /// Operator OKs at the pendant.
+    /// Operator OKs at the pendant while it is on the robot.
     pub operator_s: T,
-    /// All of it.
+    /// The robot time: all of the above, from the first mounting until the pendant is
+    /// off the flange.
     pub total_s: T,
+    /// The closing bench readings after the robot's part (their dwells and the OKs
+    /// between their headings): the operator's time on the bench, the robot free.
+    pub closing_s: T,
     /// Moves.
     pub moves: u16,
-    /// Captures (stage 1's four, two per stage-2 pose, the closing readings' headings).
+    /// Captures on the robot (stage 1's four, two per stage-2 pose).
     pub captures: u16,
     /// Mountings of the pendant.
     pub mountings: u16,
-    /// Stops for an operator's OK.
+    /// Stops for an operator's OK while the pendant is on the robot.
     pub ok_stops: u16,
 }
 
@@ -301,8 +307,9 @@ impl<T: Real> TimeModel<T> {
     /// pendant clipped to the upper arm at `mount1` (the move to it starts from a pose
     /// unknown here and is not counted), stage 1's four captures, the pendant moved to
     /// the flange at `mount2`, two captures of every stage-2 pose in order, then the
-    /// robot parked at `park` for the closing readings on the bench (a mounting and
-    /// [`BENCH_HEADINGS`] captures, an OK before each after the first).
+    /// robot parked at `park` and the pendant taken off it (a mounting). The closing
+    /// readings on the bench ([`BENCH_HEADINGS`] captures, an OK before each after the
+    /// first) follow with the robot free: [`SessionTime::closing_s`], not in the total.
     ///
     /// `needs_ok(mounting, path)` says whether driving `path` from the last capture
     /// (its first point) leaves the pendant's next capture unarmed, so that an
@@ -357,8 +364,8 @@ impl<T: Real> TimeModel<T> {
 
     /// The robot time of a check along `path`: the pendant clipped to the flange at
     /// `mount` (the move to it starts from a pose unknown here and is not counted), two
-    /// captures of every check pose in order, then the robot parked at `park` for the
-    /// closing readings on the bench, counted as a session's are. No stage 1. `needs_ok`
+    /// captures of every check pose in order, then the robot parked at `park` and the
+    /// pendant taken off, the closing readings counted as a session's are. No stage 1. `needs_ok`
     /// as for [`session_time`](Self::session_time).
     pub fn check_time(
         &self,
@@ -371,8 +378,8 @@ impl<T: Real> TimeModel<T> {
     }
 
     /// The part a session and a check share, added to `s`: the pendant clipped to the
-    /// flange at `mount`, two captures of every pose, the park and the closing
-    /// readings; then the total.
+    /// flange at `mount`, two captures of every pose, the park and the pendant taken
+    /// off; then the total, and the closing readings after it.
     fn on_the_flange(
         &self,
         s: &mut SessionTime<T>,
@@ -415,16 +422,14 @@ impl<T: Real> TimeModel<T> {
             capture(s);
             here = *q;
         }
-        // The closing readings: park, the pendant to the bench, a capture at every
-        // heading (an OK arms each after a turn by hand).
+        // Park and take the pendant off: the robot's part ends there.
         run(s, &[here, park]);
         mount(s);
-        capture(s);
-        for _ in 1..BENCH_HEADINGS {
-            ok(s);
-            capture(s);
-        }
         s.total_s = s.motion_s + s.dwell_s + s.remount_s + s.operator_s;
+        // The closing readings on the bench, the robot free: a capture at every
+        // heading, an OK arming each after a turn by hand.
+        let headings = T::lit(BENCH_HEADINGS as f64);
+        s.closing_s = self.dwell_s() * headings + self.operator_ok_s * (headings - T::one());
     }
 }
 
@@ -669,23 +674,26 @@ mod tests {
             + j(4, 45.0); // park at the flange's mount
         assert!(isclose(t.motion_s, expect_motion, 0.0, 1e-9), "{t:?}");
         assert_eq!(t.moves, 2 + 2 + 3 + 2 + 1 + 2 * 4 + 1);
-        // Stage 1's four captures, two per pose, the closing readings' headings.
+        // Stage 1's four captures and two per pose on the robot.
         let bench = BENCH_HEADINGS as u16;
-        assert_eq!(t.captures, 4 + 2 * 2 + bench);
-        assert!(isclose(t.dwell_s, f64::from(8 + bench) * 3.1, 0.0, 1e-12));
+        assert_eq!(t.captures, 4 + 2 * 2);
+        assert!(isclose(t.dwell_s, 8.0 * 3.1, 0.0, 1e-12));
         assert_eq!(t.mountings, 3);
-        // The half turn's OK and one for each heading turned by hand on the bench, and
-        // one after every move that may need one: stage 1's two seconds, pose 1's
-        // second, pose 2's both.
-        assert_eq!(t.ok_stops, 1 + (bench - 1) + 5);
+        // The half turn's OK and one after every move that may need one: stage 1's
+        // two seconds, pose 1's second, pose 2's both.
+        assert_eq!(t.ok_stops, 1 + 5);
         assert!(isclose(
             t.total_s,
-            t.motion_s + t.dwell_s + 3.0 * 60.0 + f64::from(bench + 5) * 10.0,
+            t.motion_s + t.dwell_s + 3.0 * 60.0 + 6.0 * 10.0,
             0.0,
             1e-9
         ));
-        // Nothing needs an OK but the half turn and the turns on the bench.
-        assert_eq!(m.session_time(&path, |_, _| false).ok_stops, bench);
+        // The closing readings on the bench, the robot free: a dwell at each heading,
+        // an OK before each after the first; not in the robot time.
+        let closing = f64::from(bench) * 3.1 + f64::from(bench - 1) * 10.0;
+        assert!(isclose(t.closing_s, closing, 0.0, 1e-12), "{t:?}");
+        // Nothing needs an OK but the half turn.
+        assert_eq!(m.session_time(&path, |_, _| false).ok_stops, 1);
         assert!(m.validate().is_ok());
         let mut bad = m;
         bad.overshoot_deg = 0.0;
@@ -723,20 +731,18 @@ mod tests {
             isclose(check.motion_s, expect_motion, 0.0, 1e-9),
             "{check:?}"
         );
-        // Two captures a pose and the closing headings; the flange and the bench
-        // mountings; pose 1's second, pose 2's both and an OK for each heading turned
-        // by hand.
+        // Two captures a pose; the flange mounting and taking the pendant off; pose
+        // 1's second and pose 2's both. The closing readings follow, the robot free.
         let bench = BENCH_HEADINGS as u16;
-        assert_eq!(
-            (check.captures, check.mountings, check.ok_stops),
-            (4 + bench, 2, 3 + bench - 1)
-        );
+        assert_eq!((check.captures, check.mountings, check.ok_stops), (4, 2, 3));
         assert!(isclose(
             check.total_s,
-            check.motion_s + f64::from(4 + bench) * 3.1 + 2.0 * 60.0 + f64::from(2 + bench) * 10.0,
+            check.motion_s + 4.0 * 3.1 + 2.0 * 60.0 + 3.0 * 10.0,
             0.0,
             1e-9
         ));
+        let closing = f64::from(bench) * 3.1 + f64::from(bench - 1) * 10.0;
+        assert!(isclose(check.closing_s, closing, 0.0, 1e-12));
     }
 
     /// Costs between points on a line, visited from 0: the shortest path is sorted.

@@ -15,8 +15,11 @@ use zerocal_procedure::robot_time::CAPTURES_PER_POSE;
 /// The session's robot time in `--json`.
 #[derive(Serialize, Debug, Clone, PartialEq)]
 pub struct RobotTimeJson {
-    /// All of it (s).
+    /// The robot time (s): from the first mounting until the pendant is off the
+    /// flange.
     pub total_s: f64,
+    /// The closing bench readings after it, the robot free (s).
+    pub closing_s: f64,
     /// Moving (s).
     pub motion_s: f64,
     /// Standing for settling and the pendant's still window (s).
@@ -27,13 +30,12 @@ pub struct RobotTimeJson {
     pub operator_s: f64,
     /// Moves.
     pub moves: u16,
-    /// Captures: two per pose (stage 1's two and every stage-2 pose), the closing
-    /// readings' headings.
+    /// Captures on the robot: two per pose (stage 1's two and every stage-2 pose).
     pub captures: u16,
-    /// Mountings of the pendant (upper arm, flange, the bench for the closing
-    /// reversal).
+    /// Mountings of the pendant (clipped to the upper arm, moved to the flange,
+    /// taken off to the bench).
     pub mountings: u16,
-    /// Stops for an operator's OK.
+    /// Stops for an operator's OK while the pendant is on the robot.
     pub ok_stops: u16,
     /// Joint speed, % of each joint's maximum.
     pub speed_percent: u8,
@@ -114,6 +116,7 @@ impl RobotTimeJson {
         let tm = &sp.timing;
         RobotTimeJson {
             total_s: t.total_s,
+            closing_s: t.closing_s,
             motion_s: t.motion_s,
             dwell_s: t.dwell_s,
             remount_s: t.remount_s,

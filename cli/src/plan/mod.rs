@@ -119,13 +119,17 @@ mod tests {
             .sum();
         let total = t["total_s"].as_f64().unwrap_or(f64::NAN);
         assert!((parts - total).abs() < 1e-9, "{parts} vs {total}");
-        // Two captures of stage 1's two poses and of every planned pose, the closing
-        // readings' headings; three mountings; each capture's dwell 3.1 s.
+        // Two captures of stage 1's two poses and of every planned pose on the robot;
+        // three mountings; each capture's dwell 3.1 s. The closing readings' headings
+        // follow off the robot.
         let poses = v["poses_deg"].as_array().map_or(0, Vec::len) as u64;
         let captures = t["captures"].as_u64().unwrap_or(0);
-        assert_eq!(
-            captures,
-            CAPTURES_PER_POSE as u64 * (poses + 2) + zerocal_procedure::BENCH_HEADINGS as u64
+        assert_eq!(captures, CAPTURES_PER_POSE as u64 * (poses + 2));
+        let headings = zerocal_procedure::BENCH_HEADINGS as f64;
+        let closing = t["closing_s"].as_f64().unwrap_or(f64::NAN);
+        assert!(
+            (closing - (headings * 3.1 + (headings - 1.0) * 10.0)).abs() < 1e-9,
+            "{closing}"
         );
         assert_eq!(t["mountings"].as_u64(), Some(3));
         let dwell = t["dwell_per_capture_s"].as_f64().unwrap_or(f64::NAN);

@@ -138,10 +138,11 @@ fn write_robot_time(out: &mut String, sp: &SessionPlan) {
     );
     let _ = writeln!(
         out,
-        "  every pose captured twice (stage 1's two and the {} of the plan): every joint arriving from {} deg below, then from {} deg above; then the closing readings on the bench (a mounting, {} captures turned by hand, {} OKs)",
+        "  every pose captured twice (stage 1's two and the {} of the plan): every joint arriving from {} deg below, then from {} deg above; the robot's part ends with the pendant taken off the flange; the closing readings on the bench follow with the robot free ({:.0} s: {} captures turned by hand, {} OKs)",
         p.poses_rad.len(),
         tm.model.approach_deg,
         tm.model.overshoot_deg,
+        t.closing_s,
         zerocal_procedure::BENCH_HEADINGS,
         zerocal_procedure::BENCH_HEADINGS - 1,
     );

@@ -348,7 +348,7 @@ impl StepWriter<'_> {
             ("stage 2", "session done; the pendant shows the result")
         };
         self.steps.push(Step::Comment(format!(
-            "zerocal: {done} done; the robot parks where the pendant went on the flange (tilted past its range) for the closing bench readings"
+            "zerocal: {done} done; the robot parks where the pendant went on the flange (tilted past its range) to take the pendant off"
         )));
         self.drive(
             &[*last, poses.park],
@@ -356,17 +356,17 @@ impl StepWriter<'_> {
             Mounting::Flange,
             "the park",
         )?;
-        // The pendant's own bench procedure, as in stage 0: its headings turned by hand.
+        // The robot's part ends here: the closing readings are the pendant's own bench
+        // procedure, as in stage 0, and need no robot.
         self.steps.push(Step::Stop(vec![
-            "zerocal: closing bench readings: take the".into(),
-            "pendant off the flange to the bench of".into(),
+            "zerocal: take the pendant off the flange,".into(),
+            "then continue: the program ends and the".into(),
+            "robot is free. On the bench of stage 0,".into(),
             format!(
-                "stage 0 and read it at {} headings, turned",
+                "read the pendant at its {} headings as it",
                 zerocal_procedure::BENCH_HEADINGS
             ),
-            "by hand about a quarter turn on the same".into(),
-            "spot between them, as the pendant guides.".into(),
-            "Then continue.".into(),
+            "guides (the closing bench readings).".into(),
         ]));
         self.steps.push(Step::Comment(format!("zerocal: {end}")));
         Ok(())

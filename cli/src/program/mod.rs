@@ -111,7 +111,7 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
         let t = &check.time;
         let run_s = t.total_s - t.remount_s;
         return Ok(format!(
-            "wrote {written}: {} check program {} for {} ({} of the plan's {} poses, each captured twice; {} moves) at {} % speed.\nPredicted robot time {:.1} min: the program's run {:.1} min (moves, dwells, OKs; a check keeps it within {:.0} min) and {} mountings of the pendant {:.1} min (stated default each), the closing bench readings included.\nRun it after stage 0 of the pendant's check mode. Check the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
+            "wrote {written}: {} check program {} for {} ({} of the plan's {} poses, each captured twice; {} moves) at {} % speed.\nPredicted robot time {:.1} min: the program's run {:.1} min (moves, dwells, OKs; a check keeps it within {:.0} min) and {} mountings of the pendant {:.1} min (stated default each); the closing bench readings follow, the robot free.\nRun it after stage 0 of the pendant's check mode. Check the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
             args.format,
             check.name,
             check.profile.name,
@@ -130,7 +130,7 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
     let written = write_files(&session, args)?;
     let t = &session.time;
     Ok(format!(
-        "wrote {written}: {} program {} for {} ({} stage-2 poses, each captured twice; {} moves), predicted robot time {:.1} min at {} % speed, the closing bench readings included.\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
+        "wrote {written}: {} program {} for {} ({} stage-2 poses, each captured twice; {} moves), predicted robot time {:.1} min at {} % speed, until the pendant is off the flange (the closing bench readings follow, the robot free).\nCheck the cell for collisions with the pendant and its bracket, then step through it once at reduced speed (T1).",
         args.format,
         session.name,
         session.profile.name,

@@ -129,7 +129,7 @@ pub fn header_lines(
             "Stop: clip the pendant to the upper arm (the robot stands with the pendant tilted past its range, so it cannot capture early). Stage 1: the stage-1 pose twice, then {j1} turned by 180 deg twice (an OK on the pendant arms the first). Stop: move the pendant to the flange (tilted again). Stage 2: the plan's poses in its order, twice each; load the same plan into the pendant (plan set)."
         ),
         format!(
-            "Closing bench readings: the robot parks where the pendant went on the flange and stops; take the pendant off and read it on the bench as in stage 0 ({} headings, turned by hand about a quarter turn on the same spot between them). The program ends there.",
+            "Closing bench readings: the robot parks where the pendant went on the flange and stops; take the pendant off and continue: the program ends there and the robot is free. Then read the pendant on the bench as in stage 0 ({} headings, turned by hand about a quarter turn on the same spot between them).",
             zerocal_procedure::BENCH_HEADINGS
         ),
         format!(
@@ -141,14 +141,15 @@ pub fn header_lines(
             tm.settle_s, tm.window_s, tm.sample_period_s
         ),
         format!(
-            "Predicted robot time {:.1} min, the closing bench readings included: motion {:.0} s, dwell {:.0} s ({} captures), {} mountings {:.0} s, operator OKs {:.0} s.",
+            "Predicted robot time {:.1} min, until the pendant is off the flange: motion {:.0} s, dwell {:.0} s ({} captures), {} mountings {:.0} s, operator OKs {:.0} s; then the closing bench readings, {:.0} s, the robot free.",
             time.total_s / 60.0,
             time.motion_s,
             time.dwell_s,
             time.captures,
             time.mountings,
             time.remount_s,
-            time.operator_s
+            time.operator_s,
+            time.closing_s
         ),
         "WARNING: the path is NOT checked for collisions with the cell, the pendant or its bracket. Check the cell, then step through the program once at reduced speed (T1) before running it.".to_owned(),
     ]

@@ -16,13 +16,15 @@ MODULE ZC_IRB140
     ! again). Stage 2: the plan's poses in its order, twice each; load the same plan into the pendant
     ! (plan set).
     ! Closing bench readings: the robot parks where the pendant went on the flange and stops; take the
-    ! pendant off and read it on the bench as in stage 0 (4 headings, turned by hand about a quarter
-    ! turn on the same spot between them). The program ends there.
+    ! pendant off and continue: the program ends there and the robot is free. Then read the pendant on
+    ! the bench as in stage 0 (4 headings, turned by hand about a quarter turn on the same spot
+    ! between them).
     ! Speed: joint moves at 10 % of each joint's maximum speed, exact stops.
     ! Dwell 3.1 s at each capture: settling 1 s (stated default) + the pendant's 2 s still window + 2
     ! sensor periods of 0.05 s.
-    ! Predicted robot time 12.2 min, the closing bench readings included: motion 219 s, dwell 291 s
-    ! (94 captures), 3 mountings 180 s, operator OKs 40 s.
+    ! Predicted robot time 11.5 min, until the pendant is off the flange: motion 219 s, dwell 279 s
+    ! (90 captures), 3 mountings 180 s, operator OKs 10 s; then the closing bench readings, 42 s, the
+    ! robot free.
     ! WARNING: the path is NOT checked for collisions with the cell, the pendant or its bracket. Check
     ! the cell, then step through the program once at reduced speed (T1) before running it.
     CONST jointtarget zc_t1:=[[-90.00000,-45.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -546,14 +548,14 @@ MODULE ZC_IRB140
         MoveAbsJ zc_t183,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal: stage 2 done; the robot parks where the pendant went on the flange (tilted past its
-        ! range) for the closing bench readings
+        ! range) to take the pendant off
         MoveAbsJ zc_t184,v100 \T:=7.664,fine,tool0;
-        TPWrite "zerocal: closing bench readings: take";
-        TPWrite "the pendant off the flange to the bench";
-        TPWrite "of stage 0 and read it at 4 headings,";
-        TPWrite "turned by hand about a quarter turn on";
-        TPWrite "the same spot between them, as the";
-        TPWrite "pendant guides. Then continue.";
+        TPWrite "zerocal: take the pendant off the";
+        TPWrite "flange, then continue: the program ends";
+        TPWrite "and the robot is free. On the bench of";
+        TPWrite "stage 0, read the pendant at its 4";
+        TPWrite "headings as it guides (the closing bench";
+        TPWrite "readings).";
         STOP;
         ! zerocal: session done; the pendant shows the result
     ENDPROC

@@ -513,9 +513,9 @@ pub fn plan<T: Real>(
 /// Distinct stage-2 poses a session plans by default: forty. The fit estimates 45-51
 /// parameters (the offsets, the sensor's terms, the sags, each joint's transmission
 /// error once and twice a turn, the lost motion, the geometry the poses separate);
-/// forty poses of two readings leave it some 30 degrees of freedom, and with the
-/// revisits keep the robot time within 12 minutes at 10 % speed (`zerocal plan`
-/// prints it; docs/error-budget.md).
+/// forty poses of two readings leave it some 30 degrees of freedom. With the revisits
+/// the robot time is aimed at 12 minutes at 10 % speed (`zerocal plan` prints it;
+/// docs/planning.md names the profiles over it).
 pub const SESSION_POSES: usize = 40;
 
 /// Candidate poses a session's plan is chosen from: a plan that moves joint 2 draws
