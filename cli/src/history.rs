@@ -7,6 +7,8 @@
 
 use crate::error::CliError;
 use crate::session::reducer_trend::{self, ReducerChange, SessionHarmonics};
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
@@ -222,6 +224,49 @@ fn x_range(points: &[Point]) -> (f64, f64) {
 /// Height of the legend's strip under the chart (px): the legend never covers a record.
 const LEGEND_STRIP_PX: u32 = 34;
 
+/// A plot's SVG at `path` on white: the whole drawing, the chart's area and the
+/// legend's strip under it.
+type Canvas<'a> = (
+    DrawingArea<SVGBackend<'a>, Shift>,
+    DrawingArea<SVGBackend<'a>, Shift>,
+    DrawingArea<SVGBackend<'a>, Shift>,
+);
+
+fn canvas(path: &Path) -> std::io::Result<Canvas<'_>> {
+    let root = SVGBackend::new(path, SIZE).into_drawing_area();
+    root.fill(&WHITE).map_err(to_io)?;
+    let (chart_area, legend_area) = root.split_vertically(SIZE.1 - LEGEND_STRIP_PX);
+    Ok((root, chart_area, legend_area))
+}
+
+/// The chart every history plot draws on, its mesh drawn: day numbers on x, labelled
+/// as the dates measured, `y_desc` on y to four decimals.
+fn dated_chart<'a, 'b>(
+    area: &'a DrawingArea<SVGBackend<'b>, Shift>,
+    caption: String,
+    y_desc: String,
+    x: std::ops::Range<f64>,
+    y: std::ops::Range<f64>,
+) -> std::io::Result<ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>>
+{
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, ("sans-serif", 18))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x, y)
+        .map_err(to_io)?;
+    chart
+        .configure_mesh()
+        .x_desc("measured on")
+        .y_desc(y_desc)
+        .x_label_formatter(&|d| zerocal_civil::Date::from_days(d.round() as i64).to_string())
+        .y_label_formatter(&|v| format!("{v:.4}"))
+        .draw()
+        .map_err(to_io)?;
+    Ok(chart)
+}
+
 fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io::Result<()> {
     let (x0, x1) = x_range(points);
     let (mut y0, mut y1) = points
@@ -232,27 +277,14 @@ fn joint_plot(path: &Path, serial: &str, joint: u8, points: &[Point]) -> std::io
     let pad = ((y1 - y0) * 0.1).max(1e-4);
     y0 -= pad;
     y1 += pad;
-    let root = SVGBackend::new(path, SIZE).into_drawing_area();
-    root.fill(&WHITE).map_err(to_io)?;
-    let (chart_area, legend_area) = root.split_vertically(SIZE.1 - LEGEND_STRIP_PX);
-    let mut chart = ChartBuilder::on(&chart_area)
-        .caption(
-            format!("{serial}: joint {joint} zero offset over time, with U(k=2)"),
-            ("sans-serif", 18),
-        )
-        .margin(10)
-        .x_label_area_size(40)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(to_io)?;
-    chart
-        .configure_mesh()
-        .x_desc("measured on")
-        .y_desc(format!("j{joint} offset (deg)"))
-        .x_label_formatter(&|d| zerocal_civil::Date::from_days(d.round() as i64).to_string())
-        .y_label_formatter(&|v| format!("{v:.4}"))
-        .draw()
-        .map_err(to_io)?;
+    let (root, chart_area, legend_area) = canvas(path)?;
+    let mut chart = dated_chart(
+        &chart_area,
+        format!("{serial}: joint {joint} zero offset over time, with U(k=2)"),
+        format!("j{joint} offset (deg)"),
+        x0..x1,
+        y0..y1,
+    )?;
     // The band: the sessions' offset +/- U(k=2), joined from one session to the next.
     let sessions: Vec<&Point> = points
         .iter()
@@ -375,29 +407,16 @@ fn reducer_plot(
         (a.min(p.1 - p.2), b.max(p.1 + p.2))
     });
     y1 += ((y1 - y0) * 0.1).max(1e-4);
-    let root = SVGBackend::new(path, SIZE).into_drawing_area();
-    root.fill(&WHITE).map_err(to_io)?;
-    let (chart_area, legend_area) = root.split_vertically(SIZE.1 - LEGEND_STRIP_PX);
-    let mut chart = ChartBuilder::on(&chart_area)
-        .caption(
-            format!(
-                "{serial}: joint {joint} reducer, each harmonic's amplitude over time, with U(k=2)"
-            ),
-            ("sans-serif", 18),
-        )
-        .margin(10)
-        .x_label_area_size(40)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(to_io)?;
-    chart
-        .configure_mesh()
-        .x_desc("measured on")
-        .y_desc(format!("j{joint} harmonic amplitude A (deg)"))
-        .x_label_formatter(&|d| zerocal_civil::Date::from_days(d.round() as i64).to_string())
-        .y_label_formatter(&|v| format!("{v:.4}"))
-        .draw()
-        .map_err(to_io)?;
+    let (root, chart_area, legend_area) = canvas(path)?;
+    let mut chart = dated_chart(
+        &chart_area,
+        format!(
+            "{serial}: joint {joint} reducer, each harmonic's amplitude over time, with U(k=2)"
+        ),
+        format!("j{joint} harmonic amplitude A (deg)"),
+        x0..x1,
+        y0..y1,
+    )?;
     let mut legend: Vec<(String, RGBColor)> = Vec::new();
     // The orders side by side at each session, so that their bars do not overlap.
     let dodge = (x1 - x0) / 150.0;

@@ -22,7 +22,8 @@ use zerocal_procedure::bracket_cal::{
 use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
-    step, Event, Notice, Output, PendantProfile, Phase, ProcedureState, ReadingSlot, Record,
+    step, Event, Notice, Output, OutputError, PendantProfile, Phase, ProcedureState, ReadingSlot,
+    Record, OUTPUT_RECORDS,
 };
 /// What [`Boot::pendant`] holds, for the board to fill.
 pub use zerocal_procedure::{PendantUnit, UnitId};
@@ -95,7 +96,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             // Through core, like an upload: it decides and lists the records to store.
             if let Ok(plan) = PoseList::from_slice(boot.default_plan) {
                 let output = step(config, session, Event::SetPlan(plan));
-                if !persist(&mut store, &output.persist).await {
+                if !persist(&mut store, output.records()).await {
                     presentation.extras.store_failed = true;
                 }
             }
@@ -202,9 +203,8 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             // capture (finished again, it is kept again under a new ID), never a result
             // shown but not kept.
             let finished = output.as_ref().is_some_and(|o| {
-                o.persist
-                    .iter()
-                    .any(|r| matches!(r, Record::LastResult { .. }))
+                o.records()
+                    .is_ok_and(|r| r.iter().any(|r| matches!(r, Record::LastResult { .. })))
             });
             if let Some((id, value)) = finished.then(|| encode_kept(procedure)).flatten() {
                 stored &= match store.as_mut() {
@@ -214,8 +214,8 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                 presentation.extras.store_failed = !stored;
             }
             if let Some(output) = output {
-                if !output.persist.is_empty() {
-                    stored &= persist(&mut store, &output.persist).await;
+                if output.records().map_or(true, |r| !r.is_empty()) {
+                    stored &= persist(&mut store, output.records()).await;
                     presentation.extras.store_failed = !stored;
                 }
             }
@@ -353,18 +353,18 @@ pub fn set_profile(
     let mut output = step(config, session, Event::Clear);
     let cleared = step(config, session, Event::SetPlan(PoseList::new()));
     let generation = profile_generation.wrapping_add(1).max(1);
-    for r in cleared
-        .persist
-        .into_iter()
-        .chain(profile.to_records(generation))
-    {
-        // 1 + 2 + PROFILE_RECORDS (at most 23) records in a buffer of a whole plan's.
+    output.append(cleared);
+    for r in profile.to_records(generation) {
         output.push(r);
     }
     config.apply(profile);
     *profile_generation = generation;
     Some(output)
 }
+
+// A profile's records follow the cleared session's (its progress and the plan's end,
+// twice: 3) in one output.
+const _: () = assert!(3 + zerocal_procedure::profile::PROFILE_RECORDS <= OUTPUT_RECORDS);
 
 /// `erase all` (the store already erased): the built-in profile, no bias or result,
 /// the firmware's default plan, which the records returned store again.
@@ -447,14 +447,16 @@ fn watch_stillness(p: &mut Presentation, session: &ProcedureState<f32>) -> bool 
     started
 }
 
-/// Writes `records`; false if the store is missing or a write failed.
+/// Writes a step's records; false if the store is missing, a write failed or the step
+/// lost a record (then nothing of it is written: the store keeps the state before the
+/// step whole, and the screen says the write failed).
 async fn persist<F: NorFlash>(
     store: &mut Option<Store<F>>,
-    records: &[zerocal_procedure::Record<f32>],
+    records: Result<&[Record<f32>], OutputError>,
 ) -> bool {
-    match store {
-        Some(store) => store.write(records).await.is_ok(),
-        None => false,
+    match (store, records) {
+        (Some(store), Ok(records)) => store.write(records).await.is_ok(),
+        (None, _) | (_, Err(OutputError::RecordLost)) => false,
     }
 }
 

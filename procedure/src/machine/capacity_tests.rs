@@ -25,12 +25,8 @@ fn flange_reading(k: usize) -> Tilt<f64> {
     Tilt::from_deg(-8.0 + (k % 17) as f64, 6.0 - (k % 13) as f64)
 }
 
-#[test]
-fn a_full_plan_s_captures_are_all_recorded_restored_and_exported() {
-    let mut b = Bench::new();
-    let plan = full_plan(MAX_PLAN_POSES);
-    b.step(Event::SetPlan(plan.clone()));
-    assert_eq!(b.s.plan().len(), MAX_PLAN_POSES);
+/// Stages 0 and 1 captured: the procedure at the flange, before its first capture.
+fn to_the_flange(b: &mut Bench) {
     for r in bench_readings() {
         b.capture_at(r);
     }
@@ -44,6 +40,40 @@ fn a_full_plan_s_captures_are_all_recorded_restored_and_exported() {
         b.capture_at(r);
     }
     assert_eq!(b.s.phase(), Phase::Stage2, "{:?}", b.s.view().notice);
+}
+
+/// The step that writes the most records: a whole plan set in stage 2 before its first
+/// capture writes the plan's length (0), its poses, its length and the progress (the
+/// cursor back to the first pose). Its output holds them all; one record more would be
+/// reported lost (output.rs's tests), never dropped.
+#[test]
+fn the_largest_step_a_whole_plan_at_the_flange_loses_no_record() {
+    let mut b = Bench::new();
+    to_the_flange(&mut b);
+    assert!(b.s.captures().is_empty());
+    let plan = full_plan(MAX_PLAN_POSES);
+    let out = step(&b.config, &mut b.s, Event::SetPlan(plan.clone()));
+    assert_eq!(b.s.plan(), &plan, "{:?}", b.s.view().notice);
+    let records = out.records().unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(records.len(), MAX_PLAN_POSES + 3);
+    assert_eq!(records[0], Record::PlanLen(0));
+    assert_eq!(
+        records[MAX_PLAN_POSES + 1],
+        Record::PlanLen(MAX_PLAN_POSES as u8)
+    );
+    assert!(matches!(
+        records[MAX_PLAN_POSES + 2],
+        Record::Progress { .. }
+    ));
+}
+
+#[test]
+fn a_full_plan_s_captures_are_all_recorded_restored_and_exported() {
+    let mut b = Bench::new();
+    let plan = full_plan(MAX_PLAN_POSES);
+    b.step(Event::SetPlan(plan.clone()));
+    assert_eq!(b.s.plan().len(), MAX_PLAN_POSES);
+    to_the_flange(&mut b);
     for k in 0..MAX_CAPTURES {
         assert_eq!(b.s.phase(), Phase::Stage2, "capture {k}");
         b.capture_at(flange_reading(k));

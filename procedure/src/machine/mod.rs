@@ -42,8 +42,9 @@
 //! The parts: `phase.rs` where the operator is and which capture is which; `state.rs`
 //! what the procedure remembers and how a power cut's records rebuild it;
 //! `default_plan.rs` the plan the pendant uses when none was uploaded; `export.rs` the
-//! export of a session; `record/` the flash records; `profile/` the robot profile the
-//! pendant holds; `kept.rs` the kept results.
+//! export of a session; `record/` the flash records; `output.rs` the records a step
+//! hands the firmware to write; `profile/` the robot profile the pendant holds;
+//! `kept.rs` the kept results.
 
 #[cfg(test)]
 mod bench_tests;
@@ -55,6 +56,7 @@ mod check_tests;
 mod default_plan;
 mod export;
 pub mod kept;
+mod output;
 mod phase;
 pub mod profile;
 pub mod record;
@@ -68,6 +70,7 @@ use crate::stillness::{Stillness, StillnessConfig};
 pub use captures::Captures;
 pub use default_plan::{pendant_default, PENDANT_PLAN_MARGIN_DEG, PENDANT_PLAN_POSES};
 pub use kept::{KeptResult, PendantUnit, UnitId, KEPT_RESULTS};
+pub use output::{Output, OutputError, OUTPUT_RECORDS};
 pub use phase::{Phase, ReadingSlot, READING_SLOTS};
 pub use profile::{ControllerDisplay, ControllerOffset, PendantProfile};
 pub use record::{Record, RecordError};
@@ -245,25 +248,6 @@ pub enum Notice {
     Captured,
     /// The plan gives no check (too short, or its poses cannot separate the offsets).
     NoCheck(zerocal_core::plan::CheckPlanError),
-}
-
-/// What the firmware must do after a step.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Output<T> {
-    /// Records to write to flash, in order, before showing the new view.
-    pub persist: heapless::Vec<Record<T>, { MAX_PLAN_POSES + 4 }>,
-}
-
-impl<T> Output<T> {
-    /// Adds a record to write; one beyond the capacity (a whole plan plus its length,
-    /// twice, and progress) is left out.
-    // Out of line: inlined, each of its dozen and more callers had a copy (flash).
-    #[inline(never)]
-    pub fn push(&mut self, r: Record<T>) {
-        // Capacity covers a whole plan plus its length (twice) and progress; steps
-        // write at most that.
-        let _ = self.persist.push(r);
-    }
 }
 
 /// The result of a session.

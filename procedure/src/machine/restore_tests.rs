@@ -144,7 +144,7 @@ fn a_plan_lost_from_the_store_loses_no_capture_and_can_be_sent_again() {
     let out = super::super::step(&config, &mut s, super::super::Event::SetPlan(plan));
     assert_eq!(s.plan().len(), 4, "{:?}", s.view().notice);
     assert_eq!((s.captures().len(), s.cursor), (3, 3));
-    assert!(out.persist.contains(&Record::PlanLen(4)));
+    assert!(out.records().is_ok_and(|r| r.contains(&Record::PlanLen(4))));
 }
 
 #[test]
