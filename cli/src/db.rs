@@ -9,7 +9,8 @@ use zerocal_history::{DbLocation, History};
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct DbArg {
     /// The history database: an SQLite file, or a PostgreSQL server
-    /// `postgres://USER:PASSWORD@HOST:PORT/DATABASE`. Default:
+    /// `postgres://USER@HOST:PORT/DATABASE` (the password from PGPASSWORD or
+    /// ~/.pgpass, never here: docs/history.md). Default:
     /// $XDG_DATA_HOME/zerocal/history.sqlite, else ~/.local/share/zerocal/history.sqlite.
     #[arg(long, value_name = "PATH|URL")]
     pub db: Option<String>,

@@ -10,6 +10,7 @@ mod certificates;
 mod conventions;
 mod db;
 mod error;
+mod pgpass;
 pub mod schema;
 
 pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
@@ -147,7 +148,8 @@ pub struct Inserted {
 pub enum DbLocation {
     /// An SQLite file.
     Sqlite(PathBuf),
-    /// A PostgreSQL URL, `postgres://user:password@host:port/database`.
+    /// A PostgreSQL URL, `postgres://user@host:port/database`; the password comes from
+    /// `PGPASSWORD` or the password file when the URL has none (`pgpass.rs`).
     Postgres(String),
 }
 
@@ -155,13 +157,14 @@ pub enum DbLocation {
 const DEFAULT_FILE: [&str; 2] = ["zerocal", "history.sqlite"];
 
 impl DbLocation {
-    /// The location `--db` names: `postgres://...` or `postgresql://...` is a server,
-    /// anything else a file. Without `--db`: `$XDG_DATA_HOME/zerocal/history.sqlite`,
+    /// The location `--db` names: `postgres://...` or `postgresql://...` is a server
+    /// (refused if it holds a password: that belongs in `PGPASSWORD` or the password
+    /// file), anything else a file. Without `--db`: `$XDG_DATA_HOME/zerocal/history.sqlite`,
     /// else `$HOME/.local/share/zerocal/history.sqlite` (the XDG Base Directory
     /// specification, which also says a relative `XDG_DATA_HOME` is ignored).
     ///
     /// # Errors
-    /// An empty `--db`; no `--db` and neither variable set.
+    /// An empty `--db`; a URL with a password; no `--db` and neither variable set.
     pub fn from_arg(arg: Option<&str>) -> Result<DbLocation, HistoryError> {
         Self::from_arg_in(
             arg,
@@ -180,6 +183,11 @@ impl DbLocation {
                 "--db is empty: give a file or a postgres:// URL".into(),
             )),
             Some(url) if url.starts_with("postgres://") || url.starts_with("postgresql://") => {
+                if pgpass::url_has_password(url) {
+                    return Err(HistoryError::BadLocation(
+                        "--db holds a password, which every user of this machine can read in the process list: give the URL without it and put the password in PGPASSWORD or a password file (~/.pgpass, or the file PGPASSFILE names; docs/history.md)".into(),
+                    ));
+                }
                 Ok(Self::Postgres(url.to_owned()))
             }
             Some(path) => Ok(Self::Sqlite(PathBuf::from(path))),
@@ -224,6 +232,30 @@ fn redacted(url: &str) -> String {
         },
         None => url.to_owned(),
     }
+}
+
+/// The client configuration of a PostgreSQL URL, its password (when the URL has none)
+/// from `PGPASSWORD` or the password file, as libpq takes it (`pgpass.rs`). Every
+/// connection to a history server is made from this.
+///
+/// # Errors
+/// A URL the client cannot parse; a password file others can read, or unreadable.
+pub fn postgres_config(url: &str) -> Result<postgres::Config, HistoryError> {
+    let mut config: postgres::Config = url.parse()?;
+    if config.get_password().is_none() {
+        if let Some(t) = pgpass::Target::of(&config) {
+            let path = pgpass::file_path();
+            let text = match &path {
+                Some(p) => pgpass::read_file(p)?,
+                None => None,
+            };
+            let file = path.as_deref().zip(text.as_deref());
+            if let Some(p) = pgpass::password(&t, std::env::var("PGPASSWORD").ok(), file) {
+                config.password(p);
+            }
+        }
+    }
+    Ok(config)
 }
 
 /// Lowercase hex SHA-256 of `bytes`.
@@ -704,13 +736,19 @@ mod tests {
     fn a_db_argument_is_a_server_url_or_a_file() {
         for url in [
             "postgres://u@h/db",
-            "postgresql://u:p@h:5433/db?sslmode=disable",
+            "postgresql://u@h:5433/db?sslmode=disable",
         ] {
             assert_eq!(
                 DbLocation::from_arg(Some(url)).ok(),
                 Some(DbLocation::Postgres(url.into()))
             );
         }
+        // A password on the command line is readable by every user of the machine.
+        let refused = DbLocation::from_arg(Some("postgresql://u:p@h:5433/db"));
+        assert!(
+            matches!(&refused, Err(HistoryError::BadLocation(m)) if m.contains("PGPASSWORD")),
+            "{refused:?}"
+        );
         assert_eq!(
             DbLocation::from_arg(Some("plant/history.sqlite")).ok(),
             Some(DbLocation::Sqlite("plant/history.sqlite".into()))

@@ -376,8 +376,11 @@ fn open_sqlite_once(path: &Path, target: i64) -> Result<Conn, HistoryError> {
 
 /// Opens the PostgreSQL history at `url` (`what` is the URL without its password),
 /// making the tables in an empty database, migrated up to `target`.
+///
+/// A URL without a password takes it from `PGPASSWORD` or the password file, as libpq
+/// does (`pgpass.rs`).
 pub(crate) fn open_postgres(url: &str, what: &str, target: i64) -> Result<Conn, HistoryError> {
-    let client = postgres::Client::connect(url, postgres::NoTls)?;
+    let client = crate::postgres_config(url)?.connect(postgres::NoTls)?;
     let mut c = Conn::Postgres(Box::new(client));
     // The first look writes nothing: a foreign or newer database is refused as it is.
     check(mark(&mut c)?, what)?;

@@ -1,9 +1,12 @@
 //! `cargo xtask postgres start|stop`: a throwaway PostgreSQL cluster under
 //! `target/postgres` for the history's PostgreSQL tests. `start` makes a fresh cluster
-//! (initdb, trust authentication: it listens on a unix socket in `target/postgres/socket`
-//! and on 127.0.0.1 only), starts it on a free local port, creates the database
-//! `zerocal_test` and prints its URL on stdout (the only thing printed there, so
-//! `.ci/run` can export it as `ZEROCAL_TEST_POSTGRES`). `stop` stops it.
+//! (initdb: it listens on a unix socket in `target/postgres/socket`, trusted, and on
+//! 127.0.0.1 only, where it asks for a password, SCRAM-SHA-256), starts it on a free
+//! local port, creates the database `zerocal_test` and prints its URL on stdout (the
+//! only thing printed there, so `.ci/run` can export it as `ZEROCAL_TEST_POSTGRES`).
+//! The URL holds no password: a fresh random one is in the password file
+//! `target/postgres/pgpass` (owner-only), which the tests find through `PGPASSFILE`, as
+//! a plant's technician keeps theirs (docs/history.md). `stop` stops it.
 //!
 //! PostgreSQL refuses to run as root: as root, the cluster's directory is handed to the
 //! `postgres` user (made by Debian's package) and every server command runs through
@@ -124,6 +127,11 @@ impl Cluster {
         }
         std::fs::create_dir_all(self.socket())
             .with_context(|| format!("cannot make {}", self.socket().display()))?;
+        // The superuser's password, for initdb to set (then removed).
+        let password = fresh_password()?;
+        let pwfile = self.dir.join("pwfile");
+        std::fs::write(&pwfile, format!("{password}\n"))
+            .with_context(|| format!("cannot write {}", pwfile.display()))?;
         if self.as_root {
             let status = Command::new("/usr/bin/chown")
                 .args(["-R", &format!("{SERVER_USER}:")])
@@ -145,11 +153,15 @@ impl Cluster {
                 &data,
                 "-U",
                 SERVER_USER,
-                "--auth=trust",
+                "--auth-local=trust",
+                "--auth-host=scram-sha-256",
+                &format!("--pwfile={}", path_str(&pwfile)?),
                 "--encoding=UTF8",
                 "--no-sync",
             ],
         )?;
+        std::fs::remove_file(&pwfile)
+            .with_context(|| format!("cannot remove {}", pwfile.display()))?;
         let port = free_port()?;
         let options = format!("-k {socket} -p {port} -c listen_addresses=127.0.0.1 -c fsync=off");
         self.run(
@@ -161,10 +173,44 @@ impl Cluster {
             "createdb",
             &["-h", &socket, "-p", &port, "-U", SERVER_USER, TEST_DATABASE],
         )?;
+        let pgpass = self.dir.join("pgpass");
+        write_owner_only(
+            &pgpass,
+            &format!("127.0.0.1:{port}:*:{SERVER_USER}:{password}\n"),
+        )?;
+        eprintln!(
+            "xtask: the password is in {} (PGPASSFILE={} for the tests)",
+            pgpass.display(),
+            pgpass.display()
+        );
         Ok(format!(
             "postgresql://{SERVER_USER}@127.0.0.1:{port}/{TEST_DATABASE}"
         ))
     }
+}
+
+/// 32 hex digits from the kernel's random source.
+fn fresh_password() -> Result<String> {
+    use std::io::Read as _;
+    let mut bytes = [0_u8; 16];
+    std::fs::File::open("/dev/urandom")
+        .and_then(|mut f| f.read_exact(&mut bytes))
+        .context("cannot read /dev/urandom")?;
+    Ok(bytes.iter().map(|b| format!("{b:02x}")).collect())
+}
+
+/// Writes `text` to `path`, readable by its owner alone (a password file must be).
+fn write_owner_only(path: &Path, text: &str) -> Result<()> {
+    use std::io::Write as _;
+    use std::os::unix::fs::OpenOptionsExt as _;
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .mode(0o600)
+        .open(path)
+        .with_context(|| format!("cannot make {}", path.display()))?;
+    f.write_all(text.as_bytes())
+        .with_context(|| format!("cannot write {}", path.display()))
 }
 
 fn path_str(p: &Path) -> Result<String> {

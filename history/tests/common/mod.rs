@@ -57,7 +57,10 @@ pub fn backends(test: &str) -> Vec<Backend> {
 /// Drops and creates database `zc_TEST` on the server and returns its URL.
 pub fn fresh_postgres_database(url: &str, test: &str) -> String {
     let name = format!("zc_{test}");
-    let mut admin = postgres::Client::connect(url, postgres::NoTls).unwrap();
+    let mut admin = zerocal_history::postgres_config(url)
+        .unwrap()
+        .connect(postgres::NoTls)
+        .unwrap();
     admin
         .batch_execute(&format!("DROP DATABASE IF EXISTS {name} WITH (FORCE)"))
         .unwrap();

@@ -1,0 +1,270 @@
+//! The PostgreSQL password from where libpq's users keep it, never from the command line:
+//! `PGPASSWORD`, else the password file (`PGPASSFILE`, else `~/.pgpass`).
+//!
+//! A `--db` URL with a password in it is refused ([`crate::DbLocation::from_arg`]): the
+//! arguments of a running program are readable by every user of the machine (`ps`,
+//! `/proc/PID/cmdline`). The password file's format and rules are libpq's
+//! (PostgreSQL documentation, "The Password File"): one `host:port:database:user:password`
+//! line per entry, `*` matching anything in the first four fields, `\` escaping `:` and
+//! `\`, `#` starting a comment line, the first matching line winning, `localhost`
+//! matching a connection over a Unix socket, and the file ignored unless only its owner
+//! can read it. Here a file readable by others is refused by name instead of ignored,
+//! so that the technician learns why the password was not found.
+
+use crate::error::HistoryError;
+use std::path::{Path, PathBuf};
+
+/// Where the connection goes, as the password file matches it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Target {
+    /// Host name, or `localhost` for a Unix socket.
+    pub host: String,
+    /// Port (5432 by default).
+    pub port: u16,
+    /// Database (the user's name by default).
+    pub database: String,
+    /// User name.
+    pub user: String,
+}
+
+impl Target {
+    /// The target of `config`, its defaults filled as libpq fills them (`user`: the
+    /// login name from `USER`, else `LOGNAME`).
+    pub(crate) fn of(config: &postgres::Config) -> Option<Target> {
+        let user = match config.get_user() {
+            Some(u) => u.to_owned(),
+            None => std::env::var("USER")
+                .or_else(|_| std::env::var("LOGNAME"))
+                .ok()?,
+        };
+        let host = match config.get_hosts().first() {
+            Some(postgres::config::Host::Tcp(h)) => h.clone(),
+            // libpq matches a socket connection against `localhost`.
+            Some(postgres::config::Host::Unix(_)) | None => "localhost".to_owned(),
+        };
+        Some(Target {
+            host,
+            port: config.get_ports().first().copied().unwrap_or(5432),
+            database: config.get_dbname().unwrap_or(&user).to_owned(),
+            user,
+        })
+    }
+}
+
+/// The password for `target`: `env_password` (`PGPASSWORD`) if set and not empty, else
+/// the first matching line of the password file `file` (its path and text), else none.
+pub(crate) fn password(
+    target: &Target,
+    env_password: Option<String>,
+    file: Option<(&Path, &str)>,
+) -> Option<String> {
+    if let Some(p) = env_password.filter(|p| !p.is_empty()) {
+        return Some(p);
+    }
+    let (_, text) = file?;
+    text.lines().find_map(|line| matching(line, target))
+}
+
+/// The password of `line` if it matches `target`.
+fn matching(line: &str, target: &Target) -> Option<String> {
+    if line.starts_with('#') {
+        return None;
+    }
+    let fields = split(line)?;
+    let [host, port, database, user, password] = fields;
+    let port_text = target.port.to_string();
+    let fits = |pattern: &str, value: &str| pattern == "*" || pattern == value;
+    (fits(&host, &target.host)
+        && fits(&port, &port_text)
+        && fits(&database, &target.database)
+        && fits(&user, &target.user))
+    .then_some(password)
+}
+
+/// The five fields of a line, `\:` and `\\` unescaped; `None` for a line that has not
+/// five (libpq skips it).
+fn split(line: &str) -> Option<[String; 5]> {
+    let mut fields: Vec<String> = vec![String::new()];
+    let mut chars = line.chars();
+    while let Some(c) = chars.next() {
+        match c {
+            '\\' => {
+                if let Some(next) = chars.next() {
+                    fields.last_mut()?.push(next);
+                }
+            }
+            // The password is the rest of the line, colons and all.
+            ':' if fields.len() < 5 => fields.push(String::new()),
+            c => fields.last_mut()?.push(c),
+        }
+    }
+    fields.try_into().ok()
+}
+
+/// The password file's path: `PGPASSFILE`, else `$HOME/.pgpass`.
+pub(crate) fn file_path() -> Option<PathBuf> {
+    match std::env::var_os("PGPASSFILE").filter(|p| !p.is_empty()) {
+        Some(p) => Some(PathBuf::from(p)),
+        None => std::env::var_os("HOME")
+            .filter(|h| !h.is_empty())
+            .map(|h| PathBuf::from(h).join(".pgpass")),
+    }
+}
+
+/// The password file's text, if it exists; refused if others can read it (libpq
+/// ignores such a file; here the technician is told).
+///
+/// # Errors
+/// The file is readable by its group or others, or cannot be read.
+pub(crate) fn read_file(path: &Path) -> Result<Option<String>, HistoryError> {
+    let meta = match std::fs::metadata(path) {
+        Ok(m) => m,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(HistoryError::Io(e)),
+    };
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = meta.permissions().mode();
+        if mode & 0o077 != 0 {
+            return Err(HistoryError::BadLocation(format!(
+                "the password file {} can be read by others (mode {:o}): make it the owner's alone (chmod 600 {}), as PostgreSQL requires",
+                path.display(),
+                mode & 0o777,
+                path.display()
+            )));
+        }
+    }
+    #[cfg(not(unix))]
+    let _ = meta;
+    std::fs::read_to_string(path)
+        .map(Some)
+        .map_err(HistoryError::Io)
+}
+
+/// Whether the URL carries a password (`user:password@`).
+pub(crate) fn url_has_password(url: &str) -> bool {
+    let Some((_, rest)) = url.split_once("://") else {
+        return false;
+    };
+    let authority = &rest[..rest.find(['/', '?']).unwrap_or(rest.len())];
+    authority
+        .rsplit_once('@')
+        .is_some_and(|(userinfo, _)| userinfo.contains(':'))
+        // The key-value form's `password=` in the query string is a password too.
+        || url.split(['?', '&']).skip(1).any(|kv| kv.starts_with("password="))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn target() -> Target {
+        Target {
+            host: "db.plant".into(),
+            port: 5432,
+            database: "zerocal".into(),
+            user: "zc".into(),
+        }
+    }
+
+    /// libpq's rules: the first matching line wins, `*` matches any field, a comment
+    /// or short line is skipped, the password may hold colons, escapes are undone.
+    #[test]
+    fn the_first_matching_line_gives_the_password() {
+        let text = "# plant history\n\
+                    other:5432:zerocal:zc:wrong-host\n\
+                    db.plant:5433:*:zc:wrong-port\n\
+                    too:few:fields\n\
+                    db.plant:*:zerocal:zc:s3c:r\\:et\n\
+                    *:*:*:*:later\n";
+        let file = Some((Path::new("/x/.pgpass"), text));
+        assert_eq!(password(&target(), None, file).as_deref(), Some("s3c:r:et"));
+        let mut other = target();
+        other.user = "reader".into();
+        assert_eq!(password(&other, None, file).as_deref(), Some("later"));
+        assert_eq!(
+            password(&target(), None, Some((Path::new("/x"), "# none\n"))),
+            None
+        );
+    }
+
+    #[test]
+    fn pgpassword_comes_first_and_an_empty_one_is_none() {
+        let file = Some((Path::new("/x/.pgpass"), "*:*:*:*:from-file\n"));
+        assert_eq!(
+            password(&target(), Some("from-env".into()), file).as_deref(),
+            Some("from-env")
+        );
+        assert_eq!(
+            password(&target(), Some(String::new()), file).as_deref(),
+            Some("from-file")
+        );
+        assert_eq!(password(&target(), None, None), None);
+    }
+
+    #[test]
+    fn an_escaped_backslash_and_host_field_match() {
+        let mut t = target();
+        t.host = "a:b".into();
+        let text = "a\\:b:5432:zerocal:zc:p\\\\w\n";
+        assert_eq!(
+            password(&t, None, Some((Path::new("/x"), text))).as_deref(),
+            Some("p\\w")
+        );
+    }
+
+    #[test]
+    fn a_password_in_the_url_is_seen() {
+        assert!(url_has_password("postgres://zc:s3cret@db/zerocal"));
+        assert!(url_has_password("postgresql://zc:@db/zerocal"));
+        assert!(url_has_password(
+            "postgres://zc@db/zerocal?sslmode=disable&password=x"
+        ));
+        assert!(!url_has_password("postgres://zc@db:5432/zerocal"));
+        assert!(!url_has_password("postgres://db/zerocal?user=zc"));
+    }
+
+    /// The target's fields from a URL, libpq's defaults where it names none.
+    #[test]
+    fn the_target_takes_the_urls_fields_and_libpqs_defaults() {
+        let c: postgres::Config = "postgres://zc@db.plant:5433/hist".parse().unwrap();
+        assert_eq!(
+            Target::of(&c),
+            Some(Target {
+                host: "db.plant".into(),
+                port: 5433,
+                database: "hist".into(),
+                user: "zc".into()
+            })
+        );
+        let c: postgres::Config = "postgres://zc@%2Ftmp%2Fsock/hist".parse().unwrap();
+        let t = Target::of(&c).unwrap();
+        assert_eq!(
+            (t.host.as_str(), t.port, t.database.as_str()),
+            ("localhost", 5432, "hist")
+        );
+        let c: postgres::Config = "postgres://zc@db".parse().unwrap();
+        assert_eq!(Target::of(&c).map(|t| t.database), Some("zc".into()));
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_password_file_others_can_read_is_refused_by_name() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = std::env::temp_dir().join(format!("zerocal-pgpass-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(".pgpass");
+        std::fs::write(&path, "*:*:*:*:p\n").unwrap();
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o644)).unwrap();
+        let err = read_file(&path).unwrap_err().to_string();
+        assert!(
+            err.contains("chmod 600") && err.contains(".pgpass"),
+            "{err}"
+        );
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600)).unwrap();
+        assert_eq!(read_file(&path).unwrap().as_deref(), Some("*:*:*:*:p\n"));
+        assert_eq!(read_file(&dir.join("none")).unwrap(), None);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
