@@ -173,7 +173,8 @@ pub const UNNAMED_ROW: &str = "(no symbol: constants, padding)";
 impl ModuleSizes {
     /// Attributes each sized symbol of the ELF's flash and RAM sections to its row;
     /// what no symbol covers goes to [`UNNAMED_ROW`]. Aliases (two names at one
-    /// address) count once. The rows add up to [`MemoryUsage::of_elf`]'s totals.
+    /// address) count once, and a symbol overlapping the next counts up to it. The rows
+    /// add up to [`MemoryUsage::of_elf`]'s totals.
     ///
     /// # Errors
     /// When the file is unreadable or not an ELF.
@@ -183,12 +184,14 @@ impl ModuleSizes {
             .with_context(|| format!("parsing ELF {}", path.display()))?;
         // (in flash, in RAM) by section: .data is both (its initial values in flash).
         let mut sections: BTreeMap<usize, (bool, bool, u64)> = BTreeMap::new();
+        let mut ends: BTreeMap<usize, u64> = BTreeMap::new();
         for section in file.sections() {
             let name = section.name().unwrap_or("");
             let flash = FLASH_SECTIONS.contains(&name);
             let ram = RAM_SECTIONS.contains(&name);
             if flash || ram {
                 sections.insert(section.index().0, (flash, ram, section.size()));
+                ends.insert(section.index().0, section.address() + section.size());
             }
         }
         // One symbol per (section, address): the largest (an alias is the same bytes).
@@ -210,12 +213,21 @@ impl ModuleSizes {
         }
         let mut sizes = ModuleSizes::default();
         let mut named: BTreeMap<usize, u64> = BTreeMap::new();
-        for ((index, _), (size, name)) in &symbols {
+        let starts: Vec<(usize, u64)> = symbols.keys().copied().collect();
+        for (i, ((index, address), (size, name))) in symbols.iter().enumerate() {
             let Some(&(flash, ram, _)) = sections.get(index) else {
                 continue;
             };
+            // A symbol overlapping the next one in its section (or running past the
+            // section's end) counts up to there: the bytes are counted once, so the
+            // rows add up to the sections whatever the symbols' sizes claim.
+            let next = match starts.get(i + 1) {
+                Some(&(next_index, next_address)) if next_index == *index => next_address,
+                _ => ends.get(index).copied().unwrap_or(u64::MAX),
+            };
+            let size = (*size).min(next.saturating_sub(*address));
             *named.entry(*index).or_default() += size;
-            sizes.add(&row_of(name), flash.then_some(*size), ram.then_some(*size));
+            sizes.add(&row_of(name), flash.then_some(size), ram.then_some(size));
         }
         for (index, (flash, ram, total)) in &sections {
             let rest = total.saturating_sub(named.get(index).copied().unwrap_or(0));
@@ -254,7 +266,20 @@ impl ModuleSizes {
 /// crate's); `compiler_builtins` for the runtime's C-named helpers.
 pub fn row_of(symbol: &str) -> String {
     let demangled = format!("{:#}", rustc_demangle::demangle(symbol));
-    let path = demangled.trim_start_matches('<');
+    // `<&T as Trait>`, `<[T] as Trait>`, `<dyn Trait as …>`, `<*const T …>`: the type
+    // behind the reference, slice, pointer or trait object names the row.
+    let mut path = demangled.as_str();
+    loop {
+        let trimmed = path
+            .trim_start_matches(['<', '&', '[', '(', '*'])
+            .trim_start_matches("mut ")
+            .trim_start_matches("const ")
+            .trim_start_matches("dyn ");
+        if trimmed.len() == path.len() {
+            break;
+        }
+        path = trimmed;
+    }
     let mut segments = path
         .split(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':'))
         .next()
@@ -390,6 +415,15 @@ mod tests {
             "core"
         );
         assert_eq!(row_of("__RESET_VECTOR"), OTHER_ROW);
+        // Through a reference, a slice or a trait object: the type's crate.
+        assert_eq!(
+            row_of("_ZN77_$LT$$RF$zerocal_core..model..Tilt$LT$f32$GT$$u20$as$u20$core..fmt..Debug$GT$3fmt17h0123456789abcdefE"),
+            "zerocal_core::model"
+        );
+        assert_eq!(
+            row_of("_ZN75_$LT$$u5b$heapless..vec..Vec$LT$u8$GT$$u5d$$u20$as$u20$core..fmt..Debug$GT$3fmt17h0123456789abcdefE"),
+            "heapless"
+        );
         assert_eq!(row_of("OUTLINED_FUNCTION_12"), OUTLINED_ROW);
     }
 
