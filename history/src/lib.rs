@@ -273,8 +273,11 @@ pub struct History {
     location: String,
 }
 
+// The profile's text is stored once in `texts`, by its hash (schema 4).
 const RECORD_COLUMNS: &str = "id, recorded_at, export_sha256, profile_sha256, kind, serial, \
-    robot, robot_title, controller_family, profile_toml, export, measured_on, operator, \
+    robot, robot_title, controller_family, \
+    (SELECT text FROM texts WHERE texts.sha256 = records.profile_sha256) AS profile_toml, \
+    export, measured_on, operator, \
     pendant_unit, pendant_result_id, reference_id, zerocal_version, verdict, brackets_json, \
     conditions_json, result_json";
 
@@ -529,13 +532,19 @@ impl History {
                     )));
                 }
             }
+            // The profile's text once, by its hash: every record of it refers to it.
+            c.execute(
+                "INSERT INTO texts (sha256, text) VALUES ($1, $2) \
+                 ON CONFLICT (sha256) DO NOTHING",
+                &[Value::text(&profile_sha256), Value::text(&r.profile_toml)],
+            )?;
             let inserted = c.query(
                 "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
-                 controller_family, profile_toml, profile_sha256, export, export_sha256, \
+                 controller_family, profile_sha256, export, export_sha256, \
                  measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
                  zerocal_version, verdict, brackets_json, conditions_json, result_json) \
                  VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, \
-                 $16, $17, $18, $19, $20) \
+                 $16, $17, $18, $19) \
                  ON CONFLICT (serial, kind, export_sha256) DO NOTHING RETURNING id",
                 &[
                     Value::text(&recorded_at),
@@ -544,7 +553,6 @@ impl History {
                     Value::text(&r.robot),
                     Value::text(&r.robot_title),
                     Value::text(&r.controller_family),
-                    Value::text(&r.profile_toml),
                     Value::text(&profile_sha256),
                     Value::Bytes(Some(r.export.clone())),
                     Value::text(&export_sha256),

@@ -116,6 +116,19 @@ CREATE TABLE certificates (
 CREATE INDEX certificates_by_session ON certificates (session_id);
 ",
     },
+    Migration {
+        version: 4,
+        what: "texts: a profile's text stored once by its SHA-256 and referenced by every \
+               record of it (records.profile_sha256), where each record held a copy",
+        sql: "
+CREATE TABLE texts (
+    sha256 TEXT PRIMARY KEY,
+    text TEXT NOT NULL
+);
+INSERT INTO texts (sha256, text) SELECT DISTINCT profile_sha256, profile_toml FROM records;
+ALTER TABLE records DROP COLUMN profile_toml;
+",
+    },
 ];
 
 /// The newest schema version this build reads and writes.

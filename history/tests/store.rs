@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::{backends, record, temp_file};
+use common::{backends, insert_before_schema_4, record, temp_file};
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
 use zerocal_history::schema::{SCHEMA_VERSION, SQLITE_APPLICATION_ID};
@@ -282,6 +282,23 @@ fn a_postgres_database_of_another_application_or_a_newer_schema_is_refused_untou
     }
 }
 
+/// Rows of the `texts` table (schema 4).
+fn count_texts(at: &DbLocation) -> i64 {
+    match at {
+        DbLocation::Sqlite(p) => rusqlite::Connection::open(p)
+            .unwrap()
+            .query_row("SELECT count(*) FROM texts", [], |r| r.get(0))
+            .unwrap(),
+        DbLocation::Postgres(url) => zerocal_history::postgres_config(url)
+            .unwrap()
+            .connect(postgres::NoTls)
+            .unwrap()
+            .query_one("SELECT count(*) FROM texts", &[])
+            .unwrap()
+            .get(0),
+    }
+}
+
 fn has_index(at: &DbLocation, name: &str) -> bool {
     match at {
         DbLocation::Sqlite(p) => {
@@ -315,9 +332,12 @@ fn a_database_made_by_the_first_schema_is_migrated_keeping_its_records() {
     for b in backends("migrate_v1") {
         let mut v1 = History::open_at_schema(&b.at, 1).unwrap();
         assert_eq!(v1.schema_version().unwrap(), 1, "{}", b.name);
-        let r = record(RecordKind::Session, "KR6-0001", 1, 1024);
-        let id = v1.insert(&r).unwrap().id;
         drop(v1);
+        // Two records of one profile, as schema 1 kept them: a copy of its text each.
+        let r = record(RecordKind::Session, "KR6-0001", 1, 1024);
+        let id = insert_before_schema_4(&b.at, &r);
+        let r2 = record(RecordKind::Session, "KR6-0001", 2, 1024);
+        let id2 = insert_before_schema_4(&b.at, &r2);
         assert!(
             !has_index(&b.at, "records_by_serial"),
             "{}: v1 has no serial index",
@@ -337,8 +357,25 @@ fn a_database_made_by_the_first_schema_is_migrated_keeping_its_records() {
             "{}: the v1 record survives",
             b.name
         );
+        assert_eq!(h.get(id2).unwrap().new, r2, "{}", b.name);
+        // Schema 4 keeps the profile's text once, however many records have it.
+        assert_eq!(
+            count_texts(&b.at),
+            1,
+            "{}: one text for two records",
+            b.name
+        );
         let again = h.insert(&r).unwrap();
         assert_eq!((again.id, again.new), (id, false), "{}", b.name);
+        let r3 = record(RecordKind::Check, "KR6-0001", 3, 512);
+        let id3 = h.insert(&r3).unwrap().id;
+        assert_eq!(h.get(id3).unwrap().new, r3, "{}", b.name);
+        assert_eq!(
+            count_texts(&b.at),
+            1,
+            "{}: a new record of it adds none",
+            b.name
+        );
     }
 }
 

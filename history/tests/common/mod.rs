@@ -134,3 +134,120 @@ pub fn record(kind: RecordKind, serial: &str, i: u32, export_len: usize) -> NewR
         joints,
     }
 }
+
+/// Stores `r` as a build of schema 1-3 did (the profile's text in the record itself),
+/// straight through the backend's own client: the record a migration must carry over.
+/// Returns its ID.
+pub fn insert_before_schema_4(at: &DbLocation, r: &NewRecord) -> i64 {
+    use zerocal_history::sha256_hex;
+    let (profile_sha, export_sha) = (sha256_hex(r.profile_toml.as_bytes()), sha256_hex(&r.export));
+    let pass = |p: Option<bool>| p.map(i64::from);
+    match at {
+        DbLocation::Sqlite(p) => {
+            let c = rusqlite::Connection::open(p).unwrap();
+            let id: i64 = c
+                .query_row(
+                    "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
+                     controller_family, profile_toml, profile_sha256, export, export_sha256, \
+                     measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
+                     zerocal_version, verdict, brackets_json, conditions_json, result_json) \
+                     VALUES ('2026-11-27T10:00:00Z', ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, \
+                     ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19) RETURNING id",
+                    rusqlite::params![
+                        r.kind.as_str(),
+                        r.serial,
+                        r.robot,
+                        r.robot_title,
+                        r.controller_family,
+                        r.profile_toml,
+                        profile_sha,
+                        r.export,
+                        export_sha,
+                        r.measured_on,
+                        r.operator,
+                        r.pendant_unit,
+                        r.pendant_result_id,
+                        r.reference_id,
+                        r.zerocal_version,
+                        r.verdict,
+                        r.brackets_json,
+                        r.conditions_json,
+                        r.result_json
+                    ],
+                    |row| row.get(0),
+                )
+                .unwrap();
+            for j in &r.joints {
+                c.execute(
+                    "INSERT INTO joints VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)",
+                    rusqlite::params![
+                        id,
+                        j.joint,
+                        j.name,
+                        j.offset_deg,
+                        j.expanded_k2_deg,
+                        j.controller_offset_deg,
+                        pass(j.pass)
+                    ],
+                )
+                .unwrap();
+            }
+            id
+        }
+        DbLocation::Postgres(url) => {
+            let mut c = zerocal_history::postgres_config(url)
+                .unwrap()
+                .connect(postgres::NoTls)
+                .unwrap();
+            let result_id = r.pendant_result_id.map(i64::from);
+            let id: i64 = c
+                .query_one(
+                    "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
+                     controller_family, profile_toml, profile_sha256, export, export_sha256, \
+                     measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
+                     zerocal_version, verdict, brackets_json, conditions_json, result_json) \
+                     VALUES ('2026-11-27T10:00:00Z', $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, \
+                     $11, $12, $13, $14, $15, $16, $17, $18, $19) RETURNING id",
+                    &[
+                        &r.kind.as_str(),
+                        &r.serial,
+                        &r.robot,
+                        &r.robot_title,
+                        &r.controller_family,
+                        &r.profile_toml,
+                        &profile_sha,
+                        &r.export,
+                        &export_sha,
+                        &r.measured_on,
+                        &r.operator,
+                        &r.pendant_unit,
+                        &result_id,
+                        &r.reference_id,
+                        &r.zerocal_version,
+                        &r.verdict,
+                        &r.brackets_json,
+                        &r.conditions_json,
+                        &r.result_json,
+                    ],
+                )
+                .unwrap()
+                .get(0);
+            for j in &r.joints {
+                c.execute(
+                    "INSERT INTO joints VALUES ($1, $2, $3, $4, $5, $6, $7)",
+                    &[
+                        &id,
+                        &i64::from(j.joint),
+                        &j.name,
+                        &j.offset_deg,
+                        &j.expanded_k2_deg,
+                        &j.controller_offset_deg,
+                        &pass(j.pass),
+                    ],
+                )
+                .unwrap();
+            }
+            id
+        }
+    }
+}
