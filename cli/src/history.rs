@@ -41,6 +41,15 @@ pub struct HistoryArgs {
     pub import: Option<PathBuf>,
     #[command(flatten)]
     pub meta: crate::db::RecordMeta,
+    /// Every robot on one line instead of the records: its last session and check with
+    /// their verdicts, the due date (with --due-days) and each joint's drift since the
+    /// session before, marked * beyond both sessions' U(k=2) (docs/history.md).
+    #[arg(long, conflicts_with_all = ["serial", "plot", "import"])]
+    pub fleet: bool,
+    /// With --fleet: a robot's next session is due this many days after its last one;
+    /// past it, the line says OVERDUE. Range: [1, 3653] days.
+    #[arg(long, value_name = "DAYS", requires = "fleet", value_parser = crate::fleet::DUE_DAYS)]
+    pub due_days: Option<u32>,
 }
 
 /// One record in `zerocal history --json`: the stored fields less the export's and
@@ -591,6 +600,21 @@ pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
                 inserted.id
             );
         }
+    }
+    if args.fleet {
+        let fleet = history.fleet().map_err(history_error(&location))?;
+        let today = zerocal_civil::Timestamp::clock().date();
+        let rows = crate::fleet::rows(&fleet, args.due_days, today)?;
+        if args.json {
+            return serde_json::to_string_pretty(&rows)
+                .map(|s| s + "\n")
+                .map_err(|e| CliError::Input(e.to_string()));
+        }
+        return Ok(if rows.is_empty() {
+            format!("no records in {location}\n")
+        } else {
+            crate::fleet::table(&rows)
+        });
     }
     let records = history
         .list(args.serial.as_deref())

@@ -10,6 +10,7 @@ pub mod compare;
 pub mod db;
 pub mod diagnose;
 pub mod error;
+pub mod fleet;
 pub mod history;
 pub mod identify;
 pub mod import;

@@ -432,3 +432,86 @@ fn a_session_recorded_without_a_date_is_dated_by_the_clock_not_source_date_epoch
     );
     assert_ne!(day, "1980-01-01");
 }
+
+/// `--fleet`: one line per robot, the last session and check with their verdicts, the
+/// due date from `--due-days` (OVERDUE once past it, against the clock), and each
+/// joint's drift since the session before, starred beyond both sessions' U(k=2).
+#[test]
+fn the_fleet_view_gives_each_robot_its_last_records_due_date_and_drift() {
+    let dir = tempfile::tempdir().unwrap();
+    let db = dir.path().join("h.sqlite");
+    fill(&db);
+    let at = db.to_str().unwrap();
+    let text = stdout(&zerocal(&[
+        "history",
+        "--fleet",
+        "--due-days",
+        "3653",
+        "--db",
+        at,
+    ]));
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 3, "a header and two robots:\n{text}");
+    assert!(lines[1].starts_with("IRB-77") && lines[1].contains("2026-03-03 #4 PASS"));
+    assert!(
+        lines[1].trim_end().ends_with('-'),
+        "one session, no drift:\n{text}"
+    );
+    let kr6 = lines[2];
+    assert!(kr6.starts_with(SERIAL), "{text}");
+    assert!(kr6.contains("2026-06-10 #2 PASS") && kr6.contains("2026-09-01 #3 PASS"));
+    // 3653 days after 2026-06-10 (ten years, three leap days); j3 moved +0.0006°,
+    // within √2 · 0.005°.
+    assert!(
+        kr6.contains("2036-06-10") && !kr6.contains("OVERDUE"),
+        "{text}"
+    );
+    assert!(kr6.contains("j3 +0.0006") && !kr6.contains('*'), "{text}");
+
+    // A third session with A3 moved by 0.0169°, beyond the combined U: starred, and a
+    // day's interval is long past.
+    let mut h = History::open(&DbLocation::Sqlite(db.clone())).unwrap();
+    h.insert(&record(
+        RecordKind::Session,
+        SERIAL,
+        "2026-10-01",
+        b"export five",
+        0.0300,
+    ))
+    .unwrap();
+    drop(h);
+    let text = stdout(&zerocal(&[
+        "history",
+        "--fleet",
+        "--due-days",
+        "1",
+        "--db",
+        at,
+    ]));
+    let kr6 = text.lines().nth(2).unwrap();
+    assert!(
+        kr6.contains("j3 +0.0169*") && kr6.contains("2026-10-02 OVERDUE"),
+        "{text}"
+    );
+    let json = stdout(&zerocal(&["history", "--fleet", "--json", "--db", at]));
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v[1]["drifted"], serde_json::json!([3]), "{json}");
+    assert_eq!(v[1]["sessions"], 3, "{json}");
+    assert!(
+        v[1]["due_on"].is_null(),
+        "no --due-days, no due date: {json}"
+    );
+
+    // --fleet lists robots, not one robot's records; --due-days needs it.
+    assert!(!zerocal(&["history", SERIAL, "--fleet", "--db", at])
+        .status
+        .success());
+    assert!(!zerocal(&["history", "--due-days", "30", "--db", at])
+        .status
+        .success());
+    assert!(
+        !zerocal(&["history", "--fleet", "--due-days", "0", "--db", at])
+            .status
+            .success()
+    );
+}

@@ -10,12 +10,14 @@ mod certificates;
 mod conventions;
 mod db;
 mod error;
+mod fleet;
 mod pgpass;
 pub mod schema;
 
 pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
 pub use conventions::{Convention, NewConvention};
 pub use error::HistoryError;
+pub use fleet::{Drift, RecordSummary, RobotSummary};
 
 use db::{Conn, Value};
 use serde::{Deserialize, Serialize};

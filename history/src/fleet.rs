@@ -1,0 +1,144 @@
+//! The plant's view of the history: every robot with its last session, the session
+//! before it, and its last check, without the records' exports, results and profiles
+//! (listing those for every record of a plant takes seconds: `benches/fleet.rs`).
+
+use crate::{joint_from_row, History, HistoryError, JointRow, RecordKind, JOINT_COLUMNS};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// A record as the fleet view needs it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RecordSummary {
+    /// Its ID.
+    pub id: i64,
+    /// The day measured, `YYYY-MM-DD`.
+    pub measured_on: String,
+    /// `PASS`, `WARN ...`, `FAIL ...`.
+    pub verdict: String,
+    /// Per joint results.
+    pub joints: Vec<JointRow>,
+}
+
+/// One robot (serial) of the plant.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RobotSummary {
+    /// The robot's serial.
+    pub serial: String,
+    /// The profile's name of its last record.
+    pub robot: String,
+    /// The profile's title of its last record.
+    pub robot_title: String,
+    /// Its sessions.
+    pub sessions: usize,
+    /// Its checks.
+    pub checks: usize,
+    /// The last session measured (by day, then by ID).
+    pub last_session: Option<RecordSummary>,
+    /// The session measured before it.
+    pub previous_session: Option<RecordSummary>,
+    /// The last check measured.
+    pub last_check: Option<RecordSummary>,
+}
+
+/// A joint's change between two sessions.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Drift {
+    /// The joint, 2..=6.
+    pub joint: u8,
+    /// Last session's offset minus the previous one's (deg).
+    pub change_deg: f64,
+    /// The two sessions' U(k = 2) combined, √(U₁² + U₂²) (deg): a change beyond it is
+    /// more than the two measurements' own uncertainty.
+    pub combined_k2_deg: f64,
+}
+
+impl RobotSummary {
+    /// Each joint's change from the previous session to the last, where both have it.
+    #[must_use]
+    pub fn drift(&self) -> Vec<Drift> {
+        let (Some(last), Some(before)) = (&self.last_session, &self.previous_session) else {
+            return Vec::new();
+        };
+        last.joints
+            .iter()
+            .filter_map(|j| {
+                let b = before.joints.iter().find(|b| b.joint == j.joint)?;
+                Some(Drift {
+                    joint: j.joint,
+                    change_deg: j.offset_deg - b.offset_deg,
+                    combined_k2_deg: j.expanded_k2_deg.hypot(b.expanded_k2_deg),
+                })
+            })
+            .collect()
+    }
+}
+
+impl History {
+    /// Every robot of the history, by serial, with its last and previous session and
+    /// its last check (no exports, results or profiles read).
+    ///
+    /// # Errors
+    /// The backend's; a stored value that does not read as the schema says.
+    pub fn fleet(&mut self) -> Result<Vec<RobotSummary>, HistoryError> {
+        let records = self.conn.query(
+            "SELECT id, serial, robot, robot_title, kind, measured_on, verdict FROM records \
+             ORDER BY serial, measured_on, id",
+            &[],
+        )?;
+        let mut joints: BTreeMap<i64, Vec<JointRow>> = BTreeMap::new();
+        for row in &self.conn.query(
+            &format!("SELECT {JOINT_COLUMNS} FROM joints ORDER BY record_id, joint"),
+            &[],
+        )? {
+            let (id, j) = joint_from_row(row)?;
+            joints.entry(id).or_default().push(j);
+        }
+        let mut fleet: Vec<RobotSummary> = Vec::new();
+        for row in &records {
+            let [id, serial, robot, robot_title, kind, measured_on, verdict] = row.as_slice()
+            else {
+                return Err(HistoryError::Corrupt(format!(
+                    "a records row has {} columns",
+                    row.len()
+                )));
+            };
+            let id = id.i64("records.id")?;
+            let serial = serial.string("records.serial")?;
+            let kind = RecordKind::parse(&kind.string("records.kind")?)?;
+            let summary = RecordSummary {
+                id,
+                measured_on: measured_on.string("records.measured_on")?,
+                verdict: verdict.string("records.verdict")?,
+                joints: joints.remove(&id).unwrap_or_default(),
+            };
+            if fleet.last().is_none_or(|r| r.serial != serial) {
+                fleet.push(RobotSummary {
+                    serial: serial.clone(),
+                    robot: String::new(),
+                    robot_title: String::new(),
+                    sessions: 0,
+                    checks: 0,
+                    last_session: None,
+                    previous_session: None,
+                    last_check: None,
+                });
+            }
+            let Some(robot_now) = fleet.last_mut() else {
+                continue;
+            };
+            robot_now.robot = robot.string("records.robot")?;
+            robot_now.robot_title = robot_title.string("records.robot_title")?;
+            match kind {
+                RecordKind::Session => {
+                    robot_now.sessions += 1;
+                    robot_now.previous_session = robot_now.last_session.replace(summary);
+                }
+                RecordKind::Check => {
+                    robot_now.checks += 1;
+                    robot_now.last_check = Some(summary);
+                }
+            }
+        }
+        Ok(fleet)
+    }
+}
