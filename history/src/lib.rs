@@ -244,17 +244,25 @@ fn redacted(url: &str) -> String {
 /// A URL the client cannot parse; a password file others can read, or unreadable.
 pub fn postgres_config(url: &str) -> Result<postgres::Config, HistoryError> {
     let mut config: postgres::Config = url.parse()?;
-    if config.get_password().is_none() {
-        if let Some(t) = pgpass::Target::of(&config) {
-            let path = pgpass::file_path();
-            let text = match &path {
-                Some(p) => pgpass::read_file(p)?,
-                None => None,
-            };
-            let file = path.as_deref().zip(text.as_deref());
-            if let Some(p) = pgpass::password(&t, std::env::var("PGPASSWORD").ok(), file) {
-                config.password(p);
-            }
+    if config.get_password().is_some_and(|p| !p.is_empty()) {
+        return Ok(config);
+    }
+    // PGPASSWORD first: the file is not even read then (as libpq).
+    if let Some(p) = std::env::var("PGPASSWORD").ok().filter(|p| !p.is_empty()) {
+        config.password(p);
+        return Ok(config);
+    }
+    if let Some(t) = pgpass::Target::of(&config) {
+        // The user the file was searched for is the one the client connects as.
+        config.user(&t.user);
+        let path = pgpass::file_path();
+        let text = match &path {
+            Some(p) => pgpass::read_file(p)?,
+            None => None,
+        };
+        let file = path.as_deref().zip(text.as_deref());
+        if let Some(p) = pgpass::password(&t, None, file) {
+            config.password(p);
         }
     }
     Ok(config)
@@ -440,7 +448,9 @@ fn record_from_row(row: &[Value], joints: Vec<JointRow>) -> Result<Record, Histo
             robot: robot.string("records.robot")?,
             robot_title: robot_title.string("records.robot_title")?,
             controller_family: controller_family.string("records.controller_family")?,
-            profile_toml: profile_toml.string("records.profile_toml")?,
+            // NULL when `texts` has no row for the record's profile_sha256.
+            profile_toml: profile_toml
+                .string("the profile text (texts, by records.profile_sha256)")?,
             export: export.bytes("records.export")?,
             measured_on: measured_on.string("records.measured_on")?,
             operator: operator.opt_text("records.operator")?,

@@ -14,6 +14,10 @@
 use crate::error::HistoryError;
 use std::path::{Path, PathBuf};
 
+/// libpq's default socket directory: Debian builds it with `/var/run/postgresql`
+/// (a link to `/run/postgresql`), upstream with `/tmp`.
+const DEFAULT_SOCKET_DIRS: [&str; 3] = ["/var/run/postgresql", "/run/postgresql", "/tmp"];
+
 /// Where the connection goes, as the password file matches it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(crate) struct Target {
@@ -39,7 +43,15 @@ impl Target {
         };
         let host = match config.get_hosts().first() {
             Some(postgres::config::Host::Tcp(h)) => h.clone(),
-            // libpq matches a socket connection against `localhost`.
+            // libpq matches a connection through its default socket directory (or with
+            // no host) as `localhost`, any other socket directory by its path.
+            Some(postgres::config::Host::Unix(dir))
+                if !DEFAULT_SOCKET_DIRS
+                    .iter()
+                    .any(|d| dir.as_path() == Path::new(d)) =>
+            {
+                dir.to_string_lossy().into_owned()
+            }
             Some(postgres::config::Host::Unix(_)) | None => "localhost".to_owned(),
         };
         Some(Target {
@@ -82,19 +94,16 @@ fn matching(line: &str, target: &Target) -> Option<String> {
 }
 
 /// The five fields of a line, `\:` and `\\` unescaped; `None` for a line that has not
-/// five (libpq skips it).
+/// five (libpq skips it). As libpq reads it, the password ends at its first unescaped
+/// `:` and a backslash that ends the line is kept.
 fn split(line: &str) -> Option<[String; 5]> {
     let mut fields: Vec<String> = vec![String::new()];
     let mut chars = line.chars();
     while let Some(c) = chars.next() {
         match c {
-            '\\' => {
-                if let Some(next) = chars.next() {
-                    fields.last_mut()?.push(next);
-                }
-            }
-            // The password is the rest of the line, colons and all.
+            '\\' => fields.last_mut()?.push(chars.next().unwrap_or('\\')),
             ':' if fields.len() < 5 => fields.push(String::new()),
+            ':' => break,
             c => fields.last_mut()?.push(c),
         }
     }
@@ -117,10 +126,13 @@ pub(crate) fn file_path() -> Option<PathBuf> {
 /// # Errors
 /// The file is readable by its group or others, or cannot be read.
 pub(crate) fn read_file(path: &Path) -> Result<Option<String>, HistoryError> {
+    let named = |e: std::io::Error| {
+        HistoryError::BadLocation(format!("the password file {}: {e}", path.display()))
+    };
     let meta = match std::fs::metadata(path) {
         Ok(m) => m,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(HistoryError::Io(e)),
+        Err(e) => return Err(named(e)),
     };
     #[cfg(unix)]
     {
@@ -137,22 +149,17 @@ pub(crate) fn read_file(path: &Path) -> Result<Option<String>, HistoryError> {
     }
     #[cfg(not(unix))]
     let _ = meta;
-    std::fs::read_to_string(path)
-        .map(Some)
-        .map_err(HistoryError::Io)
+    std::fs::read_to_string(path).map(Some).map_err(named)
 }
 
-/// Whether the URL carries a password (`user:password@`).
+/// Whether the URL carries a (non-empty) password, in `user:password@` or in its query
+/// (`?password=`, percent-encoded or not), as the client would read it. A URL the
+/// client cannot parse carries none here (opening it names the parse error).
 pub(crate) fn url_has_password(url: &str) -> bool {
-    let Some((_, rest)) = url.split_once("://") else {
-        return false;
-    };
-    let authority = &rest[..rest.find(['/', '?']).unwrap_or(rest.len())];
-    authority
-        .rsplit_once('@')
-        .is_some_and(|(userinfo, _)| userinfo.contains(':'))
-        // The key-value form's `password=` in the query string is a password too.
-        || url.split(['?', '&']).skip(1).any(|kv| kv.starts_with("password="))
+    url.parse::<postgres::Config>()
+        .ok()
+        .and_then(|c| c.get_password().map(<[u8]>::is_empty))
+        .is_some_and(|empty| !empty)
 }
 
 #[cfg(test)]
@@ -169,7 +176,7 @@ mod tests {
     }
 
     /// libpq's rules: the first matching line wins, `*` matches any field, a comment
-    /// or short line is skipped, the password may hold colons, escapes are undone.
+    /// or short line is skipped, escapes are undone, the password ends at a colon.
     #[test]
     fn the_first_matching_line_gives_the_password() {
         let text = "# plant history\n\
@@ -179,7 +186,8 @@ mod tests {
                     db.plant:*:zerocal:zc:s3c:r\\:et\n\
                     *:*:*:*:later\n";
         let file = Some((Path::new("/x/.pgpass"), text));
-        assert_eq!(password(&target(), None, file).as_deref(), Some("s3c:r:et"));
+        // libpq's password is `s3c`: it ends at the first unescaped colon.
+        assert_eq!(password(&target(), None, file).as_deref(), Some("s3c"));
         let mut other = target();
         other.user = "reader".into();
         assert_eq!(password(&other, None, file).as_deref(), Some("later"));
@@ -207,20 +215,29 @@ mod tests {
     fn an_escaped_backslash_and_host_field_match() {
         let mut t = target();
         t.host = "a:b".into();
-        let text = "a\\:b:5432:zerocal:zc:p\\\\w\n";
+        let text = "a\\:b:5432:zerocal:zc:p\\\\w\\:x\n";
         assert_eq!(
             password(&t, None, Some((Path::new("/x"), text))).as_deref(),
-            Some("p\\w")
+            Some("p\\w:x")
+        );
+        // A backslash that ends the line stays.
+        let text = "*:*:*:*:pw\\\n";
+        assert_eq!(
+            password(&t, None, Some((Path::new("/x"), text))).as_deref(),
+            Some("pw\\")
         );
     }
 
     #[test]
     fn a_password_in_the_url_is_seen() {
         assert!(url_has_password("postgres://zc:s3cret@db/zerocal"));
-        assert!(url_has_password("postgresql://zc:@db/zerocal"));
         assert!(url_has_password(
             "postgres://zc@db/zerocal?sslmode=disable&password=x"
         ));
+        // Percent-encoded keys are decoded by the client: still a password.
+        assert!(url_has_password("postgres://zc@db/zerocal?pass%77ord=x"));
+        // An empty one is none, as for libpq.
+        assert!(!url_has_password("postgresql://zc:@db/zerocal"));
         assert!(!url_has_password("postgres://zc@db:5432/zerocal"));
         assert!(!url_has_password("postgres://db/zerocal?user=zc"));
     }
@@ -238,12 +255,17 @@ mod tests {
                 user: "zc".into()
             })
         );
-        let c: postgres::Config = "postgres://zc@%2Ftmp%2Fsock/hist".parse().unwrap();
+        // The default socket directory is `localhost`, another one its path (libpq).
+        let c: postgres::Config = "postgres://zc@%2Fvar%2Frun%2Fpostgresql/hist"
+            .parse()
+            .unwrap();
         let t = Target::of(&c).unwrap();
         assert_eq!(
             (t.host.as_str(), t.port, t.database.as_str()),
             ("localhost", 5432, "hist")
         );
+        let c: postgres::Config = "postgres://zc@%2Fsrv%2Fsock/hist".parse().unwrap();
+        assert_eq!(Target::of(&c).map(|t| t.host), Some("/srv/sock".into()));
         let c: postgres::Config = "postgres://zc@db".parse().unwrap();
         assert_eq!(Target::of(&c).map(|t| t.database), Some("zc".into()));
     }

@@ -130,8 +130,7 @@ impl Cluster {
         // The superuser's password, for initdb to set (then removed).
         let password = fresh_password()?;
         let pwfile = self.dir.join("pwfile");
-        std::fs::write(&pwfile, format!("{password}\n"))
-            .with_context(|| format!("cannot write {}", pwfile.display()))?;
+        write_owner_only(&pwfile, &format!("{password}\n"))?;
         if self.as_root {
             let status = Command::new("/usr/bin/chown")
                 .args(["-R", &format!("{SERVER_USER}:")])

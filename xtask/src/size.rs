@@ -204,8 +204,15 @@ impl ModuleSizes {
                 continue;
             }
             let name = symbol.name().unwrap_or("");
+            // A Thumb function's symbol value has bit 0 set (the Thumb state), its code
+            // starts one byte lower.
+            let address = if symbol.kind() == object::SymbolKind::Text {
+                symbol.address() & !1
+            } else {
+                symbol.address()
+            };
             let entry = symbols
-                .entry((index, symbol.address()))
+                .entry((index, address))
                 .or_insert_with(|| (size, name.to_owned()));
             if size > entry.0 {
                 *entry = (size, name.to_owned());

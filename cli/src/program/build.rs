@@ -343,9 +343,9 @@ impl StepWriter<'_> {
         check: bool,
     ) -> Result<(), CliError> {
         let (done, end) = if check {
-            ("the check's poses", "check done; export it from the pendant (zerocal pendant export), then zerocal check")
+            ("the check's poses", "the robot's part of the check is done; after the closing bench readings, export it from the pendant (zerocal pendant export), then zerocal check")
         } else {
-            ("stage 2", "session done; the pendant shows the result")
+            ("stage 2", "the robot's part of the session is done; the pendant shows the result after the closing bench readings")
         };
         self.steps.push(Step::Comment(format!(
             "zerocal: {done} done; the robot parks where the pendant went on the flange (tilted past its range) to take the pendant off"

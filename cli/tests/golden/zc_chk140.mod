@@ -102,6 +102,7 @@ MODULE ZC_CHK140
         TPWrite "headings as it guides (the closing bench";
         TPWrite "readings).";
         STOP;
-        ! zerocal: check done; export it from the pendant (zerocal pendant export), then zerocal check
+        ! zerocal: the robot's part of the check is done; after the closing bench readings, export it from
+        ! the pendant (zerocal pendant export), then zerocal check
     ENDPROC
 ENDMODULE

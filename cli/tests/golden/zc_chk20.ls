@@ -7,7 +7,7 @@ CREATE		= DATE 23-11-14  TIME 22:13:20;
 MODIFIED	= DATE 23-11-14  TIME 22:13:20;
 FILE_NAME	= ;
 VERSION		= 0;
-LINE_COUNT	= 183;
+LINE_COUNT	= 187;
 MEMORY_SIZE	= 0;
 PROTECT		= READ_WRITE;
 TCD:  STACK_SIZE	= 0,
@@ -197,11 +197,15 @@ CONTROL_CODE	= 00000000 00000000;
  176:  MESSAGE[closing bench] ;
  177:  MESSAGE[readings).] ;
  178:  PAUSE ;
- 179:  ! zerocal: check done; ;
- 180:  ! export it from the ;
- 181:  ! pendant (zerocal ;
- 182:  ! pendant export), ;
- 183:  ! then zerocal check ;
+ 179:  ! zerocal: the robot's ;
+ 180:  ! part of the check is ;
+ 181:  ! done; after the ;
+ 182:  ! closing bench ;
+ 183:  ! readings, export it ;
+ 184:  ! from the pendant ;
+ 185:  ! (zerocal pendant ;
+ 186:  ! export), then ;
+ 187:  ! zerocal check ;
 /POS
 P[1]{
    GP1:

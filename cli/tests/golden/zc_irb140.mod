@@ -557,6 +557,7 @@ MODULE ZC_IRB140
         TPWrite "headings as it guides (the closing bench";
         TPWrite "readings).";
         STOP;
-        ! zerocal: session done; the pendant shows the result
+        ! zerocal: the robot's part of the session is done; the pendant shows the result after the closing
+        ! bench readings
     ENDPROC
 ENDMODULE

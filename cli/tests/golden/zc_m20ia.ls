@@ -7,7 +7,7 @@ CREATE		= DATE 23-11-14  TIME 22:13:20;
 MODIFIED	= DATE 23-11-14  TIME 22:13:20;
 FILE_NAME	= ;
 VERSION		= 0;
-LINE_COUNT	= 605;
+LINE_COUNT	= 608;
 MEMORY_SIZE	= 0;
 PROTECT		= READ_WRITE;
 TCD:  STACK_SIZE	= 0,
@@ -621,9 +621,12 @@ CONTROL_CODE	= 00000000 00000000;
  600:  MESSAGE[closing bench] ;
  601:  MESSAGE[readings).] ;
  602:  PAUSE ;
- 603:  ! zerocal: session ;
- 604:  ! done; the pendant ;
- 605:  ! shows the result ;
+ 603:  ! zerocal: the robot's ;
+ 604:  ! part of the session ;
+ 605:  ! is done; the pendant ;
+ 606:  ! shows the result ;
+ 607:  ! after the closing ;
+ 608:  ! bench readings ;
 /POS
 P[1]{
    GP1:
