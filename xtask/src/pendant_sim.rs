@@ -292,7 +292,7 @@ pub fn session_text(report: &SessionReport) -> String {
     );
     let _ = writeln!(
         out,
-        "session: {} poses, {:.1} s on the robot from power-up to the result; flash: {} operations, {} erases",
+        "session: {} poses, {:.1} s simulated from power-up to the result (stage 0 and the closing bench readings included); flash: {} operations, {} erases",
         report.poses, report.robot_time_s, report.flash_operations, report.erases
     );
     let _ = writeln!(
