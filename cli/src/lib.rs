@@ -2,8 +2,8 @@
 //! directly (see `tests/`) as well as through the binary.
 
 pub mod args;
-pub mod bracket;
-pub mod brackets;
+pub mod bracket_design;
+pub mod bracket_file;
 pub mod certificate;
 pub mod check;
 pub mod compare;
@@ -20,11 +20,11 @@ pub mod plan;
 pub mod plots;
 pub mod profile_cmd;
 pub mod program;
-pub mod record;
 pub mod report_notes;
 pub mod restore;
 pub mod robot;
 pub mod session;
 pub mod simulate;
 pub mod simulated_world;
+pub mod stored_session;
 pub mod timing;

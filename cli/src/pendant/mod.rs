@@ -5,7 +5,7 @@
 //! - `status`: the pendant's `status` lines.
 //! - `load-profile ROBOT [--plan FILE] [--brackets FILE]`: the robot profile (`profile
 //!   set`, the lines of `zerocal_procedure::profile`: its kinematics, display, masses
-//!   and the brackets' calibrations from the `--brackets` file, [`crate::brackets`]),
+//!   and the brackets' calibrations from the `--brackets` file, [`crate::bracket_file`]),
 //!   then the plan `zerocal program --robot ROBOT` drives (or FILE, `zerocal plan
 //!   --csv` output), so the pendant's screens, the robot program and the export all
 //!   name the same robot and poses, and the pendant's fit is `zerocal session`'s.
@@ -320,8 +320,8 @@ fn request(command: Command, expect: Expect) -> Request {
 /// A calibration date given, or today's.
 fn date_or_today(date: Option<&String>) -> Result<String, CliError> {
     match date {
-        Some(d) => crate::brackets::calibration_date(d),
-        None => Ok(crate::brackets::today_utc()),
+        Some(d) => crate::bracket_file::calibration_date(d),
+        None => Ok(crate::bracket_file::today_utc()),
     }
 }
 
@@ -370,7 +370,7 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
         } => {
             let profile = crate::robot::load(robot)?;
             let brackets = match brackets {
-                Some(path) => crate::brackets::read(path)?,
+                Some(path) => crate::bracket_file::read(path)?,
                 None => Brackets::default(),
             };
             // Model radians, as the pendant's plan holds them (the file is in degrees).
