@@ -24,7 +24,7 @@
 //!   pendant (`bracket calibrate`) and followed step by step (`bracket status`) until
 //!   it is kept, then its TOML ([`bracket`]).
 //! - `check --out FILE`: a check of entered offsets started (`check`), followed phase by
-//!   phase (`status`) to its end, its export saved ([`check`]).
+//!   phase (`status`) to its end, its export saved ([`check_follow`]).
 //! - `live [--seconds S]`: the live reading in a view that refreshes, until Enter
 //!   ([`live`]).
 //!
@@ -38,7 +38,7 @@
 //! desktop, `zerocal_pendant_desktop::port`, whose clock the verbs' pauses move).
 
 mod bracket;
-mod check;
+mod check_follow;
 mod link;
 mod live;
 mod reply;
@@ -360,7 +360,7 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
             date_or_today(date.as_ref())?;
             vec![bracket::start_request(mount, id)?]
         }
-        PendantAction::Check { .. } => vec![check::start_request()],
+        PendantAction::Check { .. } => vec![check_follow::start_request()],
         // A stream, not a reply: `live::show` reads it.
         PendantAction::Live { .. } => Vec::new(),
         PendantAction::LoadProfile {
@@ -493,7 +493,7 @@ pub fn act(
             }
         }
         PendantAction::Check { out } => {
-            let export = check::follow(port, timeouts, progress)?;
+            let export = check_follow::follow(port, timeouts, progress)?;
             write_file(out, &export)?;
             Ok(format!(
                 "wrote {} (the check's export: `zerocal check {} --against ID`, ID the \
