@@ -1,9 +1,9 @@
 //! `zerocal check EXPORT --against ID`: after the offsets were entered, did the
 //! controller take them, with the right sign and unit? The check's export (stage 0
 //! and a handful of the plan's poses, `zerocal program --check`) against the session
-//! whose offsets were entered ([`crate::compare::check`]); recorded in the history.
+//! whose offsets were entered ([`crate::compare::entry_check`]); recorded in the history.
 
-use crate::compare::check::{judge, CheckResult, Expected, JointCheck};
+use crate::compare::entry_check::{judge, CheckResult, Expected, JointCheck};
 use crate::compare::mistake::{classify, EntryJoint, Mistake};
 use crate::compare::{CompareOptions, Consistency, DifferenceBudget};
 use crate::db::DbArg;

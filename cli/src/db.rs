@@ -77,12 +77,12 @@ impl RecordMeta {
     /// `--measured-on` that is not a day of 2000-2999 (without it: today, by the clock).
     pub fn day(&self) -> Result<String, CliError> {
         match &self.measured_on {
-            Some(d) => crate::brackets::calibration_day(d)
+            Some(d) => crate::bracket_file::calibration_day(d)
                 .map(|day| day.to_string())
                 .map_err(|e| {
                     CliError::Input(format!("--measured-on '{d}': not a day YYYY-MM-DD: {e}"))
                 }),
-            None => Ok(crate::brackets::today_utc()),
+            None => Ok(crate::bracket_file::today_utc()),
         }
     }
 }

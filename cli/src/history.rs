@@ -588,7 +588,9 @@ pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
     let mut imported = String::new();
     if let (Some(file), Some(serial)) = (&args.import, &args.serial) {
         let text = crate::input::read_capped(file, crate::input::MAX_EXPORT_BYTES, "kept results")?;
-        for (id, inserted) in crate::import::import(&mut history, &text, serial, &args.meta)? {
+        for (id, inserted) in
+            crate::history_import::import(&mut history, &text, serial, &args.meta)?
+        {
             let _ = writeln!(
                 imported,
                 "kept result {id}: {} record {}",

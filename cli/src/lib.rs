@@ -2,8 +2,8 @@
 //! directly (see `tests/`) as well as through the binary.
 
 pub mod args;
-pub mod bracket;
-pub mod brackets;
+pub mod bracket_design;
+pub mod bracket_file;
 pub mod certificate;
 pub mod check;
 pub mod compare;
@@ -12,8 +12,8 @@ pub mod diagnose;
 pub mod error;
 pub mod fleet;
 pub mod history;
+pub mod history_import;
 pub mod identify;
-pub mod import;
 pub mod input;
 pub mod log_file;
 pub mod pendant;
@@ -21,11 +21,11 @@ pub mod plan;
 pub mod plots;
 pub mod profile_cmd;
 pub mod program;
-pub mod record;
 pub mod report_notes;
 pub mod restore;
 pub mod robot;
 pub mod session;
 pub mod simulate;
 pub mod simulated_world;
+pub mod stored_session;
 pub mod timing;

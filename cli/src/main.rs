@@ -79,7 +79,7 @@ enum Command {
     Restore(zerocal_cli::restore::RestoreArgs),
     /// Write the flange bracket's OpenSCAD parameters (`include <flange_bracket.scad>`
     /// and the profile's ISO 9409-1 bolt circle and dowel) for the robot.
-    Bracket(zerocal_cli::bracket::BracketArgs),
+    Bracket(zerocal_cli::bracket_design::BracketArgs),
     /// List the calibration history (every session and check, per robot serial) as a
     /// table or JSON, or plot each joint's zero over time with its U(k=2) band.
     History(zerocal_cli::history::HistoryArgs),
@@ -156,7 +156,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Session(args) => session::run(args),
         Command::Program(args) => program::run(args),
         Command::Pendant(args) => zerocal_cli::pendant::run(args),
-        Command::Bracket(args) => zerocal_cli::bracket::run(args),
+        Command::Bracket(args) => zerocal_cli::bracket_design::run(args),
         Command::Check(args) => zerocal_cli::check::run(args),
         Command::Certificate(args) => zerocal_cli::certificate::run(args),
         Command::Restore(args) => zerocal_cli::restore::run(args),

@@ -70,7 +70,7 @@ pub fn against(
 ) -> Result<Against, CliError> {
     let mut history = db.open()?;
     let record = history.get(id).map_err(crate::db::history_failed)?;
-    let reference = crate::record::solve_record(&record)?;
+    let reference = crate::stored_session::solve_record(&record)?;
     let bytes =
         crate::input::read_capped_bytes(export, crate::input::MAX_EXPORT_BYTES, "pendant export")?;
     let name = |what: &str| format!("{}: {what}", export.display());

@@ -4,127 +4,38 @@
 //! the closing reversal), its k = 2 budget printed beside the hidden truth. And
 //! `zerocal error-table`: the same sessions by the hundred, one error source at a time,
 //! with and without the compensation (the README's table).
+//!
+//! The simulation is zerocal-sim's (`error_sources`, `real_run`, `error_table`); here
+//! are the flags that choose it, its report and the errors in the CLI's terms.
 
 use crate::args::{CountIn, RealIn, SEED};
 use crate::error::CliError;
-use clap::{Args, ValueEnum};
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+use clap::Args;
 use std::fmt::Write as _;
-use zerocal_core::report::Verdict;
-use zerocal_core::session::{budget, solve, Budget, BudgetTerm, SessionSolution, SESSION_JOINTS};
-use zerocal_profile::Profile;
-use zerocal_sim::montecarlo::{self, Method, DEFAULT_POSES};
-use zerocal_sim::robot::RobotSources;
-use zerocal_sim::sensor::SensorSources;
-use zerocal_sim::world::{BracketKnowledge, RealSession, WorldConfig};
+use zerocal_core::session::{BudgetTerm, SESSION_JOINTS};
+use zerocal_sim::error_sources::{world_with, ErrorSource};
+use zerocal_sim::error_table::{error_table as table_rows, ErrorTableRow};
+use zerocal_sim::montecarlo::DEFAULT_POSES;
+use zerocal_sim::real_run::{Again, RealRun};
+use zerocal_sim::world::{BracketKnowledge, WorldConfig};
 
-/// An error source of the simulated world.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Source {
-    /// Per-axis sensitivity error (±0.7 %).
-    Sensitivity,
-    /// Cross-axis sensitivity (±1 % each pair).
-    CrossAxis,
-    /// Offset (±20 mg, Y −25/+20 mg).
-    Offset,
-    /// Offset drift with temperature (±0.009 °/K).
-    Drift,
-    /// The box warming 3 K over the session.
-    Warming,
-    /// Non-linearity (±1 mg over ±1 g, cubic).
-    Nonlinearity,
-    /// Output noise behind the 10 Hz filter (0.08/0.06 mg).
-    Noise,
-    /// Angle and temperature quantisation.
-    Quantisation,
-    /// Gravity sag of joints 2-3 (0.01-0.02° at full lever).
-    Sag,
-    /// Gear backlash (lost motion up to 1 arc min).
-    Backlash,
-    /// Repeatability (0.0015° per joint, 1σ).
-    Repeatability,
-    /// Joint axes off the drawing's (0.01-0.05° per perpendicular pair, 0.01-0.5° per
-    /// parallel pair).
-    Misalignment,
-    /// Transmission error (0.005-0.03° peak to peak per joint, and once per turn
-    /// 0.005-0.025° on joints 4 and 6).
-    Transmission,
-    /// Joints 4-6 giving under the wrist's load (0.01-0.03° at full lever).
-    WristCompliance,
-}
-
-impl Source {
-    /// Every source, in table order.
-    pub const ALL: [Source; 14] = [
-        Source::Noise,
-        Source::Quantisation,
-        Source::Sensitivity,
-        Source::CrossAxis,
-        Source::Offset,
-        Source::Nonlinearity,
-        Source::Drift,
-        Source::Warming,
-        Source::Sag,
-        Source::Backlash,
-        Source::Repeatability,
-        Source::Misalignment,
-        Source::Transmission,
-        Source::WristCompliance,
-    ];
-
-    /// What the table calls it.
-    pub fn label(self) -> &'static str {
-        match self {
-            Source::Sensitivity => "sensitivity error per axis, +/-0.7 %",
-            Source::CrossAxis => "cross-axis sensitivity, +/-1 % each pair",
-            Source::Offset => "offset, +/-20 mg (1.15 deg)",
-            Source::Drift => "offset drift +/-0.009 deg/K (box at constant temperature)",
-            Source::Warming => "drift with the box warming 3 K over the session",
-            Source::Nonlinearity => "non-linearity, +/-1 mg over +/-1 g",
-            Source::Noise => "noise 0.08/0.06 mg behind the 10 Hz filter",
-            Source::Quantisation => "angle output quantised at 0.0055 deg/LSB",
-            Source::Sag => "gravity sag of joints 2-3, 0.01-0.02 deg at full lever",
-            Source::Backlash => "backlash, lost motion up to 1 arc min",
-            Source::Repeatability => "robot repeatability 0.0015 deg per joint",
-            Source::Misalignment => "axis misalignment 0.01-0.05 (parallel 0.5) deg",
-            Source::Transmission => "transmission error 0.005-0.03 deg p-p",
-            Source::WristCompliance => "wrist compliance 0.01-0.03 deg at full lever",
-        }
-    }
-}
-
-/// The world with `on` switched on and everything else off (`None`: all on).
-pub fn world_with(on: Option<&[Source]>) -> WorldConfig {
-    let has = |s: Source| on.is_none_or(|list| list.contains(&s));
-    let mut w = WorldConfig::real();
-    w.sensor = SensorSources {
-        sensitivity: has(Source::Sensitivity),
-        cross_axis: has(Source::CrossAxis),
-        offset: has(Source::Offset),
-        drift: has(Source::Drift) || has(Source::Warming),
-        nonlinearity: has(Source::Nonlinearity),
-        noise: has(Source::Noise),
-        quantisation: has(Source::Quantisation),
-    };
-    w.robot = RobotSources {
-        sag: has(Source::Sag),
-        backlash: has(Source::Backlash),
-        repeatability: has(Source::Repeatability),
-        misalignment: has(Source::Misalignment),
-        transmission: has(Source::Transmission),
-        wrist_compliance: has(Source::WristCompliance),
-    };
-    if !has(Source::Warming) {
-        w.warming_k = 0.0;
-    }
-    w
+/// `--without`'s values: each error source by its name, with its summary.
+fn error_source() -> impl TypedValueParser<Value = ErrorSource> {
+    PossibleValuesParser::new(
+        ErrorSource::LISTED.map(|s| PossibleValue::new(s.name()).help(s.summary())),
+    )
+    .try_map(|name| {
+        ErrorSource::named(&name).ok_or_else(|| format!("'{name}': no such error source"))
+    })
 }
 
 /// Arguments shared by the real-world runs.
 #[derive(Args, Debug, Clone)]
 pub struct WorldArgs {
     /// Switch these error sources off (comma-separated); all are on by default.
-    #[arg(long, value_delimiter = ',', value_name = "SOURCES")]
-    pub without: Vec<Source>,
+    #[arg(long, value_delimiter = ',', value_name = "SOURCES", value_parser = error_source())]
+    pub without: Vec<ErrorSource>,
     /// A loose flange bracket: it seats anew within ± this at every capture (0: tight).
     /// Range: [0, 1] deg.
     #[arg(long, default_value_t = 0.0, value_name = "DEG", value_parser = RealIn::closed(0.0, 1.0, "deg"))]
@@ -172,7 +83,6 @@ pub struct WorldArgs {
     #[arg(long, value_name = "DEG,DEG,DEG,DEG,DEG", value_parser = parse_entered, allow_hyphen_values = true, requires = "again")]
     pub entered: Option<[f64; 5]>,
 }
-
 /// Five offsets, comma-separated, each within ±10°.
 fn parse_entered(text: &str) -> Result<[f64; 5], String> {
     let values = text
@@ -198,27 +108,6 @@ fn parse_zero_moved(text: &str) -> Result<(usize, f64), String> {
     Ok((joint, deg))
 }
 
-impl WorldArgs {
-    /// The change between the first session and `--again`'s, on the simulated robot:
-    /// a moved zero makes the reading larger at the same position (Δθ = true − reading
-    /// falls), an entered offset moves the reading by itself (Δθ falls by it).
-    pub fn change(&self) -> impl Fn(&mut zerocal_sim::robot::SimRobot) + '_ {
-        move |r| {
-            for (joint, deg) in &self.zero_moved {
-                if let Some(o) = r.offsets_rad.get_mut(joint - 1) {
-                    *o -= deg.to_radians();
-                }
-            }
-            for (o, e) in r.offsets_rad[1..]
-                .iter_mut()
-                .zip(self.entered.iter().flatten())
-            {
-                *o -= e.to_radians();
-            }
-        }
-    }
-}
-
 /// `--brackets`: what the simulated session knows of its brackets.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BracketsArg {
@@ -233,12 +122,12 @@ pub enum BracketsArg {
 impl WorldArgs {
     /// The world these flags describe.
     pub fn world(&self) -> WorldConfig {
-        let on: Vec<Source> = Source::ALL
+        let on: Vec<ErrorSource> = ErrorSource::ALL
             .into_iter()
             .filter(|s| !self.without.contains(s))
             .collect();
         let mut w = world_with(Some(&on));
-        if on.contains(&Source::Warming) {
+        if on.contains(&ErrorSource::Warming) {
             w.warming_k = self.warming_k;
         }
         w.loose_bracket_deg = self.loose_bracket_deg;
@@ -253,23 +142,19 @@ impl WorldArgs {
         w.closing_reversal = !self.no_closing_reversal;
         w
     }
+
+    /// `--again`'s session: its seed, and the change made to the robot since the first
+    /// (`--zero-moved`, `--entered`).
+    pub fn again_session(&self) -> Option<Again> {
+        self.again.map(|seed| Again {
+            seed,
+            zero_moved_deg: self.zero_moved.clone(),
+            entered_deg: self.entered,
+        })
+    }
 }
 
-/// One real-world session, solved as the pendant does.
-pub struct RealRun {
-    /// The profile.
-    pub profile: Profile,
-    /// The session and its truth.
-    pub session: RealSession,
-    /// The solution.
-    pub solution: SessionSolution<f64>,
-    /// Its budget.
-    pub budget: Budget<f64>,
-    /// The verdict.
-    pub verdict: Verdict,
-}
-
-/// Simulates and solves one session.
+/// Simulates and solves one session (`again`: `--again`'s, if given).
 ///
 /// # Errors
 /// An unknown robot (status 2), a plan or a session refused (status 3).
@@ -281,40 +166,9 @@ pub fn run_session(
     again: Option<&WorldArgs>,
 ) -> Result<RealRun, CliError> {
     let profile = crate::robot::load(robot)?;
-    let (plan, fit) = montecarlo::setup(&profile, Method::Compensated, poses)
-        .map_err(|e| CliError::Refused(format!("plan: {e}")))?;
-    let first = RealSession::simulate(&profile, &plan, world, seed);
-    let session = match again {
-        Some(args) => match args.again {
-            Some(n) => first.again(&profile, &plan, world, n, args.change()),
-            None => first,
-        },
-        None => first,
-    };
-    let readings = session.readings(&profile, world);
-    if session.outside_range > 0 {
-        return Err(CliError::Refused(format!(
-            "{} capture(s) left the SCL3300's mode-4 range of +/-10 deg: the pendant refuses them",
-            session.outside_range
-        )));
-    }
-    let outcome = solve(&readings, &fit);
-    let solution = outcome
-        .result
-        .map_err(|e| CliError::Refused(e.to_string()))?;
-    let verdict = Verdict::judge(&solution.fit, &fit, outcome.stage1.as_ref());
-    let budget = budget(
-        &solution,
-        &session.poses,
-        &world.budget_inputs(&profile, &fit, &session.brackets),
-    );
-    Ok(RealRun {
-        profile,
-        session,
-        solution,
-        budget,
-        verdict,
-    })
+    let again = again.and_then(WorldArgs::again_session);
+    RealRun::simulate(profile, world, poses, seed, again.as_ref())
+        .map_err(|e| CliError::Refused(e.to_string()))
 }
 
 /// The report of one real-world session beside its truth.
@@ -322,9 +176,9 @@ pub fn render(run: &RealRun, world: &WorldConfig, seed: u64) -> String {
     let mut out = String::new();
     let s = &run.solution;
     let truth = run.session.truth_rad();
-    let off: Vec<&str> = Source::ALL
+    let off: Vec<&str> = ErrorSource::ALL
         .iter()
-        .filter(|src| !source_on(world, **src))
+        .filter(|src| !src.is_on(world))
         .map(|src| src.label())
         .collect();
     let _ = writeln!(
@@ -377,25 +231,6 @@ pub fn render(run: &RealRun, world: &WorldConfig, seed: u64) -> String {
     out
 }
 
-fn source_on(world: &WorldConfig, s: Source) -> bool {
-    match s {
-        Source::Sensitivity => world.sensor.sensitivity,
-        Source::CrossAxis => world.sensor.cross_axis,
-        Source::Offset => world.sensor.offset,
-        Source::Drift => world.sensor.drift,
-        Source::Warming => world.warming_k > 0.0,
-        Source::Nonlinearity => world.sensor.nonlinearity,
-        Source::Noise => world.sensor.noise,
-        Source::Quantisation => world.sensor.quantisation,
-        Source::Sag => world.robot.sag,
-        Source::Backlash => world.robot.backlash,
-        Source::Repeatability => world.robot.repeatability,
-        Source::Misalignment => world.robot.misalignment,
-        Source::Transmission => world.robot.transmission,
-        Source::WristCompliance => world.robot.wrist_compliance,
-    }
-}
-
 /// Arguments of `zerocal error-table`.
 #[derive(Args, Debug, Clone)]
 pub struct ErrorTableArgs {
@@ -444,121 +279,45 @@ pub fn error_table(args: &ErrorTableArgs) -> Result<String, CliError> {
             "k=2 cov",
             "TCP/best"
         );
-        let mut rows: Vec<(String, WorldConfig, bool)> = vec![(
-            "none (noise and quantisation only)".to_owned(),
-            world_with(Some(&[Source::Noise, Source::Quantisation])),
-            false,
-        )];
-        for s in Source::ALL.iter().skip(2) {
-            let mut world = world_with(Some(&[Source::Noise, Source::Quantisation, *s]));
-            if *s == Source::Drift {
-                world.warming_k = 0.0;
-            }
-            rows.push((s.label().to_owned(), world, false));
-        }
-        rows.push(("all together".to_owned(), world_with(None), true));
-        rows.push((
-            "all together, the FANUC R-2000iC as a tracker measured it".to_owned(),
-            WorldConfig::fanuc_as_measured(),
-            true,
-        ));
-        for (label, world, with_tcp) in rows {
-            let mut cells = Vec::new();
-            let mut refusals: Vec<String> = Vec::new();
-            let mut compensated = Vec::new();
-            for method in [Method::Uncompensated, Method::Compensated] {
-                let (plan, fit) = montecarlo::setup(&profile, method, args.poses)
-                    .map_err(|e| CliError::Refused(format!("{name}: plan: {e}")))?;
-                let w = montecarlo::world_for(method, world);
-                let tcp = with_tcp && method == Method::Compensated;
-                let outcomes = montecarlo::run_with_tcp(
-                    &profile,
-                    &plan,
-                    &w,
-                    &fit,
-                    args.sessions,
-                    args.seed,
-                    tcp,
-                );
-                if method == Method::Compensated {
-                    refusals = outcomes
-                        .iter()
-                        .filter_map(|o| {
-                            o.result
-                                .as_ref()
-                                .err()
-                                .map(|e| format!("seed {}: {e}", o.seed))
-                        })
-                        .collect();
-                }
-                let worst: Vec<f64> = outcomes
-                    .iter()
-                    .map(|o| {
-                        o.errors_deg().map_or(f64::INFINITY, |e| {
-                            e.iter().fold(0.0f64, |m, v| m.max(v.abs()))
-                        })
-                    })
-                    .collect();
-                cells.push(worst);
-                if method == Method::Compensated {
-                    compensated = outcomes;
-                }
-            }
-            let summary = montecarlo::summarise(&compensated, 0.005);
-            let coverage = summary.covered.iter().copied().fold(1.0f64, f64::min);
-            let ratios: Vec<f64> = compensated
-                .iter()
-                .filter_map(|o| o.tcp.map(|t| t.mean_after_mm / t.mean_best_mm))
-                .collect();
-            let tcp_cell = if ratios.is_empty() {
-                "-".to_owned()
-            } else {
-                format!("{:.3}", ratios.iter().sum::<f64>() / ratios.len() as f64)
-            };
-            // Refused sessions (NaN) give no error: they are counted on their own.
-            let max = |v: &[f64]| {
-                v.iter()
-                    .cloned()
-                    .filter(|x| x.is_finite())
-                    .fold(0.0f64, f64::max)
-            };
-            let mut after: Vec<f64> = cells[1].iter().cloned().filter(|x| x.is_finite()).collect();
-            after.sort_by(f64::total_cmp);
-            let p95 = after
-                .get(((after.len() as f64 * 0.95).ceil() as usize).saturating_sub(1))
-                .copied()
-                .unwrap_or(f64::NAN);
-            let ok = cells[1].iter().filter(|w| **w <= 0.005).count() as f64
-                / cells[1].len().max(1) as f64;
-            let fmt = |v: f64| {
-                if v.is_finite() {
-                    format!("{v:.4}")
-                } else {
-                    "refused".to_owned()
-                }
-            };
-            let _ = writeln!(
-                out,
-                "{:<58} {:>10} {:>10} {:>10} {:>7.1}% {:>8} {:>6.1}% {:>9}",
-                label,
-                fmt(max(&cells[0])),
-                fmt(p95),
-                fmt(max(&cells[1])),
-                ok * 100.0,
-                refusals.len(),
-                coverage * 100.0,
-                tcp_cell
-            );
-            for r in &refusals {
-                let _ = writeln!(out, "    refused, {r}");
-            }
+        let rows = table_rows(&profile, args.sessions, args.poses, args.seed)
+            .map_err(|e| CliError::Refused(format!("{name}: plan: {e}")))?;
+        for row in &rows {
+            render_row(&mut out, row);
         }
     }
     Ok(out)
 }
 
-/// The ISO 9283-style test on the robot: flange position error at seeded random poses
-/// within its limits, with the hidden offsets and after entering the found ones.
+/// One row of the error table, and each refused session under it.
+fn render_row(out: &mut String, row: &ErrorTableRow) {
+    let fmt = |v: f64| {
+        if v.is_finite() {
+            format!("{v:.4}")
+        } else {
+            "refused".to_owned()
+        }
+    };
+    let tcp_cell = row
+        .tcp_over_best
+        .map_or_else(|| "-".to_owned(), |r| format!("{r:.3}"));
+    let _ = writeln!(
+        out,
+        "{:<58} {:>10} {:>10} {:>10} {:>7.1}% {:>8} {:>6.1}% {:>9}",
+        row.label,
+        fmt(row.before_max_deg),
+        fmt(row.after_p95_deg),
+        fmt(row.after_max_deg),
+        row.within_share * 100.0,
+        row.refusals.len(),
+        row.k2_coverage * 100.0,
+        tcp_cell
+    );
+    for r in &row.refusals {
+        let _ = writeln!(out, "    refused, {r}");
+    }
+}
+
+/// The ISO 9283-style test on the robot ([`RealRun::accuracy`]).
 ///
 /// # Errors
 /// A profile without lengths (no positions to test).
@@ -567,20 +326,8 @@ pub fn accuracy(
     points: usize,
     seed: u64,
 ) -> Result<zerocal_sim::positioning::AccuracyReport, CliError> {
-    let p = &run.profile;
-    let limits = core::array::from_fn(|k| (p.joints[k].min_deg, p.joints[k].max_deg));
-    let mut found = [0.0; 6];
-    found[1..].copy_from_slice(&run.solution.offsets_rad);
-    zerocal_sim::positioning::accuracy_test(
-        &p.title,
-        &p.arm,
-        &limits,
-        &run.session.robot.offsets_rad,
-        &found,
-        points,
-        seed,
-    )
-    .map_err(|e| CliError::Refused(format!("accuracy test: {e}")))
+    run.accuracy(points, seed)
+        .map_err(|e| CliError::Refused(format!("accuracy test: {e}")))
 }
 
 /// Writes the plots of `--plot DIR`: the positioning errors and the fit's residuals.

@@ -115,7 +115,7 @@ temperature_c = 22.25
     .unwrap();
     let profile = zerocal_cli::robot::load(robot_file.to_str().unwrap()).unwrap();
     assert!(profile.mass_model().is_some(), "the profile has masses");
-    let brackets = zerocal_cli::brackets::read(&brackets_file).unwrap();
+    let brackets = zerocal_cli::bracket_file::read(&brackets_file).unwrap();
     let sent = zerocal_cli::pendant::pendant_profile(&profile, brackets).unwrap();
     for seed in [3, 17] {
         let world = WorldConfig {

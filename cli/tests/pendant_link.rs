@@ -291,7 +291,7 @@ temperature_c = 22.25
         "{out}"
     );
     let profile = zerocal_cli::robot::load(robot).unwrap();
-    let brackets = zerocal_cli::brackets::read(&file).unwrap();
+    let brackets = zerocal_cli::bracket_file::read(&file).unwrap();
     let sent = pendant::pendant_profile(&profile, brackets).unwrap();
     let mut up = ProfileUpload::<f64>::default();
     let mut back = None;

@@ -126,7 +126,7 @@ fn a_bracket_calibration_is_followed_step_by_step_to_its_kept_result() {
     assert!(progress.contains("capturing: hands off"), "{progress}");
     // The TOML the profile takes, with the turn the world has.
     let toml = std::fs::read_to_string(&out).unwrap();
-    let brackets = zerocal_cli::brackets::read(&out).unwrap_or_else(|e| panic!("{e}\n{toml}"));
+    let brackets = zerocal_cli::bracket_file::read(&out).unwrap_or_else(|e| panic!("{e}\n{toml}"));
     let flange = brackets.flange.expect("the flange's calibration");
     assert_eq!(flange.id.as_str(), "F-017");
     let (x, y) = (

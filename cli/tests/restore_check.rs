@@ -205,8 +205,11 @@ fn check_poses<'a>(profile: &Profile, plan: &'a [[f64; 6]]) -> impl Fn(&[f64; 6]
 }
 
 /// The reference's offsets entered, `left_deg` short on joint 3; the check's verdict.
-fn check_after_entering(seed: u64, left_j3_deg: f64) -> zerocal_cli::compare::check::CheckResult {
-    use zerocal_cli::compare::check::{judge, Expected};
+fn check_after_entering(
+    seed: u64,
+    left_j3_deg: f64,
+) -> zerocal_cli::compare::entry_check::CheckResult {
+    use zerocal_cli::compare::entry_check::{judge, Expected};
     let profile = kr6();
     let plan = plan(&profile);
     let reference = RealSession::simulate(&profile, &plan, &world(), seed);

@@ -8,12 +8,15 @@
 
 #![forbid(unsafe_code)]
 
+pub mod error_sources;
+pub mod error_table;
 pub mod flash;
 pub mod inclinometer;
 pub mod montecarlo;
 pub mod pendant_plan;
 pub mod poses;
 pub mod positioning;
+pub mod real_run;
 pub mod robot;
 pub mod scl3300_device;
 pub mod sensor;

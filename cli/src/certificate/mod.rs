@@ -205,7 +205,7 @@ fn config_path(args: &CertificateArgs) -> Result<PathBuf, CliError> {
 pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
     let mut history = args.db.open()?;
     let record = history.get(args.id).map_err(crate::db::history_failed)?;
-    let analysis = crate::record::solve_record(&record)?;
+    let analysis = crate::stored_session::solve_record(&record)?;
     let path = config_path(args)?;
     let text = crate::input::read_capped(&path, issuer::MAX_ISSUER_BYTES, "issuer configuration")
         .map_err(|e| match e {
@@ -241,7 +241,7 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
             number: issuer::new_number(&issuer)?,
             session_id: record.id,
             as_left_id: as_left.as_ref().map(|a| a.record_id),
-            issued_on: crate::brackets::today_utc(),
+            issued_on: crate::bracket_file::today_utc(),
             issuer_json,
         })
         .map_err(crate::db::history_failed)?;
@@ -281,7 +281,7 @@ pub fn certificate(
     subject: &CertificateSubject,
     analysis: &Analysis,
 ) -> Result<Certificate, CertificateError> {
-    certificate_issued_on(subject, analysis, &crate::brackets::today_utc())
+    certificate_issued_on(subject, analysis, &crate::bracket_file::today_utc())
 }
 
 /// [`certificate`] with its issue date given (`YYYY-MM-DD`).
@@ -316,7 +316,7 @@ pub fn write(
     analysis: &Analysis,
     out: &Path,
 ) -> Result<Vec<PathBuf>, CliError> {
-    write_issued_on(subject, analysis, out, &crate::brackets::today_utc())
+    write_issued_on(subject, analysis, out, &crate::bracket_file::today_utc())
 }
 
 /// [`write`] with its issue date given (`YYYY-MM-DD`).

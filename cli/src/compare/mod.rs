@@ -25,8 +25,8 @@
 //! against its own residuals.
 
 mod budget;
-pub mod check;
 pub mod consistency;
+pub mod entry_check;
 mod joint2;
 pub mod mistake;
 

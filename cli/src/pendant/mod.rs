@@ -5,7 +5,7 @@
 //! - `status`: the pendant's `status` lines.
 //! - `load-profile ROBOT [--plan FILE] [--brackets FILE]`: the robot profile (`profile
 //!   set`, the lines of `zerocal_procedure::profile`: its kinematics, display, masses
-//!   and the brackets' calibrations from the `--brackets` file, [`crate::brackets`]),
+//!   and the brackets' calibrations from the `--brackets` file, [`crate::bracket_file`]),
 //!   then the plan `zerocal program --robot ROBOT` drives (or FILE, `zerocal plan
 //!   --csv` output), so the pendant's screens, the robot program and the export all
 //!   name the same robot and poses, and the pendant's fit is `zerocal session`'s.
@@ -24,7 +24,7 @@
 //!   pendant (`bracket calibrate`) and followed step by step (`bracket status`) until
 //!   it is kept, then its TOML ([`bracket`]).
 //! - `check --out FILE`: a check of entered offsets started (`check`), followed phase by
-//!   phase (`status`) to its end, its export saved ([`check`]).
+//!   phase (`status`) to its end, its export saved ([`check_follow`]).
 //! - `live [--seconds S]`: the live reading in a view that refreshes, until Enter
 //!   ([`live`]).
 //!
@@ -38,7 +38,7 @@
 //! desktop, `zerocal_pendant_desktop::port`, whose clock the verbs' pauses move).
 
 mod bracket;
-mod check;
+mod check_follow;
 mod link;
 mod live;
 mod reply;
@@ -320,8 +320,8 @@ fn request(command: Command, expect: Expect) -> Request {
 /// A calibration date given, or today's.
 fn date_or_today(date: Option<&String>) -> Result<String, CliError> {
     match date {
-        Some(d) => crate::brackets::calibration_date(d),
-        None => Ok(crate::brackets::today_utc()),
+        Some(d) => crate::bracket_file::calibration_date(d),
+        None => Ok(crate::bracket_file::today_utc()),
     }
 }
 
@@ -360,7 +360,7 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
             date_or_today(date.as_ref())?;
             vec![bracket::start_request(mount, id)?]
         }
-        PendantAction::Check { .. } => vec![check::start_request()],
+        PendantAction::Check { .. } => vec![check_follow::start_request()],
         // A stream, not a reply: `live::show` reads it.
         PendantAction::Live { .. } => Vec::new(),
         PendantAction::LoadProfile {
@@ -370,7 +370,7 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
         } => {
             let profile = crate::robot::load(robot)?;
             let brackets = match brackets {
-                Some(path) => crate::brackets::read(path)?,
+                Some(path) => crate::bracket_file::read(path)?,
                 None => Brackets::default(),
             };
             // Model radians, as the pendant's plan holds them (the file is in degrees).
@@ -493,7 +493,7 @@ pub fn act(
             }
         }
         PendantAction::Check { out } => {
-            let export = check::follow(port, timeouts, progress)?;
+            let export = check_follow::follow(port, timeouts, progress)?;
             write_file(out, &export)?;
             Ok(format!(
                 "wrote {} (the check's export: `zerocal check {} --against ID`, ID the \

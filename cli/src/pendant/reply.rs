@@ -386,7 +386,7 @@ pub fn check_reply(expect: &Expect, reply: &Reply) -> Result<String, CliError> {
                     cut()
                 )));
             }
-            crate::brackets::brackets_toml(&lines, date).map_err(wrong)
+            crate::bracket_file::brackets_toml(&lines, date).map_err(wrong)
         }
         Expect::KeptResults => {
             if !reply.over {

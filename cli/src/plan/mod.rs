@@ -14,18 +14,18 @@
 //!
 //! Output: a table (default, [`table`]), `--csv` (header `j1_deg,...,j6_deg`, model
 //! degrees, one row per pose, nothing else on stdout) or `--json` (one object:
-//! [`json`]).
+//! [`plan_json`]).
 
-pub mod args;
-pub mod json;
+pub mod flags;
 pub mod limits;
+pub mod plan_json;
 pub mod prediction;
 pub mod session_plan;
 pub mod table;
 
-pub use args::PlanArgs;
-pub use json::{PlanJson, RobotTimeJson};
+pub use flags::PlanArgs;
 pub use limits::{narrow_limits, parse_limits, LimitsDeg};
+pub use plan_json::{PlanJson, RobotTimeJson};
 pub use prediction::{
     correlations, predicted_k2_deg, Correlation, Correlations, POORLY_SEPARATED, PREDICTED_FROM,
 };
@@ -63,7 +63,7 @@ pub fn run(args: &PlanArgs) -> Result<String, CliError> {
 
 #[cfg(test)]
 mod tests {
-    use super::args::test_args as args;
+    use super::flags::test_args as args;
     use super::*;
     use clap::Parser;
     use zerocal_procedure::robot_time::CAPTURES_PER_POSE;

@@ -4,7 +4,7 @@
 //! plan promises; with `--target-k2-deg U`, the fewest poses whose predicted k = 2
 //! uncertainty is at most U on every joint.
 
-use super::args::PlanArgs;
+use super::flags::PlanArgs;
 use super::prediction::{correlations, predicted_k2_deg, Correlations};
 use crate::error::CliError;
 use crate::timing::{self, Pendant, SessionPoses, Timing};
@@ -279,7 +279,7 @@ fn target_refusal(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::args::test_args as args;
+    use crate::plan::flags::test_args as args;
 
     /// The session's order moves the poses, never the prediction: the same poses'
     /// information in another order (a sum over poses: rounding only), and the tour is

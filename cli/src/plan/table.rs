@@ -2,7 +2,7 @@
 //! the session's order, then what they promise (predicted 1σ and k = 2 uncertainty,
 //! the parameters' separation) and the session's robot time.
 
-use super::args::PlanArgs;
+use super::flags::PlanArgs;
 use super::prediction::PREDICTED_FROM;
 use super::session_plan::SessionPlan;
 use crate::timing::{self, SpeedSource};

@@ -3,14 +3,14 @@
 //!
 //! - `zerocal profile import FILE.urdf --out PROFILE.toml [--base LINK] [--tip LINK]
 //!   [--family F] [--name NAME]`: the arm's chain read out of its URDF
-//!   (`zerocal_profile::urdf`), written as a profile citing the file ([`import`]).
+//!   (`zerocal_profile::urdf`), written as a profile citing the file ([`urdf_import`]).
 //! - `zerocal profile check PROFILE.toml|NAME [--json]`: what the profile lets the
 //!   product do (plan, simulate, session, program, check, restore, the pendant, the
 //!   bracket), tried on the profile itself, and what is missing with what each item
-//!   costs; the exit status says how bad it is ([`check`]).
+//!   costs; the exit status says how bad it is ([`profile_check`]).
 
-pub mod check;
-pub mod import;
+pub mod profile_check;
+pub mod urdf_import;
 
 use crate::error::CliError;
 use clap::{Args, Subcommand};
@@ -30,19 +30,21 @@ pub struct ProfileArgs {
 pub enum ProfileAction {
     /// Write a profile from a robot's URDF (expanded, not a xacro): the chain from the
     /// base to the flange frame, its fixed joints folded, each value citing the file.
-    Import(import::ImportArgs),
+    Import(urdf_import::ImportArgs),
     /// Say what a profile lets zerocal do and what it is missing, with what each missing
     /// item costs. Exit status: 0 nothing missing, 1 usable with what is listed missing,
     /// 2 the profile does not read, 3 it reads but no session can be planned with it.
-    Check(check::CheckArgs),
+    Check(profile_check::CheckArgs),
 }
 
 /// Runs `zerocal profile`, printing its report, and gives the exit status: the
-/// check's by severity ([`check::Severity`]), else 0, or the error's.
+/// check's by severity ([`profile_check::Severity`]), else 0, or the error's.
 pub fn main(args: &ProfileArgs) -> ExitCode {
     let outcome = match &args.action {
-        ProfileAction::Import(a) => import::run(a).map(|out| (out, 0)),
-        ProfileAction::Check(a) => check::run(a).map(|(out, severity)| (out, severity.exit_code())),
+        ProfileAction::Import(a) => urdf_import::run(a).map(|out| (out, 0)),
+        ProfileAction::Check(a) => {
+            profile_check::run(a).map(|(out, severity)| (out, severity.exit_code()))
+        }
     };
     match outcome {
         Ok((out, code)) => {

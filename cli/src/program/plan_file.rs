@@ -3,7 +3,7 @@
 //! `zerocal plan` makes with its defaults.
 
 use crate::error::CliError;
-use crate::plan::args::MAX_JOINT2_SWING_DEG;
+use crate::plan::flags::MAX_JOINT2_SWING_DEG;
 use crate::plan::PlanArgs;
 use crate::timing::TimingArgs;
 use clap::Parser;

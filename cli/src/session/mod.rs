@@ -15,14 +15,14 @@
 //! the sensor's unknown x offset in its budget and a note saying so.
 
 pub mod entry;
-mod json;
 mod record;
 pub mod reducer_trend;
 pub mod reducers;
 mod render;
-pub use json::{to_json, BudgetJson, JointJson, SessionJson};
+mod session_json;
 pub use record::{brackets_json, session_record, verdict_of};
 pub use render::render;
+pub use session_json::{to_json, BudgetJson, JointJson, SessionJson};
 
 use crate::args::RealIn;
 use crate::error::CliError;

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use zerocal_history::{Record, RecordKind};
 
 /// What a record imported from a kept result says of its uncertainty
-/// ([`crate::import`]).
+/// ([`crate::history_import`]).
 pub const KEPT_RESULT_NOTE: &str = "imported from the pendant's kept results: U(k = 2) is twice \
      the fit's 1-sigma (the pendant keeps no budget); record the export itself (zerocal session \
      EXPORT --record) for the whole budget, a certificate or a check";

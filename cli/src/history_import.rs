@@ -10,7 +10,7 @@
 
 use crate::db::RecordMeta;
 use crate::error::CliError;
-use crate::record::KEPT_RESULT_NOTE;
+use crate::stored_session::KEPT_RESULT_NOTE;
 use serde_json::json;
 use zerocal_core::session::COVERAGE_FACTOR;
 use zerocal_history::{History, Inserted, JointRow, NewRecord, RecordKind};

@@ -1,7 +1,7 @@
 //! `zerocal plan --json`: the one object it prints (`poses_deg`, `predicted_sigma_deg`,
 //! `predicted_k2_deg`, `correlation`, `robot_time`, settings), as written types.
 
-use super::args::PlanArgs;
+use super::flags::PlanArgs;
 use super::limits::LimitsDeg;
 use super::prediction::{Correlations, PREDICTED_FROM};
 use super::session_plan::SessionPlan;
