@@ -11,18 +11,11 @@
 use std::time::Instant;
 use zerocal_history::{DbLocation, History, JointRow, NewRecord, RecordKind};
 
-/// Bytes of `len` from a seeded xorshift: an export that does not compress away.
-fn bytes(seed: u64, len: usize) -> Vec<u8> {
-    let mut x = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
-    (0..len)
-        .map(|_| {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x as u8
-        })
-        .collect()
-}
+// The tests' seeded export bytes (an export that does not compress away); the rest of
+// their helpers (which panic on a failed set-up, as tests do) is unused here.
+#[allow(dead_code, clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+#[path = "../tests/common/mod.rs"]
+mod common;
 
 fn env_count(name: &str, default: usize) -> usize {
     std::env::var(name)
@@ -69,7 +62,7 @@ fn main() {
             robot_title: format!("Model {model}"),
             controller_family: "kuka".into(),
             profile_toml: profiles[model].clone(),
-            export: bytes(i as u64, 13_000),
+            export: common::export_bytes(i as u64, 13_000),
             measured_on: "2026-11-27".into(),
             operator: Some("A. Technician".into()),
             pendant_unit: Some("ZC-0007".into()),

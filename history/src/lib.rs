@@ -244,27 +244,11 @@ fn redacted(url: &str) -> String {
 /// A URL the client cannot parse; a password file others can read, or unreadable.
 pub fn postgres_config(url: &str) -> Result<postgres::Config, HistoryError> {
     let mut config: postgres::Config = url.parse()?;
-    if config.get_password().is_some_and(|p| !p.is_empty()) {
-        return Ok(config);
-    }
-    // PGPASSWORD first: the file is not even read then (as libpq).
-    if let Some(p) = std::env::var("PGPASSWORD").ok().filter(|p| !p.is_empty()) {
-        config.password(p);
-        return Ok(config);
-    }
-    if let Some(t) = pgpass::Target::of(&config) {
-        // The user the file was searched for is the one the client connects as.
-        config.user(&t.user);
-        let path = pgpass::file_path();
-        let text = match &path {
-            Some(p) => pgpass::read_file(p)?,
-            None => None,
-        };
-        let file = path.as_deref().zip(text.as_deref());
-        if let Some(p) = pgpass::password(&t, None, file) {
-            config.password(p);
-        }
-    }
+    pgpass::fill(
+        &mut config,
+        std::env::var("PGPASSWORD").ok(),
+        pgpass::file_path().as_deref(),
+    )?;
     Ok(config)
 }
 

@@ -63,17 +63,41 @@ impl Target {
     }
 }
 
-/// The password for `target`: `env_password` (`PGPASSWORD`) if set and not empty, else
-/// the first matching line of the password file `file` (its path and text), else none.
-pub(crate) fn password(
-    target: &Target,
+/// Gives `config` a password where its URL has none (or an empty one): `env_password`
+/// (`PGPASSWORD`) if set and not empty, and then the password file is not even read (as
+/// libpq); else the first matching line of the password file at `file`, if it exists,
+/// with the user it was searched for set as the one to connect as.
+///
+/// # Errors
+/// The password file can be read by others, or cannot be read.
+pub(crate) fn fill(
+    config: &mut postgres::Config,
     env_password: Option<String>,
-    file: Option<(&Path, &str)>,
-) -> Option<String> {
-    if let Some(p) = env_password.filter(|p| !p.is_empty()) {
-        return Some(p);
+    file: Option<&Path>,
+) -> Result<(), HistoryError> {
+    if config.get_password().is_some_and(|p| !p.is_empty()) {
+        return Ok(());
     }
-    let (_, text) = file?;
+    if let Some(p) = env_password.filter(|p| !p.is_empty()) {
+        config.password(p);
+        return Ok(());
+    }
+    let Some(target) = Target::of(config) else {
+        return Ok(());
+    };
+    config.user(&target.user);
+    let text = match file {
+        Some(path) => read_file(path)?,
+        None => None,
+    };
+    if let Some(p) = text.as_deref().and_then(|t| password(&target, t)) {
+        config.password(p);
+    }
+    Ok(())
+}
+
+/// The password of the first line of the password file's `text` that matches `target`.
+fn password(target: &Target, text: &str) -> Option<String> {
     text.lines().find_map(|line| matching(line, target))
 }
 
@@ -185,30 +209,52 @@ mod tests {
                     too:few:fields\n\
                     db.plant:*:zerocal:zc:s3c:r\\:et\n\
                     *:*:*:*:later\n";
-        let file = Some((Path::new("/x/.pgpass"), text));
+        let file = text;
         // libpq's password is `s3c`: it ends at the first unescaped colon.
-        assert_eq!(password(&target(), None, file).as_deref(), Some("s3c"));
+        assert_eq!(password(&target(), file).as_deref(), Some("s3c"));
         let mut other = target();
         other.user = "reader".into();
-        assert_eq!(password(&other, None, file).as_deref(), Some("later"));
-        assert_eq!(
-            password(&target(), None, Some((Path::new("/x"), "# none\n"))),
-            None
-        );
+        assert_eq!(password(&other, file).as_deref(), Some("later"));
+        assert_eq!(password(&target(), "# none\n"), None);
     }
 
+    /// What `postgres_config` does with a URL without a password: PGPASSWORD first,
+    /// the file not even read then (a file others can read does no harm); an empty
+    /// PGPASSWORD counts as none; the user searched for is the one connected as.
+    #[cfg(unix)]
     #[test]
     fn pgpassword_comes_first_and_an_empty_one_is_none() {
-        let file = Some((Path::new("/x/.pgpass"), "*:*:*:*:from-file\n"));
-        assert_eq!(
-            password(&target(), Some("from-env".into()), file).as_deref(),
-            Some("from-env")
+        use std::os::unix::fs::PermissionsExt;
+        let dir = std::env::temp_dir().join(format!("zerocal-fill-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(".pgpass");
+        std::fs::write(&path, "*:*:*:zc:from-file\n").unwrap();
+        let url = "postgres://db.plant/zerocal?user=zc";
+        let filled = |env: Option<&str>| {
+            let mut c: postgres::Config = url.parse().unwrap();
+            fill(&mut c, env.map(str::to_owned), Some(&path)).map(|()| c)
+        };
+        let pw = |c: &postgres::Config| c.get_password().map(<[u8]>::to_vec);
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o644)).unwrap();
+        let c = filled(Some("from-env")).unwrap();
+        assert_eq!(pw(&c), Some(b"from-env".to_vec()));
+        assert!(
+            filled(Some("")).is_err(),
+            "an empty PGPASSWORD reads the file"
         );
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600)).unwrap();
+        let c = filled(Some("")).unwrap();
         assert_eq!(
-            password(&target(), Some(String::new()), file).as_deref(),
-            Some("from-file")
+            (pw(&c), c.get_user()),
+            (Some(b"from-file".to_vec()), Some("zc"))
         );
-        assert_eq!(password(&target(), None, None), None);
+        let mut in_url: postgres::Config = "postgres://zc:given@db/zerocal".parse().unwrap();
+        fill(&mut in_url, Some("from-env".into()), Some(&path)).unwrap();
+        assert_eq!(pw(&in_url), Some(b"given".to_vec()));
+        let mut none: postgres::Config = url.parse().unwrap();
+        fill(&mut none, None, Some(&dir.join("absent"))).unwrap();
+        assert_eq!(pw(&none), None);
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
@@ -216,16 +262,10 @@ mod tests {
         let mut t = target();
         t.host = "a:b".into();
         let text = "a\\:b:5432:zerocal:zc:p\\\\w\\:x\n";
-        assert_eq!(
-            password(&t, None, Some((Path::new("/x"), text))).as_deref(),
-            Some("p\\w:x")
-        );
+        assert_eq!(password(&t, text).as_deref(), Some("p\\w:x"));
         // A backslash that ends the line stays.
         let text = "*:*:*:*:pw\\\n";
-        assert_eq!(
-            password(&t, None, Some((Path::new("/x"), text))).as_deref(),
-            Some("pw\\")
-        );
+        assert_eq!(password(&t, text).as_deref(), Some("pw\\"));
     }
 
     #[test]
