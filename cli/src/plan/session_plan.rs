@@ -9,7 +9,9 @@ use super::prediction::{correlations, predicted_k2_deg, Correlations};
 use crate::error::CliError;
 use crate::timing::{self, Pendant, SessionPoses, Timing};
 use zerocal_core::model::{JOINTS, WRIST_JOINTS};
-use zerocal_core::plan::{plan, Candidate, Plan, PlanConfig, PlanError, MAX_POSES};
+use zerocal_core::plan::{
+    plan, with_revisits, Candidate, Plan, PlanConfig, PlanError, PoseList, MAX_POSES,
+};
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::stage2::{FitConfig, MIN_POSES};
 use zerocal_procedure::robot_time::SessionTime;
@@ -95,8 +97,10 @@ struct SessionOrder {
 }
 
 /// The order of the plan's poses (model angles) that makes the session short: its
-/// distinct poses in the tour of `crate::timing::time_order`, its revisits placed
-/// again after them, or the planner's own order where that is shorter.
+/// distinct poses in the tour of `crate::timing::time_order` (on the moves as planned,
+/// or the short way round where a joint may take a whole turn), each tour with and
+/// without its joints turned to match (`crate::timing::unwound`), its revisits placed
+/// again after them; or the planner's own order where that is shorter than all.
 ///
 /// # Errors
 /// No mounting poses inside the joint limits.
@@ -109,23 +113,71 @@ fn session_order(
     let unordered = SessionPoses::new(profile, &p.poses_rad).with_mounts(profile)?;
     let time_unordered = timing::session_time(&pendant, &timing.model, &unordered);
     let distinct = SessionPoses::new(profile, &p.distinct_poses()).with_mounts(profile)?;
-    let toured = timing::time_order(&pendant, &timing.model, &distinct);
-    let candidate_plan = p.reordered(&toured);
-    let candidate = SessionPoses::new(profile, &candidate_plan.poses_rad).with_mounts(profile)?;
-    let toured_time = timing::session_time(&pendant, &timing.model, &candidate);
-    // The tour leaves out the legs that depend on the first and last pose (the
-    // flange's mounting, the park): keep the planner's order if it is shorter in all.
-    let (plan, poses, time) = if toured_time.total_s <= time_unordered.total_s {
-        (candidate_plan, candidate, toured_time)
-    } else {
-        (p.clone(), unordered, time_unordered)
+    // The tour sees each move the short way round where a joint may turn a whole turn
+    // (the same physical pose); the poses are then turned to match.
+    let model = p.distinct_poses();
+    let options = timing::unwind::turn_options(profile, &model);
+    let reach = |i: usize, j: usize| match (model.get(i), model.get(j), options.get(j)) {
+        (Some(a), Some(b), Some(o)) => profile.shown_deg(&timing::unwind::nearest(a, b, o)),
+        _ => distinct.poses.get(j).copied().unwrap_or([0.0; JOINTS]),
     };
+    let as_planned = |_: usize, j: usize| distinct.poses.get(j).copied().unwrap_or([0.0; JOINTS]);
+    // The tour on the short ways round is not always the shorter session (the tour is
+    // a local search, and a joint's turns must stay within its limits along the way):
+    // both tours are tried, each unwound and as planned.
+    let tours = [
+        p.reordered(&timing::time_order(
+            &pendant,
+            &timing.model,
+            &distinct,
+            reach,
+        )),
+        p.reordered(&timing::time_order(
+            &pendant,
+            &timing.model,
+            &distinct,
+            as_planned,
+        )),
+    ];
+    let mut best = (time_unordered, p.clone(), unordered);
+    // The tour leaves out the legs that depend on the first and last pose (the
+    // flange's mounting, the park): the planner's order is kept if it is shorter in all.
+    for candidate_plan in tours
+        .iter()
+        .flat_map(|t| [unwound_plan(profile, t, &distinct.turned), t.clone()])
+    {
+        let candidate =
+            SessionPoses::new(profile, &candidate_plan.poses_rad).with_mounts(profile)?;
+        let t = timing::session_time(&pendant, &timing.model, &candidate);
+        if t.total_s <= best.0.total_s {
+            best = (t, candidate_plan, candidate);
+        }
+    }
+    let (time, plan, poses) = best;
     Ok(SessionOrder {
         plan,
         poses,
         time,
         time_unordered,
     })
+}
+
+/// `p` with its distinct poses turned by whole turns where that shortens the travel
+/// ([`timing::unwound`], the same physical poses), from `start` (the stage-1 turned
+/// pose, controller degrees), its revisits placed again after them.
+fn unwound_plan(profile: &Profile, p: &Plan<f64>, start_deg: &[f64; JOINTS]) -> Plan<f64> {
+    let distinct = p.distinct_poses();
+    let start = profile.model_rad(start_deg);
+    let mut poses = PoseList::new();
+    for q in timing::unwound(profile, &start, &distinct, p.revisits) {
+        let _ = poses.push(q);
+    }
+    let n = poses.len();
+    with_revisits(&mut poses, n, p.revisits);
+    Plan {
+        poses_rad: poses,
+        ..p.clone()
+    }
 }
 
 /// Why `zerocal program` would refuse a session on these poses, if it would
@@ -285,9 +337,29 @@ mod tests {
     /// information in another order (a sum over poses: rounding only), and the tour is
     /// no longer than the planner's order.
     #[test]
+    /// Every built-in profile's default plan: its revisits are exact copies of the
+    /// poses they revisit after any whole turns (the refusal rule finds a revisit by
+    /// its equal joints), and every pose has the room both captures need.
+    fn unwound_revisits_are_exact_copies_on_every_profile() {
+        for robot in zerocal_profile::builtin_names() {
+            let a = args(&["--robot", robot]);
+            let sp = make_plan(&a).unwrap_or_else(|e| panic!("{robot}: {e}"));
+            let poses = &sp.plan.poses_rad;
+            let mut again = zerocal_core::plan::without_revisits(poses, sp.plan.revisits);
+            let n = again.len();
+            with_revisits(&mut again, n, sp.plan.revisits);
+            assert_eq!(again.as_slice(), poses.as_slice(), "{robot}");
+            assert!(
+                timing::check_room(&sp.profile, &sp.poses).is_ok(),
+                "{robot}"
+            );
+        }
+    }
+
+    #[test]
     fn session_order_keeps_the_prediction_and_shortens_the_session() {
         // Without revisits: which poses a plan visits again follows its order.
-        for robot in ["paper-wrist", "kuka-kr16", "fanuc-m20ia"] {
+        for robot in ["paper-wrist", "kuka-kr16", "fanuc-m20ia", "ur5e"] {
             let a = args(&["--robot", robot, "--poses", "24", "--revisits", "0"]);
             let profile = crate::robot::load(robot).unwrap_or_else(|e| panic!("{e}"));
             let (config, p) = plan_n(&a, &profile, 24).unwrap_or_else(|e| panic!("{e}"));
@@ -310,13 +382,26 @@ mod tests {
                 sp.time.total_s <= sp.time_unordered.total_s + 1e-9,
                 "{robot}"
             );
-            let mut a: Vec<String> = original.iter().map(|q| format!("{q:?}")).collect();
-            let mut b: Vec<String> = sp.plan.poses_rad.iter().map(|q| format!("{q:?}")).collect();
-            a.sort();
-            b.sort();
-            assert_eq!(a, b, "{robot}: the same poses");
+            // The same physical poses, each once: a joint may be turned by whole turns
+            // (timing::unwind), nothing else.
+            let same = |a: &[f64; JOINTS], b: &[f64; JOINTS]| {
+                a.iter().zip(b).all(|(x, y)| {
+                    let turns = (x - y) / std::f64::consts::TAU;
+                    (turns - turns.round()).abs() < 1e-9
+                })
+            };
+            assert_eq!(original.len(), sp.plan.poses_rad.len(), "{robot}");
+            let mut used = vec![false; original.len()];
+            for q in &sp.plan.poses_rad {
+                let hit = original
+                    .iter()
+                    .enumerate()
+                    .position(|(i, o)| !used[i] && same(o, q))
+                    .unwrap_or_else(|| panic!("{robot}: {q:?} is no planned pose"));
+                used[hit] = true;
+            }
             println!(
-                "{robot}: 12 poses, robot time {:.0} s toured, {:.0} s in the planner's order",
+                "{robot}: 24 poses, robot time {:.0} s toured, {:.0} s in the planner's order",
                 sp.time.total_s, sp.time_unordered.total_s
             );
         }

@@ -37,18 +37,32 @@ pub fn check_limits(
 /// The first such pose, naming the side, the joint, its value and the limits.
 pub fn check_room(profile: &Profile, poses: &SessionPoses) -> Result<(), CliError> {
     for (what, q) in poses.capture_poses() {
-        check_limits(profile, &q, &what)?;
-        for (side, d) in [("below", -APPROACH_DEG), ("above", OVERSHOOT_DEG)] {
-            let p = q.map(|v| v + d);
-            check_limits(
-                profile,
-                &p,
-                &format!(
-                    "{what} cannot be captured from {side} (every pose is captured from both sides of the backlash, reached from {} deg {side} on every joint)",
-                    d.abs()
-                ),
-            )?;
-        }
+        check_capture_room(profile, &q, &what)?;
+    }
+    Ok(())
+}
+
+/// [`check_room`] for one capture pose (controller degrees): the pose, the point
+/// [`APPROACH_DEG`] below it and the point [`OVERSHOOT_DEG`] above it on every joint.
+///
+/// # Errors
+/// The first point outside the limits, named as in [`check_room`].
+pub fn check_capture_room(
+    profile: &Profile,
+    pose_deg: &[f64; JOINTS],
+    what: &str,
+) -> Result<(), CliError> {
+    check_limits(profile, pose_deg, what)?;
+    for (side, d) in [("below", -APPROACH_DEG), ("above", OVERSHOOT_DEG)] {
+        let p = pose_deg.map(|v| v + d);
+        check_limits(
+            profile,
+            &p,
+            &format!(
+                "{what} cannot be captured from {side} (every pose is captured from both sides of the backlash, reached from {} deg {side} on every joint)",
+                d.abs()
+            ),
+        )?;
     }
     Ok(())
 }

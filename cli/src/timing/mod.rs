@@ -36,11 +36,15 @@ pub mod capture_rule;
 pub mod joint_limits;
 pub mod poses;
 pub mod tour;
+pub mod unwind;
 
 pub use capture_rule::{LegCheck, Pendant, ARM_MARGIN, EARLY_STILL_MARGIN};
-pub use joint_limits::{check_limits, check_room, planner_limit, planner_limits};
+pub use joint_limits::{
+    check_capture_room, check_limits, check_room, planner_limit, planner_limits,
+};
 pub use poses::{mount_poses, SessionPoses, MOUNT_MARGIN_DEG, MOUNT_TURN_DEG};
 pub use tour::{check_time, session_time, time_order};
+pub use unwind::unwound;
 
 use crate::args::{CountIn, RealIn};
 use crate::error::CliError;

@@ -13,11 +13,15 @@ const EARLY_PENALTY_S: f64 = 1e6;
 /// The order of the stage-2 poses that makes the session short (core's
 /// [`shortest_tour`] on the robot times from one pose's second capture to the next
 /// pose's first, an operator's OK where that does not arm the next capture, and moves
-/// that could be captured early avoided): indices into `poses.poses`.
+/// that could be captured early avoided): indices into `poses.poses`. `reach(i, j)` is
+/// pose `j` (controller degrees) as the robot reaches it from pose `i` (the same pose,
+/// or the same turned by whole turns of a joint whose limits allow it,
+/// [`super::unwind`]).
 pub fn time_order(
     pendant: &Pendant<'_>,
     time: &TimeModel<f64>,
     poses: &SessionPoses,
+    reach: impl Fn(usize, usize) -> [f64; JOINTS],
 ) -> Vec<usize> {
     let n = poses.poses.len();
     let leg = |a: &[f64; JOINTS], b: &[f64; JOINTS]| {
@@ -42,7 +46,8 @@ pub fn time_order(
     let cost: Vec<Vec<f64>> = poses
         .poses
         .iter()
-        .map(|a| poses.poses.iter().map(|b| leg(a, b)).collect())
+        .enumerate()
+        .map(|(i, a)| (0..n).map(|j| leg(a, &reach(i, j))).collect())
         .collect();
     shortest_tour(
         n,

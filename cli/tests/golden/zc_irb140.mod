@@ -22,7 +22,7 @@ MODULE ZC_IRB140
     ! Speed: joint moves at 10 % of each joint's maximum speed, exact stops.
     ! Dwell 3.1 s at each capture: settling 1 s (stated default) + the pendant's 2 s still window + 2
     ! sensor periods of 0.05 s.
-    ! Predicted robot time 11.5 min, until the pendant is off the flange: motion 219 s, dwell 279 s
+    ! Predicted robot time 11.3 min, until the pendant is off the flange: motion 210 s, dwell 279 s
     ! (90 captures), 3 mountings 180 s, operator OKs 10 s; then the closing bench readings, 42 s, the
     ! robot free.
     ! WARNING: the path is NOT checked for collisions with the cell, the pendant or its bracket. Check
@@ -37,11 +37,11 @@ MODULE ZC_IRB140
     CONST jointtarget zc_t8:=[[90.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t9:=[[94.00000,4.00000,-86.00000,4.00000,4.00000,4.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t10:=[[90.00000,0.00000,-90.00000,0.00000,0.00000,0.00000],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t11:=[[-90.00000,-45.00000,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t12:=[[-91.00000,-8.20970,-162.68633,-176.70261,15.04062,-179.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t13:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t14:=[[-86.00000,-3.20970,-157.68633,-171.70261,20.04062,-174.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t15:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t11:=[[-90.00000,-45.00000,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t12:=[[-91.00000,-8.20970,-162.68633,183.29739,15.04062,-179.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t13:=[[-90.00000,-7.20970,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t14:=[[-86.00000,-3.20970,-157.68633,188.29739,20.04062,-174.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t15:=[[-90.00000,-7.20970,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t16:=[[-91.00000,73.45254,-135.09310,-48.95211,73.26805,-161.91770],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t17:=[[-90.00000,74.45254,-134.09310,-47.95211,74.26805,-160.91770],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t18:=[[-86.00000,78.45254,-130.09310,-43.95211,78.26805,-156.91770],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -114,18 +114,18 @@ MODULE ZC_IRB140
     CONST jointtarget zc_t85:=[[-90.00000,60.53654,-86.55478,164.87932,-20.89299,17.67723],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t86:=[[-86.00000,64.53654,-82.55478,168.87932,-16.89299,21.67723],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t87:=[[-90.00000,60.53654,-86.55478,164.87932,-20.89299,17.67723],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t88:=[[-91.00000,73.39037,-185.37191,168.21253,72.80539,176.82471],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t89:=[[-90.00000,74.39037,-184.37191,169.21253,73.80539,177.82471],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t90:=[[-86.00000,78.39037,-180.37191,173.21253,77.80539,181.82471],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t91:=[[-90.00000,74.39037,-184.37191,169.21253,73.80539,177.82471],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t92:=[[-91.00000,-8.20970,-162.68633,-176.70261,15.04062,-179.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t93:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t94:=[[-86.00000,-3.20970,-157.68633,-171.70261,20.04062,-174.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t95:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t96:=[[-91.00000,28.20450,-54.19616,80.36859,-111.11344,66.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t97:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,67.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t98:=[[-86.00000,33.20450,-49.19616,85.36859,-106.11344,71.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t99:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,67.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t88:=[[-91.00000,73.39037,-185.37191,168.21253,72.80539,-183.17529],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t89:=[[-90.00000,74.39037,-184.37191,169.21253,73.80539,-182.17529],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t90:=[[-86.00000,78.39037,-180.37191,173.21253,77.80539,-178.17529],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t91:=[[-90.00000,74.39037,-184.37191,169.21253,73.80539,-182.17529],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t92:=[[-91.00000,-8.20970,-162.68633,183.29739,15.04062,-179.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t93:=[[-90.00000,-7.20970,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t94:=[[-86.00000,-3.20970,-157.68633,188.29739,20.04062,-174.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t95:=[[-90.00000,-7.20970,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t96:=[[-91.00000,28.20450,-54.19616,80.36859,-111.11344,-293.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t97:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,-292.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t98:=[[-86.00000,33.20450,-49.19616,85.36859,-106.11344,-288.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t99:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,-292.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t100:=[[-91.00000,-62.50998,-114.02744,103.28639,15.33454,-111.56189],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t101:=[[-90.00000,-61.50998,-113.02744,104.28639,16.33454,-110.56189],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t102:=[[-86.00000,-57.50998,-109.02744,108.28639,20.33454,-106.56189],[9E9,9E9,9E9,9E9,9E9,9E9]];
@@ -202,15 +202,15 @@ MODULE ZC_IRB140
     CONST jointtarget zc_t173:=[[-90.00000,-42.60791,-19.29451,-126.58300,109.38228,-159.81376],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t174:=[[-86.00000,-38.60791,-15.29451,-122.58300,113.38228,-155.81376],[9E9,9E9,9E9,9E9,9E9,9E9]];
     CONST jointtarget zc_t175:=[[-90.00000,-42.60791,-19.29451,-126.58300,109.38228,-159.81376],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t176:=[[-91.00000,-8.20970,-162.68633,-176.70261,15.04062,-179.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t177:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t178:=[[-86.00000,-3.20970,-157.68633,-171.70261,20.04062,-174.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t179:=[[-90.00000,-7.20970,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t180:=[[-91.00000,28.20450,-54.19616,80.36859,-111.11344,66.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t181:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,67.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t182:=[[-86.00000,33.20450,-49.19616,85.36859,-106.11344,71.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t183:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,67.50680],[9E9,9E9,9E9,9E9,9E9,9E9]];
-    CONST jointtarget zc_t184:=[[-90.00000,-45.00000,-161.68633,-175.70261,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t176:=[[-91.00000,-8.20970,-162.68633,183.29739,15.04062,-179.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t177:=[[-90.00000,-7.20970,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t178:=[[-86.00000,-3.20970,-157.68633,188.29739,20.04062,-174.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t179:=[[-90.00000,-7.20970,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t180:=[[-91.00000,28.20450,-54.19616,80.36859,-111.11344,-293.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t181:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,-292.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t182:=[[-86.00000,33.20450,-49.19616,85.36859,-106.11344,-288.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t183:=[[-90.00000,29.20450,-53.19616,81.36859,-110.11344,-292.49320],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    CONST jointtarget zc_t184:=[[-90.00000,-45.00000,-161.68633,184.29739,16.04062,-178.52890],[9E9,9E9,9E9,9E9,9E9,9E9]];
     PROC main()
         ! zerocal stage 1: the pendant goes on the upper arm here, tilted past its range so that it cannot
         ! capture yet
@@ -254,7 +254,7 @@ MODULE ZC_IRB140
         MoveAbsJ zc_t15,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal stage 2: pose 2 of 43, captured from below, then from above
-        MoveAbsJ zc_t16,v100 \T:=4.044,fine,tool0;
+        MoveAbsJ zc_t16,v100 \T:=7.003,fine,tool0;
         MoveAbsJ zc_t17,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t18,v100 \T:=0.482,fine,tool0;
@@ -380,28 +380,28 @@ MODULE ZC_IRB140
         MoveAbsJ zc_t87,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal stage 2: pose 20 of 43, captured from below, then from above
-        MoveAbsJ zc_t88,v100 \T:=4.191,fine,tool0;
+        MoveAbsJ zc_t88,v100 \T:=5.118,fine,tool0;
         MoveAbsJ zc_t89,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t90,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t91,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal stage 2: pose 21 of 43, captured from below, then from above
-        MoveAbsJ zc_t92,v100 \T:=10.132,fine,tool0;
+        MoveAbsJ zc_t92,v100 \T:=3.668,fine,tool0;
         MoveAbsJ zc_t93,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t94,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t95,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal stage 2: pose 22 of 43, captured from below, then from above
-        MoveAbsJ zc_t96,v100 \T:=7.637,fine,tool0;
+        MoveAbsJ zc_t96,v100 \T:=4.512,fine,tool0;
         MoveAbsJ zc_t97,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t98,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t99,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal stage 2: pose 23 of 43, captured from below, then from above
-        MoveAbsJ zc_t100,v100 \T:=4.634,fine,tool0;
+        MoveAbsJ zc_t100,v100 \T:=4.675,fine,tool0;
         MoveAbsJ zc_t101,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t102,v100 \T:=0.482,fine,tool0;
@@ -534,14 +534,14 @@ MODULE ZC_IRB140
         MoveAbsJ zc_t175,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal stage 2: pose 42 of 43, captured from below, then from above
-        MoveAbsJ zc_t176,v100 \T:=5.893,fine,tool0;
+        MoveAbsJ zc_t176,v100 \T:=9.131,fine,tool0;
         MoveAbsJ zc_t177,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t178,v100 \T:=0.482,fine,tool0;
         MoveAbsJ zc_t179,v100 \T:=0.482,fine,tool0;
         WaitTime 3.100;
         ! zerocal stage 2: pose 43 of 43, captured from below, then from above
-        MoveAbsJ zc_t180,v100 \T:=7.637,fine,tool0;
+        MoveAbsJ zc_t180,v100 \T:=4.512,fine,tool0;
         MoveAbsJ zc_t181,v100 \T:=0.241,fine,tool0;
         WaitTime 3.100;
         MoveAbsJ zc_t182,v100 \T:=0.482,fine,tool0;
@@ -549,7 +549,7 @@ MODULE ZC_IRB140
         WaitTime 3.100;
         ! zerocal: stage 2 done; the robot parks where the pendant went on the flange (tilted past its
         ! range) to take the pendant off
-        MoveAbsJ zc_t184,v100 \T:=7.664,fine,tool0;
+        MoveAbsJ zc_t184,v100 \T:=4.551,fine,tool0;
         TPWrite "zerocal: take the pendant off the";
         TPWrite "flange, then continue: the program ends";
         TPWrite "and the robot is free. On the bench of";

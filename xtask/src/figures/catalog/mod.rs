@@ -100,6 +100,7 @@ pub static CATALOG: &[Figure] = &[
     plan::PLAN_TARGET_REFUSED,
     plan::ROBOT_TIME_KR6,
     plan::ROBOT_TIME_KR16,
+    plan::ROBOT_TIME_OVER,
     plan::CHECK_TIME_PER_PROFILE,
     plan::SESSION_KR6_EXAMPLE,
     plan::SESSION_IRB140_EXAMPLE,

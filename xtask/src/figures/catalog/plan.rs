@@ -164,6 +164,35 @@ pub const ROBOT_TIME_KR16: Figure = Figure {
     make: |s| robot_time(s, "kuka-kr16"),
 };
 
+/// The robot time a default session aims at (min, at 10 % speed): issue 30's "robot
+/// time at most 12 min at 10 % speed".
+const ROBOT_TIME_AIM_MIN: f64 = 12.0;
+
+/// The built-in profiles whose default plan takes longer than [`ROBOT_TIME_AIM_MIN`],
+/// with their times: "`ur5e` (12.8 min) and `puma560` (16.2 min)", or "none".
+pub const ROBOT_TIME_OVER: Figure = Figure {
+    name: "robot-time-over",
+    command: "zerocal plan --robot R (robot time), for each R of zerocal robots",
+    make: |s| {
+        let mut over = Vec::new();
+        for robot in robots(s)? {
+            let time = robot_time(s, &robot)?;
+            let minutes: f64 = time
+                .trim_end_matches(" min")
+                .parse()
+                .map_err(|e| anyhow!("{robot}: robot time {time:?}: {e}"))?;
+            if minutes > ROBOT_TIME_AIM_MIN {
+                over.push(format!("`{robot}` ({time})"));
+            }
+        }
+        Ok(match over.as_slice() {
+            [] => "none".to_owned(),
+            [one] => one.clone(),
+            [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+        })
+    },
+};
+
 /// The check program's format of each family, and a profile for the one whose program
 /// needs what no built-in profile has (INFORM's pulses per degree).
 fn check_program(robot: &str) -> (&'static str, Option<&'static str>) {
