@@ -436,17 +436,25 @@ impl<T: Real> TimeModel<T> {
 /// A visiting order of at most [`MAX_POSES`] poses (indices into the caller's list).
 pub type Tour = heapless::Vec<u8, MAX_POSES>;
 
+/// The cost of the path through `order` as `visits` goes through it: `visits` holds
+/// positions in `order` (a position twice is a pose visited again), the legs between
+/// consecutive visits costed by `cost`, the first by `from_start`.
 fn tour_cost<T: Real>(
     order: &[u8],
+    visits: &[usize],
     from_start: &impl Fn(usize) -> T,
     cost: &impl Fn(usize, usize) -> T,
 ) -> T {
-    let Some(&first) = order.first() else {
+    let pose = |v: &usize| order.get(*v).map(|&p| usize::from(p));
+    let mut seq = visits.iter().filter_map(pose);
+    let Some(first) = seq.next() else {
         return T::zero();
     };
-    let mut total = from_start(usize::from(first));
-    for w in order.windows(2) {
-        total += cost(usize::from(w[0]), usize::from(w[1]));
+    let mut total = from_start(first);
+    let mut last = first;
+    for p in seq {
+        total += cost(last, p);
+        last = p;
     }
     total
 }
@@ -466,6 +474,21 @@ fn shorter<T: Real>(a: T, b: T) -> bool {
 /// while a change shortens the path. Never longer than the given order `0..n`.
 pub fn shortest_tour<T: Real>(
     n: usize,
+    from_start: impl Fn(usize) -> T,
+    cost: impl Fn(usize, usize) -> T,
+) -> Tour {
+    let visits: heapless::Vec<usize, MAX_POSES> = (0..n.min(MAX_POSES)).collect();
+    shortest_tour_visiting(n, &visits, from_start, cost)
+}
+
+/// [`shortest_tour`] for a session that visits some poses again: `visits` lists the
+/// positions in the order the robot visits them (a position twice: the pose in that
+/// place of the tour visited again, as core's `with_revisits` places them), and the
+/// path costed is that visiting sequence, so the tour puts the revisited poses where
+/// going back to them costs least.
+pub fn shortest_tour_visiting<T: Real>(
+    n: usize,
+    visits: &[usize],
     from_start: impl Fn(usize) -> T,
     cost: impl Fn(usize, usize) -> T,
 ) -> Tour {
@@ -495,8 +518,8 @@ pub fn shortest_tour<T: Real>(
         }
     }
     let (mut order, mut total) = {
-        let g = tour_cost(&given, &from_start, &cost);
-        let nn = tour_cost(&nearest, &from_start, &cost);
+        let g = tour_cost(&given, visits, &from_start, &cost);
+        let nn = tour_cost(&nearest, visits, &from_start, &cost);
         if nn < g {
             (nearest, nn)
         } else {
@@ -526,7 +549,7 @@ pub fn shortest_tour<T: Real>(
                     for (m, &p) in run[..len].iter().enumerate() {
                         let _ = trial.insert(j + m, p);
                     }
-                    let c = tour_cost(&trial, &from_start, &cost);
+                    let c = tour_cost(&trial, visits, &from_start, &cost);
                     if shorter(c, total) {
                         order = trial;
                         total = c;
@@ -541,7 +564,7 @@ pub fn shortest_tour<T: Real>(
             for j in (i + 2)..=order.len() {
                 let mut trial = order.clone();
                 trial[i..j].reverse();
-                let c = tour_cost(&trial, &from_start, &cost);
+                let c = tour_cost(&trial, visits, &from_start, &cost);
                 if shorter(c, total) {
                     order = trial;
                     total = c;
@@ -746,6 +769,32 @@ mod tests {
     }
 
     /// Costs between points on a line, visited from 0: the shortest path is sorted.
+    #[test]
+    /// Poses on a line, the first pose visited again in the middle and the first and
+    /// the middle at the end (core's `with_revisits` with 3): costed with its revisits,
+    /// the tour is shorter through them than the plain sorted tour, and still visits
+    /// every pose once.
+    fn a_tour_costed_with_its_revisits_places_them_where_they_cost_least() {
+        let x: [f64; 5] = [0.0, 1.0, 2.0, 3.0, 100.0];
+        let visits = [0usize, 1, 0, 2, 3, 4, 0, 2];
+        let from_start = |i: usize| x[i].abs();
+        let cost = |i: usize, j: usize| (x[j] - x[i]).abs();
+        let plain = shortest_tour(x.len(), from_start, cost);
+        let aware = shortest_tour_visiting(x.len(), &visits, from_start, cost);
+        let with_visits = |o: &Tour| tour_cost(o, &visits, &from_start, &cost);
+        assert!(
+            with_visits(&aware) < with_visits(&plain) - 1.0,
+            "{} vs {}",
+            with_visits(&aware),
+            with_visits(&plain)
+        );
+        let mut seen = [false; 5];
+        for &i in &aware {
+            seen[usize::from(i)] = true;
+        }
+        assert!(seen.iter().all(|s| *s) && aware.len() == 5);
+    }
+
     #[test]
     fn tour_finds_the_sorted_order_on_a_line_and_is_a_permutation() {
         let x: [f64; 9] = [5.0, 1.0, 9.0, 3.0, 7.0, 2.0, 8.0, 4.0, 6.0];

@@ -130,12 +130,14 @@ fn session_order(
             &pendant,
             &timing.model,
             &distinct,
+            p.revisits,
             reach,
         )),
         p.reordered(&timing::time_order(
             &pendant,
             &timing.model,
             &distinct,
+            p.revisits,
             as_planned,
         )),
     ];

@@ -4,23 +4,28 @@
 use super::capture_rule::Pendant;
 use super::poses::SessionPoses;
 use zerocal_core::model::JOINTS;
-use zerocal_procedure::robot_time::{shortest_tour, CheckPath, Mounting, SessionTime, TimeModel};
+use zerocal_procedure::robot_time::{
+    shortest_tour_visiting, CheckPath, Mounting, SessionTime, TimeModel,
+};
 
 /// Penalty (s) in the tour's costs for a move that could be captured early: high
 /// enough that the tour avoids it whenever an order exists that does.
 const EARLY_PENALTY_S: f64 = 1e6;
 
 /// The order of the stage-2 poses that makes the session short (core's
-/// [`shortest_tour`] on the robot times from one pose's second capture to the next
+/// [`shortest_tour_visiting`] on the robot times from one pose's second capture to the next
 /// pose's first, an operator's OK where that does not arm the next capture, and moves
 /// that could be captured early avoided): indices into `poses.poses`. `reach(i, j)` is
 /// pose `j` (controller degrees) as the robot reaches it from pose `i` (the same pose,
 /// or the same turned by whole turns of a joint whose limits allow it,
-/// [`super::unwind`]).
+/// [`super::unwind`]). The tour is costed with `revisits` of its poses visited again
+/// where core's `with_revisits` will place them, so it puts the revisited poses where
+/// going back costs least.
 pub fn time_order(
     pendant: &Pendant<'_>,
     time: &TimeModel<f64>,
     poses: &SessionPoses,
+    revisits: usize,
     reach: impl Fn(usize, usize) -> [f64; JOINTS],
 ) -> Vec<usize> {
     let n = poses.poses.len();
@@ -49,8 +54,9 @@ pub fn time_order(
         .enumerate()
         .map(|(i, a)| (0..n).map(|j| leg(a, &reach(i, j))).collect())
         .collect();
-    shortest_tour(
+    shortest_tour_visiting(
         n,
+        &super::unwind::visit_order(n, revisits),
         |i| start.get(i).copied().unwrap_or(0.0),
         |i, j| cost.get(i).and_then(|r| r.get(j)).copied().unwrap_or(0.0),
     )

@@ -114,7 +114,7 @@ pub fn nearest(
 /// The order the robot visits `n` distinct poses in with `revisits` of them visited
 /// again: indices into the distinct poses, as core's [`with_revisits`] places them
 /// (applied to poses that carry their own index, so the rule lives in one place).
-fn visit_order(n: usize, revisits: usize) -> Vec<usize> {
+pub fn visit_order(n: usize, revisits: usize) -> Vec<usize> {
     let mut tagged: PoseList<f64> = PoseList::new();
     for i in 0..n {
         // n ≤ MAX_POSES, so every index is exact in an f64.

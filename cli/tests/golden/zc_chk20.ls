@@ -28,8 +28,8 @@ CONTROL_CODE	= 00000000 00000000;
    7:  ! (profile ;
    8:  ! fanuc-m20ia); 5 of ;
    9:  ! the session plan's ;
-  10:  ! 43 poses (28, 30, ;
-  11:  ! 31, 33, 34), at the ;
+  10:  ! 43 poses (2, 16, 17, ;
+  11:  ! 19, 35), at the ;
   12:  ! session's commanded ;
   13:  ! angles. Written by ;
   14:  ! zerocal 0.1.0. ;
@@ -95,7 +95,7 @@ CONTROL_CODE	= 00000000 00000000;
   74:  ! Predicted robot time ;
   75:  ! 3.0 min, until the ;
   76:  ! pendant is off the ;
-  77:  ! flange: motion 26 s, ;
+  77:  ! flange: motion 29 s, ;
   78:  ! dwell 31 s (10 ;
   79:  ! captures), 2 ;
   80:  ! mountings 120 s, ;
@@ -127,7 +127,7 @@ CONTROL_CODE	= 00000000 00000000;
  106:  MESSAGE[continue.] ;
  107:  PAUSE ;
  108:  ! zerocal check: pose ;
- 109:  ! 28 of 43, captured ;
+ 109:  ! 2 of 43, captured ;
  110:  ! from below, then ;
  111:  ! from above ;
  112:J P[2] 10% FINE ;
@@ -137,7 +137,7 @@ CONTROL_CODE	= 00000000 00000000;
  116:J P[5] 10% FINE ;
  117:  WAIT   3.10(sec) ;
  118:  ! zerocal check: pose ;
- 119:  ! 30 of 43, captured ;
+ 119:  ! 16 of 43, captured ;
  120:  ! from below, then ;
  121:  ! from above ;
  122:J P[6] 10% FINE ;
@@ -147,7 +147,7 @@ CONTROL_CODE	= 00000000 00000000;
  126:J P[9] 10% FINE ;
  127:  WAIT   3.10(sec) ;
  128:  ! zerocal check: pose ;
- 129:  ! 31 of 43, captured ;
+ 129:  ! 17 of 43, captured ;
  130:  ! from below, then ;
  131:  ! from above ;
  132:J P[10] 10% FINE ;
@@ -157,7 +157,7 @@ CONTROL_CODE	= 00000000 00000000;
  136:J P[13] 10% FINE ;
  137:  WAIT   3.10(sec) ;
  138:  ! zerocal check: pose ;
- 139:  ! 33 of 43, captured ;
+ 139:  ! 19 of 43, captured ;
  140:  ! from below, then ;
  141:  ! from above ;
  142:J P[14] 10% FINE ;
@@ -167,7 +167,7 @@ CONTROL_CODE	= 00000000 00000000;
  146:J P[17] 10% FINE ;
  147:  WAIT   3.10(sec) ;
  148:  ! zerocal check: pose ;
- 149:  ! 34 of 43, captured ;
+ 149:  ! 35 of 43, captured ;
  150:  ! from below, then ;
  151:  ! from above ;
  152:J P[18] 10% FINE ;
@@ -210,32 +210,32 @@ CONTROL_CODE	= 00000000 00000000;
 P[1]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   -36.124 deg,
-	J4=   -47.051 deg,	J5=   -88.195 deg,	J6=   144.544 deg
+	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -64.561 deg,	J6=    38.382 deg
 };
 P[2]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=     6.029 deg,	J3=   -37.124 deg,
-	J4=   -48.051 deg,	J5=  -134.195 deg,	J6=   143.544 deg
+	J1=   -91.000 deg,	J2=    60.295 deg,	J3=    10.639 deg,
+	J4=   -39.765 deg,	J5=   -20.561 deg,	J6=    37.382 deg
 };
 P[3]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     7.029 deg,	J3=   -36.124 deg,
-	J4=   -47.051 deg,	J5=  -133.195 deg,	J6=   144.544 deg
+	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
 };
 P[4]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=    11.029 deg,	J3=   -32.124 deg,
-	J4=   -43.051 deg,	J5=  -129.195 deg,	J6=   148.544 deg
+	J1=   -86.000 deg,	J2=    65.295 deg,	J3=    15.639 deg,
+	J4=   -34.765 deg,	J5=   -15.561 deg,	J6=    42.382 deg
 };
 P[5]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=     7.029 deg,	J3=   -36.124 deg,
-	J4=   -47.051 deg,	J5=  -133.195 deg,	J6=   144.544 deg
+	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
 };
 P[6]{
    GP1:
@@ -312,31 +312,31 @@ P[17]{
 P[18]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -91.000 deg,	J2=    60.295 deg,	J3=    10.639 deg,
-	J4=   -39.765 deg,	J5=   -20.561 deg,	J6=    37.382 deg
+	J1=   -91.000 deg,	J2=     6.029 deg,	J3=   -37.124 deg,
+	J4=   -48.051 deg,	J5=  -134.195 deg,	J6=   143.544 deg
 };
 P[19]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
-	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
+	J1=   -90.000 deg,	J2=     7.029 deg,	J3=   -36.124 deg,
+	J4=   -47.051 deg,	J5=  -133.195 deg,	J6=   144.544 deg
 };
 P[20]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -86.000 deg,	J2=    65.295 deg,	J3=    15.639 deg,
-	J4=   -34.765 deg,	J5=   -15.561 deg,	J6=    42.382 deg
+	J1=   -86.000 deg,	J2=    11.029 deg,	J3=   -32.124 deg,
+	J4=   -43.051 deg,	J5=  -129.195 deg,	J6=   148.544 deg
 };
 P[21]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=    61.295 deg,	J3=    11.639 deg,
-	J4=   -38.765 deg,	J5=   -19.561 deg,	J6=    38.382 deg
+	J1=   -90.000 deg,	J2=     7.029 deg,	J3=   -36.124 deg,
+	J4=   -47.051 deg,	J5=  -133.195 deg,	J6=   144.544 deg
 };
 P[22]{
    GP1:
 	UF : 0, UT : 0,	
-	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=   -36.124 deg,
-	J4=   -47.051 deg,	J5=   -88.195 deg,	J6=   144.544 deg
+	J1=   -90.000 deg,	J2=   -45.000 deg,	J3=    11.639 deg,
+	J4=   -38.765 deg,	J5=   -64.561 deg,	J6=    38.382 deg
 };
 /END
