@@ -586,6 +586,19 @@ impl Screen {
         }
     }
 
+    /// The screen for the procedure as it is: the bracket calibration's while one runs,
+    /// else the session's.
+    pub fn of(procedure: &crate::channels::Procedure, extras: PendantState) -> Screen {
+        match procedure.bracket_cal() {
+            Some(bracket) => Screen::Bracket(BracketScreen::from_state(bracket, extras)),
+            None => Screen::from_view(
+                &procedure.session().view(),
+                &procedure.config().display,
+                extras,
+            ),
+        }
+    }
+
     /// The screen for core's view of the session.
     pub fn from_view(
         view: &View<'_, f32>,
