@@ -155,7 +155,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             if procedure.session().phase() != Phase::Done || phase_before != Phase::Done {
                 presentation.extras.result_page = 0;
             }
-            let reply = from_link.then(|| match (output.refusal, stored) {
+            let reply = from_link.then_some(match (output.refusal, stored) {
                 (Some(Refusal::SessionInProgress), _) => LinkReply::SessionInProgress,
                 (_, false) => LinkReply::StoreFailed,
                 (Some(Refusal::PlanLocked), true) => LinkReply::PlanLocked,
