@@ -13,10 +13,8 @@ use embassy_time::Instant;
 use libfuzzer_sys::fuzz_target;
 use zerocal_pendant::channels::{LinkReply, LinkRequest, Shared};
 use zerocal_pendant::config::procedure_config;
-use zerocal_pendant::procedure::{reset_to_builtin, set_profile};
 use zerocal_pendant_desktop::exec;
-use zerocal_procedure::bracket_cal::BracketCalState;
-use zerocal_procedure::{step, Event};
+use zerocal_procedure::{Event, PendantEvent, Refusal};
 
 /// Host to pendant: packets of up to 64 bytes (USB full-speed bulk), then the cable
 /// goes.
@@ -90,37 +88,32 @@ fuzz_target!(|data: &[u8]| {
             let request = shared.link_requests.receive().await;
             let reply = if input.not_ready {
                 LinkReply::NotReady
+            } else if let LinkRequest::ReadKept { .. } = request {
+                // No store here: no kept result has that ID.
+                LinkReply::Kept(None)
             } else {
                 let mut p = shared.procedure.lock().await;
-                let p = &mut *p;
-                // The procedure task's own handling of each request.
-                match request {
-                    LinkRequest::SetPlan(plan) => {
-                        let _ = step(&p.config, &mut p.session, Event::SetPlan(plan));
-                        LinkReply::Done
-                    }
-                    LinkRequest::Clear => {
-                        let _ = step(&p.config, &mut p.session, Event::Clear);
-                        LinkReply::Done
-                    }
-                    LinkRequest::Check => {
-                        let _ = step(&p.config, &mut p.session, Event::Check);
-                        LinkReply::Done
-                    }
-                    LinkRequest::SetProfile(profile) => match set_profile(p, &profile) {
-                        Some(_) => LinkReply::Done,
-                        None => LinkReply::SessionInProgress,
-                    },
-                    LinkRequest::Erase => {
-                        let _ = reset_to_builtin(p, &[]);
-                        LinkReply::Done
-                    }
+                // The procedure task's own handling of each request, with a store that
+                // erases and writes without fail.
+                let event = match request {
+                    LinkRequest::SetPlan(plan) => PendantEvent::Session(Event::SetPlan(plan)),
+                    LinkRequest::Clear => PendantEvent::Session(Event::Clear),
+                    LinkRequest::Check => PendantEvent::Session(Event::Check),
+                    LinkRequest::SetProfile(profile) => PendantEvent::SetProfile(profile),
+                    LinkRequest::Erase => PendantEvent::EraseAll,
                     LinkRequest::CalibrateBracket { mount, id } => {
-                        p.bracket_cal = Some(BracketCalState::new(mount, id));
-                        LinkReply::Done
+                        PendantEvent::CalibrateBracket { mount, id }
                     }
-                    // No store here: no kept result has that ID.
-                    LinkRequest::ReadKept { .. } => LinkReply::Kept(None),
+                    LinkRequest::ReadKept { .. } => continue,
+                };
+                let mut out = p.step(event);
+                if out.erase {
+                    out = p.step(PendantEvent::StoreErased { default_plan: &[] });
+                }
+                match out.refusal {
+                    Some(Refusal::SessionInProgress) => LinkReply::SessionInProgress,
+                    Some(Refusal::PlanLocked) => LinkReply::PlanLocked,
+                    None => LinkReply::Done,
                 }
             };
             shared.link_replies.send(reply).await;

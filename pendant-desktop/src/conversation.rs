@@ -64,7 +64,7 @@ pub fn link_faults() -> Result<(ScenarioReport, LinkFindings), String> {
         f.second_export_equal = second == reference;
         f.session_unchanged = {
             let procedure = shared.procedure.lock().await;
-            procedure.session.phase() == Phase::Done
+            procedure.session().phase() == Phase::Done
         };
         *findings.borrow_mut() = f;
         Ok((

@@ -69,7 +69,7 @@ pub(crate) fn finish(
 }
 
 pub(crate) async fn progress_of(shared: &Shared) -> usize {
-    session_progress(&shared.procedure.lock().await.session)
+    session_progress(shared.procedure.lock().await.session())
 }
 
 pub(crate) fn display_faults(shared: &Shared) -> u32 {

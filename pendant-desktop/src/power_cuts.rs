@@ -188,7 +188,7 @@ fn ids(results: &[KeptResult]) -> Vec<u32> {
 
 /// The plan `shared`'s session holds (as restored or set).
 async fn session_plan(shared: &Shared) -> Vec<[f32; 6]> {
-    shared.procedure.lock().await.session.plan().to_vec()
+    shared.procedure.lock().await.session().plan().to_vec()
 }
 
 /// The campaign's session on `rig`, uncut: what every cut run is compared with.
@@ -286,7 +286,8 @@ fn cut_one(
                 Some(Screen::Starting(_)) | None => Timer::after(Duration::from_millis(50)).await,
                 Some(screen) => {
                     let reset = screen.kind() == ScreenKind::StorageReset;
-                    let session = &shared.procedure.lock().await.session;
+                    let procedure = shared.procedure.lock().await;
+                    let session = procedure.session();
                     // An old result restored before the new session began is progress 0.
                     let progress = if !started && session.phase() == Phase::Done {
                         0
@@ -298,7 +299,7 @@ fn cut_one(
             }
         };
         let export = cut_script(rig, started).await?;
-        let dup = duplicates(&shared.procedure.lock().await.session);
+        let dup = duplicates(shared.procedure.lock().await.session());
         Ok::<_, ScriptError>((restored, export, dup))
     });
     // One more power cycle: the finished session must come back from flash as it was.

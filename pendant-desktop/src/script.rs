@@ -157,7 +157,7 @@ impl Pendant<'_> {
 
     /// Reads the procedure's session.
     pub async fn session<R>(&self, read: impl FnOnce(&ProcedureState<f32>) -> R) -> R {
-        read(&self.shared.procedure.lock().await.session)
+        read(self.shared.procedure.lock().await.session())
     }
 
     /// The world the pendant is in.

@@ -265,7 +265,7 @@ async fn full_session(rig: &Rig, shared: &Shared, tour: bool) -> Result<Ended, S
     let export = command(rig, b"export\r\n", SILENCE).await;
     let second_export = command(rig, b"export\r\n", SILENCE).await;
     let status = command(rig, b"status\r\n", SILENCE).await;
-    let state = shared.procedure.lock().await.session.clone();
+    let state = shared.procedure.lock().await.session().clone();
     Ok(Ended {
         result_screen,
         export,
@@ -333,7 +333,7 @@ pub fn check(world: WorldConfig) -> Result<(CheckReport, Rc<RefCell<PanelLog>>),
         }
         operate_until(&rig, PATIENCE, |s| matches!(s, Screen::CheckDone(_))).await?;
         let export = command(&rig, b"export\r\n", SILENCE).await;
-        let captures = shared.procedure.lock().await.session.captures().len();
+        let captures = shared.procedure.lock().await.session().captures().len();
         Ok((export, captures))
     });
     let (export, captures) = match run {
@@ -375,7 +375,7 @@ pub fn drive_check_program(rig: &Rig) -> Result<Vec<usize>, String> {
 /// No check within 60 s, a fault screen, or no progress.
 pub async fn operate_check(rig: &Rig, shared: &Shared) -> Result<(), ScriptError> {
     let deadline = Instant::now() + Duration::from_secs(60);
-    while !shared.procedure.lock().await.session.is_check() {
+    while !shared.procedure.lock().await.session().is_check() {
         if Instant::now() > deadline {
             return Err(ScriptError::Timeout("no check started".into()));
         }

@@ -308,7 +308,7 @@ fn results_carry_exactly_what_the_pendant_keeps() {
                 }
                 calibrate(rig, PATIENCE).await.unwrap();
                 let p = shared.procedure.lock().await;
-                held.push(p.session.kept_result(&p.config, session + 1).unwrap());
+                held.push(p.session().kept_result(p.config(), session + 1).unwrap());
             }
             let results = command(rig, b"results\r\n", SILENCE).await;
             let export = command(rig, b"export\r\n", SILENCE).await;

@@ -22,9 +22,8 @@ use embassy_sync::mutex::Mutex;
 use embassy_sync::signal::Signal;
 use zerocal_core::bracket::{BracketId, BracketMount};
 use zerocal_core::plan::PoseList;
-use zerocal_procedure::bracket_cal::{BracketCalState, StoredBrackets};
 use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
-use zerocal_procedure::{PendantProfile, ProcedureConfig, ProcedureState};
+use zerocal_procedure::{PendantMachine, PendantProfile, ProcedureConfig};
 
 use crate::messages::{ButtonEvent, SensorReport};
 use crate::screen::Screen;
@@ -33,23 +32,10 @@ use crate::screen::Screen;
 /// host's `critical-section/std`).
 pub type RawMutex = CriticalSectionRawMutex;
 
-/// The session and its configuration.
-pub struct Procedure {
-    /// The pendant's procedure settings ([`crate::config::procedure_config`]).
-    pub config: ProcedureConfig<f32>,
-    /// Everything the procedure remembers.
-    pub session: ProcedureState<f32>,
-    /// The stored profile's generation (0: none stored, the built-in one in use).
-    pub profile_generation: u8,
-    /// The brackets' calibrations made on this pendant and kept, the last per mount.
-    pub brackets: StoredBrackets<f32>,
-    /// A bracket calibration in progress: the buttons and samples go to it, the
-    /// session waits as it was.
-    pub bracket_cal: Option<BracketCalState<f32>>,
-    /// The ID the next kept result takes (`store::FIRST_RESULT_ID` on a store that
-    /// never kept one).
-    pub next_result_id: u32,
-}
+/// The session, its configuration and profile, the kept brackets, a bracket
+/// calibration in progress and the next kept result's ID: the procedure crate's
+/// machine, which decides everything the procedure task writes.
+pub type Procedure = PendantMachine<f32>;
 
 /// A change the USB host asks for.
 // The plan is the request's point; without a heap it travels by value, once (the
@@ -128,14 +114,7 @@ impl Shared {
     /// Before the power-up restore: an empty session on `config`.
     pub fn new(config: ProcedureConfig<f32>) -> Self {
         Shared {
-            procedure: Mutex::new(Procedure {
-                config,
-                session: ProcedureState::new(PoseList::new(), None),
-                profile_generation: 0,
-                brackets: StoredBrackets::default(),
-                bracket_cal: None,
-                next_result_id: crate::store::FIRST_RESULT_ID,
-            }),
+            procedure: Mutex::new(Procedure::new(config, crate::store::FIRST_RESULT_ID)),
             sensor_reports: Channel::new(),
             button_events: Channel::new(),
             screen: Signal::new(),

@@ -1,6 +1,6 @@
 //! zerocal-pendant: the whole pendant application, the same on the board and on the
 //! desktop. Screens and their layout, buttons (debounce, long press, repeat), the
-//! calibration procedure of `zerocal-core` driven by them, capture from the SCL3300,
+//! calibration procedure of `zerocal-procedure` driven by them, capture from the SCL3300,
 //! the calibration store on flash and the USB link's line protocol.
 //!
 //! `no_std`, no heap. Generic over what a board provides: an embedded-hal-async
@@ -15,7 +15,8 @@
 //!
 //! - [`sensor`]: reads the SCL3300 at 20 Hz (mode 4, angle registers and temperature).
 //! - [`buttons`]: debounces and queues presses.
-//! - [`procedure`]: core's `step`, the store ([`store`]), the screens ([`screen`]).
+//! - [`procedure`]: the procedure crate's pendant machine, the store ([`store`]), the
+//!   screens ([`screen`]).
 //! - [`ui`]: draws ([`draw`]) the newest screen.
 //! - [`link`]: serves the USB line protocol.
 #![cfg_attr(not(test), no_std)]

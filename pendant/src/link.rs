@@ -357,20 +357,20 @@ impl<W: Write> Server<'_, W> {
                     | Command::Export) => {
                         let shared = self.shared;
                         let procedure = shared.procedure.lock().await;
-                        let profile =
-                            matches!(command, Command::Profile).then(|| procedure.config.profile());
+                        let profile = matches!(command, Command::Profile)
+                            .then(|| procedure.config().profile());
                         // `export` holds the session for the whole of it.
                         let mut export = matches!(command, Command::Export)
-                            .then(|| procedure.session.export(&procedure.config));
+                            .then(|| procedure.session().export(procedure.config()));
                         for i in 0.. {
                             let text = match command {
                                 // Core's status lines, then the pendant's own (below).
-                                Command::Status => status(&procedure.session, i),
-                                Command::Plan => plan_line(procedure.session.plan(), i),
+                                Command::Status => status(procedure.session(), i),
+                                Command::Plan => plan_line(procedure.session().plan(), i),
                                 Command::Profile => profile.as_ref().and_then(|p| p.line(i)),
                                 Command::Export => export.as_mut().and_then(Iterator::next),
                                 Command::Brackets => BracketMount::ALL.get(i).map(|&mount| {
-                                    bracket_line(mount, procedure.brackets.get(mount))
+                                    bracket_line(mount, procedure.brackets().get(mount))
                                 }),
                                 _ => None,
                             };
@@ -379,12 +379,12 @@ impl<W: Write> Server<'_, W> {
                         }
                         return Ok(Some(match command {
                             Command::PlanSet => {
-                                let q = procedure.config.stage1_joints_rad;
+                                let q = procedure.config().stage1_joints_rad;
                                 self.upload = Some(Upload::Plan(PlanUpload::new([q[0], q[1]])));
                                 Said::Text(PLAN_PROMPT)
                             }
                             Command::BracketStatus => {
-                                Said::Line(progress_line(procedure.bracket_cal.as_ref()))
+                                Said::Line(progress_line(procedure.bracket_cal()))
                             }
                             Command::Status => Said::Line(pendant_status(
                                 shared.dropped_frames.load(Ordering::Relaxed),
@@ -457,7 +457,7 @@ impl<W: Write> Server<'_, W> {
     /// procedure task when its turn comes (one in RAM at a time). Its last line (the
     /// end, or `not ready`) is left to [`Self::send`].
     async fn results(&mut self) -> Result<Said, Disconnected> {
-        let next = self.shared.procedure.lock().await.next_result_id;
+        let next = self.shared.procedure.lock().await.next_result_id();
         let mut id = next
             .saturating_sub(KEPT_RESULTS as u32)
             .max(FIRST_RESULT_ID);
@@ -545,13 +545,7 @@ impl<W: Write> Server<'_, W> {
                     Either::First(_) => return Err(Disconnected),
                     Either::Second(()) => {
                         // A bracket calibration takes the samples while it runs.
-                        let reading = {
-                            let procedure = self.shared.procedure.lock().await;
-                            match procedure.bracket_cal.as_ref() {
-                                Some(bracket) => bracket.live(),
-                                None => procedure.session.view().live,
-                            }
-                        };
+                        let reading = self.shared.procedure.lock().await.live();
                         let said = match reading {
                             Some(tilt) => {
                                 let (x_deg, y_deg) = tilt.to_deg();

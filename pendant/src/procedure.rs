@@ -1,13 +1,17 @@
-//! The procedure task: `zerocal-core`'s calibration procedure, wired to the pendant. It
-//! turns sensor reports, button presses and link requests into core `Event`s, calls
-//! `step`, writes the records core asks for to the store, and only then publishes the
-//! new [`Screen`]: whatever the operator has seen survives a power cut.
+//! The procedure task: the procedure crate's pendant machine
+//! ([`zerocal_procedure::PendantMachine`]), wired to the pendant. It turns sensor
+//! reports, button presses and link requests into its events, calls its `step`, does
+//! the writes its output lists against the store, in order (erase, keep a result, the
+//! records), and only then publishes the new [`Screen`]: whatever the operator has seen
+//! survives a power cut.
 //!
 //! No procedure logic lives here: when to capture, what BACK undoes, what a plan may
-//! replace, the fit and its verdict are core's. This task adds what only a pendant has:
-//! the power-up (store, storage reset, the restart note), which press means what on
-//! which screen, the info screen, the result's pages, and the sensor's and store's
-//! faults on the screen.
+//! replace, the fit and its verdict, whether a profile may change, what `erase all`
+//! leaves, when a result is kept and under which ID, where a sample goes during a
+//! bracket calibration are the machine's. This task adds what only a pendant has: the
+//! power-up (store, storage reset, the restart note), which press means what on which
+//! screen, the info screen, the result's pages, the still-moving warning, and the
+//! sensor's and store's faults on the screen and in the link's replies.
 
 use core::ops::Range;
 
@@ -15,15 +19,10 @@ use embassy_futures::select::{select3, Either3};
 use embassy_time::{Duration, Instant, Timer};
 use embedded_storage_async::nor_flash::NorFlash;
 use zerocal_core::model::Tilt;
-use zerocal_core::plan::PoseList;
-use zerocal_procedure::bracket_cal::{
-    bracket_step, BracketCalState, BracketOutput, StoredBracket, StoredBrackets,
-};
 use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
-    step, Event, Notice, Output, OutputError, PendantProfile, Phase, ProcedureState, ReadingSlot,
-    Record, OUTPUT_RECORDS,
+    Event, OutputError, PendantEvent, PendantMode, PendantOutput, Phase, ProcedureState, Refusal,
 };
 /// What [`Boot::pendant`] holds, for the board to fill.
 pub use zerocal_procedure::{PendantUnit, UnitId};
@@ -31,7 +30,7 @@ pub use zerocal_procedure::{PendantUnit, UnitId};
 use crate::buttons::{Button, ButtonEvent, Press};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
 use crate::config::STILL_MOVING_MS;
-use crate::screen::{BracketScreen, PendantState, RestartNote, Screen};
+use crate::screen::{PendantState, RestartNote, Screen};
 use crate::sensor::SensorReport;
 use crate::store::{Restored, Store};
 
@@ -67,7 +66,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     let mut reset = None;
     {
         let mut procedure = shared.procedure.lock().await;
-        procedure.config.pendant = boot.pendant;
+        procedure.set_unit(boot.pendant);
         match store.as_mut() {
             Some(s) => match restore(s, &mut procedure) {
                 Ok(()) => {}
@@ -78,7 +77,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
         // The boot screen names the robot the pendant is set up for.
         shared
             .screen
-            .signal(Screen::Starting(Some(procedure.config.robot.clone())));
+            .signal(Screen::Starting(Some(procedure.config().robot.clone())));
     }
     Timer::after(Duration::from_millis(BOOT_SCREEN_MS)).await;
     if let (Some(reason), Some(s)) = (reset, store.as_mut()) {
@@ -88,18 +87,11 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     }
     {
         let mut procedure = shared.procedure.lock().await;
-        let builtin = procedure_is_builtin(&procedure);
-        let Procedure {
-            config, session, ..
-        } = &mut *procedure;
-        if session.plan().is_empty() && builtin {
-            // Through core, like an upload: it decides and lists the records to store.
-            if let Ok(plan) = PoseList::from_slice(boot.default_plan) {
-                let output = step(config, session, Event::SetPlan(plan));
-                if !persist(&mut store, output.records()).await {
-                    presentation.extras.store_failed = true;
-                }
-            }
+        let output = procedure.step(PendantEvent::PoweredUp {
+            default_plan: boot.default_plan,
+        });
+        if write(&mut store, &output).await == Some(false) {
+            presentation.extras.store_failed = true;
         }
     }
     if let Some(note) = boot.restart {
@@ -127,118 +119,50 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             let from_link = matches!(input, Either3::Third(_));
             let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
             let procedure = &mut **held.insert(shared.procedure.lock().await);
-            // `erase all` empties the store before anything is written anew.
-            let mut erase_failed = false;
-            if matches!(input, Either3::Third(LinkRequest::Erase)) {
-                erase_failed = match store.as_mut() {
-                    Some(s) => s.erase().await.is_err(),
-                    None => true,
-                };
-            }
-            let phase_before = procedure.session.phase();
-            // One set of records to write, whatever asked for it: a single buffer lives
-            // across the write (the task's state is static RAM on the board).
-            let output = match input {
-                Either3::Third(LinkRequest::SetProfile(profile)) => {
-                    set_profile(procedure, &profile)
-                }
-                Either3::Third(LinkRequest::CalibrateBracket { mount, id }) => {
-                    // Nothing to store until the operator keeps a result. The still window
-                    // is the waiting session's, lent empty.
-                    procedure.bracket_cal = Some(BracketCalState::new(mount, id));
-                    procedure.session.stillness_window().reset();
-                    Some(Output::default())
-                }
-                input @ (Either3::First(_) | Either3::Second(_))
-                    if procedure.bracket_cal.is_some() =>
-                {
-                    on_bracket_input(procedure, &mut presentation, input)
-                }
-                // An erase that failed changes nothing: what the store holds stays in use.
-                Either3::Third(LinkRequest::Erase) if erase_failed => None,
-                Either3::Third(LinkRequest::Erase) => {
-                    Some(reset_to_builtin(procedure, boot.default_plan))
-                }
-                input => {
-                    let Procedure {
-                        config, session, ..
-                    } = &mut *procedure;
-                    let event = match input {
-                        Either3::First(SensorReport::Reading {
-                            t_ms,
-                            tilt,
-                            temperature_c,
-                        }) => {
-                            presentation.extras.fault = None;
-                            Some(Event::Sample {
-                                t_ms,
-                                reading: Tilt::new(tilt.x_rad, tilt.y_rad),
-                                temperature_c: Some(temperature_c),
-                            })
-                        }
-                        Either3::First(SensorReport::Fault(fault)) => {
-                            presentation.extras.fault = Some(fault);
-                            Some(Event::SensorFault)
-                        }
-                        Either3::Second(press) => {
-                            on_press(&mut presentation, session.phase(), press)
-                        }
-                        Either3::Third(LinkRequest::SetPlan(plan)) => Some(Event::SetPlan(plan)),
-                        Either3::Third(LinkRequest::Clear) => Some(Event::Clear),
-                        Either3::Third(LinkRequest::Check) => Some(Event::Check),
-                        Either3::Third(
-                            LinkRequest::SetProfile(_)
-                            | LinkRequest::Erase
-                            | LinkRequest::CalibrateBracket { .. }
-                            | LinkRequest::ReadKept { .. },
-                        ) => None,
-                    };
-                    event.map(|e| step(config, session, e))
-                }
+            let phase_before = procedure.session().phase();
+            // One output to write, whatever asked for it: a single buffer lives across
+            // the writes (the task's state is static RAM on the board).
+            let mut output = match to_event(&mut presentation, procedure.mode(), input) {
+                Some(event) => procedure.step(event),
+                None => PendantOutput::default(),
             };
-            let refused = output.is_none() && from_link && !erase_failed;
-            let mut stored = !erase_failed;
-            // A session just finished with a result: kept before the step's records, so a
-            // cut between the two leaves the result kept and the session before its last
-            // capture (finished again, it is kept again under a new ID), never a result
-            // shown but not kept.
-            let finished = output.as_ref().is_some_and(|o| {
-                o.records()
-                    .is_ok_and(|r| r.iter().any(|r| matches!(r, Record::LastResult { .. })))
-            });
-            if let Some((id, value)) = finished.then(|| encode_kept(procedure)).flatten() {
-                stored &= match store.as_mut() {
-                    Some(s) => s.keep_result(id, &value).await.is_ok(),
+            let mut stored = true;
+            if output.erase {
+                // `erase all` empties the store before anything is written anew; an
+                // erase that failed changes nothing: what the store holds stays in use.
+                let erased = match store.as_mut() {
+                    Some(s) => s.erase().await.is_ok(),
                     None => false,
                 };
+                if erased {
+                    output = procedure.step(PendantEvent::StoreErased {
+                        default_plan: boot.default_plan,
+                    });
+                } else {
+                    stored = false;
+                }
+            }
+            if let Some(written) = write(&mut store, &output).await {
+                stored &= written;
                 presentation.extras.store_failed = !stored;
             }
-            if let Some(output) = output {
-                if output.records().map_or(true, |r| !r.is_empty()) {
-                    stored &= persist(&mut store, output.records()).await;
-                    presentation.extras.store_failed = !stored;
-                }
+            if output.session_resumed {
+                // The session's wait for stillness starts afresh.
+                presentation.unsettled_since_ms = None;
+                presentation.extras.still_moving = false;
             }
-            let Procedure {
-                config: _, session, ..
-            } = &mut *procedure;
-            let phase = session.phase();
-            if phase != Phase::Done || phase_before != Phase::Done {
+            // The result's page survives only while the result stays up.
+            if procedure.session().phase() != Phase::Done || phase_before != Phase::Done {
                 presentation.extras.result_page = 0;
             }
-            let reply = from_link.then(|| {
-                if refused {
-                    LinkReply::SessionInProgress
-                } else if !stored {
-                    LinkReply::StoreFailed
-                } else if session.view().notice == Some(Notice::PlanLocked) {
-                    LinkReply::PlanLocked
-                } else {
-                    LinkReply::Done
-                }
+            let reply = from_link.then_some(match (output.refusal, stored) {
+                (Some(Refusal::SessionInProgress), _) => LinkReply::SessionInProgress,
+                (_, false) => LinkReply::StoreFailed,
+                (Some(Refusal::PlanLocked), true) => LinkReply::PlanLocked,
+                (None, true) => LinkReply::Done,
             });
             if sampled {
-                let moving = watch_stillness(&mut presentation, session);
+                let moving = watch_stillness(&mut presentation, procedure.session());
                 // The robot is on its way to the next pose (or the session is over): the
                 // moment for a page change and its erase, if one is due.
                 if moving {
@@ -259,11 +183,11 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     }
 }
 
-/// Reads the store into `session`. Driven to completion on the spot rather than
+/// Reads the store into the procedure. Driven to completion on the spot rather than
 /// awaited: reading flash is a memory copy that never waits, and this keeps the
 /// record table (~4.5 KiB) on the stack at power-up instead of in the task's state for
 /// good. Only a fresh store's first write (its marker) waits for the flash, briefly.
-// Not inlined, nor are read_kept and encode_kept: inlined into the task's poll, the
+// Not inlined, nor are read_kept and to_event: inlined into the task's poll, the
 // driven-to-completion futures cost more flash than a call (-272 B rustup).
 #[inline(never)]
 fn restore<F: NorFlash>(
@@ -272,20 +196,13 @@ fn restore<F: NorFlash>(
 ) -> Result<(), crate::store::ResetReason> {
     let mut restored = Restored::default();
     let opened = embassy_futures::block_on(store.open(&mut restored));
-    // The stored profile first: the session's stage 1 is solved on its arm.
-    if let Some((profile, _)) = PendantProfile::from_records(restored.records()) {
-        procedure.config.apply(&profile);
-    }
-    // The newest of any part, whole or torn: the next profile takes a newer one.
-    procedure.profile_generation = PendantProfile::newest_generation(restored.records());
-    // A store to be reset restores nothing: the session starts afresh.
-    procedure.session = ProcedureState::restore(&procedure.config, restored.records());
-    procedure.brackets = StoredBrackets::from_records(restored.records());
     // Unreadable (a store to be reset that cannot be read): from the first ID.
-    procedure.next_result_id = embassy_futures::block_on(store.next_result_id())
+    let next_result_id = embassy_futures::block_on(store.next_result_id())
         .ok()
         .flatten()
         .unwrap_or(crate::store::FIRST_RESULT_ID);
+    // A store to be reset restores nothing: the session starts afresh.
+    procedure.restore(restored.records(), next_result_id);
     opened
 }
 
@@ -300,91 +217,49 @@ fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
     LinkReply::Kept(found.then_some(value))
 }
 
-/// The session's result as a kept result under the next ID, encoded; the next ID moves
-/// on whether or not the write will succeed (a failed write may have stored the ID).
-#[inline(never)]
-fn encode_kept(procedure: &mut Procedure) -> Option<(u32, [u8; KEPT_RESULT_LEN])> {
-    let id = procedure.next_result_id;
-    let kept = procedure.session.kept_result(&procedure.config, id)?;
-    let mut value = [0_u8; KEPT_RESULT_LEN];
-    kept.encode(&mut value).ok()?;
-    procedure.next_result_id = id.saturating_add(1);
-    Some((id, value))
-}
-
 /// How long the boot screen (with the robot's name) stays (ms).
 const BOOT_SCREEN_MS: u64 = 1500;
 
-/// Whether nothing of a profile was ever stored (generation 0): only then does the
-/// firmware's default plan, planned for the built-in profile, apply. After a torn
-/// profile write the built-in profile is in use but the plan is left to the operator.
+/// What an input means to the procedure: a sample, a sensor fault (both also shown),
+/// a press on the screen shown ([`on_press`]), or a link request. `None`: nothing
+/// for the procedure (a press that only turns a page, or none at all).
+// Out of line, as on_press and watch_stillness: inlined into the task's poll they cost
+// more flash than a call.
 #[inline(never)]
-fn procedure_is_builtin(procedure: &Procedure) -> bool {
-    procedure.profile_generation == 0
-}
-
-/// `profile set`: the configuration changes, and with it the session and the plan (a
-/// plan belongs to its robot). `None` (refused) while a session is in progress.
-///
-/// The records go in this order: the session's reset, the old plan's end, the
-/// profile's parts and its head last. A cut before the plan's end leaves the old
-/// profile with its plan; one after it, the old or no whole profile (the built-in one
-/// then, named on the boot screen) without a plan; never a plan on the wrong robot.
-// Out of line, as on_press, watch_stillness, on_bracket_input, reset_to_builtin and
-// procedure_is_builtin: inlined into the task's poll they cost more flash than a call.
-#[inline(never)]
-pub fn set_profile(
-    procedure: &mut Procedure,
-    profile: &PendantProfile<f32>,
-) -> Option<Output<f32>> {
-    let Procedure {
-        config,
-        session,
-        profile_generation,
-        ..
-    } = procedure;
-    let idle = session.phase() == Phase::Done
-        || (session.phase() == Phase::Stage0
-            && session.captures().is_empty()
-            && session.reading(ReadingSlot::STAGE0_FIRST).is_none());
-    if !idle {
-        return None;
-    }
-    let mut output = step(config, session, Event::Clear);
-    let cleared = step(config, session, Event::SetPlan(PoseList::new()));
-    let generation = profile_generation.wrapping_add(1).max(1);
-    output.append(cleared);
-    for r in profile.to_records(generation) {
-        output.push(r);
-    }
-    config.apply(profile);
-    *profile_generation = generation;
-    Some(output)
-}
-
-// A profile's records follow the cleared session's (its progress and the plan's end,
-// twice: 3) in one output.
-const _: () = assert!(3 + zerocal_procedure::profile::PROFILE_RECORDS <= OUTPUT_RECORDS);
-
-/// `erase all` (the store already erased): the built-in profile, no bias or result,
-/// the firmware's default plan, which the records returned store again.
-#[inline(never)]
-pub fn reset_to_builtin(procedure: &mut Procedure, default_plan: &[[f32; 6]]) -> Output<f32> {
-    // The unit stays the unit; the kept results' next ID stays too (the store's erase
-    // carried it over).
-    let pendant = procedure.config.pendant;
-    procedure.config = crate::config::procedure_config();
-    procedure.config.pendant = pendant;
-    procedure.profile_generation = 0;
-    procedure.session = ProcedureState::new(PoseList::new(), None);
-    procedure.brackets = StoredBrackets::default();
-    procedure.bracket_cal = None;
-    let plan = PoseList::from_slice(default_plan).unwrap_or_default();
-    step(
-        &procedure.config,
-        &mut procedure.session,
-        Event::SetPlan(plan),
-    )
+fn to_event(
+    p: &mut Presentation,
+    mode: PendantMode,
+    input: Either3<SensorReport, ButtonEvent, LinkRequest>,
+) -> Option<PendantEvent<'static, f32>> {
+    Some(match input {
+        Either3::First(SensorReport::Reading {
+            t_ms,
+            tilt,
+            temperature_c,
+        }) => {
+            p.extras.fault = None;
+            PendantEvent::Session(Event::Sample {
+                t_ms,
+                reading: Tilt::new(tilt.x_rad, tilt.y_rad),
+                temperature_c: Some(temperature_c),
+            })
+        }
+        Either3::First(SensorReport::Fault(fault)) => {
+            p.extras.fault = Some(fault);
+            PendantEvent::Session(Event::SensorFault)
+        }
+        Either3::Second(press) => PendantEvent::Session(on_press(p, mode, press)?),
+        Either3::Third(LinkRequest::SetPlan(plan)) => PendantEvent::Session(Event::SetPlan(plan)),
+        Either3::Third(LinkRequest::Clear) => PendantEvent::Session(Event::Clear),
+        Either3::Third(LinkRequest::Check) => PendantEvent::Session(Event::Check),
+        Either3::Third(LinkRequest::SetProfile(profile)) => PendantEvent::SetProfile(profile),
+        Either3::Third(LinkRequest::Erase) => PendantEvent::EraseAll,
+        Either3::Third(LinkRequest::CalibrateBracket { mount, id }) => {
+            PendantEvent::CalibrateBracket { mount, id }
+        }
+        // Answered from the store before any event.
+        Either3::Third(LinkRequest::ReadKept { .. }) => return None,
+    })
 }
 
 /// Waits for a short or long OK, dropping everything else (answering the link).
@@ -406,15 +281,22 @@ async fn wait_for_ok(shared: &Shared) {
     }
 }
 
-/// What a press means on the screen shown: core's event, or a change of presentation.
+/// What a press means on the screen shown: the procedure's event, or a change of
+/// presentation.
 #[inline(never)]
-fn on_press(p: &mut Presentation, phase: Phase, press: ButtonEvent) -> Option<Event<f32>> {
+fn on_press(p: &mut Presentation, mode: PendantMode, press: ButtonEvent) -> Option<Event<f32>> {
     let ButtonEvent { button, press } = press;
-    match (button, press, phase) {
+    match (button, press, mode) {
+        // Every step of a bracket calibration is a placement by hand and OK: a short or
+        // long press alike.
+        (Button::Ok, _, PendantMode::BracketCalibration) => Some(Event::Ok),
+        (Button::Back, Press::Short, PendantMode::BracketCalibration) => Some(Event::Back),
+        // NEXT means nothing there; a held BACK must not undo capture after capture.
+        (_, _, PendantMode::BracketCalibration) => None,
         // The result stays until OK is held: a brush of OK must not lose it.
-        (Button::Ok, Press::Short, Phase::Done) => None,
-        (Button::Ok, Press::Long, Phase::Done) => Some(Event::Ok),
-        (Button::Next, Press::Short | Press::Repeat, Phase::Done) => {
+        (Button::Ok, Press::Short, PendantMode::Session(Phase::Done)) => None,
+        (Button::Ok, Press::Long, PendantMode::Session(Phase::Done)) => Some(Event::Ok),
+        (Button::Next, Press::Short | Press::Repeat, PendantMode::Session(Phase::Done)) => {
             p.extras.result_page = p.extras.result_page.wrapping_add(1);
             None
         }
@@ -447,103 +329,33 @@ fn watch_stillness(p: &mut Presentation, session: &ProcedureState<f32>) -> bool 
     started
 }
 
-/// Writes a step's records; false if the store is missing, a write failed or the step
-/// lost a record (then nothing of it is written: the store keeps the state before the
-/// step whole, and the screen says the write failed).
-async fn persist<F: NorFlash>(
+/// Performs an output's writes, in its order: the kept result, then the records.
+/// `None` when there is nothing to write; `false` if the store is missing, a write
+/// failed or the step lost a record (then none of its records is written: the store
+/// keeps the state before the step whole, and the screen says the write failed).
+async fn write<F: NorFlash>(
     store: &mut Option<Store<F>>,
-    records: Result<&[Record<f32>], OutputError>,
-) -> bool {
-    match (store, records) {
-        (Some(store), Ok(records)) => store.write(records).await.is_ok(),
-        (None, _) | (_, Err(OutputError::RecordLost)) => false,
+    output: &PendantOutput<f32>,
+) -> Option<bool> {
+    if !output.writes() {
+        return None;
     }
+    let Some(store) = store.as_mut() else {
+        return Some(false);
+    };
+    let mut written = true;
+    if let Some(kept) = &output.kept {
+        written &= store.keep_result(kept.id, &kept.value).await.is_ok();
+    }
+    written &= match output.records.records() {
+        Ok([]) => true,
+        Ok(records) => store.write(records).await.is_ok(),
+        Err(OutputError::RecordLost) => false,
+    };
+    Some(written)
 }
 
-/// Sends the screen for the session (or the bracket calibration) as it is now.
+/// Sends the screen for the procedure as it is now.
 fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
-    let screen = match &procedure.bracket_cal {
-        Some(bracket) => Screen::Bracket(BracketScreen::from_state(bracket, p.extras)),
-        None => Screen::from_view(
-            &procedure.session.view(),
-            &procedure.config.display,
-            p.extras,
-        ),
-    };
-    shared.screen.signal(screen);
-}
-
-/// A sample, a sensor fault or a press during a bracket calibration: its step, and
-/// the record to store when the operator keeps the result.
-#[inline(never)]
-fn on_bracket_input(
-    procedure: &mut Procedure,
-    p: &mut Presentation,
-    input: Either3<SensorReport, ButtonEvent, LinkRequest>,
-) -> Option<Output<f32>> {
-    let event = match input {
-        Either3::First(SensorReport::Reading {
-            t_ms,
-            tilt,
-            temperature_c,
-        }) => {
-            p.extras.fault = None;
-            Event::Sample {
-                t_ms,
-                reading: Tilt::new(tilt.x_rad, tilt.y_rad),
-                temperature_c: Some(temperature_c),
-            }
-        }
-        Either3::First(SensorReport::Fault(fault)) => {
-            p.extras.fault = Some(fault);
-            Event::SensorFault
-        }
-        // Every step is a placement by hand and OK: a short or long press alike.
-        Either3::Second(ButtonEvent {
-            button: Button::Ok, ..
-        }) => Event::Ok,
-        Either3::Second(ButtonEvent {
-            button: Button::Back,
-            press: Press::Short,
-        }) => Event::Back,
-        // NEXT means nothing here; a held BACK must not undo capture after capture.
-        Either3::Second(_) | Either3::Third(_) => return None,
-    };
-    let Procedure {
-        config,
-        session,
-        brackets,
-        bracket_cal,
-        ..
-    } = procedure;
-    let state = bracket_cal.as_mut()?;
-    let window = session.stillness_window();
-    let output = bracket_step(config, state, window, event);
-    if output != BracketOutput::Stay {
-        // The session gets its window back empty: its wait for stillness starts
-        // afresh, not from before the calibration (which showed "robot not still" for
-        // a moment after every calibration longer than the limit).
-        p.unsettled_since_ms = None;
-        p.extras.still_moving = false;
-    }
-    match output {
-        BracketOutput::Stay => None,
-        BracketOutput::Leave => {
-            // The window goes back to the session empty.
-            window.reset();
-            *bracket_cal = None;
-            None
-        }
-        BracketOutput::Keep(record) => {
-            if let Some(kept) = StoredBracket::from_record(&record) {
-                brackets.keep(kept);
-            }
-            window.reset();
-            *bracket_cal = None;
-            let mut output = Output::default();
-            // One record into a buffer of a whole plan's.
-            output.push(record);
-            Some(output)
-        }
-    }
+    shared.screen.signal(Screen::of(procedure, p.extras));
 }

@@ -16,7 +16,9 @@ use zerocal_core::session::{SessionError, SESSION_JOINTS};
 use zerocal_procedure::bracket_cal::{BracketCalState, BracketNotice, BracketResult, BracketStep};
 use zerocal_procedure::profile::JointName;
 use zerocal_procedure::stillness::Stillness;
-use zerocal_procedure::{Approach, ControllerDisplay, Notice, Outcome, Phase, RobotName, View};
+use zerocal_procedure::{
+    Approach, ControllerDisplay, Notice, Outcome, PendantMachine, Phase, RobotName, View,
+};
 
 /// The headings of a bench step (stage 0, the closing readings, a bracket's plate).
 pub use zerocal_procedure::BENCH_HEADINGS;
@@ -583,6 +585,19 @@ impl Screen {
                     Prompt::Closing { .. } => ScreenKind::ClosingTurned,
                 }
             }
+        }
+    }
+
+    /// The screen for the procedure as it is: the bracket calibration's while one runs,
+    /// else the session's.
+    pub fn of(procedure: &PendantMachine<f32>, extras: PendantState) -> Screen {
+        match procedure.bracket_cal() {
+            Some(bracket) => Screen::Bracket(BracketScreen::from_state(bracket, extras)),
+            None => Screen::from_view(
+                &procedure.session().view(),
+                &procedure.config().display,
+                extras,
+            ),
         }
     }
 

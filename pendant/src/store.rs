@@ -158,7 +158,7 @@ impl Restored {
     }
 
     /// The records, one per key.
-    pub fn records(&self) -> impl Iterator<Item = Record<f32>> + '_ {
+    pub fn records(&self) -> impl Iterator<Item = Record<f32>> + Clone + '_ {
         self.slots.iter().flatten().copied()
     }
 

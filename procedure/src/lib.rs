@@ -5,6 +5,9 @@
 //!   ([`record`]), and the robot profile the pendant holds ([`profile`]).
 //! - [`bracket_cal`]: a bracket's calibration guided on the pendant, four captures on
 //!   a surface plate, driven like the session.
+//! - [`pendant_machine`] (its items re-exported here): the pendant's whole procedure
+//!   around the session, the profile, `erase all`, the kept results and the bracket
+//!   calibration mode, as one machine whose output says everything to write.
 //! - [`stillness`]: the still-window filter that fires a capture, its sample period,
 //!   window and re-arm threshold.
 //! - [`link`]: the USB line protocol, one vocabulary of commands and replies for the
@@ -36,9 +39,13 @@ pub mod kept;
 pub mod link;
 pub mod log;
 pub mod machine;
+pub mod pendant_machine;
 pub mod replies;
 pub mod robot_time;
 pub mod stillness;
 pub mod text;
 
 pub use machine::*;
+pub use pendant_machine::{
+    KeptWrite, PendantEvent, PendantMachine, PendantMode, PendantOutput, Refusal,
+};

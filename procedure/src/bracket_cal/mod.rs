@@ -52,7 +52,7 @@ use zerocal_core::stage0::{BenchTurns, BENCH_HEADINGS};
 mod line;
 mod progress;
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 pub use line::{bracket_line, parse_bracket_line, BracketLineError, BRACKET_LINE_DECIMALS};
 pub use progress::{

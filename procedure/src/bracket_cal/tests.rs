@@ -78,8 +78,9 @@ const SEATED_HEADINGS_DEG: [f64; BENCH_HEADINGS] = [12.0, 97.5, 195.0, 283.0];
 
 /// The readings of a bracket turned R_x(a)·R_y(b)·R_z(c): the pendant's headings and
 /// the reference's on a plate tilted `plate_tilt_x_deg` about x and 0.04° about y,
-/// then four on a sine plate at `sine_deg` against its fence, end for end.
-fn readings(
+/// then four on a sine plate at `sine_deg` against its fence, end for end (the
+/// pendant machine's tests run a calibration on them too).
+pub(crate) fn readings(
     a_rad: f64,
     b_rad: f64,
     c_rad: f64,

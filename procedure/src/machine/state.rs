@@ -411,6 +411,11 @@ impl<T: Real> ProcedureState<T> {
         }
     }
 
+    /// What the operator must see (as [`Self::view`] shows it).
+    pub fn notice(&self) -> Option<Notice> {
+        self.notice
+    }
+
     /// The current phase.
     pub fn phase(&self) -> Phase {
         self.phase
