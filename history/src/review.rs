@@ -561,6 +561,22 @@ impl History {
         signatures_in(&mut self.conn, record_id)
     }
 
+    /// Writes an audit entry for a change made by another call (a certificate issued
+    /// by the CLI's code, which writes it in its own transaction).
+    ///
+    /// # Errors
+    /// The backend's.
+    pub fn audit_note(
+        &mut self,
+        actor: &str,
+        action: &str,
+        subject: &str,
+        after: &serde_json::Value,
+    ) -> Result<(), HistoryError> {
+        self.conn
+            .write(|c| audit_in(c, actor, action, subject, None, after))
+    }
+
     /// The audit log, newest first, at most `limit` entries.
     ///
     /// # Errors
