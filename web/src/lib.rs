@@ -66,10 +66,9 @@ pub trait Product: Send + Sync + 'static {
     fn reducer_notes(&self, records: &[Record]) -> Vec<String>;
 }
 
-/// The most bytes an uploaded export may have: a pendant's export is a few tens of
-/// kilobytes; the CLI reads at most the same (`zerocal_cli::input::MAX_EXPORT_BYTES`
-/// is passed in by `zerocal serve`).
-pub const DEFAULT_MAX_UPLOAD_BYTES: usize = 1 << 20;
+/// Room in an upload's body for what is not the export (the multipart boundaries and
+/// headers, the serial, the CSRF token): the body limit is the export's limit plus this.
+pub const MULTIPART_OVERHEAD_BYTES: usize = 16 * 1024;
 
 /// How the server runs.
 #[derive(Debug, Clone)]
@@ -194,4 +193,30 @@ pub fn router(config: Config, product: Box<dyn Product>) -> Result<Router, Strin
         .layer(DefaultBodyLimit::max(limit))
         .layer(axum::middleware::from_fn(security_headers))
         .with_state(app))
+}
+
+/// Serves [`router`] on `listen` until the process ends (each request's history work
+/// in its own blocking thread; a killed server leaves the last committed state, as
+/// the history guarantees).
+///
+/// # Errors
+/// The address cannot be bound; a template does not compile; the server fails.
+pub fn serve(
+    listen: std::net::SocketAddr,
+    config: Config,
+    product: Box<dyn Product>,
+) -> Result<(), String> {
+    let app = router(config, product)?;
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .build()
+        .map_err(|e| format!("the server's runtime: {e}"))?;
+    runtime.block_on(async move {
+        let listener = tokio::net::TcpListener::bind(listen)
+            .await
+            .map_err(|e| format!("cannot listen on {listen}: {e}"))?;
+        axum::serve(listener, app)
+            .await
+            .map_err(|e| format!("the server stopped: {e}"))
+    })
 }
