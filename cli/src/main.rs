@@ -38,7 +38,7 @@ use zerocal_cli::simulated_world;
 ///
 /// Around it: `simulate` rehearses the whole job on a simulated robot, `restore` brings
 /// a joint back to a reference's zero after a motor swap, `history` and `certificate`
-/// keep the record; `profile` imports an arm from its URDF and says what a profile
+/// keep the record, and `serve` shows it to the plant on the web; `profile` imports an arm from its URDF and says what a profile
 /// lets the product do; `bracket`, `robots`, `identify` and `error-table` are the tools
 /// behind them. docs/cli.md has every command.
 #[derive(Parser, Debug)]
