@@ -63,6 +63,10 @@ pub struct ServeArgs {
     /// ~/.config/zerocal/certificate.toml.
     #[arg(long, value_name = "FILE")]
     pub certificate_config: Option<PathBuf>,
+    /// The Chromium that prints certificates to PDF (headless, `--print-to-pdf`).
+    /// Default: `chromium` on PATH; without one, the pages offer no PDF.
+    #[arg(long, value_name = "FILE")]
+    pub chromium: Option<PathBuf>,
     /// Make this account instead of serving (with --role); its password from
     /// ZEROCAL_NEW_PASSWORD, else the first line of standard input.
     #[arg(long, value_name = "NAME", requires = "role")]
@@ -156,6 +160,13 @@ fn new_password() -> Result<String, CliError> {
     Ok(line.trim_end_matches(['\r', '\n']).to_owned())
 }
 
+/// The executable `name` in a directory of PATH.
+fn on_path(name: &str) -> Option<PathBuf> {
+    std::env::split_paths(&std::env::var_os("PATH")?)
+        .map(|d| d.join(name))
+        .find(|p| p.is_file())
+}
+
 /// Runs `zerocal serve`.
 ///
 /// # Errors
@@ -197,6 +208,7 @@ pub fn run(args: &ServeArgs) -> Result<String, CliError> {
             max_upload_bytes: crate::input::MAX_EXPORT_BYTES
                 + zerocal_web::MULTIPART_OVERHEAD_BYTES,
             interval_days: args.interval_days,
+            chromium: args.chromium.clone().or_else(|| on_path("chromium")),
         },
         Box::new(CliProduct {
             certificate_config: args.certificate_config.clone(),

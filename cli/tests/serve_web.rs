@@ -82,6 +82,7 @@ async fn an_uploaded_export_is_solved_and_recorded_as_zerocal_session_does_on_ev
             max_upload_bytes: zerocal_cli::input::MAX_EXPORT_BYTES
                 + zerocal_web::MULTIPART_OVERHEAD_BYTES,
             interval_days: Some(365),
+            chromium: None,
         },
         Box::new(CliProduct {
             certificate_config: Some(

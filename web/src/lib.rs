@@ -17,6 +17,7 @@
 mod auth;
 mod fleet_view;
 mod pages;
+mod pdf;
 mod review_pages;
 mod templates;
 
@@ -82,6 +83,9 @@ pub struct Config {
     /// The days between calibrations: a robot is due this many days after its last
     /// session. `None`: no due date is shown (the plant sets its interval).
     pub interval_days: Option<u32>,
+    /// The Chromium that prints certificates to PDF; `None`: no PDF download (the
+    /// page says so).
+    pub chromium: Option<std::path::PathBuf>,
 }
 
 pub(crate) struct App {
@@ -183,6 +187,10 @@ pub fn router(config: Config, product: Box<dyn Product>) -> Result<Router, Strin
         .route("/upload", get(pages::upload_form).post(pages::upload))
         .route("/record/{id}", get(review_pages::record))
         .route("/record/{id}/certificate", get(review_pages::certificate))
+        .route(
+            "/record/{id}/certificate.pdf",
+            get(review_pages::certificate_pdf),
+        )
         .route("/record/{id}/sign", post(review_pages::sign))
         .route(
             "/admin/users",

@@ -189,7 +189,7 @@ pub async fn robot(
         render(
             &app.templates,
             "robot.html",
-            context! { user => s.user, csrf => s.csrf_token, serial, records, conventions, reducer_notes, plots, plot_error },
+            context! { user => s.user, csrf => s.csrf_token, serial, records, conventions, reducer_notes, plots, plot_error, pdf => app.config.chromium.is_some() },
         )
         .map(IntoResponse::into_response)
     };

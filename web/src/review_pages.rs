@@ -5,7 +5,7 @@ use crate::auth::{action_session, page_session};
 use crate::templates::render;
 use crate::{with_history, Shared, WebError};
 use axum::extract::{Path, State};
-use axum::http::{HeaderMap, StatusCode};
+use axum::http::{header, HeaderMap, StatusCode};
 use axum::response::{Html, IntoResponse, Redirect, Response};
 use axum::Form;
 use minijinja::context;
@@ -49,6 +49,7 @@ pub async fn record(
                 user => s.user, csrf => s.csrf_token, r, signatures,
                 next_step => next.map(SignStep::as_str),
                 next_role => next.map(|n| n.role().as_str()),
+                pdf => app.config.chromium.is_some(),
             },
         )
         .map(IntoResponse::into_response)
@@ -83,19 +84,11 @@ fn signature_block(
     out
 }
 
-/// `GET /record/ID/certificate`: the session's certificate as `zerocal certificate`
-/// makes it (issued in the history the first time, audited then), with its review.
-pub async fn certificate(
-    State(app): State<Shared>,
-    headers: HeaderMap,
-    Path(id): Path<i64>,
-) -> Response {
-    let s = match page_session(&app, &headers).await {
-        Ok(s) => s,
-        Err(r) => return r,
-    };
+/// The session's certificate as `zerocal certificate` makes it (issued in the history
+/// the first time, audited then), with its review under it.
+async fn certificate_of(app: &Shared, actor: String, id: i64) -> Result<String, WebError> {
     let app2 = app.clone();
-    let r = with_history(&app, move |h| {
+    with_history(app, move |h| {
         let record = h.get(id)?;
         if record.new.kind != RecordKind::Session {
             return Err(WebError(
@@ -114,7 +107,7 @@ pub async fn certificate(
         if issued.len() > before {
             if let Some(c) = issued.last() {
                 h.audit_note(
-                    &s.user.name,
+                    &actor,
                     "certificate.issue",
                     &format!("record {id}"),
                     &serde_json::json!({
@@ -130,8 +123,61 @@ pub async fn certificate(
         })
     })
     .await
-    .map(|html| Html(html).into_response());
-    result(r)
+}
+
+/// `GET /record/ID/certificate`: the certificate, HTML.
+pub async fn certificate(
+    State(app): State<Shared>,
+    headers: HeaderMap,
+    Path(id): Path<i64>,
+) -> Response {
+    let s = match page_session(&app, &headers).await {
+        Ok(s) => s,
+        Err(r) => return r,
+    };
+    result(
+        certificate_of(&app, s.user.name, id)
+            .await
+            .map(|html| Html(html).into_response()),
+    )
+}
+
+/// `GET /record/ID/certificate.pdf`: the certificate printed by headless Chromium.
+pub async fn certificate_pdf(
+    State(app): State<Shared>,
+    headers: HeaderMap,
+    Path(id): Path<i64>,
+) -> Response {
+    let s = match page_session(&app, &headers).await {
+        Ok(s) => s,
+        Err(r) => return r,
+    };
+    let r = async {
+        let chromium = app.config.chromium.clone().ok_or_else(|| {
+            WebError(
+                StatusCode::NOT_FOUND,
+                "no PDF: this server has no Chromium to print with (zerocal serve --chromium)"
+                    .into(),
+            )
+        })?;
+        let html = certificate_of(&app, s.user.name, id).await?;
+        let pdf = tokio::task::spawn_blocking(move || crate::pdf::print(&chromium, &html))
+            .await
+            .map_err(|e| WebError(StatusCode::INTERNAL_SERVER_ERROR, format!("worker: {e}")))?
+            .map_err(|e| WebError(StatusCode::INTERNAL_SERVER_ERROR, format!("PDF: {e}")))?;
+        Ok((
+            [
+                (header::CONTENT_TYPE, "application/pdf".to_owned()),
+                (
+                    header::CONTENT_DISPOSITION,
+                    format!("attachment; filename=\"zerocal-certificate-{id}.pdf\""),
+                ),
+            ],
+            pdf,
+        )
+            .into_response())
+    };
+    result(r.await)
 }
 
 /// `POST /record/ID/sign` (csrf, step): the step signed by the signed-in user, whose

@@ -12,7 +12,6 @@ mod common;
 
 use axum::http::{header, StatusCode};
 use common::*;
-use zerocal_history::History;
 use zerocal_web::{LOGIN_WINDOW_SECONDS, MAX_FAILED_LOGINS};
 
 const EXPORT: &[u8] = b"robot kuka-kr6-r900-sixx\nrow 1\n";
@@ -242,8 +241,7 @@ async fn markup_and_sql_in_fields_are_shown_as_text_and_bound_as_values() {
             site.name,
             reply.body
         );
-        let mut h = History::open(&site.at).unwrap();
-        let records = h.list(None).unwrap();
+        let records = with_history(&site.at, |h| h.list(None).unwrap());
         assert_eq!(records.len(), 1, "{}", site.name);
         assert_eq!(
             records[0].new.serial, serial,
@@ -485,10 +483,10 @@ async fn every_accepted_change_is_in_the_audit_log_with_who_what_before_and_afte
             cert.body
         );
 
-        let mut h = History::open(&site.at).unwrap();
-        let log: Vec<_> = h
-            .audit_log(100)
-            .unwrap()
+        let (log, operator) = with_history(&site.at, |h| {
+            (h.audit_log(100).unwrap(), h.get(1).unwrap().new.operator)
+        });
+        let log: Vec<_> = log
             .into_iter()
             .rev()
             .filter(|e| e.actor != "setup")
@@ -525,7 +523,7 @@ async fn every_accepted_change_is_in_the_audit_log_with_who_what_before_and_afte
             r#"{"active":false,"name":"ana","role":"authorizer"}"#
         );
         // The record's operator is the signed-in user, whatever the form said.
-        assert_eq!(h.get(1).unwrap().new.operator.as_deref(), Some("tec"));
+        assert_eq!(operator.as_deref(), Some("tec"));
         // The audit page shows it to anyone signed in; a disabled user cannot sign in.
         assert!(get(r, "/audit", &tec).await.body.contains("user.set"));
         assert_eq!(
@@ -533,4 +531,45 @@ async fn every_accepted_change_is_in_the_audit_log_with_who_what_before_and_afte
             StatusCode::UNAUTHORIZED
         );
     }
+}
+
+#[tokio::test]
+async fn the_certificate_is_printed_to_pdf_by_headless_chromium_where_there_is_one() {
+    let chromium = std::path::Path::new("/usr/bin/chromium");
+    if !chromium.is_file() {
+        eprintln!("no /usr/bin/chromium: the PDF is not tested");
+        return;
+    }
+    let site = sites("pdf").remove(0);
+    let router = zerocal_web::router(
+        zerocal_web::Config {
+            db: site.at.clone(),
+            secure_cookies: false,
+            max_upload_bytes: TEST_UPLOAD_LIMIT,
+            interval_days: None,
+            chromium: Some(chromium.into()),
+        },
+        Box::new(FakeProduct),
+    )
+    .unwrap();
+    let (tec, csrf) = sign_in(&router, "tec").await;
+    assert_eq!(
+        upload(&router, &tec, &csrf, "R1", EXPORT).await.status,
+        StatusCode::SEE_OTHER
+    );
+    assert!(get(&router, "/record/1", &tec)
+        .await
+        .body
+        .contains("certificate.pdf"));
+    let reply = get(&router, "/record/1/certificate.pdf", &tec).await;
+    assert_eq!(reply.status, StatusCode::OK, "{}", reply.body);
+    assert_eq!(
+        reply.headers.get(header::CONTENT_TYPE).unwrap(),
+        "application/pdf"
+    );
+    assert!(reply.body.starts_with("%PDF"));
+    // Without Chromium configured, the download says so.
+    let reply = get(&site.router, "/record/1/certificate.pdf", &tec).await;
+    assert_eq!(reply.status, StatusCode::NOT_FOUND);
+    assert!(reply.body.contains("Chromium"), "{}", reply.body);
 }

@@ -113,6 +113,7 @@ pub fn server(at: &DbLocation) -> Router {
             secure_cookies: false,
             max_upload_bytes: TEST_UPLOAD_LIMIT,
             interval_days: Some(365),
+            chromium: None,
         },
         Box::new(FakeProduct),
     )
@@ -122,6 +123,10 @@ pub fn server(at: &DbLocation) -> Router {
 /// A fresh SQLite history, and a fresh PostgreSQL database (named after the test)
 /// when `ZEROCAL_TEST_POSTGRES` is set, each with [`USERS`].
 pub fn sites(test: &str) -> Vec<Site> {
+    std::thread::scope(|s| s.spawn(|| sites_off_runtime(test)).join().unwrap())
+}
+
+fn sites_off_runtime(test: &str) -> Vec<Site> {
     let dir = tempfile::tempdir().unwrap();
     let mut out = vec![(
         "SQLite",
@@ -138,11 +143,12 @@ pub fn sites(test: &str) -> Vec<Site> {
     }
     out.into_iter()
         .map(|(name, at, dir)| {
-            let mut h = History::open(&at).unwrap();
-            let phc = zerocal_web::hash_password(PASSWORD).unwrap();
-            for (user, role) in USERS {
-                h.add_user("setup", user, role, &phc).unwrap();
-            }
+            with_history(&at, |h| {
+                let phc = zerocal_web::hash_password(PASSWORD).unwrap();
+                for (user, role) in USERS {
+                    h.add_user("setup", user, role, &phc).unwrap();
+                }
+            });
             Site {
                 name,
                 router: server(&at),
@@ -296,9 +302,23 @@ pub async fn sign_in(router: &Router, name: &str) -> (String, String) {
     (cookie, csrf)
 }
 
+/// `work` on the history at `at`, off the test's async runtime (the PostgreSQL client
+/// is synchronous and starts a runtime of its own, as the server's spawn_blocking
+/// lets it).
+pub fn with_history<T: Send>(at: &DbLocation, work: impl FnOnce(&mut History) -> T + Send) -> T {
+    std::thread::scope(|s| {
+        s.spawn(|| work(&mut History::open(at).unwrap()))
+            .join()
+            .unwrap()
+    })
+}
+
 /// What a refusal must leave as it was: every record, signature, user and audit entry.
 pub fn state(at: &DbLocation) -> String {
-    let mut h = History::open(at).unwrap();
+    with_history(at, state_of)
+}
+
+fn state_of(h: &mut History) -> String {
     let records = h.list(None).unwrap();
     let signatures: Vec<_> = records
         .iter()
