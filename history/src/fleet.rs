@@ -1,5 +1,5 @@
 //! The plant's view of the history: every robot with its last session, the session
-//! before it, and its last check, without the records' exports, results and profiles
+//! before it, and its last check (a record a correction replaced left out), without the records' exports, results and profiles
 //! (listing those for every record of a plant takes seconds: `benches/fleet.rs`).
 
 use crate::{joint_from_row, History, HistoryError, JointRow, RecordKind, JOINT_COLUMNS};
@@ -82,6 +82,7 @@ impl History {
     pub fn fleet(&mut self) -> Result<Vec<RobotSummary>, HistoryError> {
         let records = self.conn.query(
             "SELECT id, serial, robot, robot_title, kind, measured_on, verdict FROM records \
+             WHERE id NOT IN (SELECT replaces_id FROM corrections) \
              ORDER BY serial, measured_on, id",
             &[],
         )?;

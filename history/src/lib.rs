@@ -8,6 +8,7 @@
 
 mod certificates;
 mod conventions;
+mod corrections;
 mod db;
 mod error;
 mod fleet;
@@ -17,6 +18,7 @@ pub mod schema;
 
 pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
 pub use conventions::{Convention, NewConvention};
+pub use corrections::Correction;
 pub use error::HistoryError;
 pub use fleet::{Drift, RecordSummary, RobotSummary};
 pub use review::{AuditEntry, Role, SignStep, Signature, User, WebSession, MAX_USER_CHARS};

@@ -191,7 +191,7 @@ fn user_json(u: &User) -> serde_json::Value {
 }
 
 /// Writes an audit entry inside the transaction `c`.
-fn audit_in(
+pub(crate) fn audit_in(
     c: &mut Conn,
     actor: &str,
     action: &str,

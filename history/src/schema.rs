@@ -135,7 +135,10 @@ ALTER TABLE records DROP COLUMN profile_toml;
                share it: users (name, role, Argon2 PHC hash), web sessions (the SHA-256 of \
                their random ID, the user, the expiry, the CSRF token), login attempts (the \
                flood limit), signatures (a record checked, then authorized, each by whom and \
-               when) and the append-only audit log (who, when, what, before and after)",
+               when), corrections (a new record naming the one it replaces, why and by \
+               whom), the append-only audit log, and an index holding every column the \
+               fleet view reads (a record's columns after its export are read through the \
+               export's overflow pages otherwise) (who, when, what, before and after)",
         sql: "
 CREATE TABLE users (
     name TEXT PRIMARY KEY,
@@ -163,6 +166,14 @@ CREATE TABLE signatures (
     user_name TEXT NOT NULL REFERENCES users (name),
     signed_at TEXT NOT NULL,
     PRIMARY KEY (record_id, step)
+);
+CREATE INDEX records_fleet ON records (serial, measured_on, id, kind, robot, robot_title, verdict);
+CREATE TABLE corrections (
+    record_id BIGINT PRIMARY KEY REFERENCES records (id),
+    replaces_id BIGINT NOT NULL UNIQUE REFERENCES records (id),
+    reason TEXT NOT NULL,
+    user_name TEXT NOT NULL,
+    recorded_at TEXT NOT NULL
 );
 CREATE TABLE audit (
     id {id},

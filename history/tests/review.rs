@@ -156,3 +156,73 @@ fn failed_logins_are_counted_since_the_last_success() {
         assert_eq!(h.login_failures_since("ana", 0).unwrap(), 1);
     }
 }
+
+#[test]
+fn a_correction_is_a_new_record_naming_the_one_it_replaces_and_the_fleet_leaves_that_out() {
+    for b in backends("review_corrections") {
+        let mut h = History::open(&b.at).unwrap();
+        let mut first = record(RecordKind::Session, "R1", 1, 64);
+        first.measured_on = "2026-01-01".into();
+        let wrong = h.insert_audited("tec", &first).unwrap().id;
+        let other = h
+            .insert(&record(RecordKind::Session, "R2", 1, 64))
+            .unwrap()
+            .id;
+        let mut fixed = record(RecordKind::Session, "R1", 2, 64);
+        fixed.measured_on = "2026-01-01".into();
+        let refused = |r: Result<_, HistoryError>| matches!(r, Err(HistoryError::Refused(_)));
+        // No reason; another serial's record; a record that does not exist; the same
+        // export again (no new record): refused, nothing written.
+        assert!(
+            refused(h.insert_correction("tec", &fixed, wrong, "  ")),
+            "{}",
+            b.name
+        );
+        assert!(
+            refused(h.insert_correction("tec", &fixed, other, "typo")),
+            "{}",
+            b.name
+        );
+        assert!(
+            refused(h.insert_correction("tec", &fixed, 999, "typo")),
+            "{}",
+            b.name
+        );
+        assert!(
+            refused(h.insert_correction("tec", &first, wrong, "typo")),
+            "{}",
+            b.name
+        );
+        assert_eq!(h.list(Some("R1")).unwrap().len(), 1, "{}", b.name);
+        let id = h
+            .insert_correction("tec", &fixed, wrong, "wrong serial typed on the pendant")
+            .unwrap()
+            .id;
+        // Once only; the replaced record is still there, unchanged.
+        let mut again = record(RecordKind::Session, "R1", 3, 64);
+        again.measured_on = "2026-01-01".into();
+        assert!(refused(h.insert_correction("tec", &again, wrong, "again")));
+        assert_eq!(h.get(wrong).unwrap().new, first);
+        let c = h.corrections("R1").unwrap();
+        assert_eq!(
+            c.iter()
+                .map(|c| (c.record_id, c.replaces_id, c.user_name.as_str()))
+                .collect::<Vec<_>>(),
+            [(id, wrong, "tec")]
+        );
+        let fleet = h.fleet().unwrap();
+        let r1 = fleet.iter().find(|r| r.serial == "R1").unwrap();
+        assert_eq!(
+            (r1.sessions, r1.last_session.as_ref().unwrap().id),
+            (1, id),
+            "{}",
+            b.name
+        );
+        let log = h.audit_log(1).unwrap();
+        assert_eq!(
+            (log[0].action.as_str(), log[0].subject.clone()),
+            ("record.correct", format!("record {wrong}"))
+        );
+        assert!(log[0].after_json.contains("wrong serial typed"));
+    }
+}

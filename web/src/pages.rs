@@ -163,6 +163,7 @@ pub async fn robot(
                         format!("the history holds no record of serial {serial2:?}"),
                     ));
                 }
+                let corrections = h.corrections(&serial2)?;
                 let mut rows = Vec::new();
                 for r in &records {
                     let signed = h.signatures(r.id)?;
@@ -175,9 +176,12 @@ pub async fn robot(
                         id => r.id, kind => r.new.kind.as_str(), reference_id => r.new.reference_id,
                         measured_on => r.new.measured_on, operator => r.new.operator,
                         verdict => r.new.verdict, review,
+                        replaced_by => corrections.iter().find(|c| c.replaces_id == r.id),
+                        replaces => corrections.iter().find(|c| c.record_id == r.id),
                     });
                 }
                 let conventions = h.conventions(&serial2)?;
+
                 let notes = app2.product.reducer_notes(&records);
                 let (plots, plot_error) = match app2.product.robot_plots_svg(&serial2, &records) {
                     Ok(p) => ((0..p.len()).collect::<Vec<_>>(), None),
@@ -258,7 +262,8 @@ async fn upload_fields(mut form: Multipart) -> Result<HashMap<String, Vec<u8>>, 
     Ok(fields)
 }
 
-/// `POST /upload` (multipart: csrf, serial, export): solved by the CLI's code and
+/// `POST /upload` (multipart: csrf, serial, export, and for a correction replaces
+/// and reason): solved by the CLI's code and
 /// recorded with the signed-in technician as its operator; a malformed export, another
 /// robot's (the serial's records are of another profile) or one too large is refused
 /// and nothing is recorded.
@@ -287,6 +292,17 @@ pub async fn upload(State(app): State<Shared>, headers: HeaderMap, form: Multipa
                 "upload: no export file".into(),
             ));
         }
+        // A correction names the record it replaces and why.
+        let replaces = match text("replaces").as_deref().map(str::trim) {
+            None | Some("") => None,
+            Some(t) => Some(t.parse::<i64>().ok().filter(|id| *id > 0).ok_or_else(|| {
+                WebError(
+                    StatusCode::UNPROCESSABLE_ENTITY,
+                    format!("upload: replaces {t:?} is not a record number"),
+                )
+            })?),
+        };
+        let reason = text("reason").unwrap_or_default();
         let app2 = app.clone();
         let user = s.user.name.clone();
         let id = with_history(&app, move |h| {
@@ -303,7 +319,10 @@ pub async fn upload(State(app): State<Shared>, headers: HeaderMap, form: Multipa
                     ),
                 ));
             }
-            Ok(h.insert_audited(&user, &record)?.id)
+            Ok(match replaces {
+                Some(old) => h.insert_correction(&user, &record, old, &reason)?.id,
+                None => h.insert_audited(&user, &record)?.id,
+            })
         })
         .await;
         match id {

@@ -245,13 +245,29 @@ pub async fn upload(
     serial: &str,
     export: &[u8],
 ) -> Reply {
+    upload_with(
+        router,
+        cookie,
+        &[("csrf", csrf), ("serial", serial)],
+        export,
+    )
+    .await
+}
+
+/// `POST /upload` with the text `fields` and the export file.
+pub async fn upload_with(
+    router: &Router,
+    cookie: &str,
+    fields: &[(&str, &str)],
+    export: &[u8],
+) -> Reply {
     const B: &str = "zerocalTestBoundary7MA4YWxk";
     let mut body = Vec::new();
-    for (name, value) in [("csrf", csrf.as_bytes()), ("serial", serial.as_bytes())] {
+    for (name, value) in fields {
         body.extend_from_slice(
             format!("--{B}\r\nContent-Disposition: form-data; name=\"{name}\"\r\n\r\n").as_bytes(),
         );
-        body.extend_from_slice(value);
+        body.extend_from_slice(value.as_bytes());
         body.extend_from_slice(b"\r\n");
     }
     body.extend_from_slice(
