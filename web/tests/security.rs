@@ -573,3 +573,62 @@ async fn the_certificate_is_printed_to_pdf_by_headless_chromium_where_there_is_o
     assert_eq!(reply.status, StatusCode::NOT_FOUND);
     assert!(reply.body.contains("Chromium"), "{}", reply.body);
 }
+
+#[tokio::test]
+async fn every_page_forbids_scripts_and_framing_and_the_cookie_is_http_only_and_strict() {
+    let site = sites("headers").remove(0);
+    let r = &site.router;
+    for page in ["/login", "/fleet"] {
+        let reply = get(r, page, "").await;
+        let csp = reply
+            .headers
+            .get(header::CONTENT_SECURITY_POLICY)
+            .unwrap()
+            .to_str()
+            .unwrap();
+        assert!(
+            csp.contains("default-src 'none'") && !csp.contains("script-src"),
+            "{csp}"
+        );
+        assert!(csp.contains("frame-ancestors 'none'"), "{csp}");
+        assert_eq!(
+            reply.headers.get(header::X_CONTENT_TYPE_OPTIONS).unwrap(),
+            "nosniff"
+        );
+    }
+    let reply = login_as(r, "tec", PASSWORD).await;
+    let cookie = reply
+        .headers
+        .get(header::SET_COOKIE)
+        .unwrap()
+        .to_str()
+        .unwrap();
+    assert!(
+        cookie.contains("HttpOnly") && cookie.contains("SameSite=Strict"),
+        "{cookie}"
+    );
+    assert!(
+        !cookie.contains("Secure"),
+        "plain HTTP on the loopback: {cookie}"
+    );
+    // Behind a TLS proxy the cookie is Secure.
+    let behind = zerocal_web::router(
+        zerocal_web::Config {
+            db: site.at.clone(),
+            secure_cookies: true,
+            max_upload_bytes: TEST_UPLOAD_LIMIT,
+            interval_days: None,
+            chromium: None,
+        },
+        Box::new(FakeProduct),
+    )
+    .unwrap();
+    let reply = login_as(&behind, "tec", PASSWORD).await;
+    let cookie = reply
+        .headers
+        .get(header::SET_COOKIE)
+        .unwrap()
+        .to_str()
+        .unwrap();
+    assert!(cookie.contains("; Secure"), "{cookie}");
+}
