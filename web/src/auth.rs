@@ -60,6 +60,18 @@ pub fn hash_password(password: &str) -> Result<String, String> {
         .map_err(|e| e.to_string())
 }
 
+/// A hash no password is checked against but to spend an unknown user name's time
+/// (made once, of random bytes nobody knows).
+pub(crate) fn unknown_user_phc() -> &'static str {
+    static PHC: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    PHC.get_or_init(|| {
+        random_hex(32)
+            .ok()
+            .and_then(|p| hash_password(&p).ok())
+            .unwrap_or_default()
+    })
+}
+
 /// Whether `password` is the one `phc` was made from.
 pub(crate) fn verify_password(password: &str, phc: &str) -> bool {
     PasswordHash::new(phc)

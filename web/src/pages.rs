@@ -54,9 +54,15 @@ pub async fn login(
                 ),
             )));
         }
-        let ok = h
-            .user(&name)?
-            .is_some_and(|u| u.active && auth::verify_password(&password, &u.password_phc));
+        // An unknown name costs one Argon2 verification too, so that the time taken
+        // does not tell which names exist.
+        let ok = match h.user(&name)? {
+            Some(u) => auth::verify_password(&password, &u.password_phc) && u.active,
+            None => {
+                auth::verify_password(&password, auth::unknown_user_phc());
+                false
+            }
+        };
         h.record_login_attempt(&name, now, ok)?;
         if !ok {
             return Ok(Err((
