@@ -24,6 +24,7 @@ pub mod program;
 pub mod report_notes;
 pub mod restore;
 pub mod robot;
+pub mod serve;
 pub mod session;
 pub mod simulate;
 pub mod simulated_world;

@@ -16,6 +16,8 @@
 //! - `zerocal restore EXPORT --reference ID`: after a motor swap, back to a reference's zero.
 //! - `zerocal history [SERIAL] [--db PATH|URL] [--json] [--plot DIR]`: the calibration
 //!   history per robot serial.
+//! - `zerocal serve [--db PATH|URL] [--listen ADDR:PORT]`: the plant's web application
+//!   over the history (fleet, robots, uploads, review and signature, audit).
 //! - `zerocal profile import FILE.urdf --out P.toml` / `profile check P.toml`: a profile
 //!   from a robot's URDF, and what a profile lets zerocal do.
 
@@ -36,7 +38,7 @@ use zerocal_cli::simulated_world;
 ///
 /// Around it: `simulate` rehearses the whole job on a simulated robot, `restore` brings
 /// a joint back to a reference's zero after a motor swap, `history` and `certificate`
-/// keep the record; `profile` imports an arm from its URDF and says what a profile
+/// keep the record, and `serve` shows it to the plant on the web; `profile` imports an arm from its URDF and says what a profile
 /// lets the product do; `bracket`, `robots`, `identify` and `error-table` are the tools
 /// behind them. docs/cli.md has every command.
 #[derive(Parser, Debug)]
@@ -86,6 +88,10 @@ enum Command {
     /// A robot profile from the robot's URDF (`import`), and what a profile lets zerocal
     /// do and is missing (`check`, its exit status by severity).
     Profile(zerocal_cli::profile_cmd::ProfileArgs),
+    /// Serve the plant's web application over the history: the fleet, each robot,
+    /// uploads of pendant exports, review and signature, accounts and the audit log
+    /// (or make an account with --add-user).
+    Serve(zerocal_cli::serve::ServeArgs),
 }
 
 fn run(cli: &Cli) -> Result<String, CliError> {
@@ -161,6 +167,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Certificate(args) => zerocal_cli::certificate::run(args),
         Command::Restore(args) => zerocal_cli::restore::run(args),
         Command::History(args) => zerocal_cli::history::run(args),
+        Command::Serve(args) => zerocal_cli::serve::run(args),
         // Prints and exits by itself (`main`): its check's status is by severity.
         Command::Profile(_) => Err(CliError::Input(String::from("profile: not run here"))),
     }

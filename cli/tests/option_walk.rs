@@ -118,7 +118,7 @@ fn parse_range(text: &str) -> Option<Stated> {
 }
 
 /// Value names of options that take text, not a number.
-const TEXT_VALUES: [&str; 12] = [
+const TEXT_VALUES: [&str; 13] = [
     "<SN>",
     "<DAY>",
     "<J=DEG>",
@@ -131,6 +131,7 @@ const TEXT_VALUES: [&str; 12] = [
     "<NAMES>",
     "<SOURCES>",
     "<PATH|URL>",
+    "<ADDR:PORT>",
 ];
 
 /// `(flag line, its help text)` for every option of a subcommand, from its `--help`.
@@ -294,6 +295,17 @@ fn base_args(subcommand: &str, log: &std::path::Path) -> Vec<String> {
             "history".into(),
             "--db".into(),
             log.with_file_name("walk-history.sqlite")
+                .display()
+                .to_string(),
+        ],
+        // An address this machine does not have (TEST-NET-1, RFC 5737): the server
+        // cannot listen and exits (3), so an accepted value ends the run too.
+        "serve" => vec![
+            "serve".into(),
+            "--listen=192.0.2.1:9".into(),
+            "--behind-tls-proxy".into(),
+            "--db".into(),
+            log.with_file_name("walk-serve.sqlite")
                 .display()
                 .to_string(),
         ],

@@ -23,6 +23,9 @@ pub enum HistoryError {
     NoSuchRecord(i64),
     /// A record given to [`crate::History::insert`] that cannot be stored as it is.
     InvalidRecord(String),
+    /// A change the history refuses as asked (a signature out of order or by the wrong
+    /// role, an account that exists): nothing was written.
+    Refused(String),
     /// A stored value that does not read as what the schema says it is.
     Corrupt(String),
     /// No `--db` given and neither `XDG_DATA_HOME` nor `HOME` is set.
@@ -51,6 +54,7 @@ impl fmt::Display for HistoryError {
             ),
             Self::NoSuchRecord(id) => write!(f, "no history record has ID {id}"),
             Self::InvalidRecord(why) => write!(f, "record not stored: {why}"),
+            Self::Refused(why) => write!(f, "refused: {why}"),
             Self::Corrupt(why) => write!(
                 f,
                 "the history database holds a value that does not read: {why}"

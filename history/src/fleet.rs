@@ -1,5 +1,5 @@
 //! The plant's view of the history: every robot with its last session, the session
-//! before it, and its last check, without the records' exports, results and profiles
+//! before it, and its last check (a record a correction replaced left out), without the records' exports, results and profiles
 //! (listing those for every record of a plant takes seconds: `benches/fleet.rs`).
 
 use crate::{joint_from_row, History, HistoryError, JointRow, RecordKind, JOINT_COLUMNS};
@@ -82,17 +82,10 @@ impl History {
     pub fn fleet(&mut self) -> Result<Vec<RobotSummary>, HistoryError> {
         let records = self.conn.query(
             "SELECT id, serial, robot, robot_title, kind, measured_on, verdict FROM records \
+             WHERE id NOT IN (SELECT replaces_id FROM corrections) \
              ORDER BY serial, measured_on, id",
             &[],
         )?;
-        let mut joints: BTreeMap<i64, Vec<JointRow>> = BTreeMap::new();
-        for row in &self.conn.query(
-            &format!("SELECT {JOINT_COLUMNS} FROM joints ORDER BY record_id, joint"),
-            &[],
-        )? {
-            let (id, j) = joint_from_row(row)?;
-            joints.entry(id).or_default().push(j);
-        }
         let mut fleet: Vec<RobotSummary> = Vec::new();
         for row in &records {
             let [id, serial, robot, robot_title, kind, measured_on, verdict] = row.as_slice()
@@ -109,7 +102,8 @@ impl History {
                 id,
                 measured_on: measured_on.string("records.measured_on")?,
                 verdict: verdict.string("records.verdict")?,
-                joints: joints.remove(&id).unwrap_or_default(),
+                // Read below, for the records the view shows only.
+                joints: Vec::new(),
             };
             if fleet.last().is_none_or(|r| r.serial != serial) {
                 fleet.push(RobotSummary {
@@ -139,6 +133,50 @@ impl History {
                 }
             }
         }
+        self.fill_joints(&mut fleet)?;
         Ok(fleet)
+    }
+
+    /// Reads the joints of the records `fleet` shows (at most three a robot), not of
+    /// every record: a plant's history holds far more.
+    fn fill_joints(&mut self, fleet: &mut [RobotSummary]) -> Result<(), HistoryError> {
+        let ids: Vec<i64> = fleet
+            .iter()
+            .flat_map(|r| [&r.last_session, &r.previous_session, &r.last_check])
+            .filter_map(|s| s.as_ref().map(|s| s.id))
+            .collect();
+        let mut joints: BTreeMap<i64, Vec<JointRow>> = BTreeMap::new();
+        // The IDs are the database's own integers, written into the statement in
+        // chunks (SQLite's and PostgreSQL's limits on parameters are far apart).
+        for chunk in ids.chunks(500) {
+            let list = chunk
+                .iter()
+                .map(i64::to_string)
+                .collect::<Vec<_>>()
+                .join(",");
+            for row in &self.conn.query(
+                &format!(
+                    "SELECT {JOINT_COLUMNS} FROM joints WHERE record_id IN ({list}) \
+                     ORDER BY record_id, joint"
+                ),
+                &[],
+            )? {
+                let (id, j) = joint_from_row(row)?;
+                joints.entry(id).or_default().push(j);
+            }
+        }
+        for robot in fleet {
+            for s in [
+                &mut robot.last_session,
+                &mut robot.previous_session,
+                &mut robot.last_check,
+            ]
+            .into_iter()
+            .flatten()
+            {
+                s.joints = joints.remove(&s.id).unwrap_or_default();
+            }
+        }
+        Ok(())
     }
 }

@@ -8,16 +8,20 @@
 
 mod certificates;
 mod conventions;
+mod corrections;
 mod db;
 mod error;
 mod fleet;
 mod pgpass;
+mod review;
 pub mod schema;
 
 pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
 pub use conventions::{Convention, NewConvention};
+pub use corrections::Correction;
 pub use error::HistoryError;
 pub use fleet::{Drift, RecordSummary, RobotSummary};
+pub use review::{AuditEntry, Role, SignStep, Signature, User, WebSession, MAX_USER_CHARS};
 
 use db::{Conn, Value};
 use serde::{Deserialize, Serialize};
@@ -455,6 +459,111 @@ fn opt_text(v: Option<&String>) -> Value {
     Value::Text(v.cloned())
 }
 
+/// Stores `r` (validated) and its joints inside the transaction `c`.
+fn insert_in(c: &mut Conn, r: &NewRecord) -> Result<Inserted, HistoryError> {
+    let export_sha256 = sha256_hex(&r.export);
+    let profile_sha256 = sha256_hex(r.profile_toml.as_bytes());
+    let recorded_at = zerocal_civil::Timestamp::clock().to_string();
+    let key = [
+        Value::text(&r.serial),
+        Value::text(r.kind.as_str()),
+        Value::text(&export_sha256),
+    ];
+    {
+        if let Some(reference) = r.reference_id {
+            let rows = c.query(
+                "SELECT serial FROM records WHERE id = $1",
+                &[Value::Int(Some(reference))],
+            )?;
+            let Some(serial) = rows.first().and_then(|row| row.first()) else {
+                return Err(invalid(format!(
+                    "reference record {reference} does not exist"
+                )));
+            };
+            let serial = serial.string("records.serial")?;
+            if serial != r.serial {
+                return Err(invalid(format!(
+                    "reference record {reference} is of serial {serial:?}, not {:?}",
+                    r.serial
+                )));
+            }
+        }
+        // The profile's text once, by its hash: every record of it refers to it.
+        c.execute(
+            "INSERT INTO texts (sha256, text) VALUES ($1, $2) \
+                 ON CONFLICT (sha256) DO NOTHING",
+            &[Value::text(&profile_sha256), Value::text(&r.profile_toml)],
+        )?;
+        let inserted = c.query(
+            "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
+                 controller_family, profile_sha256, export, export_sha256, \
+                 measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
+                 zerocal_version, verdict, brackets_json, conditions_json, result_json) \
+                 VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, \
+                 $16, $17, $18, $19) \
+                 ON CONFLICT (serial, kind, export_sha256) DO NOTHING RETURNING id",
+            &[
+                Value::text(&recorded_at),
+                Value::text(r.kind.as_str()),
+                Value::text(&r.serial),
+                Value::text(&r.robot),
+                Value::text(&r.robot_title),
+                Value::text(&r.controller_family),
+                Value::text(&profile_sha256),
+                Value::Bytes(Some(r.export.clone())),
+                Value::text(&export_sha256),
+                Value::text(&r.measured_on),
+                opt_text(r.operator.as_ref()),
+                opt_text(r.pendant_unit.as_ref()),
+                Value::Int(r.pendant_result_id.map(i64::from)),
+                Value::Int(r.reference_id),
+                Value::text(&r.zerocal_version),
+                Value::text(&r.verdict),
+                Value::text(&r.brackets_json),
+                Value::text(&r.conditions_json),
+                Value::text(&r.result_json),
+            ],
+        )?;
+        let Some(row) = inserted.first() else {
+            // Already stored (by us earlier or by another process just now).
+            let existing = c.query(
+                "SELECT id FROM records WHERE serial = $1 AND kind = $2 AND export_sha256 = $3",
+                &key,
+            )?;
+            let id = existing
+                .first()
+                .and_then(|row| row.first())
+                .ok_or_else(|| {
+                    HistoryError::Corrupt(
+                        "an insert conflicted with a record that is not there".into(),
+                    )
+                })?
+                .i64("records.id")?;
+            return Ok(Inserted { id, new: false });
+        };
+        let id = row
+            .first()
+            .ok_or_else(|| HistoryError::Corrupt("INSERT returned no ID".into()))?
+            .i64("records.id")?;
+        for j in &r.joints {
+            c.execute(
+                "INSERT INTO joints (record_id, joint, name, offset_deg, expanded_k2_deg, \
+                     controller_offset_deg, pass) VALUES ($1, $2, $3, $4, $5, $6, $7)",
+                &[
+                    Value::Int(Some(id)),
+                    Value::Int(Some(i64::from(j.joint))),
+                    Value::text(&j.name),
+                    Value::Real(Some(j.offset_deg)),
+                    Value::Real(Some(j.expanded_k2_deg)),
+                    Value::Real(Some(j.controller_offset_deg)),
+                    Value::Int(j.pass.map(i64::from)),
+                ],
+            )?;
+        }
+        Ok(Inserted { id, new: true })
+    }
+}
+
 impl History {
     /// Opens the history at `at`, making the database (and for a file, its directory)
     /// when absent or empty, and migrating an older schema.
@@ -501,107 +610,7 @@ impl History {
     /// [`HistoryError::InvalidRecord`] naming the field; the backend's error.
     pub fn insert(&mut self, r: &NewRecord) -> Result<Inserted, HistoryError> {
         validate(r)?;
-        let export_sha256 = sha256_hex(&r.export);
-        let profile_sha256 = sha256_hex(r.profile_toml.as_bytes());
-        let recorded_at = zerocal_civil::Timestamp::clock().to_string();
-        let key = [
-            Value::text(&r.serial),
-            Value::text(r.kind.as_str()),
-            Value::text(&export_sha256),
-        ];
-        self.conn.write(|c| {
-            if let Some(reference) = r.reference_id {
-                let rows = c.query(
-                    "SELECT serial FROM records WHERE id = $1",
-                    &[Value::Int(Some(reference))],
-                )?;
-                let Some(serial) = rows.first().and_then(|row| row.first()) else {
-                    return Err(invalid(format!(
-                        "reference record {reference} does not exist"
-                    )));
-                };
-                let serial = serial.string("records.serial")?;
-                if serial != r.serial {
-                    return Err(invalid(format!(
-                        "reference record {reference} is of serial {serial:?}, not {:?}",
-                        r.serial
-                    )));
-                }
-            }
-            // The profile's text once, by its hash: every record of it refers to it.
-            c.execute(
-                "INSERT INTO texts (sha256, text) VALUES ($1, $2) \
-                 ON CONFLICT (sha256) DO NOTHING",
-                &[Value::text(&profile_sha256), Value::text(&r.profile_toml)],
-            )?;
-            let inserted = c.query(
-                "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
-                 controller_family, profile_sha256, export, export_sha256, \
-                 measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
-                 zerocal_version, verdict, brackets_json, conditions_json, result_json) \
-                 VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, \
-                 $16, $17, $18, $19) \
-                 ON CONFLICT (serial, kind, export_sha256) DO NOTHING RETURNING id",
-                &[
-                    Value::text(&recorded_at),
-                    Value::text(r.kind.as_str()),
-                    Value::text(&r.serial),
-                    Value::text(&r.robot),
-                    Value::text(&r.robot_title),
-                    Value::text(&r.controller_family),
-                    Value::text(&profile_sha256),
-                    Value::Bytes(Some(r.export.clone())),
-                    Value::text(&export_sha256),
-                    Value::text(&r.measured_on),
-                    opt_text(r.operator.as_ref()),
-                    opt_text(r.pendant_unit.as_ref()),
-                    Value::Int(r.pendant_result_id.map(i64::from)),
-                    Value::Int(r.reference_id),
-                    Value::text(&r.zerocal_version),
-                    Value::text(&r.verdict),
-                    Value::text(&r.brackets_json),
-                    Value::text(&r.conditions_json),
-                    Value::text(&r.result_json),
-                ],
-            )?;
-            let Some(row) = inserted.first() else {
-                // Already stored (by us earlier or by another process just now).
-                let existing = c.query(
-                    "SELECT id FROM records WHERE serial = $1 AND kind = $2 AND export_sha256 = $3",
-                    &key,
-                )?;
-                let id = existing
-                    .first()
-                    .and_then(|row| row.first())
-                    .ok_or_else(|| {
-                        HistoryError::Corrupt(
-                            "an insert conflicted with a record that is not there".into(),
-                        )
-                    })?
-                    .i64("records.id")?;
-                return Ok(Inserted { id, new: false });
-            };
-            let id = row
-                .first()
-                .ok_or_else(|| HistoryError::Corrupt("INSERT returned no ID".into()))?
-                .i64("records.id")?;
-            for j in &r.joints {
-                c.execute(
-                    "INSERT INTO joints (record_id, joint, name, offset_deg, expanded_k2_deg, \
-                     controller_offset_deg, pass) VALUES ($1, $2, $3, $4, $5, $6, $7)",
-                    &[
-                        Value::Int(Some(id)),
-                        Value::Int(Some(i64::from(j.joint))),
-                        Value::text(&j.name),
-                        Value::Real(Some(j.offset_deg)),
-                        Value::Real(Some(j.expanded_k2_deg)),
-                        Value::Real(Some(j.controller_offset_deg)),
-                        Value::Int(j.pass.map(i64::from)),
-                    ],
-                )?;
-            }
-            Ok(Inserted { id, new: true })
-        })
+        self.conn.write(|c| insert_in(c, r))
     }
 
     /// The record `id` with its joints.

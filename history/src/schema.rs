@@ -129,6 +129,63 @@ INSERT INTO texts (sha256, text) SELECT DISTINCT profile_sha256, profile_toml FR
 ALTER TABLE records DROP COLUMN profile_toml;
 ",
     },
+    Migration {
+        version: 5,
+        what: "the web application's state, kept in the database so that several servers \
+               share it: users (name, role, Argon2 PHC hash), web sessions (the SHA-256 of \
+               their random ID, the user, the expiry, the CSRF token), login attempts (the \
+               flood limit), signatures (a record checked, then authorized, each by whom and \
+               when), corrections (a new record naming the one it replaces, why and by \
+               whom), the append-only audit log, and an index holding every column the \
+               fleet view reads (a record's columns after its export are read through the \
+               export's overflow pages otherwise) (who, when, what, before and after)",
+        sql: "
+CREATE TABLE users (
+    name TEXT PRIMARY KEY,
+    role TEXT NOT NULL CHECK (role IN ('technician', 'reviewer', 'authorizer', 'admin')),
+    password_phc TEXT NOT NULL,
+    active BIGINT NOT NULL CHECK (active IN (0, 1)),
+    created_at TEXT NOT NULL
+);
+CREATE TABLE web_sessions (
+    id_sha256 TEXT PRIMARY KEY,
+    user_name TEXT NOT NULL REFERENCES users (name),
+    csrf_token TEXT NOT NULL,
+    expires_unix BIGINT NOT NULL
+);
+CREATE TABLE login_attempts (
+    id {id},
+    user_name TEXT NOT NULL,
+    at_unix BIGINT NOT NULL,
+    succeeded BIGINT NOT NULL CHECK (succeeded IN (0, 1))
+);
+CREATE INDEX login_attempts_by_user ON login_attempts (user_name, at_unix);
+CREATE TABLE signatures (
+    record_id BIGINT NOT NULL REFERENCES records (id),
+    step TEXT NOT NULL CHECK (step IN ('checked', 'authorized')),
+    user_name TEXT NOT NULL REFERENCES users (name),
+    signed_at TEXT NOT NULL,
+    PRIMARY KEY (record_id, step)
+);
+CREATE INDEX records_fleet ON records (serial, measured_on, id, kind, robot, robot_title, verdict);
+CREATE TABLE corrections (
+    record_id BIGINT PRIMARY KEY REFERENCES records (id),
+    replaces_id BIGINT NOT NULL UNIQUE REFERENCES records (id),
+    reason TEXT NOT NULL,
+    user_name TEXT NOT NULL,
+    recorded_at TEXT NOT NULL
+);
+CREATE TABLE audit (
+    id {id},
+    at TEXT NOT NULL,
+    actor TEXT NOT NULL,
+    action TEXT NOT NULL,
+    subject TEXT NOT NULL,
+    before_json TEXT,
+    after_json TEXT NOT NULL
+);
+",
+    },
 ];
 
 /// The newest schema version this build reads and writes.

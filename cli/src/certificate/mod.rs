@@ -173,8 +173,17 @@ pub struct CertificateArgs {
 
 /// The issuer's configuration file `--config` names, or the default one.
 fn config_path(args: &CertificateArgs) -> Result<PathBuf, CliError> {
-    if let Some(p) = &args.config {
-        return Ok(p.clone());
+    issuer_config_path(args.config.as_deref())
+}
+
+/// The issuer's configuration file `given`, or the default one
+/// ($XDG_CONFIG_HOME/zerocal/certificate.toml, else ~/.config/zerocal/certificate.toml).
+///
+/// # Errors
+/// None given and neither variable set.
+pub fn issuer_config_path(given: Option<&Path>) -> Result<PathBuf, CliError> {
+    if let Some(p) = given {
+        return Ok(p.to_path_buf());
     }
     let base = std::env::var_os("XDG_CONFIG_HOME")
         .map(PathBuf::from)
@@ -205,19 +214,49 @@ fn config_path(args: &CertificateArgs) -> Result<PathBuf, CliError> {
 pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
     let mut history = args.db.open()?;
     let record = history.get(args.id).map_err(crate::db::history_failed)?;
-    let analysis = crate::stored_session::solve_record(&record)?;
     let path = config_path(args)?;
-    let text = crate::input::read_capped(&path, issuer::MAX_ISSUER_BYTES, "issuer configuration")
+    let (subject, analysis, issued_on) = issue(
+        &mut history,
+        &record,
+        &path,
+        args.tolerance_deg,
+        args.as_left,
+    )?;
+    let written = write_issued_on(&subject, &analysis, &args.out, &issued_on)?;
+    Ok(
+        std::iter::once(format!("certificate no. {}", subject.number))
+            .chain(written.iter().map(|p| format!("wrote {}", p.display())))
+            .collect::<Vec<_>>()
+            .join("\n"),
+    )
+}
+
+/// Issues the certificate of the session `record` in `history` (its number and issue
+/// date kept there, so the same certificate comes out again) by the issuer of the file
+/// `path`, with the robot as left by the check `as_left_id` (default: the latest check
+/// after the entry): what `zerocal certificate` and `zerocal serve` render.
+///
+/// # Errors
+/// As [`run`].
+pub fn issue(
+    history: &mut zerocal_history::History,
+    record: &zerocal_history::Record,
+    path: &Path,
+    tolerance_deg: Option<f64>,
+    as_left_id: Option<i64>,
+) -> Result<(CertificateSubject, Analysis, String), CliError> {
+    let analysis = crate::stored_session::solve_record(record)?;
+    let text = crate::input::read_capped(path, issuer::MAX_ISSUER_BYTES, "issuer configuration")
         .map_err(|e| match e {
-        CliError::Input(m) => CliError::Input(format!(
-            "{m}: a certificate names its laboratory, customer and site from this file \
+            CliError::Input(m) => CliError::Input(format!(
+                "{m}: a certificate names its laboratory, customer and site from this file \
                  (docs/certificate.md gives its format)"
-        )),
-        e => e,
-    })?;
+            )),
+            e => e,
+        })?;
     let issuer =
         issuer::parse(&text).map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
-    let left = match args.as_left {
+    let left = match as_left_id {
         Some(id) => Some(history.get(id).map_err(crate::db::history_failed)?),
         None => history
             .checks_against(record.id)
@@ -256,18 +295,12 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
         profile_sha256: record.profile_sha256.clone(),
         export_sha256: record.export_sha256.clone(),
         zerocal_version: record.new.zerocal_version.clone(),
-        tolerance_deg: args.tolerance_deg,
+        tolerance_deg,
         issuer,
         equipment,
         as_left,
     };
-    let written = write_issued_on(&subject, &analysis, &args.out, &issued.new.issued_on)?;
-    Ok(
-        std::iter::once(format!("certificate no. {}", subject.number))
-            .chain(written.iter().map(|p| format!("wrote {}", p.display())))
-            .collect::<Vec<_>>()
-            .join("\n"),
-    )
+    Ok((subject, analysis, issued.new.issued_on))
 }
 
 /// The certificate of `analysis` (the session solved from the record's export) for the

@@ -1,0 +1,219 @@
+//! `zerocal serve [--db PATH|URL] [--listen ADDR:PORT]`: the plant's web application
+//! over the history (`zerocal_web`), with the CLI's own code solving uploaded exports,
+//! rendering certificates and plotting robots ([`CliProduct`]); and
+//! `zerocal serve --add-user NAME --role ROLE`, which makes an account (its password
+//! from `ZEROCAL_NEW_PASSWORD` or the first line of standard input, never the
+//! command line, where every user of the machine reads it). docs/web.md.
+
+use crate::error::CliError;
+use clap::{Args, ValueEnum};
+use std::io::BufRead;
+use std::net::SocketAddr;
+use std::path::PathBuf;
+use zerocal_history::{History, NewRecord, Record, Role};
+
+/// The environment variable `--add-user` reads the new password from, if set.
+pub const PASSWORD_ENV: &str = "ZEROCAL_NEW_PASSWORD";
+
+/// `--interval-days`: a day to ten years.
+const INTERVAL_DAYS: crate::args::CountIn<u32> = crate::args::CountIn::new(1, 3653);
+
+/// A user's role (docs/web.md).
+#[derive(ValueEnum, Debug, Clone, Copy)]
+pub enum RoleArg {
+    /// Records sessions (uploads exports).
+    Technician,
+    /// Checks a measured session.
+    Reviewer,
+    /// Authorizes a checked session.
+    Authorizer,
+    /// Manages the users.
+    Admin,
+}
+
+impl RoleArg {
+    fn role(self) -> Role {
+        match self {
+            Self::Technician => Role::Technician,
+            Self::Reviewer => Role::Reviewer,
+            Self::Authorizer => Role::Authorizer,
+            Self::Admin => Role::Admin,
+        }
+    }
+}
+
+/// Arguments of `zerocal serve`.
+#[derive(Args, Debug, Clone)]
+pub struct ServeArgs {
+    /// The address and port to listen on, ADDR:PORT. Another address than the
+    /// loopback's is refused without --behind-tls-proxy: the passwords would cross the
+    /// network in clear.
+    #[arg(long, value_name = "ADDR:PORT", default_value = "127.0.0.1:8080")]
+    pub listen: SocketAddr,
+    /// A TLS reverse proxy serves this server (docs/web.md): cookies are marked
+    /// Secure, and a non-loopback --listen is allowed (for the proxy to reach).
+    #[arg(long)]
+    pub behind_tls_proxy: bool,
+    /// The days between calibrations: a robot is due this many days after its last
+    /// session (without it the fleet page shows no due dates). Range: [1, 3653] days.
+    #[arg(long, value_name = "DAYS", value_parser = INTERVAL_DAYS)]
+    pub interval_days: Option<u32>,
+    /// The issuer's configuration for the certificates (as `zerocal certificate
+    /// --config`). Default: $XDG_CONFIG_HOME/zerocal/certificate.toml, else
+    /// ~/.config/zerocal/certificate.toml.
+    #[arg(long, value_name = "FILE")]
+    pub certificate_config: Option<PathBuf>,
+    /// The Chromium that prints certificates to PDF (headless, `--print-to-pdf`).
+    /// Default: `chromium` on PATH; without one, the pages offer no PDF.
+    #[arg(long, value_name = "FILE")]
+    pub chromium: Option<PathBuf>,
+    /// Make this account instead of serving (with --role); its password from
+    /// ZEROCAL_NEW_PASSWORD, else the first line of standard input.
+    #[arg(long, value_name = "NAME", requires = "role")]
+    pub add_user: Option<String>,
+    /// The new account's role.
+    #[arg(long, value_enum, requires = "add_user")]
+    pub role: Option<RoleArg>,
+    #[command(flatten)]
+    pub db: crate::db::DbArg,
+}
+
+/// The CLI's code, as the web application calls it.
+pub struct CliProduct {
+    /// The issuer's configuration file for certificates.
+    pub certificate_config: Option<PathBuf>,
+}
+
+fn message(e: CliError) -> String {
+    e.to_string()
+}
+
+impl zerocal_web::Product for CliProduct {
+    fn solve_export(
+        &self,
+        export: &[u8],
+        serial: &str,
+        operator: &str,
+    ) -> Result<NewRecord, String> {
+        if export.len() > crate::input::MAX_EXPORT_BYTES {
+            return Err(format!(
+                "the export has {} bytes; a pendant's export has at most {}",
+                export.len(),
+                crate::input::MAX_EXPORT_BYTES
+            ));
+        }
+        let args = crate::session::SessionArgs::for_export(PathBuf::from("uploaded export"));
+        let analysis = crate::session::analyse(&args, export).map_err(message)?;
+        let meta = crate::db::RecordMeta {
+            operator: Some(operator.to_owned()),
+            measured_on: None,
+        };
+        crate::session::session_record(&analysis, export, serial, &meta).map_err(message)
+    }
+
+    fn certificate_html(&self, history: &mut History, record: &Record) -> Result<String, String> {
+        let path = crate::certificate::issuer_config_path(self.certificate_config.as_deref())
+            .map_err(message)?;
+        let (subject, analysis, issued_on) =
+            crate::certificate::issue(history, record, &path, None, None).map_err(message)?;
+        crate::certificate::certificate_issued_on(&subject, &analysis, &issued_on)
+            .map(|c| c.html)
+            .map_err(|e| e.to_string())
+    }
+
+    fn robot_plots_svg(&self, serial: &str, records: &[Record]) -> Result<Vec<String>, String> {
+        // The history's plots are written as files; a directory of this call's own.
+        let mut tag = [0_u8; 8];
+        getrandom::fill(&mut tag).map_err(|e| format!("no random source: {e}"))?;
+        let tag: String = tag.iter().map(|b| format!("{b:02x}")).collect();
+        let dir = std::env::temp_dir().join(format!("zerocal-serve-plots-{tag}"));
+        let written = crate::history::plots(&dir, serial, records);
+        let read = written.map_err(message).and_then(|files| {
+            files
+                .iter()
+                .map(|f| std::fs::read_to_string(f).map_err(|e| format!("{}: {e}", f.display())))
+                .collect()
+        });
+        // Nothing of it is kept; a failed removal leaves a temporary directory only.
+        let _ = std::fs::remove_dir_all(&dir);
+        read
+    }
+
+    fn reducer_notes(&self, records: &[Record]) -> Vec<String> {
+        crate::session::reducer_trend::changes_in(records)
+            .iter()
+            .map(crate::session::reducer_trend::ReducerChange::line)
+            .collect()
+    }
+}
+
+/// The new account's password: `ZEROCAL_NEW_PASSWORD`, else standard input's first line.
+fn new_password() -> Result<String, CliError> {
+    if let Ok(p) = std::env::var(PASSWORD_ENV) {
+        return Ok(p);
+    }
+    let mut line = String::new();
+    std::io::stdin()
+        .lock()
+        .read_line(&mut line)
+        .map_err(|e| CliError::Input(format!("serve --add-user: standard input: {e}")))?;
+    Ok(line.trim_end_matches(['\r', '\n']).to_owned())
+}
+
+/// The executable `name` in a directory of PATH.
+fn on_path(name: &str) -> Option<PathBuf> {
+    std::env::split_paths(&std::env::var_os("PATH")?)
+        .map(|d| d.join(name))
+        .find(|p| p.is_file())
+}
+
+/// Runs `zerocal serve`.
+///
+/// # Errors
+/// The history does not open; an account that exists or a password that is empty; a
+/// non-loopback address without --behind-tls-proxy; an address that cannot be bound.
+pub fn run(args: &ServeArgs) -> Result<String, CliError> {
+    let at = args.db.location()?;
+    let mut history = args.db.open()?;
+    if let (Some(name), Some(role)) = (&args.add_user, args.role) {
+        let phc = zerocal_web::hash_password(&new_password()?)
+            .map_err(|e| CliError::Input(format!("serve --add-user: {e}")))?;
+        let actor = match std::env::var("USER") {
+            Ok(u) if !u.is_empty() => format!("zerocal serve --add-user (OS user {u})"),
+            _ => "zerocal serve --add-user".to_owned(),
+        };
+        let user = history
+            .add_user(&actor, name, role.role(), &phc)
+            .map_err(crate::db::history_failed)?;
+        return Ok(format!(
+            "user {} ({}) added to {}",
+            user.name,
+            user.role.as_str(),
+            history.location()
+        ));
+    }
+    if !args.listen.ip().is_loopback() && !args.behind_tls_proxy {
+        return Err(CliError::Input(format!(
+            "serve: --listen {} is not a loopback address: passwords and sessions would cross the network in clear; serve it behind a TLS reverse proxy and say so with --behind-tls-proxy (docs/web.md)",
+            args.listen
+        )));
+    }
+    drop(history);
+    eprintln!("zerocal serve: {} on http://{}", at, args.listen);
+    zerocal_web::serve(
+        args.listen,
+        zerocal_web::Config {
+            db: at,
+            secure_cookies: args.behind_tls_proxy,
+            max_upload_bytes: crate::input::MAX_EXPORT_BYTES
+                + zerocal_web::MULTIPART_OVERHEAD_BYTES,
+            interval_days: args.interval_days,
+            chromium: args.chromium.clone().or_else(|| on_path("chromium")),
+        },
+        Box::new(CliProduct {
+            certificate_config: args.certificate_config.clone(),
+        }),
+    )
+    .map_err(|e| CliError::Refused(format!("serve: {e}")))?;
+    Ok(String::new())
+}

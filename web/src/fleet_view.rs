@@ -1,0 +1,129 @@
+//! The fleet page's rows: every robot with its last session and check, its next due
+//! day, each joint's drift since the session before against the two sessions' combined
+//! U(k = 2), sorted and filtered as the query asks (`History::fleet`, which reads no
+//! export, result or profile: the page stays quick at a plant's size).
+
+use serde::{Deserialize, Serialize};
+use zerocal_civil::Date;
+use zerocal_history::RobotSummary;
+
+/// The fleet page's query: `?sort=serial|due|drift|verdict&q=TEXT&only=due|failed|drifted`.
+#[derive(Debug, Clone, Default, Deserialize, Serialize)]
+pub struct FleetQuery {
+    /// The column to sort by: `serial` (default), `due` (soonest first), `drift`
+    /// (largest first), `verdict` (failed checks first).
+    pub sort: Option<String>,
+    /// Keep the robots whose serial, profile or title holds this text.
+    pub q: Option<String>,
+    /// Keep only the robots `due` (overdue), `failed` (last check not PASS) or
+    /// `drifted` (a joint beyond its combined U).
+    pub only: Option<String>,
+}
+
+/// One robot's row.
+#[derive(Debug, Clone, Serialize)]
+pub struct FleetRow {
+    /// What the history holds of it.
+    pub robot: RobotSummary,
+    /// Each joint's change since the previous session: (joint, change deg, combined U deg, beyond).
+    pub drift: Vec<(u8, f64, f64, bool)>,
+    /// The largest |change| / combined U of its joints (0 without two sessions).
+    pub worst_drift_ratio: f64,
+    /// The last session's day plus the interval, if one is set and there is a session.
+    pub due_on: Option<String>,
+    /// Whether `due_on` is before today.
+    pub overdue: bool,
+    /// Whether the last check did not pass.
+    pub check_failed: bool,
+}
+
+/// The rows of `fleet`, due `interval_days` after each last session (overdue against
+/// `today`), filtered and sorted by `query`.
+///
+/// # Errors
+/// A query naming a sort or filter that does not exist.
+pub fn rows(
+    fleet: Vec<RobotSummary>,
+    interval_days: Option<u32>,
+    today: Date,
+    query: &FleetQuery,
+) -> Result<Vec<FleetRow>, String> {
+    let needle = query.q.as_deref().unwrap_or("").to_lowercase();
+    let only = query.only.as_deref().filter(|o| !o.is_empty());
+    if let Some(o) = only {
+        if !["due", "failed", "drifted"].contains(&o) {
+            return Err(format!("only={o:?} is none of due, failed, drifted"));
+        }
+    }
+    let mut rows: Vec<FleetRow> = fleet
+        .into_iter()
+        .filter(|r| {
+            needle.is_empty()
+                || [&r.serial, &r.robot, &r.robot_title]
+                    .iter()
+                    .any(|f| f.to_lowercase().contains(&needle))
+        })
+        .map(|robot| {
+            let drift: Vec<(u8, f64, f64, bool)> = robot
+                .drift()
+                .iter()
+                .map(|d| {
+                    (
+                        d.joint,
+                        d.change_deg,
+                        d.combined_k2_deg,
+                        d.change_deg.abs() > d.combined_k2_deg,
+                    )
+                })
+                .collect();
+            let worst_drift_ratio = drift
+                .iter()
+                .map(|(_, c, u, _)| if *u > 0.0 { c.abs() / u } else { 0.0 })
+                .fold(0.0, f64::max);
+            // A stored day that is not a date has no due day (the history validates
+            // every day it stores; this is a corrupt row, shown without one).
+            let due = match (interval_days, &robot.last_session) {
+                (Some(days), Some(s)) => Date::parse(&s.measured_on)
+                    .ok()
+                    .map(|d| Date::from_days(d.days() + i64::from(days))),
+                _ => None,
+            };
+            let check_failed = robot
+                .last_check
+                .as_ref()
+                .is_some_and(|c| c.verdict != "PASS");
+            FleetRow {
+                drift,
+                worst_drift_ratio,
+                overdue: due.is_some_and(|d| d.days() < today.days()),
+                due_on: due.map(|d| d.to_string()),
+                check_failed,
+                robot,
+            }
+        })
+        .filter(|r| match only {
+            Some("due") => r.overdue,
+            Some("failed") => r.check_failed,
+            Some("drifted") => r.drift.iter().any(|d| d.3),
+            _ => true,
+        })
+        .collect();
+    match query.sort.as_deref().unwrap_or("serial") {
+        "serial" | "" => {}
+        // Fleet order is by serial already; the others keep it among equals.
+        "due" => rows.sort_by(|a, b| {
+            a.due_on
+                .is_none()
+                .cmp(&b.due_on.is_none())
+                .then(a.due_on.cmp(&b.due_on))
+        }),
+        "drift" => rows.sort_by(|a, b| b.worst_drift_ratio.total_cmp(&a.worst_drift_ratio)),
+        "verdict" => rows.sort_by_key(|r| !r.check_failed),
+        other => {
+            return Err(format!(
+                "sort={other:?} is none of serial, due, drift, verdict"
+            ))
+        }
+    }
+    Ok(rows)
+}

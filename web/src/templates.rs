@@ -1,0 +1,46 @@
+//! The pages' templates (`web/templates/`), compiled into the binary. Auto-escaping is
+//! on for every one of them (minijinja escapes HTML in templates named `*.html`): a
+//! serial, an operator or an error message with markup is shown as text.
+
+use crate::WebError;
+use axum::http::StatusCode;
+use axum::response::Html;
+
+const TEMPLATES: [(&str, &str); 8] = [
+    ("base.html", include_str!("../templates/base.html")),
+    ("login.html", include_str!("../templates/login.html")),
+    ("fleet.html", include_str!("../templates/fleet.html")),
+    ("robot.html", include_str!("../templates/robot.html")),
+    ("upload.html", include_str!("../templates/upload.html")),
+    ("record.html", include_str!("../templates/record.html")),
+    ("users.html", include_str!("../templates/users.html")),
+    ("audit.html", include_str!("../templates/audit.html")),
+];
+
+/// Every template, compiled.
+pub(crate) fn environment() -> Result<minijinja::Environment<'static>, String> {
+    let mut env = minijinja::Environment::new();
+    env.set_auto_escape_callback(|_| minijinja::AutoEscape::Html);
+    for (name, text) in TEMPLATES {
+        env.add_template(name, text)
+            .map_err(|e| format!("template {name}: {e}"))?;
+    }
+    Ok(env)
+}
+
+/// The page `name` rendered with `context`.
+pub(crate) fn render(
+    env: &minijinja::Environment<'static>,
+    name: &str,
+    context: minijinja::Value,
+) -> Result<Html<String>, WebError> {
+    env.get_template(name)
+        .and_then(|t| t.render(context))
+        .map(Html)
+        .map_err(|e| {
+            WebError(
+                StatusCode::INTERNAL_SERVER_ERROR,
+                format!("page {name}: {e}"),
+            )
+        })
+}

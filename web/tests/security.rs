@@ -1,0 +1,634 @@
+//! The web application refuses what it must and changes nothing when it does: a
+//! request without a session, another role's action, a form without its CSRF token,
+//! markup and SQL in fields, an oversized, malformed or another robot's export, and a
+//! flood of sign-ins; and every change it accepts is in the audit log with who, when,
+//! what, before and after. On SQLite, and on PostgreSQL when `ZEROCAL_TEST_POSTGRES`
+//! is set.
+
+// A failed test panics with what it found: that is its report.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+mod common;
+
+use axum::http::{header, StatusCode};
+use common::*;
+use zerocal_web::{LOGIN_WINDOW_SECONDS, MAX_FAILED_LOGINS};
+
+const EXPORT: &[u8] = b"robot kuka-kr6-r900-sixx\nrow 1\n";
+
+#[tokio::test]
+async fn without_a_session_pages_send_to_sign_in_and_actions_are_refused_unchanged() {
+    for site in sites("no_session") {
+        let r = &site.router;
+        let (tec, csrf) = sign_in(r, "tec").await;
+        assert_eq!(
+            upload(r, &tec, &csrf, "R1", EXPORT).await.status,
+            StatusCode::SEE_OTHER
+        );
+        let before = state(&site.at);
+        for page in [
+            "/fleet",
+            "/robot/R1",
+            "/record/1",
+            "/upload",
+            "/audit",
+            "/admin/users",
+            "/record/1/certificate",
+        ] {
+            let reply = get(r, page, "").await;
+            assert_eq!(reply.status, StatusCode::SEE_OTHER, "{} {page}", site.name);
+            assert_eq!(reply.headers.get(header::LOCATION).unwrap(), "/login");
+        }
+        // A made-up session ID is no session.
+        let forged = format!("zerocal_session={}", "0".repeat(64));
+        assert_eq!(
+            get(r, "/fleet", &forged).await.status,
+            StatusCode::SEE_OTHER
+        );
+        for (path, fields) in [
+            (
+                "/record/1/sign",
+                vec![("csrf", csrf.as_str()), ("step", "checked")],
+            ),
+            (
+                "/admin/users",
+                vec![
+                    ("csrf", csrf.as_str()),
+                    ("name", "eve"),
+                    ("role", "admin"),
+                    ("password", "x"),
+                ],
+            ),
+            (
+                "/admin/users/tec",
+                vec![("csrf", csrf.as_str()), ("role", "admin"), ("active", "1")],
+            ),
+            ("/logout", vec![("csrf", csrf.as_str())]),
+        ] {
+            for cookie in ["", forged.as_str()] {
+                let reply = post(r, path, cookie, &fields).await;
+                assert_eq!(
+                    reply.status,
+                    StatusCode::UNAUTHORIZED,
+                    "{} {path}",
+                    site.name
+                );
+            }
+        }
+        assert_eq!(
+            upload(r, "", &csrf, "R2", EXPORT).await.status,
+            StatusCode::UNAUTHORIZED
+        );
+        assert_eq!(state(&site.at), before, "{}", site.name);
+    }
+}
+
+#[tokio::test]
+async fn another_roles_action_is_forbidden_and_changes_nothing() {
+    for site in sites("wrong_role") {
+        let r = &site.router;
+        let (tec, tec_csrf) = sign_in(r, "tec").await;
+        assert_eq!(
+            upload(r, &tec, &tec_csrf, "R1", EXPORT).await.status,
+            StatusCode::SEE_OTHER
+        );
+        let before = state(&site.at);
+        let (rev, rev_csrf) = sign_in(r, "rev").await;
+        let (aut, aut_csrf) = sign_in(r, "aut").await;
+        let (adm, adm_csrf) = sign_in(r, "adm").await;
+        // Technician: records, signs nothing, manages nobody.
+        for step in ["checked", "authorized"] {
+            let reply = post(
+                r,
+                "/record/1/sign",
+                &tec,
+                &[("csrf", &tec_csrf), ("step", step)],
+            )
+            .await;
+            assert_eq!(
+                reply.status,
+                StatusCode::FORBIDDEN,
+                "{} tec {step}",
+                site.name
+            );
+        }
+        for (cookie, csrf) in [(&tec, &tec_csrf), (&rev, &rev_csrf), (&aut, &aut_csrf)] {
+            let reply = post(
+                r,
+                "/admin/users",
+                cookie,
+                &[
+                    ("csrf", csrf),
+                    ("name", "eve"),
+                    ("role", "admin"),
+                    ("password", "pw"),
+                ],
+            )
+            .await;
+            assert_eq!(reply.status, StatusCode::FORBIDDEN, "{}", site.name);
+            let reply = post(
+                r,
+                "/admin/users/tec",
+                cookie,
+                &[("csrf", csrf), ("role", "admin"), ("active", "1")],
+            )
+            .await;
+            assert_eq!(reply.status, StatusCode::FORBIDDEN, "{}", site.name);
+            assert_eq!(
+                get(r, "/admin/users", cookie).await.status,
+                StatusCode::FORBIDDEN
+            );
+        }
+        // Reviewer does not authorize; authorizer does not check; admin signs nothing;
+        // only a technician records.
+        assert_eq!(
+            post(
+                r,
+                "/record/1/sign",
+                &rev,
+                &[("csrf", &rev_csrf), ("step", "authorized")]
+            )
+            .await
+            .status,
+            StatusCode::FORBIDDEN
+        );
+        assert_eq!(
+            post(
+                r,
+                "/record/1/sign",
+                &aut,
+                &[("csrf", &aut_csrf), ("step", "checked")]
+            )
+            .await
+            .status,
+            StatusCode::FORBIDDEN
+        );
+        assert_eq!(
+            post(
+                r,
+                "/record/1/sign",
+                &adm,
+                &[("csrf", &adm_csrf), ("step", "checked")]
+            )
+            .await
+            .status,
+            StatusCode::FORBIDDEN
+        );
+        for (cookie, csrf) in [(&rev, &rev_csrf), (&aut, &aut_csrf), (&adm, &adm_csrf)] {
+            assert_eq!(
+                upload(r, cookie, csrf, "R9", EXPORT).await.status,
+                StatusCode::FORBIDDEN
+            );
+        }
+        assert_eq!(state(&site.at), before, "{}", site.name);
+    }
+}
+
+#[tokio::test]
+async fn a_form_without_its_sessions_csrf_token_is_forbidden() {
+    for site in sites("csrf") {
+        let r = &site.router;
+        let (tec, tec_csrf) = sign_in(r, "tec").await;
+        assert_eq!(
+            upload(r, &tec, &tec_csrf, "R1", EXPORT).await.status,
+            StatusCode::SEE_OTHER
+        );
+        let before = state(&site.at);
+        let (rev, rev_csrf) = sign_in(r, "rev").await;
+        let wrong = "f".repeat(64);
+        // Missing, wrong, and another session's own (valid) token.
+        for fields in [
+            vec![("step", "checked")],
+            vec![("csrf", wrong.as_str()), ("step", "checked")],
+            vec![("csrf", tec_csrf.as_str()), ("step", "checked")],
+        ] {
+            let reply = post(r, "/record/1/sign", &rev, &fields).await;
+            assert_eq!(
+                reply.status,
+                StatusCode::FORBIDDEN,
+                "{} {fields:?}",
+                site.name
+            );
+            assert!(reply.body.contains("CSRF"), "{}", reply.body);
+        }
+        for csrf in ["", wrong.as_str(), rev_csrf.as_str()] {
+            assert_eq!(
+                upload(r, &tec, csrf, "R2", EXPORT).await.status,
+                StatusCode::FORBIDDEN
+            );
+        }
+        assert_eq!(
+            post(r, "/logout", &rev, &[("csrf", &tec_csrf)])
+                .await
+                .status,
+            StatusCode::FORBIDDEN
+        );
+        assert_eq!(state(&site.at), before, "{}", site.name);
+    }
+}
+
+#[tokio::test]
+async fn markup_and_sql_in_fields_are_shown_as_text_and_bound_as_values() {
+    for site in sites("injection") {
+        let r = &site.router;
+        let (tec, csrf) = sign_in(r, "tec").await;
+        let serial = "<script>alert(1)</script>'; DROP TABLE records; --";
+        let reply = upload(r, &tec, &csrf, serial, EXPORT).await;
+        assert_eq!(
+            reply.status,
+            StatusCode::SEE_OTHER,
+            "{}: {}",
+            site.name,
+            reply.body
+        );
+        let records = with_history(&site.at, |h| h.list(None).unwrap());
+        assert_eq!(records.len(), 1, "{}", site.name);
+        assert_eq!(
+            records[0].new.serial, serial,
+            "stored as given, the table intact"
+        );
+        for page in ["/fleet", "/record/1", "/audit"] {
+            let body = get(r, page, &tec).await.body;
+            assert!(!body.contains("<script>"), "{} {page}: {body}", site.name);
+            assert!(body.contains("&lt;script&gt;"), "{} {page}", site.name);
+        }
+        // A sign-in name of SQL signs nobody in, and a search of it finds nothing.
+        assert_eq!(
+            login_as(r, "' OR '1'='1", "' OR '1'='1").await.status,
+            StatusCode::UNAUTHORIZED
+        );
+        let found = get(r, "/fleet?q=%27%20OR%20%271%27%3D%271", &tec).await;
+        assert!(found.body.contains("Fleet: 0 robots"), "{}", found.body);
+        // An admin's new user with markup in its name is shown as text.
+        let (adm, adm_csrf) = sign_in(r, "adm").await;
+        let reply = post(
+            r,
+            "/admin/users",
+            &adm,
+            &[
+                ("csrf", &adm_csrf),
+                ("name", "<b>x</b>"),
+                ("role", "technician"),
+                ("password", "pw"),
+            ],
+        )
+        .await;
+        assert_eq!(reply.status, StatusCode::SEE_OTHER, "{}", reply.body);
+        let users = get(r, "/admin/users", &adm).await.body;
+        assert!(
+            users.contains("&lt;b&gt;x&lt;") && !users.contains("<b>x</b>"),
+            "{users}"
+        );
+        // An unknown sort is refused by name, not run.
+        let bad = get(r, "/fleet?sort=serial;DROP", &tec).await;
+        assert_eq!(bad.status, StatusCode::BAD_REQUEST);
+        assert!(bad
+            .headers
+            .get(header::CONTENT_TYPE)
+            .unwrap()
+            .to_str()
+            .unwrap()
+            .starts_with("text/plain"));
+    }
+}
+
+#[tokio::test]
+async fn an_oversized_malformed_or_other_robots_export_is_refused_and_nothing_recorded() {
+    for site in sites("bad_exports") {
+        let r = &site.router;
+        let (tec, csrf) = sign_in(r, "tec").await;
+        assert_eq!(
+            upload(r, &tec, &csrf, "R1", EXPORT).await.status,
+            StatusCode::SEE_OTHER
+        );
+        let before = state(&site.at);
+        let mut big = EXPORT.to_vec();
+        big.resize(TEST_UPLOAD_LIMIT + 1, b'x');
+        let reply = upload(r, &tec, &csrf, "R2", &big).await;
+        assert_eq!(
+            reply.status,
+            StatusCode::PAYLOAD_TOO_LARGE,
+            "{}: {}",
+            site.name,
+            reply.body
+        );
+        let reply = upload(
+            r,
+            &tec,
+            &csrf,
+            "R2",
+            b"robot kuka-kr6-r900-sixx\nmalformed\n",
+        )
+        .await;
+        assert_eq!(reply.status, StatusCode::UNPROCESSABLE_ENTITY);
+        assert!(reply.body.contains("unknown column"), "{}", reply.body);
+        let reply = upload(r, &tec, &csrf, "R2", b"no robot line").await;
+        assert_eq!(reply.status, StatusCode::UNPROCESSABLE_ENTITY);
+        assert!(
+            reply.body.contains("not a pendant export"),
+            "{}",
+            reply.body
+        );
+        // R1 is a KR6 in the history: a FANUC's export under its serial is another robot's.
+        let reply = upload(r, &tec, &csrf, "R1", b"robot fanuc-m-10id-12\nrow 1\n").await;
+        assert_eq!(reply.status, StatusCode::UNPROCESSABLE_ENTITY);
+        assert!(
+            reply.body.contains("another robot") && reply.body.contains("kuka-kr6-r900-sixx"),
+            "{}",
+            reply.body
+        );
+        assert_eq!(
+            upload(r, &tec, &csrf, "R2", b"").await.status,
+            StatusCode::UNPROCESSABLE_ENTITY
+        );
+        assert_eq!(state(&site.at), before, "{}", site.name);
+    }
+}
+
+#[tokio::test]
+async fn a_flood_of_sign_ins_is_refused_across_servers_sharing_the_database() {
+    for site in sites("login_flood") {
+        let r = &site.router;
+        for i in 0..MAX_FAILED_LOGINS {
+            let reply = login_as(r, "rev", "wrong").await;
+            assert_eq!(
+                reply.status,
+                StatusCode::UNAUTHORIZED,
+                "{} attempt {i}",
+                site.name
+            );
+        }
+        // The right password now: refused, untried, here and on another server.
+        let reply = login_as(r, "rev", PASSWORD).await;
+        assert_eq!(reply.status, StatusCode::TOO_MANY_REQUESTS, "{}", site.name);
+        assert!(reply.headers.get(header::SET_COOKIE).is_none());
+        assert!(
+            reply
+                .body
+                .contains(&format!("{} minutes", LOGIN_WINDOW_SECONDS / 60)),
+            "{}",
+            reply.body
+        );
+        let other = server(&site.at);
+        assert_eq!(
+            login_as(&other, "rev", PASSWORD).await.status,
+            StatusCode::TOO_MANY_REQUESTS
+        );
+        // Another name is not locked by it.
+        sign_in(&other, "tec").await;
+    }
+}
+
+#[tokio::test]
+async fn a_session_started_on_one_server_is_valid_on_another_and_ends_on_both() {
+    for site in sites("shared_sessions") {
+        let (cookie, csrf) = sign_in(&site.router, "tec").await;
+        let other = server(&site.at);
+        assert_eq!(get(&other, "/fleet", &cookie).await.status, StatusCode::OK);
+        assert_eq!(
+            post(&other, "/logout", &cookie, &[("csrf", &csrf)])
+                .await
+                .status,
+            StatusCode::SEE_OTHER
+        );
+        assert_eq!(
+            get(&site.router, "/fleet", &cookie).await.status,
+            StatusCode::SEE_OTHER
+        );
+    }
+}
+
+#[tokio::test]
+async fn every_accepted_change_is_in_the_audit_log_with_who_what_before_and_after() {
+    for site in sites("audit_trail") {
+        let r = &site.router;
+        let (tec, tec_csrf) = sign_in(r, "tec").await;
+        let (rev, rev_csrf) = sign_in(r, "rev").await;
+        let (aut, aut_csrf) = sign_in(r, "aut").await;
+        let (adm, adm_csrf) = sign_in(r, "adm").await;
+        let reply = upload(r, &tec, &tec_csrf, "R1", EXPORT).await;
+        assert_eq!(
+            reply.headers.get(header::LOCATION).unwrap(),
+            "/record/1",
+            "{}",
+            site.name
+        );
+        // Authorizing before the check is refused; then checked, then authorized.
+        let early = post(
+            r,
+            "/record/1/sign",
+            &aut,
+            &[("csrf", &aut_csrf), ("step", "authorized")],
+        )
+        .await;
+        assert_eq!(
+            early.status,
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "{}",
+            early.body
+        );
+        assert_eq!(
+            post(
+                r,
+                "/record/1/sign",
+                &rev,
+                &[("csrf", &rev_csrf), ("step", "checked")]
+            )
+            .await
+            .status,
+            StatusCode::SEE_OTHER
+        );
+        assert_eq!(
+            post(
+                r,
+                "/record/1/sign",
+                &aut,
+                &[("csrf", &aut_csrf), ("step", "authorized")]
+            )
+            .await
+            .status,
+            StatusCode::SEE_OTHER
+        );
+        assert_eq!(
+            post(
+                r,
+                "/admin/users",
+                &adm,
+                &[
+                    ("csrf", &adm_csrf),
+                    ("name", "ana"),
+                    ("role", "reviewer"),
+                    ("password", "pw")
+                ]
+            )
+            .await
+            .status,
+            StatusCode::SEE_OTHER
+        );
+        assert_eq!(
+            post(
+                r,
+                "/admin/users/ana",
+                &adm,
+                &[("csrf", &adm_csrf), ("role", "authorizer"), ("active", "0")]
+            )
+            .await
+            .status,
+            StatusCode::SEE_OTHER
+        );
+        let cert = get(r, "/record/1/certificate", &rev).await;
+        assert!(
+            cert.body.contains("checked by rev") && cert.body.contains("authorized by aut"),
+            "{}",
+            cert.body
+        );
+
+        let (log, operator) = with_history(&site.at, |h| {
+            (h.audit_log(100).unwrap(), h.get(1).unwrap().new.operator)
+        });
+        let log: Vec<_> = log
+            .into_iter()
+            .rev()
+            .filter(|e| e.actor != "setup")
+            .collect();
+        let seen: Vec<(&str, &str, &str)> = log
+            .iter()
+            .map(|e| (e.actor.as_str(), e.action.as_str(), e.subject.as_str()))
+            .collect();
+        assert_eq!(
+            seen,
+            [
+                ("tec", "record.insert", "record 1"),
+                ("rev", "record.sign", "record 1"),
+                ("aut", "record.sign", "record 1"),
+                ("adm", "user.add", "user ana"),
+                ("adm", "user.set", "user ana"),
+            ],
+            "{}",
+            site.name
+        );
+        for e in &log {
+            assert!(
+                zerocal_civil::Timestamp::clock().to_string() >= e.at,
+                "{e:?}"
+            );
+        }
+        assert!(log[0].before_json.is_none() && log[0].after_json.contains("\"operator\":\"tec\""));
+        assert_eq!(
+            log[4].before_json.as_deref(),
+            Some(r#"{"active":true,"name":"ana","role":"reviewer"}"#)
+        );
+        assert_eq!(
+            log[4].after_json,
+            r#"{"active":false,"name":"ana","role":"authorizer"}"#
+        );
+        // The record's operator is the signed-in user, whatever the form said.
+        assert_eq!(operator.as_deref(), Some("tec"));
+        // The audit page shows it to anyone signed in; a disabled user cannot sign in.
+        assert!(get(r, "/audit", &tec).await.body.contains("user.set"));
+        assert_eq!(
+            login_as(r, "ana", "pw").await.status,
+            StatusCode::UNAUTHORIZED
+        );
+    }
+}
+
+#[tokio::test]
+async fn the_certificate_is_printed_to_pdf_by_headless_chromium_where_there_is_one() {
+    let chromium = std::path::Path::new("/usr/bin/chromium");
+    if !chromium.is_file() {
+        eprintln!("no /usr/bin/chromium: the PDF is not tested");
+        return;
+    }
+    let site = sites("pdf").remove(0);
+    let router = zerocal_web::router(
+        zerocal_web::Config {
+            db: site.at.clone(),
+            secure_cookies: false,
+            max_upload_bytes: TEST_UPLOAD_LIMIT,
+            interval_days: None,
+            chromium: Some(chromium.into()),
+        },
+        Box::new(FakeProduct),
+    )
+    .unwrap();
+    let (tec, csrf) = sign_in(&router, "tec").await;
+    assert_eq!(
+        upload(&router, &tec, &csrf, "R1", EXPORT).await.status,
+        StatusCode::SEE_OTHER
+    );
+    assert!(get(&router, "/record/1", &tec)
+        .await
+        .body
+        .contains("certificate.pdf"));
+    let reply = get(&router, "/record/1/certificate.pdf", &tec).await;
+    assert_eq!(reply.status, StatusCode::OK, "{}", reply.body);
+    assert_eq!(
+        reply.headers.get(header::CONTENT_TYPE).unwrap(),
+        "application/pdf"
+    );
+    assert!(reply.body.starts_with("%PDF"));
+    // Without Chromium configured, the download says so.
+    let reply = get(&site.router, "/record/1/certificate.pdf", &tec).await;
+    assert_eq!(reply.status, StatusCode::NOT_FOUND);
+    assert!(reply.body.contains("Chromium"), "{}", reply.body);
+}
+
+#[tokio::test]
+async fn every_page_forbids_scripts_and_framing_and_the_cookie_is_http_only_and_strict() {
+    let site = sites("headers").remove(0);
+    let r = &site.router;
+    for page in ["/login", "/fleet"] {
+        let reply = get(r, page, "").await;
+        let csp = reply
+            .headers
+            .get(header::CONTENT_SECURITY_POLICY)
+            .unwrap()
+            .to_str()
+            .unwrap();
+        assert!(
+            csp.contains("default-src 'none'") && !csp.contains("script-src"),
+            "{csp}"
+        );
+        assert!(csp.contains("frame-ancestors 'none'"), "{csp}");
+        assert_eq!(
+            reply.headers.get(header::X_CONTENT_TYPE_OPTIONS).unwrap(),
+            "nosniff"
+        );
+    }
+    let reply = login_as(r, "tec", PASSWORD).await;
+    let cookie = reply
+        .headers
+        .get(header::SET_COOKIE)
+        .unwrap()
+        .to_str()
+        .unwrap();
+    assert!(
+        cookie.contains("HttpOnly") && cookie.contains("SameSite=Strict"),
+        "{cookie}"
+    );
+    assert!(
+        !cookie.contains("Secure"),
+        "plain HTTP on the loopback: {cookie}"
+    );
+    // Behind a TLS proxy the cookie is Secure.
+    let behind = zerocal_web::router(
+        zerocal_web::Config {
+            db: site.at.clone(),
+            secure_cookies: true,
+            max_upload_bytes: TEST_UPLOAD_LIMIT,
+            interval_days: None,
+            chromium: None,
+        },
+        Box::new(FakeProduct),
+    )
+    .unwrap();
+    let reply = login_as(&behind, "tec", PASSWORD).await;
+    let cookie = reply
+        .headers
+        .get(header::SET_COOKIE)
+        .unwrap()
+        .to_str()
+        .unwrap();
+    assert!(cookie.contains("; Secure"), "{cookie}");
+}
