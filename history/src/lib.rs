@@ -21,7 +21,9 @@ pub use conventions::{Convention, NewConvention};
 pub use corrections::Correction;
 pub use error::HistoryError;
 pub use fleet::{Drift, RecordSummary, RobotSummary};
-pub use review::{AuditEntry, Role, SignStep, Signature, User, WebSession, MAX_USER_CHARS};
+pub use review::{
+    check_user_name, AuditEntry, Role, SignStep, Signature, User, WebSession, MAX_USER_CHARS,
+};
 
 use db::{Conn, Value};
 use serde::{Deserialize, Serialize};

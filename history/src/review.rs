@@ -217,7 +217,12 @@ pub(crate) fn audit_in(
 /// The most characters a user name may have.
 pub const MAX_USER_CHARS: usize = 64;
 
-fn check_user_name(name: &str) -> Result<(), HistoryError> {
+/// A user name as accounts take it: 1 to [`MAX_USER_CHARS`] characters, no control
+/// characters, no white space at either end.
+///
+/// # Errors
+/// The name, and what a name must be.
+pub fn check_user_name(name: &str) -> Result<(), HistoryError> {
     let n = name.chars().count();
     if n == 0 || n > MAX_USER_CHARS || name.trim() != name || name.chars().any(char::is_control) {
         return Err(HistoryError::Refused(format!(

@@ -22,6 +22,10 @@ fn result(r: Result<Response, WebError>) -> Response {
     r.unwrap_or_else(IntoResponse::into_response)
 }
 
+/// The answer to a sign-in refused for its name or password: the same whichever was
+/// wrong, so that it does not tell which names exist.
+const WRONG_SIGN_IN: &str = "the name or the password is wrong, or the account is disabled";
+
 /// `GET /login`.
 pub async fn login_form(State(app): State<Shared>) -> Response {
     result(render(&app.templates, "login.html", context! {}).map(IntoResponse::into_response))
@@ -43,6 +47,14 @@ pub async fn login(
         )
     };
     let outcome = with_history(&app, move |h| {
+        // A name no account can have is refused as a wrong one, and not recorded: a
+        // flood of made-up names must not fill the attempts table.
+        if zerocal_history::check_user_name(&name).is_err() {
+            return Ok(Err((
+                StatusCode::UNAUTHORIZED,
+                WRONG_SIGN_IN.to_owned(),
+            )));
+        }
         let now = now_unix();
         let failures = h.login_failures_since(&name, now - auth::LOGIN_WINDOW_SECONDS)?;
         if failures >= auth::MAX_FAILED_LOGINS {
@@ -67,7 +79,7 @@ pub async fn login(
         if !ok {
             return Ok(Err((
                 StatusCode::UNAUTHORIZED,
-                "the name or the password is wrong, or the account is disabled".to_owned(),
+                WRONG_SIGN_IN.to_owned(),
             )));
         }
         let id = random_hex(32)?;

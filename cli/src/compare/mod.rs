@@ -166,8 +166,14 @@ struct Pair {
     reference_temperature_c: Option<f64>,
 }
 
+/// Whole turns apart count as the same: a wrist joint at θ + 360° is the same physical
+/// pose, and `zerocal plan` turns wrist joints so (`crate::timing::unwind`), so a check
+/// planned by one version matches a session planned by another.
 fn same_pose(a: &[f64; JOINTS], b: &[f64; JOINTS]) -> bool {
-    a.iter().zip(b).all(|(x, y)| (x - y).abs() <= SAME_POSE_RAD)
+    use std::f64::consts::{PI, TAU};
+    a.iter()
+        .zip(b)
+        .all(|(x, y)| ((x - y + PI).rem_euclid(TAU) - PI).abs() <= SAME_POSE_RAD)
 }
 
 /// The captures at one commanded pose, averaged: (mean reading, count, mean temperature).
@@ -597,4 +603,26 @@ pub fn compare(
         consistency,
         notes,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A pose and the same pose with a wrist joint one turn round are one pose (a plan
+    /// of another version may have turned it); a millionth of a radian apart is another.
+    #[test]
+    fn poses_whole_turns_apart_are_the_same_pose() {
+        let a = [0.1, -0.5, 0.7, -3.0, 1.2, 3.1];
+        let mut turned = a;
+        turned[5] -= std::f64::consts::TAU;
+        turned[3] += 2.0 * std::f64::consts::TAU;
+        assert!(same_pose(&a, &turned));
+        let mut other = a;
+        other[4] += 1e-6;
+        assert!(!same_pose(&a, &other));
+        let mut half = a;
+        half[5] += std::f64::consts::PI;
+        assert!(!same_pose(&a, &half));
+    }
 }

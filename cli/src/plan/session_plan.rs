@@ -148,8 +148,12 @@ fn session_order(
         .iter()
         .flat_map(|t| [unwound_plan(profile, t, &distinct.turned), t.clone()])
     {
-        let candidate =
-            SessionPoses::new(profile, &candidate_plan.poses_rad).with_mounts(profile)?;
+        // A candidate without a mounting pose inside the limits is no candidate.
+        let Ok(candidate) =
+            SessionPoses::new(profile, &candidate_plan.poses_rad).with_mounts(profile)
+        else {
+            continue;
+        };
         let t = timing::session_time(&pendant, &timing.model, &candidate);
         if t.total_s <= best.0.total_s {
             best = (t, candidate_plan, candidate);

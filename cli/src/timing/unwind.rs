@@ -11,6 +11,10 @@
 //! the FANUC and Yaskawa wrists) a pose at −170° after one at +170° is a 20° move
 //! instead of 340°.
 //!
+//! Only the wrist's joints are turned: a shoulder or elbow taken the other way round
+//! could sweep the arm through the floor (the limits check poses, not the way between
+//! them).
+//!
 //! What it does not claim: a real reducer whose ratio is not a whole number repeats its
 //! motor-side error only over several output turns, and the cables inside a wrist are
 //! wound one turn further. Neither is in the fit; both are within the transmission
@@ -22,18 +26,24 @@ use zerocal_core::model::JOINTS;
 use zerocal_core::plan::{with_revisits, PoseList};
 use zerocal_profile::Profile;
 
+/// The first joint (0-based) turned by whole turns: the wrist's (joints 4-6). The arm's
+/// joints 2 and 3 are not: the limits check the poses, not the way between them, and a
+/// shoulder or elbow taken the other way round can sweep the arm through the floor or
+/// the stand (a UR5e's shoulder through straight down), where a wrist turning the other
+/// way sweeps only the pendant and the flange about their own axes.
+const FIRST_TURNED: usize = 3;
+
 /// The whole turns tried either way: ±2 covers any limits within ±900°.
 const TURNS: [i32; 5] = [0, -1, 1, -2, 2];
 
-/// The distinct poses of a plan (model rad, in session order) with each joint of joints
-/// 2-6 turned by whole turns where its limits allow (with room for both captures,
-/// [`check_capture_room`]), to the angles that make the least travel from `start`
-/// (model rad, the pose the robot comes from) through every visit: the poses in order
-/// with `revisits` of them visited again (core's [`with_revisits`], which must copy a
-/// pose exactly: the refusal rule finds a revisit by its equal joints). Joint 1 stands
-/// at stage 1's heading and is left as it is. A pose that would leave its room with two
-/// joints turned together (controllers that couple joints 2 and 3) keeps its planned
-/// angles.
+/// The distinct poses of a plan (model rad, in session order) with each wrist joint
+/// (joints 4-6, [`FIRST_TURNED`]) turned by whole turns where its limits allow (with
+/// room for both captures, [`check_capture_room`]), to the angles that make the least
+/// travel from `start` (model rad, the pose the robot comes from) through every visit:
+/// the poses in order with `revisits` of them visited again (core's [`with_revisits`],
+/// which must copy a pose exactly: the refusal rule finds a revisit by its equal
+/// joints). A pose that would leave its room with two joints turned together keeps its
+/// planned angles.
 pub fn unwound(
     profile: &Profile,
     start: &[f64; JOINTS],
@@ -43,7 +53,7 @@ pub fn unwound(
     let options = turn_options(profile, poses);
     let visits = visit_order(poses.len(), revisits);
     let mut out: Vec<[f64; JOINTS]> = poses.to_vec();
-    for joint in 1..JOINTS {
+    for joint in FIRST_TURNED..JOINTS {
         let allowed: Vec<Vec<i32>> = options.iter().map(|o| o[joint].clone()).collect();
         let angles: Vec<f64> = poses.iter().map(|q| q[joint]).collect();
         let turns = least_travel(start[joint], &angles, &allowed, &visits);
@@ -68,7 +78,7 @@ fn has_room(profile: &Profile, q: &[f64; JOINTS]) -> bool {
 
 /// The whole turns (of `TURNS`) each joint of each pose (model rad) may take, one
 /// joint at a time, keeping the room both captures need: `[pose][joint]`, each holding
-/// 0; joint 1 (stage 1's heading) only 0.
+/// 0; joints before [`FIRST_TURNED`] only 0.
 pub fn turn_options(profile: &Profile, poses: &[[f64; JOINTS]]) -> Vec<[Vec<i32>; JOINTS]> {
     poses
         .iter()
@@ -80,7 +90,7 @@ pub fn turn_options(profile: &Profile, poses: &[[f64; JOINTS]]) -> Vec<[Vec<i32>
                     .filter(|&k| {
                         let mut t = *q;
                         t[joint] += f64::from(k) * TAU;
-                        k == 0 || (joint > 0 && has_room(profile, &t))
+                        k == 0 || (joint >= FIRST_TURNED && has_room(profile, &t))
                     })
                     .collect()
             })
@@ -249,6 +259,30 @@ mod tests {
     fn visits_follow_cores_revisits() {
         assert_eq!(visit_order(4, 0), vec![0, 1, 2, 3]);
         assert_eq!(visit_order(4, 3), vec![0, 1, 0, 2, 3, 0, 2]);
+    }
+
+    /// The UR5e's shoulder could take a whole turn within its ±360° limits, but is
+    /// never turned (it could sweep the arm through the floor); its wrist is.
+    #[test]
+    fn the_shoulder_is_never_turned_the_wrist_is() {
+        let Ok(ur) = zerocal_profile::builtin("ur5e") else {
+            panic!("ur5e is built in");
+        };
+        let q0 = ur.stage1_joints_rad;
+        let poses: Vec<[f64; JOINTS]> = [170.0, -170.0, 160.0]
+            .iter()
+            .map(|&a: &f64| {
+                let mut q = q0;
+                q[1] = a.to_radians();
+                q[3] = a.to_radians();
+                q
+            })
+            .collect();
+        let out = unwound(&ur, &q0, &poses, 0);
+        for (u, p) in out.iter().zip(&poses) {
+            assert_eq!(u[..3], p[..3], "joints 1-3");
+        }
+        assert!(out.iter().zip(&poses).any(|(u, p)| u[3] != p[3]), "{out:?}");
     }
 
     /// Every built-in profile: the unwound poses are the same physical poses (each
