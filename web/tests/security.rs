@@ -379,17 +379,19 @@ async fn a_flood_of_sign_ins_is_refused_across_servers_sharing_the_database() {
     }
 }
 
-/// A name no account can have (too long, a control character) is refused as a wrong
-/// one and not recorded: a flood of made-up names cannot fill the attempts table.
+/// A name no account can have is refused as a wrong one and not recorded: a flood of
+/// made-up names cannot fill the attempts table. A NUL in the name (which PostgreSQL's
+/// text cannot hold: before, a 500) is refused the same way.
 #[tokio::test]
 async fn a_sign_in_with_a_name_no_account_can_have_records_nothing() {
     for site in sites("login_bad_name") {
-        for name in ["x".repeat(1_000), "a\u{0}b".to_owned()] {
-            let reply = login_as(&site.router, &name, "whatever").await;
-            assert_eq!(reply.status, StatusCode::UNAUTHORIZED, "{}", site.name);
-            let recorded = with_history(&site.at, |h| h.login_failures_since(&name, 0).unwrap());
-            assert_eq!(recorded, 0, "{}: {} chars", site.name, name.len());
-        }
+        let long = "x".repeat(1_000);
+        let reply = login_as(&site.router, &long, "whatever").await;
+        assert_eq!(reply.status, StatusCode::UNAUTHORIZED, "{}", site.name);
+        let recorded = with_history(&site.at, |h| h.login_failures_since(&long, 0).unwrap());
+        assert_eq!(recorded, 0, "{}", site.name);
+        let reply = login_as(&site.router, "a\u{0}b", "whatever").await;
+        assert_eq!(reply.status, StatusCode::UNAUTHORIZED, "{}", site.name);
     }
 }
 
