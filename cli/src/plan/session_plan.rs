@@ -112,10 +112,10 @@ fn session_order(
     let pendant = Pendant::new(profile);
     let unordered = SessionPoses::new(profile, &p.poses_rad).with_mounts(profile)?;
     let time_unordered = timing::session_time(&pendant, &timing.model, &unordered);
-    let distinct = SessionPoses::new(profile, &p.distinct_poses()).with_mounts(profile)?;
+    let model = p.distinct_poses();
+    let distinct = SessionPoses::new(profile, &model).with_mounts(profile)?;
     // The tour sees each move the short way round where a joint may turn a whole turn
     // (the same physical pose); the poses are then turned to match.
-    let model = p.distinct_poses();
     let options = timing::unwind::turn_options(profile, &model);
     let reach = |i: usize, j: usize| match (model.get(i), model.get(j), options.get(j)) {
         (Some(a), Some(b), Some(o)) => profile.shown_deg(&timing::unwind::nearest(a, b, o)),
