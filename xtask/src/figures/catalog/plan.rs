@@ -164,8 +164,8 @@ pub const ROBOT_TIME_KR16: Figure = Figure {
     make: |s| robot_time(s, "kuka-kr16"),
 };
 
-/// The robot time a default session aims at (min, at 10 % speed): issue 30's "robot
-/// time at most 12 min at 10 % speed".
+/// The robot time a default session aims at (min, at 10 % speed), as docs/planning.md
+/// and core's plan module state it.
 const ROBOT_TIME_AIM_MIN: f64 = 12.0;
 
 /// The built-in profiles whose default plan takes longer than [`ROBOT_TIME_AIM_MIN`],
