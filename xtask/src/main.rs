@@ -6,11 +6,13 @@
 //! linked by Debian's ld.lld, installed with apt-get when missing. [`toolchain`] is the
 //! one owner of that knowledge; `cargo xtask setup` runs it alone.
 
+mod browser_test;
 mod cad;
 mod certificate;
 mod dfu;
 mod dist;
 mod figures;
+mod fleet_bench;
 mod fuzz;
 mod history_demo;
 mod measured;
@@ -139,6 +141,20 @@ enum Command {
     /// xvfb-run when there is no display). Not run by CI: run it after changing a
     /// design and commit the pictures.
     Cad,
+    /// The web application (`zerocal serve`) in headless Chromium, as its people use it:
+    /// on a fresh SQLite history (and PostgreSQL when ZEROCAL_TEST_POSTGRES is set;
+    /// under CI=true it must be), a technician signs in, uploads two simulated exports
+    /// and finds the robot on the fleet page, a reviewer checks and an authorizer signs
+    /// its certificate, each seeing the review's state; the audit log and the users page
+    /// show them. Fails naming the step and what the page showed.
+    BrowserTest {
+        /// Where the histories, exports, server logs and a failure's screenshot go.
+        #[arg(long, default_value = "target/browser-test")]
+        out: PathBuf,
+        /// Write a screenshot of each page into this directory (docs/web).
+        #[arg(long, value_name = "DIR")]
+        screenshots: Option<PathBuf>,
+    },
     /// A throwaway PostgreSQL cluster in target/postgres for the history's tests:
     /// `start` (fresh cluster on a free local port, database zerocal_test; prints its
     /// URL, for ZEROCAL_TEST_POSTGRES) or `stop`.
@@ -146,6 +162,11 @@ enum Command {
         #[arg(value_enum)]
         action: PostgresAction,
     },
+    /// The web application's fleet page at a plant's scale: runs `cargo bench -p
+    /// zerocal-web --bench fleet_page` (1,000 robots, 20,000 records, SQLite) and saves
+    /// its time per page and pages per second in docs/measured/fleet-page.txt, which
+    /// `figures` writes docs/web.md from.
+    FleetBench,
     /// Write every figure the README and docs/ quote from a simulation, a budget, an
     /// example's output or the firmware's size into its marked block
     /// (`<!-- figures:NAME -->` … `<!-- /figures:NAME -->`), each made by the command
@@ -214,6 +235,10 @@ fn main() -> Result<()> {
             numbers,
             outdir,
         } => certificate::run(&html, &numbers, &outdir),
+        Command::FleetBench => fleet_bench::run(&repo_root()),
+        Command::BrowserTest { out, screenshots } => {
+            browser_test::run(&repo_root(), &browser_test::Options { out, screenshots })
+        }
         Command::Postgres {
             action: PostgresAction::Start,
         } => postgres::start(&repo_root()),

@@ -5,7 +5,8 @@
 //! `dfu` for the image's size). Each file says which command and toolchain measured it;
 //! the docs' firmware figures are written from these files only, so a figure there is
 //! always one that command measured. A file is written whole each time: its keys are
-//! the command's.
+//! the command's. Host measurements (`fleet-bench`'s web page times) are
+//! `docs/measured/NAME.txt`, their `toolchain` line naming the compiler and the CPUs.
 
 use std::collections::BTreeMap;
 use std::fs;
@@ -61,6 +62,37 @@ pub fn save(
     Ok(())
 }
 
+/// The file of a host measurement `name` (not of a thumb toolchain's build).
+pub fn host_path(root: &Path, name: &str) -> PathBuf {
+    root.join(DIR).join(format!("{name}.txt"))
+}
+
+/// Saves what `command` measured on this host (`machine`: the compiler and the CPUs it
+/// ran on) as `docs/measured/NAME.txt`.
+///
+/// # Errors
+/// The file cannot be written.
+pub fn save_host(
+    root: &Path,
+    name: &str,
+    command: &str,
+    machine: &str,
+    values: &[(&str, String)],
+) -> Result<()> {
+    let file = host_path(root, name);
+    if let Some(dir) = file.parent() {
+        fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    }
+    let mut text =
+        format!("# measured by `{command}`; read by `cargo xtask figures`\ntoolchain {machine}\n");
+    for (key, value) in values {
+        text.push_str(&format!("{key} {value}\n"));
+    }
+    fs::write(&file, text).with_context(|| format!("writing {}", file.display()))?;
+    println!("saved the measurement in {}", file.display());
+    Ok(())
+}
+
 /// The measurement of `command` with `kind` as the checked-out commit holds it
 /// (`git show HEAD:docs/measured/…`), whatever a build since wrote over the file.
 ///
@@ -105,6 +137,18 @@ impl Measured {
                 kind_name(kind)
             )
         })?;
+        Self::parse(&text, file)
+    }
+
+    /// Reads the host measurement `name` (`save_host`'s), naming `command` to make it
+    /// when it is missing.
+    ///
+    /// # Errors
+    /// A missing or malformed file.
+    pub fn read_host(root: &Path, name: &str, command: &str) -> Result<Measured> {
+        let file = host_path(root, name);
+        let text = fs::read_to_string(&file)
+            .with_context(|| format!("reading {} (run `{command}`)", file.display()))?;
         Self::parse(&text, file)
     }
 

@@ -219,7 +219,7 @@ fn path_str(p: &Path) -> Result<String> {
 }
 
 /// A local TCP port nobody listens on now (the OS's choice for port 0).
-fn free_port() -> Result<u16> {
+pub fn free_port() -> Result<u16> {
     let listener = TcpListener::bind("127.0.0.1:0").context("cannot bind a local port")?;
     Ok(listener.local_addr()?.port())
 }

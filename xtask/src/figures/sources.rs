@@ -185,6 +185,14 @@ impl Sources {
     pub fn measured(&self, command: &str, kind: ToolchainKind) -> Result<Measured> {
         Measured::read(&self.root, command, kind)
     }
+
+    /// The saved host measurement `name`, made by `command`.
+    ///
+    /// # Errors
+    /// None saved, or a malformed file.
+    pub fn measured_host(&self, name: &str, command: &str) -> Result<Measured> {
+        Measured::read_host(&self.root, name, command)
+    }
 }
 
 #[cfg(test)]

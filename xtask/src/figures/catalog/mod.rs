@@ -4,12 +4,14 @@
 //! and `zerocal program` promise, and the worked examples of `zerocal session`),
 //! [`sim`] (the Monte-Carlo tables the tests and `zerocal error-table` print),
 //! [`firmware`] (the firmware's saved measurements against its budgets), [`headline`]
-//! (the README's one-line summaries of those).
+//! (the README's one-line summaries of those), [`web`] (the web application's fleet
+//! page at a plant's scale).
 
 mod firmware;
 mod headline;
 mod plan;
 mod sim;
+mod web;
 
 use anyhow::{anyhow, Result};
 
@@ -133,6 +135,7 @@ pub static CATALOG: &[Figure] = &[
     headline::RESTORE_HEADLINE,
     headline::FIRMWARE_HEADLINE,
     headline::TARGET_FIT_HEADLINE,
+    web::FLEET_PAGE_LOAD,
 ];
 
 #[cfg(test)]
