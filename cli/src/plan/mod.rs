@@ -22,6 +22,7 @@ pub mod plan_json;
 pub mod prediction;
 pub mod session_plan;
 pub mod table;
+pub mod travel_trade;
 
 pub use flags::PlanArgs;
 pub use limits::{narrow_limits, parse_limits, LimitsDeg};

@@ -5,6 +5,7 @@ use super::flags::PlanArgs;
 use super::limits::LimitsDeg;
 use super::prediction::{Correlations, PREDICTED_FROM};
 use super::session_plan::SessionPlan;
+use super::travel_trade::TravelTrade;
 use crate::error::CliError;
 use crate::timing::SpeedSource;
 use serde::Serialize;
@@ -61,6 +62,9 @@ pub struct RobotTimeJson {
     /// Why `zerocal program` would refuse this session (a capture pose without room
     /// on both sides inside the joint limits, say), if it would.
     pub program_refused: Option<String>,
+    /// Poses swapped for travel where the session was over its aim
+    /// ([`super::travel_trade`]); `null` where the planner's poses are kept.
+    pub travel_trade: Option<TravelTrade>,
 }
 
 /// The `--json` output.
@@ -135,6 +139,7 @@ impl RobotTimeJson {
             approach_deg: tm.model.approach_deg,
             overshoot_deg: tm.model.overshoot_deg,
             program_refused: sp.program_refused.clone(),
+            travel_trade: sp.trade,
         }
     }
 }

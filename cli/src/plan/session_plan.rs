@@ -6,6 +6,7 @@
 
 use super::flags::PlanArgs;
 use super::prediction::{correlations, predicted_k2_deg, Correlations};
+use super::travel_trade::{traded_for_travel, TradeInputs, TravelTrade};
 use crate::error::CliError;
 use crate::timing::{self, Pendant, SessionPoses, Timing};
 use zerocal_core::model::{JOINTS, WRIST_JOINTS};
@@ -55,6 +56,9 @@ pub struct SessionPlan {
     pub k2_deg: [f64; WRIST_JOINTS + 1],
     /// The correlations.
     pub correlation: Correlations,
+    /// Poses swapped for travel where the session was over its aim
+    /// ([`super::travel_trade`]).
+    pub trade: Option<TravelTrade>,
 }
 
 impl SessionPlan {
@@ -69,31 +73,32 @@ impl SessionPlan {
     }
 }
 
-/// Plans `poses` poses with the flags' other settings, unordered.
-fn plan_n(
-    args: &PlanArgs,
-    profile: &Profile,
-    poses: usize,
-) -> Result<(PlanConfig<f64>, Plan<f64>), CliError> {
+/// A plan with its settings and the planner's feasible candidates.
+type Planned = (PlanConfig<f64>, Plan<f64>, Vec<Candidate<f64>>);
+
+/// Plans `poses` poses with the flags' other settings, unordered; with the planner's
+/// feasible candidates.
+fn plan_n(args: &PlanArgs, profile: &Profile, poses: usize) -> Result<Planned, CliError> {
     let mut config = args.config(profile)?;
     config.poses = poses;
     let model = args.model(profile);
     let mut pool = vec![Candidate::default(); args.candidates.max(1)];
     let p = plan(&model, &config, &mut pool).map_err(cli_error)?;
-    Ok((config, p))
+    pool.truncate(p.candidates);
+    Ok((config, p, pool))
 }
 
 /// The planned poses in the session's order, with its robot time.
-struct SessionOrder {
+pub(super) struct SessionOrder {
     /// The plan in the session's order (its distinct poses toured, its revisits placed
     /// again after them).
-    plan: Plan<f64>,
+    pub plan: Plan<f64>,
     /// The poses in the controller's terms, in that order.
-    poses: SessionPoses,
+    pub poses: SessionPoses,
     /// The robot time in that order.
-    time: SessionTime<f64>,
+    pub time: SessionTime<f64>,
     /// The robot time in the planner's own order.
-    time_unordered: SessionTime<f64>,
+    pub time_unordered: SessionTime<f64>,
 }
 
 /// The order of the plan's poses (model angles) that makes the session short: its
@@ -104,7 +109,7 @@ struct SessionOrder {
 ///
 /// # Errors
 /// No mounting poses inside the joint limits.
-fn session_order(
+pub(super) fn session_order(
     profile: &Profile,
     timing: &Timing,
     p: &Plan<f64>,
@@ -171,7 +176,11 @@ fn session_order(
 /// `p` with its distinct poses turned by whole turns where that shortens the travel
 /// ([`timing::unwound`], the same physical poses), from `start` (the stage-1 turned
 /// pose, controller degrees), its revisits placed again after them.
-fn unwound_plan(profile: &Profile, p: &Plan<f64>, start_deg: &[f64; JOINTS]) -> Plan<f64> {
+pub(super) fn unwound_plan(
+    profile: &Profile,
+    p: &Plan<f64>,
+    start_deg: &[f64; JOINTS],
+) -> Plan<f64> {
     let distinct = p.distinct_poses();
     let start = profile.model_rad(start_deg);
     let mut poses = PoseList::new();
@@ -206,6 +215,18 @@ pub fn session_plan(
 ) -> Result<SessionPlan, CliError> {
     let t = Timing::new(&profile, &args.timing)?;
     let ordered = session_order(&profile, &t, &p)?;
+    ordered_plan(args, profile, config, t, ordered, None)
+}
+
+/// [`session_plan`] of a plan already in the session's order.
+fn ordered_plan(
+    args: &PlanArgs,
+    profile: Profile,
+    config: PlanConfig<f64>,
+    t: Timing,
+    ordered: SessionOrder,
+    trade: Option<TravelTrade>,
+) -> Result<SessionPlan, CliError> {
     let program_refused = program_refusal(&profile, &ordered.poses);
     let p = ordered.plan;
     let model = args.model(&profile);
@@ -229,6 +250,7 @@ pub fn session_plan(
         program_refused,
         k2_deg,
         correlation,
+        trade,
     })
 }
 
@@ -254,8 +276,21 @@ pub fn make_plan(args: &PlanArgs) -> Result<SessionPlan, CliError> {
     let profile = args.profile()?;
     match args.target_k2_deg {
         None => {
-            let (config, p) = plan_n(args, &profile, args.poses)?;
-            session_plan(args, profile, config, p)
+            let (config, p, pool) = plan_n(args, &profile, args.poses)?;
+            let t = Timing::new(&profile, &args.timing)?;
+            let model = args.model(&profile);
+            let fit = args.fit_config(&profile);
+            let inputs = TradeInputs {
+                profile: &profile,
+                timing: &t,
+                config: &config,
+                model: &model,
+                fit: &fit,
+                captures_per_pose: args.captures_per_pose(),
+                pool: &pool,
+            };
+            let (ordered, trade) = traded_for_travel(&inputs, &p)?;
+            ordered_plan(args, profile, config, t, ordered, trade)
         }
         Some(target) => fewest_poses_reaching(args, profile, target),
     }
@@ -277,7 +312,7 @@ fn fewest_poses_reaching(
     let mut refusal = None;
     for n in fewest_poses(&fit)..=MAX_POSES.saturating_sub(args.revisits) {
         let (config, p) = match plan_n(args, &profile, n) {
-            Ok(v) => v,
+            Ok((config, p, _)) => (config, p),
             // A plan this small may not separate the parameters: try more poses.
             Err(CliError::Refused(m)) => {
                 refusal = Some(m);
@@ -368,7 +403,7 @@ mod tests {
         for robot in ["paper-wrist", "kuka-kr16", "fanuc-m20ia", "ur5e"] {
             let a = args(&["--robot", robot, "--poses", "24", "--revisits", "0"]);
             let profile = crate::robot::load(robot).unwrap_or_else(|e| panic!("{e}"));
-            let (config, p) = plan_n(&a, &profile, 24).unwrap_or_else(|e| panic!("{e}"));
+            let (config, p, _) = plan_n(&a, &profile, 24).unwrap_or_else(|e| panic!("{e}"));
             let model = a.model(&profile);
             let before = predicted_k2_deg(
                 &profile,
@@ -427,7 +462,7 @@ mod tests {
         assert!(sp.k2_deg.iter().all(|u| *u <= 0.03), "{:?}", sp.k2_deg);
         assert!(n >= floor, "{n} < {floor}");
         for fewer in floor..n {
-            if let Ok((_, p)) = plan_n(&a, &profile, fewer) {
+            if let Ok((_, p, _)) = plan_n(&a, &profile, fewer) {
                 let k2 = predicted_k2_deg(
                     &profile,
                     &a.model(&profile),

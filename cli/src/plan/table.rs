@@ -7,7 +7,7 @@ use super::prediction::PREDICTED_FROM;
 use super::session_plan::SessionPlan;
 use crate::timing::{self, SpeedSource};
 use std::fmt::Write;
-use zerocal_core::model::JOINTS;
+use zerocal_core::model::{JOINTS, WRIST_JOINTS};
 use zerocal_core::real::rad_to_deg;
 
 /// The table `zerocal plan` prints by default.
@@ -74,12 +74,19 @@ fn write_prediction(out: &mut String, args: &PlanArgs, sp: &SessionPlan) {
         sigma_deg[2],
         sigma_deg[3]
     );
-    let k2 = sp.k2_deg;
     let _ = writeln!(
         out,
-        "predicted k=2 (deg): j2 {:.5}  j3 {:.5}  j4 {:.5}  j5 {:.5}  j6 {:.5}\n  ({PREDICTED_FROM})",
-        k2[0], k2[1], k2[2], k2[3], k2[4]
+        "predicted k=2 (deg): {}\n  ({PREDICTED_FROM})",
+        k2_line(&sp.k2_deg)
     );
+}
+
+/// Joints 2-6's k = 2 (deg) as the table prints them.
+fn k2_line(k2: &[f64; WRIST_JOINTS + 1]) -> String {
+    format!(
+        "j2 {:.5}  j3 {:.5}  j4 {:.5}  j5 {:.5}  j6 {:.5}",
+        k2[0], k2[1], k2[2], k2[3], k2[4]
+    )
 }
 
 /// The worst correlation, the poorly separated pairs and the plan's conditioning.
@@ -136,6 +143,17 @@ fn write_robot_time(out: &mut String, sp: &SessionPlan) {
         t.ok_stops,
         minutes(sp.time_unordered.total_s),
     );
+    if let Some(trade) = &sp.trade {
+        let _ = writeln!(
+            out,
+            "  the planner's poses took {}, over the {:.0}-minute aim: {} pose(s) swapped for nearer candidates of its pool, each joint's predicted k=2 within {:.0} % of theirs (theirs: {})",
+            minutes(trade.before_s),
+            zerocal_core::plan::ROBOT_TIME_AIM_S / 60.0,
+            trade.swaps,
+            trade.tolerance * 100.0,
+            k2_line(&trade.k2_before_deg),
+        );
+    }
     let _ = writeln!(
         out,
         "  every pose captured twice (stage 1's two and the {} of the plan): every joint arriving from {} deg below, then from {} deg above; the robot's part ends with the pendant taken off the flange; the closing readings on the bench follow with the robot free ({:.0} s: {} captures turned by hand, {} OKs)",

@@ -518,6 +518,12 @@ pub fn plan<T: Real>(
 /// docs/planning.md names the profiles over it).
 pub const SESSION_POSES: usize = 40;
 
+/// The robot time a default session aims at: 12 minutes at 10 % speed, the pendant's
+/// mountings and the operator's OKs included (s). The desktop's plan gives a little
+/// information for shorter travel only where a session would take longer (the cli's
+/// `plan::travel_trade`); docs/planning.md names the profiles still over it.
+pub const ROBOT_TIME_AIM_S: f64 = 720.0;
+
 /// Candidate poses a session's plan is chosen from: a plan that moves joint 2 draws
 /// five joints, where 256 were enough for the wrist's four.
 pub const SESSION_POOL: usize = 1024;
