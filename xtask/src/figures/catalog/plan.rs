@@ -164,9 +164,8 @@ pub const ROBOT_TIME_KR16: Figure = Figure {
     make: |s| robot_time(s, "kuka-kr16"),
 };
 
-/// The robot time a default session aims at (min, at 10 % speed), as docs/planning.md
-/// and core's plan module state it.
-const ROBOT_TIME_AIM_MIN: f64 = 12.0;
+/// The robot time a default session aims at (min, at 10 % speed): core's.
+const ROBOT_TIME_AIM_MIN: f64 = zerocal_core::plan::ROBOT_TIME_AIM_S / 60.0;
 
 /// The built-in profiles whose default plan takes longer than [`ROBOT_TIME_AIM_MIN`],
 /// with their times: "`ur5e` (12.8 min) and `puma560` (16.2 min)", or "none".
