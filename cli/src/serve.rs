@@ -111,11 +111,17 @@ impl zerocal_web::Product for CliProduct {
         crate::session::session_record(&analysis, export, serial, &meta).map_err(message)
     }
 
-    fn certificate_html(&self, history: &mut History, record: &Record) -> Result<String, String> {
+    fn certificate_html(
+        &self,
+        history: &mut History,
+        record: &Record,
+        actor: &str,
+    ) -> Result<String, String> {
         let path = crate::certificate::issuer_config_path(self.certificate_config.as_deref())
             .map_err(message)?;
         let (subject, analysis, issued_on) =
-            crate::certificate::issue(history, record, &path, None, None).map_err(message)?;
+            crate::certificate::issue(history, record, &path, (None, None), Some(actor))
+                .map_err(message)?;
         crate::certificate::certificate_issued_on(&subject, &analysis, &issued_on)
             .map(|c| c.html)
             .map_err(|e| e.to_string())

@@ -174,4 +174,25 @@ async fn an_uploaded_export_is_solved_and_recorded_as_zerocal_session_does_on_ev
         html.contains("Calibration certificate no.") && html.contains("measured by tec"),
         "{html}"
     );
+    // Its first issue is in the audit log, by whom, once: showing it again issues
+    // nothing new.
+    let issued = |h: &mut History| {
+        h.audit_log(500)
+            .unwrap()
+            .into_iter()
+            .filter(|e| e.action == "certificate.issue" && e.subject == "record 1")
+            .map(|e| e.actor)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(issued(&mut h), ["tec"]);
+    let (status, _, _) = send(
+        &router,
+        Request::get("/record/1/certificate")
+            .header(header::COOKIE, &cookie)
+            .body(Body::empty())
+            .unwrap(),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK);
+    assert_eq!(issued(&mut h), ["tec"]);
 }

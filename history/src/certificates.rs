@@ -89,6 +89,19 @@ impl History {
         &mut self,
         c: &NewCertificate,
     ) -> Result<(IssuedCertificate, bool), HistoryError> {
+        self.issue_certificate_by(c, None)
+    }
+
+    /// [`Self::issue_certificate`], a first issue written to the audit log as done by
+    /// `actor` (where given) in the same transaction: no certificate without its entry.
+    ///
+    /// # Errors
+    /// As [`Self::issue_certificate`].
+    pub fn issue_certificate_by(
+        &mut self,
+        c: &NewCertificate,
+        actor: Option<&str>,
+    ) -> Result<(IssuedCertificate, bool), HistoryError> {
         let chars = c.number.chars().count();
         if chars == 0 || chars > MAX_NUMBER_CHARS || c.number.chars().any(char::is_control) {
             return Err(invalid(format!(
@@ -162,6 +175,18 @@ impl History {
                     Value::text(&recorded_at),
                 ],
             )?;
+            if let Some(actor) = actor {
+                crate::review::audit_in(
+                    conn,
+                    actor,
+                    "certificate.issue",
+                    &format!("record {}", c.session_id),
+                    None,
+                    &serde_json::json!({
+                        "number": c.number, "session_id": c.session_id, "issued_on": c.issued_on,
+                    }),
+                )?;
+            }
             Ok((
                 IssuedCertificate {
                     recorded_at: recorded_at.clone(),

@@ -23,6 +23,12 @@ pub(crate) struct Dialect {
     /// already excludes other writers; PostgreSQL takes a transaction-scoped advisory
     /// lock (the key is zerocal's SQLite application ID, any fixed number would do).
     pub lock_schema: Option<&'static str>,
+    /// Run first (with `{table}` named) in a transaction that counts rows and writes
+    /// by that count (a name's failed sign-ins, the active admins), so that two such
+    /// transactions on any servers sharing the database see each other: SQLite's
+    /// `BEGIN IMMEDIATE` already serialises them; PostgreSQL locks the table in a mode
+    /// that conflicts with itself (plain reads go on).
+    pub lock_table: Option<&'static str>,
 }
 
 pub(crate) const SQLITE: Dialect = Dialect {
@@ -31,6 +37,7 @@ pub(crate) const SQLITE: Dialect = Dialect {
     begin_write: "BEGIN IMMEDIATE",
     question_parameters: true,
     lock_schema: None,
+    lock_table: None,
 };
 
 pub(crate) const POSTGRES: Dialect = Dialect {
@@ -39,6 +46,7 @@ pub(crate) const POSTGRES: Dialect = Dialect {
     begin_write: "BEGIN",
     question_parameters: false,
     lock_schema: Some("SELECT pg_advisory_xact_lock(1514357068)"),
+    lock_table: Some("LOCK TABLE {table} IN SHARE ROW EXCLUSIVE MODE"),
 };
 
 impl Dialect {
@@ -249,6 +257,18 @@ impl Conn {
                 let refs: Vec<&(dyn ToSql + Sync)> = boxed.iter().map(AsRef::as_ref).collect();
                 Ok(c.execute(&sql, &refs)?)
             }
+        }
+    }
+
+    /// Inside a writing transaction: locks `table` against other transactions that
+    /// count its rows to decide a write ([`Dialect::lock_table`]).
+    ///
+    /// # Errors
+    /// The backend's.
+    pub fn lock_table(&mut self, table: &str) -> Result<(), HistoryError> {
+        match self.dialect().lock_table {
+            Some(sql) => self.batch(&sql.replace("{table}", table)),
+            None => Ok(()),
         }
     }
 

@@ -22,7 +22,8 @@ pub use corrections::Correction;
 pub use error::HistoryError;
 pub use fleet::{Drift, RecordSummary, RobotSummary};
 pub use review::{
-    check_user_name, AuditEntry, Role, SignStep, Signature, User, WebSession, MAX_USER_CHARS,
+    check_user_name, AuditEntry, LoginGate, Role, SignStep, Signature, User, WebSession,
+    MAX_USER_CHARS,
 };
 
 use db::{Conn, Value};

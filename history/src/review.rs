@@ -97,6 +97,15 @@ impl SignStep {
         }
     }
 
+    /// What the step's signer does: `checks`, `authorizes`.
+    #[must_use]
+    pub fn verb(self) -> &'static str {
+        match self {
+            Self::Checked => "checks",
+            Self::Authorized => "authorizes",
+        }
+    }
+
     /// The role that signs this step.
     #[must_use]
     pub fn role(self) -> Role {
@@ -314,6 +323,7 @@ impl History {
         active: bool,
     ) -> Result<User, HistoryError> {
         self.conn.write(|c| {
+            c.lock_table("users")?;
             let before = user_in(c, name)?
                 .ok_or_else(|| HistoryError::Refused(format!("no user {name:?}")))?;
             c.execute(
@@ -324,6 +334,22 @@ impl History {
                     Value::text(name),
                 ],
             )?;
+            // Someone must be able to manage the users: the last active admin stays one.
+            let admins = c.query(
+                "SELECT count(*) FROM users WHERE role = $1 AND active = 1",
+                &[Value::text(Role::Admin.as_str())],
+            )?;
+            let admins = admins
+                .first()
+                .and_then(|r| r.first())
+                .ok_or_else(|| HistoryError::Corrupt("count(*) returned nothing".into()))?
+                .i64("count")?;
+            let was_admin = before.role == Role::Admin && before.active;
+            if was_admin && admins == 0 {
+                return Err(HistoryError::Refused(format!(
+                    "{name} is the last active admin: make another admin first"
+                )));
+            }
             c.execute(
                 "DELETE FROM web_sessions WHERE user_name = $1",
                 &[Value::text(name)],
@@ -369,7 +395,7 @@ impl History {
             .collect()
     }
 
-    /// Records a sign-in attempt for `name` at `at_unix` (seconds).
+    /// Records a finished sign-in attempt for `name` at `at_unix` (seconds).
     ///
     /// # Errors
     /// The backend's.
@@ -379,13 +405,43 @@ impl History {
         at_unix: i64,
         succeeded: bool,
     ) -> Result<(), HistoryError> {
+        insert_attempt(&mut self.conn, name, at_unix, succeeded).map(|_| ())
+    }
+
+    /// Starts a sign-in attempt for `name` at `at_unix` (seconds), in one transaction:
+    /// refused ([`LoginGate::Refused`]) where `max_failures` failed since `since_unix`
+    /// (after the last success), else recorded as failed until
+    /// [`Self::mark_login_succeeded`] says otherwise. Recorded before the password is
+    /// checked, and counted under a lock, so that parallel guesses (on any server
+    /// sharing the database) cannot all pass the same count.
+    ///
+    /// # Errors
+    /// The backend's.
+    pub fn begin_login_attempt(
+        &mut self,
+        name: &str,
+        at_unix: i64,
+        since_unix: i64,
+        max_failures: i64,
+    ) -> Result<LoginGate, HistoryError> {
+        self.conn.write(|c| {
+            c.lock_table("login_attempts")?;
+            let failures = failures_since(c, name, since_unix)?;
+            if failures >= max_failures {
+                return Ok(LoginGate::Refused { failures });
+            }
+            insert_attempt(c, name, at_unix, false).map(LoginGate::Attempt)
+        })
+    }
+
+    /// Marks the attempt `id` ([`LoginGate::Attempt`]) as succeeded.
+    ///
+    /// # Errors
+    /// The backend's.
+    pub fn mark_login_succeeded(&mut self, id: i64) -> Result<(), HistoryError> {
         self.conn.execute(
-            "INSERT INTO login_attempts (user_name, at_unix, succeeded) VALUES ($1, $2, $3)",
-            &[
-                Value::text(name),
-                Value::Int(Some(at_unix)),
-                Value::Int(Some(i64::from(succeeded))),
-            ],
+            "UPDATE login_attempts SET succeeded = 1 WHERE id = $1",
+            &[Value::Int(Some(id))],
         )?;
         Ok(())
     }
@@ -400,16 +456,7 @@ impl History {
         name: &str,
         since_unix: i64,
     ) -> Result<i64, HistoryError> {
-        let rows = self.conn.query(
-            "SELECT count(*) FROM login_attempts WHERE user_name = $1 AND succeeded = 0 \
-             AND at_unix >= $2 AND id > COALESCE((SELECT max(id) FROM login_attempts \
-             WHERE user_name = $1 AND succeeded = 1), 0)",
-            &[Value::text(name), Value::Int(Some(since_unix))],
-        )?;
-        rows.first()
-            .and_then(|r| r.first())
-            .ok_or_else(|| HistoryError::Corrupt("count(*) returned nothing".into()))?
-            .i64("count")
+        failures_since(&mut self.conn, name, since_unix)
     }
 
     /// Stores a signed-in session: the SHA-256 of its random ID (the ID itself is only
@@ -500,18 +547,24 @@ impl History {
                     step.role().as_str()
                 )));
             }
-            let kind = c.query(
-                "SELECT kind FROM records WHERE id = $1",
+            let row = c.query(
+                "SELECT kind, operator FROM records WHERE id = $1",
                 &[Value::Int(Some(record_id))],
             )?;
-            match kind.first().and_then(|r| r.first()) {
-                None => return Err(HistoryError::NoSuchRecord(record_id)),
-                Some(k) if k.string("records.kind")? != "session" => {
-                    return Err(HistoryError::Refused(format!(
-                        "record {record_id} is a check: only a session is signed"
-                    )))
-                }
-                Some(_) => {}
+            let [kind, operator] = row.first().map(Vec::as_slice).unwrap_or_default() else {
+                return Err(HistoryError::NoSuchRecord(record_id));
+            };
+            if kind.string("records.kind")? != "session" {
+                return Err(HistoryError::Refused(format!(
+                    "record {record_id} is a check: only a session is signed"
+                )));
+            }
+            // Four eyes: whoever measured does not check or authorize the measurement.
+            if operator.opt_text("records.operator")?.as_deref() == Some(actor) {
+                return Err(HistoryError::Refused(format!(
+                    "{actor} measured record {record_id}: another person {} it",
+                    step.verb()
+                )));
             }
             let before = signatures_in(c, record_id)?;
             if before.iter().any(|s| s.step == step) {
@@ -633,4 +686,52 @@ fn signatures_in(c: &mut Conn, record_id: i64) -> Result<Vec<Signature>, History
         .collect::<Result<Vec<_>, _>>()?;
     out.sort_by_key(|s| s.step == SignStep::Authorized);
     Ok(out)
+}
+
+/// What [`History::begin_login_attempt`] decided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LoginGate {
+    /// Too many failures: refused, the password not tried, nothing recorded.
+    Refused {
+        /// The failures counted.
+        failures: i64,
+    },
+    /// Recorded (as failed so far): the attempt's ID.
+    Attempt(i64),
+}
+
+/// Inserts an attempt; its ID.
+fn insert_attempt(
+    c: &mut Conn,
+    name: &str,
+    at_unix: i64,
+    succeeded: bool,
+) -> Result<i64, HistoryError> {
+    let rows = c.query(
+        "INSERT INTO login_attempts (user_name, at_unix, succeeded) VALUES ($1, $2, $3) \
+         RETURNING id",
+        &[
+            Value::text(name),
+            Value::Int(Some(at_unix)),
+            Value::Int(Some(i64::from(succeeded))),
+        ],
+    )?;
+    rows.first()
+        .and_then(|r| r.first())
+        .ok_or_else(|| HistoryError::Corrupt("an insert returned no id".into()))?
+        .i64("login_attempts.id")
+}
+
+/// `name`'s failed attempts since `since_unix`, after its last successful one.
+fn failures_since(c: &mut Conn, name: &str, since_unix: i64) -> Result<i64, HistoryError> {
+    let rows = c.query(
+        "SELECT count(*) FROM login_attempts WHERE user_name = $1 AND succeeded = 0 \
+         AND at_unix >= $2 AND id > COALESCE((SELECT max(id) FROM login_attempts \
+         WHERE user_name = $1 AND succeeded = 1), 0)",
+        &[Value::text(name), Value::Int(Some(since_unix))],
+    )?;
+    rows.first()
+        .and_then(|r| r.first())
+        .ok_or_else(|| HistoryError::Corrupt("count(*) returned nothing".into()))?
+        .i64("count")
 }

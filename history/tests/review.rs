@@ -10,7 +10,7 @@
 mod common;
 
 use common::{backends, record};
-use zerocal_history::{History, HistoryError, RecordKind, Role, SignStep};
+use zerocal_history::{History, HistoryError, LoginGate, RecordKind, Role, SignStep};
 
 #[test]
 fn a_session_is_checked_then_authorized_by_two_people_each_with_the_role() {
@@ -109,6 +109,80 @@ fn one_person_does_not_check_and_authorize() {
             matches!(&r, Err(HistoryError::Refused(m)) if m.contains("another person")),
             "{r:?}"
         );
+    }
+}
+
+/// Whoever measured a session (its operator) neither checks nor authorizes it, and a
+/// refused signature leaves none behind.
+#[test]
+fn the_operator_does_not_check_or_authorize_the_measurement() {
+    for b in backends("review_operator") {
+        let mut h = History::open(&b.at).unwrap();
+        let mut r = record(RecordKind::Session, "R1", 1, 64);
+        r.operator = Some("ops".into());
+        let id = h.insert(&r).unwrap().id;
+        h.add_user("setup", "ops", Role::Reviewer, "x").unwrap();
+        h.add_user("setup", "rev", Role::Reviewer, "x").unwrap();
+        let refused = h.sign("ops", id, SignStep::Checked);
+        assert!(
+            matches!(&refused, Err(HistoryError::Refused(m)) if m.contains("ops measured")),
+            "{refused:?}"
+        );
+        assert!(h.signatures(id).unwrap().is_empty());
+        h.sign("rev", id, SignStep::Checked).unwrap();
+        h.set_user("setup", "ops", Role::Authorizer, true).unwrap();
+        let refused = h.sign("ops", id, SignStep::Authorized);
+        assert!(
+            matches!(&refused, Err(HistoryError::Refused(m)) if m.contains("another person authorizes")),
+            "{refused:?}"
+        );
+    }
+}
+
+/// The last active admin can neither be disabled nor lose the role (nobody could manage
+/// the users after); with a second admin, either can.
+#[test]
+fn the_last_active_admin_stays_one() {
+    for b in backends("review_last_admin") {
+        let mut h = History::open(&b.at).unwrap();
+        h.add_user("setup", "adm", Role::Admin, "x").unwrap();
+        for (role, active) in [(Role::Admin, false), (Role::Reviewer, true)] {
+            let r = h.set_user("adm", "adm", role, active);
+            assert!(
+                matches!(&r, Err(HistoryError::Refused(m)) if m.contains("last active admin")),
+                "{r:?}"
+            );
+        }
+        assert!(h
+            .user("adm")
+            .unwrap()
+            .is_some_and(|u| u.active && u.role == Role::Admin));
+        h.add_user("adm", "adm2", Role::Admin, "x").unwrap();
+        h.set_user("adm2", "adm", Role::Reviewer, true).unwrap();
+    }
+}
+
+/// Failed sign-ins started in parallel each count: the gate refuses once the limit is
+/// reached, and a marked success resets the count.
+#[test]
+fn a_login_attempt_is_counted_before_its_password_is_checked() {
+    for b in backends("review_login_gate") {
+        let mut h = History::open(&b.at).unwrap();
+        for t in 0..3 {
+            assert!(matches!(
+                h.begin_login_attempt("ana", t, 0, 3).unwrap(),
+                LoginGate::Attempt(_)
+            ));
+        }
+        assert_eq!(
+            h.begin_login_attempt("ana", 4, 0, 3).unwrap(),
+            LoginGate::Refused { failures: 3 }
+        );
+        let LoginGate::Attempt(id) = h.begin_login_attempt("ana", 5, 0, 4).unwrap() else {
+            panic!("refused under a limit of 4");
+        };
+        h.mark_login_succeeded(id).unwrap();
+        assert_eq!(h.login_failures_since("ana", 0).unwrap(), 0);
     }
 }
 

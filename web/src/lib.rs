@@ -48,11 +48,17 @@ pub trait Product: Send + Sync + 'static {
     ) -> Result<NewRecord, String>;
 
     /// The certificate (HTML document) of the session `record`, issued in `history`
-    /// as `zerocal certificate` issues it (the same number again once issued).
+    /// as `zerocal certificate` issues it (the same number again once issued), a first
+    /// issue audited as `actor`'s in the same transaction.
     ///
     /// # Errors
     /// A record no certificate can be made of, no issuer configured.
-    fn certificate_html(&self, history: &mut History, record: &Record) -> Result<String, String>;
+    fn certificate_html(
+        &self,
+        history: &mut History,
+        record: &Record,
+        actor: &str,
+    ) -> Result<String, String>;
 
     /// The robot's plots over time (each joint's zero and U, its reducers), each an SVG
     /// document, from its records in ID order.
@@ -165,6 +171,41 @@ async fn security_headers(req: axum::extract::Request, next: axum::middleware::N
     res
 }
 
+/// Refuses a form sent from another site (403, nothing done): the browser says where a
+/// request comes from in `Sec-Fetch-Site` (every current browser) and `Origin`. The
+/// session cookie is `SameSite=Strict`, so another site's form carries no session; this
+/// also stops one that signs the victim in as the attacker (login CSRF), which needs no
+/// session. Without `Sec-Fetch-Site` (an older browser) `Origin` must name this host
+/// (a proxy must pass `Host` on: docs/web.md); a request with neither (a script)
+/// passes to the CSRF token and the session like any other.
+async fn same_site_forms(req: axum::extract::Request, next: axum::middleware::Next) -> Response {
+    if req.method() == axum::http::Method::POST {
+        let headers = req.headers();
+        let fetch_site = headers.get("sec-fetch-site").and_then(|v| v.to_str().ok());
+        let host = headers.get(header::HOST).and_then(|v| v.to_str().ok());
+        let origin_host = headers
+            .get(header::ORIGIN)
+            .and_then(|v| v.to_str().ok())
+            .map(|o| o.split_once("://").map_or(o, |(_, rest)| rest));
+        // The browser's own word first: a proxy may rewrite `Host`, never it.
+        let cross_site = match (fetch_site, origin_host, host) {
+            (Some(site), _, _) => site != "same-origin" && site != "none",
+            (None, Some("null"), _) => true,
+            (None, Some(o), Some(h)) => !o.eq_ignore_ascii_case(h),
+            _ => false,
+        };
+        if cross_site {
+            return WebError(
+                StatusCode::FORBIDDEN,
+                "a form sent from another site: open this server's own page and send it from there"
+                    .into(),
+            )
+            .into_response();
+        }
+    }
+    next.run(req).await
+}
+
 /// The application's routes over `config`'s history, with `product` solving and
 /// rendering as the CLI does.
 ///
@@ -199,6 +240,7 @@ pub fn router(config: Config, product: Box<dyn Product>) -> Result<Router, Strin
         .route("/admin/users/{name}", post(review_pages::set_user))
         .route("/audit", get(review_pages::audit))
         .layer(DefaultBodyLimit::max(limit))
+        .layer(axum::middleware::from_fn(same_site_forms))
         .layer(axum::middleware::from_fn(security_headers))
         .with_state(app))
 }

@@ -11,7 +11,7 @@ use axum::response::{IntoResponse, Redirect, Response};
 use axum::Form;
 use minijinja::context;
 use std::collections::HashMap;
-use zerocal_history::{sha256_hex, RecordKind, Role};
+use zerocal_history::{sha256_hex, LoginGate, RecordKind, Role};
 
 /// `/`: the fleet.
 pub async fn home() -> Redirect {
@@ -56,16 +56,26 @@ pub async fn login(
             )));
         }
         let now = now_unix();
-        let failures = h.login_failures_since(&name, now - auth::LOGIN_WINDOW_SECONDS)?;
-        if failures >= auth::MAX_FAILED_LOGINS {
-            return Ok(Err((
-                StatusCode::TOO_MANY_REQUESTS,
-                format!(
-                    "{failures} failed sign-ins for this name in the last {} minutes: refused until they are older",
-                    auth::LOGIN_WINDOW_SECONDS / 60
-                ),
-            )));
-        }
+        // The count and this attempt's row in one locked transaction, the attempt
+        // recorded failed before its password is tried: parallel guesses cannot all
+        // pass the same count.
+        let attempt = match h.begin_login_attempt(
+            &name,
+            now,
+            now - auth::LOGIN_WINDOW_SECONDS,
+            auth::MAX_FAILED_LOGINS,
+        )? {
+            LoginGate::Attempt(id) => id,
+            LoginGate::Refused { failures } => {
+                return Ok(Err((
+                    StatusCode::TOO_MANY_REQUESTS,
+                    format!(
+                        "{failures} failed sign-ins for this name in the last {} minutes: refused until they are older",
+                        auth::LOGIN_WINDOW_SECONDS / 60
+                    ),
+                )));
+            }
+        };
         // An unknown name costs one Argon2 verification too, so that the time taken
         // does not tell which names exist.
         let ok = match h.user(&name)? {
@@ -75,13 +85,13 @@ pub async fn login(
                 false
             }
         };
-        h.record_login_attempt(&name, now, ok)?;
         if !ok {
             return Ok(Err((
                 StatusCode::UNAUTHORIZED,
                 WRONG_SIGN_IN.to_owned(),
             )));
         }
+        h.mark_login_succeeded(attempt)?;
         let id = random_hex(32)?;
         let csrf = random_hex(32)?;
         h.start_web_session(&sha256_hex(id.as_bytes()), &name, &csrf, now + auth::SESSION_SECONDS)?;

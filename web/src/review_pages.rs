@@ -10,7 +10,7 @@ use axum::response::{Html, IntoResponse, Redirect, Response};
 use axum::Form;
 use minijinja::context;
 use std::collections::HashMap;
-use zerocal_history::{RecordKind, Role, SignStep};
+use zerocal_history::{RecordKind, Role, SignStep, WebSession};
 
 fn result(r: Result<Response, WebError>) -> Response {
     r.unwrap_or_else(IntoResponse::into_response)
@@ -86,8 +86,9 @@ fn signature_block(
 
 /// The session's certificate as `zerocal certificate` makes it (issued in the history
 /// the first time, audited then), with its review under it.
-async fn certificate_of(app: &Shared, actor: String, id: i64) -> Result<String, WebError> {
+async fn certificate_of(app: &Shared, actor: &WebSession, id: i64) -> Result<String, WebError> {
     let app2 = app.clone();
+    let (name, role) = (actor.user.name.clone(), actor.user.role);
     with_history(app, move |h| {
         let record = h.get(id)?;
         if record.new.kind != RecordKind::Session {
@@ -96,26 +97,26 @@ async fn certificate_of(app: &Shared, actor: String, id: i64) -> Result<String, 
                 format!("record {id} is a check: a certificate is of a session"),
             ));
         }
-        let before = h.certificates_of(id)?.len();
-        let html = app2.product.certificate_html(h, &record).map_err(|e| {
-            WebError(
-                StatusCode::UNPROCESSABLE_ENTITY,
-                format!("certificate: {e}"),
-            )
-        })?;
-        let issued = h.certificates_of(id)?;
-        if issued.len() > before {
-            if let Some(c) = issued.last() {
-                h.audit_note(
-                    &actor,
-                    "certificate.issue",
-                    &format!("record {id}"),
-                    &serde_json::json!({
-                        "number": c.new.number, "session_id": id, "issued_on": c.new.issued_on,
-                    }),
-                )?;
-            }
+        // Everyone signed in reads an issued certificate; a first issue gives it a
+        // number, which those who work the records do, not the users' admin.
+        if h.certificates_of(id)?.is_empty() && !CERTIFICATE_ISSUERS.contains(&role) {
+            return Err(WebError(
+                StatusCode::FORBIDDEN,
+                format!(
+                    "record {id} has no certificate yet, and a {} does not issue one: a technician, reviewer or authorizer does",
+                    role.as_str()
+                ),
+            ));
         }
+        let html = app2
+            .product
+            .certificate_html(h, &record, &name)
+            .map_err(|e| {
+                WebError(
+                    StatusCode::UNPROCESSABLE_ENTITY,
+                    format!("certificate: {e}"),
+                )
+            })?;
         let block = signature_block(id, record.new.operator.as_deref(), &h.signatures(id)?);
         Ok(match html.rfind("</body>") {
             Some(at) => format!("{}{block}{}", &html[..at], &html[at..]),
@@ -124,6 +125,9 @@ async fn certificate_of(app: &Shared, actor: String, id: i64) -> Result<String, 
     })
     .await
 }
+
+/// The roles that may issue a record's first certificate.
+const CERTIFICATE_ISSUERS: [Role; 3] = [Role::Technician, Role::Reviewer, Role::Authorizer];
 
 /// `GET /record/ID/certificate`: the certificate, HTML.
 pub async fn certificate(
@@ -136,7 +140,7 @@ pub async fn certificate(
         Err(r) => return r,
     };
     result(
-        certificate_of(&app, s.user.name, id)
+        certificate_of(&app, &s, id)
             .await
             .map(|html| Html(html).into_response()),
     )
@@ -160,7 +164,7 @@ pub async fn certificate_pdf(
                     .into(),
             )
         })?;
-        let html = certificate_of(&app, s.user.name, id).await?;
+        let html = certificate_of(&app, &s, id).await?;
         let pdf = tokio::task::spawn_blocking(move || crate::pdf::print(&chromium, &html))
             .await
             .map_err(|e| WebError(StatusCode::INTERNAL_SERVER_ERROR, format!("worker: {e}")))?

@@ -21,11 +21,25 @@ const TEMPLATES: [(&str, &str); 8] = [
 pub(crate) fn environment() -> Result<minijinja::Environment<'static>, String> {
     let mut env = minijinja::Environment::new();
     env.set_auto_escape_callback(|_| minijinja::AutoEscape::Html);
+    env.add_filter("segment", segment);
     for (name, text) in TEMPLATES {
         env.add_template(name, text)
             .map_err(|e| format!("template {name}: {e}"))?;
     }
     Ok(env)
+}
+
+/// `text` as one path segment of a link: every byte but letters, digits and `-._~`
+/// percent-encoded, so that a serial or user name holding `/`, `?` or `#` links to its
+/// own page (minijinja's `urlencode` keeps `/`, meant for whole paths). The route's
+/// extractor decodes it back.
+fn segment(text: &str) -> String {
+    const SEGMENT: &percent_encoding::AsciiSet = &percent_encoding::NON_ALPHANUMERIC
+        .remove(b'-')
+        .remove(b'.')
+        .remove(b'_')
+        .remove(b'~');
+    percent_encoding::utf8_percent_encode(text, SEGMENT).to_string()
 }
 
 /// The page `name` rendered with `context`.

@@ -227,6 +227,50 @@ async fn a_form_without_its_sessions_csrf_token_is_forbidden() {
     }
 }
 
+/// A serial holding `/`, `?`, `#` or a space links to its own robot page (each link's
+/// segment percent-encoded whole; minijinja's urlencode keeps `/`, which made such a
+/// link a path no route has).
+#[tokio::test]
+async fn a_serial_with_a_slash_links_to_its_own_page() {
+    for site in sites("serial_slash") {
+        let r = &site.router;
+        let (tec, csrf) = sign_in(r, "tec").await;
+        let serial = "KR 6/2 ?#1";
+        let reply = upload(r, &tec, &csrf, serial, EXPORT).await;
+        assert_eq!(
+            reply.status,
+            StatusCode::SEE_OTHER,
+            "{}: {}",
+            site.name,
+            reply.body
+        );
+        let link = "/robot/KR%206%2F2%20%3F%231";
+        for page in ["/fleet", "/record/1"] {
+            let body = get(r, page, &tec).await.body;
+            assert!(
+                body.contains(&format!("href=\"{link}\"")),
+                "{} {page}: {body}",
+                site.name
+            );
+        }
+        let robot = get(r, link, &tec).await;
+        assert_eq!(
+            robot.status,
+            StatusCode::OK,
+            "{}: {}",
+            site.name,
+            robot.body
+        );
+        // minijinja escapes `/` in HTML text as `&#x2f;`.
+        assert!(
+            robot.body.contains("KR 6&#x2f;2 ?#1"),
+            "{}: {}",
+            site.name,
+            robot.body
+        );
+    }
+}
+
 #[tokio::test]
 async fn markup_and_sql_in_fields_are_shown_as_text_and_bound_as_values() {
     for site in sites("injection") {
@@ -376,6 +420,136 @@ async fn a_flood_of_sign_ins_is_refused_across_servers_sharing_the_database() {
         );
         // Another name is not locked by it.
         sign_in(&other, "tec").await;
+    }
+}
+
+/// A form sent from another site is refused before anything is tried or written, the
+/// sign-in form included (login CSRF): by the browser's `Sec-Fetch-Site`, or by an
+/// `Origin` that is not this host where a browser sends no `Sec-Fetch-Site`; the same
+/// form from this server's own page signs in.
+#[tokio::test]
+async fn a_form_from_another_site_is_refused_even_the_sign_in() {
+    for site in sites("cross_site_forms") {
+        let login = |headers: &[(&'static str, &'static str)]| {
+            let mut b = axum::http::Request::post("/login")
+                .header(header::CONTENT_TYPE, "application/x-www-form-urlencoded")
+                .header(header::HOST, "zerocal.plant.example");
+            for (k, v) in headers {
+                b = b.header(*k, *v);
+            }
+            b.body(axum::body::Body::from(form_body(&[
+                ("name", "tec"),
+                ("password", PASSWORD),
+            ])))
+            .unwrap()
+        };
+        for headers in [
+            &[("sec-fetch-site", "cross-site")][..],
+            &[("sec-fetch-site", "same-site")],
+            &[("origin", "https://evil.example")],
+            &[("origin", "null")],
+        ] {
+            let reply = send(&site.router, login(headers)).await;
+            assert_eq!(
+                reply.status,
+                StatusCode::FORBIDDEN,
+                "{} {headers:?}",
+                site.name
+            );
+            assert!(reply.headers.get(header::SET_COOKIE).is_none());
+        }
+        let tried = with_history(&site.at, |h| h.login_failures_since("tec", 0).unwrap());
+        assert_eq!(tried, 0, "{}: a refused form was counted", site.name);
+        for headers in [
+            &[
+                ("sec-fetch-site", "same-origin"),
+                ("origin", "https://zerocal.plant.example"),
+            ][..],
+            // Behind a proxy that rewrites Host, the browser's own word decides.
+            &[
+                ("sec-fetch-site", "same-origin"),
+                ("origin", "https://elsewhere.example"),
+            ],
+            &[("origin", "https://zerocal.plant.example")],
+            &[],
+        ] {
+            let reply = send(&site.router, login(headers)).await;
+            assert_eq!(
+                reply.status,
+                StatusCode::SEE_OTHER,
+                "{} {headers:?}",
+                site.name
+            );
+        }
+    }
+}
+
+/// A record's first certificate is numbered by those who work the records: the users'
+/// admin is refused (403) where none is issued yet; a technician gets it.
+#[tokio::test]
+async fn an_admin_does_not_issue_a_first_certificate() {
+    for site in sites("certificate_issuer") {
+        let r = &site.router;
+        let (tec, csrf) = sign_in(r, "tec").await;
+        assert_eq!(
+            upload(r, &tec, &csrf, "R1", EXPORT).await.status,
+            StatusCode::SEE_OTHER
+        );
+        let (adm, _) = sign_in(r, "adm").await;
+        let refused = get(r, "/record/1/certificate", &adm).await;
+        assert_eq!(
+            refused.status,
+            StatusCode::FORBIDDEN,
+            "{}: {}",
+            site.name,
+            refused.body
+        );
+        assert!(
+            refused.body.contains("does not issue one"),
+            "{}",
+            refused.body
+        );
+        assert_eq!(
+            get(r, "/record/1/certificate", &tec).await.status,
+            StatusCode::OK
+        );
+    }
+}
+
+/// Parallel guesses are counted against each other: of twelve wrong sign-ins sent at
+/// once, to two servers sharing the database, at most [`MAX_FAILED_LOGINS`] have their
+/// password tried and the rest are refused untried (counted and recorded in one locked
+/// transaction, before the password is checked; before that, all twelve could pass a
+/// count of none).
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn parallel_sign_ins_cannot_pass_the_same_count() {
+    for site in sites("login_parallel") {
+        let other = server(&site.at);
+        let mut tries = tokio::task::JoinSet::new();
+        for i in 0..12 {
+            let r = if i % 2 == 0 {
+                site.router.clone()
+            } else {
+                other.clone()
+            };
+            tries.spawn(async move { login_as(&r, "rev", "wrong").await.status });
+        }
+        let mut tried = 0;
+        while let Some(status) = tries.join_next().await {
+            match status.unwrap() {
+                StatusCode::UNAUTHORIZED => tried += 1,
+                StatusCode::TOO_MANY_REQUESTS => {}
+                s => panic!("{}: {s}", site.name),
+            }
+        }
+        assert_eq!(tried, MAX_FAILED_LOGINS, "{}: passwords tried", site.name);
+        // The right password now is refused untried as well.
+        assert_eq!(
+            login_as(&site.router, "rev", PASSWORD).await.status,
+            StatusCode::TOO_MANY_REQUESTS,
+            "{}",
+            site.name
+        );
     }
 }
 

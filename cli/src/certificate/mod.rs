@@ -215,12 +215,13 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
     let mut history = args.db.open()?;
     let record = history.get(args.id).map_err(crate::db::history_failed)?;
     let path = config_path(args)?;
+    // The command line's user is no account of the web application: not audited.
     let (subject, analysis, issued_on) = issue(
         &mut history,
         &record,
         &path,
-        args.tolerance_deg,
-        args.as_left,
+        (args.tolerance_deg, args.as_left),
+        None,
     )?;
     let written = write_issued_on(&subject, &analysis, &args.out, &issued_on)?;
     Ok(
@@ -234,7 +235,8 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
 /// Issues the certificate of the session `record` in `history` (its number and issue
 /// date kept there, so the same certificate comes out again) by the issuer of the file
 /// `path`, with the robot as left by the check `as_left_id` (default: the latest check
-/// after the entry): what `zerocal certificate` and `zerocal serve` render.
+/// after the entry): what `zerocal certificate` and `zerocal serve` render. A first
+/// issue by a signed-in `actor` (`zerocal serve`) is audited in the same transaction.
 ///
 /// # Errors
 /// As [`run`].
@@ -242,8 +244,8 @@ pub fn issue(
     history: &mut zerocal_history::History,
     record: &zerocal_history::Record,
     path: &Path,
-    tolerance_deg: Option<f64>,
-    as_left_id: Option<i64>,
+    (tolerance_deg, as_left_id): (Option<f64>, Option<i64>),
+    actor: Option<&str>,
 ) -> Result<(CertificateSubject, Analysis, String), CliError> {
     let analysis = crate::stored_session::solve_record(record)?;
     let text = crate::input::read_capped(path, issuer::MAX_ISSUER_BYTES, "issuer configuration")
@@ -276,13 +278,16 @@ pub fn issue(
     )?;
     let issuer_json = serde_json::json!({ "issuer": &issuer, "equipment": &equipment }).to_string();
     let (issued, _) = history
-        .issue_certificate(&zerocal_history::NewCertificate {
-            number: issuer::new_number(&issuer)?,
-            session_id: record.id,
-            as_left_id: as_left.as_ref().map(|a| a.record_id),
-            issued_on: crate::bracket_file::today_utc(),
-            issuer_json,
-        })
+        .issue_certificate_by(
+            &zerocal_history::NewCertificate {
+                number: issuer::new_number(&issuer)?,
+                session_id: record.id,
+                as_left_id: as_left.as_ref().map(|a| a.record_id),
+                issued_on: crate::bracket_file::today_utc(),
+                issuer_json,
+            },
+            actor,
+        )
         .map_err(crate::db::history_failed)?;
     let subject = CertificateSubject {
         number: issued.new.number.clone(),

@@ -63,7 +63,12 @@ impl Product for FakeProduct {
         })
     }
 
-    fn certificate_html(&self, _: &mut History, record: &Record) -> Result<String, String> {
+    fn certificate_html(
+        &self,
+        _: &mut History,
+        record: &Record,
+        _: &str,
+    ) -> Result<String, String> {
         Ok(format!(
             "<html><body><h1>Certificate of record {}</h1></body></html>",
             record.id
