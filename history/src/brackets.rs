@@ -32,14 +32,16 @@ pub struct RecordBracket {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RecordBracketCalibration {
-    /// When it was calibrated, `YYYYMMDD`.
-    pub calibrated_on: u32,
+    /// When it was calibrated, `YYYYMMDD`; `None` for a calibration made on the pendant
+    /// that the desktop has not dated yet (the pendant has no calendar).
+    pub calibrated_on: Option<u32>,
     /// The pendant's turn in the bracket about its x and its y (deg).
     pub rotation_deg: [f64; 2],
     /// The standard uncertainty of the turn about x (deg).
     pub standard_uncertainty_deg: f64,
-    /// The sensor's temperature during the calibration (°C).
-    pub temperature_c: f64,
+    /// The sensor's temperature during the calibration (°C), where its captures
+    /// carried one.
+    pub temperature_c: Option<f64>,
     /// The bracket's yaw where it was measured (sine plate).
     pub yaw: Option<RecordBracketYaw>,
 }
@@ -99,18 +101,19 @@ impl RecordBrackets {
                 ));
             }
             let Some(c) = &b.calibration else { continue };
-            if let Err(e) = zerocal_civil::Date::from_yyyymmdd(c.calibrated_on) {
-                return Err(format!(
-                    "{mount}: calibrated_on {} is not a day YYYYMMDD: {e}",
-                    c.calibrated_on
-                ));
+            if let Some(day) = c.calibrated_on {
+                if let Err(e) = zerocal_civil::Date::from_yyyymmdd(day) {
+                    return Err(format!(
+                        "{mount}: calibrated_on {day} is not a day YYYYMMDD: {e}"
+                    ));
+                }
             }
             let yaw = c.yaw.as_ref();
             for (field, v) in [
                 ("rotation_deg[0]", Some(c.rotation_deg[0])),
                 ("rotation_deg[1]", Some(c.rotation_deg[1])),
                 ("standard_uncertainty_deg", Some(c.standard_uncertainty_deg)),
-                ("temperature_c", Some(c.temperature_c)),
+                ("temperature_c", c.temperature_c),
                 ("yaw.yaw_deg", yaw.map(|y| y.yaw_deg)),
                 (
                     "yaw.standard_uncertainty_deg",
@@ -219,12 +222,13 @@ impl OldSessionBracket {
             _ => return Err(format!("{m}: a yaw without its uncertainty or the reverse")),
         };
         let calibration = RecordBracketCalibration {
-            calibrated_on: self.calibrated_on.ok_or_else(|| missing("calibrated_on"))?,
+            // Before schema 6 every calibration had its day and temperature.
+            calibrated_on: Some(self.calibrated_on.ok_or_else(|| missing("calibrated_on"))?),
             rotation_deg: self.rotation_deg.ok_or_else(|| missing("rotation_deg"))?,
             standard_uncertainty_deg: self
                 .standard_uncertainty_deg
                 .ok_or_else(|| missing("standard_uncertainty_deg"))?,
-            temperature_c: self.temperature_c.ok_or_else(|| missing("temperature_c"))?,
+            temperature_c: Some(self.temperature_c.ok_or_else(|| missing("temperature_c"))?),
             yaw,
         };
         Ok(Some(RecordBracket {
@@ -242,10 +246,10 @@ mod tests {
         RecordBracket {
             id: id.into(),
             calibration: Some(RecordBracketCalibration {
-                calibrated_on: 20_261_120,
+                calibrated_on: Some(20_261_120),
                 rotation_deg: [0.125, -0.5],
                 standard_uncertainty_deg: 0.002,
-                temperature_c: 21.5,
+                temperature_c: Some(21.5),
                 yaw,
             }),
         }
@@ -334,12 +338,12 @@ mod tests {
             .contains("flange: standard_uncertainty_deg"));
         if let Some(c) = b.flange.as_mut().and_then(|f| f.calibration.as_mut()) {
             c.standard_uncertainty_deg = 0.1;
-            c.temperature_c = f64::NAN;
+            c.temperature_c = Some(f64::NAN);
         }
         assert!(b.check().unwrap_err().contains("temperature_c is NaN"));
         if let Some(c) = b.flange.as_mut().and_then(|f| f.calibration.as_mut()) {
-            c.temperature_c = 20.0;
-            c.calibrated_on = 20_261_340;
+            c.temperature_c = Some(20.0);
+            c.calibrated_on = Some(20_261_340);
         }
         assert!(b.check().unwrap_err().contains("calibrated_on 20261340"));
         b.flange = Some(RecordBracket {

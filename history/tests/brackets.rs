@@ -28,20 +28,20 @@ fn session_brackets() -> RecordBrackets {
         upper_arm: Some(RecordBracket {
             id: "U-3".into(),
             calibration: Some(RecordBracketCalibration {
-                calibrated_on: 20_261_120,
+                calibrated_on: Some(20_261_120),
                 rotation_deg: [0.125, -0.5],
                 standard_uncertainty_deg: 0.002,
-                temperature_c: 21.5,
+                temperature_c: Some(21.5),
                 yaw: None,
             }),
         }),
         flange: Some(RecordBracket {
             id: "F-017".into(),
             calibration: Some(RecordBracketCalibration {
-                calibrated_on: 20_261_121,
+                calibrated_on: Some(20_261_121),
                 rotation_deg: [-0.25, 0.75],
                 standard_uncertainty_deg: 0.003,
-                temperature_c: 22.0,
+                temperature_c: Some(22.0),
                 yaw: Some(RecordBracketYaw {
                     yaw_deg: 1.5,
                     standard_uncertainty_deg: 0.01,
@@ -146,7 +146,7 @@ fn brackets_that_do_not_hold_are_refused_on_insert_naming_the_field() {
         type Spoil = fn(&mut RecordBracketCalibration);
         let spoils: [(Spoil, &str); 3] = [
             (
-                |c| c.temperature_c = f64::INFINITY,
+                |c| c.temperature_c = Some(f64::INFINITY),
                 "flange: temperature_c is inf",
             ),
             (
@@ -154,7 +154,7 @@ fn brackets_that_do_not_hold_are_refused_on_insert_naming_the_field() {
                 "flange: standard_uncertainty_deg -0.001 is negative",
             ),
             (
-                |c| c.calibrated_on = 20_261_131,
+                |c| c.calibrated_on = Some(20_261_131),
                 "flange: calibrated_on 20261131",
             ),
         ];
