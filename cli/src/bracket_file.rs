@@ -109,7 +109,7 @@ fn calibration(b: &RawBracket) -> Result<(BracketMount, BracketCalibration<f64>)
         )
     })?;
     let [x, y] = b.rotation_deg;
-    let c = BracketCalibration::new(id, Tilt::from_deg(x, y), u.to_radians(), day, t)
+    let c = BracketCalibration::new(id, Tilt::from_deg(x, y), u.to_radians(), Some(day), Some(t))
         .map_err(|e| format!("rotation_deg [{x}, {y}]: {e}"))?;
     let c = match (b.yaw_deg, b.yaw_uncertainty_deg) {
         (None, None) => c,
@@ -212,18 +212,26 @@ pub fn brackets_toml(lines: &[&str], date: &str) -> Result<String, String> {
             out.push_str(&format!("# {}: none calibrated\n", mount.name()));
             continue;
         };
-        let (x_deg, y_deg) = b.result.rotation_rad.to_deg();
+        let (x_deg, y_deg) = b.rotation_rad.to_deg();
+        let id = b.id().ok_or(format!("'{line}': its id is not one"))?;
         // The line's decimals, so the file says what the pendant said.
         let decimals = usize::from(zerocal_procedure::bracket_cal::BRACKET_LINE_DECIMALS);
         out.push_str(&format!(
-            "\n[[bracket]]\nmount = \"{}\"\nid = \"{}\"\nrotation_deg = [{x_deg:.decimals$}, {y_deg:.decimals$}]\nuncertainty_deg = {:.decimals$}\nyaw_deg = {:.decimals$}\nyaw_uncertainty_deg = {:.decimals$}\ndate = \"{date}\"\n",
+            "\n[[bracket]]\nmount = \"{}\"\nid = \"{}\"\nrotation_deg = [{x_deg:.decimals$}, {y_deg:.decimals$}]\nuncertainty_deg = {:.decimals$}\n",
             mount.name(),
-            b.id,
-            b.result.uncertainty_rad.to_degrees(),
-            b.result.yaw.yaw_rad.to_degrees(),
-            b.result.yaw.uncertainty_rad.to_degrees(),
+            id,
+            b.uncertainty_rad.to_degrees(),
         ));
-        match b.result.temperature_c {
+        match b.yaw {
+            Some(y) => out.push_str(&format!(
+                "yaw_deg = {:.decimals$}\nyaw_uncertainty_deg = {:.decimals$}\n",
+                y.yaw_rad.to_degrees(),
+                y.uncertainty_rad.to_degrees(),
+            )),
+            None => out.push_str("# yaw_deg: not measured\n"),
+        }
+        out.push_str(&format!("date = \"{date}\"\n"));
+        match b.temperature_c {
             Some(t) => out.push_str(&format!("temperature_c = {t:.2}\n")),
             None => out.push_str("# temperature_c: the sensor gave none\n"),
         }
@@ -280,11 +288,11 @@ temperature_c = -3.25
         let b = parse(BOTH).unwrap();
         let u = b.upper_arm.unwrap();
         let f = b.flange.unwrap();
-        assert_eq!((u.id.as_str(), u.date), ("U-017", 20240229));
-        assert_eq!((f.id.as_str(), f.date), ("F_2", 20261127));
+        assert_eq!((u.id.as_str(), u.date), ("U-017", Some(20240229)));
+        assert_eq!((f.id.as_str(), f.date), ("F_2", Some(20261127)));
         assert!((f.rotation_rad.x_rad - (-0.4999f64).to_radians()).abs() < 1e-15);
         assert!((u.uncertainty_rad - 0.002f64.to_radians()).abs() < 1e-15);
-        assert_eq!(u.temperature_c, -3.25);
+        assert_eq!(u.temperature_c, Some(-3.25));
     }
 
     /// Each refusal names the entry and what is wrong with it.

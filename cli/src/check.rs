@@ -9,13 +9,14 @@ use crate::compare::{CompareOptions, Consistency, DifferenceBudget};
 use crate::db::DbArg;
 use crate::db::RecordMeta;
 use crate::error::CliError;
+use crate::record::{build, record_brackets, Origin, RecordParts, RecordRobot};
 use crate::restore::{against, render_budget, Against};
 use clap::Args;
 use serde::Serialize;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use zerocal_core::model::JOINTS;
-use zerocal_history::{JointRow, NewConvention, NewRecord, RecordKind};
+use zerocal_history::{JointRow, NewConvention, NewRecord, Verdict};
 
 /// Arguments of `zerocal check`.
 #[derive(Args, Debug, Clone)]
@@ -267,56 +268,50 @@ fn record_of(
     }
     let shown = a.reference.profile.controller.offsets_deg(&now);
     let reference = &a.record.new;
-    let failed: Vec<&str> = j
+    let failed: Vec<String> = j
         .joints
         .iter()
         .filter(|x| x.check.pass == Some(false))
-        .map(|x| x.check.name.as_str())
+        .map(|x| x.check.name.clone())
         .collect();
-    Ok(NewRecord {
-        kind: RecordKind::Check,
-        serial: reference.serial.clone(),
-        robot: reference.robot.clone(),
-        robot_title: reference.robot_title.clone(),
-        controller_family: reference.controller_family.clone(),
-        profile_toml: reference.profile_toml.clone(),
-        export: a.bytes.clone(),
-        measured_on: meta.day()?,
-        operator: meta.operator.clone(),
-        pendant_unit: a.export.pendant_unit.clone(),
-        pendant_result_id: None,
-        reference_id: Some(a.record.id),
-        zerocal_version: env!("CARGO_PKG_VERSION").to_owned(),
-        verdict: if j.pass {
-            "PASS".to_owned()
-        } else {
-            format!("FAIL {}", failed.join(" "))
+    build(
+        RecordParts {
+            origin: Origin::Check(a.record.id),
+            serial: reference.serial.clone(),
+            robot: RecordRobot::of_record(reference),
+            export: a.bytes.clone(),
+            pendant_unit: a.export.pendant_unit.clone(),
+            verdict: if j.pass {
+                Verdict::Pass
+            } else {
+                Verdict::Fail(failed)
+            },
+            brackets: record_brackets(&a.export.brackets),
+            conditions: serde_json::json!({
+                "stage0_temperature_c": a.export.stage0.and_then(|s| s.temperature_c),
+                "poses": j.poses,
+                "residual_rms_deg": a.comparison.residual_rms_rad.to_degrees(),
+                "expected": expected,
+                "upper_arm_compared": a.comparison.identifiable[0],
+            }),
+            result_json: serde_json::to_string(j).map_err(|e| CliError::Input(e.to_string()))?,
+            joints: j
+                .joints
+                .iter()
+                .enumerate()
+                .filter(|(_, x)| x.check.pass.is_some())
+                .map(|(k, x)| JointRow {
+                    joint: (k + 2) as u8,
+                    name: x.check.name.clone(),
+                    offset_deg: base(k) + x.check.remaining_deg,
+                    expanded_k2_deg: x.check.expanded_k2_deg,
+                    controller_offset_deg: shown[k + 1],
+                    pass: x.check.pass,
+                })
+                .collect(),
         },
-        brackets_json: crate::session::brackets_json(&a.export.brackets).to_string(),
-        conditions_json: serde_json::json!({
-            "stage0_temperature_c": a.export.stage0.and_then(|s| s.temperature_c),
-            "poses": j.poses,
-            "residual_rms_deg": a.comparison.residual_rms_rad.to_degrees(),
-            "expected": expected,
-            "upper_arm_compared": a.comparison.identifiable[0],
-        })
-        .to_string(),
-        result_json: serde_json::to_string(j).map_err(|e| CliError::Input(e.to_string()))?,
-        joints: j
-            .joints
-            .iter()
-            .enumerate()
-            .filter(|(_, x)| x.check.pass.is_some())
-            .map(|(k, x)| JointRow {
-                joint: (k + 2) as u8,
-                name: x.check.name.clone(),
-                offset_deg: base(k) + x.check.remaining_deg,
-                expanded_k2_deg: x.check.expanded_k2_deg,
-                controller_offset_deg: shown[k + 1],
-                pass: x.check.pass,
-            })
-            .collect(),
-    })
+        meta,
+    )
 }
 
 /// The report as text.

@@ -74,7 +74,7 @@ pub struct RecordJson<'a> {
     pub export_bytes: usize,
     pub profile_sha256: &'a str,
     pub joints: &'a [zerocal_history::JointRow],
-    pub brackets: serde_json::Value,
+    pub brackets: &'a zerocal_history::RecordBrackets,
     pub conditions: serde_json::Value,
     pub result: serde_json::Value,
     /// The reducer harmonics whose amplitude this session measured beyond
@@ -116,7 +116,7 @@ fn to_json(records: &[Record]) -> Result<String, CliError> {
                 export_bytes: n.export.len(),
                 profile_sha256: &r.profile_sha256,
                 joints: &n.joints,
-                brackets: json_field(r, "brackets_json", &n.brackets_json)?,
+                brackets: &n.brackets,
                 conditions: json_field(r, "conditions_json", &n.conditions_json)?,
                 result: json_field(r, "result_json", &n.result_json)?,
                 reducer_changes: changes

@@ -10,10 +10,11 @@
 
 use crate::db::RecordMeta;
 use crate::error::CliError;
+use crate::record::{build, kept_brackets, Origin, RecordParts, RecordRobot};
 use crate::stored_session::KEPT_RESULT_NOTE;
 use serde_json::json;
 use zerocal_core::session::COVERAGE_FACTOR;
-use zerocal_history::{History, Inserted, JointRow, NewRecord, RecordKind};
+use zerocal_history::{History, Inserted, JointRow, NewRecord, Verdict};
 use zerocal_procedure::kept::VERDICT_WORDS;
 use zerocal_procedure::log::{read_kept_results, write_kept_result, Line, KEPT_RESULT_LINES};
 use zerocal_procedure::KeptResult;
@@ -50,52 +51,42 @@ fn record_of(k: &KeptResult, serial: &str, meta: &RecordMeta) -> Result<NewRecor
             pass: None,
         })
         .collect();
-    let warnings: Vec<&str> = VERDICT_WORDS
+    let warnings: Vec<String> = VERDICT_WORDS
         .iter()
         .enumerate()
         .filter(|(bit, _)| k.warnings & (1 << bit) != 0)
-        .map(|(_, w)| *w)
+        .map(|(_, w)| (*w).to_owned())
         .collect();
     let unit = k.unit.map(|u| u.to_string());
-    let brackets: Vec<Option<&str>> = k.brackets.iter().map(|b| b.as_deref()).collect();
+    let brackets = kept_brackets([k.brackets[0].as_deref(), k.brackets[1].as_deref()]);
     let [stage0, stage1, closing] = k.temperatures_c.map(|t| t.map(f64::from));
-    Ok(NewRecord {
-        kind: RecordKind::Session,
-        serial: serial.to_owned(),
-        robot: profile.name.clone(),
-        robot_title: profile.title.clone(),
-        controller_family: profile.family.name().to_owned(),
-        profile_toml,
-        export: lines_of(k)?.into_bytes(),
-        measured_on: meta.day()?,
-        operator: meta.operator.clone(),
-        pendant_unit: unit.clone(),
-        pendant_result_id: Some(k.id),
-        reference_id: None,
-        zerocal_version: env!("CARGO_PKG_VERSION").to_owned(),
-        verdict: if warnings.is_empty() {
-            "PASS".to_owned()
-        } else {
-            format!("WARN {}", warnings.join(" "))
+    build(
+        RecordParts {
+            origin: Origin::KeptResult(k.id),
+            serial: serial.to_owned(),
+            robot: RecordRobot::of_profile(&profile, &profile_toml),
+            export: lines_of(k)?.into_bytes(),
+            pendant_unit: unit.clone(),
+            verdict: Verdict::warn_if_any(warnings),
+            brackets,
+            conditions: json!({
+                "stage0_temperature_c": stage0,
+                "stage1_temperature_c": stage1,
+                "closing_temperature_c": closing,
+                "residual_rms_deg": f64::from(k.residual_rms_deg),
+            }),
+            result_json: json!({
+                "kept_result_id": k.id,
+                "pendant_unit": unit,
+                "offsets_deg": offsets,
+                "sigma_deg": sigma,
+                "note": KEPT_RESULT_NOTE,
+            })
+            .to_string(),
+            joints,
         },
-        brackets_json: json!({ "upper_arm": brackets[0], "flange": brackets[1] }).to_string(),
-        conditions_json: json!({
-            "stage0_temperature_c": stage0,
-            "stage1_temperature_c": stage1,
-            "closing_temperature_c": closing,
-            "residual_rms_deg": f64::from(k.residual_rms_deg),
-        })
-        .to_string(),
-        result_json: json!({
-            "kept_result_id": k.id,
-            "pendant_unit": unit,
-            "offsets_deg": offsets,
-            "sigma_deg": sigma,
-            "note": KEPT_RESULT_NOTE,
-        })
-        .to_string(),
-        joints,
-    })
+        meta,
+    )
 }
 
 /// Imports every kept result of `text` under `serial`: each once.

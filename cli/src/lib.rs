@@ -21,6 +21,7 @@ pub mod plan;
 pub mod plots;
 pub mod profile_cmd;
 pub mod program;
+pub mod record;
 pub mod report_notes;
 pub mod restore;
 pub mod robot;

@@ -14,13 +14,16 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
         .into_iter()
         .map(|m| match brackets.get(m) {
             Some(c) => format!(
-                "{} bracket {}: calibrated {} at {:.1} C, turn {:+.4} deg about the \
+                "{} bracket {}: calibrated {} at {}, turn {:+.4} deg about the \
                  joint's axis ({:+.4} deg across), u {:.4} deg, applied; with the seat's \
                  +/-{} deg the budget's '{}' term is {:.4} deg; {}",
                 m.name(),
                 c.id,
                 calibration_date(c.date),
-                c.temperature_c,
+                c.temperature_c.map_or_else(
+                    || "a temperature not read".to_owned(),
+                    |t| format!("{t:.1} C")
+                ),
                 c.rotation_rad.x_rad.to_degrees(),
                 c.rotation_rad.y_rad.to_degrees(),
                 c.uncertainty_rad.to_degrees(),
@@ -61,8 +64,12 @@ pub fn bracket_notes(brackets: &Brackets<f64>, seat_deg: f64) -> Vec<String> {
 }
 
 /// A bracket calibration's date, `YYYYMMDD` as stored, as `YYYY-MM-DD` (core checked
-/// it as a day; a number that is none is shown as it is).
-pub fn calibration_date(date: u32) -> String {
+/// it as a day; a number that is none is shown as it is), or `undated` for one made on
+/// the pendant that no desktop has stamped.
+pub fn calibration_date(date: Option<u32>) -> String {
+    let Some(date) = date else {
+        return "undated".to_owned();
+    };
     zerocal_civil::Date::from_yyyymmdd(date).map_or_else(|_| date.to_string(), |d| d.to_string())
 }
 

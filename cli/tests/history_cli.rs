@@ -27,7 +27,7 @@ fn record(kind: RecordKind, serial: &str, day: &str, export: &[u8], j3_deg: f64)
         reference_id: None,
         zerocal_version: "0.1.0".into(),
         verdict: "PASS".into(),
-        brackets_json: "{}".into(),
+        brackets: zerocal_history::RecordBrackets::default(),
         conditions_json: r#"{"temperature_c":20.0}"#.into(),
         result_json: r#"{"verdict":"PASS"}"#.into(),
         joints: (2..=6u8)

@@ -200,6 +200,25 @@ fn record_restore_check_and_certify_one_robot() {
         .filter_map(|r| r["kind"].as_str())
         .collect();
     assert_eq!(kinds, ["session", "check", "check"], "{listed}");
+    // Each record names both calibrated brackets with the calibration it was solved with,
+    // in the history's one shape; the failed check names its joint.
+    for r in listed.as_array().unwrap() {
+        for mount in ["upper_arm", "flange"] {
+            let b = &r["brackets"][mount];
+            assert!(b["id"].as_str().is_some_and(|id| !id.is_empty()), "{r}");
+            assert_eq!(
+                b["calibration"]["rotation_deg"].as_array().map(Vec::len),
+                Some(2),
+                "{r}"
+            );
+        }
+    }
+    assert!(
+        listed[2]["verdict"]
+            .as_str()
+            .is_some_and(|v| v.starts_with("FAIL A3")),
+        "{listed}"
+    );
 
     let html = d.join("certificate.html");
     let issuer = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/issuer.toml");
@@ -329,6 +348,11 @@ fn kept_results_are_imported_once_each() {
         serde_json::from_str(&ok(&["history", "KR6-0002", "--json", "--db", db])).unwrap();
     assert_eq!(listed.as_array().unwrap().len(), 2, "{listed}");
     assert_eq!(listed[0]["pendant_result_id"], 7);
+    assert_eq!(
+        listed[0]["brackets"],
+        serde_json::json!({ "upper_arm": null, "flange": null }),
+        "{listed}"
+    );
     let refused = zerocal(&[
         "certificate",
         "1",

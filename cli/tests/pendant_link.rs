@@ -323,7 +323,7 @@ temperature_c = 22.25
         assert!((a.rotation_rad.x_rad - b.rotation_rad.x_rad).abs() < 1e-9);
         assert!((a.rotation_rad.y_rad - b.rotation_rad.y_rad).abs() < 1e-9);
         assert!((a.uncertainty_rad - b.uncertainty_rad).abs() < 1e-11);
-        assert!((a.temperature_c - b.temperature_c).abs() < 1e-5);
+        assert!((a.temperature_c.unwrap() - b.temperature_c.unwrap()).abs() < 1e-5);
     }
     // A brackets file that does not check is refused before anything is sent.
     std::fs::write(&file, "[[bracket]]\nmount = \"elbow\"\n").unwrap();

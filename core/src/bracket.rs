@@ -139,10 +139,11 @@ pub struct BracketCalibration<T> {
     pub rotation_rad: Tilt<T>,
     /// The calibration's standard uncertainty about x (rad).
     pub uncertainty_rad: T,
-    /// When it was calibrated, `YYYYMMDD`.
-    pub date: u32,
-    /// The sensor's temperature during the calibration (°C).
-    pub temperature_c: T,
+    /// When it was calibrated, `YYYYMMDD`; `None` for a calibration made on the
+    /// pendant, which has no calendar (the desktop stamps the day it reads it out).
+    pub date: Option<u32>,
+    /// The sensor's temperature during the calibration (°C), if it gave one.
+    pub temperature_c: Option<T>,
     /// The bracket's yaw, where measured on the sine plate ([`calibrate_yaw`]).
     pub yaw: Option<BracketYaw<T>>,
 }
@@ -269,17 +270,19 @@ impl<T: Real> BracketCalibration<T> {
         id: BracketId,
         rotation_rad: Tilt<T>,
         uncertainty_rad: T,
-        date: u32,
-        temperature_c: T,
+        date: Option<u32>,
+        temperature_c: Option<T>,
     ) -> Result<Self, BracketError> {
-        check_date(date)?;
+        if let Some(date) = date {
+            check_date(date)?;
+        }
         let limit = deg_to_rad(T::lit(MAX_BRACKET_TURN_DEG));
         let plausible = rotation_rad.is_finite()
             && rotation_rad.x_rad.abs() <= limit
             && rotation_rad.y_rad.abs() <= limit
             && uncertainty_rad.is_finite()
             && uncertainty_rad >= T::zero()
-            && temperature_c.is_finite();
+            && temperature_c.is_none_or(|t| t.is_finite());
         if !plausible {
             return Err(BracketError::Implausible);
         }
@@ -655,10 +658,16 @@ mod tests {
             (yaw.uncertainty_rad.to_degrees() - 0.0408).abs() < 0.001,
             "{yaw:?}"
         );
-        let cal = BracketCalibration::new(bracket_id("F-2").unwrap(), rot, u, 20261127, 21.0)
-            .unwrap()
-            .with_yaw(yaw)
-            .unwrap();
+        let cal = BracketCalibration::new(
+            bracket_id("F-2").unwrap(),
+            rot,
+            u,
+            Some(20261127),
+            Some(21.0),
+        )
+        .unwrap()
+        .with_yaw(yaw)
+        .unwrap();
         let turn = cal.turn(None);
         let worst = (turn.matrix() - bracket.matrix()).abs().max();
         assert!(worst < 2e-6, "{worst}");
@@ -720,8 +729,8 @@ mod tests {
             bracket_id("F-1").unwrap(),
             Tilt::from_deg(0.1, 0.0),
             0.0,
-            20261127,
-            21.0,
+            Some(20261127),
+            Some(21.0),
         )
         .unwrap();
         let some = Brackets {

@@ -70,7 +70,7 @@ fn main() {
             reference_id: None,
             zerocal_version: "0.1.0".into(),
             verdict: "PASS".into(),
-            brackets_json: "[]".into(),
+            brackets: zerocal_history::RecordBrackets::default(),
             conditions_json: "{}".into(),
             result_json: result_json.clone(),
             joints: (2..=6u8)

@@ -6,6 +6,7 @@
 //! SQLite file (the default, see [`DbLocation::from_arg`]) and a plant-wide PostgreSQL
 //! server. See `docs/history.md` for the guarantees and how they are tested.
 
+mod brackets;
 mod certificates;
 mod conventions;
 mod corrections;
@@ -15,7 +16,9 @@ mod fleet;
 mod pgpass;
 mod review;
 pub mod schema;
+mod verdict;
 
+pub use brackets::{RecordBracket, RecordBracketCalibration, RecordBracketYaw, RecordBrackets};
 pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
 pub use conventions::{Convention, NewConvention};
 pub use corrections::Correction;
@@ -25,6 +28,7 @@ pub use review::{
     check_user_name, AuditEntry, LoginGate, Role, SignStep, Signature, User, WebSession,
     MAX_USER_CHARS,
 };
+pub use verdict::{Verdict, PASS};
 
 use db::{Conn, Value};
 use serde::{Deserialize, Serialize};
@@ -115,10 +119,10 @@ pub struct NewRecord {
     pub reference_id: Option<i64>,
     /// The zerocal version that computed the result.
     pub zerocal_version: String,
-    /// `PASS`, `WARN ...`, `FAIL ...`.
+    /// `PASS`, `WARN ...`, `FAIL ...`: [`Verdict::text`].
     pub verdict: String,
-    /// The brackets' IDs and calibrations (JSON text).
-    pub brackets_json: String,
+    /// The brackets' IDs and calibrations (stored as JSON text, `records.brackets_json`).
+    pub brackets: RecordBrackets,
     /// Temperatures, base tilt (JSON text).
     pub conditions_json: String,
     /// The whole result (`zerocal session --json` object) as JSON text.
@@ -338,7 +342,9 @@ fn validate(r: &NewRecord) -> Result<(), HistoryError> {
             r.measured_on
         )));
     }
-    check_json("brackets_json", &r.brackets_json)?;
+    r.brackets
+        .check()
+        .map_err(|e| invalid(format!("brackets: {e}")))?;
     check_json("conditions_json", &r.conditions_json)?;
     check_json("result_json", &r.result_json)?;
     let mut seen = [false; 7];
@@ -450,7 +456,8 @@ fn record_from_row(row: &[Value], joints: Vec<JointRow>) -> Result<Record, Histo
             reference_id: reference_id.opt_i64("records.reference_id")?,
             zerocal_version: zerocal_version.string("records.zerocal_version")?,
             verdict: verdict.string("records.verdict")?,
-            brackets_json: brackets_json.string("records.brackets_json")?,
+            brackets: RecordBrackets::from_json(&brackets_json.string("records.brackets_json")?)
+                .map_err(|e| HistoryError::Corrupt(format!("record {id}: brackets_json: {e}")))?,
             conditions_json: conditions_json.string("records.conditions_json")?,
             result_json: result_json.string("records.result_json")?,
             joints,
@@ -522,7 +529,7 @@ fn insert_in(c: &mut Conn, r: &NewRecord) -> Result<Inserted, HistoryError> {
                 Value::Int(r.reference_id),
                 Value::text(&r.zerocal_version),
                 Value::text(&r.verdict),
-                Value::text(&r.brackets_json),
+                Value::text(&r.brackets.to_json()),
                 Value::text(&r.conditions_json),
                 Value::text(&r.result_json),
             ],

@@ -33,7 +33,13 @@ pub struct Migration {
     pub what: &'static str,
     /// The statements, written once for both dialects (see `db::Dialect::sql`).
     pub sql: &'static str,
+    /// A rewrite of stored values that SQL alone would write twice (once per dialect's
+    /// JSON functions), run after `sql` in the same transaction.
+    pub(crate) rewrite: Option<Rewrite>,
 }
+
+/// A migration's rewrite of stored values, inside the step's transaction.
+pub(crate) type Rewrite = fn(&mut Conn) -> Result<(), HistoryError>;
 
 /// Every step, oldest first. Never edit a step that has shipped: add one.
 pub const MIGRATIONS: &[Migration] = &[
@@ -80,11 +86,13 @@ CREATE TABLE joints (
     PRIMARY KEY (record_id, joint)
 );
 ",
+        rewrite: None,
     },
     Migration {
         version: 2,
         what: "index of records by serial and ID (`zerocal history SERIAL` lists in ID order)",
         sql: "CREATE INDEX records_by_serial ON records (serial, id);",
+        rewrite: None,
     },
     Migration {
         version: 3,
@@ -115,6 +123,7 @@ CREATE TABLE certificates (
 );
 CREATE INDEX certificates_by_session ON certificates (session_id);
 ",
+        rewrite: None,
     },
     Migration {
         version: 4,
@@ -128,6 +137,7 @@ CREATE TABLE texts (
 INSERT INTO texts (sha256, text) SELECT DISTINCT profile_sha256, profile_toml FROM records;
 ALTER TABLE records DROP COLUMN profile_toml;
 ",
+        rewrite: None,
     },
     Migration {
         version: 5,
@@ -185,8 +195,48 @@ CREATE TABLE audit (
     after_json TEXT NOT NULL
 );
 ",
+        rewrite: None,
+    },
+    Migration {
+        version: 6,
+        what: "records.brackets_json in one typed shape (`RecordBrackets`: each mount's \
+               bracket ID and, where known, its calibration), rewritten from the two shapes \
+               older builds wrote (a session's array of mounts, an import's IDs by mount)",
+        sql: "",
+        rewrite: Some(brackets_in_one_shape),
     },
 ];
+
+/// Schema 6's rewrite: every record's brackets read in either old shape
+/// ([`crate::brackets::from_old_json`]) and written in the typed one. A record whose
+/// brackets fit neither stops the migration, naming it: the database stays at schema 5,
+/// nothing rewritten, rather than a record's brackets being dropped.
+fn brackets_in_one_shape(c: &mut Conn) -> Result<(), HistoryError> {
+    for row in c.query("SELECT id, brackets_json FROM records ORDER BY id", &[])? {
+        let [id, text] = row.as_slice() else {
+            return Err(HistoryError::Corrupt(format!(
+                "SELECT id, brackets_json returned {} columns",
+                row.len()
+            )));
+        };
+        let id = id.i64("records.id")?;
+        let text = text.string("records.brackets_json")?;
+        let brackets = crate::brackets::from_old_json(&text).map_err(|e| {
+            HistoryError::Corrupt(format!(
+                "record {id}: brackets_json {text:?} fits no shape zerocal wrote ({e}); \
+                 the database is left at schema 5"
+            ))
+        })?;
+        let new = brackets.to_json();
+        if new != text {
+            c.execute(
+                "UPDATE records SET brackets_json = $1 WHERE id = $2",
+                &[Value::Text(Some(new)), Value::Int(Some(id))],
+            )?;
+        }
+    }
+    Ok(())
+}
 
 /// The newest schema version this build reads and writes.
 pub const SCHEMA_VERSION: i64 = MIGRATIONS[MIGRATIONS.len() - 1].version;
@@ -328,7 +378,12 @@ fn migrate(c: &mut Conn, what: &str, target: i64) -> Result<(), HistoryError> {
             if at >= step.version {
                 return Ok(());
             }
-            c.batch(step.sql)?;
+            if !step.sql.is_empty() {
+                c.batch(step.sql)?;
+            }
+            if let Some(rewrite) = step.rewrite {
+                rewrite(c)?;
+            }
             set_version(c, step.version)
         })?;
     }

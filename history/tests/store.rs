@@ -7,6 +7,8 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+// Shared with brackets.rs, which uses the rest of it.
+#[allow(dead_code)]
 mod common;
 
 use common::{backends, insert_before_schema_4, record, temp_file};

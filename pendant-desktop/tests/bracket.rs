@@ -31,8 +31,8 @@ fn the_pendant_calibrates_a_bracket_and_keeps_it() {
     assert_eq!(lines[0], lines[1]);
     assert!(text.contains("bracket upper-arm none"), "{text}");
     let kept = flange_calibration(text).unwrap();
-    let (x_deg, y_deg) = kept.result.rotation_rad.to_deg();
-    let u_deg = kept.result.uncertainty_rad.to_degrees();
+    let (x_deg, y_deg) = kept.rotation_rad.to_deg();
+    let u_deg = kept.uncertainty_rad.to_degrees();
     let (dx, dy) = (x_deg - BRACKET_TURN_DEG.0, y_deg - BRACKET_TURN_DEG.1);
     println!(
         "bracket read {x_deg:.5}, {y_deg:.5} deg; off by {dx:+.5}, {dy:+.5}; u {u_deg:.5} deg"
@@ -44,7 +44,7 @@ fn the_pendant_calibrates_a_bracket_and_keeps_it() {
             "{d} (u {u_deg})"
         );
     }
-    let t = kept.result.temperature_c.unwrap();
+    let t = kept.temperature_c.unwrap();
     assert!((23.0..=24.5).contains(&t), "{t}");
 }
 

@@ -13,7 +13,7 @@ use zerocal_core::model::JOINTS;
 use zerocal_core::real::rad_to_deg;
 use zerocal_core::report::{Warning, MAX_WARNINGS};
 use zerocal_core::session::{SessionError, SESSION_JOINTS};
-use zerocal_procedure::bracket_cal::{BracketCalState, BracketNotice, BracketResult, BracketStep};
+use zerocal_procedure::bracket_cal::{BracketCalState, BracketNotice, BracketStep, StoredBracket};
 use zerocal_procedure::profile::JointName;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
@@ -64,7 +64,7 @@ pub struct BracketScreen {
     /// The step (or `Done`: `outcome` says what came of it).
     pub step: BracketStep,
     /// The result (rad, °C) or the refusal, once done.
-    pub outcome: Option<Result<BracketResult<f32>, BracketError>>,
+    pub outcome: Option<Result<StoredBracket<f32>, BracketError>>,
     /// Latest raw reading (x, y) in degrees; `None` without a sensor.
     pub live_deg: Option<(f32, f32)>,
     /// Stillness of the current window.

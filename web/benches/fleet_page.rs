@@ -92,7 +92,7 @@ fn fill(h: &mut History, robots: usize, records: usize) {
             } else {
                 "PASS".into()
             },
-            brackets_json: "[]".into(),
+            brackets: zerocal_history::RecordBrackets::default(),
             conditions_json: "{}".into(),
             result_json: result_json.clone(),
             joints: (2..=6u8)

@@ -91,7 +91,7 @@ pub fn rows(
             let check_failed = robot
                 .last_check
                 .as_ref()
-                .is_some_and(|c| c.verdict != "PASS");
+                .is_some_and(|c| c.verdict != zerocal_history::PASS);
             FleetRow {
                 drift,
                 worst_drift_ratio,

@@ -212,7 +212,7 @@ pub fn calibrate(
     let kept = line_of(&after, mount);
     let ours = kept.is_some_and(|l| {
         parse_bracket_line::<f64>(l.trim())
-            .is_ok_and(|(_, b)| b.is_some_and(|b| b.id.as_str() == id))
+            .is_ok_and(|(_, b)| b.is_some_and(|b| b.id().is_some_and(|b| b.as_str() == id)))
     });
     if ours && kept != before.as_ref() {
         say(&format!(

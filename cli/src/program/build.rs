@@ -4,6 +4,7 @@
 //! captured from below, then from above; each path is checked against the pendant's
 //! capture rule (it must not capture before the robot arrives; a move too small to arm
 //! the next capture gets a stop for an OK), and every point against the joint limits.
+//! A check's program is built by the same steps, from its own poses.
 
 use super::checks::{check_capture_ranges, check_every_point, check_format};
 use super::steps::{Capture, Role, Session, Side, Step};
@@ -14,7 +15,7 @@ use crate::timing::{self, Pendant, SessionPoses, Timing, TimingArgs};
 use zerocal_core::model::Convention;
 use zerocal_core::model::JOINTS;
 use zerocal_core::plan::{check_model, check_poses};
-use zerocal_procedure::robot_time::{Mounting, TimeModel};
+use zerocal_procedure::robot_time::{Mounting, SessionTime, TimeModel};
 use zerocal_profile::Profile;
 
 /// Builds the session a program drives: the steps, checked against the joint limits
@@ -33,12 +34,8 @@ pub fn build(
     name: String,
     timing_args: &TimingArgs,
 ) -> Result<Session, CliError> {
-    check_format(&profile, format)?;
-    let poses = SessionPoses::new(&profile, poses_rad).with_mounts(&profile)?;
-    timing::check_room(&profile, &poses)?;
-    let t = Timing::new(&profile, timing_args)?;
+    let (poses, t) = prepared(&profile, format, poses_rad, timing_args)?;
     let pendant = Pendant::new(&profile);
-    check_capture_ranges(&pendant, &poses)?;
     let time = timing::session_time(&pendant, &t.model, &poses);
     let j1 = timing::joint_label(&profile, 0);
 
@@ -52,15 +49,49 @@ pub fn build(
     let last = w.stage2(&poses)?;
     w.closing_reversal(&poses, &last, false)?;
     let steps = w.steps;
-    check_every_point(&profile, &steps, &t.model, &j1)?;
-
     let header = header_lines(&profile, format, &t, &time, poses.poses.len(), &j1);
+    finished(name, profile, header, steps, (t, time, poses))
+}
+
+/// The poses of a session's or a check's program with their mountings, and the time
+/// model: the format the profile's family's, every capture pose with room on both sides
+/// inside the limits, every capture within the pendant's range.
+///
+/// # Errors
+/// As [`build`](fn@build).
+fn prepared(
+    profile: &Profile,
+    format: Format,
+    poses_rad: &[[f64; JOINTS]],
+    timing_args: &TimingArgs,
+) -> Result<(SessionPoses, Timing), CliError> {
+    check_format(profile, format)?;
+    let poses = SessionPoses::new(profile, poses_rad).with_mounts(profile)?;
+    timing::check_room(profile, &poses)?;
+    let t = Timing::new(profile, timing_args)?;
+    check_capture_ranges(&Pendant::new(profile), &poses)?;
+    Ok((poses, t))
+}
+
+/// The program's session once every point of `steps` is checked inside the limits.
+///
+/// # Errors
+/// A point outside the limits (naming the joint and the limit).
+fn finished(
+    name: String,
+    profile: Profile,
+    header: Vec<String>,
+    steps: Vec<Step>,
+    (timing, time, poses): (Timing, SessionTime<f64>, SessionPoses),
+) -> Result<Session, CliError> {
+    let j1 = timing::joint_label(&profile, 0);
+    check_every_point(&profile, &steps, &timing.model, &j1)?;
     Ok(Session {
         name,
         profile,
         header,
         steps,
-        timing: t,
+        timing,
         time,
         poses,
     })
@@ -103,13 +134,9 @@ pub fn build_check(
         .iter()
         .filter_map(|&i| plan_rad.get(i).copied())
         .collect();
-    let poses = SessionPoses::new(&profile, &chosen).with_mounts(&profile)?;
-    timing::check_room(&profile, &poses)?;
-    let t = Timing::new(&profile, timing_args)?;
+    let (poses, t) = prepared(&profile, format, &chosen, timing_args)?;
     let pendant = Pendant::new(&profile);
-    check_capture_ranges(&pendant, &poses)?;
     let time = timing::check_time(&pendant, &t.model, &poses);
-    let j1 = timing::joint_label(&profile, 0);
 
     let mut w = StepWriter {
         pendant: &pendant,
@@ -131,18 +158,8 @@ pub fn build_check(
     let last = w.flange_poses(&poses, &plan_index, plan_rad.len(), "check")?;
     w.closing_reversal(&poses, &last, true)?;
     let steps = w.steps;
-    check_every_point(&profile, &steps, &t.model, &j1)?;
-
     let header = check_header_lines(&profile, format, &t, &time, &plan_index, plan_rad.len());
-    Ok(Session {
-        name,
-        profile,
-        header,
-        steps,
-        timing: t,
-        time,
-        poses,
-    })
+    finished(name, profile, header, steps, (t, time, poses))
 }
 
 /// The lines of a stop asking for an OK on the pendant after `what`.

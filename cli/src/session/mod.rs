@@ -20,7 +20,7 @@ pub mod reducer_trend;
 pub mod reducers;
 mod render;
 mod session_json;
-pub use record::{brackets_json, session_record, verdict_of};
+pub use record::{session_record, verdict_of};
 pub use render::render;
 pub use session_json::{to_json, BudgetJson, JointJson, SessionJson};
 

@@ -5,27 +5,9 @@
 use super::Analysis;
 use crate::db::RecordMeta;
 use crate::error::CliError;
+use crate::record::{build, record_brackets, Origin, RecordParts, RecordRobot};
 use serde_json::json;
-use zerocal_core::bracket::{BracketMount, Brackets};
-use zerocal_history::{JointRow, NewRecord, RecordKind};
-
-/// The brackets as the record keeps them.
-pub fn brackets_json(brackets: &Brackets<f64>) -> serde_json::Value {
-    let one = |m: BracketMount| match brackets.get(m) {
-        Some(c) => json!({
-            "mount": m.name(),
-            "id": c.id.as_str(),
-            "calibrated_on": c.date,
-            "rotation_deg": [c.rotation_rad.x_rad.to_degrees(), c.rotation_rad.y_rad.to_degrees()],
-            "standard_uncertainty_deg": c.uncertainty_rad.to_degrees(),
-            "temperature_c": c.temperature_c,
-            "yaw_deg": c.yaw.map(|y| y.yaw_rad.to_degrees()),
-            "yaw_standard_uncertainty_deg": c.yaw.map(|y| y.uncertainty_rad.to_degrees()),
-        }),
-        None => json!({ "mount": m.name(), "calibrated": false }),
-    };
-    json!(BracketMount::ALL.map(one))
-}
+use zerocal_history::{JointRow, NewRecord, Verdict};
 
 /// The conditions: the stages' temperatures and the base's tilt.
 fn conditions_json(a: &Analysis) -> serde_json::Value {
@@ -48,12 +30,12 @@ fn conditions_json(a: &Analysis) -> serde_json::Value {
     })
 }
 
-/// The verdict as stored: `PASS` or `WARN` and the warnings.
-pub fn verdict_of(a: &Analysis) -> String {
+/// The session's verdict: its warnings, if any.
+pub fn verdict_of(a: &Analysis) -> Verdict {
     if a.json.pass {
-        "PASS".to_owned()
+        Verdict::Pass
     } else {
-        format!("WARN {}", a.json.warnings.join("; "))
+        Verdict::Warn(a.json.warnings.clone())
     }
 }
 
@@ -81,24 +63,23 @@ pub fn session_record(
             pass: None,
         })
         .collect();
-    Ok(NewRecord {
-        kind: RecordKind::Session,
-        serial: serial.to_owned(),
-        robot: a.profile.name.clone(),
-        robot_title: a.profile.title.clone(),
-        controller_family: a.json.family.clone(),
-        profile_toml: a.profile_toml.clone(),
-        export: export.to_vec(),
-        measured_on: meta.day()?,
-        operator: meta.operator.clone(),
-        pendant_unit: a.export.pendant_unit.clone(),
-        pendant_result_id: None,
-        reference_id: None,
-        zerocal_version: env!("CARGO_PKG_VERSION").to_owned(),
-        verdict: verdict_of(a),
-        brackets_json: brackets_json(&a.export.brackets).to_string(),
-        conditions_json: conditions_json(a).to_string(),
-        result_json: serde_json::to_string(&a.json).map_err(|e| CliError::Input(e.to_string()))?,
-        joints,
-    })
+    build(
+        RecordParts {
+            origin: Origin::Session,
+            serial: serial.to_owned(),
+            robot: RecordRobot {
+                family: a.json.family.clone(),
+                ..RecordRobot::of_profile(&a.profile, &a.profile_toml)
+            },
+            export: export.to_vec(),
+            pendant_unit: a.export.pendant_unit.clone(),
+            verdict: verdict_of(a),
+            brackets: record_brackets(&a.export.brackets),
+            conditions: conditions_json(a),
+            result_json: serde_json::to_string(&a.json)
+                .map_err(|e| CliError::Input(e.to_string()))?,
+            joints,
+        },
+        meta,
+    )
 }

@@ -2,7 +2,7 @@
 //! from a seed, so a reader (another process) can tell every byte they should hold.
 
 use std::path::PathBuf;
-use zerocal_history::{DbLocation, JointRow, NewRecord, RecordKind};
+use zerocal_history::{DbLocation, JointRow, NewRecord, RecordBracket, RecordBrackets, RecordKind};
 
 /// The environment variable naming the PostgreSQL server of the tests.
 pub const POSTGRES_ENV: &str = "ZEROCAL_TEST_POSTGRES";
@@ -128,52 +128,112 @@ pub fn record(kind: RecordKind, serial: &str, i: u32, export_len: usize) -> NewR
         reference_id: None,
         zerocal_version: "0.1.0".into(),
         verdict: "PASS".into(),
-        brackets_json: r#"{"flange":"B-12"}"#.into(),
+        // An ID only: the shape an import's old `{"flange": "B-12"}` migrates to.
+        brackets: RecordBrackets {
+            upper_arm: None,
+            flange: Some(RecordBracket {
+                id: "B-12".into(),
+                calibration: None,
+            }),
+        },
         conditions_json: r#"{"temperature_c":21.5}"#.into(),
         result_json: r#"{"verdict":"PASS"}"#.into(),
         joints,
     }
 }
 
-/// Stores `r` as a build of schema 1-3 did (the profile's text in the record itself),
-/// straight through the backend's own client: the record a migration must carry over.
-/// Returns its ID.
+/// Stores `r` as a build of schema 1-3 did (the profile's text in the record itself,
+/// the brackets' IDs in an import's old shape, [`old_import_brackets`]), straight through
+/// the backend's own client: the record a migration must carry over. Returns its ID.
 pub fn insert_before_schema_4(at: &DbLocation, r: &NewRecord) -> i64 {
+    insert_old(at, r, OldSchema::ProfileInRecord, &old_import_brackets(r))
+}
+
+/// Stores `r` as a build of schema 4-5 did (the profile's text in `texts`), with
+/// `brackets_json` as given: one of the shapes schema 6 rewrites. Returns its ID.
+pub fn insert_at_schema_5(at: &DbLocation, r: &NewRecord, brackets_json: &str) -> i64 {
+    insert_old(at, r, OldSchema::ProfileInTexts, brackets_json)
+}
+
+/// The brackets of `r` as an import wrote them before schema 6: `{"upper_arm": ID or
+/// null, "flange": ID or null}` (calibrations, which that shape cannot hold, dropped).
+pub fn old_import_brackets(r: &NewRecord) -> String {
+    let id = |b: &Option<zerocal_history::RecordBracket>| b.as_ref().map(|b| b.id.clone());
+    serde_json::json!({ "upper_arm": id(&r.brackets.upper_arm), "flange": id(&r.brackets.flange) })
+        .to_string()
+}
+
+/// Where an old build kept a record's profile text.
+#[derive(Clone, Copy, PartialEq)]
+enum OldSchema {
+    /// Schema 1-3: `records.profile_toml`.
+    ProfileInRecord,
+    /// Schema 4-5: `texts`, by hash.
+    ProfileInTexts,
+}
+
+fn insert_old(at: &DbLocation, r: &NewRecord, schema: OldSchema, brackets_json: &str) -> i64 {
     use zerocal_history::sha256_hex;
     let (profile_sha, export_sha) = (sha256_hex(r.profile_toml.as_bytes()), sha256_hex(&r.export));
     let pass = |p: Option<bool>| p.map(i64::from);
+    // The profile's text: a column of the record, or a row of `texts` (NULL here, the
+    // row inserted first).
+    let (profile_column, texts) = match schema {
+        OldSchema::ProfileInRecord => ("profile_toml, ", None),
+        OldSchema::ProfileInTexts => ("", Some(r.profile_toml.clone())),
+    };
+    let sql = |p: char| {
+        let n = if texts.is_some() { 18 } else { 19 };
+        let params: Vec<String> = (1..=n).map(|i| format!("{p}{i}")).collect();
+        format!(
+            "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
+             controller_family, {profile_column}profile_sha256, export, export_sha256, \
+             measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
+             zerocal_version, verdict, brackets_json, conditions_json, result_json) \
+             VALUES ('2026-11-27T10:00:00Z', {}) RETURNING id",
+            params.join(", ")
+        )
+    };
     match at {
         DbLocation::Sqlite(p) => {
             let c = rusqlite::Connection::open(p).unwrap();
+            let mut params: Vec<Box<dyn rusqlite::ToSql>> = vec![
+                Box::new(r.kind.as_str()),
+                Box::new(r.serial.clone()),
+                Box::new(r.robot.clone()),
+                Box::new(r.robot_title.clone()),
+                Box::new(r.controller_family.clone()),
+            ];
+            match &texts {
+                None => params.push(Box::new(r.profile_toml.clone())),
+                Some(text) => {
+                    c.execute(
+                        "INSERT INTO texts (sha256, text) VALUES (?1, ?2) \
+                         ON CONFLICT (sha256) DO NOTHING",
+                        rusqlite::params![profile_sha, text],
+                    )
+                    .unwrap();
+                }
+            }
+            params.extend::<[Box<dyn rusqlite::ToSql>; 13]>([
+                Box::new(profile_sha.clone()),
+                Box::new(r.export.clone()),
+                Box::new(export_sha.clone()),
+                Box::new(r.measured_on.clone()),
+                Box::new(r.operator.clone()),
+                Box::new(r.pendant_unit.clone()),
+                Box::new(r.pendant_result_id),
+                Box::new(r.reference_id),
+                Box::new(r.zerocal_version.clone()),
+                Box::new(r.verdict.clone()),
+                Box::new(brackets_json.to_owned()),
+                Box::new(r.conditions_json.clone()),
+                Box::new(r.result_json.clone()),
+            ]);
             let id: i64 = c
                 .query_row(
-                    "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
-                     controller_family, profile_toml, profile_sha256, export, export_sha256, \
-                     measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
-                     zerocal_version, verdict, brackets_json, conditions_json, result_json) \
-                     VALUES ('2026-11-27T10:00:00Z', ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, \
-                     ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19) RETURNING id",
-                    rusqlite::params![
-                        r.kind.as_str(),
-                        r.serial,
-                        r.robot,
-                        r.robot_title,
-                        r.controller_family,
-                        r.profile_toml,
-                        profile_sha,
-                        r.export,
-                        export_sha,
-                        r.measured_on,
-                        r.operator,
-                        r.pendant_unit,
-                        r.pendant_result_id,
-                        r.reference_id,
-                        r.zerocal_version,
-                        r.verdict,
-                        r.brackets_json,
-                        r.conditions_json,
-                        r.result_json
-                    ],
+                    &sql('?'),
+                    rusqlite::params_from_iter(params.iter()),
                     |row| row.get(0),
                 )
                 .unwrap();
@@ -200,38 +260,42 @@ pub fn insert_before_schema_4(at: &DbLocation, r: &NewRecord) -> i64 {
                 .connect(postgres::NoTls)
                 .unwrap();
             let result_id = r.pendant_result_id.map(i64::from);
-            let id: i64 = c
-                .query_one(
-                    "INSERT INTO records (recorded_at, kind, serial, robot, robot_title, \
-                     controller_family, profile_toml, profile_sha256, export, export_sha256, \
-                     measured_on, operator, pendant_unit, pendant_result_id, reference_id, \
-                     zerocal_version, verdict, brackets_json, conditions_json, result_json) \
-                     VALUES ('2026-11-27T10:00:00Z', $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, \
-                     $11, $12, $13, $14, $15, $16, $17, $18, $19) RETURNING id",
-                    &[
-                        &r.kind.as_str(),
-                        &r.serial,
-                        &r.robot,
-                        &r.robot_title,
-                        &r.controller_family,
-                        &r.profile_toml,
-                        &profile_sha,
-                        &r.export,
-                        &export_sha,
-                        &r.measured_on,
-                        &r.operator,
-                        &r.pendant_unit,
-                        &result_id,
-                        &r.reference_id,
-                        &r.zerocal_version,
-                        &r.verdict,
-                        &r.brackets_json,
-                        &r.conditions_json,
-                        &r.result_json,
-                    ],
-                )
-                .unwrap()
-                .get(0);
+            let kind = r.kind.as_str();
+            let brackets_json = brackets_json.to_owned();
+            let mut params: Vec<&(dyn postgres::types::ToSql + Sync)> = vec![
+                &kind,
+                &r.serial,
+                &r.robot,
+                &r.robot_title,
+                &r.controller_family,
+            ];
+            match &texts {
+                None => params.push(&r.profile_toml),
+                Some(text) => {
+                    c.execute(
+                        "INSERT INTO texts (sha256, text) VALUES ($1, $2) \
+                         ON CONFLICT (sha256) DO NOTHING",
+                        &[&profile_sha, text],
+                    )
+                    .unwrap();
+                }
+            }
+            params.extend::<[&(dyn postgres::types::ToSql + Sync); 13]>([
+                &profile_sha,
+                &r.export,
+                &export_sha,
+                &r.measured_on,
+                &r.operator,
+                &r.pendant_unit,
+                &result_id,
+                &r.reference_id,
+                &r.zerocal_version,
+                &r.verdict,
+                &brackets_json,
+                &r.conditions_json,
+                &r.result_json,
+            ]);
+            let id: i64 = c.query_one(&sql('$'), &params).unwrap().get(0);
             for j in &r.joints {
                 c.execute(
                     "INSERT INTO joints VALUES ($1, $2, $3, $4, $5, $6, $7)",

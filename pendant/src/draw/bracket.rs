@@ -35,11 +35,14 @@ pub(super) fn bracket_lines(screen: &BracketScreen) -> [Text; 6] {
             return [
                 title,
                 // The yaw to a thousandth: the sine plate resolves it to some 0.04°.
-                line(format_args!(
-                    "{} z {}\u{b0}",
-                    screen.mount.name(),
-                    sgn(r.yaw.yaw_rad.to_degrees(), 3)
-                )),
+                match r.yaw {
+                    Some(yaw) => line(format_args!(
+                        "{} z {}\u{b0}",
+                        screen.mount.name(),
+                        sgn(yaw.yaw_rad.to_degrees(), 3)
+                    )),
+                    None => line(format_args!("{} z --\u{b0}", screen.mount.name())),
+                },
                 line(format_args!("x {}\u{b0}", sgn(x_deg, BRACKET_DECIMALS))),
                 line(format_args!("y {}\u{b0}", sgn(y_deg, BRACKET_DECIMALS))),
                 line(format_args!(

@@ -23,14 +23,18 @@ fn lines_fit_the_display() {
     // A bracket's every step, its result and refusals with the longest ID and
     // mount name and the widest numbers a calibration gives.
     let id = zerocal_core::bracket::bracket_id("ABCDEFGHIJKL").unwrap();
-    let result = zerocal_procedure::bracket_cal::BracketResult {
+    let (id_bytes, id_len) = zerocal_procedure::record::id_bytes(&id);
+    let result = zerocal_procedure::bracket_cal::StoredBracket {
+        id: id_bytes,
+        id_len,
         rotation_rad: zerocal_core::model::Tilt::from_deg(-0.999_99_f32, -0.999_99),
         uncertainty_rad: 0.000_99_f32.to_radians(),
-        yaw: zerocal_core::bracket::BracketYaw {
+        date: None,
+        temperature_c: Some(-40.5),
+        yaw: Some(zerocal_core::bracket::BracketYaw {
             yaw_rad: -0.999_f32.to_radians(),
             uncertainty_rad: 0.099_f32.to_radians(),
-        },
-        temperature_c: Some(-40.5),
+        }),
     };
     let outcomes = [
         None,

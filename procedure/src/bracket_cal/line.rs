@@ -3,7 +3,7 @@
 
 use core::fmt::{self, Write};
 
-use super::{BracketResult, StoredBracket};
+use super::{id_bytes, StoredBracket};
 use crate::link::Line;
 use crate::log::TEMPERATURE_DECIMALS;
 use zerocal_core::bracket::{bracket_id, BracketMount, BracketYaw};
@@ -18,11 +18,13 @@ pub const BRACKET_LINE_DECIMALS: u8 = 5;
 /// The first word of a [`bracket_line`].
 const LINE_TAG: &str = "bracket";
 
-/// `bracket MOUNT id ID rot_deg X,Y u_deg U yaw_deg C u_yaw_deg W temp_c T|none`, or
-/// `bracket MOUNT none`: one kept calibration as the link's `brackets` prints it.
+/// `bracket MOUNT id ID rot_deg X,Y u_deg U yaw_deg C|none u_yaw_deg W|none temp_c
+/// T|none`, or `bracket MOUNT none`: one kept calibration as the link's `brackets`
+/// prints it (a calibration made on the pendant always has its yaw; the date is the
+/// desktop's to stamp).
 ///
 /// # Errors
-/// Only a full line buffer.
+/// A full line buffer, or a stored ID that is not one ([`StoredBracket::id`]).
 pub fn bracket_line<T: Real>(
     mount: BracketMount,
     kept: Option<&StoredBracket<T>>,
@@ -37,15 +39,23 @@ pub fn bracket_line<T: Real>(
     let magnitude = |v: T| Fixed::new(rad_to_deg(v).to_f64(), BRACKET_LINE_DECIMALS);
     write!(
         w,
-        " id {} rot_deg {},{} u_deg {} yaw_deg {} u_yaw_deg {} temp_c ",
-        b.id,
-        deg(b.result.rotation_rad.x_rad),
-        deg(b.result.rotation_rad.y_rad),
-        magnitude(b.result.uncertainty_rad),
-        deg(b.result.yaw.yaw_rad),
-        magnitude(b.result.yaw.uncertainty_rad),
+        " id {} rot_deg {},{} u_deg {}",
+        b.id().ok_or(fmt::Error)?,
+        deg(b.rotation_rad.x_rad),
+        deg(b.rotation_rad.y_rad),
+        magnitude(b.uncertainty_rad),
     )?;
-    match b.result.temperature_c {
+    match b.yaw {
+        Some(y) => write!(
+            w,
+            " yaw_deg {} u_yaw_deg {}",
+            deg(y.yaw_rad),
+            magnitude(y.uncertainty_rad)
+        )?,
+        None => w.write_str(" yaw_deg none u_yaw_deg none")?,
+    }
+    w.write_str(" temp_c ")?;
+    match b.temperature_c {
         Some(t) => write!(w, "{}", Fixed::new(t.to_f64(), TEMPERATURE_DECIMALS))?,
         None => w.write_str("none")?,
     }
@@ -114,11 +124,20 @@ pub fn parse_bracket_line<T: Real>(
     if u < 0.0 {
         return Err(BracketLineError::BadField("u_deg"));
     }
-    let yaw = number("yaw_deg", field("yaw_deg")?)?;
-    let u_yaw = number("u_yaw_deg", field("u_yaw_deg")?)?;
-    if u_yaw < 0.0 {
-        return Err(BracketLineError::BadField("u_yaw_deg"));
-    }
+    let yaw = match (field("yaw_deg")?, field("u_yaw_deg")?) {
+        ("none", "none") => None,
+        (yaw, u_yaw) => {
+            let yaw = number("yaw_deg", yaw)?;
+            let u_yaw = number("u_yaw_deg", u_yaw)?;
+            if u_yaw < 0.0 {
+                return Err(BracketLineError::BadField("u_yaw_deg"));
+            }
+            Some(BracketYaw {
+                yaw_rad: deg_to_rad(T::lit(yaw)),
+                uncertainty_rad: deg_to_rad(T::lit(u_yaw)),
+            })
+        }
+    };
     let temperature_c = match field("temp_c")? {
         "none" => None,
         t => Some(T::lit(number("temp_c", t)?)),
@@ -126,20 +145,17 @@ pub fn parse_bracket_line<T: Real>(
     if words.next().is_some() {
         return Err(BracketLineError::BadField("end of line"));
     }
+    let (id, id_len) = id_bytes(&id);
     Ok((
         mount,
         Some(StoredBracket {
-            mount,
             id,
-            result: BracketResult {
-                rotation_rad: Tilt::new(deg_to_rad(T::lit(x)), deg_to_rad(T::lit(y))),
-                uncertainty_rad: deg_to_rad(T::lit(u)),
-                yaw: BracketYaw {
-                    yaw_rad: deg_to_rad(T::lit(yaw)),
-                    uncertainty_rad: deg_to_rad(T::lit(u_yaw)),
-                },
-                temperature_c,
-            },
+            id_len,
+            rotation_rad: Tilt::new(deg_to_rad(T::lit(x)), deg_to_rad(T::lit(y))),
+            uncertainty_rad: deg_to_rad(T::lit(u)),
+            date: None,
+            temperature_c,
+            yaw,
         }),
     ))
 }

@@ -38,12 +38,12 @@
 //! [`progress_line`]: `zerocal pendant bracket-calibrate` follows it step by step.
 
 use crate::capture::Capture;
-use crate::machine::record::{id_bytes, id_of};
+use crate::machine::record::id_bytes;
+pub use crate::machine::record::StoredBracket;
 use crate::machine::{Event, ProcedureConfig, Record};
 use crate::stillness::{Stillness, StillnessFilter};
 use zerocal_core::bracket::{
-    calibrate, calibrate_yaw, BracketError, BracketId, BracketMount, BracketYaw,
-    CAPTURES_PER_READING,
+    calibrate, calibrate_yaw, BracketError, BracketId, BracketMount, CAPTURES_PER_READING,
 };
 use zerocal_core::model::{Tilt, TiltAxis};
 use zerocal_core::real::{rad_to_deg, Real};
@@ -122,81 +122,8 @@ impl BracketStep {
     }
 }
 
-/// A calibration's numbers.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct BracketResult<T> {
-    /// The pendant's turn in the bracket about its x and y (rad).
-    pub rotation_rad: Tilt<T>,
-    /// The standard uncertainty of the x part (rad).
-    pub uncertainty_rad: T,
-    /// The bracket's yaw (the sine plate's).
-    pub yaw: BracketYaw<T>,
-    /// The mean temperature of the captures that carried one (°C).
-    pub temperature_c: Option<T>,
-}
-
-/// A calibration kept on the pendant: a [`Record::BracketCalibration`] read back.
-// No `defmt::Format`: its ID is a heapless `String`, which implements only defmt 0.3's.
-#[derive(Clone, Debug, PartialEq)]
-pub struct StoredBracket<T> {
-    /// Which bracket.
-    pub mount: BracketMount,
-    /// Its ID.
-    pub id: BracketId,
-    /// What was measured.
-    pub result: BracketResult<T>,
-}
-
-impl<T: Real> StoredBracket<T> {
-    /// The record that stores it.
-    pub fn to_record(&self) -> Record<T> {
-        let (id, id_len) = id_bytes(&self.id);
-        Record::BracketCalibration {
-            mount: self.mount,
-            id,
-            id_len,
-            rotation_rad: self.result.rotation_rad,
-            uncertainty_rad: self.result.uncertainty_rad,
-            yaw_rad: self.result.yaw.yaw_rad,
-            yaw_uncertainty_rad: self.result.yaw.uncertainty_rad,
-            temperature_c: self.result.temperature_c,
-        }
-    }
-
-    /// The calibration a record holds, if it is one.
-    pub fn from_record(r: &Record<T>) -> Option<Self> {
-        let Record::BracketCalibration {
-            mount,
-            id,
-            id_len,
-            rotation_rad,
-            uncertainty_rad,
-            yaw_rad,
-            yaw_uncertainty_rad,
-            temperature_c,
-        } = *r
-        else {
-            return None;
-        };
-        let id = id_of(&id, id_len)?;
-        Some(StoredBracket {
-            mount,
-            id,
-            result: BracketResult {
-                rotation_rad,
-                uncertainty_rad,
-                yaw: BracketYaw {
-                    yaw_rad,
-                    uncertainty_rad: yaw_uncertainty_rad,
-                },
-                temperature_c,
-            },
-        })
-    }
-}
-
-/// The kept calibration of each mount, in [`BracketMount::ALL`]'s order.
+/// The kept calibration of each mount, in [`BracketMount::ALL`]'s order: each as its
+/// [`Record::BracketCalibration`] holds it.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct StoredBrackets<T> {
     kept: [Option<StoredBracket<T>>; 2],
@@ -207,16 +134,22 @@ impl<T: Real> StoredBrackets<T> {
     pub fn from_records(records: impl IntoIterator<Item = Record<T>>) -> Self {
         let mut out = Self::default();
         for r in records {
-            if let Some(b) = StoredBracket::from_record(&r) {
-                out.keep(b);
-            }
+            out.keep_record(&r);
         }
         out
     }
 
-    /// Keeps `b` in place of its mount's calibration.
-    pub fn keep(&mut self, b: StoredBracket<T>) {
-        let i = usize::from(b.mount == BracketMount::Flange);
+    /// Keeps the calibration `r` holds, if it is a [`Record::BracketCalibration`], in
+    /// place of its mount's.
+    pub fn keep_record(&mut self, r: &Record<T>) {
+        if let Record::BracketCalibration { mount, calibration } = *r {
+            self.keep(mount, calibration);
+        }
+    }
+
+    /// Keeps `b` in place of `mount`'s calibration.
+    pub fn keep(&mut self, mount: BracketMount, b: StoredBracket<T>) {
+        let i = usize::from(mount == BracketMount::Flange);
         if let Some(slot) = self.kept.get_mut(i) {
             *slot = Some(b);
         }
@@ -276,7 +209,7 @@ pub struct BracketCalState<T> {
     captures: [Option<Capture<T>>; BRACKET_CAPTURES],
     /// The still windows of the reading under way: their sums and counts.
     windows: Windows<T>,
-    outcome: Option<Result<BracketResult<T>, BracketError>>,
+    outcome: Option<Result<StoredBracket<T>, BracketError>>,
     stillness: Stillness<T>,
     armed: bool,
     live: Option<Tilt<T>>,
@@ -326,7 +259,7 @@ impl<T: Real> BracketCalState<T> {
     }
 
     /// The result, or the refusal, once [`BracketStep::Done`].
-    pub fn outcome(&self) -> Option<&Result<BracketResult<T>, BracketError>> {
+    pub fn outcome(&self) -> Option<&Result<StoredBracket<T>, BracketError>> {
         self.outcome.as_ref()
     }
 
@@ -382,17 +315,13 @@ impl<T: Real> BracketCalState<T> {
 
     /// The record that keeps the result, if there is one.
     fn kept(&self) -> Option<Record<T>> {
-        let Some(Ok(result)) = self.outcome else {
+        let Some(Ok(calibration)) = self.outcome else {
             return None;
         };
-        Some(
-            StoredBracket {
-                mount: self.mount,
-                id: self.id.clone(),
-                result,
-            }
-            .to_record(),
-        )
+        Some(Record::BracketCalibration {
+            mount: self.mount,
+            calibration,
+        })
     }
 
     fn restart_window(&mut self, window: &mut StillnessFilter<T>) {
@@ -569,7 +498,7 @@ fn check_after<T: Real>(
 fn result<T: Real>(
     config: &ProcedureConfig<T>,
     s: &BracketCalState<T>,
-) -> Option<Result<BracketResult<T>, BracketError>> {
+) -> Option<Result<StoredBracket<T>, BracketError>> {
     let (range, noise) = (config.fit.sensor_range_rad, config.fit.sensor_noise_rad);
     let (alone, seated) = (s.headings(0)?, s.headings(SEATED_START)?);
     let (alone_tilted, seated_tilted) = (
@@ -588,12 +517,22 @@ fn result<T: Real>(
                     config.convention,
                     noise,
                 )?;
-                Ok(BracketResult {
+                let (id, id_len) = id_bytes(&s.id);
+                let kept = StoredBracket {
+                    id,
+                    id_len,
                     rotation_rad,
                     uncertainty_rad,
-                    yaw,
+                    // The pendant has no calendar: the desktop stamps the day.
+                    date: None,
                     temperature_c: s.mean_temperature(),
-                })
+                    yaw: Some(yaw),
+                };
+                // What the store would refuse to read back is refused here, by name
+                // (a temperature outside the sensor's range, say), never kept.
+                kept.calibration()
+                    .map(|_| kept)
+                    .ok_or(BracketError::Implausible)
             },
         ),
     )

@@ -150,7 +150,7 @@ fn a_full_run_gives_back_the_brackets_turn() {
     assert!(
         (result.rotation_rad.x_rad - core_turn.x_rad).abs() < 1e-5
             && (result.rotation_rad.y_rad - core_turn.y_rad).abs() < 1e-5
-            && (result.yaw.yaw_rad - c).abs() < 1e-5,
+            && result.yaw.is_some_and(|y| (y.yaw_rad - c).abs() < 1e-5),
         "{result:?}"
     );
     // Headings solved from the readings: no half-turn term, the noise alone.
@@ -188,8 +188,10 @@ fn a_full_run_gives_back_the_brackets_turn() {
     };
     let kept = StoredBrackets::from_records([record]);
     let flange = kept.get(BracketMount::Flange).unwrap();
-    assert_eq!(flange.id.as_str(), "F-017");
-    assert_eq!(flange.result, result);
+    assert_eq!(flange.id().unwrap().as_str(), "F-017");
+    assert_eq!(*flange, result);
+    // Made on the pendant: no date until the desktop stamps one.
+    assert_eq!(flange.date, None);
     assert!(kept.get(BracketMount::UpperArm).is_none());
 }
 
@@ -254,7 +256,7 @@ fn back_undoes_the_last_capture() {
         Some(Ok(result)) => assert!(
             (result.rotation_rad.x_rad - a).abs() < 1e-5
                 && (result.rotation_rad.y_rad - b).abs() < 1e-5
-                && result.yaw.yaw_rad.abs() < 1e-5,
+                && result.yaw.is_some_and(|y| y.yaw_rad.abs() < 1e-5),
             "{result:?}"
         ),
         other => panic!("{other:?}"),
@@ -270,18 +272,18 @@ fn back_undoes_the_last_capture() {
 /// line with a field missing or not a number is refused by the field's name.
 #[test]
 fn the_brackets_line_reads_back() {
+    let (id, id_len) = id_bytes(&bracket_id("U-2").unwrap());
     let kept = StoredBracket {
-        mount: BracketMount::UpperArm,
-        id: bracket_id("U-2").unwrap(),
-        result: BracketResult {
-            rotation_rad: Tilt::from_deg(0.412_345_6, -0.27),
-            uncertainty_rad: deg_to_rad(0.000_83),
-            yaw: BracketYaw {
-                yaw_rad: deg_to_rad(-0.123_45),
-                uncertainty_rad: deg_to_rad(0.041),
-            },
-            temperature_c: Some(21.25_f64),
-        },
+        id,
+        id_len,
+        rotation_rad: Tilt::from_deg(0.412_345_6, -0.27),
+        uncertainty_rad: deg_to_rad(0.000_83),
+        date: None,
+        temperature_c: Some(21.25_f64),
+        yaw: Some(zerocal_core::bracket::BracketYaw {
+            yaw_rad: deg_to_rad(-0.123_45),
+            uncertainty_rad: deg_to_rad(0.041),
+        }),
     };
     let line = bracket_line(BracketMount::UpperArm, Some(&kept)).unwrap();
     assert_eq!(
@@ -291,10 +293,23 @@ fn the_brackets_line_reads_back() {
     );
     let (mount, back) = parse_bracket_line::<f64>(&line).unwrap();
     let back = back.unwrap();
-    assert_eq!((mount, back.id.as_str()), (BracketMount::UpperArm, "U-2"));
-    let (x, y) = back.result.rotation_rad.to_deg();
+    assert_eq!(
+        (mount, back.id().unwrap().as_str()),
+        (BracketMount::UpperArm, "U-2")
+    );
+    let (x, y) = back.rotation_rad.to_deg();
     assert!((x - 0.412_345_6).abs() <= 0.5e-5 && (y + 0.27).abs() < 1e-12);
-    assert_eq!(back.result.temperature_c, Some(21.25));
+    assert_eq!(back.temperature_c, Some(21.25));
+    // A calibration without a yaw prints and reads back as one.
+    let no_yaw = StoredBracket { yaw: None, ..kept };
+    let line = bracket_line(BracketMount::UpperArm, Some(&no_yaw)).unwrap();
+    assert!(
+        line.as_str().contains(" yaw_deg none u_yaw_deg none "),
+        "{}",
+        line.as_str()
+    );
+    let back = parse_bracket_line::<f64>(&line).unwrap().1.unwrap();
+    assert_eq!((back.yaw, back.date), (None, None));
     let none = bracket_line::<f64>(BracketMount::Flange, None).unwrap();
     assert_eq!(
         parse_bracket_line::<f64>(&none),

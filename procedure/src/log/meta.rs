@@ -113,7 +113,10 @@ pub fn write_bracket<T: Real>(
 }
 
 /// Writes a bracket's calibration as the export's and the profile's lines carry it,
-/// after their key: ` id ID rot_deg x,y u_deg u date YYYYMMDD temp_c t`, or ` none`.
+/// after their key: ` id ID rot_deg x,y u_deg u date YYYYMMDD|none temp_c t|none`
+/// (`none`: a calibration made on the pendant before the desktop stamps its day, a
+/// sensor that gave no temperature), then ` yaw_deg c u_yaw_deg w` where it has a yaw;
+/// or ` none`.
 ///
 /// # Errors
 /// Only a full line buffer.
@@ -130,12 +133,20 @@ pub fn write_bracket_fields<T: Real>(
     deg(w, c.rotation_rad.y_rad)?;
     w.write_str(" u_deg ")?;
     deg(w, c.uncertainty_rad)?;
-    write!(
-        w,
-        " date {} temp_c {}",
-        c.date,
-        Fixed::new(c.temperature_c.to_f64(), super::TEMPERATURE_DECIMALS)
-    )?;
+    // A calibration made on the pendant has no date until the desktop stamps one,
+    // and the sensor may have given no temperature: `none` for either.
+    match c.date {
+        Some(d) => write!(w, " date {d}")?,
+        None => w.write_str(" date none")?,
+    }
+    match c.temperature_c {
+        Some(t) => write!(
+            w,
+            " temp_c {}",
+            Fixed::new(t.to_f64(), super::TEMPERATURE_DECIMALS)
+        )?,
+        None => w.write_str(" temp_c none")?,
+    }
     if let Some(y) = c.yaw {
         w.write_str(" yaw_deg ")?;
         deg(w, y.yaw_rad)?;
@@ -175,10 +186,18 @@ pub fn parse_bracket_fields<'s, T: Real>(
     let u = field("u_deg")
         .and_then(&parse)
         .filter(|u| u.is_finite() && *u >= 0.0 && *u <= MAX_READING_DEG);
-    let date = field("date").and_then(|d| d.parse::<u32>().ok());
-    let temperature_c = field("temp_c")
-        .and_then(&parse)
-        .filter(|t| t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t));
+    let date = field("date").and_then(|d| match d {
+        "none" => Some(None),
+        d => d.parse::<u32>().ok().map(Some),
+    });
+    let temperature_c = field("temp_c").and_then(|t| match t {
+        "none" => Some(None),
+        t => parse(t)
+            .filter(|t| {
+                t.is_finite() && (TEMPERATURE_RANGE_C.0..=TEMPERATURE_RANGE_C.1).contains(t)
+            })
+            .map(|t| Some(T::lit(t))),
+    });
     // The yaw, where the sine plate measured it: `yaw_deg c u_yaw_deg w` to the end.
     let yaw = match rest.next() {
         None => None,
@@ -202,7 +221,7 @@ pub fn parse_bracket_fields<'s, T: Real>(
         rotation?,
         deg_to_rad(T::lit(u?)),
         date?,
-        T::lit(temperature_c?),
+        temperature_c?,
     )
     .ok()?;
     match yaw {

@@ -10,9 +10,7 @@
 //! may change now, what `erase all` leaves, when a result is kept and under which ID,
 //! where a sample goes during a bracket calibration) is made here, on the host's tests.
 
-use crate::bracket_cal::{
-    bracket_step, BracketCalState, BracketOutput, StoredBracket, StoredBrackets,
-};
+use crate::bracket_cal::{bracket_step, BracketCalState, BracketOutput, StoredBrackets};
 use crate::machine::record::kept::KEPT_RESULT_LEN;
 use crate::machine::{
     step as session_step, Event, Notice, Output, PendantProfile, PendantUnit, Phase,
@@ -341,9 +339,7 @@ impl<T: Real> PendantMachine<T> {
             BracketOutput::Stay => return,
             BracketOutput::Leave => {}
             BracketOutput::Keep(record) => {
-                if let Some(kept) = StoredBracket::from_record(&record) {
-                    self.brackets.keep(kept);
-                }
+                self.brackets.keep_record(&record);
                 // One record into a buffer of a whole plan's.
                 out.records.push(record);
             }

@@ -411,7 +411,7 @@ fn the_bracket_mode_takes_the_samples_and_keeps_its_result() {
         }]
     ));
     let kept = rig.m.brackets().get(BracketMount::Flange).unwrap();
-    assert_eq!(kept.id, id);
+    assert_eq!(kept.id(), Some(id));
     assert_eq!(
         StoredBrackets::from_records(rig.flash.values().copied()).get(BracketMount::Flange),
         Some(kept)

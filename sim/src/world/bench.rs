@@ -30,8 +30,8 @@ pub(super) fn exact_calibration(made: &[f64; 3]) -> BracketCalibration<f64> {
         id: bracket_id("EXACT").unwrap_or_default(),
         rotation_rad: Tilt::new(read_a, (-read_x / read_a.cos()).asin()),
         uncertainty_rad: 0.0,
-        date: SIM_CALIBRATION_DATE,
-        temperature_c: 23.0,
+        date: Some(SIM_CALIBRATION_DATE),
+        temperature_c: Some(23.0),
         yaw: Some(BracketYaw {
             yaw_rad: c,
             uncertainty_rad: 0.0,
@@ -166,8 +166,8 @@ pub(super) fn calibrate_bracket(
         bracket_id(id).ok()?,
         rotation,
         u,
-        SIM_CALIBRATION_DATE,
-        bench.temperature_c,
+        Some(SIM_CALIBRATION_DATE),
+        Some(bench.temperature_c),
     )
     .and_then(|c| c.with_yaw(yaw))
     .ok()

@@ -47,7 +47,7 @@ impl Product for FakeProduct {
             reference_id: None,
             zerocal_version: "test".into(),
             verdict: "PASS".into(),
-            brackets_json: "[]".into(),
+            brackets: zerocal_history::RecordBrackets::default(),
             conditions_json: "{}".into(),
             result_json: "{}".into(),
             joints: (2..=6)

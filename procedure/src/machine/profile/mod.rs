@@ -263,8 +263,8 @@ pub(crate) mod testing {
                 bracket_id(id).unwrap(),
                 Tilt::from_deg(x_deg, y_deg),
                 deg_to_rad(0.0012),
-                20261127,
-                21.5,
+                Some(20261127),
+                Some(21.5),
             )
             .unwrap()
         };

@@ -13,10 +13,17 @@
 //! them) and holds 96 stage-2 captures. Formats 1-4 are refused as `WrongFormat` and
 //! the pendant starts afresh: a format-4 store's slot 1 was a half turn's second
 //! reading, which format 5 would take for a heading.
+//!
+//! The two bracket records ([`Record::BracketCalibration`], [`Record::ProfileBracket`])
+//! hold one stored form, [`StoredBracket`], written by one encoding under their own
+//! format byte, [`BRACKET_FORMAT`]: bumping [`FORMAT`] would reset every store. A
+//! bracket record of format 5 (the layouts before: the bench's with a yaw and no date,
+//! the profile's with a date and a temperature) still reads, into the same stored
+//! form, so a pendant's kept calibrations survive the update.
 
 use super::profile::{MAX_MASS_KG, MAX_POSITION_M};
 use super::{Capture, Phase, ReadingSlot, READING_SLOTS};
-use zerocal_core::bracket::{BracketMount, BRACKET_ID_LEN};
+use zerocal_core::bracket::BracketMount;
 use zerocal_core::capture::{CaptureIndex, MAX_CAPTURES};
 use zerocal_core::model::{Convention, JointAxis, Tilt, JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::MAX_POSES;
@@ -25,6 +32,7 @@ use zerocal_core::stage2::PoseReading;
 
 mod bytes;
 pub mod kept;
+mod legacy;
 mod stored_bracket;
 #[cfg(test)]
 mod tests;
@@ -39,6 +47,10 @@ pub const MAX_RECORD_LEN: usize = 1 + 8 * 10;
 /// The record format this build writes and reads (the first byte of every value). A
 /// store holding another format is reset by the pendant, never misread.
 pub const FORMAT: u8 = 5;
+
+/// The format byte of the bracket records ([`StoredBracket`]'s one encoding); those of
+/// [`FORMAT`] are read in the layouts that format wrote ([`legacy`]).
+pub const BRACKET_FORMAT: u8 = 6;
 
 /// One stored fact.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -167,20 +179,8 @@ pub enum Record<T> {
     BracketCalibration {
         /// Which bracket.
         mount: BracketMount,
-        /// Its ID, ASCII, `id_len` bytes.
-        id: [u8; BRACKET_ID_LEN],
-        /// Bytes of `id` used.
-        id_len: u8,
-        /// The pendant's turn in the bracket about its x and y (rad).
-        rotation_rad: Tilt<T>,
-        /// The calibration's standard uncertainty (rad).
-        uncertainty_rad: T,
-        /// The bracket's yaw, the sine plate's (rad).
-        yaw_rad: T,
-        /// Its standard uncertainty (rad).
-        yaw_uncertainty_rad: T,
-        /// The mean temperature of the readings (°C), if the sensor gave one.
-        temperature_c: Option<T>,
+        /// Its calibration.
+        calibration: StoredBracket<T>,
     },
     /// The last completed result.
     LastResult {
@@ -385,7 +385,11 @@ impl<T: Real> Record<T> {
     #[inline(never)]
     pub fn encode(&self, buf: &mut [u8]) -> Result<usize, RecordError> {
         let mut w = Writer { buf, len: 0 };
-        w.put(&[FORMAT])?;
+        let format = match self {
+            Record::BracketCalibration { .. } | Record::ProfileBracket { .. } => BRACKET_FORMAT,
+            _ => FORMAT,
+        };
+        w.put(&[format])?;
         match *self {
             Record::Bias(t) => {
                 w.f(t.x_rad)?;
@@ -484,22 +488,8 @@ impl<T: Real> Record<T> {
                 match calibration {
                     None => w.put(&[0])?,
                     Some(c) => {
-                        w.put(&[1, c.id_len])?;
-                        w.put(&c.id)?;
-                        for v in c.rotation_rad {
-                            w.f(v)?;
-                        }
-                        w.f(c.uncertainty_rad)?;
-                        w.put(&c.date.to_le_bytes())?;
-                        w.f(c.temperature_c)?;
-                        match c.yaw_rad {
-                            None => w.put(&[0])?,
-                            Some([yaw, u]) => {
-                                w.put(&[1])?;
-                                w.f(yaw)?;
-                                w.f(u)?;
-                            }
-                        }
+                        w.put(&[1])?;
+                        c.put(&mut w)?;
                     }
                 }
             }
@@ -518,24 +508,9 @@ impl<T: Real> Record<T> {
                     w.f(v)?;
                 }
             }
-            Record::BracketCalibration {
-                mount,
-                id,
-                id_len,
-                rotation_rad,
-                uncertainty_rad,
-                yaw_rad,
-                yaw_uncertainty_rad,
-                temperature_c,
-            } => {
-                w.put(&[mount_code(mount), id_len])?;
-                w.put(&id)?;
-                w.f(rotation_rad.x_rad)?;
-                w.f(rotation_rad.y_rad)?;
-                w.f(uncertainty_rad)?;
-                w.f(yaw_rad)?;
-                w.f(yaw_uncertainty_rad)?;
-                w.temperature(temperature_c)?;
+            Record::BracketCalibration { mount, calibration } => {
+                w.put(&[mount_code(mount)])?;
+                calibration.put(&mut w)?;
             }
             Record::PlanPose { index, joints_rad } => {
                 w.put(&[index])?;
@@ -567,6 +542,14 @@ impl<T: Real> Record<T> {
     pub fn decode(key: u16, value: &[u8]) -> Result<Self, RecordError> {
         let mut r = Reader { buf: value, at: 0 };
         let format = r.u8()?;
+        let bracket_keys = [key::PROFILE_BRACKET, key::BRACKET_CALIBRATION];
+        if bracket_keys.iter().any(|k| (*k..*k + 2).contains(&key)) {
+            return match format {
+                BRACKET_FORMAT => Self::decode_bracket(key, &mut r),
+                FORMAT => legacy::decode_bracket(key, &mut r),
+                other => Err(RecordError::WrongFormat(other)),
+            };
+        }
         if format != FORMAT {
             return Err(RecordError::WrongFormat(format));
         }
@@ -704,41 +687,6 @@ impl<T: Real> Record<T> {
                     com_m,
                 }
             }
-            k if k == key::PROFILE_BRACKET || k == key::PROFILE_BRACKET + 1 => {
-                let generation = r.u8()?;
-                let flange = r.u8()?;
-                if u16::from(flange) != k - key::PROFILE_BRACKET {
-                    return Err(RecordError::BadField);
-                }
-                let calibration = if r.flag()? {
-                    let id_len = r.u8()?;
-                    let id = r.take::<BRACKET_ID_LEN>()?;
-                    let stored = StoredBracket {
-                        id,
-                        id_len,
-                        rotation_rad: r.array()?,
-                        uncertainty_rad: r.f()?,
-                        date: u32::from_le_bytes(r.take::<4>()?),
-                        temperature_c: r.f()?,
-                        yaw_rad: if r.flag()? { Some(r.array()?) } else { None },
-                    };
-                    // Bytes past the ID zero, and a calibration core would accept.
-                    let padded = id
-                        .get(usize::from(id_len)..)
-                        .is_some_and(|pad| pad.iter().all(|b| *b == 0));
-                    if !padded || stored.calibration().is_none() {
-                        return Err(RecordError::BadField);
-                    }
-                    Some(stored)
-                } else {
-                    None
-                };
-                Record::ProfileBracket {
-                    generation,
-                    flange: flange == 1,
-                    calibration,
-                }
-            }
             k if (key::PROFILE_PLACEMENT..key::PROFILE_MOUNT).contains(&k) => {
                 let generation = r.u8()?;
                 let part = r.u8()?;
@@ -794,38 +742,41 @@ impl<T: Real> Record<T> {
                     zero_deg: r.joints()?,
                 }
             }
-            k if (key::BRACKET_CALIBRATION..key::BRACKET_CALIBRATION + BRACKET_KEYS as u16)
-                .contains(&k) =>
-            {
-                let mount = BracketMount::ALL
-                    .get(usize::from(r.u8()?))
-                    .copied()
-                    .filter(|m| u16::from(mount_code(*m)) == k - key::BRACKET_CALIBRATION)
-                    .ok_or(RecordError::BadField)?;
-                let id_len = r.u8()?;
-                let id = r.take::<BRACKET_ID_LEN>()?;
-                if id_of(&id, id_len).is_none() {
-                    return Err(RecordError::BadField);
-                }
-                let rotation_rad = r.tilt()?;
-                let uncertainty_rad: T = r.f()?;
-                let yaw_rad: T = r.f()?;
-                let yaw_uncertainty_rad: T = r.f()?;
-                if uncertainty_rad < T::zero() || yaw_uncertainty_rad < T::zero() {
-                    return Err(RecordError::BadField);
-                }
-                Record::BracketCalibration {
-                    mount,
-                    id,
-                    id_len,
-                    rotation_rad,
-                    uncertainty_rad,
-                    yaw_rad,
-                    yaw_uncertainty_rad,
-                    temperature_c: r.temperature()?,
-                }
-            }
             k => return Err(RecordError::UnknownKey(k)),
         })
     }
+
+    /// A bracket record of [`BRACKET_FORMAT`], after its format byte.
+    fn decode_bracket(key: u16, r: &mut Reader<'_>) -> Result<Self, RecordError> {
+        if let Some(flange) = key.checked_sub(key::PROFILE_BRACKET).filter(|f| *f < 2) {
+            let generation = r.u8()?;
+            if u16::from(r.u8()?) != flange {
+                return Err(RecordError::BadField);
+            }
+            let calibration = if r.flag()? {
+                Some(StoredBracket::read(r)?)
+            } else {
+                None
+            };
+            return Ok(Record::ProfileBracket {
+                generation,
+                flange: flange == 1,
+                calibration,
+            });
+        }
+        let mount = bracket_mount(key, r.u8()?)?;
+        Ok(Record::BracketCalibration {
+            mount,
+            calibration: StoredBracket::read(r)?,
+        })
+    }
+}
+
+/// The mount of a bench calibration's record under `key` whose mount byte is `code`.
+fn bracket_mount(key: u16, code: u8) -> Result<BracketMount, RecordError> {
+    BracketMount::ALL
+        .get(usize::from(code))
+        .copied()
+        .filter(|m| u16::from(mount_code(*m)) == key.wrapping_sub(key::BRACKET_CALIBRATION))
+        .ok_or(RecordError::BadField)
 }
