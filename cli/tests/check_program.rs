@@ -20,8 +20,7 @@ use zerocal_profile::Profile;
 /// profile the planner refuses (the UR5e) the seeded window poses the session's
 /// golden program uses.
 fn session_plan(name: &str, profile: &Profile) -> Vec<[f64; JOINTS]> {
-    default_plan(name, &TimingArgs::default())
-        .unwrap_or_else(|_| common::window_poses(profile, 8, 7))
+    default_plan(name).unwrap_or_else(|_| common::window_poses(profile, 8, 7))
 }
 
 /// Every built-in profile's check, at the default speed, runs its program (moves,

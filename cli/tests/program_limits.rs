@@ -36,7 +36,7 @@ fn write_plan(path: &Path, poses_deg: &[[f64; 6]]) {
 }
 
 fn kr16_plan_deg() -> Vec<[f64; 6]> {
-    zerocal_cli::program::default_plan("kuka-kr16", &TimingArgs::default())
+    zerocal_cli::program::default_plan("kuka-kr16")
         .unwrap()
         .iter()
         .map(|q| q.map(f64::to_degrees))

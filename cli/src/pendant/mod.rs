@@ -379,7 +379,7 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
                     .iter()
                     .map(|q| q.map(f64::to_radians))
                     .collect(),
-                None => crate::program::default_plan(robot, &default_timing()?)?,
+                None => crate::program::default_plan(robot)?,
             };
             let pendant = pendant_profile(&profile, brackets)?;
             vec![
@@ -394,18 +394,6 @@ pub fn requests(action: &PendantAction) -> Result<Vec<Request>, CliError> {
             ]
         }
     })
-}
-
-fn default_timing() -> Result<crate::timing::TimingArgs, CliError> {
-    use clap::Parser;
-    #[derive(Parser)]
-    struct Defaults {
-        #[command(flatten)]
-        timing: crate::timing::TimingArgs,
-    }
-    Defaults::try_parse_from(["timing"])
-        .map(|d| d.timing)
-        .map_err(|e| CliError::Input(e.to_string()))
 }
 
 /// Sends an action's requests in turn, each only after the one before it was answered

@@ -131,7 +131,7 @@ fn write_robot_time(out: &mut String, sp: &SessionPlan) {
         .collect();
     let _ = writeln!(
         out,
-        "robot time {}: motion {:.0} s, dwell {:.0} s ({} captures x {:.1} s), pendant mountings {:.0} s ({}), operator OKs {:.0} s ({} stops); planner's order {}",
+        "robot time {}: motion {:.0} s, dwell {:.0} s ({} captures x {:.1} s), pendant mountings {:.0} s ({}), operator OKs {:.0} s ({} stops); planner's {} {}",
         minutes(t.total_s),
         t.motion_s,
         t.dwell_s,
@@ -141,6 +141,11 @@ fn write_robot_time(out: &mut String, sp: &SessionPlan) {
         t.mountings,
         t.operator_s,
         t.ok_stops,
+        if sp.trade.is_some() {
+            "poses in its order"
+        } else {
+            "order"
+        },
         minutes(sp.time_unordered.total_s),
     );
     if let Some(trade) = &sp.trade {

@@ -22,7 +22,7 @@ use crate::error::CliError;
 use crate::timing::{self, Pendant, SessionPoses, Timing};
 use zerocal_core::model::{JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::{with_revisits, Candidate, Plan, PlanConfig, PoseList, ROBOT_TIME_AIM_S};
-use zerocal_core::stage2::{covariance_bound, FitConfig, Stage2Model};
+use zerocal_core::stage2::{covariance_bound, geometry, FitConfig, Information, Stage2Model};
 use zerocal_profile::Profile;
 
 /// How much each joint's predicted k = 2 uncertainty may grow, as a fraction of the
@@ -112,9 +112,13 @@ pub(super) fn traded_for_travel(
     if swaps == 0 {
         return Ok((ordered, None));
     }
-    // The swapped poses toured afresh: kept where that is shorter still.
+    // The swapped poses toured afresh: kept where that is shorter still and within the
+    // tolerance too (a new order visits other poses again, which the budget counts).
     if let Ok(toured) = session_order(profile, timing, &ordered.plan) {
-        if toured.time.total_s < ordered.time.total_s {
+        let within = inputs
+            .k2(&toured.plan.poses_rad)
+            .is_ok_and(|k2| within_ceiling(&k2, &ceiling));
+        if toured.time.total_s < ordered.time.total_s && within {
             ordered = SessionOrder {
                 time_unordered: ordered.time_unordered,
                 ..toured
@@ -227,9 +231,24 @@ impl TradeInputs<'_> {
         if time.total_s >= ordered.time.total_s {
             return Ok(None);
         }
+        // What the fit will estimate on these poses: the geometry they separate, as
+        // the planner identifies it on its own poses.
+        let configured = match self.config.joint2_range_rad {
+            Some(_) => self.config.extras,
+            None => self.config.extras.without_joint2(),
+        };
+        let (extras, _) = geometry::identifiable(
+            &mut Information::new(0),
+            self.model,
+            configured,
+            distinct.iter().copied(),
+            &[0.0; WRIST_JOINTS],
+            geometry::GEOMETRY_CONDITION,
+            self.config.noise_sigma_rad,
+        );
         let Ok(bound) = covariance_bound(
             self.model,
-            plan.extras,
+            extras,
             &distinct,
             &[0.0; WRIST_JOINTS],
             self.config.noise_sigma_rad,
@@ -243,7 +262,7 @@ impl TradeInputs<'_> {
         let Ok(k2) = self.k2(&swapped.poses_rad) else {
             return Ok(None);
         };
-        if !k2.iter().zip(ceiling).all(|(u, c)| u <= c) {
+        if !within_ceiling(&k2, ceiling) {
             return Ok(None);
         }
         let max_reading_rad = distinct.iter().fold(0.0f64, |m, q| {
@@ -252,6 +271,7 @@ impl TradeInputs<'_> {
         });
         Ok(Some(SessionOrder {
             plan: Plan {
+                extras,
                 predicted_sigma_rad: bound.sigma_rad,
                 predicted_zeros_sigma_rad: bound.zeros_sigma_rad,
                 condition_number: bound.condition_number,
@@ -263,6 +283,11 @@ impl TradeInputs<'_> {
             time_unordered: ordered.time_unordered,
         }))
     }
+}
+
+/// Every joint's k = 2 within its ceiling.
+fn within_ceiling(k2: &[f64; WRIST_JOINTS + 1], ceiling: &[f64; WRIST_JOINTS + 1]) -> bool {
+    k2.iter().zip(ceiling).all(|(u, c)| u <= c)
 }
 
 /// Whether the session's distinct pose `k` of `n` is visited again (core's

@@ -102,7 +102,7 @@ pub fn run(args: &ProgramArgs) -> Result<String, CliError> {
             .iter()
             .map(|q| q.map(f64::to_radians))
             .collect(),
-        None => default_plan(&args.robot, &args.timing)?,
+        None => default_plan(&args.robot)?,
     };
     let name = program_name(&args.out, args.format.max_name());
     if args.check {

@@ -5,7 +5,6 @@
 use crate::error::CliError;
 use crate::plan::flags::MAX_JOINT2_SWING_DEG;
 use crate::plan::PlanArgs;
-use crate::timing::TimingArgs;
 use clap::Parser;
 use std::path::Path;
 use zerocal_core::model::JOINTS;
@@ -154,21 +153,21 @@ fn check_plan_poses(poses_deg: &[[f64; JOINTS]], profile: &Profile) -> Result<()
     Ok(())
 }
 
-/// The plan `zerocal plan --robot R` would make with its defaults and these timing
-/// options, in the session's order (model radians).
-pub fn default_plan(robot: &str, timing: &TimingArgs) -> Result<Vec<[f64; JOINTS]>, CliError> {
-    plan_with(robot, timing, &[])
+/// The plan `zerocal plan --robot R` makes with its defaults, in the session's order
+/// (model radians). Always at the stated timing defaults, whatever speed a program is
+/// then written for: the poses and their order (and a trade of information for travel
+/// where the session would run over its aim) must be the same for the robot program
+/// and the pendant's `load-profile`, which plans without timing options.
+pub fn default_plan(robot: &str) -> Result<Vec<[f64; JOINTS]>, CliError> {
+    plan_with(robot, &[])
 }
 
-/// The plan `zerocal plan --robot ROBOT` makes with the further `flags`.
+/// The plan `zerocal plan --robot ROBOT` makes with the further `flags` (at the stated
+/// timing defaults, as [`default_plan`]).
 ///
 /// # Errors
 /// As [`default_plan`].
-pub fn plan_with(
-    robot: &str,
-    timing: &TimingArgs,
-    flags: &[&str],
-) -> Result<Vec<[f64; JOINTS]>, CliError> {
+pub fn plan_with(robot: &str, flags: &[&str]) -> Result<Vec<[f64; JOINTS]>, CliError> {
     #[derive(Parser)]
     struct Defaults {
         #[command(flatten)]
@@ -176,10 +175,9 @@ pub fn plan_with(
     }
     let mut argv = vec!["plan", "--robot", robot];
     argv.extend_from_slice(flags);
-    let mut args = Defaults::try_parse_from(argv)
+    let args = Defaults::try_parse_from(argv)
         .map_err(|e| CliError::Input(e.to_string()))?
         .plan;
-    args.timing = timing.clone();
     let sp = crate::plan::make_plan(&args)?;
     Ok(sp.plan.poses_rad.iter().copied().collect())
 }

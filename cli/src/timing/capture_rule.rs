@@ -317,7 +317,7 @@ mod tests {
             .flat_map(|name| [(name, &[][..]), (name, &["--joint2-swing-deg", "0"][..])]);
         for (name, flags) in plans {
             let profile = zerocal_profile::builtin(name).unwrap_or_else(|e| panic!("{e}"));
-            let plan = match crate::program::plan_with(name, &TimingArgs::default(), flags) {
+            let plan = match crate::program::plan_with(name, flags) {
                 Ok(p) => p,
                 // The planner refuses the UR5e (joints 2-4 parallel).
                 Err(_) if name == "ur5e" => continue,
