@@ -115,12 +115,12 @@ impl zerocal_web::Product for CliProduct {
         &self,
         history: &mut History,
         record: &Record,
-        actor: &str,
+        by: zerocal_history::CertificateRequest<'_>,
     ) -> Result<String, String> {
         let path = crate::certificate::issuer_config_path(self.certificate_config.as_deref())
             .map_err(message)?;
         let (subject, analysis, issued_on) =
-            crate::certificate::issue(history, record, &path, (None, None), Some(actor))
+            crate::certificate::issue(history, record, &path, (None, None), Some(by))
                 .map_err(message)?;
         crate::certificate::certificate_issued_on(&subject, &analysis, &issued_on)
             .map(|c| c.html)

@@ -76,6 +76,15 @@ fn kind_of(c: &mut crate::db::Conn, id: i64) -> Result<(String, Option<i64>), Hi
     }
 }
 
+/// Who asks for a certificate: a signed-in user of the web application.
+#[derive(Clone, Copy, Debug)]
+pub struct CertificateRequest<'a> {
+    /// Their user name (the audit's actor).
+    pub name: &'a str,
+    /// Whether their role issues certificates (a first one gets a number).
+    pub may_issue: bool,
+}
+
 impl History {
     /// Records `c`, or gives the certificate already issued for the same session,
     /// as-left check and issuer (its number and date kept, `false`).
@@ -92,15 +101,17 @@ impl History {
         self.issue_certificate_by(c, None)
     }
 
-    /// [`Self::issue_certificate`], a first issue written to the audit log as done by
-    /// `actor` (where given) in the same transaction: no certificate without its entry.
+    /// [`Self::issue_certificate`] asked for by a signed-in user (`by`, where given): a
+    /// first issue written to the audit log as theirs in the same transaction (no
+    /// certificate without its entry), and refused where they may not issue one.
     ///
     /// # Errors
-    /// As [`Self::issue_certificate`].
+    /// As [`Self::issue_certificate`]; [`HistoryError::Refused`] where `by` may not
+    /// issue and no certificate of the same session, as-left check and issuer exists.
     pub fn issue_certificate_by(
         &mut self,
         c: &NewCertificate,
-        actor: Option<&str>,
+        by: Option<CertificateRequest<'_>>,
     ) -> Result<(IssuedCertificate, bool), HistoryError> {
         let chars = c.number.chars().count();
         if chars == 0 || chars > MAX_NUMBER_CHARS || c.number.chars().any(char::is_control) {
@@ -152,6 +163,12 @@ impl History {
             if let Some(row) = existing.first() {
                 return Ok((from_row(row)?, false));
             }
+            if let Some(by) = by.filter(|b| !b.may_issue) {
+                return Err(HistoryError::Refused(format!(
+                    "record {} has no certificate for this as-left check and issuer yet, and {} may not issue one",
+                    c.session_id, by.name
+                )));
+            }
             let taken = conn.query(
                 "SELECT number FROM certificates WHERE number = $1",
                 &[Value::text(&c.number)],
@@ -175,10 +192,10 @@ impl History {
                     Value::text(&recorded_at),
                 ],
             )?;
-            if let Some(actor) = actor {
+            if let Some(by) = by {
                 crate::review::audit_in(
                     conn,
-                    actor,
+                    by.name,
                     "certificate.issue",
                     &format!("record {}", c.session_id),
                     None,

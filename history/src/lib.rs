@@ -19,7 +19,7 @@ pub mod schema;
 mod verdict;
 
 pub use brackets::{RecordBracket, RecordBracketCalibration, RecordBracketYaw, RecordBrackets};
-pub use certificates::{IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
+pub use certificates::{CertificateRequest, IssuedCertificate, NewCertificate, MAX_NUMBER_CHARS};
 pub use conventions::{Convention, NewConvention};
 pub use corrections::Correction;
 pub use error::HistoryError;

@@ -560,7 +560,11 @@ impl History {
                 )));
             }
             // Four eyes: whoever measured does not check or authorize the measurement.
-            if operator.opt_text("records.operator")?.as_deref() == Some(actor) {
+            // A record made on the command line names its operator as typed: the
+            // comparison ignores case and surrounding spaces. It binds operators that
+            // are account names; another spelling of a person is not caught.
+            let measured_by = operator.opt_text("records.operator")?;
+            if measured_by.is_some_and(|o| o.trim().eq_ignore_ascii_case(actor.trim())) {
                 return Err(HistoryError::Refused(format!(
                     "{actor} measured record {record_id}: another person {} it",
                     step.verb()

@@ -14,7 +14,9 @@ mod common;
 
 use common::{backends, record};
 use zerocal_history::schema::SCHEMA_VERSION;
-use zerocal_history::{History, HistoryError, NewCertificate, NewConvention, RecordKind};
+use zerocal_history::{
+    CertificateRequest, History, HistoryError, NewCertificate, NewConvention, RecordKind,
+};
 
 #[test]
 fn conventions_are_kept_per_serial_once_per_check_and_only_from_a_check() {
@@ -158,6 +160,70 @@ fn a_certificate_keeps_its_number_and_a_number_is_given_once() {
         assert_eq!(h.certificates_of(s).unwrap().len(), 1, "{}", b.name);
         let checks = h.checks_against(s).unwrap();
         assert_eq!(checks.iter().map(|r| r.id).collect::<Vec<_>>(), vec![left]);
+    }
+}
+
+/// A user who may not issue gets an issued certificate back but never a new one, even
+/// where a new as-left check would make another; a first issue by one who may is in the
+/// audit log once, as theirs.
+#[test]
+fn only_a_user_who_may_issue_gets_a_new_certificate_and_it_is_audited() {
+    for b in backends("certificate_requests") {
+        let mut h = History::open(&b.at).unwrap();
+        let s = h
+            .insert(&record(RecordKind::Session, "KR6-1", 1, 256))
+            .unwrap()
+            .id;
+        let new = NewCertificate {
+            number: "ZC-1".into(),
+            session_id: s,
+            as_left_id: None,
+            issued_on: "2026-11-27".into(),
+            issuer_json: "{\"laboratory\":\"Line 4\"}".into(),
+        };
+        let admin = CertificateRequest {
+            name: "adm",
+            may_issue: false,
+        };
+        let refused = h.issue_certificate_by(&new, Some(admin));
+        assert!(
+            matches!(&refused, Err(HistoryError::Refused(m)) if m.contains("adm may not issue")),
+            "{}: {refused:?}",
+            b.name
+        );
+        let tec = CertificateRequest {
+            name: "tec",
+            may_issue: true,
+        };
+        let (_, fresh) = h.issue_certificate_by(&new, Some(tec)).unwrap();
+        assert!(fresh, "{}", b.name);
+        let (kept, fresh) = h.issue_certificate_by(&new, Some(admin)).unwrap();
+        assert!(!fresh && kept.new == new, "{}", b.name);
+        // A check recorded since would be a new as-left: not the admin's to issue.
+        let mut c = record(RecordKind::Check, "KR6-1", 2, 256);
+        c.reference_id = Some(s);
+        let left = h.insert(&c).unwrap().id;
+        let with_left = NewCertificate {
+            number: "ZC-2".into(),
+            as_left_id: Some(left),
+            ..new.clone()
+        };
+        assert!(
+            matches!(
+                h.issue_certificate_by(&with_left, Some(admin)),
+                Err(HistoryError::Refused(_))
+            ),
+            "{}",
+            b.name
+        );
+        let issued: Vec<String> = h
+            .audit_log(100)
+            .unwrap()
+            .into_iter()
+            .filter(|e| e.action == "certificate.issue")
+            .map(|e| e.actor)
+            .collect();
+        assert_eq!(issued, ["tec"], "{}", b.name);
     }
 }
 

@@ -37,7 +37,12 @@ impl zerocal_web::Product for NoProduct {
     fn solve_export(&self, _: &[u8], _: &str, _: &str) -> Result<NewRecord, String> {
         Err("not in this benchmark".into())
     }
-    fn certificate_html(&self, _: &mut History, _: &Record, _: &str) -> Result<String, String> {
+    fn certificate_html(
+        &self,
+        _: &mut History,
+        _: &Record,
+        _: zerocal_history::CertificateRequest<'_>,
+    ) -> Result<String, String> {
         Err("not in this benchmark".into())
     }
     fn robot_plots_svg(&self, _: &str, _: &[Record]) -> Result<Vec<String>, String> {

@@ -49,15 +49,17 @@ pub trait Product: Send + Sync + 'static {
 
     /// The certificate (HTML document) of the session `record`, issued in `history`
     /// as `zerocal certificate` issues it (the same number again once issued), a first
-    /// issue audited as `actor`'s in the same transaction.
+    /// issue audited as `by`'s in the same transaction and refused where `by` may not
+    /// issue one.
     ///
     /// # Errors
-    /// A record no certificate can be made of, no issuer configured.
+    /// A record no certificate can be made of, no issuer configured, a first issue
+    /// `by` may not make.
     fn certificate_html(
         &self,
         history: &mut History,
         record: &Record,
-        actor: &str,
+        by: zerocal_history::CertificateRequest<'_>,
     ) -> Result<String, String>;
 
     /// The robot's plots over time (each joint's zero and U, its reducers), each an SVG
@@ -182,7 +184,13 @@ async fn same_site_forms(req: axum::extract::Request, next: axum::middleware::Ne
     if req.method() == axum::http::Method::POST {
         let headers = req.headers();
         let fetch_site = headers.get("sec-fetch-site").and_then(|v| v.to_str().ok());
-        let host = headers.get(header::HOST).and_then(|v| v.to_str().ok());
+        // HTTP/2 carries the host as the request's authority, not a `Host` header.
+        let authority = req.uri().authority().map(|a| a.as_str().to_owned());
+        let host = headers
+            .get(header::HOST)
+            .and_then(|v| v.to_str().ok())
+            .map(str::to_owned)
+            .or(authority);
         let origin_host = headers
             .get(header::ORIGIN)
             .and_then(|v| v.to_str().ok())
@@ -191,8 +199,10 @@ async fn same_site_forms(req: axum::extract::Request, next: axum::middleware::Ne
         let cross_site = match (fetch_site, origin_host, host) {
             (Some(site), _, _) => site != "same-origin" && site != "none",
             (None, Some("null"), _) => true,
-            (None, Some(o), Some(h)) => !o.eq_ignore_ascii_case(h),
-            _ => false,
+            (None, Some(o), Some(h)) => !o.eq_ignore_ascii_case(&h),
+            // An origin but no host to compare it with: not this site's own form.
+            (None, Some(_), None) => true,
+            (None, None, _) => false,
         };
         if cross_site {
             return WebError(

@@ -10,7 +10,7 @@ use axum::response::{Html, IntoResponse, Redirect, Response};
 use axum::Form;
 use minijinja::context;
 use std::collections::HashMap;
-use zerocal_history::{RecordKind, Role, SignStep, WebSession};
+use zerocal_history::{CertificateRequest, RecordKind, Role, SignStep, WebSession};
 
 fn result(r: Result<Response, WebError>) -> Response {
     r.unwrap_or_else(IntoResponse::into_response)
@@ -98,7 +98,9 @@ async fn certificate_of(app: &Shared, actor: &WebSession, id: i64) -> Result<Str
             ));
         }
         // Everyone signed in reads an issued certificate; a first issue gives it a
-        // number, which those who work the records do, not the users' admin.
+        // number, which those who work the records do, not the users' admin (refused
+        // here where none exists, and in the issuing transaction where a new as-left
+        // check or issuer would make another).
         if h.certificates_of(id)?.is_empty() && !CERTIFICATE_ISSUERS.contains(&role) {
             return Err(WebError(
                 StatusCode::FORBIDDEN,
@@ -110,7 +112,14 @@ async fn certificate_of(app: &Shared, actor: &WebSession, id: i64) -> Result<Str
         }
         let html = app2
             .product
-            .certificate_html(h, &record, &name)
+            .certificate_html(
+                h,
+                &record,
+                CertificateRequest {
+                    name: &name,
+                    may_issue: CERTIFICATE_ISSUERS.contains(&role),
+                },
+            )
             .map_err(|e| {
                 WebError(
                     StatusCode::UNPROCESSABLE_ENTITY,

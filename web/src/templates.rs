@@ -29,14 +29,15 @@ pub(crate) fn environment() -> Result<minijinja::Environment<'static>, String> {
     Ok(env)
 }
 
-/// `text` as one path segment of a link: every byte but letters, digits and `-._~`
+/// `text` as one path segment of a link: every byte but letters, digits and `-_~`
 /// percent-encoded, so that a serial or user name holding `/`, `?` or `#` links to its
 /// own page (minijinja's `urlencode` keeps `/`, meant for whole paths). The route's
 /// extractor decodes it back.
 fn segment(text: &str) -> String {
+    // `.` too: a serial of `.` or `..` left as is would be a path step the browser
+    // resolves away.
     const SEGMENT: &percent_encoding::AsciiSet = &percent_encoding::NON_ALPHANUMERIC
         .remove(b'-')
-        .remove(b'.')
         .remove(b'_')
         .remove(b'~');
     percent_encoding::utf8_percent_encode(text, SEGMENT).to_string()

@@ -236,7 +236,8 @@ pub fn run(args: &CertificateArgs) -> Result<String, CliError> {
 /// date kept there, so the same certificate comes out again) by the issuer of the file
 /// `path`, with the robot as left by the check `as_left_id` (default: the latest check
 /// after the entry): what `zerocal certificate` and `zerocal serve` render. A first
-/// issue by a signed-in `actor` (`zerocal serve`) is audited in the same transaction.
+/// issue asked for by a signed-in user (`by`, `zerocal serve`) is audited in the same
+/// transaction, and refused where their role issues none.
 ///
 /// # Errors
 /// As [`run`].
@@ -245,7 +246,7 @@ pub fn issue(
     record: &zerocal_history::Record,
     path: &Path,
     (tolerance_deg, as_left_id): (Option<f64>, Option<i64>),
-    actor: Option<&str>,
+    by: Option<zerocal_history::CertificateRequest<'_>>,
 ) -> Result<(CertificateSubject, Analysis, String), CliError> {
     let analysis = crate::stored_session::solve_record(record)?;
     let text = crate::input::read_capped(path, issuer::MAX_ISSUER_BYTES, "issuer configuration")
@@ -286,7 +287,7 @@ pub fn issue(
                 issued_on: crate::bracket_file::today_utc(),
                 issuer_json,
             },
-            actor,
+            by,
         )
         .map_err(crate::db::history_failed)?;
     let subject = CertificateSubject {

@@ -67,7 +67,7 @@ impl Product for FakeProduct {
         &self,
         _: &mut History,
         record: &Record,
-        _: &str,
+        _: zerocal_history::CertificateRequest<'_>,
     ) -> Result<String, String> {
         Ok(format!(
             "<html><body><h1>Certificate of record {}</h1></body></html>",
