@@ -24,13 +24,13 @@
 use clap::{Parser, Subcommand};
 use std::io::Write;
 use std::process::ExitCode;
-use zerocal_cli::error::CliError;
-use zerocal_cli::identify::{self, IdentifyArgs};
-use zerocal_cli::plan::{self, PlanArgs};
-use zerocal_cli::program::{self, ProgramArgs};
-use zerocal_cli::session::{self, SessionArgs};
+use zerocal_analysis::identify::{self, IdentifyArgs};
+use zerocal_analysis::session::{self, SessionArgs};
 use zerocal_cli::simulate::{self, SimulateArgs};
-use zerocal_cli::simulated_world;
+use zerocal_cli::world_args;
+use zerocal_inputs::error::CliError;
+use zerocal_programs::plan::{self, PlanArgs};
+use zerocal_programs::program::{self, ProgramArgs};
 
 /// Find the joint zeros of a six-axis robot with the zerocal pendant: `plan` the poses,
 /// `program` the robot, load and read the `pendant`, solve its export into the
@@ -57,10 +57,10 @@ enum Command {
     /// Plan the stage-2 poses and print the 1-sigma they promise.
     Plan(PlanArgs),
     /// List the built-in robot profiles, one a line.
-    Robots(zerocal_cli::robot::RobotsArgs),
+    Robots(zerocal_inputs::robot::RobotsArgs),
     /// The error sources one at a time, over many simulated sessions, with and without
     /// the compensation.
-    ErrorTable(simulated_world::ErrorTableArgs),
+    ErrorTable(world_args::ErrorTableArgs),
     /// Solve a whole pendant session export (stages 0-2) and print the offsets in the
     /// controller's own terms.
     Session(SessionArgs),
@@ -70,21 +70,21 @@ enum Command {
     /// Talk to a pendant over its USB serial port, a verb for each of its commands:
     /// status, load a robot profile and its plan, export, calibrate a bracket and start
     /// a check (each followed to its end), the live reading, erase the store.
-    Pendant(zerocal_cli::pendant::PendantArgs),
+    Pendant(zerocal_link::PendantArgs),
     /// After the offsets were entered: what a check's export says is left of each
     /// joint's offset against the session's record (recorded in the history).
-    Check(zerocal_cli::check::CheckArgs),
+    Check(zerocal_analysis::check::CheckArgs),
     /// A calibration certificate (HTML for A4) of a session in the history.
-    Certificate(zerocal_cli::certificate::CertificateArgs),
+    Certificate(zerocal_records::certificate::CertificateArgs),
     /// After a motor or gearbox change: the offsets that bring each joint back to a
     /// reference session's zero.
-    Restore(zerocal_cli::restore::RestoreArgs),
+    Restore(zerocal_analysis::restore::RestoreArgs),
     /// Write the flange bracket's OpenSCAD parameters (`include <flange_bracket.scad>`
     /// and the profile's ISO 9409-1 bolt circle and dowel) for the robot.
-    Bracket(zerocal_cli::bracket_design::BracketArgs),
+    Bracket(zerocal_programs::bracket_design::BracketArgs),
     /// List the calibration history (every session and check, per robot serial) as a
     /// table or JSON, or plot each joint's zero over time with its U(k=2) band.
-    History(zerocal_cli::history::HistoryArgs),
+    History(zerocal_records::history::HistoryArgs),
     /// A robot profile from the robot's URDF (`import`), and what a profile lets zerocal
     /// do and is missing (`check`, its exit status by severity).
     Profile(zerocal_cli::profile_cmd::ProfileArgs),
@@ -98,14 +98,14 @@ fn run(cli: &Cli) -> Result<String, CliError> {
     match &cli.command {
         Command::Simulate(args) if args.world == simulate::World::Real => {
             let world = args.real.world();
-            let run = simulated_world::run_session(
+            let run = world_args::run_session(
                 &args.robot,
                 &world,
                 args.poses.unwrap_or(zerocal_sim::montecarlo::DEFAULT_POSES),
                 args.seed,
                 Some(&args.real),
             )?;
-            let mut out = simulated_world::render(&run, &world, args.seed);
+            let mut out = run.report(&world, args.seed);
             if let Some(path) = &args.real.export {
                 std::fs::write(path, run.session.export_text(&run.profile.name))
                     .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
@@ -115,7 +115,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
                     path.display()
                 ));
             }
-            match simulated_world::accuracy(&run, args.accuracy_points, args.seed) {
+            match world_args::accuracy(&run, args.accuracy_points, args.seed) {
                 Ok(report) => {
                     out.push_str(&format!(
                         "\n-- positioning accuracy, ISO 9283-style, {} --\n",
@@ -123,7 +123,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
                     ));
                     out.push_str(&report.to_string());
                     if let Some(dir) = &args.plot {
-                        for f in simulated_world::plots(dir, &run, &report)? {
+                        for f in world_args::plots(dir, &run, &report)? {
                             out.push_str(&format!("wrote {}\n", f.display()));
                         }
                     }
@@ -132,8 +132,8 @@ fn run(cli: &Cli) -> Result<String, CliError> {
             }
             Ok(out)
         }
-        Command::ErrorTable(args) => simulated_world::error_table(args),
-        Command::Robots(args) => zerocal_cli::robot::list(args),
+        Command::ErrorTable(args) => world_args::error_table(args),
+        Command::Robots(args) => zerocal_inputs::robot::list(args),
         Command::Simulate(args) => {
             let (profile, session, result) = simulate::simulate(args)?;
             let mut out = simulate::render(args, &session, &result)?;
@@ -161,12 +161,12 @@ fn run(cli: &Cli) -> Result<String, CliError> {
         Command::Plan(args) => plan::run(args),
         Command::Session(args) => session::run(args),
         Command::Program(args) => program::run(args),
-        Command::Pendant(args) => zerocal_cli::pendant::run(args),
-        Command::Bracket(args) => zerocal_cli::bracket_design::run(args),
-        Command::Check(args) => zerocal_cli::check::run(args),
-        Command::Certificate(args) => zerocal_cli::certificate::run(args),
-        Command::Restore(args) => zerocal_cli::restore::run(args),
-        Command::History(args) => zerocal_cli::history::run(args),
+        Command::Pendant(args) => zerocal_link::run(args),
+        Command::Bracket(args) => zerocal_programs::bracket_design::run(args),
+        Command::Check(args) => zerocal_analysis::check::run(args),
+        Command::Certificate(args) => zerocal_records::certificate::run(args),
+        Command::Restore(args) => zerocal_analysis::restore::run(args),
+        Command::History(args) => zerocal_records::history::run(args),
         Command::Serve(args) => zerocal_cli::serve::run(args),
         // Prints and exits by itself (`main`): its check's status is by severity.
         Command::Profile(_) => Err(CliError::Input(String::from("profile: not run here"))),
@@ -174,7 +174,7 @@ fn run(cli: &Cli) -> Result<String, CliError> {
 }
 
 fn main() -> ExitCode {
-    let cli: Cli = zerocal_cli::args::parse();
+    let cli: Cli = zerocal_inputs::args::parse();
     if let Command::Profile(args) = &cli.command {
         return zerocal_cli::profile_cmd::main(args);
     }

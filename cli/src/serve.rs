@@ -5,18 +5,19 @@
 //! from `ZEROCAL_NEW_PASSWORD` or the first line of standard input, never the
 //! command line, where every user of the machine reads it). docs/web.md.
 
-use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use std::io::BufRead;
 use std::net::SocketAddr;
 use std::path::PathBuf;
 use zerocal_history::{History, NewRecord, Record, Role};
+use zerocal_inputs::error::CliError;
 
 /// The environment variable `--add-user` reads the new password from, if set.
 pub const PASSWORD_ENV: &str = "ZEROCAL_NEW_PASSWORD";
 
 /// `--interval-days`: a day to ten years.
-const INTERVAL_DAYS: crate::args::CountIn<u32> = crate::args::CountIn::new(1, 3653);
+const INTERVAL_DAYS: zerocal_inputs::args::CountIn<u32> =
+    zerocal_inputs::args::CountIn::new(1, 3653);
 
 /// A user's role (docs/web.md).
 #[derive(ValueEnum, Debug, Clone, Copy)]
@@ -75,7 +76,7 @@ pub struct ServeArgs {
     #[arg(long, value_enum, requires = "add_user")]
     pub role: Option<RoleArg>,
     #[command(flatten)]
-    pub db: crate::db::DbArg,
+    pub db: zerocal_analysis::db::DbArg,
 }
 
 /// The CLI's code, as the web application calls it.
@@ -95,20 +96,21 @@ impl zerocal_web::Product for CliProduct {
         serial: &str,
         operator: &str,
     ) -> Result<NewRecord, String> {
-        if export.len() > crate::input::MAX_EXPORT_BYTES {
+        if export.len() > zerocal_inputs::input::MAX_EXPORT_BYTES {
             return Err(format!(
                 "the export has {} bytes; a pendant's export has at most {}",
                 export.len(),
-                crate::input::MAX_EXPORT_BYTES
+                zerocal_inputs::input::MAX_EXPORT_BYTES
             ));
         }
-        let args = crate::session::SessionArgs::for_export(PathBuf::from("uploaded export"));
-        let analysis = crate::session::analyse(&args, export).map_err(message)?;
-        let meta = crate::db::RecordMeta {
+        let args =
+            zerocal_analysis::session::SessionArgs::for_export(PathBuf::from("uploaded export"));
+        let analysis = zerocal_analysis::session::analyse(&args, export).map_err(message)?;
+        let meta = zerocal_analysis::db::RecordMeta {
             operator: Some(operator.to_owned()),
             measured_on: None,
         };
-        crate::session::session_record(&analysis, export, serial, &meta).map_err(message)
+        zerocal_analysis::session::session_record(&analysis, export, serial, &meta).map_err(message)
     }
 
     fn certificate_html(
@@ -117,12 +119,13 @@ impl zerocal_web::Product for CliProduct {
         record: &Record,
         by: zerocal_history::CertificateRequest<'_>,
     ) -> Result<String, String> {
-        let path = crate::certificate::issuer_config_path(self.certificate_config.as_deref())
-            .map_err(message)?;
-        let (subject, analysis, issued_on) =
-            crate::certificate::issue(history, record, &path, (None, None), Some(by))
+        let path =
+            zerocal_records::certificate::issuer_config_path(self.certificate_config.as_deref())
                 .map_err(message)?;
-        crate::certificate::certificate_issued_on(&subject, &analysis, &issued_on)
+        let (subject, analysis, issued_on) =
+            zerocal_records::certificate::issue(history, record, &path, (None, None), Some(by))
+                .map_err(message)?;
+        zerocal_records::certificate::certificate_issued_on(&subject, &analysis, &issued_on)
             .map(|c| c.html)
             .map_err(|e| e.to_string())
     }
@@ -133,7 +136,7 @@ impl zerocal_web::Product for CliProduct {
         getrandom::fill(&mut tag).map_err(|e| format!("no random source: {e}"))?;
         let tag: String = tag.iter().map(|b| format!("{b:02x}")).collect();
         let dir = std::env::temp_dir().join(format!("zerocal-serve-plots-{tag}"));
-        let written = crate::history::plots(&dir, serial, records);
+        let written = zerocal_records::history::plots(&dir, serial, records);
         let read = written.map_err(message).and_then(|files| {
             files
                 .iter()
@@ -146,9 +149,9 @@ impl zerocal_web::Product for CliProduct {
     }
 
     fn reducer_notes(&self, records: &[Record]) -> Vec<String> {
-        crate::session::reducer_trend::changes_in(records)
+        zerocal_analysis::session::reducer_trend::changes_in(records)
             .iter()
-            .map(crate::session::reducer_trend::ReducerChange::line)
+            .map(zerocal_analysis::session::reducer_trend::ReducerChange::line)
             .collect()
     }
 }
@@ -190,7 +193,7 @@ pub fn run(args: &ServeArgs) -> Result<String, CliError> {
         };
         let user = history
             .add_user(&actor, name, role.role(), &phc)
-            .map_err(crate::db::history_failed)?;
+            .map_err(zerocal_analysis::db::history_failed)?;
         return Ok(format!(
             "user {} ({}) added to {}",
             user.name,
@@ -211,7 +214,7 @@ pub fn run(args: &ServeArgs) -> Result<String, CliError> {
         zerocal_web::Config {
             db: at,
             secure_cookies: args.behind_tls_proxy,
-            max_upload_bytes: crate::input::MAX_EXPORT_BYTES
+            max_upload_bytes: zerocal_inputs::input::MAX_EXPORT_BYTES
                 + zerocal_web::MULTIPART_OVERHEAD_BYTES,
             interval_days: args.interval_days,
             chromium: args.chromium.clone().or_else(|| on_path("chromium")),

@@ -3,13 +3,13 @@
 //! stages 0-2 exactly as the pendant would take it, and the pendant's report is printed
 //! beside the hidden truth, then the positioning test on the same robot.
 
-use crate::args::{CountIn, RealIn, SEED};
-use crate::error::CliError;
 use clap::Args;
 use std::fmt::Write;
 use zerocal_core::model::Convention;
 use zerocal_core::real::deg_to_rad;
 use zerocal_core::report::{write_report, Verdict};
+use zerocal_inputs::args::{CountIn, RealIn, SEED};
+use zerocal_inputs::error::CliError;
 use zerocal_profile::Profile;
 use zerocal_sim::positioning::{self, AccuracyReport};
 use zerocal_sim::session::{fit_config_for, SessionConfig, SessionResult};
@@ -44,7 +44,7 @@ pub struct SimulateArgs {
     pub world: World,
     /// The real world's sources and faults.
     #[command(flatten)]
-    pub real: crate::simulated_world::WorldArgs,
+    pub real: crate::world_args::WorldArgs,
     /// Stage-2 poses (real world: each captured twice, default 40 and the plan's 3
     /// revisits; ideal: default 30).
     /// Range: [4, 10000].
@@ -58,7 +58,7 @@ pub struct SimulateArgs {
     pub noise_deg: f64,
     /// Ideal world: sensor convention of the simulated sensor and of the model (the
     /// real world's SCL3300 is `axis`).
-    #[arg(long, default_value = "rpy", value_parser = crate::args::convention())]
+    #[arg(long, default_value = "rpy", value_parser = zerocal_inputs::args::convention())]
     pub convention: Convention,
     /// Joints 3-6 are drawn within ±this (deg), and within the robot's limits.
     /// Range: (0, 180] deg.
@@ -91,7 +91,7 @@ impl SimulateArgs {
 
     /// The session the flags describe.
     ///
-    /// The ranges are checked when the flags are parsed (`crate::args`).
+    /// The ranges are checked when the flags are parsed (`zerocal_inputs::args`).
     pub fn session_config(&self, profile: &Profile) -> Result<SessionConfig, CliError> {
         let r = self.joint_range_deg;
         let wrist_limits_deg = core::array::from_fn(|k| {
@@ -118,7 +118,7 @@ impl SimulateArgs {
 
 /// Simulates and identifies.
 pub fn simulate(args: &SimulateArgs) -> Result<(Profile, SimSession, SessionResult), CliError> {
-    let profile = crate::robot::load(&args.robot)?;
+    let profile = zerocal_inputs::robot::load(&args.robot)?;
     let cfg = args.session_config(&profile)?;
     let session = SimSession::simulate(&cfg).map_err(|e| CliError::Refused(e.to_string()))?;
     let result = session
@@ -233,7 +233,8 @@ pub fn plots(
     result: &SessionResult,
     report: &AccuracyReport,
 ) -> Result<Vec<std::path::PathBuf>, CliError> {
-    let res = crate::plots::residuals(&result.model, &session.poses, &result.fit.offsets_rad);
-    crate::plots::write_plots(dir, report, &res)
+    let res =
+        zerocal_analysis::plots::residuals(&result.model, &session.poses, &result.fit.offsets_rad);
+    zerocal_analysis::plots::write_plots(dir, report, &res)
         .map_err(|e| CliError::Input(format!("{}: {e}", dir.display())))
 }

@@ -8,9 +8,9 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
-use zerocal_cli::input::{MAX_EXPORT_BYTES, MAX_LIMITS_BYTES, MAX_LOG_BYTES, MAX_PLAN_BYTES};
-use zerocal_cli::program::Format;
+use zerocal_inputs::input::{MAX_EXPORT_BYTES, MAX_LIMITS_BYTES, MAX_LOG_BYTES, MAX_PLAN_BYTES};
 use zerocal_profile::bounds::MAX_PROFILE_BYTES;
+use zerocal_programs::program::Format;
 
 /// A refusal at a cap reads `cap + 1` bytes at most: far under this on any machine
 /// (the 200 MB export that prompted the caps took 501 s).

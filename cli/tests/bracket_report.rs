@@ -28,11 +28,11 @@ fn the_report_names_an_uncalibrated_bracket() {
         let s = RealSession::simulate(&profile, &plan, &world, 7);
         let path = dir.join(format!("{knowledge:?}.csv"));
         std::fs::write(&path, s.export_text(&profile.name)).unwrap();
-        let args = zerocal_cli::session::SessionArgs {
+        let args = zerocal_analysis::session::SessionArgs {
             half_turn_tolerance_deg: JIG_HALF_TURN_TOLERANCE_DEG,
-            ..zerocal_cli::session::SessionArgs::for_export(path)
+            ..zerocal_analysis::session::SessionArgs::for_export(path)
         };
-        let report = zerocal_cli::session::run(&args).unwrap();
+        let report = zerocal_analysis::session::run(&args).unwrap();
         for mount in ["upper-arm", "flange"] {
             let flag = format!("UNCALIBRATED {mount} bracket");
             assert_eq!(

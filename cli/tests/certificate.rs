@@ -10,12 +10,12 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::PathBuf;
-use zerocal_cli::certificate::{
+use zerocal_analysis::session::{analyse, Analysis, SessionArgs};
+use zerocal_core::session::COVERAGE_FACTOR;
+use zerocal_records::certificate::{
     certificate_issued_on, escape_html, issuer, without_paths, write, AsLeft, AsLeftJoint,
     Certificate, CertificateError, CertificateSubject, Issuer,
 };
-use zerocal_cli::session::{analyse, Analysis, SessionArgs};
-use zerocal_core::session::COVERAGE_FACTOR;
 use zerocal_sim::world::{BracketKnowledge, RealSession, WorldConfig};
 
 const ISSUED: &str = "2026-11-27";
@@ -48,7 +48,7 @@ fn the_issuer() -> Issuer {
 }
 
 /// What the session of `kr6()` used, from the golden register.
-fn equipment_of(a: &Analysis) -> Vec<zerocal_cli::certificate::Used> {
+fn equipment_of(a: &Analysis) -> Vec<zerocal_records::certificate::Used> {
     issuer::equipment_used(
         &the_issuer(),
         Some("pendant P-007"),

@@ -7,7 +7,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::process::Command;
-use zerocal_cli::session::read_export;
+use zerocal_analysis::session::read_export;
 use zerocal_core::capture::CAPTURES_PER_POSE;
 use zerocal_pendant_desktop::session::check;
 use zerocal_pendant_desktop::world::WorldConfig;

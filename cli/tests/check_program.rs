@@ -7,14 +7,14 @@
 
 mod common;
 
-use zerocal_cli::program::{build_check, check_indices, default_plan, Format};
-use zerocal_cli::timing::{
-    check_time, Pendant, SessionPoses, Timing, TimingArgs, CHECK_RUN_LIMIT_S,
-};
 use zerocal_core::model::JOINTS;
 use zerocal_core::plan::CHECK_POSES;
-use zerocal_procedure::robot_time::CAPTURES_PER_POSE;
 use zerocal_profile::Profile;
+use zerocal_programs::program::{build_check, check_indices, default_plan, Format};
+use zerocal_programs::robot_time::CAPTURES_PER_POSE;
+use zerocal_programs::timing::{
+    check_time, Pendant, SessionPoses, Timing, TimingArgs, CHECK_RUN_LIMIT_S,
+};
 
 /// The session plan a program is written for: `zerocal plan`'s default, or for a
 /// profile the planner refuses (the UR5e) the seeded window poses the session's

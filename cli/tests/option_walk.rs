@@ -3,7 +3,7 @@
 //! `--flag=-1` and as two arguments `--flag -1`.
 //!
 //! The valid range of each option is read back from its `--help` (`Range: [a, b]`, as
-//! `zerocal_cli::args` states it), so the help, the parser and this test cannot drift
+//! `zerocal_inputs::args` states it), so the help, the parser and this test cannot drift
 //! apart. Outside the range the binary must exit 2 with a message naming the option and
 //! the range; inside it, 0 (numbers) or 3 (refused, with a message). Never a panic
 //! (exit 101), a signal or a hang.

@@ -113,10 +113,10 @@ temperature_c = 22.25
 "#,
     )
     .unwrap();
-    let profile = zerocal_cli::robot::load(robot_file.to_str().unwrap()).unwrap();
+    let profile = zerocal_inputs::robot::load(robot_file.to_str().unwrap()).unwrap();
     assert!(profile.mass_model().is_some(), "the profile has masses");
-    let brackets = zerocal_cli::bracket_file::read(&brackets_file).unwrap();
-    let sent = zerocal_cli::pendant::pendant_profile(&profile, brackets).unwrap();
+    let brackets = zerocal_inputs::bracket_file::read(&brackets_file).unwrap();
+    let sent = zerocal_link::pendant_profile(&profile, brackets).unwrap();
     for seed in [3, 17] {
         let world = WorldConfig {
             seed,

@@ -40,7 +40,7 @@ fn export_round_trip_through_zerocal_session() {
     println!("{}", text.lines().take(9).collect::<Vec<_>>().join("\n"));
     // The export names the pendant unit (the desktop's fake), and the desktop's strict
     // reader takes the line.
-    let contents = zerocal_cli::session::read_export(&text).unwrap();
+    let contents = zerocal_analysis::session::read_export(&text).unwrap();
     assert_eq!(
         contents.pendant_unit,
         Some(zerocal_pendant_desktop::DESKTOP_UNIT.id.to_string())

@@ -9,9 +9,9 @@ use std::collections::VecDeque;
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};
 
-use zerocal_cli::error::CliError;
-use zerocal_cli::pendant::{self, Expect, PendantAction, Timeouts};
 use zerocal_core::plan::{SESSION_POSES, SESSION_REVISITS};
+use zerocal_inputs::error::CliError;
+use zerocal_link::{Expect, PendantAction, Timeouts};
 use zerocal_pendant::screen::Screen;
 use zerocal_pendant_desktop::conversation::converse;
 use zerocal_pendant_desktop::session::{session, SessionReport};
@@ -66,7 +66,7 @@ impl Scripted {
 }
 
 /// A scripted port answers in real time.
-impl pendant::Link for Scripted {
+impl zerocal_link::Link for Scripted {
     fn now(&self) -> Duration {
         self.opened.elapsed()
     }
@@ -135,7 +135,7 @@ fn load(robot: &str) -> PendantAction {
 }
 
 fn request_bytes(action: &PendantAction) -> Vec<Vec<u8>> {
-    pendant::requests(action)
+    zerocal_link::requests(action)
         .unwrap()
         .into_iter()
         .map(|r| r.bytes)
@@ -145,20 +145,23 @@ fn request_bytes(action: &PendantAction) -> Vec<Vec<u8>> {
 /// `action` against a port that answers with `answers`.
 fn replay(action: &PendantAction, answers: &[String]) -> Result<String, CliError> {
     let mut port = Scripted::bytes(answers.iter().map(|a| a.as_bytes().to_vec()));
-    pendant::perform(&mut port, action, FAST)
+    zerocal_link::perform(&mut port, action, FAST)
 }
 
 /// The refusal of `action` against `port`: its exit status and words.
 fn refusal(port: &mut Scripted, action: &PendantAction) -> (i32, String) {
-    let e = pendant::perform(port, action, FAST).unwrap_err();
+    let e = zerocal_link::perform(port, action, FAST).unwrap_err();
     (e.exit_code(), e.to_string())
 }
 
 /// The reply a port sending `bytes` gives for `expect`.
-fn reply_of(bytes: &[u8], expect: &Expect) -> Result<pendant::Reply, pendant::ReplyError> {
+fn reply_of(
+    bytes: &[u8],
+    expect: &Expect,
+) -> Result<zerocal_link::Reply, zerocal_link::ReplyError> {
     let mut port = Scripted::bytes([bytes.to_vec()]);
     port.write_all(b"request").unwrap();
-    pendant::read_reply(&mut port, expect, FAST)
+    zerocal_link::read_reply(&mut port, expect, FAST)
 }
 
 fn crlf(lines: &[&str]) -> Vec<u8> {
@@ -206,8 +209,8 @@ fn a_loaded_profile_and_plan_survive_a_reboot_and_name_the_robot() {
         other => panic!("{other:?}"),
     }
     // The stored profile reads back as the one sent.
-    let profile = zerocal_cli::robot::load("kuka-kr6-r900-sixx").unwrap();
-    let sent = pendant::pendant_profile(&profile, Default::default()).unwrap();
+    let profile = zerocal_inputs::robot::load("kuka-kr6-r900-sixx").unwrap();
+    let sent = zerocal_link::pendant_profile(&profile, Default::default()).unwrap();
     let mut up = ProfileUpload::<f64>::default();
     let mut back = None;
     for line in c.answers_after_reboot[0].lines() {
@@ -290,9 +293,9 @@ temperature_c = 22.25
         out.contains("ok: profile kuka-kr6-r900-sixx stored"),
         "{out}"
     );
-    let profile = zerocal_cli::robot::load(robot).unwrap();
-    let brackets = zerocal_cli::bracket_file::read(&file).unwrap();
-    let sent = pendant::pendant_profile(&profile, brackets).unwrap();
+    let profile = zerocal_inputs::robot::load(robot).unwrap();
+    let brackets = zerocal_inputs::bracket_file::read(&file).unwrap();
+    let sent = zerocal_link::pendant_profile(&profile, brackets).unwrap();
     let mut up = ProfileUpload::<f64>::default();
     let mut back = None;
     for line in c.answers_after_reboot[0].lines() {
@@ -327,7 +330,7 @@ temperature_c = 22.25
     }
     // A brackets file that does not check is refused before anything is sent.
     std::fs::write(&file, "[[bracket]]\nmount = \"elbow\"\n").unwrap();
-    let e = pendant::requests(&action).unwrap_err();
+    let e = zerocal_link::requests(&action).unwrap_err();
     assert_eq!(e.exit_code(), 2, "{e}");
     assert!(e.to_string().contains("brackets.toml"), "{e}");
     let _ = std::fs::remove_dir_all(&dir);
@@ -371,7 +374,7 @@ fn erase_status_export_and_refusals_against_the_pendant() {
     // A broken upload: the pendant's words, exit 3.
     let expect = Expect::ProfileStored("x".into());
     let reply = reply_of(c.answers[5].as_bytes(), &expect).unwrap();
-    let refused = pendant::check_reply(&expect, &reply).unwrap_err();
+    let refused = zerocal_link::check_reply(&expect, &reply).unwrap_err();
     assert_eq!(refused.exit_code(), 3);
     assert!(
         refused.to_string().contains("profile incomplete"),
@@ -497,7 +500,7 @@ fn an_export_is_saved_only_whole_by_its_trailer() {
         out: None,
         results: None,
     };
-    let whole = pendant::perform(&mut Scripted::bytes([crlf(&refs)]), &export, FAST).unwrap();
+    let whole = zerocal_link::perform(&mut Scripted::bytes([crlf(&refs)]), &export, FAST).unwrap();
     assert_eq!(
         whole,
         format!("{}\n", refs.join("\n")),
@@ -638,7 +641,7 @@ fn a_silent_port_is_no_answer_within_its_timeout() {
 #[test]
 fn an_erase_is_done_only_when_the_pendant_says_so() {
     let erase = PendantAction::Erase;
-    let ok = pendant::perform(
+    let ok = zerocal_link::perform(
         &mut Scripted::bytes([crlf(&[zerocal_procedure::link::ERASED])]),
         &erase,
         FAST,
@@ -717,7 +720,7 @@ fn brackets_read_out_as_the_uploads_toml() {
         out: None,
         date: Some("2026-02-30".into()),
     };
-    assert_eq!(pendant::requests(&bad).unwrap_err().exit_code(), 2);
+    assert_eq!(zerocal_link::requests(&bad).unwrap_err().exit_code(), 2);
 }
 
 /// `zerocal pendant results` against the pendant: a fresh one keeps none (its reply is
@@ -766,7 +769,7 @@ fn results_are_read_whole_and_a_malformed_line_is_refused_by_number() {
 fn export_out_puts_the_kept_results_beside_it() {
     let path = std::path::Path::new("/tmp/x/session.csv");
     assert_eq!(
-        pendant::results_path(path),
+        zerocal_link::results_path(path),
         std::path::Path::new("/tmp/x/session.csv.results")
     );
 }

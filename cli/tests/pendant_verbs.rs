@@ -10,9 +10,9 @@ use std::io::{Read, Write};
 use std::path::PathBuf;
 use std::time::Duration;
 
-use zerocal_cli::error::CliError;
-use zerocal_cli::pendant::{self, Console, Link, PendantAction, Timeouts};
 use zerocal_core::plan::{SESSION_POSES, SESSION_REVISITS};
+use zerocal_inputs::error::CliError;
+use zerocal_link::{Console, Link, PendantAction, Timeouts};
 use zerocal_pendant_desktop::bracket::{
     calibration_world, leave_calibration, operate_calibration, BRACKET_TURN_DEG,
 };
@@ -70,7 +70,7 @@ fn act(
     stop: &dyn Fn() -> bool,
 ) -> (String, Result<String, CliError>) {
     let mut progress = Vec::new();
-    let out = pendant::act(
+    let out = zerocal_link::act(
         port,
         action,
         Timeouts::LINK,
@@ -126,7 +126,8 @@ fn a_bracket_calibration_is_followed_step_by_step_to_its_kept_result() {
     assert!(progress.contains("capturing: hands off"), "{progress}");
     // The TOML the profile takes, with the turn the world has.
     let toml = std::fs::read_to_string(&out).unwrap();
-    let brackets = zerocal_cli::bracket_file::read(&out).unwrap_or_else(|e| panic!("{e}\n{toml}"));
+    let brackets =
+        zerocal_inputs::bracket_file::read(&out).unwrap_or_else(|e| panic!("{e}\n{toml}"));
     let flange = brackets.flange.expect("the flange's calibration");
     assert_eq!(flange.id.as_str(), "F-017");
     let (x, y) = (
@@ -205,7 +206,7 @@ fn a_check_is_followed_to_its_end_and_its_export_saved() {
         at += here;
     }
     let text = std::fs::read_to_string(&out).unwrap();
-    let export = zerocal_cli::session::read_export(&text).unwrap();
+    let export = zerocal_analysis::session::read_export(&text).unwrap();
     assert!(export.trailer_checked);
     assert!(text.lines().any(|l| l == "# mode check"), "{text}");
     assert_eq!(export.poses.len(), 2 * poses.len());
@@ -333,8 +334,8 @@ fn plan_profile_and_clear_against_the_pendant() {
         plan.lines().next(),
         Some(zerocal_procedure::link::PLAN_CSV_HEADER)
     );
-    let profile = zerocal_cli::robot::load(robot).unwrap();
-    let read = zerocal_cli::program::read_plan(&plan_file, &profile).unwrap();
+    let profile = zerocal_inputs::robot::load(robot).unwrap();
+    let read = zerocal_programs::program::read_plan(&plan_file, &profile).unwrap();
     assert_eq!(read.len(), poses);
     let (_, said) = act(
         &mut port,
@@ -380,7 +381,7 @@ fn every_link_command_has_a_verb_in_the_help() {
         .filter_map(|l| l.split_whitespace().next())
         .collect();
     for command in Command::ALL {
-        let verb = pendant::verb(command);
+        let verb = zerocal_link::verb(command);
         assert!(
             verb == "--help" || listed.contains(&verb),
             "`{}` has no verb: {verb} not in {listed:?}",

@@ -131,7 +131,7 @@ fn sessions_within_u(robot: &str, d: &Path, tag: &str) -> (usize, usize) {
             args: SimulateArgs,
         }
         let a = Sim::try_parse_from(&sim_args[..5]).unwrap().args;
-        let run = zerocal_cli::simulated_world::run_session(
+        let run = zerocal_cli::world_args::run_session(
             &a.robot,
             &a.real.world(),
             a.poses.unwrap_or(zerocal_sim::montecarlo::DEFAULT_POSES),
@@ -277,7 +277,7 @@ const MIN_POOLED_COVERAGE: f64 = 0.93;
 /// plan as it stores a built-in one: `zerocal pendant load-profile FILE.toml`.
 #[test]
 fn the_pendant_stores_an_imported_profile() {
-    use zerocal_cli::pendant::{self, PendantAction};
+    use zerocal_link::PendantAction;
     use zerocal_pendant_desktop::conversation::converse;
     let d = dir("pendant");
     for f in manifest().iter().filter(|f| !f.builtin) {
@@ -287,16 +287,16 @@ fn the_pendant_stores_an_imported_profile() {
             plan: None,
             brackets: None,
         };
-        let requests: Vec<Vec<u8>> = pendant::requests(&action)
+        let requests: Vec<Vec<u8>> = zerocal_link::requests(&action)
             .unwrap()
             .into_iter()
             .map(|r| r.bytes)
             .collect();
         let c = converse(&requests, &[b"profile\r\n".to_vec()]).unwrap();
-        let profile = zerocal_cli::robot::load(p.to_str().unwrap()).unwrap();
+        let profile = zerocal_inputs::robot::load(p.to_str().unwrap()).unwrap();
         // Replayed to the desktop's own reply checks, as `zerocal pendant` does.
         let mut port = Replay::new(&c.answers);
-        let out = pendant::perform(&mut port, &action, FAST).unwrap();
+        let out = zerocal_link::perform(&mut port, &action, FAST).unwrap();
         assert!(
             out.contains(&format!("ok: profile {} stored", profile.name)),
             "{}: {out}",
@@ -315,7 +315,7 @@ fn the_pendant_stores_an_imported_profile() {
 const PLAN_POSES: usize = zerocal_core::plan::SESSION_POSES + zerocal_core::plan::SESSION_REVISITS;
 
 /// Short against a port that answers at once (as `pendant_link`'s).
-const FAST: zerocal_cli::pendant::Timeouts = zerocal_cli::pendant::Timeouts {
+const FAST: zerocal_link::Timeouts = zerocal_link::Timeouts {
     quiet: std::time::Duration::from_millis(50),
     reply: std::time::Duration::from_millis(1000),
 };
@@ -338,7 +338,7 @@ impl Replay {
 }
 
 /// A replay answers at once: its clock only counts what the verbs wait.
-impl zerocal_cli::pendant::Link for Replay {
+impl zerocal_link::Link for Replay {
     fn now(&self) -> std::time::Duration {
         self.clock
     }

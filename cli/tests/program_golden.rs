@@ -13,8 +13,8 @@ mod common;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use zerocal_cli::program::{read, Format};
-use zerocal_procedure::robot_time::CAPTURES_PER_POSE;
+use zerocal_programs::program::{read, Format};
+use zerocal_programs::robot_time::CAPTURES_PER_POSE;
 
 /// 2023-11-14 22:13:20 UTC: the date the TP and INFORM headers carry.
 const EPOCH: &str = "1700000000";

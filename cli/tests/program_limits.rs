@@ -9,7 +9,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-use zerocal_cli::timing::TimingArgs;
+use zerocal_programs::timing::TimingArgs;
 
 fn tmp(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("zerocal-limits-{}", std::process::id()));
@@ -36,7 +36,7 @@ fn write_plan(path: &Path, poses_deg: &[[f64; 6]]) {
 }
 
 fn kr16_plan_deg() -> Vec<[f64; 6]> {
-    zerocal_cli::program::default_plan("kuka-kr16")
+    zerocal_programs::program::default_plan("kuka-kr16")
         .unwrap()
         .iter()
         .map(|q| q.map(f64::to_degrees))
@@ -78,7 +78,7 @@ fn a_pose_outside_the_limits_is_refused_naming_joint_and_limit() {
     // cannot be reached from 1 deg below, nor at 127 from 4 deg above. A pose with A5
     // there that the pendant can read (within ±8°), drawn seeded:
     let profile = zerocal_profile::builtin("kuka-kr16").unwrap();
-    let pendant = zerocal_cli::timing::Pendant::new(&profile);
+    let pendant = zerocal_programs::timing::Pendant::new(&profile);
     let mut rng = zerocal_core::plan::Xorshift64Star::new(3);
     let base = poses[3];
     let mut readable = |a5: f64| loop {
@@ -205,12 +205,12 @@ fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
 }
 
 /// `zerocal plan`'s flags, parsed as the command line parses them.
-fn plan_args(flags: &[&str]) -> zerocal_cli::plan::PlanArgs {
+fn plan_args(flags: &[&str]) -> zerocal_programs::plan::PlanArgs {
     use clap::Parser;
     #[derive(Parser)]
     struct Wrap {
         #[command(flatten)]
-        args: zerocal_cli::plan::PlanArgs,
+        args: zerocal_programs::plan::PlanArgs,
     }
     let mut v = vec!["plan"];
     v.extend_from_slice(flags);
@@ -230,7 +230,7 @@ fn a_partial_limits_file_keeps_the_profiles_other_limits() {
     let _ = std::fs::write(&f, "joint,min_deg,max_deg\nA1,-160,160\n");
     let path = f.to_string_lossy().into_owned();
     let a = plan_args(&["--robot", "kuka-kr6-r900-sixx", "--limits", &path]);
-    let sp = zerocal_cli::plan::make_plan(&a).unwrap_or_else(|e| panic!("{e}"));
+    let sp = zerocal_programs::plan::make_plan(&a).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(
         (sp.profile.joints[0].min_deg, sp.profile.joints[0].max_deg),
         (-160.0, 160.0)
@@ -255,18 +255,20 @@ fn a_partial_limits_file_keeps_the_profiles_other_limits() {
         &csv,
         format!("{}\n{rows}", zerocal_procedure::link::PLAN_CSV_HEADER),
     );
-    let program = zerocal_cli::program::ProgramArgs {
+    let program = zerocal_programs::program::ProgramArgs {
         robot: "kuka-kr6-r900-sixx".into(),
         plan: Some(csv),
-        format: zerocal_cli::program::Format::Krl,
+        format: zerocal_programs::program::Format::Krl,
         out: dir.join("zc.src"),
         check: false,
         timing: TimingArgs::default(),
     };
-    let wrote = zerocal_cli::program::run(&program).unwrap_or_else(|e| panic!("{e}"));
+    let wrote = zerocal_programs::program::run(&program).unwrap_or_else(|e| panic!("{e}"));
     assert!(wrote.starts_with("wrote"), "{wrote}");
     let _ = std::fs::write(&f, "A5,-150,150\n");
-    let e = zerocal_cli::plan::make_plan(&a).unwrap_err().to_string();
+    let e = zerocal_programs::plan::make_plan(&a)
+        .unwrap_err()
+        .to_string();
     assert!(
         e.contains("A5 (joint 5)") && e.contains("-120..120") && e.contains("only narrows"),
         "{e}"

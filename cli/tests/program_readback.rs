@@ -1,6 +1,6 @@
 //! Every program `zerocal program` writes for every built-in profile, in every format
 //! its family runs (every format for a generic profile), read back by that family's
-//! reader (`zerocal_cli::program::read`): the moves, waits and operator stops are the
+//! reader (`zerocal_programs::program::read`): the moves, waits and operator stops are the
 //! session's; the captures are the plan in the controller's terms, each pose twice
 //! (stage 1's two included), the first reached from below on every joint and the
 //! second from above; every point is inside the joint limits; the waits cover the
@@ -15,15 +15,15 @@
 mod common;
 
 use common::{gp7_with_pulses, plan_for, read_back};
-use zerocal_cli::program::{build, render, Format};
-use zerocal_cli::timing::{
-    Pendant, TimingArgs, APPROACH_DEG, MOUNT_MARGIN_DEG, OVERSHOOT_DEG, SAMPLE_PERIOD_S,
-};
 use zerocal_core::model::JOINTS;
 use zerocal_core::stage2::MEMS_RANGE_DEG;
-use zerocal_procedure::robot_time::CAPTURES_PER_POSE;
 use zerocal_procedure::stillness::StillnessConfig;
 use zerocal_profile::{OffsetUnit, Profile};
+use zerocal_programs::program::{build, render, Format};
+use zerocal_programs::robot_time::CAPTURES_PER_POSE;
+use zerocal_programs::timing::{
+    Pendant, TimingArgs, APPROACH_DEG, MOUNT_MARGIN_DEG, OVERSHOOT_DEG, SAMPLE_PERIOD_S,
+};
 
 /// The tolerance for a target read back against the plan (deg). The formats
 /// write 5 decimals (KRL, RAPID, VAL3), 3 (TP: 0.0005° at most), 7 decimals of a

@@ -160,14 +160,15 @@ fn every_profile_finds_its_offsets_within_3_sigma_and_sigma_matches_the_spread()
             let s = RealSession::simulate(&profile, &plan, &world, 1000 + seed);
             let path = dir().join(format!("{name}.csv"));
             std::fs::write(&path, s.export_text(&profile.name)).unwrap();
-            let args = zerocal_cli::session::SessionArgs {
+            let args = zerocal_analysis::session::SessionArgs {
                 half_turn_tolerance_deg: 0.0,
                 repeatability_deg: 0.0,
                 lost_motion_deg: 0.0,
                 json: true,
-                ..zerocal_cli::session::SessionArgs::for_export(path)
+                ..zerocal_analysis::session::SessionArgs::for_export(path)
             };
-            let out = zerocal_cli::session::run(&args).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let out =
+                zerocal_analysis::session::run(&args).unwrap_or_else(|e| panic!("{name}: {e}"));
             let v: serde_json::Value = serde_json::from_str(&out).unwrap();
             let mut truth = s.truth_rad().map(f64::to_degrees);
             // A held joint's offset rides on the joint before it.

@@ -7,8 +7,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::PathBuf;
-use zerocal_cli::compare::{compare, CompareOptions, Comparison};
-use zerocal_cli::session::{analyse, read_export, Analysis, SessionArgs};
+use zerocal_analysis::compare::{compare, CompareOptions, Comparison};
+use zerocal_analysis::session::{analyse, read_export, Analysis, SessionArgs};
 use zerocal_core::bracket::{BRACKET_YAW_TOLERANCE_DEG, SEAT_REPEATABILITY_DEG};
 use zerocal_core::session::JIG_HALF_TURN_TOLERANCE_DEG;
 use zerocal_profile::Profile;
@@ -208,8 +208,8 @@ fn check_poses<'a>(profile: &Profile, plan: &'a [[f64; 6]]) -> impl Fn(&[f64; 6]
 fn check_after_entering(
     seed: u64,
     left_j3_deg: f64,
-) -> zerocal_cli::compare::entry_check::CheckResult {
-    use zerocal_cli::compare::entry_check::{judge, Expected};
+) -> zerocal_analysis::compare::entry_check::CheckResult {
+    use zerocal_analysis::compare::entry_check::{judge, Expected};
     let profile = kr6();
     let plan = plan(&profile);
     let reference = RealSession::simulate(&profile, &plan, &world(), seed);

@@ -79,7 +79,7 @@ async fn an_uploaded_export_is_solved_and_recorded_as_zerocal_session_does_on_ev
         zerocal_web::Config {
             db: at.clone(),
             secure_cookies: true,
-            max_upload_bytes: zerocal_cli::input::MAX_EXPORT_BYTES
+            max_upload_bytes: zerocal_inputs::input::MAX_EXPORT_BYTES
                 + zerocal_web::MULTIPART_OVERHEAD_BYTES,
             interval_days: Some(365),
             chromium: None,
@@ -131,8 +131,8 @@ async fn an_uploaded_export_is_solved_and_recorded_as_zerocal_session_does_on_ev
             .unwrap();
         let stored = h.get(id).unwrap();
         // What `zerocal session --record` stores for the same bytes.
-        let args = zerocal_cli::session::SessionArgs::for_export("uploaded export".into());
-        let analysis = zerocal_cli::session::analyse(&args, export.as_bytes()).unwrap();
+        let args = zerocal_analysis::session::SessionArgs::for_export("uploaded export".into());
+        let analysis = zerocal_analysis::session::analyse(&args, export.as_bytes()).unwrap();
         assert_eq!(stored.new.robot, analysis.profile.name, "{robot}");
         assert_eq!(stored.new.operator.as_deref(), Some("tec"));
         assert_eq!(stored.new.export, export.as_bytes());

@@ -1,5 +1,5 @@
 //! `zerocal plan` gives a little information for travel only where a session would run
-//! over its robot-time aim (`zerocal_cli::plan::travel_trade`), and never more than its
+//! over its robot-time aim (`zerocal_programs::plan::travel_trade`), and never more than its
 //! tolerance: on every built-in profile, a plan within the aim keeps the planner's poses;
 //! a traded plan is shorter than the planner's, swapped no more poses than it says,
 //! predicts every joint's k = 2 within the tolerance of the planner's, and leaves every
@@ -8,11 +8,11 @@
 // A failed test panics with what it found: that is its report.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use zerocal_cli::plan::{make_plan, PlanArgs};
-use zerocal_cli::timing::{session_time, Pendant};
 use zerocal_core::model::{JOINTS, WRIST_JOINTS};
 use zerocal_core::plan::{plan, Candidate, ROBOT_TIME_AIM_S};
 use zerocal_core::stage2::covariance_bound;
+use zerocal_programs::plan::{make_plan, PlanArgs};
+use zerocal_programs::timing::{session_time, Pendant};
 
 /// The most a joint's predicted k = 2 may grow for travel (docs/planning.md): 2 %, a
 /// fifth of the capture noise on the largest k = 2. Stated here, not read back from

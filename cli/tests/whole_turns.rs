@@ -1,4 +1,4 @@
-//! A plan's joints turned by whole turns (`zerocal_cli::timing::unwound`, what `zerocal
+//! A plan's joints turned by whole turns (`zerocal_programs::timing::unwound`, what `zerocal
 //! plan` does to shorten the session) are the same physical poses: on every built-in
 //! profile, the simulated real arm (every error source on) read at the unwound poses
 //! gives the same readings and the same solved offsets as at the planned ones.
@@ -22,7 +22,7 @@ fn unwound(profile: &zerocal_profile::Profile, plan: &[[f64; JOINTS]]) -> Vec<[f
     let mut start = profile.stage1_joints_rad;
     start[0] += std::f64::consts::PI;
     let mut poses: PoseList<f64> = PoseList::new();
-    for q in zerocal_cli::timing::unwound(profile, &start, &distinct, SESSION_REVISITS) {
+    for q in zerocal_programs::timing::unwound(profile, &start, &distinct, SESSION_REVISITS) {
         poses.push(q).unwrap();
     }
     let n = poses.len();

@@ -41,7 +41,7 @@ fn temperature(u: &mut Unstructured<'_>) -> arbitrary::Result<Option<f64>> {
 type Parser = fn(&str) -> Option<f64>;
 const PARSERS: [Parser; 2] = [
     zerocal_core::decimal::parse,
-    zerocal_cli::log_file::parse_number,
+    zerocal_inputs::log_file::parse_number,
 ];
 /// The export's last decimal of a degree (half of it for the rounding, the rest for
 /// f64's rounding of values up to 720 deg on the way), in radians.

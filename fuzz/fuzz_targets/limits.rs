@@ -24,7 +24,7 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let original = profile();
-    if let Ok(narrowed) = zerocal_cli::plan::narrow_limits(original.clone(), text, "limits") {
+    if let Ok(narrowed) = zerocal_programs::plan::narrow_limits(original.clone(), text, "limits") {
         for (j, o) in narrowed.joints.iter().zip(&original.joints) {
             let (lo, hi) = (j.min_deg, j.max_deg);
             assert!(lo.is_finite() && hi.is_finite() && lo <= hi, "{lo}..{hi}");
@@ -34,7 +34,7 @@ fuzz_target!(|data: &[u8]| {
             );
         }
     }
-    if let Ok(poses) = zerocal_cli::program::parse_plan(text, Path::new("plan"), profile()) {
+    if let Ok(poses) = zerocal_programs::program::parse_plan(text, Path::new("plan"), profile()) {
         assert!(poses.iter().flatten().all(|q| q.is_finite()));
     }
 });

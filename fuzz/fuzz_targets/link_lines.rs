@@ -52,7 +52,7 @@ struct Port<'a> {
     reads: u32,
 }
 
-impl zerocal_cli::pendant::Link for Port<'_> {
+impl zerocal_link::Link for Port<'_> {
     fn now(&self) -> std::time::Duration {
         std::time::Duration::from_millis(u64::from(self.reads))
     }
@@ -88,7 +88,7 @@ impl std::io::Read for Port<'_> {
 /// Any bytes as the reply to each request of `zerocal pendant`: refused or accepted,
 /// never a panic; accepted output is printable ASCII lines.
 fn desktop_reader(data: &[u8]) {
-    use zerocal_cli::pendant::{check_reply, read_reply, Expect, Timeouts};
+    use zerocal_link::{check_reply, read_reply, Expect, Timeouts};
     // No quiet wait: the bytes are all there at once.
     let timeouts = Timeouts {
         quiet: std::time::Duration::ZERO,

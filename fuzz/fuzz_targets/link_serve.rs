@@ -1,6 +1,6 @@
 //! The firmware's USB link server (`zerocal_pendant::link::serve`: line editor, command
 //! dispatch, `plan set`, `live`, `export`) fed arbitrary bytes in arbitrary packets,
-//! on the desktop's simulated clock, with core's procedure answering the requests as
+//! on the desktop's simulated clock, with zerocal-procedure answering the requests as
 //! the pendant's procedure task does. The server ends when the host goes, and every
 //! reply is a text line within the link's line length. (The export's text is read
 //! back by the host in the `record` target, from sessions rebuilt from records.)

@@ -7,11 +7,11 @@
 use std::cell::Cell;
 
 use libfuzzer_sys::fuzz_target;
-use zerocal_cli::log_file::parse_number;
 use zerocal_core::session::{stage1_joint1_mismatch, STAGE1_JOINT1_TOLERANCE_DEG};
 use zerocal_core::stage1::AxisOneTurn;
 use zerocal_core::stage2::PoseReading;
 use zerocal_fuzz::{close, same_number};
+use zerocal_inputs::log_file::parse_number;
 use zerocal_procedure::log::{
     parse_meta, strip_bom, LogError, LogLine, LogReader, MetaItem, MetaKeys,
 };
@@ -30,8 +30,8 @@ fuzz_target!(|data: &[u8]| {
     };
     let core_export = read_with(text, &parse, true);
     let core_log = read_with(text, &parse, false);
-    let host_export = zerocal_cli::session::read_export(text);
-    let host_log = zerocal_cli::log_file::read_log(text.as_bytes());
+    let host_export = zerocal_analysis::session::read_export(text);
+    let host_log = zerocal_inputs::log_file::read_log(text.as_bytes());
     if disagree.get() {
         return;
     }

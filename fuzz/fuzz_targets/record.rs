@@ -149,7 +149,7 @@ fuzz_target!(|data: &[u8]| {
         text.push('\n');
     }
     if all_in_bounds {
-        if let Err(e) = zerocal_cli::session::read_export(&text) {
+        if let Err(e) = zerocal_analysis::session::read_export(&text) {
             assert!(
                 e.contains("no poses") && session.captures().is_empty(),
                 "the desktop refuses the export: {e}\n{text}"

@@ -6,6 +6,8 @@
 //! - no Rust source file over [`MAX_SOURCE_LINES`] lines;
 //! - the repository map (docs/repository.md, linked from the README) names every
 //!   top-level directory, and nothing the tree lacks;
+//! - the desktop's product crates depend on one another only where one is made of the
+//!   other (docs/repository.md): no crate holds two products through a dependency;
 //! - no file refers to the notes beside the repository (the parent directory's shared
 //!   folder): a user's clone has none of them.
 
@@ -299,5 +301,69 @@ fn the_repository_map_matches_the_tree() {
     assert!(
         stale.is_empty(),
         "docs/repository.md's map names {stale:?}, which the tree lacks"
+    );
+}
+
+/// The desktop's product crates and the only other products each may depend on
+/// (docs/repository.md): the link client sends the plan `programs` makes; a
+/// certificate is a session the analysis solves. Every one may use `zerocal-inputs`
+/// and the method's crates below it.
+const PRODUCTS: [(&str, &[&str]); 5] = [
+    ("programs", &[]),
+    ("link", &["zerocal-programs"]),
+    ("analysis", &[]),
+    ("records", &["zerocal-analysis"]),
+    ("inputs", &[]),
+];
+
+/// The `zerocal-*` crates a manifest's `[dependencies]` names (not its dev-dependencies).
+fn zerocal_dependencies(manifest: &str) -> BTreeSet<String> {
+    let mut out = BTreeSet::new();
+    let mut in_deps = false;
+    for line in manifest.lines() {
+        let line = line.trim();
+        if line.starts_with('[') {
+            in_deps = line == "[dependencies]";
+        } else if in_deps && line.starts_with("zerocal-") {
+            let name = line.split([' ', '=', '.']).next().unwrap_or("");
+            out.insert(name.to_string());
+        }
+    }
+    out
+}
+
+#[test]
+fn each_desktop_crate_is_one_product() {
+    let root = repo_root();
+    let products: BTreeSet<String> = PRODUCTS
+        .iter()
+        .map(|(dir, _)| format!("zerocal-{dir}"))
+        .collect();
+    let mut wrong = Vec::new();
+    for (dir, allowed) in PRODUCTS {
+        let manifest = fs::read_to_string(root.join(dir).join("Cargo.toml")).unwrap();
+        for dep in zerocal_dependencies(&manifest) {
+            let may = dep == "zerocal-inputs" || allowed.contains(&dep.as_str());
+            if products.contains(&dep) && !may {
+                wrong.push(format!("{dir}/Cargo.toml depends on {dep}"));
+            }
+        }
+    }
+    // `zerocal-inputs` is under every product: it depends on none of them.
+    assert!(
+        wrong.is_empty() && {
+            let inputs = fs::read_to_string(root.join("inputs/Cargo.toml")).unwrap();
+            zerocal_dependencies(&inputs).is_disjoint(&products)
+        },
+        "product crates that hold another product: {wrong:?}"
+    );
+}
+
+#[test]
+fn the_dependency_reader_reads_only_dependencies() {
+    let manifest = "[package]\nname = \"zerocal-x\"\n[dependencies]\nzerocal-core = { path = \"../core\" }\nclap = \"4\"\nzerocal-sim.workspace = true\n[dev-dependencies]\nzerocal-web = { path = \"../web\" }\n";
+    assert_eq!(
+        zerocal_dependencies(manifest),
+        BTreeSet::from(["zerocal-core".to_string(), "zerocal-sim".to_string()])
     );
 }

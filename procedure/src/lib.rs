@@ -16,7 +16,6 @@
 //!   read here once.
 //! - [`text`]: the fixed-capacity line every writer fills, and the joint bound every
 //!   line reader holds; [`capture`]: what one capture of stages 0-1 holds.
-//! - [`robot_time`]: a session's robot time and the pose order that shortens it.
 //!
 //! The numbers come from `zerocal-core` (the method); nothing here waits, allocates or
 //! touches hardware, so whole sessions run in host tests and the same code runs on the
@@ -41,7 +40,6 @@ pub mod log;
 pub mod machine;
 pub mod pendant_machine;
 pub mod replies;
-pub mod robot_time;
 pub mod stillness;
 pub mod text;
 

@@ -6,6 +6,7 @@
 use crate::error_sources::{world_with, ErrorSource};
 use crate::montecarlo::{self, Method};
 use crate::world::WorldConfig;
+use std::fmt::Write as _;
 use zerocal_core::plan::PlanError;
 use zerocal_profile::Profile;
 
@@ -147,4 +148,53 @@ fn row(
         k2_coverage,
         tcp_over_best,
     })
+}
+
+/// The error table of one profile as `zerocal error-table` prints it: the columns'
+/// header, then each row with its refused sessions.
+pub fn render(out: &mut String, rows: &[ErrorTableRow]) {
+    let _ = writeln!(
+        out,
+        "{:<58} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7} {:>9}",
+        "error source switched on",
+        "before",
+        "after p95",
+        "after max",
+        "<=0.005",
+        "refused",
+        "k=2 cov",
+        "TCP/best"
+    );
+    for row in rows {
+        render_row(out, row);
+    }
+}
+
+/// One row of the error table, and each refused session under it.
+fn render_row(out: &mut String, row: &ErrorTableRow) {
+    let fmt = |v: f64| {
+        if v.is_finite() {
+            format!("{v:.4}")
+        } else {
+            "refused".to_owned()
+        }
+    };
+    let tcp_cell = row
+        .tcp_over_best
+        .map_or_else(|| "-".to_owned(), |r| format!("{r:.3}"));
+    let _ = writeln!(
+        out,
+        "{:<58} {:>10} {:>10} {:>10} {:>7.1}% {:>8} {:>6.1}% {:>9}",
+        row.label,
+        fmt(row.before_max_deg),
+        fmt(row.after_p95_deg),
+        fmt(row.after_max_deg),
+        row.within_share * 100.0,
+        row.refusals.len(),
+        row.k2_coverage * 100.0,
+        tcp_cell
+    );
+    for r in &row.refusals {
+        let _ = writeln!(out, "    refused, {r}");
+    }
 }

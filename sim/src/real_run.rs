@@ -4,13 +4,16 @@
 //! truth; or another session of the same robot after a change (a moved zero, offsets
 //! entered); and the ISO 9283-style positioning test after entering what it found.
 
+use crate::error_sources::ErrorSource;
 use crate::montecarlo::{self, Method};
 use crate::positioning::{AccuracyReport, ArmError};
 use crate::robot::SimRobot;
 use crate::world::{RealSession, WorldConfig};
+use std::fmt::Write as _;
 use zerocal_core::plan::PlanError;
 use zerocal_core::report::Verdict;
 use zerocal_core::session::{budget, solve, Budget, SessionError, SessionSolution};
+use zerocal_core::session::{BudgetTerm, SESSION_JOINTS};
 use zerocal_profile::Profile;
 
 /// Another session of the robot the first one drew, with the same pendant and
@@ -149,5 +152,67 @@ impl RealRun {
             points,
             seed,
         )
+    }
+
+    /// The report of this session beside its truth (`zerocal simulate`'s): what was
+    /// switched on, the offsets found against the truth with their k = 2, the budget.
+    pub fn report(&self, world: &WorldConfig, seed: u64) -> String {
+        let run = self;
+        let mut out = String::new();
+        let s = &run.solution;
+        let truth = run.session.truth_rad();
+        let off: Vec<&str> = ErrorSource::ALL
+            .iter()
+            .filter(|src| !src.is_on(world))
+            .map(|src| src.label())
+            .collect();
+        let _ = writeln!(
+            out,
+            "zerocal simulate: {} ({}), seed {seed}, real world: {}",
+            run.profile.name,
+            run.profile.title,
+            if off.is_empty() {
+                "every error source on".to_owned()
+            } else {
+                format!("without {}", off.join("; "))
+            }
+        );
+        let _ = writeln!(
+            out,
+            "{} captures ({} poses, each from both sides of the backlash), residual RMS {:.5} deg, condition number {:.1}",
+            run.session.poses.len(),
+            s.fit.poses,
+            s.fit.residual_rms_rad.to_degrees(),
+            s.fit.condition_number
+        );
+        let _ = writeln!(
+            out,
+            "\njoint  found_deg   truth_deg   error_deg   1sigma_deg  U(k=2)_deg  |error|/U"
+        );
+        for (k, t) in truth.iter().enumerate().take(SESSION_JOINTS) {
+            let f = s.offsets_rad[k].to_degrees();
+            let t = t.to_degrees();
+            let u = run.budget.expanded_rad[k].to_degrees();
+            let _ = writeln!(
+                out,
+                "j{}     {f:+.5}    {t:+.5}    {:+.5}    {:.5}     {u:.5}     {:.2}",
+                k + 2,
+                f - t,
+                s.sigma_rad()[k].to_degrees(),
+                (f - t).abs() / u
+            );
+        }
+        let _ = writeln!(out, "\nbudget (standard uncertainties, deg):");
+        for (term, u) in BudgetTerm::ALL.iter().zip(&run.budget.terms_rad) {
+            let cols: Vec<String> = u.iter().map(|v| format!("{:.5}", v.to_degrees())).collect();
+            let _ = writeln!(out, "  {:<42} {}", term.name(), cols.join("  "));
+        }
+        if run.verdict.is_pass() {
+            let _ = writeln!(out, "verdict: PASS");
+        }
+        for w in &run.verdict.warnings {
+            let _ = writeln!(out, "verdict: WARN {w}");
+        }
+        out
     }
 }

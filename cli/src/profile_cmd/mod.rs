@@ -12,10 +12,10 @@
 pub mod profile_check;
 pub mod urdf_import;
 
-use crate::error::CliError;
 use clap::{Args, Subcommand};
 use std::io::Write;
 use std::process::ExitCode;
+use zerocal_inputs::error::CliError;
 
 /// Arguments of `zerocal profile`.
 #[derive(Args, Debug, Clone)]

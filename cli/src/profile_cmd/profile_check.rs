@@ -9,13 +9,13 @@
 //! what is listed, 3 no session can be planned with it (2, as everywhere, a profile
 //! that does not read).
 
-use crate::error::CliError;
-use crate::plan::{make_plan, PlanArgs, SessionPlan};
-use crate::program::Format;
 use clap::{Args, Parser};
 use serde::Serialize;
 use std::fmt::Write;
+use zerocal_inputs::error::CliError;
 use zerocal_profile::{OffsetUnit, Profile};
+use zerocal_programs::plan::{make_plan, PlanArgs, SessionPlan};
+use zerocal_programs::program::Format;
 
 /// Arguments of `zerocal profile check`.
 #[derive(Args, Debug, Clone)]
@@ -222,10 +222,10 @@ fn capabilities(path: &str, p: &Profile) -> (Vec<Capability>, bool) {
 /// The program in every format the profile's family runs, built as `zerocal program`
 /// builds it (its safety checks included).
 fn program_capability(p: &Profile, sp: &SessionPlan) -> Capability {
-    let timing = crate::timing::TimingArgs::default();
+    let timing = zerocal_programs::timing::TimingArgs::default();
     let (mut written, mut refused) = (Vec::new(), Vec::new());
     for format in Format::for_profile(p) {
-        match crate::program::build(
+        match zerocal_programs::program::build(
             p.clone(),
             &sp.plan.poses_rad,
             format,
@@ -273,9 +273,9 @@ fn program_capability(p: &Profile, sp: &SessionPlan) -> Capability {
 
 /// The pendant's `load-profile`: its profile and plan lines made as they would be sent.
 fn pendant_capability(p: &Profile, sp: &SessionPlan) -> Capability {
-    let made = crate::pendant::pendant_profile(p, zerocal_core::bracket::Brackets::default())
-        .and_then(|pp| crate::pendant::profile_request(&pp))
-        .and_then(|_| crate::pendant::plan_request(&sp.plan.poses_rad));
+    let made = zerocal_link::pendant_profile(p, zerocal_core::bracket::Brackets::default())
+        .and_then(|pp| zerocal_link::profile_request(&pp))
+        .and_then(|_| zerocal_link::plan_request(&sp.plan.poses_rad));
     match made {
         Ok(_) => cap(
             "pendant",
@@ -295,7 +295,7 @@ fn pendant_capability(p: &Profile, sp: &SessionPlan) -> Capability {
 /// # Errors
 /// A profile that does not read (status 2, naming the key).
 pub fn run(args: &CheckArgs) -> Result<(String, Severity), CliError> {
-    let p = crate::robot::load(&args.profile)?;
+    let p = zerocal_inputs::robot::load(&args.profile)?;
     let (capabilities, plans) = capabilities(&args.profile, &p);
     let severity = if !plans {
         Severity::NoSession

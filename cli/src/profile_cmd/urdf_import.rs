@@ -2,9 +2,9 @@
 //! written as a profile (`zerocal_profile::urdf::import`), the profile read back
 //! before it is written, and an existing file never overwritten.
 
-use crate::error::CliError;
 use clap::Args;
 use std::path::PathBuf;
+use zerocal_inputs::error::CliError;
 use zerocal_profile::urdf::{self, Ends, ImportOptions, UrdfError};
 use zerocal_profile::Family;
 
@@ -77,14 +77,14 @@ fn family() -> impl clap::builder::TypedValueParser<Value = Family> {
 /// gives no stage-1 pose or flange mounting, or a profile the reader refuses (status
 /// 3); an existing `--out` or one that cannot be written (status 2).
 pub fn run(args: &ImportArgs) -> Result<String, CliError> {
-    crate::program::output_folder(&args.out)?;
+    zerocal_programs::program::output_folder(&args.out)?;
     if args.out.exists() {
         return Err(CliError::Input(format!(
             "{} exists: zerocal does not overwrite a profile (move it or choose another --out); nothing was written",
             args.out.display()
         )));
     }
-    let bytes = crate::input::read_capped_bytes(&args.file, urdf::MAX_URDF_BYTES, "URDF")?;
+    let bytes = zerocal_inputs::input::read_capped_bytes(&args.file, urdf::MAX_URDF_BYTES, "URDF")?;
     let file_name = args.file.file_name().map_or_else(
         || args.file.display().to_string(),
         |n| n.to_string_lossy().into_owned(),

@@ -3,11 +3,11 @@
 
 #![allow(dead_code)]
 
-use zerocal_cli::program::{read, Files, Format, ReadMove};
-use zerocal_cli::timing::{planner_limits, Pendant};
 use zerocal_core::model::JOINTS;
 use zerocal_core::plan::Xorshift64Star;
 use zerocal_profile::Profile;
+use zerocal_programs::program::{read, Files, Format, ReadMove};
+use zerocal_programs::timing::{planner_limits, Pendant};
 
 /// The test profile with pulses per degree: the built-in GP7 plus illustrative
 /// `counts_per_deg` (not Yaskawa data; no public source gives them).
@@ -49,7 +49,7 @@ pub fn window_poses(profile: &Profile, n: usize, seed: u64) -> Vec<[f64; JOINTS]
 /// The stage-2 poses (model radians) a test writes programs for: the planner's
 /// default plan, or [`window_poses`] where the planner refuses the robot.
 pub fn plan_for(profile: &Profile) -> Vec<[f64; JOINTS]> {
-    match zerocal_cli::program::default_plan(&profile.name) {
+    match zerocal_programs::program::default_plan(&profile.name) {
         Ok(p) => p,
         Err(_) => window_poses(profile, 8, 7),
     }
