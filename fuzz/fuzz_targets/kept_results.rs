@@ -9,7 +9,7 @@ use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
 use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
 use zerocal_procedure::log::{read_kept_results, write_kept_result, Line, KEPT_RESULT_LINES};
-use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
+use zerocal_procedure::record::kept_slot::KEPT_RESULT_LEN;
 use zerocal_procedure::record::key;
 
 #[derive(Arbitrary, Debug)]

@@ -153,7 +153,7 @@ fn kept(id: u32, n: u16) -> zerocal_procedure::kept::KeptResult {
 }
 
 fn keep(store: &mut Store<SimFlash>, k: &zerocal_procedure::kept::KeptResult) {
-    let mut value = [0_u8; zerocal_procedure::record::kept::KEPT_RESULT_LEN];
+    let mut value = [0_u8; zerocal_procedure::record::kept_slot::KEPT_RESULT_LEN];
     k.encode(&mut value).unwrap();
     embassy_futures::block_on(store.keep_result(k.id, &value)).unwrap();
 }

@@ -22,7 +22,7 @@ use embassy_sync::mutex::Mutex;
 use embassy_sync::signal::Signal;
 use zerocal_core::bracket::{BracketId, BracketMount};
 use zerocal_core::plan::PoseList;
-use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
+use zerocal_procedure::record::kept_slot::KEPT_RESULT_LEN;
 use zerocal_procedure::{PendantMachine, PendantProfile, ProcedureConfig};
 
 use crate::messages::{ButtonEvent, SensorReport};

@@ -38,7 +38,7 @@ use zerocal_procedure::link::{
 use zerocal_procedure::link::{KEPT_RESULTS_END, KEPT_RESULTS_HEAD};
 use zerocal_procedure::log::{write_kept_result, KEPT_RESULT_LINES};
 use zerocal_procedure::profile::{ProfileStep, ProfileUpload};
-use zerocal_procedure::record::kept::kept_key;
+use zerocal_procedure::record::kept_slot::kept_key;
 use zerocal_procedure::replies::Reply;
 
 use crate::channels::{LinkReply, LinkRequest, Shared};

@@ -19,7 +19,7 @@ use embassy_futures::select::{select3, Either3};
 use embassy_time::{Duration, Instant, Timer};
 use embedded_storage_async::nor_flash::NorFlash;
 use zerocal_core::model::Tilt;
-use zerocal_procedure::record::kept::KEPT_RESULT_LEN;
+use zerocal_procedure::record::kept_slot::KEPT_RESULT_LEN;
 use zerocal_procedure::stillness::Stillness;
 use zerocal_procedure::{
     Event, OutputError, PendantEvent, PendantMode, PendantOutput, Phase, ProcedureState, Refusal,

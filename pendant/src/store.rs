@@ -51,7 +51,7 @@ use sequential_storage::cache::page_states::ArrayPageStates;
 use sequential_storage::cache::{Cache, Uncached};
 use sequential_storage::map::{MapConfig, MapStorage};
 use zerocal_procedure::kept::{KeptResult, KEPT_RESULTS};
-use zerocal_procedure::record::kept::{
+use zerocal_procedure::record::kept_slot::{
     decode_next_id, encode_next_id, kept_key, KEPT_RESULT_LEN, NEXT_ID_LEN,
 };
 use zerocal_procedure::record::{key, Record, RecordError, FORMAT, MAX_RECORD_LEN};

@@ -5,8 +5,8 @@
 //!
 //! A technician may master several robots before exporting; a new session or a power
 //! cut must not lose an earlier result. The pendant keeps them in flash, one record a
-//! result (`machine::record::kept`), read back one at a time; `log::kept` writes and reads
-//! their lines for the desktop; `machine::kept` makes one from a finished session.
+//! result (`machine::record::kept_slot`), read back one at a time; `log::kept_lines` writes and reads
+//! their lines for the desktop; `machine::kept_result` makes one from a finished session.
 //!
 //! Numbers are kept as the pendant showed them, `f32` degrees: the lines carry
 //! decimals that read back to the same `f32`, so the desktop files exactly what the

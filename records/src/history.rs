@@ -48,7 +48,7 @@ pub struct HistoryArgs {
     pub fleet: bool,
     /// With --fleet: a robot's next session is due this many days after its last one;
     /// past it, the line says OVERDUE. Range: [1, 3653] days.
-    #[arg(long, value_name = "DAYS", requires = "fleet", value_parser = crate::fleet::DUE_DAYS)]
+    #[arg(long, value_name = "DAYS", requires = "fleet", value_parser = crate::fleet_table::DUE_DAYS)]
     pub due_days: Option<u32>,
 }
 
@@ -610,7 +610,7 @@ pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
     if args.fleet {
         let fleet = history.fleet().map_err(history_error(&location))?;
         let today = zerocal_civil::Timestamp::clock().date();
-        let rows = crate::fleet::rows(&fleet, args.due_days, today)?;
+        let rows = crate::fleet_table::rows(&fleet, args.due_days, today)?;
         if args.json {
             return serde_json::to_string_pretty(&rows)
                 .map(|s| s + "\n")
@@ -619,7 +619,7 @@ pub fn run(args: &HistoryArgs) -> Result<String, CliError> {
         return Ok(if rows.is_empty() {
             format!("no records in {location}\n")
         } else {
-            crate::fleet::table(&rows)
+            crate::fleet_table::table(&rows)
         });
     }
     let records = history

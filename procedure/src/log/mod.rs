@@ -42,7 +42,7 @@
 //! This file holds what they share: the columns, the headers and the bounds.
 
 mod error;
-mod kept;
+mod kept_lines;
 mod meta;
 mod read;
 mod write;
@@ -50,8 +50,8 @@ mod write;
 pub use crate::text::{Line, LINE_BYTES, MAX_JOINT_DEG};
 pub use error::{LogError, ShortText};
 #[cfg(any(test, feature = "std"))]
-pub use kept::read_kept_results;
-pub use kept::{write_kept_result, KeptResultReader, KEPT_RESULT_KEY, KEPT_RESULT_LINES};
+pub use kept_lines::read_kept_results;
+pub use kept_lines::{write_kept_result, KeptResultReader, KEPT_RESULT_KEY, KEPT_RESULT_LINES};
 pub use meta::{
     bracket_key, metadata_key, parse_bracket_fields, parse_meta, write_bench, write_bracket,
     write_bracket_fields, write_fit_extras, write_pendant, ExportMode, MetaItem, MetaKeys,

@@ -11,7 +11,7 @@
 //! where a sample goes during a bracket calibration) is made here, on the host's tests.
 
 use crate::bracket_cal::{bracket_step, BracketCalState, BracketOutput, StoredBrackets};
-use crate::machine::record::kept::KEPT_RESULT_LEN;
+use crate::machine::record::kept_slot::KEPT_RESULT_LEN;
 use crate::machine::{
     step as session_step, Event, Notice, Output, PendantProfile, PendantUnit, Phase,
     ProcedureConfig, ProcedureState, ReadingSlot, Record, OUTPUT_RECORDS,

@@ -4,7 +4,7 @@
 use super::*;
 use crate::kept::KeptResult;
 use crate::machine::pendant_default;
-use crate::machine::record::kept::kept_key;
+use crate::machine::record::kept_slot::kept_key;
 use std::collections::BTreeMap;
 use std::vec::Vec;
 use zerocal_core::bracket::bracket_id;

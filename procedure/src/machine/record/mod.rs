@@ -31,7 +31,7 @@ use zerocal_core::real::Real;
 use zerocal_core::stage2::PoseReading;
 
 mod bytes;
-pub mod kept;
+pub mod kept_slot;
 mod legacy;
 mod stored_bracket;
 #[cfg(test)]
@@ -251,7 +251,7 @@ pub mod key {
     // Each range ends before the next begins.
     const _: () = assert!(READING + super::READING_SLOTS as u16 <= PROFILE_HEAD);
     const _: () = assert!(CAPTURE + super::MAX_CAPTURES as u16 <= PLAN_POSE);
-    /// The kept results' slots ([`super::kept::kept_key`]; not [`super::Record`]s):
+    /// The kept results' slots ([`super::kept_slot::kept_key`]; not [`super::Record`]s):
     /// `KEPT_RESULT + id % KEPT_RESULTS`.
     pub const KEPT_RESULT: u16 = 0x71;
 }

@@ -1,9 +1,9 @@
-//! A finished session's result as the pendant keeps it ([`crate::kept`]): the types
-//! live there, so the log's writer and reader need nothing of the procedure.
-
-pub use crate::kept::*;
+//! A finished session's result made into the [`KeptResult`] the pendant keeps (the
+//! types are [`crate::kept`]'s, so the log's writer and reader need nothing of the
+//! procedure).
 
 use super::{ProcedureConfig, ProcedureState};
+use crate::kept::{verdict_bits, KeptResult};
 use zerocal_core::bracket::BracketMount;
 use zerocal_core::real::{rad_to_deg, Real};
 

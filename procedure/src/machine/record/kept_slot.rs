@@ -13,7 +13,7 @@
 use super::bytes::{Reader, Writer};
 use super::{id_bytes, id_of, RecordError};
 use crate::log::TEMPERATURE_RANGE_C;
-use crate::machine::kept::{KeptResult, UnitId, KEPT_RESULTS, UNIT_ID_BYTES, VERDICT_BITS};
+use crate::kept::{KeptResult, UnitId, KEPT_RESULTS, UNIT_ID_BYTES, VERDICT_BITS};
 use crate::text::RobotName;
 use zerocal_core::bracket::BRACKET_ID_LEN;
 use zerocal_core::session::SESSION_JOINTS;
@@ -204,7 +204,7 @@ impl KeptResult {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::machine::kept::example_kept_result as example;
+    use crate::kept::example_kept_result as example;
 
     #[test]
     fn a_kept_result_reads_back_exactly_under_its_key() {
