@@ -237,7 +237,10 @@ pub fn router(config: Config, product: Box<dyn Product>) -> Result<Router, Strin
         .route("/robot/{serial}/plot/{index}", get(pages::robot_plot))
         .route("/upload", get(pages::upload_form).post(pages::upload))
         .route("/record/{id}", get(review_pages::record))
-        .route("/record/{id}/certificate", get(review_pages::certificate))
+        .route(
+            "/record/{id}/certificate",
+            get(review_pages::certificate).post(review_pages::issue_certificate),
+        )
         .route(
             "/record/{id}/certificate.pdf",
             get(review_pages::certificate_pdf),
