@@ -124,9 +124,9 @@ impl From<HistoryError> for WebError {
     fn from(e: HistoryError) -> Self {
         let status = match e {
             HistoryError::NoSuchRecord(_) => StatusCode::NOT_FOUND,
-            HistoryError::Refused(_) | HistoryError::InvalidRecord(_) => {
-                StatusCode::UNPROCESSABLE_ENTITY
-            }
+            HistoryError::Refused(_)
+            | HistoryError::InvalidRecord(_)
+            | HistoryError::AnotherRobot { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             _ => StatusCode::INTERNAL_SERVER_ERROR,
         };
         WebError(status, format!("history: {e}"))

@@ -338,19 +338,10 @@ pub async fn upload(State(app): State<Shared>, headers: HeaderMap, form: Multipa
                 .product
                 .solve_export(&export, &serial, &user)
                 .map_err(|e| WebError(StatusCode::UNPROCESSABLE_ENTITY, e))?;
-            if let Some(other) = h.list(Some(&serial))?.iter().find(|r| r.new.robot != record.robot) {
-                return Err(WebError(
-                    StatusCode::UNPROCESSABLE_ENTITY,
-                    format!(
-                        "serial {serial:?} is a {} in the history (record {}); this export is of a {}: another robot's export, not recorded",
-                        other.new.robot, other.id, record.robot
-                    ),
-                ));
-            }
-            Ok(match replaces {
-                Some(old) => h.insert_correction(&user, &record, old, &reason)?.id,
-                None => h.insert_audited(&user, &record)?.id,
-            })
+            // The serial's records all of this export's robot, checked in the insert's
+            // transaction: two uploads racing cannot both pass.
+            let correction = replaces.map(|old| (old, reason.as_str()));
+            Ok(h.insert_of_one_robot(&user, &record, correction)?.id)
         })
         .await;
         match id {
