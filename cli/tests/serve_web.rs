@@ -82,7 +82,10 @@ async fn an_uploaded_export_is_solved_and_recorded_as_zerocal_session_does_on_ev
             secure_cookies: true,
             max_upload_bytes: zerocal_inputs::input::MAX_EXPORT_BYTES
                 + zerocal_web::MULTIPART_OVERHEAD_BYTES,
-            interval_days: Some(365),
+            intervals: zerocal_web::Intervals {
+                days: Some(365),
+                by_model: Default::default(),
+            },
             chromium: None,
         },
         Box::new(CliProduct {

@@ -156,12 +156,21 @@ pub async fn fleet(
     let r = async {
         let fleet = with_history(&app, |h| Ok(h.fleet()?)).await?;
         let today = zerocal_civil::Timestamp::clock().date();
-        let rows = rows(fleet, app.config.interval_days, today, &query)
+        let intervals = &app.config.intervals;
+        // A model given its own interval that no robot of the fleet is of: a misspelt
+        // name, shown rather than silently unused.
+        let unused: Vec<String> = intervals
+            .by_model
+            .keys()
+            .filter(|m| !fleet.iter().any(|r| &r.robot == *m))
+            .cloned()
+            .collect();
+        let rows = rows(fleet, intervals, today, &query)
             .map_err(|e| WebError(StatusCode::BAD_REQUEST, e))?;
         render(
             &app.templates,
             "fleet.html",
-            context! { user => s.user, csrf => s.csrf_token, rows, query, interval_days => app.config.interval_days },
+            context! { user => s.user, csrf => s.csrf_token, rows, query, intervals, unused },
         )
         .map(IntoResponse::into_response)
     };

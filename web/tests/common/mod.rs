@@ -131,7 +131,10 @@ pub fn server(at: &DbLocation) -> Router {
             db: at.clone(),
             secure_cookies: false,
             max_upload_bytes: TEST_UPLOAD_LIMIT,
-            interval_days: Some(365),
+            intervals: zerocal_web::Intervals {
+                days: Some(365),
+                by_model: Default::default(),
+            },
             chromium: None,
         },
         Box::new(FakeProduct),
