@@ -19,6 +19,50 @@ pub const PASSWORD_ENV: &str = "ZEROCAL_NEW_PASSWORD";
 const INTERVAL_DAYS: zerocal_inputs::args::CountIn<u32> =
     zerocal_inputs::args::CountIn::new(1, 3653);
 
+/// `--interval-days-for MODEL=DAYS`: a robot profile's name and its interval, in the
+/// range of `--interval-days`.
+///
+/// # Errors
+/// Not `MODEL=DAYS`, an empty or blank-holding model name, days not a whole number in
+/// the range: the message names the value.
+fn model_interval(text: &str) -> Result<(String, u32), String> {
+    let Some((model, days)) = text.split_once('=') else {
+        return Err(format!(
+            "'{text}' is not MODEL=DAYS (a robot profile's name, e.g. kuka-kr6-r900-sixx=180)"
+        ));
+    };
+    let model = model.trim();
+    if model.is_empty() || model.chars().any(|c| c.is_whitespace() || c.is_control()) {
+        return Err(format!(
+            "'{text}': the model {model:?} is not a robot profile's name (no blanks, not empty)"
+        ));
+    }
+    let days = INTERVAL_DAYS
+        .check(days)
+        .map_err(|e| format!("'{text}': {e}"))?;
+    let days = u32::try_from(days).map_err(|_| format!("'{text}': too many days"))?;
+    Ok((model.to_owned(), days))
+}
+
+/// The plant's interval and each model's, one interval a model.
+///
+/// # Errors
+/// A model given twice.
+fn intervals(args: &ServeArgs) -> Result<zerocal_web::Intervals, CliError> {
+    let mut by_model = std::collections::BTreeMap::new();
+    for (model, days) in &args.interval_days_for {
+        if by_model.insert(model.clone(), *days).is_some() {
+            return Err(CliError::Input(format!(
+                "serve: --interval-days-for names {model} twice: one interval a model"
+            )));
+        }
+    }
+    Ok(zerocal_web::Intervals {
+        days: args.interval_days,
+        by_model,
+    })
+}
+
 /// A user's role (docs/web.md).
 #[derive(ValueEnum, Debug, Clone, Copy)]
 pub enum RoleArg {
@@ -59,6 +103,11 @@ pub struct ServeArgs {
     /// session (without it the fleet page shows no due dates). Range: [1, 3653] days.
     #[arg(long, value_name = "DAYS", value_parser = INTERVAL_DAYS)]
     pub interval_days: Option<u32>,
+    /// A robot model's own interval, MODEL=DAYS (MODEL a robot profile's name, as the
+    /// records name it): its robots are due DAYS after their last session, whatever
+    /// --interval-days says; repeatable, one a model. DAYS: [1, 3653].
+    #[arg(long, value_name = "MODEL=DAYS", value_parser = model_interval)]
+    pub interval_days_for: Vec<(String, u32)>,
     /// The issuer's configuration for the certificates (as `zerocal certificate
     /// --config`). Default: $XDG_CONFIG_HOME/zerocal/certificate.toml, else
     /// ~/.config/zerocal/certificate.toml.
@@ -182,6 +231,7 @@ fn on_path(name: &str) -> Option<PathBuf> {
 /// The history does not open; an account that exists or a password that is empty; a
 /// non-loopback address without --behind-tls-proxy; an address that cannot be bound.
 pub fn run(args: &ServeArgs) -> Result<String, CliError> {
+    let intervals = intervals(args)?;
     let at = args.db.location()?;
     let mut history = args.db.open()?;
     if let (Some(name), Some(role)) = (&args.add_user, args.role) {
@@ -216,7 +266,7 @@ pub fn run(args: &ServeArgs) -> Result<String, CliError> {
             secure_cookies: args.behind_tls_proxy,
             max_upload_bytes: zerocal_inputs::input::MAX_EXPORT_BYTES
                 + zerocal_web::MULTIPART_OVERHEAD_BYTES,
-            interval_days: args.interval_days,
+            intervals,
             chromium: args.chromium.clone().or_else(|| on_path("chromium")),
         },
         Box::new(CliProduct {
@@ -225,4 +275,65 @@ pub fn run(args: &ServeArgs) -> Result<String, CliError> {
     )
     .map_err(|e| CliError::Refused(format!("serve: {e}")))?;
     Ok(String::new())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_models_interval_is_model_equals_days_in_the_range_and_else_refused_naming_it() {
+        assert_eq!(
+            model_interval("kuka-kr6-r900-sixx=180"),
+            Ok(("kuka-kr6-r900-sixx".to_owned(), 180))
+        );
+        assert_eq!(model_interval("ur5e=3653"), Ok(("ur5e".to_owned(), 3653)));
+        for (bad, says) in [
+            ("kuka-kr6-r900-sixx", "is not MODEL=DAYS"),
+            ("kuka-kr6-r900-sixx:180", "is not MODEL=DAYS"),
+            ("=180", "is not a robot profile's name"),
+            ("kuka kr6=180", "is not a robot profile's name"),
+            ("ur5e=0", "outside the range"),
+            ("ur5e=3654", "outside the range"),
+            ("ur5e=half", "is not a whole number"),
+            ("ur5e=-5", "is not a whole number"),
+        ] {
+            let e = model_interval(bad).unwrap_err();
+            assert!(e.contains(bad) && e.contains(says), "{bad}: {e}");
+        }
+    }
+
+    #[test]
+    fn a_model_given_two_intervals_is_refused() {
+        use clap::Parser;
+        #[derive(Parser)]
+        struct Cli {
+            #[command(flatten)]
+            serve: ServeArgs,
+        }
+        let parse = |extra: &[&str]| {
+            let mut argv = vec!["zerocal", "--interval-days", "365"];
+            argv.extend_from_slice(extra);
+            Cli::try_parse_from(argv).unwrap().serve
+        };
+        let args = parse(&[
+            "--interval-days-for",
+            "kuka-kr6-r900-sixx=180",
+            "--interval-days-for",
+            "ur5e=730",
+        ]);
+        let i = intervals(&args).unwrap();
+        assert_eq!(i.days, Some(365));
+        assert_eq!(i.of("kuka-kr6-r900-sixx"), Some((180, true)));
+        assert_eq!(i.of("ur5e"), Some((730, true)));
+        assert_eq!(i.of("fanuc-m10ia"), Some((365, false)));
+        let twice = parse(&[
+            "--interval-days-for",
+            "ur5e=180",
+            "--interval-days-for",
+            "ur5e=730",
+        ]);
+        let e = intervals(&twice).unwrap_err().to_string();
+        assert!(e.contains("ur5e twice"), "{e}");
+    }
 }

@@ -1,8 +1,9 @@
 //! `zerocal serve` with the CLI's own product: an export uploaded by a signed-in
 //! technician is solved as `zerocal session --record` solves it and recorded with them
 //! as its operator, on every built-in profile (each controller family); another
-//! robot's export under a serial is refused and nothing recorded; the certificate page
-//! is `zerocal certificate`'s with the review under it.
+//! robot's export under a serial is refused and nothing recorded; the certificate, issued
+//! by a technician's form (never by a GET), is `zerocal certificate`'s with the review
+//! under it.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -81,7 +82,10 @@ async fn an_uploaded_export_is_solved_and_recorded_as_zerocal_session_does_on_ev
             secure_cookies: true,
             max_upload_bytes: zerocal_inputs::input::MAX_EXPORT_BYTES
                 + zerocal_web::MULTIPART_OVERHEAD_BYTES,
-            interval_days: Some(365),
+            intervals: zerocal_web::Intervals {
+                days: Some(365),
+                by_model: Default::default(),
+            },
             chromium: None,
         },
         Box::new(CliProduct {
@@ -160,6 +164,29 @@ async fn an_uploaded_export_is_solved_and_recorded_as_zerocal_session_does_on_ev
     }
     assert!(families.len() >= 6, "every controller family: {families:?}");
 
+    // No certificate shown before one is issued, and the GET issues none.
+    let (status, _, _) = send(
+        &router,
+        Request::get("/record/1/certificate")
+            .header(header::COOKIE, &cookie)
+            .body(Body::empty())
+            .unwrap(),
+    )
+    .await;
+    assert_eq!(status, StatusCode::NOT_FOUND);
+    assert!(h.certificates_of(1).unwrap().is_empty());
+    // Issued by the technician's form.
+    let (status, location, body) = send(
+        &router,
+        Request::post("/record/1/certificate")
+            .header(header::COOKIE, &cookie)
+            .header(header::CONTENT_TYPE, "application/x-www-form-urlencoded")
+            .body(Body::from(format!("csrf={csrf}")))
+            .unwrap(),
+    )
+    .await;
+    assert_eq!(status, StatusCode::SEE_OTHER, "{body}");
+    assert_eq!(location.as_deref(), Some("/record/1/certificate"));
     // The certificate of the first session: zerocal certificate's, with its review.
     let (status, _, html) = send(
         &router,

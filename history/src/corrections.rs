@@ -3,7 +3,7 @@
 //! who made it, written with its audit entry in one transaction. A record is replaced
 //! at most once; the replaced one stays, readable, and the fleet view leaves it out.
 
-use crate::db::Value;
+use crate::db::{Conn, Value};
 use crate::review::audit_in;
 use crate::{insert_in, validate, History, HistoryError, Inserted, NewRecord};
 use serde::Serialize;
@@ -39,70 +39,9 @@ impl History {
         reason: &str,
     ) -> Result<Inserted, HistoryError> {
         validate(r)?;
-        let reason = reason.trim();
-        if reason.is_empty() {
-            return Err(HistoryError::Refused(
-                "a correction states its reason".into(),
-            ));
-        }
-        self.conn.write(|c| {
-            let rows = c.query(
-                "SELECT serial, kind, (SELECT record_id FROM corrections WHERE replaces_id = $1) \
-                 FROM records WHERE id = $1",
-                &[Value::Int(Some(replaces))],
-            )?;
-            let Some([serial, kind, replaced_by]) = rows.first().map(Vec::as_slice) else {
-                return Err(HistoryError::Refused(format!(
-                    "record {replaces} does not exist"
-                )));
-            };
-            let (serial, kind) = (
-                serial.string("records.serial")?,
-                kind.string("records.kind")?,
-            );
-            if serial != r.serial || kind != r.kind.as_str() {
-                return Err(HistoryError::Refused(format!(
-                    "record {replaces} is a {kind} of serial {serial:?}: a correction is a {} of \
-                     serial {:?}",
-                    r.kind.as_str(),
-                    r.serial
-                )));
-            }
-            if let Some(by) = replaced_by.opt_i64("corrections.record_id")? {
-                return Err(HistoryError::Refused(format!(
-                    "record {replaces} is already replaced by record {by}"
-                )));
-            }
-            let inserted = insert_in(c, r)?;
-            if !inserted.new {
-                return Err(HistoryError::Refused(format!(
-                    "this export is already record {}: a correction is a new record",
-                    inserted.id
-                )));
-            }
-            let at = zerocal_civil::Timestamp::clock().to_string();
-            c.execute(
-                "INSERT INTO corrections (record_id, replaces_id, reason, user_name, recorded_at) \
-                 VALUES ($1, $2, $3, $4, $5)",
-                &[
-                    Value::Int(Some(inserted.id)),
-                    Value::Int(Some(replaces)),
-                    Value::text(reason),
-                    Value::text(actor),
-                    Value::text(&at),
-                ],
-            )?;
-            let before = json!({ "id": replaces, "replaced_by": null });
-            let after = json!({
-                "id": replaces, "replaced_by": inserted.id, "reason": reason,
-                "new_record": { "id": inserted.id, "serial": r.serial, "kind": r.kind.as_str(),
-                    "measured_on": r.measured_on, "operator": r.operator, "verdict": r.verdict,
-                    "export_sha256": crate::sha256_hex(&r.export) },
-            });
-            let subject = format!("record {replaces}");
-            audit_in(c, actor, "record.correct", &subject, Some(&before), &after)?;
-            Ok(inserted)
-        })
+        let reason = correction_reason(reason)?;
+        self.conn
+            .write(|c| correction_in(c, actor, r, replaces, reason))
     }
 
     /// The corrections among `serial`'s records, oldest first.
@@ -131,4 +70,85 @@ impl History {
             })
             .collect()
     }
+}
+
+/// [`History::insert_correction`]'s work in the caller's writing transaction (`reason`
+/// trimmed and not empty).
+pub(crate) fn correction_in(
+    c: &mut Conn,
+    actor: &str,
+    r: &NewRecord,
+    replaces: i64,
+    reason: &str,
+) -> Result<Inserted, HistoryError> {
+    let rows = c.query(
+        "SELECT serial, kind, (SELECT record_id FROM corrections WHERE replaces_id = $1) \
+                 FROM records WHERE id = $1",
+        &[Value::Int(Some(replaces))],
+    )?;
+    let Some([serial, kind, replaced_by]) = rows.first().map(Vec::as_slice) else {
+        return Err(HistoryError::Refused(format!(
+            "record {replaces} does not exist"
+        )));
+    };
+    let (serial, kind) = (
+        serial.string("records.serial")?,
+        kind.string("records.kind")?,
+    );
+    if serial != r.serial || kind != r.kind.as_str() {
+        return Err(HistoryError::Refused(format!(
+            "record {replaces} is a {kind} of serial {serial:?}: a correction is a {} of \
+                     serial {:?}",
+            r.kind.as_str(),
+            r.serial
+        )));
+    }
+    if let Some(by) = replaced_by.opt_i64("corrections.record_id")? {
+        return Err(HistoryError::Refused(format!(
+            "record {replaces} is already replaced by record {by}"
+        )));
+    }
+    let inserted = insert_in(c, r)?;
+    if !inserted.new {
+        return Err(HistoryError::Refused(format!(
+            "this export is already record {}: a correction is a new record",
+            inserted.id
+        )));
+    }
+    let at = zerocal_civil::Timestamp::clock().to_string();
+    c.execute(
+        "INSERT INTO corrections (record_id, replaces_id, reason, user_name, recorded_at) \
+                 VALUES ($1, $2, $3, $4, $5)",
+        &[
+            Value::Int(Some(inserted.id)),
+            Value::Int(Some(replaces)),
+            Value::text(reason),
+            Value::text(actor),
+            Value::text(&at),
+        ],
+    )?;
+    let before = json!({ "id": replaces, "replaced_by": null });
+    let after = json!({
+        "id": replaces, "replaced_by": inserted.id, "reason": reason,
+        "new_record": { "id": inserted.id, "serial": r.serial, "kind": r.kind.as_str(),
+            "measured_on": r.measured_on, "operator": r.operator, "verdict": r.verdict,
+            "export_sha256": crate::sha256_hex(&r.export) },
+    });
+    let subject = format!("record {replaces}");
+    audit_in(c, actor, "record.correct", &subject, Some(&before), &after)?;
+    Ok(inserted)
+}
+
+/// A correction's reason, trimmed.
+///
+/// # Errors
+/// [`HistoryError::Refused`]: an empty reason.
+pub(crate) fn correction_reason(reason: &str) -> Result<&str, HistoryError> {
+    let reason = reason.trim();
+    if reason.is_empty() {
+        return Err(HistoryError::Refused(
+            "a correction states its reason".into(),
+        ));
+    }
+    Ok(reason)
 }

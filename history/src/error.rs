@@ -26,6 +26,18 @@ pub enum HistoryError {
     /// A change the history refuses as asked (a signature out of order or by the wrong
     /// role, an account that exists): nothing was written.
     Refused(String),
+    /// An export of robot profile `export` under `serial`, whose record `record_id` is of
+    /// profile `stored`: another robot's export, not recorded.
+    AnotherRobot {
+        /// The serial typed with the export.
+        serial: String,
+        /// The profile of the serial's record in the history.
+        stored: String,
+        /// That record's ID.
+        record_id: i64,
+        /// The export's profile.
+        export: String,
+    },
     /// A stored value that does not read as what the schema says it is.
     Corrupt(String),
     /// No `--db` given and neither `XDG_DATA_HOME` nor `HOME` is set.
@@ -55,6 +67,15 @@ impl fmt::Display for HistoryError {
             Self::NoSuchRecord(id) => write!(f, "no history record has ID {id}"),
             Self::InvalidRecord(why) => write!(f, "record not stored: {why}"),
             Self::Refused(why) => write!(f, "refused: {why}"),
+            Self::AnotherRobot {
+                serial,
+                stored,
+                record_id,
+                export,
+            } => write!(
+                f,
+                "serial {serial:?} is a {stored} in the history (record {record_id}); this export is of a {export}: another robot's export, not recorded"
+            ),
             Self::Corrupt(why) => write!(
                 f,
                 "the history database holds a value that does not read: {why}"

@@ -16,6 +16,7 @@ mod fleet;
 mod pgpass;
 mod review;
 pub mod schema;
+mod uploads;
 mod verdict;
 
 pub use brackets::{RecordBracket, RecordBracketCalibration, RecordBracketYaw, RecordBrackets};

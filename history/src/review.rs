@@ -250,24 +250,7 @@ impl History {
     /// As [`History::insert`].
     pub fn insert_audited(&mut self, actor: &str, r: &NewRecord) -> Result<Inserted, HistoryError> {
         validate(r)?;
-        self.conn.write(|c| {
-            let inserted = insert_in(c, r)?;
-            if inserted.new {
-                let after = json!({
-                    "id": inserted.id,
-                    "kind": r.kind.as_str(),
-                    "serial": r.serial,
-                    "robot": r.robot,
-                    "measured_on": r.measured_on,
-                    "operator": r.operator,
-                    "verdict": r.verdict,
-                    "export_sha256": crate::sha256_hex(&r.export),
-                });
-                let subject = format!("record {}", inserted.id);
-                audit_in(c, actor, "record.insert", &subject, None, &after)?;
-            }
-            Ok(inserted)
-        })
+        self.conn.write(|c| insert_audited_in(c, actor, r))
     }
 
     /// Makes the account `name` with `role` and the Argon2 PHC string `password_phc`,
@@ -738,4 +721,28 @@ fn failures_since(c: &mut Conn, name: &str, since_unix: i64) -> Result<i64, Hist
         .and_then(|r| r.first())
         .ok_or_else(|| HistoryError::Corrupt("count(*) returned nothing".into()))?
         .i64("count")
+}
+
+/// [`History::insert_audited`]'s work in the caller's writing transaction.
+pub(crate) fn insert_audited_in(
+    c: &mut Conn,
+    actor: &str,
+    r: &NewRecord,
+) -> Result<Inserted, HistoryError> {
+    let inserted = insert_in(c, r)?;
+    if inserted.new {
+        let after = json!({
+            "id": inserted.id,
+            "kind": r.kind.as_str(),
+            "serial": r.serial,
+            "robot": r.robot,
+            "measured_on": r.measured_on,
+            "operator": r.operator,
+            "verdict": r.verdict,
+            "export_sha256": crate::sha256_hex(&r.export),
+        });
+        let subject = format!("record {}", inserted.id);
+        audit_in(c, actor, "record.insert", &subject, None, &after)?;
+    }
+    Ok(inserted)
 }

@@ -143,7 +143,10 @@ fn main() {
             db: at,
             secure_cookies: false,
             max_upload_bytes: 1 << 20,
-            interval_days: Some(365),
+            intervals: zerocal_web::Intervals {
+                days: Some(365),
+                by_model: Default::default(),
+            },
             chromium: None,
         },
         Box::new(NoProduct),

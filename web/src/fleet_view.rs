@@ -4,6 +4,7 @@
 //! export, result or profile: the page stays quick at a plant's size).
 
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use zerocal_civil::Date;
 use zerocal_history::RobotSummary;
 
@@ -20,6 +21,30 @@ pub struct FleetQuery {
     pub only: Option<String>,
 }
 
+/// The calibration intervals: a robot is due this many days after its last session,
+/// its model's own interval (by the robot profile's name) where one is set, else the
+/// plant's.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize)]
+pub struct Intervals {
+    /// The plant's interval, for every model without its own; `None`: those robots
+    /// show no due date.
+    pub days: Option<u32>,
+    /// Each model's own interval, by robot profile name.
+    pub by_model: BTreeMap<String, u32>,
+}
+
+impl Intervals {
+    /// The interval of a robot of profile `model` and whether it is the model's own
+    /// (`false`: the plant's); `None` where neither is set.
+    #[must_use]
+    pub fn of(&self, model: &str) -> Option<(u32, bool)> {
+        match self.by_model.get(model) {
+            Some(days) => Some((*days, true)),
+            None => self.days.map(|d| (d, false)),
+        }
+    }
+}
+
 /// One robot's row.
 #[derive(Debug, Clone, Serialize)]
 pub struct FleetRow {
@@ -31,20 +56,24 @@ pub struct FleetRow {
     pub worst_drift_ratio: f64,
     /// The last session's day plus the interval, if one is set and there is a session.
     pub due_on: Option<String>,
+    /// The interval that applied (days), if one is set.
+    pub interval_days: Option<u32>,
+    /// Whether it is the robot model's own interval (else the plant's).
+    pub interval_of_model: bool,
     /// Whether `due_on` is before today.
     pub overdue: bool,
     /// Whether the last check did not pass.
     pub check_failed: bool,
 }
 
-/// The rows of `fleet`, due `interval_days` after each last session (overdue against
-/// `today`), filtered and sorted by `query`.
+/// The rows of `fleet`, each due its model's interval of `intervals` after its last
+/// session (overdue against `today`), filtered and sorted by `query`.
 ///
 /// # Errors
 /// A query naming a sort or filter that does not exist.
 pub fn rows(
     fleet: Vec<RobotSummary>,
-    interval_days: Option<u32>,
+    intervals: &Intervals,
     today: Date,
     query: &FleetQuery,
 ) -> Result<Vec<FleetRow>, String> {
@@ -82,8 +111,9 @@ pub fn rows(
                 .fold(0.0, f64::max);
             // A stored day that is not a date has no due day (the history validates
             // every day it stores; this is a corrupt row, shown without one).
-            let due = match (interval_days, &robot.last_session) {
-                (Some(days), Some(s)) => Date::parse(&s.measured_on)
+            let interval = intervals.of(&robot.robot);
+            let due = match (interval, &robot.last_session) {
+                (Some((days, _)), Some(s)) => Date::parse(&s.measured_on)
                     .ok()
                     .map(|d| Date::from_days(d.days() + i64::from(days))),
                 _ => None,
@@ -97,6 +127,8 @@ pub fn rows(
                 worst_drift_ratio,
                 overdue: due.is_some_and(|d| d.days() < today.days()),
                 due_on: due.map(|d| d.to_string()),
+                interval_days: interval.map(|(d, _)| d),
+                interval_of_model: interval.is_some_and(|(_, own)| own),
                 check_failed,
                 robot,
             }
@@ -126,4 +158,76 @@ pub fn rows(
         }
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use zerocal_history::RecordSummary;
+
+    fn robot(serial: &str, model: &str, last_session: &str) -> RobotSummary {
+        RobotSummary {
+            serial: serial.into(),
+            robot: model.into(),
+            robot_title: model.into(),
+            sessions: 1,
+            checks: 0,
+            last_session: Some(RecordSummary {
+                id: 1,
+                measured_on: last_session.into(),
+                verdict: "PASS".into(),
+                joints: Vec::new(),
+            }),
+            previous_session: None,
+            last_check: None,
+        }
+    }
+
+    fn due(rows: &[FleetRow]) -> Vec<(&str, Option<&str>, Option<u32>, bool)> {
+        rows.iter()
+            .map(|r| {
+                (
+                    r.robot.serial.as_str(),
+                    r.due_on.as_deref(),
+                    r.interval_days,
+                    r.interval_of_model,
+                )
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_model_with_its_own_interval_is_due_by_it_and_the_others_by_the_plants() {
+        let fleet = || {
+            vec![
+                robot("R1", "kuka-kr6-r900-sixx", "2026-05-04"),
+                robot("R2", "ur5e", "2026-05-04"),
+            ]
+        };
+        let today = Date::parse("2026-11-29").unwrap();
+        let query = FleetQuery::default();
+        let mut intervals = Intervals {
+            days: Some(365),
+            by_model: BTreeMap::from([("kuka-kr6-r900-sixx".to_owned(), 180)]),
+        };
+        let got = rows(fleet(), &intervals, today, &query).unwrap();
+        assert_eq!(
+            due(&got),
+            [
+                ("R1", Some("2026-10-31"), Some(180), true),
+                ("R2", Some("2027-05-04"), Some(365), false),
+            ]
+        );
+        assert!(got[0].overdue && !got[1].overdue);
+        // Without the plant's interval only the model with its own is due.
+        intervals.days = None;
+        let got = rows(fleet(), &intervals, today, &query).unwrap();
+        assert_eq!(
+            due(&got),
+            [
+                ("R1", Some("2026-10-31"), Some(180), true),
+                ("R2", None, None, false),
+            ]
+        );
+    }
 }

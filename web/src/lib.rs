@@ -22,7 +22,7 @@ mod review_pages;
 mod templates;
 
 pub use auth::{hash_password, LOGIN_WINDOW_SECONDS, MAX_FAILED_LOGINS, SESSION_SECONDS};
-pub use fleet_view::{FleetQuery, FleetRow};
+pub use fleet_view::{FleetQuery, FleetRow, Intervals};
 
 use axum::extract::DefaultBodyLimit;
 use axum::http::{header, HeaderValue, StatusCode};
@@ -88,9 +88,10 @@ pub struct Config {
     pub secure_cookies: bool,
     /// The most bytes a request body may have (an upload's).
     pub max_upload_bytes: usize,
-    /// The days between calibrations: a robot is due this many days after its last
-    /// session. `None`: no due date is shown (the plant sets its interval).
-    pub interval_days: Option<u32>,
+    /// The days between calibrations, the plant's and each robot model's: a robot is
+    /// due this many days after its last session. None set: no due date is shown (the
+    /// plant sets its intervals).
+    pub intervals: Intervals,
     /// The Chromium that prints certificates to PDF; `None`: no PDF download (the
     /// page says so).
     pub chromium: Option<std::path::PathBuf>,
@@ -124,9 +125,9 @@ impl From<HistoryError> for WebError {
     fn from(e: HistoryError) -> Self {
         let status = match e {
             HistoryError::NoSuchRecord(_) => StatusCode::NOT_FOUND,
-            HistoryError::Refused(_) | HistoryError::InvalidRecord(_) => {
-                StatusCode::UNPROCESSABLE_ENTITY
-            }
+            HistoryError::Refused(_)
+            | HistoryError::InvalidRecord(_)
+            | HistoryError::AnotherRobot { .. } => StatusCode::UNPROCESSABLE_ENTITY,
             _ => StatusCode::INTERNAL_SERVER_ERROR,
         };
         WebError(status, format!("history: {e}"))
@@ -237,7 +238,10 @@ pub fn router(config: Config, product: Box<dyn Product>) -> Result<Router, Strin
         .route("/robot/{serial}/plot/{index}", get(pages::robot_plot))
         .route("/upload", get(pages::upload_form).post(pages::upload))
         .route("/record/{id}", get(review_pages::record))
-        .route("/record/{id}/certificate", get(review_pages::certificate))
+        .route(
+            "/record/{id}/certificate",
+            get(review_pages::certificate).post(review_pages::issue_certificate),
+        )
         .route(
             "/record/{id}/certificate.pdf",
             get(review_pages::certificate_pdf),

@@ -156,12 +156,21 @@ pub async fn fleet(
     let r = async {
         let fleet = with_history(&app, |h| Ok(h.fleet()?)).await?;
         let today = zerocal_civil::Timestamp::clock().date();
-        let rows = rows(fleet, app.config.interval_days, today, &query)
+        let intervals = &app.config.intervals;
+        // A model given its own interval that no robot of the fleet is of: a misspelt
+        // name, shown rather than silently unused.
+        let unused: Vec<String> = intervals
+            .by_model
+            .keys()
+            .filter(|m| !fleet.iter().any(|r| &r.robot == *m))
+            .cloned()
+            .collect();
+        let rows = rows(fleet, intervals, today, &query)
             .map_err(|e| WebError(StatusCode::BAD_REQUEST, e))?;
         render(
             &app.templates,
             "fleet.html",
-            context! { user => s.user, csrf => s.csrf_token, rows, query, interval_days => app.config.interval_days },
+            context! { user => s.user, csrf => s.csrf_token, rows, query, intervals, unused },
         )
         .map(IntoResponse::into_response)
     };
@@ -338,19 +347,10 @@ pub async fn upload(State(app): State<Shared>, headers: HeaderMap, form: Multipa
                 .product
                 .solve_export(&export, &serial, &user)
                 .map_err(|e| WebError(StatusCode::UNPROCESSABLE_ENTITY, e))?;
-            if let Some(other) = h.list(Some(&serial))?.iter().find(|r| r.new.robot != record.robot) {
-                return Err(WebError(
-                    StatusCode::UNPROCESSABLE_ENTITY,
-                    format!(
-                        "serial {serial:?} is a {} in the history (record {}); this export is of a {}: another robot's export, not recorded",
-                        other.new.robot, other.id, record.robot
-                    ),
-                ));
-            }
-            Ok(match replaces {
-                Some(old) => h.insert_correction(&user, &record, old, &reason)?.id,
-                None => h.insert_audited(&user, &record)?.id,
-            })
+            // The serial's records all of this export's robot, checked in the insert's
+            // transaction: two uploads racing cannot both pass.
+            let correction = replaces.map(|old| (old, reason.as_str()));
+            Ok(h.insert_of_one_robot(&user, &record, correction)?.id)
         })
         .await;
         match id {

@@ -39,8 +39,14 @@ pub async fn record(
         Err(r) => return r,
     };
     let r = async {
-        let (r, signatures) =
-            with_history(&app, move |h| Ok((h.get(id)?, h.signatures(id)?))).await?;
+        let (r, signatures, issued) = with_history(&app, move |h| {
+            Ok((
+                h.get(id)?,
+                h.signatures(id)?,
+                !h.certificates_of(id)?.is_empty(),
+            ))
+        })
+        .await?;
         let next = next_step(&signatures);
         render(
             &app.templates,
@@ -49,7 +55,8 @@ pub async fn record(
                 user => s.user, csrf => s.csrf_token, r, signatures,
                 next_step => next.map(SignStep::as_str),
                 next_role => next.map(|n| n.role().as_str()),
-                pdf => app.config.chromium.is_some(),
+                pdf => app.config.chromium.is_some(), issued,
+                may_issue => CERTIFICATE_ISSUERS.contains(&s.user.role),
             },
         )
         .map(IntoResponse::into_response)
@@ -84,9 +91,29 @@ fn signature_block(
     out
 }
 
-/// The session's certificate as `zerocal certificate` makes it (issued in the history
-/// the first time, audited then), with its review under it.
-async fn certificate_of(app: &Shared, actor: &WebSession, id: i64) -> Result<String, WebError> {
+/// How a certificate is asked for: shown (`GET`: only one already issued for the
+/// session's current as-left check and issuer) or issued (`POST`: a first issue gives
+/// it a number and writes the audit).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Ask {
+    Show,
+    Issue,
+}
+
+/// Why a certificate is not shown: none issued yet (404), or none for the session's
+/// current as-left check and issuer (422, the product's refusal); the page offers the
+/// issuing button to those who may issue.
+struct NotIssued(StatusCode, String);
+
+/// The session's certificate as `zerocal certificate` makes it, with its review under
+/// it: shown if issued (`Ask::Show` writes nothing), or issued (in the history the
+/// first time, audited then: `Ask::Issue`, for [`CERTIFICATE_ISSUERS`] only).
+async fn certificate_of(
+    app: &Shared,
+    actor: &WebSession,
+    id: i64,
+    ask: Ask,
+) -> Result<Result<String, NotIssued>, WebError> {
     let app2 = app.clone();
     let (name, role) = (actor.user.name.clone(), actor.user.role);
     with_history(app, move |h| {
@@ -97,40 +124,43 @@ async fn certificate_of(app: &Shared, actor: &WebSession, id: i64) -> Result<Str
                 format!("record {id} is a check: a certificate is of a session"),
             ));
         }
-        // Everyone signed in reads an issued certificate; a first issue gives it a
-        // number, which those who work the records do, not the users' admin (refused
-        // here where none exists, and in the issuing transaction where a new as-left
-        // check or issuer would make another).
-        if h.certificates_of(id)?.is_empty() && !CERTIFICATE_ISSUERS.contains(&role) {
-            return Err(WebError(
-                StatusCode::FORBIDDEN,
-                format!(
-                    "record {id} has no certificate yet, and a {} does not issue one: a technician, reviewer or authorizer does",
-                    role.as_str()
-                ),
-            ));
+        let may_issue = ask == Ask::Issue && CERTIFICATE_ISSUERS.contains(&role);
+        if ask == Ask::Show && h.certificates_of(id)?.is_empty() {
+            return Ok(Err(NotIssued(
+                StatusCode::NOT_FOUND,
+                format!("record {id} has no certificate issued yet"),
+            )));
         }
-        let html = app2
-            .product
-            .certificate_html(
-                h,
-                &record,
-                CertificateRequest {
-                    name: &name,
-                    may_issue: CERTIFICATE_ISSUERS.contains(&role),
-                },
-            )
-            .map_err(|e| {
-                WebError(
+        // A first issue gives it a number, which those who work the records do, not
+        // the users' admin (refused before, and in the issuing transaction where a new
+        // as-left check or issuer would make another); showing one never issues.
+        let html = match app2.product.certificate_html(
+            h,
+            &record,
+            CertificateRequest {
+                name: &name,
+                may_issue,
+            },
+        ) {
+            Ok(html) => html,
+            Err(e) if ask == Ask::Show => {
+                return Ok(Err(NotIssued(
+                    StatusCode::UNPROCESSABLE_ENTITY,
+                    format!("record {id}'s certificate: {e}"),
+                )))
+            }
+            Err(e) => {
+                return Err(WebError(
                     StatusCode::UNPROCESSABLE_ENTITY,
                     format!("certificate: {e}"),
-                )
-            })?;
+                ))
+            }
+        };
         let block = signature_block(id, record.new.operator.as_deref(), &h.signatures(id)?);
-        Ok(match html.rfind("</body>") {
+        Ok(Ok(match html.rfind("</body>") {
             Some(at) => format!("{}{block}{}", &html[..at], &html[at..]),
             None => format!("{html}{block}"),
-        })
+        }))
     })
     .await
 }
@@ -138,7 +168,22 @@ async fn certificate_of(app: &Shared, actor: &WebSession, id: i64) -> Result<Str
 /// The roles that may issue a record's first certificate.
 const CERTIFICATE_ISSUERS: [Role; 3] = [Role::Technician, Role::Reviewer, Role::Authorizer];
 
-/// `GET /record/ID/certificate`: the certificate, HTML.
+/// The page saying a certificate is not issued, with the issuing button for those who
+/// may issue.
+fn not_issued(app: &Shared, s: &WebSession, id: i64, n: NotIssued) -> Result<Response, WebError> {
+    let page = render(
+        &app.templates,
+        "certificate_none.html",
+        context! {
+            user => s.user, csrf => s.csrf_token, id, message => n.1,
+            may_issue => CERTIFICATE_ISSUERS.contains(&s.user.role),
+        },
+    )?;
+    Ok((n.0, page).into_response())
+}
+
+/// `GET /record/ID/certificate`: the certificate issued, HTML; where none is issued
+/// (for the current as-left check and issuer), a page that says so. Issues nothing.
 pub async fn certificate(
     State(app): State<Shared>,
     headers: HeaderMap,
@@ -148,11 +193,36 @@ pub async fn certificate(
         Ok(s) => s,
         Err(r) => return r,
     };
-    result(
-        certificate_of(&app, &s, id)
-            .await
-            .map(|html| Html(html).into_response()),
-    )
+    result(match certificate_of(&app, &s, id, Ask::Show).await {
+        Ok(Ok(html)) => Ok(Html(html).into_response()),
+        Ok(Err(n)) => not_issued(&app, &s, id, n),
+        Err(e) => Err(e),
+    })
+}
+
+/// `POST /record/ID/certificate` (csrf): issues the session's certificate (a
+/// technician, reviewer or authorizer; the same number again where one is issued for
+/// the same as-left check and issuer) and shows it.
+pub async fn issue_certificate(
+    State(app): State<Shared>,
+    headers: HeaderMap,
+    Path(id): Path<i64>,
+    Form(form): Form<HashMap<String, String>>,
+) -> Response {
+    let r = async {
+        let s = action_session(
+            &app,
+            &headers,
+            form.get("csrf").map(String::as_str),
+            &CERTIFICATE_ISSUERS,
+        )
+        .await?;
+        match certificate_of(&app, &s, id, Ask::Issue).await? {
+            Ok(_) => Ok(Redirect::to(&format!("/record/{id}/certificate")).into_response()),
+            Err(n) => not_issued(&app, &s, id, n),
+        }
+    };
+    result(r.await)
 }
 
 /// `GET /record/ID/certificate.pdf`: the certificate printed by headless Chromium.
@@ -173,7 +243,10 @@ pub async fn certificate_pdf(
                     .into(),
             )
         })?;
-        let html = certificate_of(&app, &s, id).await?;
+        let html = match certificate_of(&app, &s, id, Ask::Show).await? {
+            Ok(html) => html,
+            Err(n) => return not_issued(&app, &s, id, n),
+        };
         let pdf = tokio::task::spawn_blocking(move || crate::pdf::print(&chromium, &html))
             .await
             .map_err(|e| WebError(StatusCode::INTERNAL_SERVER_ERROR, format!("worker: {e}")))?

@@ -6,13 +6,17 @@ use crate::WebError;
 use axum::http::StatusCode;
 use axum::response::Html;
 
-const TEMPLATES: [(&str, &str); 8] = [
+const TEMPLATES: [(&str, &str); 9] = [
     ("base.html", include_str!("../templates/base.html")),
     ("login.html", include_str!("../templates/login.html")),
     ("fleet.html", include_str!("../templates/fleet.html")),
     ("robot.html", include_str!("../templates/robot.html")),
     ("upload.html", include_str!("../templates/upload.html")),
     ("record.html", include_str!("../templates/record.html")),
+    (
+        "certificate_none.html",
+        include_str!("../templates/certificate_none.html"),
+    ),
     ("users.html", include_str!("../templates/users.html")),
     ("audit.html", include_str!("../templates/audit.html")),
 ];

@@ -63,6 +63,7 @@ async fn without_a_session_pages_send_to_sign_in_and_actions_are_refused_unchang
                 "/admin/users/tec",
                 vec![("csrf", csrf.as_str()), ("role", "admin"), ("active", "1")],
             ),
+            ("/record/1/certificate", vec![("csrf", csrf.as_str())]),
             ("/logout", vec![("csrf", csrf.as_str())]),
         ] {
             for cookie in ["", forged.as_str()] {
@@ -484,10 +485,13 @@ async fn a_form_from_another_site_is_refused_even_the_sign_in() {
     }
 }
 
-/// A record's first certificate is numbered by those who work the records: the users'
-/// admin is refused (403) where none is issued yet; a technician gets it.
+/// A record's first certificate is numbered by those who work the records, on a form
+/// they send: a GET shows only an issued one (none yet: 404, nothing issued); a POST
+/// without the form's CSRF token, or by the users' admin, is refused and issues
+/// nothing; a technician's issues it, audited once, and the same POST again gives the
+/// same certificate.
 #[tokio::test]
-async fn an_admin_does_not_issue_a_first_certificate() {
+async fn a_certificate_is_issued_by_a_form_of_those_who_work_the_records_never_by_a_get() {
     for site in sites("certificate_issuer") {
         let r = &site.router;
         let (tec, csrf) = sign_in(r, "tec").await;
@@ -495,24 +499,74 @@ async fn an_admin_does_not_issue_a_first_certificate() {
             upload(r, &tec, &csrf, "R1", EXPORT).await.status,
             StatusCode::SEE_OTHER
         );
-        let (adm, _) = sign_in(r, "adm").await;
-        let refused = get(r, "/record/1/certificate", &adm).await;
+        let certificates = || with_history(&site.at, |h| h.certificates_of(1).unwrap().len());
+        let issues = || {
+            with_history(&site.at, |h| {
+                h.audit_log(i64::MAX)
+                    .unwrap()
+                    .into_iter()
+                    .filter(|e| e.action == "certificate.issue")
+                    .map(|e| e.actor)
+                    .collect::<Vec<_>>()
+            })
+        };
+        let before = state(&site.at);
+        let (adm, adm_csrf) = sign_in(r, "adm").await;
+        // The record page offers the button to a technician, not to the admin.
+        let issue_form = "action=\"/record/1/certificate\"";
+        assert!(get(r, "/record/1", &tec).await.body.contains(issue_form));
+        assert!(!get(r, "/record/1", &adm).await.body.contains(issue_form));
+        for cookie in [&tec, &adm] {
+            let shown = get(r, "/record/1/certificate", cookie).await;
+            assert_eq!(shown.status, StatusCode::NOT_FOUND, "{}", site.name);
+            assert!(
+                shown.body.contains("no certificate issued yet"),
+                "{}",
+                shown.body
+            );
+        }
+        assert!(get(r, "/record/1/certificate", &tec)
+            .await
+            .body
+            .contains(issue_form));
+        for fields in [vec![], vec![("csrf", "0".repeat(64))]] {
+            let fields: Vec<(&str, &str)> = fields.iter().map(|(k, v)| (*k, v.as_str())).collect();
+            let refused = post(r, "/record/1/certificate", &tec, &fields).await;
+            assert_eq!(refused.status, StatusCode::FORBIDDEN, "{}", site.name);
+            assert!(refused.body.contains("CSRF"), "{}", refused.body);
+        }
+        let refused = post(r, "/record/1/certificate", &adm, &[("csrf", &adm_csrf)]).await;
+        assert_eq!(refused.status, StatusCode::FORBIDDEN, "{}", site.name);
+        assert!(refused.body.contains("adm is a admin"), "{}", refused.body);
+        assert_eq!(state(&site.at), before, "{}", site.name);
+        assert_eq!((certificates(), issues().len()), (0, 0), "{}", site.name);
+
+        let issued = post(r, "/record/1/certificate", &tec, &[("csrf", &csrf)]).await;
+        assert_eq!(issued.status, StatusCode::SEE_OTHER, "{}", issued.body);
         assert_eq!(
-            refused.status,
-            StatusCode::FORBIDDEN,
-            "{}: {}",
-            site.name,
-            refused.body
+            issued.headers.get(header::LOCATION).unwrap(),
+            "/record/1/certificate"
         );
-        assert!(
-            refused.body.contains("does not issue one"),
-            "{}",
-            refused.body
-        );
+        assert_eq!((certificates(), issues()), (1, vec!["tec".to_owned()]));
+        // Shown to anyone signed in now, the admin too; issued again: the same one.
+        for cookie in [&tec, &adm] {
+            let shown = get(r, "/record/1/certificate", cookie).await;
+            assert_eq!(shown.status, StatusCode::OK, "{}", site.name);
+            assert!(
+                shown.body.contains("Certificate of record 1"),
+                "{}",
+                shown.body
+            );
+        }
         assert_eq!(
-            get(r, "/record/1/certificate", &tec).await.status,
-            StatusCode::OK
+            post(r, "/record/1/certificate", &tec, &[("csrf", &csrf)])
+                .await
+                .status,
+            StatusCode::SEE_OTHER
         );
+        assert_eq!((certificates(), issues()), (1, vec!["tec".to_owned()]));
+        let page = get(r, "/record/1", &tec).await.body;
+        assert!(page.contains("href=\"/record/1/certificate\"") && !page.contains(issue_form));
     }
 }
 
@@ -666,6 +720,12 @@ async fn every_accepted_change_is_in_the_audit_log_with_who_what_before_and_afte
             .status,
             StatusCode::SEE_OTHER
         );
+        assert_eq!(
+            post(r, "/record/1/certificate", &rev, &[("csrf", &rev_csrf)])
+                .await
+                .status,
+            StatusCode::SEE_OTHER
+        );
         let cert = get(r, "/record/1/certificate", &rev).await;
         assert!(
             cert.body.contains("checked by rev") && cert.body.contains("authorized by aut"),
@@ -693,6 +753,7 @@ async fn every_accepted_change_is_in_the_audit_log_with_who_what_before_and_afte
                 ("aut", "record.sign", "record 1"),
                 ("adm", "user.add", "user ana"),
                 ("adm", "user.set", "user ana"),
+                ("rev", "certificate.issue", "record 1"),
             ],
             "{}",
             site.name
@@ -736,7 +797,7 @@ async fn the_certificate_is_printed_to_pdf_by_headless_chromium_where_there_is_o
             db: site.at.clone(),
             secure_cookies: false,
             max_upload_bytes: TEST_UPLOAD_LIMIT,
-            interval_days: None,
+            intervals: zerocal_web::Intervals::default(),
             chromium: Some(chromium.into()),
         },
         Box::new(FakeProduct),
@@ -745,6 +806,12 @@ async fn the_certificate_is_printed_to_pdf_by_headless_chromium_where_there_is_o
     let (tec, csrf) = sign_in(&router, "tec").await;
     assert_eq!(
         upload(&router, &tec, &csrf, "R1", EXPORT).await.status,
+        StatusCode::SEE_OTHER
+    );
+    assert_eq!(
+        post(&router, "/record/1/certificate", &tec, &[("csrf", &csrf)])
+            .await
+            .status,
         StatusCode::SEE_OTHER
     );
     assert!(get(&router, "/record/1", &tec)
@@ -807,7 +874,7 @@ async fn every_page_forbids_scripts_and_framing_and_the_cookie_is_http_only_and_
             db: site.at.clone(),
             secure_cookies: true,
             max_upload_bytes: TEST_UPLOAD_LIMIT,
-            interval_days: None,
+            intervals: zerocal_web::Intervals::default(),
             chromium: None,
         },
         Box::new(FakeProduct),

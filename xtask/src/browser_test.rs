@@ -7,7 +7,8 @@
 //! argument), starts the release `zerocal serve`, and then, each person signed in in
 //! turn: the technician uploads two simulated pendant exports (`zerocal simulate
 //! --export`) and sees each solved and recorded, finds the robot on the fleet page by
-//! its serial and opens its page and certificate; the reviewer checks the session, the
+//! its serial and opens its page, and issues the certificate from the record's page
+//! (a form); the reviewer checks the session, the
 //! authorizer signs it, and each sees the review's new state on the record and on the
 //! certificate; the audit log shows every change with who made it; the admin sees the
 //! users. Each step names what it expected and what the page showed when it fails, and
@@ -295,7 +296,10 @@ impl Run<'_> {
         )?;
         p.count("the robot's page plots", "main img", 1..)?;
         p.screenshot("robot")?;
-        p.click(&format!("a[href='/record/{id}/certificate']"))?;
+        // The technician issues its certificate from the record's page (a form: a GET
+        // issues none).
+        p.go(&format!("/record/{id}"))?;
+        p.click(&format!("form[action='/record/{id}/certificate'] button"))?;
         p.expect(
             "the certificate before its review",
             &[serial, &format!("Review of record {id}"), "not authorized"],

@@ -63,12 +63,26 @@ impl Product for FakeProduct {
         })
     }
 
+    /// Issues (or finds) the record's certificate in the history as the CLI's does,
+    /// numbered after the record.
     fn certificate_html(
         &self,
-        _: &mut History,
+        history: &mut History,
         record: &Record,
-        _: zerocal_history::CertificateRequest<'_>,
+        by: zerocal_history::CertificateRequest<'_>,
     ) -> Result<String, String> {
+        history
+            .issue_certificate_by(
+                &zerocal_history::NewCertificate {
+                    number: format!("TEST-{}", record.id),
+                    session_id: record.id,
+                    as_left_id: None,
+                    issued_on: "2026-05-05".into(),
+                    issuer_json: "{}".into(),
+                },
+                Some(by),
+            )
+            .map_err(|e| e.to_string())?;
         Ok(format!(
             "<html><body><h1>Certificate of record {}</h1></body></html>",
             record.id
@@ -117,7 +131,10 @@ pub fn server(at: &DbLocation) -> Router {
             db: at.clone(),
             secure_cookies: false,
             max_upload_bytes: TEST_UPLOAD_LIMIT,
-            interval_days: Some(365),
+            intervals: zerocal_web::Intervals {
+                days: Some(365),
+                by_model: Default::default(),
+            },
             chromium: None,
         },
         Box::new(FakeProduct),
@@ -341,7 +358,8 @@ pub fn with_history<T: Send>(at: &DbLocation, work: impl FnOnce(&mut History) ->
     })
 }
 
-/// What a refusal must leave as it was: every record, signature, user and audit entry.
+/// What a refusal must leave as it was: every record, signature, certificate, user and
+/// audit entry.
 pub fn state(at: &DbLocation) -> String {
     with_history(at, state_of)
 }
@@ -352,13 +370,18 @@ fn state_of(h: &mut History) -> String {
         .iter()
         .map(|r| h.signatures(r.id).unwrap())
         .collect();
+    let certificates: Vec<_> = records
+        .iter()
+        .map(|r| h.certificates_of(r.id).unwrap())
+        .collect();
     format!(
-        "{:?}\n{:?}\n{:?}\n{:?}",
+        "{:?}\n{:?}\n{:?}\n{:?}\n{:?}",
         records
             .iter()
             .map(|r| (r.id, &r.new.serial, &r.new.robot))
             .collect::<Vec<_>>(),
         signatures,
+        certificates,
         h.users().unwrap(),
         h.audit_log(i64::MAX).unwrap()
     )
