@@ -189,6 +189,39 @@ pub(crate) fn split_url(url: &str, home: Option<&Path>) -> Result<(String, Tls),
     Ok((url, Tls { mode, roots }))
 }
 
+/// The options taken out of the URL here, not the client's.
+const TLS_OPTIONS: [&str; 7] = [
+    "sslmode",
+    "sslrootcert",
+    "sslcert",
+    "sslkey",
+    "sslpassword",
+    "sslcrl",
+    "sslcrldir",
+];
+
+/// `url` without the TLS options read here, whatever their values: what the client
+/// parses to see the rest (a password in the URL is looked for there).
+pub(crate) fn without_tls_options(url: &str) -> String {
+    match url.split_once('?') {
+        Some((base, query)) => {
+            let kept: Vec<&str> = query
+                .split('&')
+                .filter(|pair| {
+                    let key = pair.split_once('=').map_or(*pair, |(k, _)| k);
+                    !TLS_OPTIONS.contains(&percent_decoded(key).as_str())
+                })
+                .collect();
+            if kept.is_empty() {
+                base.to_owned()
+            } else {
+                format!("{base}?{}", kept.join("&"))
+            }
+        }
+        None => url.to_owned(),
+    }
+}
+
 /// `s` with its `%XX` escapes decoded (as the client decodes a URL's query).
 fn percent_decoded(s: &str) -> String {
     let bytes = s.as_bytes();
