@@ -10,7 +10,8 @@ use zerocal_inputs::error::CliError;
 pub struct DbArg {
     /// The history database: an SQLite file, or a PostgreSQL server
     /// `postgres://USER@HOST:PORT/DATABASE` (the password from PGPASSWORD or
-    /// ~/.pgpass, never here: docs/history.md). Default:
+    /// ~/.pgpass, never here; TLS as ?sslmode= asks, prefer by default:
+    /// docs/history.md). Default:
     /// $XDG_DATA_HOME/zerocal/history.sqlite, else ~/.local/share/zerocal/history.sqlite.
     #[arg(long, value_name = "PATH|URL")]
     pub db: Option<String>,

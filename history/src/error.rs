@@ -46,6 +46,9 @@ pub enum HistoryError {
     BadLocation(String),
     /// SQLite refused an operation.
     Sqlite(rusqlite::Error),
+    /// TLS to the PostgreSQL server cannot be had as `sslmode` asks: the server's
+    /// certificate not trusted, no TLS offered, the root certificates unreadable.
+    Tls(String),
     /// The PostgreSQL server or its client refused an operation.
     Postgres(postgres::Error),
     /// A file or directory could not be read or made.
@@ -86,6 +89,7 @@ impl fmt::Display for HistoryError {
             ),
             Self::BadLocation(why) => write!(f, "{why}"),
             Self::Sqlite(e) => write!(f, "SQLite: {e}"),
+            Self::Tls(why) => write!(f, "PostgreSQL over TLS: {why}"),
             // The client's own text is only the kind ("db error", "error connecting to
             // server"); the cause says what the server or the socket said.
             Self::Postgres(e) => match std::error::Error::source(e) {

@@ -14,6 +14,7 @@ mod db;
 mod error;
 mod fleet;
 mod pgpass;
+mod pgtls;
 mod review;
 pub mod schema;
 mod uploads;
@@ -25,6 +26,7 @@ pub use conventions::{Convention, NewConvention};
 pub use corrections::Correction;
 pub use error::HistoryError;
 pub use fleet::{Drift, RecordSummary, RobotSummary};
+pub use pgtls::SslMode;
 pub use review::{
     check_user_name, AuditEntry, LoginGate, Role, SignStep, Signature, User, WebSession,
     MAX_USER_CHARS,
@@ -249,19 +251,49 @@ fn redacted(url: &str) -> String {
 }
 
 /// The client configuration of a PostgreSQL URL, its password (when the URL has none)
-/// from `PGPASSWORD` or the password file, as libpq takes it (`pgpass.rs`). Every
-/// connection to a history server is made from this.
+/// from `PGPASSWORD` or the password file, as libpq takes it (`pgpass.rs`), and its
+/// `sslmode` as the client's transport (`verify-ca` and `verify-full` are its
+/// `require`; the verification is [`postgres_connect`]'s, `pgtls.rs`).
 ///
 /// # Errors
-/// A URL the client cannot parse; a password file others can read, or unreadable.
+/// A URL the client cannot parse; an `sslmode` or `sslrootcert` that cannot be
+/// honoured; a password file others can read, or unreadable.
 pub fn postgres_config(url: &str) -> Result<postgres::Config, HistoryError> {
+    Ok(postgres_settings(url)?.0)
+}
+
+fn postgres_settings(url: &str) -> Result<(postgres::Config, pgtls::Tls), HistoryError> {
+    let home = std::env::var_os("HOME")
+        .filter(|h| !h.is_empty())
+        .map(PathBuf::from);
+    let (url, tls) = pgtls::split_url(url, home.as_deref())?;
     let mut config: postgres::Config = url.parse()?;
+    tls.apply(&mut config);
     pgpass::fill(
         &mut config,
         std::env::var("PGPASSWORD").ok(),
         pgpass::file_path().as_deref(),
     )?;
-    Ok(config)
+    Ok((config, tls))
+}
+
+/// A connection to the PostgreSQL server of `url` ([`postgres_config`]), over TLS as its
+/// `sslmode` asks (`prefer` by default: TLS when the server offers it; `pgtls.rs`).
+/// Every connection to a history server is made here.
+///
+/// # Errors
+/// As [`postgres_config`]; the root certificates unreadable; the server's certificate
+/// not trusted, or no TLS offered where the mode asks for it ([`HistoryError::Tls`]);
+/// the client's or the server's refusal.
+pub fn postgres_connect(url: &str) -> Result<postgres::Client, HistoryError> {
+    let (config, tls) = postgres_settings(url)?;
+    let connected = if tls.mode == SslMode::Disable {
+        config.connect(postgres::NoTls)
+    } else {
+        let connector = tokio_postgres_rustls::MakeRustlsConnect::new(tls.client_config()?);
+        config.connect(connector)
+    };
+    connected.map_err(|e| tls.error(e))
 }
 
 /// Lowercase hex SHA-256 of `bytes`.

@@ -180,7 +180,10 @@ pub(crate) fn read_file(path: &Path) -> Result<Option<String>, HistoryError> {
 /// (`?password=`, percent-encoded or not), as the client would read it. A URL the
 /// client cannot parse carries none here (opening it names the parse error).
 pub(crate) fn url_has_password(url: &str) -> bool {
-    url.parse::<postgres::Config>()
+    // The TLS options first: the client does not know verify-ca or sslrootcert, and
+    // a URL it cannot parse would carry no password.
+    crate::pgtls::without_tls_options(url)
+        .parse::<postgres::Config>()
         .ok()
         .and_then(|c| c.get_password().map(<[u8]>::is_empty))
         .is_some_and(|empty| !empty)
@@ -276,6 +279,13 @@ mod tests {
         ));
         // Percent-encoded keys are decoded by the client: still a password.
         assert!(url_has_password("postgres://zc@db/zerocal?pass%77ord=x"));
+        // Beside options only zerocal reads (not the client).
+        assert!(url_has_password(
+            "postgres://zc:s3cret@db/zerocal?sslmode=verify-full&sslrootcert=%2Fca.pem"
+        ));
+        assert!(url_has_password(
+            "postgres://zc@db/zerocal?sslmode=verify-ca&password=x&sslcert=c"
+        ));
         // An empty one is none, as for libpq.
         assert!(!url_has_password("postgresql://zc:@db/zerocal"));
         assert!(!url_has_password("postgres://zc@db:5432/zerocal"));

@@ -505,7 +505,7 @@ fn open_sqlite_once(path: &Path, target: i64) -> Result<Conn, HistoryError> {
 /// A URL without a password takes it from `PGPASSWORD` or the password file, as libpq
 /// does (`pgpass.rs`).
 pub(crate) fn open_postgres(url: &str, what: &str, target: i64) -> Result<Conn, HistoryError> {
-    let client = crate::postgres_config(url)?.connect(postgres::NoTls)?;
+    let client = crate::postgres_connect(url)?;
     let mut c = Conn::Postgres(Box::new(client));
     // The first look writes nothing: a foreign or newer database is refused as it is.
     check(mark(&mut c)?, what)?;

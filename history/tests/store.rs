@@ -203,10 +203,7 @@ fn a_newer_schema_is_refused_and_left_as_it_was() {
 /// The meta row of a PostgreSQL history, and its tables' names: what "untouched" is
 /// compared on.
 fn postgres_state(url: &str) -> (Vec<(String, i64)>, Vec<String>) {
-    let mut c = zerocal_history::postgres_config(url)
-        .unwrap()
-        .connect(postgres::NoTls)
-        .unwrap();
+    let mut c = zerocal_history::postgres_connect(url).unwrap();
     let meta = c
         .query("SELECT application, schema_version FROM zerocal_meta", &[])
         .unwrap()
@@ -233,10 +230,7 @@ fn a_postgres_database_of_another_application_or_a_newer_schema_is_refused_untou
             continue;
         };
         drop(History::open(&b.at).unwrap());
-        let mut c = zerocal_history::postgres_config(url)
-            .unwrap()
-            .connect(postgres::NoTls)
-            .unwrap();
+        let mut c = zerocal_history::postgres_connect(url).unwrap();
         c.execute(
             "UPDATE zerocal_meta SET schema_version = $1",
             &[&(SCHEMA_VERSION + 1)],
@@ -263,10 +257,7 @@ fn a_postgres_database_of_another_application_or_a_newer_schema_is_refused_untou
 
         // Tables of the same names made by someone else: refused, not reused.
         let other = common::fresh_postgres_database(url, "pg_refused_tables");
-        let mut o = zerocal_history::postgres_config(&other)
-            .unwrap()
-            .connect(postgres::NoTls)
-            .unwrap();
+        let mut o = zerocal_history::postgres_connect(&other).unwrap();
         o.batch_execute("CREATE TABLE records (id BIGINT, what TEXT)")
             .unwrap();
         assert!(matches!(
@@ -291,9 +282,7 @@ fn count_texts(at: &DbLocation) -> i64 {
             .unwrap()
             .query_row("SELECT count(*) FROM texts", [], |r| r.get(0))
             .unwrap(),
-        DbLocation::Postgres(url) => zerocal_history::postgres_config(url)
-            .unwrap()
-            .connect(postgres::NoTls)
+        DbLocation::Postgres(url) => zerocal_history::postgres_connect(url)
             .unwrap()
             .query_one("SELECT count(*) FROM texts", &[])
             .unwrap()
@@ -314,10 +303,7 @@ fn has_index(at: &DbLocation, name: &str) -> bool {
                 == 1
         }
         DbLocation::Postgres(url) => {
-            let mut c = zerocal_history::postgres_config(url)
-                .unwrap()
-                .connect(postgres::NoTls)
-                .unwrap();
+            let mut c = zerocal_history::postgres_connect(url).unwrap();
             c.query_one(
                 "SELECT count(*) FROM pg_indexes WHERE indexname = $1",
                 &[&name],

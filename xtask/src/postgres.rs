@@ -8,6 +8,12 @@
 //! `target/postgres/pgpass` (owner-only), which the tests find through `PGPASSFILE`, as
 //! a plant's technician keeps theirs (docs/history.md). `stop` stops it.
 //!
+//! The server offers TLS (`ssl=on`) with a certificate for `127.0.0.1` signed by a
+//! certificate authority made afresh at each start (rcgen); the authority's certificate
+//! is `target/postgres/ca.pem`, for the tests' `sslrootcert`. The URL names no
+//! `sslmode`: the default, `prefer`, takes TLS where the server offers it, and a
+//! client that has no TLS (the web tests' own connections) still connects.
+//!
 //! PostgreSQL refuses to run as root: as root, the cluster's directory is handed to the
 //! `postgres` user (made by Debian's package) and every server command runs through
 //! `runuser -u postgres --`; anyone else runs them directly. The binaries are Debian's,
@@ -131,6 +137,8 @@ impl Cluster {
         let password = fresh_password()?;
         let pwfile = self.dir.join("pwfile");
         write_owner_only(&pwfile, &format!("{password}\n"))?;
+        let tls = self.dir.join("tls");
+        write_certificates(&tls, &self.dir.join(CA_FILE))?;
         if self.as_root {
             let status = Command::new("/usr/bin/chown")
                 .args(["-R", &format!("{SERVER_USER}:")])
@@ -162,7 +170,12 @@ impl Cluster {
         std::fs::remove_file(&pwfile)
             .with_context(|| format!("cannot remove {}", pwfile.display()))?;
         let port = free_port()?;
-        let options = format!("-k {socket} -p {port} -c listen_addresses=127.0.0.1 -c fsync=off");
+        let options = format!(
+            "-k {socket} -p {port} -c listen_addresses=127.0.0.1 -c fsync=off \
+             -c ssl=on -c ssl_cert_file={} -c ssl_key_file={}",
+            path_str(&tls.join("server.crt"))?,
+            path_str(&tls.join("server.key"))?
+        );
         self.run(
             "pg_ctl",
             &["-D", &data, "-l", &log, "-w", "-o", &options, "start"],
@@ -182,10 +195,48 @@ impl Cluster {
             pgpass.display(),
             pgpass.display()
         );
+        eprintln!(
+            "xtask: TLS offered; the server's certificate authority is {} (sslrootcert=)",
+            self.dir.join(CA_FILE).display()
+        );
         Ok(format!(
             "postgresql://{SERVER_USER}@127.0.0.1:{port}/{TEST_DATABASE}"
         ))
     }
+}
+
+/// The test server's certificate authority, under the cluster's directory (PEM).
+pub const CA_FILE: &str = "ca.pem";
+
+/// A fresh certificate authority (its certificate to `ca_file`) and, in `dir`, the
+/// server's certificate `server.crt` for `127.0.0.1` signed by it and its key
+/// `server.key` (owner-only: the server refuses a key others can read). The
+/// authority's key is not kept: nothing else is ever signed by it.
+fn write_certificates(dir: &Path, ca_file: &Path) -> Result<()> {
+    use rcgen::{
+        BasicConstraints, CertificateParams, DnType, IsCa, Issuer, KeyPair, KeyUsagePurpose,
+    };
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot make {}", dir.display()))?;
+    let ca_key = KeyPair::generate().context("cannot make the test CA's key")?;
+    let mut ca = CertificateParams::new(Vec::<String>::new())?;
+    ca.is_ca = IsCa::Ca(BasicConstraints::Unconstrained);
+    ca.distinguished_name
+        .push(DnType::CommonName, "zerocal test PostgreSQL CA");
+    ca.key_usages = vec![KeyUsagePurpose::KeyCertSign, KeyUsagePurpose::CrlSign];
+    let ca_cert = ca.self_signed(&ca_key).context("cannot sign the test CA")?;
+    let issuer = Issuer::new(ca, ca_key);
+    let key = KeyPair::generate().context("cannot make the test server's key")?;
+    // The server listens on 127.0.0.1 alone: that is the name verify-full checks.
+    let mut server = CertificateParams::new(vec!["127.0.0.1".to_owned()])?;
+    server
+        .distinguished_name
+        .push(DnType::CommonName, "zerocal test PostgreSQL server");
+    let cert = server
+        .signed_by(&key, &issuer)
+        .context("cannot sign the test server's certificate")?;
+    write_owner_only(ca_file, &ca_cert.pem())?;
+    write_owner_only(&dir.join("server.crt"), &cert.pem())?;
+    write_owner_only(&dir.join("server.key"), &key.serialize_pem())
 }
 
 /// 32 hex digits from the kernel's random source.

@@ -57,10 +57,7 @@ pub fn backends(test: &str) -> Vec<Backend> {
 /// Drops and creates database `zc_TEST` on the server and returns its URL.
 pub fn fresh_postgres_database(url: &str, test: &str) -> String {
     let name = format!("zc_{test}");
-    let mut admin = zerocal_history::postgres_config(url)
-        .unwrap()
-        .connect(postgres::NoTls)
-        .unwrap();
+    let mut admin = zerocal_history::postgres_connect(url).unwrap();
     admin
         .batch_execute(&format!("DROP DATABASE IF EXISTS {name} WITH (FORCE)"))
         .unwrap();
@@ -255,10 +252,7 @@ fn insert_old(at: &DbLocation, r: &NewRecord, schema: OldSchema, brackets_json: 
             id
         }
         DbLocation::Postgres(url) => {
-            let mut c = zerocal_history::postgres_config(url)
-                .unwrap()
-                .connect(postgres::NoTls)
-                .unwrap();
+            let mut c = zerocal_history::postgres_connect(url).unwrap();
             let result_id = r.pendant_result_id.map(i64::from);
             let kind = r.kind.as_str();
             let brackets_json = brackets_json.to_owned();
