@@ -66,10 +66,10 @@ mod state;
 #[cfg(test)]
 mod testing;
 
+pub use crate::kept::{KeptResult, PendantUnit, UnitId, KEPT_RESULTS};
 use crate::stillness::{Stillness, StillnessConfig};
 pub use captures::Captures;
 pub use default_plan::{pendant_default, PENDANT_PLAN_MARGIN_DEG, PENDANT_PLAN_POSES};
-pub use crate::kept::{KeptResult, PendantUnit, UnitId, KEPT_RESULTS};
 pub use output::{Output, OutputError, OUTPUT_RECORDS};
 pub use phase::{Phase, ReadingSlot, READING_SLOTS};
 pub use profile::{ControllerDisplay, ControllerOffset, PendantProfile};

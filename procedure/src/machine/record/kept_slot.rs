@@ -12,8 +12,8 @@
 
 use super::bytes::{Reader, Writer};
 use super::{id_bytes, id_of, RecordError};
-use crate::log::TEMPERATURE_RANGE_C;
 use crate::kept::{KeptResult, UnitId, KEPT_RESULTS, UNIT_ID_BYTES, VERDICT_BITS};
+use crate::log::TEMPERATURE_RANGE_C;
 use crate::text::RobotName;
 use zerocal_core::bracket::BRACKET_ID_LEN;
 use zerocal_core::session::SESSION_JOINTS;
