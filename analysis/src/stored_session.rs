@@ -8,7 +8,7 @@ use zerocal_history::{Record, RecordKind};
 use zerocal_inputs::error::CliError;
 
 /// What a record imported from a kept result says of its uncertainty
-/// ([`zerocal_records::history_import`]).
+/// (`zerocal history --import`, zerocal-records).
 pub const KEPT_RESULT_NOTE: &str = "imported from the pendant's kept results: U(k = 2) is twice \
      the fit's 1-sigma (the pendant keeps no budget); record the export itself (zerocal session \
      EXPORT --record) for the whole budget, a certificate or a check";

@@ -5,8 +5,9 @@
 //! `zerocal error-table`: the same sessions by the hundred, one error source at a time,
 //! with and without the compensation (the README's table).
 //!
-//! The simulation is zerocal-sim's (`error_sources`, `real_run`, `error_table`); here
-//! are the flags that choose it, its report and the errors in the CLI's terms.
+//! The simulation and its report are zerocal-sim's (`error_sources`, `real_run` with
+//! `RealRun::report`, `error_table` with its `render`); here are the flags that choose
+//! it and the errors in the CLI's terms.
 
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use clap::Args;

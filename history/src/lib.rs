@@ -234,20 +234,36 @@ impl std::fmt::Display for DbLocation {
     }
 }
 
-/// `url` without the password of its `user:password@` part.
+/// `url` without the password of its `user:password@` part or its query's `password`.
 fn redacted(url: &str) -> String {
     let Some((scheme, rest)) = url.split_once("://") else {
         return url.to_owned();
     };
     let authority_end = rest.find(['/', '?']).unwrap_or(rest.len());
     let (authority, tail) = rest.split_at(authority_end);
-    match authority.rsplit_once('@') {
+    let authority = match authority.rsplit_once('@') {
         Some((userinfo, host)) => match userinfo.split_once(':') {
-            Some((user, _)) => format!("{scheme}://{user}:***@{host}{tail}"),
-            None => url.to_owned(),
+            Some((user, _)) => format!("{user}:***@{host}"),
+            None => authority.to_owned(),
         },
-        None => url.to_owned(),
-    }
+        None => authority.to_owned(),
+    };
+    let tail = match tail.split_once('?') {
+        Some((path, query)) => {
+            let pairs: Vec<String> = query
+                .split('&')
+                .map(|pair| match pair.split_once('=') {
+                    Some((key, _)) if pgtls::percent_decoded(key) == "password" => {
+                        format!("{key}=***")
+                    }
+                    _ => pair.to_owned(),
+                })
+                .collect();
+            format!("{path}?{}", pairs.join("&"))
+        }
+        None => tail.to_owned(),
+    };
+    format!("{scheme}://{authority}{tail}")
 }
 
 /// The client configuration of a PostgreSQL URL, its password (when the URL has none)
@@ -259,14 +275,24 @@ fn redacted(url: &str) -> String {
 /// A URL the client cannot parse; an `sslmode` or `sslrootcert` that cannot be
 /// honoured; a password file others can read, or unreadable.
 pub fn postgres_config(url: &str) -> Result<postgres::Config, HistoryError> {
-    Ok(postgres_settings(url)?.0)
+    let (config, tls) = postgres_settings(url)?;
+    // A client connecting with its own transport would not verify: a mode that asks
+    // for verification is only honoured by `postgres_connect`.
+    if matches!(tls.mode, SslMode::VerifyCa | SslMode::VerifyFull) {
+        return Err(HistoryError::BadLocation(format!(
+            "sslmode={}: connect through zerocal_history::postgres_connect, which verifies the server's certificate",
+            tls.mode.as_str()
+        )));
+    }
+    Ok(config)
 }
 
 fn postgres_settings(url: &str) -> Result<(postgres::Config, pgtls::Tls), HistoryError> {
     let home = std::env::var_os("HOME")
         .filter(|h| !h.is_empty())
         .map(PathBuf::from);
-    let (url, tls) = pgtls::split_url(url, home.as_deref())?;
+    let (url, tls) =
+        pgtls::split_url(url, home.as_deref(), &pgtls::TlsEnvironment::from_process())?;
     let mut config: postgres::Config = url.parse()?;
     tls.apply(&mut config);
     pgpass::fill(
@@ -821,6 +847,14 @@ mod tests {
         assert_eq!(at.to_string(), "postgresql://zc:***@db.plant:5432/zerocal");
         let no_password = DbLocation::Postgres("postgres://zc@db/zerocal".into());
         assert_eq!(no_password.to_string(), "postgres://zc@db/zerocal");
+        // In the query too, percent-encoded key or not, the other options kept.
+        let query = DbLocation::Postgres(
+            "postgres://zc@db/z?gssencmode=disable&pass%77ord=s3cret&sslmode=require".into(),
+        );
+        assert_eq!(
+            query.to_string(),
+            "postgres://zc@db/z?gssencmode=disable&pass%77ord=***&sslmode=require"
+        );
     }
 
     #[test]

@@ -178,15 +178,32 @@ pub(crate) fn read_file(path: &Path) -> Result<Option<String>, HistoryError> {
 
 /// Whether the URL carries a (non-empty) password, in `user:password@` or in its query
 /// (`?password=`, percent-encoded or not), as the client would read it. A URL the
-/// client cannot parse carries none here (opening it names the parse error).
+/// client cannot parse (an option it does not know) is read here by hand: a password
+/// beside an unknown option is still a password on the command line.
 pub(crate) fn url_has_password(url: &str) -> bool {
-    // The TLS options first: the client does not know verify-ca or sslrootcert, and
-    // a URL it cannot parse would carry no password.
-    crate::pgtls::without_tls_options(url)
-        .parse::<postgres::Config>()
-        .ok()
-        .and_then(|c| c.get_password().map(<[u8]>::is_empty))
-        .is_some_and(|empty| !empty)
+    // The TLS options first: the client does not know verify-ca or sslrootcert.
+    match crate::pgtls::without_tls_options(url).parse::<postgres::Config>() {
+        Ok(c) => c.get_password().is_some_and(|p| !p.is_empty()),
+        Err(_) => written_password(url),
+    }
+}
+
+/// A non-empty password in `url`'s `user:password@` or its query's `password` key
+/// (the key percent-decoded, as the client reads it).
+fn written_password(url: &str) -> bool {
+    let rest = url.split_once("://").map_or(url, |(_, r)| r);
+    let authority = rest.split(['/', '?']).next().unwrap_or("");
+    let in_userinfo = authority
+        .rsplit_once('@')
+        .and_then(|(userinfo, _)| userinfo.split_once(':'))
+        .is_some_and(|(_, password)| !password.is_empty());
+    let in_query = url.split_once('?').is_some_and(|(_, query)| {
+        query.split('&').any(|pair| {
+            let (key, value) = pair.split_once('=').unwrap_or((pair, ""));
+            crate::pgtls::percent_decoded(key) == "password" && !value.is_empty()
+        })
+    });
+    in_userinfo || in_query
 }
 
 #[cfg(test)]
@@ -286,6 +303,12 @@ mod tests {
         assert!(url_has_password(
             "postgres://zc@db/zerocal?sslmode=verify-ca&password=x&sslcert=c"
         ));
+        // Beside an option the client does not know (it cannot parse the URL).
+        assert!(url_has_password(
+            "postgres://zc@db/z?gssencmode=disable&password=s3cret"
+        ));
+        assert!(url_has_password("postgres://zc:s3cret@db/z?service=plant"));
+        assert!(!url_has_password("postgres://zc@db/z?service=plant"));
         // An empty one is none, as for libpq.
         assert!(!url_has_password("postgresql://zc:@db/zerocal"));
         assert!(!url_has_password("postgres://zc@db:5432/zerocal"));

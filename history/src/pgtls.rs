@@ -110,14 +110,40 @@ pub(crate) struct Tls {
 /// libpq's default root file, under the home directory.
 const DEFAULT_ROOT_FILE: [&str; 2] = [".postgresql", "root.crt"];
 
+/// libpq's environment defaults for TLS (`PGSSLMODE`, `PGSSLROOTCERT`): each applies
+/// where the URL does not name its option, as libpq takes them.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub(crate) struct TlsEnvironment {
+    pub sslmode: Option<String>,
+    pub sslrootcert: Option<String>,
+}
+
+impl TlsEnvironment {
+    /// The process's `PGSSLMODE` and `PGSSLROOTCERT` (an empty one is unset).
+    pub(crate) fn from_process() -> Self {
+        let var = |name| std::env::var(name).ok().filter(|v| !v.is_empty());
+        Self {
+            sslmode: var("PGSSLMODE"),
+            sslrootcert: var("PGSSLROOTCERT"),
+        }
+    }
+}
+
 /// `url` without its `sslmode` and `sslrootcert`, and the TLS they ask for (`home`: the
-/// home directory, where libpq's default root file is). A connection string that is
-/// not a URL is left to the client, which knows `sslmode` up to `require`.
+/// home directory, where libpq's default root file is; `env`: `PGSSLMODE` and
+/// `PGSSLROOTCERT`, for the options the URL does not name). A connection string that
+/// is not a URL is left to the client, which knows `sslmode` up to `require`: there
+/// the environment's TLS options are refused, not silently dropped.
 ///
 /// # Errors
 /// An `sslmode` that is not libpq's or is `allow`; a mode below `verify-full` with
-/// `sslrootcert=system`; `verify-ca` or `verify-full` without any root certificate.
-pub(crate) fn split_url(url: &str, home: Option<&Path>) -> Result<(String, Tls), HistoryError> {
+/// `sslrootcert=system`; `verify-ca` or `verify-full` without any root certificate;
+/// `PGSSLMODE` or `PGSSLROOTCERT` beside a connection string that is not a URL.
+pub(crate) fn split_url(
+    url: &str,
+    home: Option<&Path>,
+    env: &TlsEnvironment,
+) -> Result<(String, Tls), HistoryError> {
     let default_file = home
         .map(|h| {
             DEFAULT_ROOT_FILE
@@ -128,6 +154,12 @@ pub(crate) fn split_url(url: &str, home: Option<&Path>) -> Result<(String, Tls),
     let is_url = url.starts_with("postgres://") || url.starts_with("postgresql://");
     let (base, query) = match url.split_once('?') {
         Some((b, q)) if is_url => (b, q),
+        None if is_url => (url, ""),
+        _ if !is_url && (env.sslmode.is_some() || env.sslrootcert.is_some()) => {
+            return Err(HistoryError::BadLocation(
+                "PGSSLMODE or PGSSLROOTCERT is set, and --db is not a postgres:// URL: give sslmode and sslrootcert in a URL (docs/history.md)".into(),
+            ))
+        }
         _ => {
             let mode = match url.parse::<postgres::Config>()?.get_ssl_mode() {
                 postgres::config::SslMode::Disable => SslMode::Disable,
@@ -141,7 +173,7 @@ pub(crate) fn split_url(url: &str, home: Option<&Path>) -> Result<(String, Tls),
     let mut mode = None;
     let mut root = None;
     let mut kept = Vec::new();
-    for pair in query.split('&') {
+    for pair in query.split('&').filter(|p| !p.is_empty()) {
         let (key, value) = pair.split_once('=').unwrap_or((pair, ""));
         match percent_decoded(key).as_str() {
             "sslmode" => mode = Some(SslMode::parse(&percent_decoded(value))?),
@@ -154,6 +186,13 @@ pub(crate) fn split_url(url: &str, home: Option<&Path>) -> Result<(String, Tls),
             _ => kept.push(pair),
         }
     }
+    // The URL's own options win; the environment's fill in what it does not name.
+    if mode.is_none() {
+        if let Some(m) = &env.sslmode {
+            mode = Some(SslMode::parse(m)?);
+        }
+    }
+    let root = root.or_else(|| env.sslrootcert.clone());
     let roots =
         match root.as_deref() {
             Some("system") => Roots::System,
@@ -223,7 +262,7 @@ pub(crate) fn without_tls_options(url: &str) -> String {
 }
 
 /// `s` with its `%XX` escapes decoded (as the client decodes a URL's query).
-fn percent_decoded(s: &str) -> String {
+pub(crate) fn percent_decoded(s: &str) -> String {
     let bytes = s.as_bytes();
     let mut out = Vec::with_capacity(bytes.len());
     let mut i = 0;
@@ -284,6 +323,14 @@ impl Tls {
         provider: Arc<CryptoProvider>,
     ) -> Result<Arc<dyn ServerCertVerifier>, HistoryError> {
         Ok(match (&self.roots, self.mode) {
+            // Verification asked for with nothing to verify against: never encryption
+            // alone in its place (split_url refuses this first; this holds it here too).
+            (Roots::None, SslMode::VerifyCa | SslMode::VerifyFull) => {
+                return Err(HistoryError::Tls(format!(
+                    "sslmode={} needs the trusted root certificates, and none are given",
+                    self.mode.as_str()
+                )))
+            }
             (Roots::None, _) => Arc::new(EncryptOnly(provider)),
             (roots, mode) => {
                 let store = Arc::new(root_store(roots)?);
@@ -497,7 +544,30 @@ mod tests {
     use super::*;
 
     fn split(url: &str) -> Result<(String, Tls), HistoryError> {
-        split_url(url, None)
+        split_url(url, None, &TlsEnvironment::default())
+    }
+
+    #[test]
+    fn the_environment_fills_in_what_the_url_does_not_name() {
+        let env = TlsEnvironment {
+            sslmode: Some("verify-full".into()),
+            sslrootcert: Some("/etc/plant/ca.pem".into()),
+        };
+        let (_, tls) = split_url("postgres://zc@db/z", None, &env).unwrap();
+        assert_eq!(tls.mode, SslMode::VerifyFull);
+        assert_eq!(tls.roots, Roots::File(PathBuf::from("/etc/plant/ca.pem")));
+        // The URL's own option wins over the environment's.
+        let (_, tls) = split_url("postgres://zc@db/z?sslmode=require", None, &env).unwrap();
+        assert_eq!(tls.mode, SslMode::Require);
+        // A mode the environment asks for that needs roots it does not give is refused.
+        let bare = TlsEnvironment {
+            sslmode: Some("verify-ca".into()),
+            sslrootcert: None,
+        };
+        assert!(split_url("postgres://zc@db/z", None, &bare).is_err());
+        // Beside a key=value string the client would drop them: refused by name.
+        let e = split_url("host=db user=zc", None, &env).unwrap_err();
+        assert!(e.to_string().contains("PGSSLMODE"), "{e}");
     }
 
     #[test]
@@ -571,12 +641,15 @@ mod tests {
     fn the_default_root_file_is_used_when_it_exists() {
         let home = tempfile::tempdir().unwrap();
         let url = "postgres://zc@db/zerocal?sslmode=verify-ca";
-        assert!(split_url(url, Some(home.path())).is_err());
+        assert!(split_url(url, Some(home.path()), &TlsEnvironment::default()).is_err());
         std::fs::create_dir(home.path().join(".postgresql")).unwrap();
         let file = home.path().join(".postgresql").join("root.crt");
         std::fs::write(&file, "").unwrap();
         assert_eq!(
-            split_url(url, Some(home.path())).unwrap().1.roots,
+            split_url(url, Some(home.path()), &TlsEnvironment::default())
+                .unwrap()
+                .1
+                .roots,
             Roots::File(file)
         );
     }

@@ -316,17 +316,34 @@ const PRODUCTS: [(&str, &[&str]); 5] = [
     ("inputs", &[]),
 ];
 
-/// The `zerocal-*` crates a manifest's `[dependencies]` names (not its dev-dependencies).
+/// The `zerocal-*` crates a manifest's dependencies name (not its dev-dependencies):
+/// in `[dependencies]` and `[target.*.dependencies]`, as `name = ...`, as a renamed
+/// `alias = { package = "zerocal-x" }` or as a `[dependencies.zerocal-x]` table.
 fn zerocal_dependencies(manifest: &str) -> BTreeSet<String> {
     let mut out = BTreeSet::new();
     let mut in_deps = false;
     for line in manifest.lines() {
         let line = line.trim();
         if line.starts_with('[') {
-            in_deps = line == "[dependencies]";
-        } else if in_deps && line.starts_with("zerocal-") {
-            let name = line.split([' ', '=', '.']).next().unwrap_or("");
-            out.insert(name.to_string());
+            let table = line.trim_matches(['[', ']']);
+            in_deps = table == "dependencies" || table.ends_with(".dependencies");
+            if let Some(name) = table.strip_prefix("dependencies.") {
+                if name.starts_with("zerocal-") {
+                    out.insert(name.to_string());
+                }
+            }
+        } else if in_deps {
+            let package = line
+                .split("package")
+                .nth(1)
+                .and_then(|rest| rest.split('"').nth(1))
+                .filter(|p| p.starts_with("zerocal-"));
+            if let Some(p) = package {
+                out.insert(p.to_string());
+            } else if line.starts_with("zerocal-") {
+                let name = line.split([' ', '=', '.']).next().unwrap_or("");
+                out.insert(name.to_string());
+            }
         }
     }
     out
@@ -361,9 +378,16 @@ fn each_desktop_crate_is_one_product() {
 
 #[test]
 fn the_dependency_reader_reads_only_dependencies() {
-    let manifest = "[package]\nname = \"zerocal-x\"\n[dependencies]\nzerocal-core = { path = \"../core\" }\nclap = \"4\"\nzerocal-sim.workspace = true\n[dev-dependencies]\nzerocal-web = { path = \"../web\" }\n";
+    let manifest = "[package]\nname = \"zerocal-x\"\n[dependencies]\nzerocal-core = { path = \"../core\" }\nclap = \"4\"\nzerocal-sim.workspace = true\nsolver = { package = \"zerocal-analysis\", path = \"../analysis\" }\n[target.'cfg(unix)'.dependencies]\nzerocal-link = { path = \"../link\" }\n[dependencies.zerocal-records]\npath = \"../records\"\n[dev-dependencies]\nzerocal-web = { path = \"../web\" }\n";
+    let names = [
+        "zerocal-core",
+        "zerocal-sim",
+        "zerocal-analysis",
+        "zerocal-link",
+        "zerocal-records",
+    ];
     assert_eq!(
         zerocal_dependencies(manifest),
-        BTreeSet::from(["zerocal-core".to_string(), "zerocal-sim".to_string()])
+        names.iter().map(|n| n.to_string()).collect::<BTreeSet<_>>()
     );
 }

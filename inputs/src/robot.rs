@@ -1,4 +1,5 @@
-//! `--robot NAME|FILE`: a built-in robot profile or your own TOML (`docs/profiles.md`).
+//! `--robot NAME|FILE`: a built-in robot profile or your own TOML (`docs/profiles.md`),
+//! and the fit a profile's sensor gets ([`fit_config`]).
 
 use crate::error::CliError;
 use zerocal_profile::Profile;

@@ -34,7 +34,7 @@
 //!   pendant between the two captures (it must move the reading by the pendant's re-arm
 //!   threshold: the caller checks, `needs_ok`).
 //! - **Dwell.** At every capture the robot waits for the pendant: the settling of the arm
-//!   after the stop, then the pendant's still window (core's
+//!   after the stop, then the pendant's still window (the procedure's
 //!   [`zerocal_procedure::stillness::StillnessConfig`]), plus two sensor periods (the window
 //!   completes on the first sample past its length; one more as margin).
 //! - **Operator.** The three mountings of the pendant (upper arm, flange, bench), and an
@@ -43,8 +43,8 @@
 //!   to arm the next capture).
 //!
 //! Poses here are in the joint coordinates the controller interpolates in and its
-//! speed limits apply to (its own joint degrees): the caller converts. The functions
-//! need no heap and run on the pendant as well as the desktop.
+//! speed limits apply to (its own joint degrees): the caller converts. The tour is a
+//! bounded list (`heapless`) of at most [`MAX_POSES`] poses, as the pendant's plan is.
 
 use core::fmt;
 use zerocal_core::model::JOINTS;

@@ -17,6 +17,7 @@ use zerocal_inputs::error::CliError;
 
 use zerocal_analysis::db::history_error;
 pub use zerocal_analysis::db::DbArg;
+use zerocal_analysis::plots::to_io;
 
 /// Arguments of `zerocal history`.
 #[derive(clap::Args, Debug, Clone)]
@@ -209,10 +210,6 @@ pub fn file_stem(serial: &str) -> String {
 const SIZE: (u32, u32) = (900, 520);
 const SESSION: RGBColor = RGBColor(30, 90, 200);
 const CHECK: RGBColor = RGBColor(200, 40, 40);
-
-fn to_io<E: std::fmt::Display>(e: E) -> std::io::Error {
-    std::io::Error::other(e.to_string())
-}
 
 /// One joint's points: (day number, offset, U(k=2), kind), in record order.
 type Point = (f64, f64, f64, RecordKind);

@@ -11,6 +11,7 @@ use axum::response::{IntoResponse, Redirect, Response};
 use axum::Form;
 use minijinja::context;
 use std::collections::HashMap;
+use zerocal_history::HistoryError;
 use zerocal_history::{sha256_hex, LoginGate, RecordKind, Role};
 
 /// `/`: the fleet.
@@ -350,7 +351,15 @@ pub async fn upload(State(app): State<Shared>, headers: HeaderMap, form: Multipa
             // The serial's records all of this export's robot, checked in the insert's
             // transaction: two uploads racing cannot both pass.
             let correction = replaces.map(|old| (old, reason.as_str()));
-            Ok(h.insert_of_one_robot(&user, &record, correction)?.id)
+            // Another robot's export is the uploader's mistake, said in its own words
+            // (not as a history failure).
+            match h.insert_of_one_robot(&user, &record, correction) {
+                Ok(stored) => Ok(stored.id),
+                Err(e @ HistoryError::AnotherRobot { .. }) => {
+                    Err(WebError(StatusCode::UNPROCESSABLE_ENTITY, e.to_string()))
+                }
+                Err(e) => Err(e.into()),
+            }
         })
         .await;
         match id {

@@ -378,7 +378,9 @@ async fn an_oversized_malformed_or_other_robots_export_is_refused_and_nothing_re
         let reply = upload(r, &tec, &csrf, "R1", b"robot fanuc-m-10id-12\nrow 1\n").await;
         assert_eq!(reply.status, StatusCode::UNPROCESSABLE_ENTITY);
         assert!(
-            reply.body.contains("another robot") && reply.body.contains("kuka-kr6-r900-sixx"),
+            reply.body.contains("another robot")
+                && reply.body.contains("kuka-kr6-r900-sixx")
+                && !reply.body.contains("history: serial"),
             "{}",
             reply.body
         );

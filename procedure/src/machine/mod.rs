@@ -44,7 +44,8 @@
 //! `default_plan.rs` the plan the pendant uses when none was uploaded; `export.rs` the
 //! export of a session; `record/` the flash records; `output.rs` the records a step
 //! hands the firmware to write; `profile/` the robot profile the pendant holds;
-//! `kept.rs` the kept results.
+//! `kept_result.rs` a finished session's result made into the kept result
+//! ([`crate::kept`] holds the types).
 
 #[cfg(test)]
 mod bench_tests;

@@ -1,6 +1,6 @@
 //! The pendant's capture rule checked along the robot's moves: the readings the
 //! pendant would see every sensor period, whether a path arms the next capture, and
-//! whether the pendant's own stillness rule (core's `StillnessFilter` with its
+//! whether the pendant's own stillness rule (the procedure's `StillnessFilter` with its
 //! `StillnessConfig`, fed those readings) would capture before the robot arrives. So a
 //! change to the pendant's window or threshold changes the plans' order and the
 //! programs' checks as well.
@@ -200,7 +200,7 @@ impl<'a> Pendant<'a> {
     }
 
     /// Whether the pendant, armed at sample `arm_at`, would capture before the robot
-    /// arrives: core's stillness filter, the pendant's own rule (its window, and its
+    /// arrives: the procedure's stillness filter, the pendant's own rule (its window, and its
     /// threshold widened by [`EARLY_STILL_MARGIN`]), fed the readings from the last
     /// capture on (the filter starts empty there, as the pendant's does after a
     /// capture), calls them still at a sample from `arm_at` on, before the arrival.
@@ -277,7 +277,7 @@ mod tests {
     /// A creep after the arming move that keeps the reading within the pendant's
     /// stillness threshold for 1.5 still windows before the robot arrives is a capture
     /// before arrival; the same creep for half a window is not. The window is the
-    /// pendant's own (core's `StillnessConfig`), and core's filter decides.
+    /// pendant's own (the procedure's `StillnessConfig`), and its filter decides.
     #[test]
     fn a_creep_longer_than_the_still_window_is_captured_early() {
         let profile = zerocal_profile::builtin("kuka-kr16").unwrap_or_else(|e| panic!("{e}"));

@@ -1,5 +1,5 @@
-//! The robot side of a session for `zerocal plan` and `zerocal program`: core's
-//! robot-time model (`crate::robot_time`) filled in from a robot profile and
+//! The robot side of a session for `zerocal plan` and `zerocal program`: the
+//! robot-time model ([`crate::robot_time`]) filled in from a robot profile and
 //! the options, the room every capture needs on both sides of the backlash inside the
 //! joint limits, the mounting and parking poses, and the pendant's capture rule
 //! checked along every move.
@@ -23,7 +23,7 @@
 //! - the overshoot: the smallest round figure that re-arms the pendant at every pose of
 //!   the built-in plans ([`OVERSHOOT_DEG`]);
 //! - the still window and its threshold, and the move that arms the next capture:
-//!   the pendant's own (core's `StillnessConfig` and `ProcedureConfig` defaults);
+//!   the pendant's own (the procedure's `StillnessConfig` and `ProcedureConfig` defaults);
 //!   the sensor period: the pendant's 20 Hz read rate, [`SAMPLE_PERIOD_S`]; the
 //!   sensor's range: mode 4's ±10° (core's `MEMS_RANGE_DEG`).
 //!
@@ -169,7 +169,7 @@ impl Timing {
     /// The model for `profile` with the options.
     ///
     /// # Errors
-    /// A setting core's model refuses (cannot come from the options' ranges).
+    /// A setting the robot-time model refuses (cannot come from the options' ranges).
     pub fn new(profile: &Profile, args: &TimingArgs) -> Result<Self, CliError> {
         let mut max_speed_deg_s = [DEFAULT_JOINT_SPEED_DEG_S; JOINTS];
         let mut speed_source = [SpeedSource::StatedDefault; JOINTS];

@@ -21,7 +21,7 @@ pub const MOUNT_MARGIN_DEG: f64 = 5.0;
 
 /// The session's poses in the controller's joint degrees.
 ///
-/// The pendant captures by itself once it has moved and then stays still (core's
+/// The pendant captures by itself once it has moved and then stays still (the
 /// procedure): clipped on at a pose it reads within its range, it would capture that
 /// pose before the robot goes where the session wants it. So the robot stands at a
 /// *mounting pose* while the pendant is clipped on or taken off, a pose that tilts the

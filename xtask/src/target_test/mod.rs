@@ -7,7 +7,7 @@
 //! 3. Runs it under `qemu-system-arm -machine netduinoplus2` (a Cortex-M4F) with a time
 //!    limit, reading its semihosting output (format: `target-test/src/main.rs`).
 //! 4. Solves the same `f32` data in `f64` on the host with the same pipeline
-//!    (`target-test/src/pipeline.rs`) and compares: every number within
+//!    (`results.rs`, `host_results`) and compares: every number within
 //!    [`TOLERANCE_DEG`], every refusal the same variant naming the same joints.
 //! 5. Checks the instruction count and peak stack of one 30-pose fit, and the release
 //!    firmware's flash and static RAM, against [`BUDGETS`].
