@@ -118,10 +118,11 @@ fn parse_range(text: &str) -> Option<Stated> {
 }
 
 /// Value names of options that take text, not a number.
-const TEXT_VALUES: [&str; 13] = [
+const TEXT_VALUES: [&str; 14] = [
     "<SN>",
     "<DAY>",
     "<J=DEG>",
+    "<MODEL=DAYS>",
     "<DEG,DEG,DEG,DEG,DEG>",
     "<FILE>",
     "<PORT>",
