@@ -27,13 +27,11 @@ pub const LONG_PRESS_MS: u64 = 800;
 /// NEXT held past [`LONG_PRESS_MS`] repeats at this period.
 pub const REPEAT_MS: u64 = 250;
 
-impl Button {
-    /// What holding the button does: a long press, repeats, or nothing more.
-    fn hold(self) -> Hold {
-        match self {
-            Button::Ok | Button::Back => Hold::Long,
-            Button::Next => Hold::Repeat,
-        }
+/// What holding `button` does: a long press, or repeats.
+fn hold(button: Button) -> Hold {
+    match button {
+        Button::Ok | Button::Back => Hold::Long,
+        Button::Next => Hold::Repeat,
     }
 }
 
@@ -113,7 +111,7 @@ impl Debouncer {
             if let (true, Some(due)) = (key.held, key.due_ms) {
                 if now_ms >= due {
                     key.held_sent = true;
-                    let press = match button.hold() {
+                    let press = match hold(button) {
                         Hold::Long => {
                             key.due_ms = None;
                             Press::Long

@@ -3,11 +3,6 @@
 
 use zerocal_procedure::ProcedureConfig;
 
-/// Armed and not still for this long: the screen says the robot does not come to rest.
-/// Longer than the longest move of a plan (180° on a joint at 30°/s peak is 9 s) plus
-/// clipping the pendant on (3 s) and settling.
-pub const STILL_MOVING_MS: u64 = 30_000;
-
 /// The display is redrawn at most this often (ms): a 1 KiB frame takes ~25 ms of I2C
 /// at 400 kHz, and a person reads nothing faster.
 pub const REDRAW_PERIOD_MS: u64 = 100;

@@ -5,44 +5,8 @@
 use zerocal_core::model::Tilt;
 use zerocal_scl3300::Error;
 
-/// A button of the pendant.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum Button {
-    /// Confirm / arm a capture.
-    Ok,
-    /// Undo / back.
-    Back,
-    /// Skip / next page.
-    Next,
-}
-
-impl Button {
-    /// The buttons, in the order of `ButtonInputs::held` ([`crate::buttons`]).
-    pub const ALL: [Button; 3] = [Button::Ok, Button::Back, Button::Next];
-}
-
-/// How a button was pressed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub enum Press {
-    /// Pressed and released before `LONG_PRESS_MS` ([`crate::buttons`]).
-    Short,
-    /// Held for `LONG_PRESS_MS` ([`crate::buttons`]) (sent once, while still held).
-    Long,
-    /// Still held: one more step (NEXT).
-    Repeat,
-}
-
-/// One press, as the procedure receives it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct ButtonEvent {
-    /// Which button.
-    pub button: Button,
-    /// How.
-    pub press: Press,
-}
+// The buttons are the procedure's: it decides what a press means on each screen.
+pub use zerocal_procedure::{Button, ButtonEvent, Press};
 
 /// Why there is no reading, as the screen shows it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

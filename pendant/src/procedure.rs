@@ -8,28 +8,26 @@
 //! No procedure logic lives here: when to capture, what BACK undoes, what a plan may
 //! replace, the fit and its verdict, whether a profile may change, what `erase all`
 //! leaves, when a result is kept and under which ID, where a sample goes during a
-//! bracket calibration are the machine's. This task adds what only a pendant has: the
-//! power-up (store, storage reset, the restart note), which press means what on which
-//! screen, the info screen, the result's pages, the still-moving warning, and the
-//! sensor's and store's faults on the screen and in the link's replies.
+//! bracket calibration, which press means what on which screen, the result's page and
+//! when the robot is still moving are the machine's. This task adds what only a pendant
+//! has: the power-up (store, storage reset, the restart note), the store's idle upkeep
+//! when the machine says the robot started moving, and the sensor's and store's faults
+//! on the screen and in the link's replies. It holds no branch on the procedure's
+//! state.
 
 use core::ops::Range;
 
 use embassy_futures::select::{select3, Either3};
-use embassy_time::{Duration, Instant, Timer};
+use embassy_time::{Duration, Timer};
 use embedded_storage_async::nor_flash::NorFlash;
 use zerocal_core::model::Tilt;
 use zerocal_procedure::record::kept_slot::KEPT_RESULT_LEN;
-use zerocal_procedure::stillness::Stillness;
-use zerocal_procedure::{
-    Event, OutputError, PendantEvent, PendantMode, PendantOutput, Phase, ProcedureState, Refusal,
-};
+use zerocal_procedure::{Event, OutputError, PendantEvent, PendantOutput, Refusal};
 /// What [`Boot::pendant`] holds, for the board to fill.
 pub use zerocal_procedure::{PendantUnit, UnitId};
 
-use crate::buttons::{Button, ButtonEvent, Press};
+use crate::buttons::{Button, ButtonEvent};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
-use crate::config::STILL_MOVING_MS;
 use crate::screen::{PendantState, RestartNote, Screen};
 use crate::sensor::SensorReport;
 use crate::store::{Restored, Store};
@@ -49,14 +47,10 @@ pub struct Boot<'a, F> {
     pub pendant: Option<PendantUnit>,
 }
 
-/// The presentation state this task keeps beside core's session.
+/// What this task keeps beside the procedure: the hardware's own state.
 #[derive(Clone, Copy, Debug, Default)]
 struct Presentation {
     extras: PendantState,
-    /// Since when (ms) the armed pendant has not been still.
-    unsettled_since_ms: Option<u64>,
-    /// The last sample's stillness was `Moving`: the next `Moving` is no news.
-    was_moving: bool,
 }
 
 /// Runs forever.
@@ -117,12 +111,10 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                 break 'answer Some(read_kept(store.as_mut(), id));
             }
             let from_link = matches!(input, Either3::Third(_));
-            let sampled = matches!(input, Either3::First(SensorReport::Reading { .. }));
             let procedure = &mut **held.insert(shared.procedure.lock().await);
-            let phase_before = procedure.session().phase();
             // One output to write, whatever asked for it: a single buffer lives across
             // the writes (the task's state is static RAM on the board).
-            let mut output = match to_event(&mut presentation, procedure.mode(), input) {
+            let mut output = match to_event(&mut presentation, input) {
                 Some(event) => procedure.step(event),
                 None => PendantOutput::default(),
             };
@@ -146,30 +138,18 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                 stored &= written;
                 presentation.extras.store_failed = !stored;
             }
-            if output.session_resumed {
-                // The session's wait for stillness starts afresh.
-                presentation.unsettled_since_ms = None;
-                presentation.extras.still_moving = false;
-            }
-            // The result's page survives only while the result stays up.
-            if procedure.session().phase() != Phase::Done || phase_before != Phase::Done {
-                presentation.extras.result_page = 0;
-            }
             let reply = from_link.then_some(match (output.refusal, stored) {
                 (Some(Refusal::SessionInProgress), _) => LinkReply::SessionInProgress,
                 (_, false) => LinkReply::StoreFailed,
                 (Some(Refusal::PlanLocked), true) => LinkReply::PlanLocked,
                 (None, true) => LinkReply::Done,
             });
-            if sampled {
-                let moving = watch_stillness(&mut presentation, procedure.session());
-                // The robot is on its way to the next pose (or the session is over): the
-                // moment for a page change and its erase, if one is due.
-                if moving {
-                    if let Some(s) = store.as_mut() {
-                        if s.make_room_when_idle().await.is_err() {
-                            presentation.extras.store_failed = true;
-                        }
+            // The robot is on its way to the next pose (or the session is over): the
+            // moment for a page change and its erase, if one is due.
+            if output.started_moving {
+                if let Some(s) = store.as_mut() {
+                    if s.make_room_when_idle().await.is_err() {
+                        presentation.extras.store_failed = true;
                     }
                 }
             }
@@ -221,14 +201,12 @@ fn read_kept<F: NorFlash>(store: Option<&mut Store<F>>, id: u32) -> LinkReply {
 const BOOT_SCREEN_MS: u64 = 1500;
 
 /// What an input means to the procedure: a sample, a sensor fault (both also shown),
-/// a press on the screen shown ([`on_press`]), or a link request. `None`: nothing
-/// for the procedure (a press that only turns a page, or none at all).
-// Out of line, as on_press and watch_stillness: inlined into the task's poll they cost
-// more flash than a call.
+/// a press, or a link request. `None`: nothing for the procedure (a read of a kept
+/// result, answered from the store).
+// Out of line: inlined into the task's poll it costs more flash than a call.
 #[inline(never)]
 fn to_event(
     p: &mut Presentation,
-    mode: PendantMode,
     input: Either3<SensorReport, ButtonEvent, LinkRequest>,
 ) -> Option<PendantEvent<'static, f32>> {
     Some(match input {
@@ -248,7 +226,7 @@ fn to_event(
             p.extras.fault = Some(fault);
             PendantEvent::Session(Event::SensorFault)
         }
-        Either3::Second(press) => PendantEvent::Session(on_press(p, mode, press)?),
+        Either3::Second(press) => PendantEvent::Press(press),
         Either3::Third(LinkRequest::SetPlan(plan)) => PendantEvent::Session(Event::SetPlan(plan)),
         Either3::Third(LinkRequest::Clear) => PendantEvent::Session(Event::Clear),
         Either3::Third(LinkRequest::Check) => PendantEvent::Session(Event::Check),
@@ -279,54 +257,6 @@ async fn wait_for_ok(shared: &Shared) {
             Either3::First(_) | Either3::Third(_) => {}
         }
     }
-}
-
-/// What a press means on the screen shown: the procedure's event, or a change of
-/// presentation.
-#[inline(never)]
-fn on_press(p: &mut Presentation, mode: PendantMode, press: ButtonEvent) -> Option<Event<f32>> {
-    let ButtonEvent { button, press } = press;
-    match (button, press, mode) {
-        // Every step of a bracket calibration is a placement by hand and OK: a short or
-        // long press alike.
-        (Button::Ok, _, PendantMode::BracketCalibration) => Some(Event::Ok),
-        (Button::Back, Press::Short, PendantMode::BracketCalibration) => Some(Event::Back),
-        // NEXT means nothing there; a held BACK must not undo capture after capture.
-        (_, _, PendantMode::BracketCalibration) => None,
-        // The result stays until OK is held: a brush of OK must not lose it.
-        (Button::Ok, Press::Short, PendantMode::Session(Phase::Done)) => None,
-        (Button::Ok, Press::Long, PendantMode::Session(Phase::Done)) => Some(Event::Ok),
-        (Button::Next, Press::Short | Press::Repeat, PendantMode::Session(Phase::Done)) => {
-            p.extras.result_page = p.extras.result_page.wrapping_add(1);
-            None
-        }
-        (Button::Ok, _, _) => Some(Event::Ok),
-        (Button::Back, _, _) => Some(Event::Back),
-        (Button::Next, Press::Short, _) => Some(Event::Next),
-        // A held NEXT must not skip pose after pose.
-        (Button::Next, _, _) => None,
-    }
-}
-
-/// Tracks how long an armed pendant has not been still; returns whether the reading
-/// has just started moving (the robot left its pose).
-#[inline(never)]
-fn watch_stillness(p: &mut Presentation, session: &ProcedureState<f32>) -> bool {
-    let view = session.view();
-    let now_ms = Instant::now().as_millis();
-    let unsettled =
-        view.phase.captures() && view.armed && !matches!(view.stillness, Stillness::Still { .. });
-    if unsettled {
-        let since = *p.unsettled_since_ms.get_or_insert(now_ms);
-        p.extras.still_moving = now_ms.saturating_sub(since) > STILL_MOVING_MS;
-    } else {
-        p.unsettled_since_ms = None;
-        p.extras.still_moving = false;
-    }
-    let moving = matches!(view.stillness, Stillness::Moving) || view.phase == Phase::Done;
-    let started = moving && !p.was_moving;
-    p.was_moving = moving;
-    started
 }
 
 /// Performs an output's writes, in its order: the kept result, then the records.

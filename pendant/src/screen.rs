@@ -201,7 +201,7 @@ pub struct CaptureScreen {
     pub notice: Option<Notice>,
     /// The sensor task's reason when there is no reading.
     pub fault: Option<SensorFault>,
-    /// Armed but not still for longer than [`crate::config::STILL_MOVING_MS`].
+    /// Armed but not still for longer than [`zerocal_procedure::STILL_MOVING_MS`].
     pub still_moving: bool,
     /// The last flash write failed: what is shown may not survive a power cut.
     pub store_failed: bool,
@@ -263,11 +263,13 @@ impl ResultScreen {
 /// state (named apart from the fit's `Extras`).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct PendantState {
-    /// The result page the operator turned to (wraps).
+    /// The result page the operator turned to (wraps): the procedure's
+    /// ([`PendantMachine::result_page`]).
     pub result_page: usize,
     /// The sensor task's last fault (cleared by the next reading).
     pub fault: Option<SensorFault>,
-    /// Armed and not still for too long.
+    /// Armed and not still for too long: the procedure's
+    /// ([`PendantMachine::still_moving`]).
     pub still_moving: bool,
     /// The last flash write failed.
     pub store_failed: bool,
@@ -590,7 +592,14 @@ impl Screen {
 
     /// The screen for the procedure as it is: the bracket calibration's while one runs,
     /// else the session's.
-    pub fn of(procedure: &PendantMachine<f32>, extras: PendantState) -> Screen {
+    /// `hardware` gives the sensor's fault and the store's failure; the result's page and
+    /// the still-moving hint are the procedure's.
+    pub fn of(procedure: &PendantMachine<f32>, hardware: PendantState) -> Screen {
+        let extras = PendantState {
+            result_page: procedure.result_page().into(),
+            still_moving: procedure.still_moving(),
+            ..hardware
+        };
         match procedure.bracket_cal() {
             Some(bracket) => Screen::Bracket(BracketScreen::from_state(bracket, extras)),
             None => Screen::from_view(

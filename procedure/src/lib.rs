@@ -44,6 +44,7 @@ pub mod stillness;
 pub mod text;
 
 pub use machine::*;
+pub use pendant_machine::buttons::{Button, ButtonEvent, Press};
 pub use pendant_machine::{
-    KeptWrite, PendantEvent, PendantMachine, PendantMode, PendantOutput, Refusal,
+    KeptWrite, PendantEvent, PendantMachine, PendantMode, PendantOutput, Refusal, STILL_MOVING_MS,
 };

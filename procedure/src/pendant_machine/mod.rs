@@ -1,14 +1,16 @@
 //! The pendant's whole procedure as one sans-IO machine: the session's
 //! ([`crate::machine::step`]) with what a pendant holds around it, the robot profile
 //! and its changes (`profile set`, `erase all`), the kept results, and the bracket
-//! calibration mode ([`crate::bracket_cal`]).
+//! calibration mode ([`crate::bracket_cal`]), and what a press means on the screen
+//! shown ([`buttons`]) with what of the screen follows from the procedure ([`shown`]).
 //!
 //! [`PendantMachine::step`] takes a [`PendantEvent`] and returns a [`PendantOutput`]
 //! that says everything to write, in the order that survives a power cut: erase the
 //! store, keep a result, write the records. The pendant's task turns its inputs into
 //! events, moves those bytes to the store and draws; every decision (whether a profile
 //! may change now, what `erase all` leaves, when a result is kept and under which ID,
-//! where a sample goes during a bracket calibration) is made here, on the host's tests.
+//! where a sample goes during a bracket calibration, which press means what on which
+//! screen, when the robot is still moving) is made here, on the host's tests.
 
 use crate::bracket_cal::{bracket_step, BracketCalState, BracketOutput, StoredBrackets};
 use crate::machine::record::kept_slot::KEPT_RESULT_LEN;
@@ -21,8 +23,14 @@ use zerocal_core::model::Tilt;
 use zerocal_core::plan::PoseList;
 use zerocal_core::real::Real;
 
+pub mod buttons;
+mod shown;
 #[cfg(test)]
 mod tests;
+
+use buttons::{ButtonEvent, PressMeaning};
+use shown::Shown;
+pub use shown::STILL_MOVING_MS;
 
 /// What happens to the pendant.
 // A profile travels by value, once, as the link hands it over (no heap).
@@ -33,6 +41,10 @@ pub enum PendantEvent<'a, T: Real> {
     /// go to the bracket calibration while one runs; a plan, `clear` and `check` always
     /// go to the session.
     Session(Event<T>),
+    /// A button pressed: what it means depends on the screen shown
+    /// ([`PendantMachine::mode`]): the session's or the bracket calibration's OK, BACK
+    /// or NEXT, the result's next page, or nothing.
+    Press(ButtonEvent),
     /// `profile set`: the new robot profile, refused while a session is in progress.
     SetProfile(PendantProfile<T>),
     /// `erase all` asked: the output says to erase the store; nothing changes until
@@ -97,6 +109,9 @@ pub struct PendantOutput<T> {
     /// A bracket calibration ended: the session is shown again and its still window
     /// starts afresh (a wait for stillness counts from now).
     pub session_resumed: bool,
+    /// A sample found the robot starting to move (or the session over): the pendant is
+    /// not needed for a while, the moment for the store's idle upkeep.
+    pub started_moving: bool,
 }
 
 impl<T> PendantOutput<T> {
@@ -127,6 +142,7 @@ pub struct PendantMachine<T: Real> {
     brackets: StoredBrackets<T>,
     bracket_cal: Option<BracketCalState<T>>,
     next_result_id: u32,
+    shown: Shown,
 }
 
 // A profile's records follow the cleared session's (its progress and the plan's end,
@@ -144,6 +160,7 @@ impl<T: Real> PendantMachine<T> {
             brackets: StoredBrackets::default(),
             bracket_cal: None,
             next_result_id,
+            shown: Shown::default(),
         }
     }
 
@@ -207,6 +224,18 @@ impl<T: Real> PendantMachine<T> {
         }
     }
 
+    /// The result's page the operator turned to (wraps: the screen takes it modulo
+    /// its pages); 0 whenever the result is not up.
+    pub fn result_page(&self) -> u8 {
+        self.shown.result_page
+    }
+
+    /// Armed, capturing and not still for longer than [`STILL_MOVING_MS`] of the
+    /// samples' clock: the screen tells the operator the robot has not stopped.
+    pub fn still_moving(&self) -> bool {
+        self.shown.still_moving
+    }
+
     /// The latest reading, the bracket calibration's while one runs.
     pub fn live(&self) -> Option<Tilt<T>> {
         match &self.bracket_cal {
@@ -220,6 +249,18 @@ impl<T: Real> PendantMachine<T> {
     #[inline(never)]
     pub fn step(&mut self, event: PendantEvent<'_, T>) -> PendantOutput<T> {
         let mut out = PendantOutput::default();
+        let phase_before = self.session.phase();
+        let event = match event {
+            PendantEvent::Press(press) => match buttons::meaning(self.mode(), press) {
+                PressMeaning::Event(e) => PendantEvent::Session(e.event()),
+                PressMeaning::TurnResultPage => {
+                    self.shown.result_page = self.shown.result_page.wrapping_add(1);
+                    return out;
+                }
+                PressMeaning::Nothing => return out,
+            },
+            other => other,
+        };
         match event {
             PendantEvent::Session(
                 e @ (Event::Sample { .. } | Event::SensorFault | Event::Ok | Event::Back),
@@ -227,9 +268,18 @@ impl<T: Real> PendantMachine<T> {
             // NEXT means nothing in a bracket calibration.
             PendantEvent::Session(Event::Next) if self.bracket_cal.is_some() => {}
             PendantEvent::Session(e) => {
+                let sampled_at_ms = match e {
+                    Event::Sample { t_ms, .. } => Some(t_ms),
+                    _ => None,
+                };
                 out.records = session_step(&self.config, &mut self.session, e);
                 out.kept = self.kept_if_finished(&out.records);
+                if let Some(t_ms) = sampled_at_ms {
+                    out.started_moving = self.shown.sampled(t_ms, &self.session.view());
+                }
             }
+            // Turned into the session's event above.
+            PendantEvent::Press(_) => {}
             PendantEvent::SetProfile(profile) => self.set_profile(&profile, &mut out),
             PendantEvent::EraseAll => out.erase = true,
             PendantEvent::StoreErased { default_plan } => {
@@ -258,6 +308,10 @@ impl<T: Real> PendantMachine<T> {
         if out.refusal.is_none() && self.session.notice() == Some(Notice::PlanLocked) {
             out.refusal = Some(Refusal::PlanLocked);
         }
+        if out.session_resumed {
+            self.shown.forget_unsettled();
+        }
+        self.shown.phase_moved(phase_before, self.session.phase());
         out
     }
 
@@ -324,6 +378,7 @@ impl<T: Real> PendantMachine<T> {
         self.session = ProcedureState::new(PoseList::new(), None);
         self.brackets = StoredBrackets::default();
         self.bracket_cal = None;
+        self.shown = Shown::default();
         let plan = PoseList::from_slice(default_plan).unwrap_or_default();
         session_step(&self.config, &mut self.session, Event::SetPlan(plan))
     }

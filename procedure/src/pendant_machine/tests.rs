@@ -430,3 +430,98 @@ fn a_locked_plan_is_a_refusal() {
     ));
     assert_eq!(out.refusal, Some(Refusal::PlanLocked));
 }
+
+/// A press, as the pendant's debouncer sends it.
+fn press(button: Button, press: Press) -> PendantEvent<'static, f64> {
+    PendantEvent::Press(ButtonEvent { button, press })
+}
+
+use buttons::{Button, ButtonEvent, Press};
+
+/// The result stays up until OK is held: a short OK does nothing, NEXT (short or
+/// held) turns its pages, a long OK starts a new session and the page is back to the
+/// first. During a session, a held NEXT skips nothing and a short one does.
+#[test]
+fn a_press_means_what_the_screen_shown_says() {
+    let mut rig = Rig::new();
+    // Stage 0: a held NEXT must not skip; a short one does.
+    assert!(!rig.step(press(Button::Next, Press::Repeat)).writes());
+    assert_eq!(rig.m.mode(), PendantMode::Session(Phase::Stage0));
+    rig.step(press(Button::Next, Press::Short));
+    assert_eq!(rig.m.mode(), PendantMode::Session(Phase::Stage1Before));
+    rig.session(Event::Back);
+    before_the_last_capture(&mut rig);
+    last_capture(&mut rig);
+    assert_eq!(rig.m.mode(), PendantMode::Session(Phase::Done));
+    assert_eq!(rig.m.result_page(), 0);
+    // A brush of OK: nothing.
+    let out = rig.step(press(Button::Ok, Press::Short));
+    assert!(!out.writes());
+    assert_eq!(rig.m.mode(), PendantMode::Session(Phase::Done));
+    // NEXT pages, short or held; the page stays while the result is up.
+    rig.step(press(Button::Next, Press::Short));
+    rig.step(press(Button::Next, Press::Repeat));
+    assert_eq!(rig.m.result_page(), 2);
+    rig.sample(flange(rig.m.session().plan().last().unwrap()));
+    assert_eq!(rig.m.result_page(), 2);
+    // OK held: a new session, the result's page forgotten.
+    let out = rig.step(press(Button::Ok, Press::Long));
+    assert!(out.writes());
+    assert_eq!(rig.m.mode(), PendantMode::Session(Phase::Stage0));
+    assert_eq!(rig.m.result_page(), 0);
+}
+
+/// In a bracket calibration NEXT means nothing and a held BACK does not undo; a short
+/// BACK with nothing taken leaves it.
+#[test]
+fn a_press_in_the_bracket_mode_is_the_calibration_s() {
+    let mut rig = Rig::new();
+    rig.step(PendantEvent::CalibrateBracket {
+        mount: BracketMount::UpperArm,
+        id: bracket_id("U-003").unwrap(),
+    });
+    for (button, how) in [
+        (Button::Next, Press::Short),
+        (Button::Next, Press::Repeat),
+        (Button::Back, Press::Long),
+    ] {
+        let out = rig.step(press(button, how));
+        assert!(!out.writes() && !out.session_resumed, "{button:?} {how:?}");
+        assert_eq!(rig.m.mode(), PendantMode::BracketCalibration);
+    }
+    let out = rig.step(press(Button::Back, Press::Short));
+    assert!(out.session_resumed);
+    assert_eq!(rig.m.mode(), PendantMode::Session(Phase::Stage0));
+}
+
+/// Armed and not still: the hint comes once the samples' clock has run past
+/// [`STILL_MOVING_MS`], not before, and goes when the pendant is still. The robot
+/// starting to move is said once, on the sample that finds it moving.
+#[test]
+fn the_robot_still_moving_is_said_after_its_limit_by_the_samples_clock() {
+    let mut rig = Rig::new();
+    rig.session(Event::Next);
+    rig.session(Event::Ok);
+    let [q1, q2, ..] = rig.m.config().stage1_joints_rad;
+    let start_ms = rig.t_ms;
+    let mut started = 0;
+    let mut k = 0_u32;
+    while rig.t_ms.wrapping_sub(start_ms) <= STILL_MOVING_MS {
+        assert!(!rig.m.still_moving(), "said at {} ms", rig.t_ms - start_ms);
+        // Swinging by a degree each sample: never still.
+        let swing = deg_to_rad(if k.is_multiple_of(2) { 1.0 } else { -1.0 });
+        k += 1;
+        started += usize::from(rig.sample(upper_arm(q1, q2 + swing)).started_moving);
+    }
+    rig.sample(upper_arm(q1, q2));
+    assert!(rig.m.still_moving(), "not said after the limit");
+    assert_eq!(started, 1, "the start of a move said more than once");
+    // Still again (the capture follows): the hint goes.
+    for _ in 0..400 {
+        rig.sample(upper_arm(q1, q2));
+        if !rig.m.still_moving() {
+            return;
+        }
+    }
+    panic!("the hint stayed on a still pendant");
+}
