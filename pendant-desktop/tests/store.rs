@@ -195,6 +195,84 @@ fn the_ninth_result_drops_the_first() {
     assert!(restored_is_empty(&flash));
 }
 
+/// The write that replaces the oldest result on a full ring (the ninth, into the
+/// first's slot) cut at every flash operation it makes, before each and half-way
+/// through it: at the next power-up the store holds results 1-8 whole (a result is
+/// kept only once its last word is), never a torn result, a lost one or a next ID that
+/// names a kept result; and the pendant keeps results after it (the next goes in). The
+/// next ID is written first: a cut before it is whole leaves 9 next, a cut after it 10
+/// (9 skipped, never reused).
+#[test]
+fn a_cut_in_the_write_that_replaces_the_oldest_result_keeps_the_old_ring() {
+    let ring = zerocal_procedure::kept::KEPT_RESULTS as u32;
+    let fill = |flash: &SimFlash| {
+        let (mut store, restored) = power_up(flash);
+        restored.unwrap();
+        for id in 1..=ring {
+            keep(&mut store, &kept(id, id as u16));
+        }
+        store
+    };
+    // The operations of the replacing write, from an uncut run.
+    let dry = SimFlash::new(7);
+    let mut store = fill(&dry);
+    let first = dry.memory().operations;
+    keep(&mut store, &kept(ring + 1, 99));
+    let last = dry.memory().operations;
+    assert!(
+        last - first > 30,
+        "the write took {} operations",
+        last - first
+    );
+    let mut next_ids = std::collections::BTreeSet::new();
+    for operation in first..last {
+        for half_done in [false, true] {
+            let when = format!("cut at {operation} of {first}..{last}, half done {half_done}");
+            let flash = SimFlash::new(7);
+            let mut store = fill(&flash);
+            flash.memory().cut = Some(CutPoint {
+                operation,
+                half_done,
+            });
+            let mut value = [0_u8; zerocal_procedure::record::kept_slot::KEPT_RESULT_LEN];
+            kept(ring + 1, 99).encode(&mut value).unwrap();
+            let written = embassy_futures::block_on(store.keep_result(ring + 1, &value));
+            assert!(flash.memory().cut_done, "{when}: no cut");
+            assert!(written.is_err(), "{when}: the cut write said it was done");
+            drop(store);
+            flash.power_on();
+            let (mut store, restored) = power_up(&flash);
+            restored.unwrap_or_else(|e| panic!("{when}: the store reset: {e:?}"));
+            let held: Vec<_> = (1..=ring + 1)
+                .map(|id| kept_result(&mut store, id))
+                .collect();
+            // Every cut is inside the write, so the new ring (whole only once its last
+            // word is) never comes: the old one, whole.
+            let old: Vec<_> = (1..=ring).map(|id| Some(kept(id, id as u16))).collect();
+            assert_eq!(&held[..ring as usize], &old[..], "{when}: the old ring");
+            assert_eq!(held[ring as usize], None, "{when}: a torn ninth result");
+            // The next ID names no kept result: the next write cannot overwrite one
+            // under its own ID.
+            let next = next_id(&mut store).unwrap_or(1);
+            assert!(next > ring, "{when}: next ID {next}");
+            next_ids.insert(next);
+            assert_eq!(
+                kept_result(&mut store, next),
+                None,
+                "{when}: next ID {next}"
+            );
+            keep(&mut store, &kept(next, 7));
+            assert_eq!(kept_result(&mut store, next), Some(kept(next, 7)), "{when}");
+        }
+    }
+    // The cuts before and after the next ID's item both came.
+    assert_eq!(
+        next_ids.into_iter().collect::<Vec<_>>(),
+        [ring + 1, ring + 2],
+        "next IDs after the cuts"
+    );
+}
+
 fn restored_is_empty(flash: &SimFlash) -> bool {
     let (_, restored) = power_up(flash);
     restored.unwrap().is_empty()
