@@ -9,7 +9,10 @@
 //! - the desktop's product crates depend on one another only where one is made of the
 //!   other (docs/repository.md): no crate holds two products through a dependency;
 //! - no file refers to the notes beside the repository (the parent directory's shared
-//!   folder): a user's clone has none of them.
+//!   folder): a user's clone has none of them;
+//! - the README is a landing page of at most [`MAX_README_LINES`] lines: what it is,
+//!   the user's path, the two commands, how to flash, the headline figures and where the
+//!   docs are; the details live in docs/.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -19,6 +22,30 @@ use std::path::{Path, PathBuf};
 
 /// The longest a source file may be: one idea per file.
 const MAX_SOURCE_LINES: usize = 900;
+
+/// The longest the README may be: a landing page read on one screen or two.
+const MAX_README_LINES: usize = 150;
+
+#[test]
+fn the_readme_is_a_landing_page() {
+    let readme = fs::read_to_string(repo_root().join("README.md")).unwrap();
+    let lines = readme.lines().count();
+    assert!(
+        lines <= MAX_README_LINES,
+        "README.md has {lines} lines, over {MAX_README_LINES}: move the details to docs/"
+    );
+    // It leads with the user's path, before the developer's commands.
+    let path = readme
+        .find("## Calibrating a robot")
+        .expect("the user's path");
+    let commands = readme
+        .find("## The two commands")
+        .expect("the two commands");
+    assert!(
+        path < commands,
+        "the developer's commands come before the user's path"
+    );
+}
 
 fn repo_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
