@@ -206,17 +206,7 @@ fn another_robots_plan_and_a_missing_pulse_scale_are_refused() {
 
 /// `zerocal plan`'s flags, parsed as the command line parses them.
 fn plan_args(flags: &[&str]) -> zerocal_programs::plan::PlanArgs {
-    use clap::Parser;
-    #[derive(Parser)]
-    struct Wrap {
-        #[command(flatten)]
-        args: zerocal_programs::plan::PlanArgs,
-    }
-    let mut v = vec!["plan"];
-    v.extend_from_slice(flags);
-    Wrap::try_parse_from(v)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .args
+    zerocal_programs::plan::PlanArgs::from_flags(flags).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// A limits file listing only A1 leaves the KR 6's A5 at its own ±120° (not ±180°),

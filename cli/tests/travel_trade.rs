@@ -21,17 +21,7 @@ const TOLERANCE: f64 = 0.02;
 
 /// `zerocal plan`'s flags, parsed as the command line parses them.
 fn plan_args(flags: &[&str]) -> PlanArgs {
-    use clap::Parser;
-    #[derive(Parser)]
-    struct Wrap {
-        #[command(flatten)]
-        args: PlanArgs,
-    }
-    let mut v = vec!["plan"];
-    v.extend_from_slice(flags);
-    Wrap::try_parse_from(v)
-        .unwrap_or_else(|e| panic!("{e}"))
-        .args
+    PlanArgs::from_flags(flags).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// `a` and `b` (model rad) are the same pose up to whole turns of a joint.

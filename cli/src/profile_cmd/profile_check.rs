@@ -9,7 +9,7 @@
 //! what is listed, 3 no session can be planned with it (2, as everywhere, a profile
 //! that does not read).
 
-use clap::{Args, Parser};
+use clap::Args;
 use serde::Serialize;
 use std::fmt::Write;
 use zerocal_inputs::error::CliError;
@@ -103,14 +103,8 @@ fn cap(job: &'static str, status: Status, detail: impl Into<String>) -> Capabili
 
 /// The default plan of the profile at `path` (what `zerocal plan --robot PATH` makes).
 fn default_plan(path: &str) -> Result<SessionPlan, CliError> {
-    #[derive(Parser)]
-    struct Defaults {
-        #[command(flatten)]
-        plan: PlanArgs,
-    }
-    let args = Defaults::try_parse_from(["plan", "--robot", path])
-        .map_err(|e| CliError::Input(e.to_string()))?
-        .plan;
+    let args =
+        PlanArgs::from_flags(&["--robot", path]).map_err(|e| CliError::Input(e.to_string()))?;
     make_plan(&args)
 }
 

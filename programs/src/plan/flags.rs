@@ -111,7 +111,25 @@ pub struct PlanArgs {
     pub timing: TimingArgs,
 }
 
+/// `zerocal plan`'s flags as a command of their own, for [`PlanArgs::from_flags`].
+#[derive(clap::Parser)]
+struct PlanCommand {
+    #[command(flatten)]
+    args: PlanArgs,
+}
+
 impl PlanArgs {
+    /// `zerocal plan`'s flags parsed from `flags` (without the command's name) as the
+    /// command line parses them: for another tool that plans, and the tests.
+    ///
+    /// # Errors
+    /// clap's: a flag unknown or out of its range (exit status 2).
+    pub fn from_flags(flags: &[&str]) -> Result<PlanArgs, clap::Error> {
+        use clap::Parser;
+        PlanCommand::try_parse_from(std::iter::once("plan").chain(flags.iter().copied()))
+            .map(|c| c.args)
+    }
+
     /// The robot profile `--robot` names, its limits narrowed by `--limits`.
     ///
     /// # Errors
@@ -231,18 +249,5 @@ impl PlanArgs {
 /// tests of the plan's modules.
 #[cfg(test)]
 pub(crate) fn test_args(flags: &[&str]) -> PlanArgs {
-    use clap::Parser;
-
-    #[derive(Parser)]
-    struct Wrap {
-        #[command(flatten)]
-        args: PlanArgs,
-    }
-
-    let mut v = vec!["plan"];
-    v.extend_from_slice(flags);
-    match Wrap::try_parse_from(v) {
-        Ok(w) => w.args,
-        Err(e) => panic!("{e}"),
-    }
+    PlanArgs::from_flags(flags).unwrap_or_else(|e| panic!("{e}"))
 }

@@ -67,13 +67,6 @@ mod tests {
     use super::flags::test_args as args;
     use super::*;
     use crate::robot_time::CAPTURES_PER_POSE;
-    use clap::Parser;
-
-    #[derive(Parser)]
-    struct Wrap {
-        #[command(flatten)]
-        args: PlanArgs,
-    }
 
     /// `zerocal plan --json` of the most poses, its largest output, uses a quarter of
     /// the plan file's cap at most: the rest is room for hand edits.
@@ -167,7 +160,7 @@ mod tests {
             ("--poses", "2", "[4, 45]"),
             ("--noise-deg", "0", "(0, 1] deg"),
         ] {
-            let e = Wrap::try_parse_from(["plan", flag, value])
+            let e = PlanArgs::from_flags(&[flag, value])
                 .err()
                 .unwrap_or_else(|| panic!("{flag} {value} accepted"));
             assert_eq!(e.exit_code(), 2, "{e}");

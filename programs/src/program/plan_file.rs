@@ -4,7 +4,6 @@
 
 use crate::plan::flags::MAX_JOINT2_SWING_DEG;
 use crate::plan::PlanArgs;
-use clap::Parser;
 use std::path::Path;
 use zerocal_core::model::JOINTS;
 use zerocal_inputs::error::CliError;
@@ -169,16 +168,9 @@ pub fn default_plan(robot: &str) -> Result<Vec<[f64; JOINTS]>, CliError> {
 /// # Errors
 /// As [`default_plan`].
 pub fn plan_with(robot: &str, flags: &[&str]) -> Result<Vec<[f64; JOINTS]>, CliError> {
-    #[derive(Parser)]
-    struct Defaults {
-        #[command(flatten)]
-        plan: PlanArgs,
-    }
-    let mut argv = vec!["plan", "--robot", robot];
+    let mut argv = vec!["--robot", robot];
     argv.extend_from_slice(flags);
-    let args = Defaults::try_parse_from(argv)
-        .map_err(|e| CliError::Input(e.to_string()))?
-        .plan;
+    let args = PlanArgs::from_flags(&argv).map_err(|e| CliError::Input(e.to_string()))?;
     let sp = crate::plan::make_plan(&args)?;
     Ok(sp.plan.poses_rad.iter().copied().collect())
 }
