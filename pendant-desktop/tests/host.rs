@@ -246,7 +246,8 @@ fn an_erase_cut_half_way_loses_no_record_of_the_page_it_emptied() {
 /// the new, never a torn one or a reused ID, and the finished session's result is kept
 /// with the uncut run's numbers (`power_cuts::kept_difference`). On the filled store,
 /// which holds the results of the sessions before it (five with seed 3: the write adds
-/// a sixth; the ninth replacing the first is `store.rs`'s, uncut). A fresh board's write
+/// a sixth; the ninth replacing the first is cut in `store.rs`'s
+/// `a_cut_in_the_write_that_replaces_the_oldest_result_keeps_the_old_ring`). A fresh board's write
 /// is one of the campaign's spread of cut points; all of them doubled this test's two
 /// minutes.
 #[test]

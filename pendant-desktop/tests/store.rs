@@ -263,6 +263,15 @@ fn a_cut_in_the_write_that_replaces_the_oldest_result_keeps_the_old_ring() {
             );
             keep(&mut store, &kept(next, 7));
             assert_eq!(kept_result(&mut store, next), Some(kept(next, 7)), "{when}");
+            assert_eq!(next_id(&mut store), Some(next + 1), "{when}");
+            // Only the slot it took changed hands.
+            for id in (1..=ring).filter(|id| id % ring != next % ring) {
+                assert_eq!(
+                    kept_result(&mut store, id),
+                    Some(kept(id, id as u16)),
+                    "{when}: result {id} after the next write"
+                );
+            }
         }
     }
     // The cuts before and after the next ID's item both came.

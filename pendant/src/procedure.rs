@@ -28,7 +28,7 @@ pub use zerocal_procedure::{PendantUnit, UnitId};
 
 use crate::buttons::{Button, ButtonEvent};
 use crate::channels::{LinkReply, LinkRequest, Procedure, Shared};
-use crate::screen::{PendantState, RestartNote, Screen};
+use crate::screen::{Hardware, RestartNote, Screen};
 use crate::sensor::SensorReport;
 use crate::store::{Restored, Store};
 
@@ -50,7 +50,7 @@ pub struct Boot<'a, F> {
 /// What this task keeps beside the procedure: the hardware's own state.
 #[derive(Clone, Copy, Debug, Default)]
 struct Presentation {
-    extras: PendantState,
+    hardware: Hardware,
 }
 
 /// Runs forever.
@@ -66,7 +66,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
                 Ok(()) => {}
                 Err(reason) => reset = Some(reason),
             },
-            None => presentation.extras.store_failed = true,
+            None => presentation.hardware.store_failed = true,
         }
         // The boot screen names the robot the pendant is set up for.
         shared
@@ -77,7 +77,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
     if let (Some(reason), Some(s)) = (reset, store.as_mut()) {
         shared.screen.signal(Screen::StorageReset(reason));
         wait_for_ok(shared).await;
-        presentation.extras.store_failed = s.erase().await.is_err();
+        presentation.hardware.store_failed = s.erase().await.is_err();
     }
     {
         let mut procedure = shared.procedure.lock().await;
@@ -85,7 +85,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             default_plan: boot.default_plan,
         });
         if write(&mut store, &output).await == Some(false) {
-            presentation.extras.store_failed = true;
+            presentation.hardware.store_failed = true;
         }
     }
     if let Some(note) = boot.restart {
@@ -136,7 +136,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             }
             if let Some(written) = write(&mut store, &output).await {
                 stored &= written;
-                presentation.extras.store_failed = !stored;
+                presentation.hardware.store_failed = !stored;
             }
             let reply = from_link.then_some(match (output.refusal, stored) {
                 (Some(Refusal::SessionInProgress), _) => LinkReply::SessionInProgress,
@@ -149,7 +149,7 @@ pub async fn run<F: NorFlash>(shared: &Shared, boot: Boot<'_, F>) -> ! {
             if output.started_moving {
                 if let Some(s) = store.as_mut() {
                     if s.make_room_when_idle().await.is_err() {
-                        presentation.extras.store_failed = true;
+                        presentation.hardware.store_failed = true;
                     }
                 }
             }
@@ -215,7 +215,7 @@ fn to_event(
             tilt,
             temperature_c,
         }) => {
-            p.extras.fault = None;
+            p.hardware.fault = None;
             PendantEvent::Session(Event::Sample {
                 t_ms,
                 reading: Tilt::new(tilt.x_rad, tilt.y_rad),
@@ -223,7 +223,7 @@ fn to_event(
             })
         }
         Either3::First(SensorReport::Fault(fault)) => {
-            p.extras.fault = Some(fault);
+            p.hardware.fault = Some(fault);
             PendantEvent::Session(Event::SensorFault)
         }
         Either3::Second(press) => PendantEvent::Press(press),
@@ -287,5 +287,5 @@ async fn write<F: NorFlash>(
 
 /// Sends the screen for the procedure as it is now.
 fn publish(shared: &Shared, procedure: &Procedure, p: &Presentation) {
-    shared.screen.signal(Screen::of(procedure, p.extras));
+    shared.screen.signal(Screen::of(procedure, p.hardware));
 }

@@ -275,6 +275,16 @@ pub struct PendantState {
     pub store_failed: bool,
 }
 
+/// The pendant's hardware state the screen shows beside the procedure's: the sensor's
+/// fault and the store's failure (the task's own; the rest is the procedure's).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Hardware {
+    /// The sensor task's last fault (cleared by the next reading).
+    pub fault: Option<SensorFault>,
+    /// The last flash write failed.
+    pub store_failed: bool,
+}
+
 /// Each distinct screen, by name: the gallery has one picture of each.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum ScreenKind {
@@ -594,11 +604,12 @@ impl Screen {
     /// else the session's.
     /// `hardware` gives the sensor's fault and the store's failure; the result's page and
     /// the still-moving hint are the procedure's.
-    pub fn of(procedure: &PendantMachine<f32>, hardware: PendantState) -> Screen {
+    pub fn of(procedure: &PendantMachine<f32>, hardware: Hardware) -> Screen {
         let extras = PendantState {
-            result_page: procedure.result_page().into(),
+            result_page: procedure.result_page(),
             still_moving: procedure.still_moving(),
-            ..hardware
+            fault: hardware.fault,
+            store_failed: hardware.store_failed,
         };
         match procedure.bracket_cal() {
             Some(bracket) => Screen::Bracket(BracketScreen::from_state(bracket, extras)),

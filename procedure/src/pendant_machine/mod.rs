@@ -224,9 +224,10 @@ impl<T: Real> PendantMachine<T> {
         }
     }
 
-    /// The result's page the operator turned to (wraps: the screen takes it modulo
-    /// its pages); 0 whenever the result is not up.
-    pub fn result_page(&self) -> u8 {
+    /// The result's page the operator turned to (the screen takes it modulo its
+    /// pages); back to 0 whenever the session leaves its result or comes to a new one
+    /// (a bracket calibration started on the result keeps it).
+    pub fn result_page(&self) -> usize {
         self.shown.result_page
     }
 

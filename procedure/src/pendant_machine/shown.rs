@@ -15,9 +15,8 @@ pub const STILL_MOVING_MS: u32 = 30_000;
 /// The procedure's part of the presentation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(super) struct Shown {
-    /// The result page the operator turned to (wraps; the screen takes it modulo its
-    /// pages).
-    pub(super) result_page: u8,
+    /// The result page the operator turned to (the screen takes it modulo its pages).
+    pub(super) result_page: usize,
     /// Since when (the samples' ms clock) the armed pendant has not been still.
     unsettled_since_ms: Option<u32>,
     /// Armed and not still for longer than [`STILL_MOVING_MS`].
@@ -39,8 +38,16 @@ impl Shown {
             && !matches!(view.stillness, Stillness::Still { .. });
         if unsettled {
             let since = *self.unsettled_since_ms.get_or_insert(t_ms);
-            // The clock wraps (49 days): the difference does not.
-            self.still_moving = t_ms.wrapping_sub(since) > STILL_MOVING_MS;
+            // The clock wraps (49 days): the difference does not. A sample from before
+            // `since` (a replay, a harness's clock set back) starts the wait afresh
+            // rather than reading as 49 days unsettled.
+            let waited_ms = t_ms.wrapping_sub(since);
+            if waited_ms > u32::MAX / 2 {
+                self.unsettled_since_ms = Some(t_ms);
+                self.still_moving = false;
+            } else {
+                self.still_moving = waited_ms > STILL_MOVING_MS;
+            }
         } else {
             self.forget_unsettled();
         }

@@ -61,7 +61,7 @@ impl Rig {
 
     /// The pendant at `reading` for one sample period.
     fn sample(&mut self, reading: Tilt<f64>) -> PendantOutput<f64> {
-        self.t_ms += crate::stillness::SAMPLE_PERIOD_MS;
+        self.t_ms = self.t_ms.wrapping_add(crate::stillness::SAMPLE_PERIOD_MS);
         self.session(Event::Sample {
             t_ms: self.t_ms,
             reading,
@@ -495,33 +495,58 @@ fn a_press_in_the_bracket_mode_is_the_calibration_s() {
 }
 
 /// Armed and not still: the hint comes once the samples' clock has run past
-/// [`STILL_MOVING_MS`], not before, and goes when the pendant is still. The robot
-/// starting to move is said once, on the sample that finds it moving.
+/// [`STILL_MOVING_MS`] since the first unsettled sample (not at it, not before), across
+/// the clock's wrap, and goes when the pendant is still. The robot starting to move is
+/// said once, on the sample that finds it moving. A bracket calibration meanwhile
+/// neither says the robot started moving nor keeps the hint when the session resumes.
 #[test]
 fn the_robot_still_moving_is_said_after_its_limit_by_the_samples_clock() {
     let mut rig = Rig::new();
+    // 20 s before the ms clock wraps.
+    rig.t_ms = u32::MAX - 20_000;
     rig.session(Event::Next);
     rig.session(Event::Ok);
     let [q1, q2, ..] = rig.m.config().stage1_joints_rad;
-    let start_ms = rig.t_ms;
+    let swinging = |k: u32| {
+        upper_arm(
+            q1,
+            q2 + deg_to_rad(if k.is_multiple_of(2) { 1.0 } else { -1.0 }),
+        )
+    };
     let mut started = 0;
-    let mut k = 0_u32;
-    while rig.t_ms.wrapping_sub(start_ms) <= STILL_MOVING_MS {
-        assert!(!rig.m.still_moving(), "said at {} ms", rig.t_ms - start_ms);
-        // Swinging by a degree each sample: never still.
-        let swing = deg_to_rad(if k.is_multiple_of(2) { 1.0 } else { -1.0 });
-        k += 1;
-        started += usize::from(rig.sample(upper_arm(q1, q2 + swing)).started_moving);
+    let mut first_ms = None;
+    for k in 0..(STILL_MOVING_MS / crate::stillness::SAMPLE_PERIOD_MS + 5) {
+        started += usize::from(rig.sample(swinging(k)).started_moving);
+        let waited_ms = rig.t_ms.wrapping_sub(*first_ms.get_or_insert(rig.t_ms));
+        assert_eq!(
+            rig.m.still_moving(),
+            waited_ms > STILL_MOVING_MS,
+            "{waited_ms} ms unsettled"
+        );
     }
-    rig.sample(upper_arm(q1, q2));
     assert!(rig.m.still_moving(), "not said after the limit");
     assert_eq!(started, 1, "the start of a move said more than once");
     // Still again (the capture follows): the hint goes.
-    for _ in 0..400 {
+    let mut k = 0;
+    while rig.m.still_moving() {
+        assert!(k < 400, "the hint stayed on a still pendant");
         rig.sample(upper_arm(q1, q2));
-        if !rig.m.still_moving() {
-            return;
-        }
+        k += 1;
     }
-    panic!("the hint stayed on a still pendant");
+    // Unsettled past the limit again, then a bracket calibration.
+    rig.session(Event::Ok);
+    for k in 0..(STILL_MOVING_MS / crate::stillness::SAMPLE_PERIOD_MS + 5) {
+        rig.sample(swinging(k));
+    }
+    assert!(rig.m.still_moving());
+    // Its samples say no start of a move, and the session resumes without the hint.
+    rig.step(PendantEvent::CalibrateBracket {
+        mount: BracketMount::Flange,
+        id: bracket_id("F-017").unwrap(),
+    });
+    for k in 0..20 {
+        assert!(!rig.sample(swinging(k)).started_moving);
+    }
+    assert!(rig.step(press(Button::Back, Press::Short)).session_resumed);
+    assert!(!rig.m.still_moving(), "the hint outlived the calibration");
 }
