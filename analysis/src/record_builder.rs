@@ -8,8 +8,8 @@
 use crate::db::RecordMeta;
 use zerocal_core::bracket::{BracketCalibration, Brackets};
 use zerocal_history::{
-    Harmonic, JointRow, NewRecord, RecordBracket, RecordBracketCalibration, RecordBracketYaw, RecordBrackets,
-    RecordKind, Verdict,
+    Harmonic, JointRow, NewRecord, RecordBracket, RecordBracketCalibration, RecordBracketYaw,
+    RecordBrackets, RecordKind, Verdict,
 };
 use zerocal_inputs::error::CliError;
 

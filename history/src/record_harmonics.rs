@@ -34,7 +34,10 @@ pub(crate) fn invalid(harmonics: &[Harmonic]) -> Option<String> {
             ));
         }
         if !seen.insert((h.joint, h.order)) {
-            return Some(format!("harmonic j{} n={} is given twice", h.joint, h.order));
+            return Some(format!(
+                "harmonic j{} n={} is given twice",
+                h.joint, h.order
+            ));
         }
         for (field, v) in [
             ("amplitude_deg", h.amplitude_deg),
@@ -42,7 +45,10 @@ pub(crate) fn invalid(harmonics: &[Harmonic]) -> Option<String> {
             ("amplitude_k2_deg", h.amplitude_k2_deg),
         ] {
             if !v.is_finite() {
-                return Some(format!("harmonic j{} n={}: {field} is {v}", h.joint, h.order));
+                return Some(format!(
+                    "harmonic j{} n={}: {field} is {v}",
+                    h.joint, h.order
+                ));
             }
         }
         if h.amplitude_k2_deg < 0.0 {

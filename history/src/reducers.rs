@@ -49,7 +49,6 @@ pub struct SessionHarmonics {
     pub reducers: Vec<Harmonic>,
 }
 
-
 /// How many combined standard uncertainties an amplitude must grow by to be named.
 ///
 /// A session compares about ten measured harmonics at once. At 2 (the combined U at

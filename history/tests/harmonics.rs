@@ -57,7 +57,10 @@ fn harmonics_that_do_not_hold_are_refused_on_insert_naming_them() {
         let spoils: [(Spoil, &str); 3] = [
             (|v| v[0].joint = 7, "joint 7 is outside"),
             (|v| v[1] = v[0].clone(), "j3 n=1 is given twice"),
-            (|v| v[0].amplitude_k2_deg = -0.001, "amplitude_k2_deg -0.001 is negative"),
+            (
+                |v| v[0].amplitude_k2_deg = -0.001,
+                "amplitude_k2_deg -0.001 is negative",
+            ),
         ];
         for (i, (spoil, why)) in spoils.into_iter().enumerate() {
             let mut r = record(RecordKind::Session, "KR6-0102", 1 + i as u32, 128);
@@ -77,8 +80,8 @@ fn schema_6_records_get_their_harmonics_from_their_results_reducers() {
     for b in backends("harmonics_v6") {
         drop(History::open_at_schema(&b.at, 5).unwrap());
         let mut with = record(RecordKind::Session, "KR6-0103", 1, 128);
-        with.result_json = serde_json::json!({ "verdict": "PASS", "reducers": harmonics() })
-            .to_string();
+        with.result_json =
+            serde_json::json!({ "verdict": "PASS", "reducers": harmonics() }).to_string();
         let with_id = insert_at_schema_5(&b.at, &with, &old_import_brackets(&with));
         // Recorded before the reducers were kept: none.
         let without = record(RecordKind::Session, "KR6-0103", 2, 128);
@@ -86,8 +89,17 @@ fn schema_6_records_get_their_harmonics_from_their_results_reducers() {
 
         let mut h = History::open(&b.at).unwrap();
         assert_eq!(h.schema_version().unwrap(), SCHEMA_VERSION, "{}", b.name);
-        assert_eq!(h.get(with_id).unwrap().new.harmonics, harmonics(), "{}", b.name);
-        assert!(h.get(without_id).unwrap().new.harmonics.is_empty(), "{}", b.name);
+        assert_eq!(
+            h.get(with_id).unwrap().new.harmonics,
+            harmonics(),
+            "{}",
+            b.name
+        );
+        assert!(
+            h.get(without_id).unwrap().new.harmonics.is_empty(),
+            "{}",
+            b.name
+        );
     }
 }
 
@@ -100,7 +112,11 @@ fn reducers_that_do_not_read_stop_the_migration_naming_the_record() {
         let bad_id = insert_at_schema_5(&b.at, &bad, &bad.brackets.to_json());
         match History::open(&b.at) {
             Err(HistoryError::Corrupt(why)) => {
-                assert!(why.contains(&format!("record {bad_id}")), "{}: {why}", b.name);
+                assert!(
+                    why.contains(&format!("record {bad_id}")),
+                    "{}: {why}",
+                    b.name
+                );
                 assert!(why.contains("reducers"), "{}: {why}", b.name);
             }
             Err(e) => panic!("{}: {e}", b.name),

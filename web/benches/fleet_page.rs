@@ -16,7 +16,9 @@ use axum::http::{header, Request, StatusCode};
 use http_body_util::BodyExt;
 use std::time::Instant;
 use tower::ServiceExt;
-use zerocal_history::{DbLocation, Harmonic, History, JointRow, NewRecord, Record, RecordKind, Role};
+use zerocal_history::{
+    DbLocation, Harmonic, History, JointRow, NewRecord, Record, RecordKind, Role,
+};
 
 /// `len` bytes that depend on `seed` only (xorshift64): an export that does not
 /// compress away, as the history's tests make them.
@@ -71,7 +73,8 @@ fn harmonics(i: usize, robots: usize) -> Vec<Harmonic> {
         .map(|(joint, order)| Harmonic {
             joint,
             order,
-            amplitude_deg: 0.001 * f64::from(order) + 0.0004 * ((i + usize::from(joint)) % 5) as f64,
+            amplitude_deg: 0.001 * f64::from(order)
+                + 0.0004 * ((i + usize::from(joint)) % 5) as f64,
             phase_deg: 10.0 * f64::from(joint),
             amplitude_k2_deg: 0.0003,
             measured: !(joint == 6 && order == 2 && round % 2 == 1),

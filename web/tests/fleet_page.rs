@@ -93,14 +93,16 @@ fn session_with(serial: &str, day: &str, harmonics: &[(u8, u8, f64, f64, bool)])
     r.measured_on = day.into();
     r.harmonics = harmonics
         .iter()
-        .map(|&(joint, order, amplitude_deg, amplitude_k2_deg, measured)| Harmonic {
-            joint,
-            order,
-            amplitude_deg,
-            phase_deg: 10.0,
-            amplitude_k2_deg,
-            measured,
-        })
+        .map(
+            |&(joint, order, amplitude_deg, amplitude_k2_deg, measured)| Harmonic {
+                joint,
+                order,
+                amplitude_deg,
+                phase_deg: 10.0,
+                amplitude_k2_deg,
+                measured,
+            },
+        )
         .collect();
     r
 }
@@ -118,9 +120,17 @@ async fn a_reducer_grown_beyond_the_wear_rule_shows_as_wearing_and_a_healthy_one
         // SKIPPED: the previous session that measured it is the first, then a fall.
         // NONE: a session that fitted nothing.
         let sessions = [
-            session_with("WEAR", "2026-01-10", &[(4, 2, 0.010, u, true), (5, 1, 0.001, u, false)]),
+            session_with(
+                "WEAR",
+                "2026-01-10",
+                &[(4, 2, 0.010, u, true), (5, 1, 0.001, u, false)],
+            ),
             session_with("WEAR", "2026-03-10", &[(4, 2, 0.030, u, false)]),
-            session_with("WEAR", "2026-06-10", &[(4, 2, 0.022, u, true), (5, 1, 0.050, u, false)]),
+            session_with(
+                "WEAR",
+                "2026-06-10",
+                &[(4, 2, 0.022, u, true), (5, 1, 0.050, u, false)],
+            ),
             session_with("HEALTHY", "2026-01-10", &[(4, 2, 0.010, u, true)]),
             session_with("HEALTHY", "2026-06-10", &[(4, 2, 0.0105, u, true)]),
             session_with("FALL", "2026-01-10", &[(3, 1, 0.020, u, true)]),
@@ -155,23 +165,42 @@ async fn a_reducer_grown_beyond_the_wear_rule_shows_as_wearing_and_a_healthy_one
             ("NONE", "—"),
         ] {
             let got = row(&page.body, serial).unwrap();
-            assert!(got.contains(shown) && !got.contains('σ'), "{}: {serial}: {got}", site.name);
+            assert!(
+                got.contains(shown) && !got.contains('σ'),
+                "{}: {serial}: {got}",
+                site.name
+            );
         }
         assert!(
-            page.body.contains(&format!("grew by more than {WEAR_SIGMAS:.1} standard uncertainties")),
+            page.body.contains(&format!(
+                "grew by more than {WEAR_SIGMAS:.1} standard uncertainties"
+            )),
             "the legend names the rule: {}",
             page.body
         );
 
         let only = get(r, "/fleet?only=wearing&sort=wear", &tec).await;
         assert_eq!(only.status, StatusCode::OK, "{}: {}", site.name, only.body);
-        assert!(row(&only.body, "WEAR").is_some(), "{}: {}", site.name, only.body);
+        assert!(
+            row(&only.body, "WEAR").is_some(),
+            "{}: {}",
+            site.name,
+            only.body
+        );
         for serial in ["HEALTHY", "FALL", "FIRST", "NONE"] {
-            assert!(row(&only.body, serial).is_none(), "{}: {serial} kept by only=wearing", site.name);
+            assert!(
+                row(&only.body, serial).is_none(),
+                "{}: {serial} kept by only=wearing",
+                site.name
+            );
         }
         let sorted = get(r, "/fleet?sort=wear", &tec).await;
         let first = sorted.body.find(">WEAR</a>").unwrap();
         let healthy = sorted.body.find(">HEALTHY</a>").unwrap();
-        assert!(first < healthy, "{}: sort=wear puts the wearing robot first", site.name);
+        assert!(
+            first < healthy,
+            "{}: sort=wear puts the wearing robot first",
+            site.name
+        );
     }
 }
