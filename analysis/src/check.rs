@@ -309,6 +309,8 @@ fn record_of(
                     pass: x.check.pass,
                 })
                 .collect(),
+            // A check fits no harmonics.
+            harmonics: Vec::new(),
         },
         meta,
     )

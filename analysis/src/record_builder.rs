@@ -8,8 +8,8 @@
 use crate::db::RecordMeta;
 use zerocal_core::bracket::{BracketCalibration, Brackets};
 use zerocal_history::{
-    JointRow, NewRecord, RecordBracket, RecordBracketCalibration, RecordBracketYaw, RecordBrackets,
-    RecordKind, Verdict,
+    Harmonic, JointRow, NewRecord, RecordBracket, RecordBracketCalibration, RecordBracketYaw,
+    RecordBrackets, RecordKind, Verdict,
 };
 use zerocal_inputs::error::CliError;
 
@@ -84,6 +84,8 @@ pub struct RecordParts {
     pub result_json: String,
     /// Per joint results.
     pub joints: Vec<JointRow>,
+    /// A session's fitted harmonics of its reducers (none for a check or a kept result).
+    pub harmonics: Vec<Harmonic>,
 }
 
 /// The record of `parts`, measured as `meta` says.
@@ -115,6 +117,7 @@ pub fn build(parts: RecordParts, meta: &RecordMeta) -> Result<NewRecord, CliErro
         conditions_json: parts.conditions.to_string(),
         result_json: parts.result_json,
         joints: parts.joints,
+        harmonics: parts.harmonics,
     })
 }
 
@@ -181,6 +184,7 @@ mod tests {
             conditions: serde_json::json!({}),
             result_json: "{}".into(),
             joints: Vec::new(),
+            harmonics: Vec::new(),
         }
     }
 

@@ -30,6 +30,7 @@ fn record(kind: RecordKind, serial: &str, day: &str, export: &[u8], j3_deg: f64)
         brackets: zerocal_history::RecordBrackets::default(),
         conditions_json: r#"{"temperature_c":20.0}"#.into(),
         result_json: r#"{"verdict":"PASS"}"#.into(),
+        harmonics: Vec::new(),
         joints: (2..=6u8)
             .map(|joint| JointRow {
                 joint,
@@ -216,7 +217,7 @@ fn a_db_that_is_not_a_zerocal_history_is_refused_by_name_and_left_as_it_was() {
     assert_eq!(std::fs::read_to_string(&notes).unwrap(), text);
 }
 
-/// A session's result holding these harmonics: (joint, order, A deg, U(k=2) deg,
+/// A session (its result and its typed harmonics) holding these harmonics: (joint, order, A deg, U(k=2) deg,
 /// measured).
 fn with_reducers(mut r: NewRecord, harmonics: &[(u8, u8, f64, f64, bool)]) -> NewRecord {
     let reducers: Vec<serde_json::Value> = harmonics
@@ -229,6 +230,7 @@ fn with_reducers(mut r: NewRecord, harmonics: &[(u8, u8, f64, f64, bool)]) -> Ne
         })
         .collect();
     r.result_json = serde_json::json!({ "verdict": "PASS", "reducers": reducers }).to_string();
+    r.harmonics = serde_json::from_value(serde_json::Value::Array(reducers)).unwrap();
     r
 }
 

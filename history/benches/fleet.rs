@@ -73,6 +73,7 @@ fn main() {
             brackets: zerocal_history::RecordBrackets::default(),
             conditions_json: "{}".into(),
             result_json: result_json.clone(),
+            harmonics: Vec::new(),
             joints: (2..=6u8)
                 .map(|joint| JointRow {
                     joint,

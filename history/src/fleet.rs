@@ -1,7 +1,11 @@
 //! The plant's view of the history: every robot with its last session, the session
 //! before it, and its last check (a record a correction replaced left out), without the records' exports, results and profiles
-//! (listing those for every record of a plant takes seconds: `benches/fleet.rs`).
+//! (listing those for every record of a plant takes seconds: `benches/fleet.rs`), and
+//! what the wear rule ([`crate::reducers`]) needs of its reducers: its last session's
+//! harmonics, each with the robot's previous session that measured it
+//! (`record_harmonics`, typed rows: no result is parsed).
 
+use crate::reducers::{changes, ReducerChange, SessionHarmonics};
 use crate::{joint_from_row, History, HistoryError, JointRow, RecordKind, JOINT_COLUMNS};
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -38,6 +42,12 @@ pub struct RobotSummary {
     pub previous_session: Option<RecordSummary>,
     /// The last check measured.
     pub last_check: Option<RecordSummary>,
+    /// The last session's harmonics (first; empty where it fitted none or there is no
+    /// session), then each earlier session of the robot that last measured one of
+    /// them, with those harmonics only: what [`RobotSummary::reducer_changes`] compares.
+    /// Not serialized: the pages show the changes, not the rows they come from.
+    #[serde(skip)]
+    pub reducer_sessions: Vec<SessionHarmonics>,
 }
 
 /// A joint's change between two sessions.
@@ -53,6 +63,46 @@ pub struct Drift {
 }
 
 impl RobotSummary {
+    /// Whether the last session fitted any harmonic of its reducers.
+    #[must_use]
+    pub fn reducers_fitted(&self) -> bool {
+        self.reducer_sessions
+            .first()
+            .is_some_and(|s| !s.reducers.is_empty())
+    }
+
+    /// How many of the last session's measured harmonics have an earlier measurement to
+    /// be compared with.
+    #[must_use]
+    pub fn reducers_compared(&self) -> usize {
+        let Some((last, before)) = self.reducer_sessions.split_first() else {
+            return 0;
+        };
+        last.reducers
+            .iter()
+            .filter(|h| {
+                h.measured
+                    && before.iter().any(|s| {
+                        s.reducers
+                            .iter()
+                            .any(|p| p.joint == h.joint && p.order == h.order)
+                    })
+            })
+            .count()
+    }
+
+    /// The last session's harmonics grown beyond the wear rule ([`crate::reducers::changes`])
+    /// since the robot's previous session that measured each.
+    #[must_use]
+    pub fn reducer_changes(&self) -> Vec<ReducerChange> {
+        let Some(last) = self.reducer_sessions.first() else {
+            return Vec::new();
+        };
+        let mut out = changes(&self.reducer_sessions);
+        out.retain(|c| c.record_id == last.record_id);
+        out
+    }
+
     /// Each joint's change from the previous session to the last, where both have it.
     #[must_use]
     pub fn drift(&self) -> Vec<Drift> {
@@ -115,6 +165,7 @@ impl History {
                     last_session: None,
                     previous_session: None,
                     last_check: None,
+                    reducer_sessions: Vec::new(),
                 });
             }
             let Some(robot_now) = fleet.last_mut() else {
@@ -134,6 +185,7 @@ impl History {
             }
         }
         self.fill_joints(&mut fleet)?;
+        crate::record_harmonics::fill_fleet(&mut self.conn, &mut fleet)?;
         Ok(fleet)
     }
 

@@ -15,6 +15,8 @@ mod error;
 mod fleet;
 mod pgpass;
 mod pgtls;
+mod record_harmonics;
+pub mod reducers;
 mod review;
 pub mod schema;
 mod uploads;
@@ -27,6 +29,7 @@ pub use corrections::Correction;
 pub use error::HistoryError;
 pub use fleet::{Drift, RecordSummary, RobotSummary};
 pub use pgtls::SslMode;
+pub use reducers::Harmonic;
 pub use review::{
     check_user_name, AuditEntry, LoginGate, Role, SignStep, Signature, User, WebSession,
     MAX_USER_CHARS,
@@ -132,6 +135,9 @@ pub struct NewRecord {
     pub result_json: String,
     /// Per joint results.
     pub joints: Vec<JointRow>,
+    /// A session's fitted harmonics (`record_harmonics`; none for a check).
+    #[serde(default)]
+    pub harmonics: Vec<Harmonic>,
 }
 
 /// A stored record.
@@ -406,6 +412,9 @@ fn validate(r: &NewRecord) -> Result<(), HistoryError> {
         .map_err(|e| invalid(format!("brackets: {e}")))?;
     check_json("conditions_json", &r.conditions_json)?;
     check_json("result_json", &r.result_json)?;
+    if let Some(why) = record_harmonics::invalid(&r.harmonics) {
+        return Err(invalid(why));
+    }
     let mut seen = [false; 7];
     for j in &r.joints {
         if !JOINTS.contains(&j.joint) {
@@ -520,6 +529,8 @@ fn record_from_row(row: &[Value], joints: Vec<JointRow>) -> Result<Record, Histo
             conditions_json: conditions_json.string("records.conditions_json")?,
             result_json: result_json.string("records.result_json")?,
             joints,
+            // Read by the caller, from `record_harmonics`.
+            harmonics: Vec::new(),
         },
     })
 }
@@ -629,6 +640,7 @@ fn insert_in(c: &mut Conn, r: &NewRecord) -> Result<Inserted, HistoryError> {
                 ],
             )?;
         }
+        record_harmonics::insert(c, id, &r.harmonics)?;
         Ok(Inserted { id, new: true })
     }
 }
@@ -702,7 +714,11 @@ impl History {
             .iter()
             .map(|r| joint_from_row(r).map(|(_, j)| j))
             .collect::<Result<Vec<_>, _>>()?;
-        record_from_row(row, joints)
+        let mut record = record_from_row(row, joints)?;
+        record.new.harmonics = record_harmonics::by_record(&mut self.conn, "record_id = $1", &key)?
+            .remove(&id)
+            .unwrap_or_default();
+        Ok(record)
     }
 
     /// Every record, or those of `serial`, in ID order (the order they were stored).
@@ -742,6 +758,14 @@ impl History {
                 )?,
             ),
         };
+        let mut harmonics = match serial {
+            Some(s) => record_harmonics::by_record(
+                &mut self.conn,
+                "record_id IN (SELECT id FROM records WHERE serial = $1)",
+                &[Value::text(s)],
+            )?,
+            None => record_harmonics::by_record(&mut self.conn, "1 = 1", &[])?,
+        };
         let mut by_record: BTreeMap<i64, Vec<JointRow>> = BTreeMap::new();
         for row in &joints {
             let (record_id, joint) = joint_from_row(row)?;
@@ -754,7 +778,9 @@ impl History {
                     .first()
                     .ok_or_else(|| HistoryError::Corrupt("a records row is empty".into()))?
                     .i64("records.id")?;
-                record_from_row(row, by_record.remove(&id).unwrap_or_default())
+                let mut record = record_from_row(row, by_record.remove(&id).unwrap_or_default())?;
+                record.new.harmonics = harmonics.remove(&id).unwrap_or_default();
+                Ok(record)
             })
             .collect()
     }

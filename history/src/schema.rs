@@ -205,6 +205,27 @@ CREATE TABLE audit (
         sql: "",
         rewrite: Some(brackets_in_one_shape),
     },
+    Migration {
+        version: 7,
+        what: "record_harmonics: each session's fitted harmonics of its joints' transmission \
+               error (joint, order, amplitude, phase, amplitude's U(k=2), measured or held at \
+               its prior) in typed rows, filled from the `reducers` of the results stored \
+               before, so that the fleet view reads the reducers' health without parsing \
+               any result",
+        sql: "
+CREATE TABLE record_harmonics (
+    record_id BIGINT NOT NULL REFERENCES records (id),
+    joint BIGINT NOT NULL CHECK (joint BETWEEN 2 AND 6),
+    harmonic_order BIGINT NOT NULL,
+    amplitude_deg DOUBLE PRECISION NOT NULL,
+    phase_deg DOUBLE PRECISION NOT NULL,
+    amplitude_k2_deg DOUBLE PRECISION NOT NULL,
+    measured BIGINT NOT NULL CHECK (measured IN (0, 1)),
+    PRIMARY KEY (record_id, joint, harmonic_order)
+);
+",
+        rewrite: Some(crate::record_harmonics::backfill),
+    },
 ];
 
 /// Schema 6's rewrite: every record's brackets read in either old shape

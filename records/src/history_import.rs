@@ -84,6 +84,7 @@ fn record_of(k: &KeptResult, serial: &str, meta: &RecordMeta) -> Result<NewRecor
             })
             .to_string(),
             joints,
+            harmonics: Vec::new(),
         },
         meta,
     )

@@ -1,6 +1,8 @@
 //! The fleet page at a plant's scale: 1,000 robots of 12 models, 20,000 records (a
 //! quarter checks), in a fresh SQLite file, the records sized as real ones
-//! (history/benches/fleet.rs's sizes); then the time of `GET /fleet` through the whole
+//! (history/benches/fleet.rs's sizes), each session with ten fitted harmonics (joints
+//! 2-6, orders 1 and 2; joint 6's order 2 measured by every other session only, so that
+//! the reducers' column looks back past a session that held it at its prior); then the time of `GET /fleet` through the whole
 //! application (session lookup, `History::fleet`, the rows, the template), one request
 //! after another, and the pages per second that gives. `cargo bench -p zerocal-web
 //! --bench fleet_page`; `FLEET_ROBOTS`, `FLEET_RECORDS` and `FLEET_REQUESTS` change the
@@ -14,7 +16,9 @@ use axum::http::{header, Request, StatusCode};
 use http_body_util::BodyExt;
 use std::time::Instant;
 use tower::ServiceExt;
-use zerocal_history::{DbLocation, History, JointRow, NewRecord, Record, RecordKind, Role};
+use zerocal_history::{
+    DbLocation, Harmonic, History, JointRow, NewRecord, Record, RecordKind, Role,
+};
 
 /// `len` bytes that depend on `seed` only (xorshift64): an export that does not
 /// compress away, as the history's tests make them.
@@ -60,6 +64,24 @@ fn env_count(name: &str, default: usize) -> usize {
         .unwrap_or(default)
 }
 
+/// Record `i`'s harmonics: amplitudes that change from one session to the next (a few
+/// beyond the wear rule), every one measured but joint 6's order 2 on every other round.
+fn harmonics(i: usize, robots: usize) -> Vec<Harmonic> {
+    let round = i / robots;
+    (2..=6u8)
+        .flat_map(|joint| (1..=2u8).map(move |order| (joint, order)))
+        .map(|(joint, order)| Harmonic {
+            joint,
+            order,
+            amplitude_deg: 0.001 * f64::from(order)
+                + 0.0004 * ((i + usize::from(joint)) % 5) as f64,
+            phase_deg: 10.0 * f64::from(joint),
+            amplitude_k2_deg: 0.0003,
+            measured: !(joint == 6 && order == 2 && round % 2 == 1),
+        })
+        .collect()
+}
+
 fn fill(h: &mut History, robots: usize, records: usize) {
     let models = 12;
     let profiles: Vec<String> = (0..models)
@@ -100,6 +122,11 @@ fn fill(h: &mut History, robots: usize, records: usize) {
             brackets: zerocal_history::RecordBrackets::default(),
             conditions_json: "{}".into(),
             result_json: result_json.clone(),
+            harmonics: if kind == RecordKind::Session {
+                harmonics(i, robots)
+            } else {
+                Vec::new()
+            },
             joints: (2..=6u8)
                 .map(|joint| JointRow {
                     joint,

@@ -1,23 +1,29 @@
 //! The fleet page's rows: every robot with its last session and check, its next due
 //! day, each joint's drift since the session before against the two sessions' combined
-//! U(k = 2), sorted and filtered as the query asks (`History::fleet`, which reads no
-//! export, result or profile: the page stays quick at a plant's size).
+//! U(k = 2), its reducers' harmonics grown beyond the wear rule since the robot's
+//! previous session that measured each (`RobotSummary::reducer_changes`, the one rule of
+//! `zerocal_history::reducers`), sorted and filtered as the query asks
+//! (`History::fleet`, which reads no export, result or profile: the page stays quick at
+//! a plant's size).
 
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use zerocal_civil::Date;
 use zerocal_history::RobotSummary;
 
-/// The fleet page's query: `?sort=serial|due|drift|verdict&q=TEXT&only=due|failed|drifted`.
+/// The fleet page's query:
+/// `?sort=serial|due|drift|wear|verdict&q=TEXT&only=due|failed|drifted|wearing`.
 #[derive(Debug, Clone, Default, Deserialize, Serialize)]
 pub struct FleetQuery {
     /// The column to sort by: `serial` (default), `due` (soonest first), `drift`
-    /// (largest first), `verdict` (failed checks first).
+    /// (largest first), `wear` (the harmonic grown by the most standard uncertainties
+    /// first), `verdict` (failed checks first).
     pub sort: Option<String>,
     /// Keep the robots whose serial, profile or title holds this text.
     pub q: Option<String>,
-    /// Keep only the robots `due` (overdue), `failed` (last check not PASS) or
-    /// `drifted` (a joint beyond its combined U).
+    /// Keep only the robots `due` (overdue), `failed` (last check not PASS),
+    /// `drifted` (a joint beyond its combined U) or `wearing` (a reducer's harmonic
+    /// grown beyond the wear rule).
     pub only: Option<String>,
 }
 
@@ -64,6 +70,48 @@ pub struct FleetRow {
     pub overdue: bool,
     /// Whether the last check did not pass.
     pub check_failed: bool,
+    /// The reducers' column: nothing fitted, nothing to compare with, no growth beyond
+    /// the rule, or the harmonics grown beyond it.
+    pub reducers: Reducers,
+    /// The largest growth among `reducers`, in standard uncertainties (0 without one).
+    pub worst_wear_sigmas: f64,
+}
+
+/// A robot's reducers as its last session left them, by the wear rule.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "state", content = "grown", rename_all = "snake_case")]
+pub enum Reducers {
+    /// The last session fitted no harmonic (or there is no session).
+    NotFitted,
+    /// None of its measured harmonics was measured by an earlier session.
+    NotCompared,
+    /// No measured harmonic grew beyond the rule.
+    Ok,
+    /// These grew beyond it: (joint, order, increase deg, increase in standard
+    /// uncertainties), in joint and order.
+    Wearing(Vec<(u8, u8, f64, f64)>),
+}
+
+impl Reducers {
+    /// The column of `robot`.
+    #[must_use]
+    pub fn of(robot: &RobotSummary) -> Reducers {
+        if !robot.reducers_fitted() {
+            return Reducers::NotFitted;
+        }
+        let grown: Vec<(u8, u8, f64, f64)> = robot
+            .reducer_changes()
+            .iter()
+            .map(|c| (c.joint, c.order, c.increase_deg, c.sigmas()))
+            .collect();
+        if !grown.is_empty() {
+            Reducers::Wearing(grown)
+        } else if robot.reducers_compared() == 0 {
+            Reducers::NotCompared
+        } else {
+            Reducers::Ok
+        }
+    }
 }
 
 /// The rows of `fleet`, each due its model's interval of `intervals` after its last
@@ -80,8 +128,10 @@ pub fn rows(
     let needle = query.q.as_deref().unwrap_or("").to_lowercase();
     let only = query.only.as_deref().filter(|o| !o.is_empty());
     if let Some(o) = only {
-        if !["due", "failed", "drifted"].contains(&o) {
-            return Err(format!("only={o:?} is none of due, failed, drifted"));
+        if !["due", "failed", "drifted", "wearing"].contains(&o) {
+            return Err(format!(
+                "only={o:?} is none of due, failed, drifted, wearing"
+            ));
         }
     }
     let mut rows: Vec<FleetRow> = fleet
@@ -122,7 +172,14 @@ pub fn rows(
                 .last_check
                 .as_ref()
                 .is_some_and(|c| c.verdict != zerocal_history::PASS);
+            let reducers = Reducers::of(&robot);
+            let worst_wear_sigmas = match &reducers {
+                Reducers::Wearing(grown) => grown.iter().map(|g| g.3).fold(0.0, f64::max),
+                _ => 0.0,
+            };
             FleetRow {
+                reducers,
+                worst_wear_sigmas,
                 drift,
                 worst_drift_ratio,
                 overdue: due.is_some_and(|d| d.days() < today.days()),
@@ -137,6 +194,7 @@ pub fn rows(
             Some("due") => r.overdue,
             Some("failed") => r.check_failed,
             Some("drifted") => r.drift.iter().any(|d| d.3),
+            Some("wearing") => matches!(r.reducers, Reducers::Wearing(_)),
             _ => true,
         })
         .collect();
@@ -150,10 +208,11 @@ pub fn rows(
                 .then(a.due_on.cmp(&b.due_on))
         }),
         "drift" => rows.sort_by(|a, b| b.worst_drift_ratio.total_cmp(&a.worst_drift_ratio)),
+        "wear" => rows.sort_by(|a, b| b.worst_wear_sigmas.total_cmp(&a.worst_wear_sigmas)),
         "verdict" => rows.sort_by_key(|r| !r.check_failed),
         other => {
             return Err(format!(
-                "sort={other:?} is none of serial, due, drift, verdict"
+                "sort={other:?} is none of serial, due, drift, wear, verdict"
             ))
         }
     }
@@ -180,6 +239,7 @@ mod tests {
             }),
             previous_session: None,
             last_check: None,
+            reducer_sessions: Vec::new(),
         }
     }
 

@@ -171,7 +171,10 @@ pub async fn fleet(
         render(
             &app.templates,
             "fleet.html",
-            context! { user => s.user, csrf => s.csrf_token, rows, query, intervals, unused },
+            context! {
+                user => s.user, csrf => s.csrf_token, rows, query, intervals, unused,
+                wear_sigmas => zerocal_history::reducers::WEAR_SIGMAS,
+            },
         )
         .map(IntoResponse::into_response)
     };

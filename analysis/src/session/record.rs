@@ -79,6 +79,7 @@ pub fn session_record(
             result_json: serde_json::to_string(&a.json)
                 .map_err(|e| CliError::Input(e.to_string()))?,
             joints,
+            harmonics: a.json.reducers.clone(),
         },
         meta,
     )

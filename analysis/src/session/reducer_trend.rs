@@ -1,282 +1,31 @@
-//! The reducers' health over time: each session's fitted harmonics
-//! ([`crate::session::reducers::ReducerJson`], kept in the record's result) read back
-//! from the history, and each measured amplitude compared with the same joint and
-//! order in the robot's previous session that measured it. An amplitude up by more
-//! than [`WEAR_SIGMAS`] of the two amplitudes' combined standard uncertainty
-//! (`sqrt(U1^2 + U2^2) / 2`, both U at k = 2) is named ([`ReducerChange`]): a gearbox
-//! wearing shows as this growing, before it fails. `zerocal session --record` prints the new record's changes, `zerocal
-//! history` every record's, and `zerocal history --plot` draws the amplitudes.
-//!
-//! The sessions of one serial are taken in the order measured (`measured_on`, then the
-//! record ID): "previous" is the latest session measured before, whatever order they
-//! were recorded in. Checks fit no harmonics and are skipped.
+//! The reducers' health over time, from the history's records: each session's fitted
+//! harmonics (the record's typed `harmonics`, [`zerocal_history::Harmonic`]) put to
+//! the wear rule ([`zerocal_history::reducers`]: an amplitude up by more than
+//! [`WEAR_SIGMAS`] combined standard uncertainties since the robot's previous session
+//! that measured it, [`ReducerChange`]). `zerocal session --record` prints the new
+//! record's changes, `zerocal history` every record's, and `zerocal history --plot`
+//! draws the amplitudes; the web application's fleet page applies the same rule.
 
-use crate::session::reducers::ReducerJson;
-use serde::Serialize;
+pub use zerocal_history::reducers::{changes, ReducerChange, SessionHarmonics, WEAR_SIGMAS};
 use zerocal_history::{Record, RecordKind};
 
-/// One session's harmonics, as the history holds them.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SessionHarmonics {
-    /// The record's ID.
-    pub record_id: i64,
-    /// The robot's serial.
-    pub serial: String,
-    /// The day measured (YYYY-MM-DD).
-    pub measured_on: String,
-    /// Its harmonics (every one fitted, measured or held at its prior).
-    pub reducers: Vec<ReducerJson>,
-}
-
-/// A session's harmonics from its record: `None` for a check, and for a session whose
-/// result holds no `reducers` (recorded before they were kept) or does not read.
+/// A session's harmonics from its record: `None` for a check, and for a session that
+/// holds none (recorded before they were kept, or a kept result of the pendant's).
 #[must_use]
 pub fn of_record(record: &Record) -> Option<SessionHarmonics> {
-    if record.new.kind != RecordKind::Session {
+    if record.new.kind != RecordKind::Session || record.new.harmonics.is_empty() {
         return None;
     }
-    let result: serde_json::Value = serde_json::from_str(&record.new.result_json).ok()?;
-    let reducers: Vec<ReducerJson> =
-        serde_json::from_value(result.get("reducers")?.clone()).ok()?;
     Some(SessionHarmonics {
         record_id: record.id,
         serial: record.new.serial.clone(),
         measured_on: record.new.measured_on.clone(),
-        reducers,
+        reducers: record.new.harmonics.clone(),
     })
-}
-
-/// How many combined standard uncertainties an amplitude must grow by to be named.
-///
-/// A session compares about ten measured harmonics at once. At 2 (the combined U at
-/// k = 2) a healthy robot would show a line in about one session in five (ten
-/// one-sided chances of about 2.3 % each, for a normal estimate); at 3, each chance is
-/// about 0.13 % and a stray line comes in about one session in seventy-five. A real wear
-/// grows session after session and crosses it all the same.
-pub const WEAR_SIGMAS: f64 = 3.0;
-
-/// A harmonic whose amplitude grew beyond [`WEAR_SIGMAS`] since the robot's
-/// previous session that measured it (`zerocal session --json` and `zerocal history
-/// --json`: `reducer_changes`).
-#[derive(Serialize, Debug, Clone, PartialEq)]
-pub struct ReducerChange {
-    /// The joint (2-6).
-    pub joint: u8,
-    /// The harmonic's order n.
-    pub order: u8,
-    /// The session that measured the larger amplitude.
-    pub record_id: i64,
-    /// Its amplitude (deg).
-    pub amplitude_deg: f64,
-    /// Its U(k=2) (deg).
-    pub amplitude_k2_deg: f64,
-    /// The previous session of the robot that measured this harmonic.
-    pub previous_record_id: i64,
-    /// The day it was measured.
-    pub previous_measured_on: String,
-    /// Its amplitude (deg).
-    pub previous_amplitude_deg: f64,
-    /// Its U(k=2) (deg).
-    pub previous_amplitude_k2_deg: f64,
-    /// amplitude − previous amplitude (deg).
-    pub increase_deg: f64,
-    /// sqrt(U1² + U2²), both k = 2 (deg).
-    pub combined_k2_deg: f64,
-    /// [`WEAR_SIGMAS`] × sqrt(U1² + U2²) / 2 (deg): `increase_deg` is beyond it.
-    pub threshold_deg: f64,
-}
-
-impl ReducerChange {
-    /// The report's line.
-    #[must_use]
-    pub fn line(&self) -> String {
-        format!(
-            "reducer j{} n={}: amplitude {:.4} deg, up {:.4} deg since record {} ({}), beyond \
-             {:.4} deg ({} combined standard uncertainties; combined U(k=2) {:.4} deg): a \
-             gearbox wearing shows as this growing",
-            self.joint,
-            self.order,
-            self.amplitude_deg,
-            self.increase_deg,
-            self.previous_record_id,
-            self.previous_measured_on,
-            self.threshold_deg,
-            WEAR_SIGMAS,
-            self.combined_k2_deg
-        )
-    }
-}
-
-/// Every growth beyond its U in `sessions` (any serials, any order): each session's
-/// measured harmonics against the previous session of the same serial that measured
-/// the same joint and order. In the order measured.
-#[must_use]
-pub fn changes(sessions: &[SessionHarmonics]) -> Vec<ReducerChange> {
-    let mut ordered: Vec<&SessionHarmonics> = sessions.iter().collect();
-    ordered.sort_by(|a, b| {
-        (a.measured_on.as_str(), a.record_id).cmp(&(b.measured_on.as_str(), b.record_id))
-    });
-    let mut out = Vec::new();
-    for (i, now) in ordered.iter().enumerate() {
-        for h in now.reducers.iter().filter(|h| h.measured) {
-            let before = ordered[..i].iter().rev().find_map(|s| {
-                (s.serial == now.serial)
-                    .then(|| {
-                        s.reducers
-                            .iter()
-                            .find(|p| p.measured && p.joint == h.joint && p.order == h.order)
-                            .map(|p| (*s, p))
-                    })
-                    .flatten()
-            });
-            let Some((s, p)) = before else { continue };
-            let increase = h.amplitude_deg - p.amplitude_deg;
-            let combined = h.amplitude_k2_deg.hypot(p.amplitude_k2_deg);
-            let threshold = WEAR_SIGMAS * combined / 2.0;
-            if increase > threshold {
-                out.push(ReducerChange {
-                    joint: h.joint,
-                    order: h.order,
-                    record_id: now.record_id,
-                    amplitude_deg: h.amplitude_deg,
-                    amplitude_k2_deg: h.amplitude_k2_deg,
-                    previous_record_id: s.record_id,
-                    previous_measured_on: s.measured_on.clone(),
-                    previous_amplitude_deg: p.amplitude_deg,
-                    previous_amplitude_k2_deg: p.amplitude_k2_deg,
-                    increase_deg: increase,
-                    combined_k2_deg: combined,
-                    threshold_deg: threshold,
-                });
-            }
-        }
-    }
-    out
 }
 
 /// [`changes`] over the sessions among `records`.
 #[must_use]
 pub fn changes_in(records: &[Record]) -> Vec<ReducerChange> {
     changes(&records.iter().filter_map(of_record).collect::<Vec<_>>())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn h(joint: u8, order: u8, amplitude_deg: f64, u: f64, measured: bool) -> ReducerJson {
-        ReducerJson {
-            joint,
-            order,
-            amplitude_deg,
-            phase_deg: 0.0,
-            amplitude_k2_deg: u,
-            measured,
-        }
-    }
-
-    fn session(id: i64, day: &str, reducers: Vec<ReducerJson>) -> SessionHarmonics {
-        SessionHarmonics {
-            record_id: id,
-            serial: "R1".into(),
-            measured_on: day.into(),
-            reducers,
-        }
-    }
-
-    #[test]
-    fn the_first_session_has_nothing_to_compare_with() {
-        let s = [session(1, "2026-01-01", vec![h(3, 2, 0.01, 0.001, true)])];
-        assert!(changes(&s).is_empty());
-    }
-
-    #[test]
-    fn growth_beyond_the_combined_u_is_named_and_within_it_is_not() {
-        // U1 = 0.0009, U2 = 0.0016: combined U(k=2) 0.00184, threshold 3 × 0.00092.
-        let s = [
-            session(
-                12,
-                "2026-05-02",
-                vec![
-                    h(3, 2, 0.0022, 0.0009, true),
-                    h(4, 1, 0.0030, 0.0009, true),
-                    h(5, 1, 0.0010, 0.0009, true),
-                ],
-            ),
-            session(
-                13,
-                "2026-09-01",
-                vec![
-                    h(3, 2, 0.0060, 0.0016, true),
-                    h(4, 1, 0.0044, 0.0016, true),
-                    h(5, 1, 0.0029, 0.0016, true),
-                ],
-            ),
-        ];
-        let c = changes(&s);
-        // j3 n=2 up 0.0038 > 0.00275; j4 n=1 up 0.0014 within it; j5 n=1 up 0.0019,
-        // beyond the combined U(k=2) but within three standard uncertainties.
-        assert_eq!(c.len(), 1, "{c:?}");
-        let c = &c[0];
-        assert_eq!((c.joint, c.order, c.record_id), (3, 2, 13));
-        assert_eq!(
-            (c.previous_record_id, c.previous_measured_on.as_str()),
-            (12, "2026-05-02")
-        );
-        let combined = 0.0009_f64.hypot(0.0016);
-        assert!((c.increase_deg - 0.0038).abs() < 1e-12);
-        assert!((c.combined_k2_deg - combined).abs() < 1e-12);
-        assert!((c.threshold_deg - 1.5 * combined).abs() < 1e-12);
-        assert_eq!(
-            c.line(),
-            "reducer j3 n=2: amplitude 0.0060 deg, up 0.0038 deg since record 12 (2026-05-02), \
-             beyond 0.0028 deg (3 combined standard uncertainties; combined U(k=2) 0.0018 deg): \
-             a gearbox wearing shows as this growing"
-        );
-    }
-
-    #[test]
-    fn a_fall_is_not_wear() {
-        let s = [
-            session(1, "2026-01-01", vec![h(3, 2, 0.0100, 0.001, true)]),
-            session(2, "2026-02-01", vec![h(3, 2, 0.0010, 0.001, true)]),
-        ];
-        assert!(changes(&s).is_empty());
-    }
-
-    #[test]
-    fn an_amplitude_held_at_its_prior_is_neither_compared_nor_compared_with() {
-        let s = [
-            // Held at its prior, then measured small, then held at its prior again and
-            // large there: the prior's number is not a measurement of the reducer.
-            session(1, "2026-01-01", vec![h(2, 1, 0.001, 0.001, false)]),
-            session(2, "2026-02-01", vec![h(2, 1, 0.001, 0.001, true)]),
-            session(3, "2026-03-01", vec![h(2, 1, 0.020, 0.001, false)]),
-        ];
-        assert!(changes(&s).is_empty());
-        // The comparison skips a session that held it, back to the last that measured it.
-        let s = [
-            session(1, "2026-01-01", vec![h(2, 1, 0.001, 0.001, true)]),
-            session(2, "2026-02-01", vec![h(2, 1, 0.001, 0.001, false)]),
-            session(3, "2026-03-01", vec![h(2, 1, 0.010, 0.001, true)]),
-        ];
-        let c = changes(&s);
-        assert_eq!(c.len(), 1);
-        assert_eq!((c[0].record_id, c[0].previous_record_id), (3, 1));
-    }
-
-    #[test]
-    fn sessions_are_compared_in_the_order_measured_within_one_serial() {
-        // Recorded out of order: record 2 was measured first.
-        let mut other = session(3, "2026-01-15", vec![h(3, 2, 0.0001, 0.0001, true)]);
-        other.serial = "R2".into();
-        let s = [
-            session(1, "2026-03-01", vec![h(3, 2, 0.010, 0.001, true)]),
-            session(2, "2026-01-01", vec![h(3, 2, 0.002, 0.001, true)]),
-            other,
-        ];
-        let c = changes(&s);
-        assert_eq!(c.len(), 1, "{c:?}");
-        assert_eq!((c[0].record_id, c[0].previous_record_id), (1, 2));
-    }
 }

@@ -1,33 +1,18 @@
 //! The reducers' health a session measured: each joint's transmission error, harmonic
 //! by harmonic (`zerocal_core::stage2::transmission::reducer_harmonics`), as the report
-//! prints it and the history keeps it (in the record's result). No vendor mastering
+//! prints it and the history keeps it (in the record's result and in its typed
+//! `harmonics`, `record_harmonics`). No vendor mastering
 //! tool shows it; over the sessions of one robot, an amplitude that grows is a gearbox
 //! wearing (`zerocal history --plot` draws them; [`crate::session::reducer_trend`] names a
 //! growth beyond three combined standard uncertainties when a session is recorded).
 
-use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use zerocal_core::stage2::transmission::reducer_harmonics;
 use zerocal_core::stage2::FitResult;
 
-/// One harmonic of a joint's transmission error: `A·sin(n·q + φ)` over the joint's
-/// angle q (the profile's model angles).
-#[derive(Serialize, Deserialize, Debug, Clone, PartialEq)]
-pub struct ReducerJson {
-    /// The joint's number (2-6).
-    pub joint: u8,
-    /// n: cycles per output turn.
-    pub order: u8,
-    /// A (deg).
-    pub amplitude_deg: f64,
-    /// φ (deg).
-    pub phase_deg: f64,
-    /// A's expanded uncertainty, k = 2 (deg).
-    pub amplitude_k2_deg: f64,
-    /// Whether this session's poses determine it (else the fit held it at its stated
-    /// prior: not a measurement of the reducer).
-    pub measured: bool,
-}
+/// One harmonic of a joint's transmission error, in the shape the history stores
+/// (defined once there).
+pub use zerocal_history::Harmonic as ReducerJson;
 
 /// The harmonics `fit` estimated.
 pub fn reducers(fit: &FitResult<f64>) -> Vec<ReducerJson> {

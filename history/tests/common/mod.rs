@@ -135,6 +135,7 @@ pub fn record(kind: RecordKind, serial: &str, i: u32, export_len: usize) -> NewR
         },
         conditions_json: r#"{"temperature_c":21.5}"#.into(),
         result_json: r#"{"verdict":"PASS"}"#.into(),
+        harmonics: Vec::new(),
         joints,
     }
 }

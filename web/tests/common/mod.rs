@@ -50,6 +50,7 @@ impl Product for FakeProduct {
             brackets: zerocal_history::RecordBrackets::default(),
             conditions_json: "{}".into(),
             result_json: "{}".into(),
+            harmonics: Vec::new(),
             joints: (2..=6)
                 .map(|j| JointRow {
                     joint: j,
