@@ -9,7 +9,7 @@
 //! - the desktop's product crates depend on one another only where one is made of the
 //!   other (docs/repository.md): no crate holds two products through a dependency;
 //! - no file refers to the notes beside the repository (the parent directory's shared
-//!   folder): a user's clone has none of them;
+//!   folder): a user's clone has none of them; nor names the team's issues by number;
 //! - the README is a landing page of at most [`MAX_README_LINES`] lines: what it is,
 //!   the user's path, the two commands, how to flash, the headline figures and where the
 //!   docs are; the details live in docs/.
@@ -267,6 +267,48 @@ fn nothing_refers_to_the_notes_beside_the_repository() {
     assert!(
         found.is_empty(),
         "files naming {needle}:\n{}",
+        found.join("\n")
+    );
+}
+
+/// Whether `text` names one of the team's own issues by number (the word, a space and
+/// the number): the tracker is not the user's; a reason is said in words. An upstream
+/// project's issue cited as a source carries its `#` ("issue #377") and is not one.
+fn names_an_issue_by_number(text: &str) -> bool {
+    let needle = ["iss", "ue "].concat();
+    let lower = text.to_lowercase();
+    lower.match_indices(needle.as_str()).any(|(at, _)| {
+        lower
+            .as_bytes()
+            .get(at + needle.len())
+            .is_some_and(u8::is_ascii_digit)
+    })
+}
+
+#[test]
+fn no_file_names_the_team_s_issues_by_number() {
+    assert!(names_an_issue_by_number(
+        &["the target (Iss", "ue 34)"].concat()
+    ));
+    assert!(!names_an_issue_by_number("joint limits (issue #377)"));
+    let root = repo_root();
+    let mut all = Vec::new();
+    files(&root, &mut all);
+    let mut found: Vec<String> = all
+        .iter()
+        .filter(|p| {
+            p.extension()
+                .is_some_and(|e| ["rs", "md", "toml", "html", "sh"].iter().any(|x| e == *x))
+        })
+        .filter_map(|p| {
+            let text = fs::read_to_string(p).ok()?;
+            names_an_issue_by_number(&text).then(|| p.display().to_string())
+        })
+        .collect();
+    found.sort();
+    assert!(
+        found.is_empty(),
+        "files naming an issue by number:\n{}",
         found.join("\n")
     );
 }

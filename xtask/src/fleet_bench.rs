@@ -20,7 +20,7 @@ pub const COMMAND: &str = "cargo xtask fleet-bench";
 /// The benchmark it runs.
 pub const BENCH: &str = "cargo bench -p zerocal-web --bench fleet_page";
 
-/// The benchmark's scale: the issue's plant (issue 34: 1,000 robots, 20,000 records).
+/// The benchmark's scale: a plant's twenty years (1,000 robots, 20,000 records).
 const ROBOTS: &str = "1000";
 const RECORDS: &str = "20000";
 /// Requests timed, one after another.
