@@ -139,9 +139,12 @@ pub(crate) fn by_record(
 
 /// Schema 7's rewrite: every session's `reducers` read from its `result_json` into
 /// `record_harmonics`. A result without `reducers` (recorded before they were kept, or a
-/// kept result of the pendant's) gives none; one whose `reducers` do not read as
-/// [`Harmonic`]s, or do not hold, stops the migration naming the record: the database
-/// stays at schema 6, nothing written, rather than a record's harmonics being dropped.
+/// kept result of the pendant's) gives none; so does one whose `reducers` do not read
+/// as [`Harmonic`]s or do not hold (a hand-edited database, a NaN written as `null`):
+/// its result keeps them as written, nothing is lost, and the wear rule sees no
+/// harmonics of that session, as it did not before. Refusing the migration instead
+/// would leave every tool unable to open the history, with no correction that could
+/// help (records are never edited).
 pub(crate) fn backfill(c: &mut Conn) -> Result<(), HistoryError> {
     let rows = c.query(
         "SELECT id, result_json FROM records WHERE kind = $1 ORDER BY id",
@@ -156,20 +159,17 @@ pub(crate) fn backfill(c: &mut Conn) -> Result<(), HistoryError> {
         };
         let id = id.i64("records.id")?;
         let text = text.string("records.result_json")?;
-        let refuse = |why: String| {
-            HistoryError::Corrupt(format!(
-                "record {id}: result_json's reducers {why}; the database is left at schema 6"
-            ))
+        let Ok(result) = serde_json::from_str::<serde_json::Value>(&text) else {
+            continue;
         };
-        let result: serde_json::Value = serde_json::from_str(&text)
-            .map_err(|e| refuse(format!("cannot be read: the result is not JSON ({e})")))?;
         let Some(reducers) = result.get("reducers") else {
             continue;
         };
-        let harmonics: Vec<Harmonic> = serde_json::from_value(reducers.clone())
-            .map_err(|e| refuse(format!("are not the harmonics zerocal wrote ({e})")))?;
-        if let Some(why) = invalid(&harmonics) {
-            return Err(refuse(format!("do not hold: {why}")));
+        let Ok(harmonics) = serde_json::from_value::<Vec<Harmonic>>(reducers.clone()) else {
+            continue;
+        };
+        if invalid(&harmonics).is_some() {
+            continue;
         }
         insert(c, id, &harmonics)?;
     }

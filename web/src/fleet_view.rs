@@ -83,6 +83,8 @@ pub struct FleetRow {
 pub enum Reducers {
     /// The last session fitted no harmonic (or there is no session).
     NotFitted,
+    /// The last session held every harmonic at its prior: it measured none.
+    NotMeasured,
     /// None of its measured harmonics was measured by an earlier session.
     NotCompared,
     /// No measured harmonic grew beyond the rule.
@@ -98,6 +100,13 @@ impl Reducers {
     pub fn of(robot: &RobotSummary) -> Reducers {
         if !robot.reducers_fitted() {
             return Reducers::NotFitted;
+        }
+        let measured_any = robot
+            .reducer_sessions
+            .first()
+            .is_some_and(|last| last.reducers.iter().any(|h| h.measured));
+        if !measured_any {
+            return Reducers::NotMeasured;
         }
         let grown: Vec<(u8, u8, f64, f64)> = robot
             .reducer_changes()

@@ -118,6 +118,7 @@ async fn a_reducer_grown_beyond_the_wear_rule_shows_as_wearing_and_a_healthy_one
         // goes back to the first.
         // HEALTHY: the same harmonic up by 0.0005 deg, within its U.
         // SKIPPED: the previous session that measured it is the first, then a fall.
+        // HELD: its last session measured nothing (held at its prior).
         // NONE: a session that fitted nothing.
         let sessions = [
             session_with(
@@ -136,6 +137,8 @@ async fn a_reducer_grown_beyond_the_wear_rule_shows_as_wearing_and_a_healthy_one
             session_with("FALL", "2026-01-10", &[(3, 1, 0.020, u, true)]),
             session_with("FALL", "2026-06-10", &[(3, 1, 0.005, u, true)]),
             session_with("FIRST", "2026-06-10", &[(3, 1, 0.020, u, true)]),
+            session_with("HELD", "2026-01-10", &[(4, 2, 0.010, u, true)]),
+            session_with("HELD", "2026-06-10", &[(4, 2, 0.030, u, false)]),
             session_with("NONE", "2026-06-10", &[]),
         ];
         with_history(&site.at, |h| {
@@ -162,6 +165,7 @@ async fn a_reducer_grown_beyond_the_wear_rule_shows_as_wearing_and_a_healthy_one
             ("HEALTHY", ">ok<"),
             ("FALL", ">ok<"),
             ("FIRST", "first measured"),
+            ("HELD", "held at prior"),
             ("NONE", "—"),
         ] {
             let got = row(&page.body, serial).unwrap();
@@ -187,7 +191,7 @@ async fn a_reducer_grown_beyond_the_wear_rule_shows_as_wearing_and_a_healthy_one
             site.name,
             only.body
         );
-        for serial in ["HEALTHY", "FALL", "FIRST", "NONE"] {
+        for serial in ["HEALTHY", "FALL", "FIRST", "HELD", "NONE"] {
             assert!(
                 row(&only.body, serial).is_none(),
                 "{}: {serial} kept by only=wearing",
