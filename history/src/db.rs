@@ -298,6 +298,22 @@ impl Conn {
     }
 }
 
+/// `ids` as the lists of an SQL `IN (...)`, [`ID_LIST_LEN`] at a time. The IDs are the
+/// database's own integers, written into the statement (SQLite's and PostgreSQL's limits
+/// on parameters are far apart).
+pub(crate) fn id_lists(ids: &[i64]) -> impl Iterator<Item = String> + '_ {
+    ids.chunks(ID_LIST_LEN).map(|chunk| {
+        chunk
+            .iter()
+            .map(i64::to_string)
+            .collect::<Vec<_>>()
+            .join(",")
+    })
+}
+
+/// How many IDs one `IN (...)` list holds.
+pub(crate) const ID_LIST_LEN: usize = 500;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -198,7 +198,7 @@ impl History {
             .filter_map(|s| s.as_ref().map(|s| s.id))
             .collect();
         let mut joints: BTreeMap<i64, Vec<JointRow>> = BTreeMap::new();
-        for list in id_lists(&ids) {
+        for list in crate::db::id_lists(&ids) {
             for row in &self.conn.query(
                 &format!(
                     "SELECT {JOINT_COLUMNS} FROM joints WHERE record_id IN ({list}) \
@@ -225,19 +225,3 @@ impl History {
         Ok(())
     }
 }
-
-/// `ids` as the lists of an SQL `IN (...)`, [`ID_LIST_LEN`] at a time. The IDs are the
-/// database's own integers, written into the statement (SQLite's and PostgreSQL's limits
-/// on parameters are far apart).
-pub(crate) fn id_lists(ids: &[i64]) -> impl Iterator<Item = String> + '_ {
-    ids.chunks(ID_LIST_LEN).map(|chunk| {
-        chunk
-            .iter()
-            .map(i64::to_string)
-            .collect::<Vec<_>>()
-            .join(",")
-    })
-}
-
-/// How many IDs one `IN (...)` list holds.
-pub(crate) const ID_LIST_LEN: usize = 500;

@@ -193,7 +193,7 @@ pub(crate) fn fill_fleet(
     // records' (serial, measured_on, id) index and the harmonics' primary key.
     let mut last: BTreeMap<i64, Vec<Harmonic>> = BTreeMap::new();
     let mut before: BTreeMap<i64, BTreeMap<i64, SessionHarmonics>> = BTreeMap::new();
-    for list in crate::fleet::id_lists(&ids) {
+    for list in crate::db::id_lists(&ids) {
         let rows = c.query(
             &format!(
                 "SELECT h.record_id, h.joint, h.harmonic_order, h.amplitude_deg, h.phase_deg, \
